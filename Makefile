@@ -1,0 +1,106 @@
+# mmsim - micromouse simulator. `make test` and `make sim` are all a newcomer needs.
+.POSIX:
+.DEFAULT_GOAL := all
+SHELL := /bin/bash
+
+# Debian packages the build and tests need; `make deps` installs the missing ones.
+DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev \
+	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev \
+	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev
+
+CC      ?= gcc
+STD     := -std=c99 -D_POSIX_C_SOURCE=200809L
+WARN    := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wno-unused-parameter
+INC     := -Ifirmware -Ihal -Ihal/sim -Isim
+CFLAGS  ?= -O2 -g
+SAN     := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+LIBS    := -ljansson -lm
+B       := build
+
+FW_SRC   := $(wildcard firmware/*.c)
+HOST_SRC := $(wildcard sim/*.c) hal/sim/hal_sim.c
+LIB_SRC  := $(FW_SRC) $(HOST_SRC)
+TOOLS    := mmmaze
+TEST_SRC := $(wildcard test/test_*.c)
+TESTS    := $(patsubst test/%.c,$(B)/test/%,$(TEST_SRC))
+
+# Link-time mocks: a test that wraps HAL calls names them here.
+WRAP_test_explore := -Wl,--wrap=hal_log
+
+.PHONY: all deps test sim bench fuzz firmware firmware-size mazes clean tools
+all: tools
+
+deps:
+	@missing=""; for p in $(DEB_PKGS); do \
+	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "make deps: installing$$missing"; \
+	  SUDO=""; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null || { echo "make deps: apt-get failed" >&2; exit 3; }; \
+	fi
+
+# ---- host library and tools (optimised, no sanitizers) ----
+$(B)/host/%.o: %.c | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) -MMD -MP -c $< -o $@
+$(B)/libmm.a: $(patsubst %.c,$(B)/host/%.o,$(LIB_SRC))
+	@rm -f $@; ar rcs $@ $^
+$(B)/%: tools/%.c $(B)/libmm.a
+	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(B)/libmm.a $(LIBS) -o $@
+tools: $(addprefix $(B)/,$(TOOLS))
+
+# ---- tests (sanitized) ----
+$(B)/san/%.o: %.c | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) -MMD -MP -c $< -o $@
+$(B)/libmm_san.a: $(patsubst %.c,$(B)/san/%.o,$(LIB_SRC))
+	@rm -f $@; ar rcs $@ $^
+$(B)/test/%: test/%.c $(B)/libmm_san.a
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(WRAP_$*) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
+$(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
+
+test: deps $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) firmware-size
+	@MMMAZE=$(B)/san-tools/mmmaze SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
+
+# ---- AVR build of the firmware (ATmega328P) ----
+AVR_CC    := avr-gcc
+AVR_FLAGS := -mmcu=atmega328p -DF_CPU=16000000L -Os -std=c99 -Wall -Wextra -DMAZE_MAX_SIZE=16 \
+	-ffunction-sections -fdata-sections -Ifirmware -Ihal
+firmware-size: | deps
+	@mkdir -p $(B)/avr
+	$(AVR_CC) $(AVR_FLAGS) -Wl,--gc-sections $(FW_SRC) test/avr_main.c -o $(B)/avr/firmware.elf
+	avr-size $(B)/avr/firmware.elf
+	@avr-nm -S --size-sort $(B)/avr/firmware.elf | grep -i ' [bd] ' | tail -8
+firmware: firmware-size
+
+# ---- simulation (grid mode until the physics simulator lands) ----
+MAZE ?= mazes/gen-16x16-s1.txt
+sim: deps $(B)/mmmaze
+	$(B)/mmmaze explore $(MAZE)
+
+# ---- benchmarks ----
+bench: deps $(B)/mmmaze $(B)/bench_flood
+	bash bench/run.sh
+$(B)/bench_flood: bench/bench_flood.c $(B)/libmm.a
+	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(B)/libmm.a $(LIBS) -o $@
+
+# ---- fuzzing (clang libFuzzer + ASan; bounded; not in CI) ----
+FUZZ_SECONDS ?= 60
+fuzz: | deps
+	@mkdir -p $(B)/fuzz/corpus
+	clang -g -O1 -fsanitize=fuzzer,address,undefined $(INC) -D_POSIX_C_SOURCE=200809L \
+	  test/fuzz_mazefile.c sim/mazefile.c firmware/maze.c -o $(B)/fuzz/fuzz_mazefile
+	cp -n mazes/*.txt $(B)/fuzz/corpus/ 2>/dev/null || true
+	$(B)/fuzz/fuzz_mazefile -max_total_time=$(FUZZ_SECONDS) -max_len=8192 $(B)/fuzz/corpus
+
+mazes:
+	@echo "The micromouseonline database: git clone https://github.com/micromouseonline/mazefiles (needs internet)."
+
+clean:
+	rm -rf $(B)
+
+-include $(shell find $(B) -name '*.d' 2>/dev/null)

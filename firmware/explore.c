@@ -1,0 +1,153 @@
+/* explore.c - search the maze until the run path is proven optimal. */
+#include "explore.h"
+#include "hal.h"
+
+#include <stdio.h>
+
+void explore_init(explore_t *e, const maze_t *blank)
+{
+    maze_forget(&e->map, blank);
+    e->cell = blank->start;
+    e->heading = blank->start_heading;
+    e->phase = EXPLORE_TO_GOAL;
+    e->steps = 0;
+    e->proven_at_step = EXPLORE_NEVER;
+    e->run_cost = FLOOD_UNREACHABLE;
+}
+
+void explore_sense(explore_t *e, uint8_t walls)
+{
+    static const uint8_t bit[3] = { EXPLORE_WALL_FRONT, EXPLORE_WALL_RIGHT, EXPLORE_WALL_LEFT };
+    static const int8_t rel[3] = { 0, 1, -1 };
+    for (uint8_t j = 0; j < 3; j++)
+        maze_set_wall(&e->map, e->cell, maze_turn(e->heading, rel[j]),
+                      (walls & bit[j]) ? MAZE_WALL_CLOSED : MAZE_WALL_OPEN);
+}
+
+void explore_moved(explore_t *e, uint8_t d)
+{
+    maze_cell_t n;
+    if (maze_neighbour(&e->map, e->cell, d, &n)) {
+        /* we drove through that wall, so it is open */
+        maze_set_wall(&e->map, e->cell, d, MAZE_WALL_OPEN);
+        e->cell = n;
+    }
+    e->heading = d & 3u;
+    e->steps++;
+}
+
+/* Cost from the start configuration to the goal, unknown walls open or not. */
+static uint16_t start_cost(explore_t *e, uint8_t flags)
+{
+    flood_target_goal(&e->flood, &e->map);
+    return flood_run(&e->flood, &e->map, e->map.start, e->map.start_heading, flags);
+}
+
+static int check_proven(explore_t *e)
+{
+    uint16_t known = start_cost(e, 0);
+    uint16_t open = start_cost(e, FLOOD_UNKNOWN_OPEN);
+    if (known == FLOOD_UNREACHABLE || known != open) return 0;
+    char line[HAL_LOG_MAX + 1];
+    e->proven_at_step = e->steps;
+    e->run_cost = known;
+    snprintf(line, sizeof line, "explore: run path proven at step %u, cost %u",
+             (unsigned)e->steps, (unsigned)known);
+    hal_log(line);
+    return 1;
+}
+
+/* Targets = the cells on both sides of every unknown wall that the best
+ * optimistic path from the start crosses. Returns how many there are. The
+ * target set is not read by the walk, so it is rebuilt while walking the
+ * field the start flood left behind. */
+static uint16_t mark_unknown_on_path(explore_t *e)
+{
+    maze_cell_t c = e->map.start;
+    uint8_t h = e->map.start_heading;
+    uint16_t k = start_cost(e, FLOOD_UNKNOWN_OPEN), unknown = 0;
+
+    flood_target_clear(&e->flood);
+    while (k != 0 && k != FLOOD_UNREACHABLE) {
+        int d = flood_next_dir(&e->flood, &e->map, c, h, k, FLOOD_UNKNOWN_OPEN);
+        maze_cell_t n;
+        if (d < 0 || !maze_neighbour(&e->map, c, (uint8_t)d, &n)) break;
+        if (maze_wall(&e->map, c, (uint8_t)d) == MAZE_WALL_UNKNOWN) {
+            unknown++;
+            flood_target_add(&e->flood, c);
+            flood_target_add(&e->flood, n);
+        }
+        k = (uint16_t)(k - 1u - (d == h ? 0u : ((d - h) & 3) == 2 ? 2u : 1u));
+        c = n;
+        h = (uint8_t)d;
+    }
+    return unknown;
+}
+
+/* Step towards the current target set; -1 if it cannot be reached. */
+static int step_to_targets(explore_t *e)
+{
+    uint16_t k = flood_run(&e->flood, &e->map, e->cell, e->heading, FLOOD_UNKNOWN_OPEN);
+    return flood_next_dir(&e->flood, &e->map, e->cell, e->heading, k, FLOOD_UNKNOWN_OPEN);
+}
+
+int explore_next(explore_t *e)
+{
+    for (;;) {
+        switch (e->phase) {
+        case EXPLORE_TO_GOAL:
+            if (maze_is_goal(&e->map, e->cell)) {
+                e->phase = EXPLORE_PROVE;
+                continue;
+            }
+            flood_target_goal(&e->flood, &e->map);
+            {
+                int d = step_to_targets(e);
+                if (d >= 0) return d;
+            }
+            hal_log("explore: goal unreachable");
+            e->phase = EXPLORE_NO_GOAL;
+            return -1;
+        case EXPLORE_PROVE:
+            if (check_proven(e)) {
+                e->phase = EXPLORE_RETURN;
+                continue;
+            }
+            if (mark_unknown_on_path(e) == 0) {
+                /* Cannot happen while known != open; stop rather than loop. */
+                hal_log("explore: no unknown wall left to explore");
+                e->phase = EXPLORE_NO_GOAL;
+                return -1;
+            }
+            {
+                int d = step_to_targets(e);
+                if (d >= 0) return d;
+            }
+            hal_log("explore: exploration target unreachable");
+            e->phase = EXPLORE_NO_GOAL;
+            return -1;
+        case EXPLORE_RETURN:
+            if (e->cell == e->map.start) {
+                e->phase = EXPLORE_DONE;
+                return -1;
+            }
+            flood_target_clear(&e->flood);
+            flood_target_add(&e->flood, e->map.start);
+            {
+                int d = step_to_targets(e);
+                if (d >= 0) return d;
+            }
+            e->phase = EXPLORE_NO_GOAL;
+            return -1;
+        default:
+            return -1;
+        }
+    }
+}
+
+int explore_run_dir(explore_t *e, maze_cell_t c, uint8_t h)
+{
+    flood_target_goal(&e->flood, &e->map);
+    uint16_t k = flood_run(&e->flood, &e->map, c, h, 0);
+    return flood_next_dir(&e->flood, &e->map, c, h, k, 0);
+}

@@ -1,0 +1,69 @@
+/* flood.h - floodfill on the mouse's map.
+ *
+ * Two floods share one flood_t:
+ * - classic: cell distances, BFS from the target cells over open walls;
+ * - heading-aware ("modified", the paper's Algorithm 1): a configuration is
+ *   (cell, heading); a forward move into the next cell and a 90-degree
+ *   rotation each cost 1; costs grow from the target configurations (all
+ *   headings of every target cell, cost 0) outward over predecessors.
+ *
+ * Memory, the reason for this layout: a uint16 per configuration would take
+ * 2 KB for 16x16, the whole SRAM of an ATmega328P. Neighbouring
+ * configurations differ little in cost (a rotation changes it by at most 1,
+ * a forward move by -1..+5, because turning round, stepping back and turning
+ * round again costs 5), so a configuration stores its cost modulo 15 in a
+ * nibble and the absolute value is recovered next to a known one
+ * (flood_cost). Nibble 15 = not reached. The BFS keeps no FIFO of
+ * configurations: the open set (levels k and k+1 of the BFS) is a bitset,
+ * and a level is the set bits whose nibble equals k mod 15. Visited = nibble
+ * != 15. For 16x16: cost field 512 B + open set 128 B + target set 32 B.
+ */
+#ifndef FLOOD_H
+#define FLOOD_H
+
+#include <stdint.h>
+#include "maze.h"
+
+#define FLOOD_UNREACHABLE 0xFFFFu
+#define FLOOD_CONFIGS (MAZE_MAX_CELLS * 4)
+
+/* flags for flood_run / flood_cells */
+#define FLOOD_UNKNOWN_OPEN 1u /* unknown walls count as open (searching) */
+#define FLOOD_FULL 2u         /* fill the whole field, do not stop at src */
+
+typedef struct {
+    uint8_t cost[FLOOD_CONFIGS / 2];        /* nibble per (cell, heading) */
+    uint8_t open[FLOOD_CONFIGS / 8];        /* BFS open set, 1 bit each */
+    uint8_t target[(MAZE_MAX_CELLS + 7) / 8]; /* target cells, 1 bit each */
+} flood_t;
+
+void flood_target_clear(flood_t *f);
+void flood_target_add(flood_t *f, maze_cell_t c);
+void flood_target_goal(flood_t *f, const maze_t *m); /* targets = goal set */
+int flood_is_target(const flood_t *f, maze_cell_t c);
+
+/* Heading-aware flood towards the target cells. Returns the absolute cost
+ * of configuration (src, src_heading), FLOOD_UNREACHABLE if no target can be
+ * reached from it. Without FLOOD_FULL the flood stops as soon as src is
+ * costed: every configuration cheaper than src is then costed, which is all
+ * that flood_next_dir needs from src onward. */
+uint16_t flood_run(flood_t *f, const maze_t *m, maze_cell_t src,
+                   uint8_t src_heading, uint8_t flags);
+
+/* Absolute cost of (c, h) after flood_run, recovered next to `near`, the
+ * known absolute cost of a configuration within 7 of it. */
+uint16_t flood_cost(const flood_t *f, maze_cell_t c, uint8_t h, uint16_t near);
+
+/* The heading to leave cell c in, for a mouse at (c, h) whose cost is k:
+ * the neighbour that keeps the cost falling, preferring straight on, then
+ * right, then left, then back. Returns -1 if c is a target or unreachable. */
+int flood_next_dir(const flood_t *f, const maze_t *m, maze_cell_t c,
+                   uint8_t h, uint16_t k, uint8_t flags);
+
+/* Classic floodfill: cell distances to the targets. Returns the distance
+ * of cell src (FLOOD_UNREACHABLE if none); FLOOD_FULL as above. */
+uint16_t flood_cells(flood_t *f, const maze_t *m, maze_cell_t src, uint8_t flags);
+/* Distance of cell c after flood_cells, next to a known distance within 7. */
+uint16_t flood_cell_dist(const flood_t *f, maze_cell_t c, uint16_t near);
+
+#endif
