@@ -98,7 +98,9 @@ fuzz: | deps
 	$(B)/fuzz/fuzz_mazefile -max_total_time=$(FUZZ_SECONDS) -max_len=8192 $(B)/fuzz/corpus
 
 mazes:
-	@echo "The micromouseonline database: git clone https://github.com/micromouseonline/mazefiles (needs internet)."
+	@if [ -d $(B)/mazefiles ]; then echo "$(B)/mazefiles exists"; else \
+	  git clone --depth 1 https://github.com/micromouseonline/mazefiles $(B)/mazefiles || \
+	  { echo "make mazes: clone failed (needs internet)" >&2; exit 3; }; fi
 
 clean:
 	rm -rf $(B)

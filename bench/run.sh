@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# run.sh - `make bench`: flood timing, exploration over the database,
+# firmware size. Record the output in docs/BENCHMARKS.md with date and machine.
+set -u
+B=build
+SHARED=${SHARED:-../shared}
+DB=$SHARED/mazes
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(date -u +%Y-%m-%d)"
+if [ -d "$DB" ]; then
+  $B/bench_flood "$DB/classic/japan2018.txt" "$DB/halfsize/japan2019hef.txt"
+  for m in japan2018 japan2019; do
+    printf '%s: ' "$m"; $B/mmmaze explore --json "$DB/classic/$m.txt"
+  done
+  start=$(date +%s%N)
+  $B/mmmaze explore --all "$DB/classic" 2>/dev/null
+  end=$(date +%s%N)
+  awk -v ns=$((end - start)) 'BEGIN { printf "wall time of mmmaze explore --all classic: %.2f s\n", ns / 1e9 }'
+else
+  echo "SKIP database benchmarks: $DB not found"
+  $B/bench_flood mazes/*.txt
+fi
+make -s firmware-size
