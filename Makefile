@@ -25,7 +25,7 @@ TEST_SRC := $(wildcard test/test_*.c)
 TESTS    := $(patsubst test/%.c,$(B)/test/%,$(TEST_SRC))
 
 # Link-time mocks: a test that wraps HAL calls names them here.
-WRAP_test_explore := -Wl,--wrap=hal_log
+WRAP_test_explore := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros
 
 .PHONY: all deps test sim bench fuzz firmware firmware-size mazes clean tools
 all: tools
@@ -83,8 +83,13 @@ sim: deps $(B)/mmmaze
 	$(B)/mmmaze explore $(MAZE)
 
 # ---- benchmarks ----
-bench: deps $(B)/mmmaze $(B)/bench_flood
+bench: deps $(B)/mmmaze $(B)/bench_flood $(B)/simavr_cycles $(B)/avr/flood0.elf $(B)/avr/flood10.elf
 	bash bench/run.sh
+$(B)/simavr_cycles: bench/simavr_cycles.c | deps
+	$(CC) -O2 $< $$(pkg-config --cflags --libs simavr) -o $@
+$(B)/avr/flood%.elf: bench/avr_flood.c $(FW_SRC) | deps
+	@mkdir -p $(dir $@)
+	$(AVR_CC) $(AVR_FLAGS) -DREPS=$* -Wl,--gc-sections bench/avr_flood.c firmware/flood.c firmware/maze.c -o $@
 $(B)/bench_flood: bench/bench_flood.c $(B)/libmm.a
 	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(B)/libmm.a $(LIBS) -o $@
 

@@ -13,6 +13,7 @@ void explore_init(explore_t *e, const maze_t *blank)
     e->steps = 0;
     e->proven_at_step = EXPLORE_NEVER;
     e->run_cost = FLOOD_UNREACHABLE;
+    e->plan_us_max = 0;
 }
 
 void explore_sense(explore_t *e, uint8_t walls)
@@ -91,7 +92,7 @@ static int step_to_targets(explore_t *e)
     return flood_next_dir(&e->flood, &e->map, e->cell, e->heading, k, FLOOD_UNKNOWN_OPEN);
 }
 
-int explore_next(explore_t *e)
+static int decide(explore_t *e)
 {
     for (;;) {
         switch (e->phase) {
@@ -143,6 +144,15 @@ int explore_next(explore_t *e)
             return -1;
         }
     }
+}
+
+int explore_next(explore_t *e)
+{
+    uint32_t t0 = hal_micros();
+    int d = decide(e);
+    uint32_t took = hal_micros() - t0; /* unsigned: correct across the wrap */
+    if (took > e->plan_us_max) e->plan_us_max = took;
+    return d;
 }
 
 int explore_run_dir(explore_t *e, maze_cell_t c, uint8_t h)

@@ -44,6 +44,7 @@ typedef struct {
     uint16_t steps;          /* cell moves made so far */
     uint16_t proven_at_step; /* step when the path was proven, or EXPLORE_NEVER */
     uint16_t run_cost;       /* cost of the proven run path */
+    uint32_t plan_us_max;    /* longest explore_next so far, hal_micros us */
 } explore_t;
 
 /* Start exploring with a map holding size, start and goal (walls ignored:

@@ -7,15 +7,18 @@
 #define MOD 15u      /* costs are stored modulo 15 */
 #define UNSEEN 15u   /* nibble of a configuration not yet reached */
 
+/* Branches instead of a variable shift: the AVR shifts one bit per cycle
+ * in a loop, but swaps nibbles in one. */
 static uint8_t nib_get(const flood_t *f, uint16_t i)
 {
-    return (uint8_t)((f->cost[i >> 1] >> ((i & 1u) * 4u)) & 0x0Fu);
+    uint8_t b = f->cost[i >> 1];
+    return (i & 1u) ? (uint8_t)(b >> 4) : (uint8_t)(b & 0x0Fu);
 }
 
 static void nib_set(flood_t *f, uint16_t i, uint8_t v)
 {
-    uint8_t sh = (uint8_t)((i & 1u) * 4u);
-    f->cost[i >> 1] = (uint8_t)((f->cost[i >> 1] & ~(0x0Fu << sh)) | ((uint16_t)v << sh));
+    uint8_t *b = &f->cost[i >> 1];
+    *b = (i & 1u) ? (uint8_t)((*b & 0x0Fu) | (uint8_t)(v << 4)) : (uint8_t)((*b & 0xF0u) | v);
 }
 
 static void open_add(flood_t *f, uint16_t i) { f->open[i >> 3] |= (uint8_t)(1u << (i & 7u)); }
@@ -60,25 +63,24 @@ typedef uint8_t (*preds_fn)(const maze_t *m, uint16_t i, uint8_t flags, uint16_t
 
 static uint8_t preds_heading(const maze_t *m, uint16_t i, uint8_t flags, uint16_t out[4])
 {
-    maze_cell_t c = (maze_cell_t)(i >> 2), back;
+    maze_cell_t c = (maze_cell_t)(i >> 2);
     uint8_t h = (uint8_t)(i & 3u), n = 0;
     /* rotating into heading h from either side */
     out[n++] = (uint16_t)(c * 4u + maze_turn(h, 1));
     out[n++] = (uint16_t)(c * 4u + maze_turn(h, -1));
     /* driving forward in heading h from the cell behind */
-    if (maze_passable(m, c, maze_turn(h, 2), flags & FLOOD_UNKNOWN_OPEN) &&
-        maze_neighbour(m, c, maze_turn(h, 2), &back))
-        out[n++] = (uint16_t)(back * 4u + h);
+    if (maze_passable(m, c, maze_turn(h, 2), flags & FLOOD_UNKNOWN_OPEN))
+        out[n++] = (uint16_t)(maze_step(m, c, maze_turn(h, 2)) * 4u + h);
     return n;
 }
 
 static uint8_t preds_cell(const maze_t *m, uint16_t i, uint8_t flags, uint16_t out[4])
 {
-    maze_cell_t c = (maze_cell_t)(i >> 2), nb;
+    maze_cell_t c = (maze_cell_t)(i >> 2);
     uint8_t n = 0;
     for (uint8_t d = 0; d < 4; d++)
-        if (maze_passable(m, c, d, flags & FLOOD_UNKNOWN_OPEN) && maze_neighbour(m, c, d, &nb))
-            out[n++] = (uint16_t)(nb * 4u);
+        if (maze_passable(m, c, d, flags & FLOOD_UNKNOWN_OPEN))
+            out[n++] = (uint16_t)(maze_step(m, c, d) * 4u);
     return n;
 }
 
@@ -110,10 +112,11 @@ static uint16_t bfs(flood_t *f, const maze_t *m, uint16_t src, uint8_t flags,
         added = 0;
         for (uint16_t b = 0; b < nbytes; b++) {
             if (!f->open[b]) continue;
-            for (uint8_t bit = 0; bit < 8; bit++) {
-                uint16_t i = (uint16_t)(b * 8u + bit), p[4];
-                if (!((f->open[b] >> bit) & 1u) || nib_get(f, i) != now) continue;
-                f->open[b] &= (uint8_t)~(1u << bit);
+            uint16_t i = (uint16_t)(b * 8u);
+            for (uint8_t mask = 1; mask; mask = (uint8_t)(mask << 1), i++) {
+                uint16_t p[4];
+                if (!(f->open[b] & mask) || nib_get(f, i) != now) continue;
+                f->open[b] &= (uint8_t)~mask;
                 uint8_t np = preds(m, i, flags, p);
                 for (uint8_t k = 0; k < np; k++) {
                     if (nib_get(f, p[k]) != UNSEEN) continue;
@@ -150,10 +153,8 @@ int flood_next_dir(const flood_t *f, const maze_t *m, maze_cell_t c, uint8_t h,
     if (k == 0 || k == FLOOD_UNREACHABLE) return -1;
     for (uint8_t j = 0; j < 4; j++) {
         uint8_t d = maze_turn(h, order[j]);
-        maze_cell_t n;
-        if (!maze_passable(m, c, d, flags & FLOOD_UNKNOWN_OPEN) || !maze_neighbour(m, c, d, &n))
-            continue;
-        uint16_t rest = flood_cost(f, n, d, k);
+        if (!maze_passable(m, c, d, flags & FLOOD_UNKNOWN_OPEN)) continue;
+        uint16_t rest = flood_cost(f, maze_step(m, c, d), d, k);
         if (rest != FLOOD_UNREACHABLE && rest + 1u + rot_cost[j] == k) return d;
     }
     return -1;
