@@ -42,6 +42,13 @@ static int bad_usage(const char *what)
     return EXIT_BAD_INPUT;
 }
 
+/* getopt_long returned '?' or ':' for argv[optind - 1]. */
+static int bad_option(const char *cmd, char **argv)
+{
+    fprintf(stderr, "mmmaze: %s: unknown option or missing value: '%s' (try 'mmmaze --help')\n", cmd, argv[optind - 1]);
+    return EXIT_BAD_INPUT;
+}
+
 /* Parse a whole decimal number in [lo, hi]; on error print one line. */
 static int parse_num(const char *opt, const char *s, long lo, long hi, long *out)
 {
@@ -88,7 +95,7 @@ static int cmd_check(int argc, char **argv)
     int strict = 0, o, rc = EXIT_OK;
     while ((o = getopt_long(argc, argv, "", opts, NULL)) != -1) {
         if (o == 's') strict = 1;
-        else return bad_usage("check: unknown option");
+        else return bad_option("check", argv);
     }
     if (optind >= argc) return bad_usage("check: no FILE given");
     for (int i = optind; i < argc; i++) {
@@ -116,7 +123,7 @@ static int cmd_show(int argc, char **argv)
     int with_path = 0, o;
     while ((o = getopt_long(argc, argv, "", opts, NULL)) != -1) {
         if (o == 'p') with_path = 1;
-        else return bad_usage("show: unknown option");
+        else return bad_option("show", argv);
     }
     if (optind != argc - 1) return bad_usage("show: needs exactly one FILE");
     if (load(argv[optind]) != 0) return EXIT_BAD_INPUT;
@@ -162,7 +169,7 @@ static int cmd_solve(int argc, char **argv)
     int json = 0, o;
     while ((o = getopt_long(argc, argv, "", opts, NULL)) != -1) {
         if (o == 'j') json = 1;
-        else return bad_usage("solve: unknown option");
+        else return bad_option("solve", argv);
     }
     if (optind != argc - 1) return bad_usage("solve: needs exactly one FILE");
     if (load(argv[optind]) != 0) return EXIT_BAD_INPUT;
@@ -200,7 +207,7 @@ static int cmd_gen(int argc, char **argv)
     int o;
     while ((o = getopt_long(argc, argv, "", opts, NULL)) != -1) {
         const char *name = o == 'n' ? "--size" : o == 'w' ? "--width" : o == 'h' ? "--height" : "--seed";
-        if (o == '?') return bad_usage("gen: unknown option");
+        if (o == '?' || o == ':') return bad_option("gen", argv);
         if (o == 's') {
             if (parse_num(name, optarg, 0, 4294967295L, &v) != 0) return EXIT_BAD_INPUT;
             seed = v;
@@ -346,7 +353,7 @@ static int cmd_explore(int argc, char **argv)
     while ((o = getopt_long(argc, argv, "", opts, NULL)) != -1) {
         if (o == 'j') json = 1;
         else if (o == 'a') all = optarg;
-        else return bad_usage("explore: unknown option");
+        else return bad_option("explore", argv);
     }
     if (all) {
         if (optind != argc) return bad_usage("explore --all DIR takes no FILE");
@@ -374,7 +381,7 @@ int main(int argc, char **argv)
         usage(stdout);
         return EXIT_OK;
     }
-    opterr = 1;
+    opterr = 0; /* our own one-line messages instead of getopt's */
     const char *cmd = argv[1];
     /* getopt sees the subcommand as argv[0] */
     argc--;
