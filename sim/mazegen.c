@@ -90,7 +90,8 @@ static void carve(maze_t *m, uint32_t *rng)
     }
 }
 
-static void add_loops(maze_t *m, uint32_t *rng)
+/* Returns the number of walls knocked out. */
+static uint16_t add_loops(maze_t *m, uint32_t *rng)
 {
     uint16_t closed = 0;
     for (uint16_t c = 0; c < maze_cells(m); c++)
@@ -109,6 +110,7 @@ static void add_loops(maze_t *m, uint32_t *rng)
         maze_set_wall(m, c, d, MAZE_WALL_OPEN);
         done++;
     }
+    return done;
 }
 
 int mazegen_generate(maze_t *m, uint8_t width, uint8_t height, uint32_t seed)
@@ -121,14 +123,20 @@ int mazegen_generate(maze_t *m, uint8_t width, uint8_t height, uint32_t seed)
     if (!rng) rng = 1;
     for (int i = 0; i < 8; i++) rng_next(&rng);
 
-    maze_close_unknown(m);
-    for (uint16_t c = 0; c < maze_cells(m); c++)
-        for (uint8_t d = MAZE_NORTH; d <= MAZE_EAST; d++) {
-            maze_cell_t n;
-            if (maze_is_goal(m, (maze_cell_t)c) && maze_neighbour(m, (maze_cell_t)c, d, &n) && maze_is_goal(m, n))
-                maze_set_wall(m, (maze_cell_t)c, d, MAZE_WALL_OPEN);
-        }
-    carve(m, &rng);
-    add_loops(m, &rng);
+    /* A small maze can come out of the search with no wall that may be
+     * knocked out under the post rule: search again (same seed, the PRNG
+     * moves on), so every maze has a loop. */
+    for (int attempt = 0; attempt < 64; attempt++) {
+        maze_init(m, width, height);
+        maze_close_unknown(m);
+        for (uint16_t c = 0; c < maze_cells(m); c++)
+            for (uint8_t d = MAZE_NORTH; d <= MAZE_EAST; d++) {
+                maze_cell_t n;
+                if (maze_is_goal(m, (maze_cell_t)c) && maze_neighbour(m, (maze_cell_t)c, d, &n) && maze_is_goal(m, n))
+                    maze_set_wall(m, (maze_cell_t)c, d, MAZE_WALL_OPEN);
+            }
+        carve(m, &rng);
+        if (add_loops(m, &rng) > 0) break;
+    }
     return 0;
 }

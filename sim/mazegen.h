@@ -4,7 +4,8 @@
  * corner facing north with a wall on its east side; a centre goal (2x2 for
  * even sizes, 1 cell for odd, per axis) that is open inside and has exactly
  * one entrance; every post except the goal's centre post touches at least
- * one wall; the goal is reachable and there are several routes (loops).
+ * one wall; the goal is reachable and there are several routes (loops),
+ * except in 4x4 where the rules leave room for one route only.
  * Same (width, height, seed) -> the same maze, on every machine.
  */
 #ifndef MAZEGEN_H
