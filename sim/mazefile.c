@@ -386,9 +386,21 @@ static void finish(out_t *o)
     if (o->cap) o->buf[o->n < o->cap ? o->n : o->cap - 1] = '\0';
 }
 
+/* One letter per cell: a start inside the goal area hides one goal cell.
+ * If the goal is the default centre, leaving the G letters out says it
+ * exactly; any other goal holding the start cannot be written. */
+static int write_goal_letters(const maze_t *m)
+{
+    maze_t centre;
+    if (!maze_is_goal(m, m->start)) return 1;
+    maze_init(&centre, m->width, m->height);
+    return memcmp(centre.goal, m->goal, sizeof centre.goal) != 0;
+}
+
 size_t mazefile_format(const maze_t *m, char *buf, size_t cap)
 {
     out_t o = { buf, cap, 0 };
+    int letters = write_goal_letters(m);
     for (int r = 0; r <= 2 * m->height; r++) {
         if (r % 2 == 0) {
             /* north walls of row y (y = -1: the south boundary) */
@@ -407,7 +419,7 @@ size_t mazefile_format(const maze_t *m, char *buf, size_t cap)
                 maze_cell_t c = maze_cell(m, x, y);
                 line[k++] = maze_passable(m, c, MAZE_WEST, 0) ? ' ' : '|';
                 line[k++] = ' ';
-                line[k++] = c == m->start ? 'S' : maze_is_goal(m, c) ? 'G' : ' ';
+                line[k++] = c == m->start ? 'S' : (letters && maze_is_goal(m, c)) ? 'G' : ' ';
                 line[k++] = ' ';
             }
             line[k++] = '|';

@@ -36,7 +36,9 @@ int mazefile_load(maze_t *m, const char *path, mazefile_info_t *info,
 /* Write m in the text format with 'o' posts, 'S' in the start cell and 'G'
  * in every goal cell, LF line ends, no trailing spaces. Like snprintf:
  * returns the length the whole text needs; writes at most cap bytes
- * including a terminating NUL. Unknown walls are written as present. */
+ * including a terminating NUL. Unknown walls are written as present.
+ * A start cell inside a goal area other than the default centre cannot be
+ * written (one letter per cell); that goal is written without the start. */
 size_t mazefile_format(const maze_t *m, char *buf, size_t cap);
 
 /* Write m in mms numeric format (same snprintf convention). */

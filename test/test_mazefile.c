@@ -216,6 +216,29 @@ static void test_mms_format(void **state)
     assert_true(maze_is_goal(&b, maze_cell(&b, 1, 0)) && maze_is_goal(&b, maze_cell(&b, 1, 1)));
 }
 
+/* A start inside the default centre goal: written without G letters, so
+ * reading it back gives the same goal. */
+static void test_start_in_goal_round_trip(void **state)
+{
+    (void)state;
+    const char *t =
+        "o---o---o---o---o\n"
+        "|               |\n"
+        "o   o   o   o   o\n"
+        "|     S         |\n"
+        "o   o   o   o   o\n"
+        "|               |\n"
+        "o   o   o   o   o\n"
+        "|               |\n"
+        "o---o---o---o---o\n";
+    assert_int_equal(parse(&a, t), 0);
+    assert_true(maze_is_goal(&a, a.start));
+    mazefile_format(&a, text, sizeof text);
+    assert_null(strchr(text, 'G'));
+    assert_int_equal(parse(&b, text), 0);
+    assert_same_maze(&a, &b);
+}
+
 static int ends_with_txt(const char *s)
 {
     size_t n = strlen(s);
@@ -334,6 +357,7 @@ int main(void)
         cmocka_unit_test(test_errors_have_line_and_col),
         cmocka_unit_test(test_nul_size_and_bounds),
         cmocka_unit_test(test_mms_format),
+        cmocka_unit_test(test_start_in_goal_round_trip),
         cmocka_unit_test(test_database),
         cmocka_unit_test(test_every_database_file_parses),
     };
