@@ -43,6 +43,7 @@ typedef struct {
     uint8_t phase;           /* EXPLORE_TO_GOAL.. */
     uint16_t steps;          /* cell moves made so far */
     uint16_t proven_at_step; /* step when the path was proven, or EXPLORE_NEVER */
+    uint16_t goal_at_step;   /* step when the goal was first entered, or EXPLORE_NEVER */
     uint16_t run_cost;       /* cost of the proven run path */
     uint32_t plan_us_max;    /* longest explore_next so far, hal_micros us */
 } explore_t;

@@ -30,6 +30,7 @@
 /* flags for flood_run / flood_cells */
 #define FLOOD_UNKNOWN_OPEN 1u /* unknown walls count as open (searching) */
 #define FLOOD_FULL 2u         /* fill the whole field, do not stop at src */
+#define FLOOD_PREFER_KNOWN 4u /* flood_next_dir: known-open walls win ties */
 
 typedef struct {
     uint8_t cost[FLOOD_CONFIGS / 2];        /* nibble per (cell, heading) */
@@ -65,5 +66,8 @@ int flood_next_dir(const flood_t *f, const maze_t *m, maze_cell_t c,
 uint16_t flood_cells(flood_t *f, const maze_t *m, maze_cell_t src, uint8_t flags);
 /* Distance of cell c after flood_cells, next to a known distance within 7. */
 uint16_t flood_cell_dist(const flood_t *f, maze_cell_t c, uint16_t near);
+/* The heading to leave c in (facing h, distance k) towards a neighbour at
+ * distance k-1, preferring straight, right, left, back; -1 if none. */
+int flood_next_cell_dir(const flood_t *f, const maze_t *m, maze_cell_t c, uint8_t h, uint16_t k, uint8_t flags);
 
 #endif

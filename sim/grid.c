@@ -25,6 +25,7 @@ int grid_explore(const maze_t *truth, grid_result_t *r)
     memset(r, 0, sizeof *r);
     memset(visited, 0, sizeof visited);
     r->proven_at_step = -1;
+    r->goal_at_step = -1;
     r->goal_reachable = solve_best(truth, 0, &best) == 0;
     r->true_cost = best.cost;
 
@@ -53,6 +54,7 @@ int grid_explore(const maze_t *truth, grid_result_t *r)
         }
     }
     if (mouse.proven_at_step != EXPLORE_NEVER) r->proven_at_step = mouse.proven_at_step;
+    if (mouse.goal_at_step != EXPLORE_NEVER) r->goal_at_step = mouse.goal_at_step;
     r->run_cost = mouse.run_cost;
     r->ended_at_start = mouse.cell == truth->start;
     r->final_path_optimal = mouse.phase == EXPLORE_DONE && r->goal_reachable &&

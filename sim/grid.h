@@ -12,6 +12,7 @@ typedef struct {
     uint32_t steps_forward, steps_right, steps_left, steps_back;
     uint32_t cells_visited;  /* distinct cells entered, start included */
     int32_t proven_at_step;  /* step when the run path was proven, -1 never */
+    int32_t goal_at_step;    /* step when the goal was first entered, -1 never */
     int goal_reachable;      /* the goal can be reached in the true maze */
     int final_path_optimal;  /* proven run path has the true best cost */
     uint16_t run_cost;       /* heading-aware cost of the mouse's run path */

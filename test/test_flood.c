@@ -99,6 +99,35 @@ static void test_prefers_straight(void **state)
     assert_int_equal(flood_next_dir(&f, &m, s, MAZE_EAST, k, FLOOD_UNKNOWN_OPEN), MAZE_EAST);
 }
 
+/* Classic move choice, and known-open walls winning ties when asked. */
+static void test_next_cell_dir_and_prefer_known(void **state)
+{
+    (void)state;
+    maze_t m;
+    maze_init(&m, 5, 5); /* goal (2,2); every interior wall unknown */
+    maze_cell_t s = maze_cell(&m, 0, 0);
+    flood_target_goal(&f, &m);
+    uint16_t k = flood_cells(&f, &m, s, FLOOD_UNKNOWN_OPEN);
+    assert_int_equal(k, 4);
+    assert_int_equal(flood_next_cell_dir(&f, &m, s, MAZE_NORTH, k, FLOOD_UNKNOWN_OPEN), MAZE_NORTH);
+    assert_int_equal(flood_next_cell_dir(&f, &m, s, MAZE_EAST, k, FLOOD_UNKNOWN_OPEN), MAZE_EAST);
+    assert_int_equal(flood_next_cell_dir(&f, &m, s, MAZE_SOUTH, k, FLOOD_UNKNOWN_OPEN), MAZE_EAST); /* right */
+    assert_int_equal(flood_next_cell_dir(&f, &m, s, MAZE_NORTH, k, 0), -1); /* unknown closed */
+    /* (2,0) facing north, targets (1,0) and (3,0): right and left tie at
+     * cost 2; right wins unless west is known open and east unknown, with
+     * FLOOD_PREFER_KNOWN */
+    maze_cell_t c = maze_cell(&m, 2, 0);
+    flood_target_clear(&f);
+    flood_target_add(&f, maze_cell(&m, 1, 0));
+    flood_target_add(&f, maze_cell(&m, 3, 0));
+    k = flood_run(&f, &m, c, MAZE_NORTH, FLOOD_UNKNOWN_OPEN | FLOOD_FULL);
+    assert_int_equal(k, 2);
+    assert_int_equal(flood_next_dir(&f, &m, c, MAZE_NORTH, k, FLOOD_UNKNOWN_OPEN), MAZE_EAST);
+    maze_set_wall(&m, c, MAZE_WEST, MAZE_WALL_OPEN);
+    assert_int_equal(flood_next_dir(&f, &m, c, MAZE_NORTH, k, FLOOD_UNKNOWN_OPEN), MAZE_EAST);
+    assert_int_equal(flood_next_dir(&f, &m, c, MAZE_NORTH, k, FLOOD_UNKNOWN_OPEN | FLOOD_PREFER_KNOWN), MAZE_WEST);
+}
+
 /* A serpentine 8x8 where costs run far past the nibble's 15: every
  * configuration's flood cost equals the host solver's exact cost. */
 static void test_serpentine_matches_solver(void **state)
@@ -152,6 +181,7 @@ int main(void)
         cmocka_unit_test(test_l_route),
         cmocka_unit_test(test_classic_open),
         cmocka_unit_test(test_prefers_straight),
+        cmocka_unit_test(test_next_cell_dir_and_prefer_known),
         cmocka_unit_test(test_serpentine_matches_solver),
         cmocka_unit_test(test_random_maps_match_solver),
     };

@@ -240,6 +240,7 @@ static json_t *explore_json(const grid_result_t *r)
                           r->final_path_optimal, "goal_reachable", r->goal_reachable, "ended_at_start",
                           r->ended_at_start);
     json_object_set_new(o, "proven_at_step", r->proven_at_step >= 0 ? json_integer(r->proven_at_step) : json_null());
+    json_object_set_new(o, "goal_at_step", r->goal_at_step >= 0 ? json_integer(r->goal_at_step) : json_null());
     json_object_set_new(o, "run_cost", r->proven_at_step >= 0 ? json_integer(r->run_cost) : json_null());
     json_object_set_new(o, "true_cost", r->goal_reachable ? json_integer(r->true_cost) : json_null());
     return o;
