@@ -1,5 +1,4 @@
 # mmsim - micromouse simulator. `make test` and `make sim` are all a newcomer needs.
-.POSIX:
 .DEFAULT_GOAL := all
 SHELL := /bin/bash
 

@@ -14,12 +14,13 @@
 static maze_t m;
 static flood_t f;
 volatile uint16_t sink;
+volatile uint8_t reps = REPS; /* volatile: REPS 0 must not fold the loop away */
 
 int main(void)
 {
     maze_init(&m, 16, 16);
     flood_target_goal(&f, &m);
-    for (uint8_t i = 0; i < REPS; i++)
+    for (uint8_t i = 0; i < reps; i++)
         sink = flood_run(&f, &m, m.start, m.start_heading, FLOOD_UNKNOWN_OPEN | FLOOD_FULL);
     cli();
     sleep_mode();

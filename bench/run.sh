@@ -19,6 +19,6 @@ else
   echo "SKIP database benchmarks: $DB not found"
   $B/bench_flood mazes/*.txt
 fi
-base=$($B/simavr_cycles $B/avr/flood0.elf 2>/dev/null); ten=$($B/simavr_cycles $B/avr/flood10.elf 2>/dev/null)
+base=$($B/simavr_cycles $B/avr/flood0.elf 2>/dev/null | tail -1); ten=$($B/simavr_cycles $B/avr/flood10.elf 2>/dev/null | tail -1)
 awk -v a="$base" -v b="$ten" 'BEGIN { c = (b - a) / 10; printf "AVR (ATmega328P 16 MHz, simavr): full heading-aware flood of a blank 16x16 map: %d cycles = %.1f ms\n", c, c / 16000 }'
 make -s firmware-size

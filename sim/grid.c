@@ -7,7 +7,7 @@
 
 static explore_t mouse; /* host: one grid run at a time; 2.7 KB for 32x32 */
 
-static uint8_t sense(const maze_t *truth, maze_cell_t c, uint8_t h)
+uint8_t grid_sense(const maze_t *truth, maze_cell_t c, uint8_t h)
 {
     uint8_t w = 0;
     if (!maze_passable(truth, c, h, 0)) w |= EXPLORE_WALL_FRONT;
@@ -33,7 +33,7 @@ int grid_explore(const maze_t *truth, grid_result_t *r)
     visited[mouse.cell >> 3] |= (uint8_t)(1u << (mouse.cell & 7));
     r->cells_visited = 1;
     while (r->steps < limit) {
-        explore_sense(&mouse, sense(truth, mouse.cell, mouse.heading));
+        explore_sense(&mouse, grid_sense(truth, mouse.cell, mouse.heading));
         int d = explore_next(&mouse);
         if (d < 0) break;
         maze_cell_t n;

@@ -20,6 +20,9 @@ typedef struct {
     int ended_at_start;      /* the mouse is back in the start cell */
 } grid_result_t;
 
+/* The walls a mouse at (c, facing h) sees in truth: EXPLORE_WALL_* bits. */
+uint8_t grid_sense(const maze_t *truth, maze_cell_t c, uint8_t h);
+
 /* Explore truth (every wall known) from an empty map. Returns 0 when the
  * mouse is back at the start with its path proven, 1 otherwise (goal
  * unreachable, or the step limit of 16 moves per cell was hit). */

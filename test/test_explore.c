@@ -42,22 +42,13 @@ static void closed_maze(maze_t *m, uint8_t w, uint8_t h)
     maze_close_unknown(m);
 }
 
-static uint8_t sense(const maze_t *t, maze_cell_t c, uint8_t h)
-{
-    uint8_t w = 0;
-    if (!maze_passable(t, c, h, 0)) w |= EXPLORE_WALL_FRONT;
-    if (!maze_passable(t, c, maze_turn(h, 1), 0)) w |= EXPLORE_WALL_RIGHT;
-    if (!maze_passable(t, c, maze_turn(h, -1), 0)) w |= EXPLORE_WALL_LEFT;
-    return w;
-}
-
 /* Drive the mouse through truth; returns the moves made. */
 static int drive(const maze_t *truth, uint8_t *moves, int max)
 {
     int n = 0;
     explore_init(&mouse, truth);
     for (;;) {
-        explore_sense(&mouse, sense(truth, mouse.cell, mouse.heading));
+        explore_sense(&mouse, grid_sense(truth, mouse.cell, mouse.heading));
         int d = explore_next(&mouse);
         if (d < 0 || n >= max) return n;
         assert_true(maze_passable(truth, mouse.cell, (uint8_t)d, 0)); /* never into a wall */
