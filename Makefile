@@ -8,7 +8,7 @@ DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev \
 	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev
 
 CC      ?= gcc
-STD     := -std=c99 -D_POSIX_C_SOURCE=200809L
+STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
 WARN    := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wno-unused-parameter
 INC     := -Ifirmware -Ihal -Ihal/sim -Isim
 CFLAGS  ?= -O2 -g
