@@ -1,0 +1,72 @@
+/* config.h - every number of the simulated world and robot, in one place.
+ *
+ * Defaults reproduce the paper's robot (Table 1, eq. 1-7) with the fixes
+ * the issues ask for; each key's unit, range and source is in the table
+ * in config.c, which is also what --print-config prints. A config file is
+ * INI (parsed by Debian's libinih):
+ *
+ *   [motor]
+ *   battery_v = 7.4
+ *
+ * Unknown keys, missing values and values out of physical range are errors
+ * "FILE:LINE: section.key: reason".
+ */
+#ifndef CONFIG_H
+#define CONFIG_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+typedef struct {
+    /* [world] */
+    double cell_m;          /* cell pitch, post centre to post centre */
+    double wall_thick_m;    /* wall thickness = post width */
+    double wall_height_m;
+    double post_m;          /* post side */
+    double centre_post;     /* 1 = the post in the middle of the goal is there */
+    /* [robot] */
+    double body_w_m, body_l_m, body_h_m, body_mass_kg;
+    double body_clearance_m; /* floor to the underside of the body */
+    double wheel_d_m, wheel_w_m, wheel_mass_kg;
+    double wheel_x_m;       /* wheel centre plane from the body's centre line */
+    double axle_y_m;        /* axle position along the body, from its centre */
+    double caster_r_m, caster_mass_kg, caster_y_m;
+    double tyre_mu;         /* Coulomb friction, tyre on floor */
+    double tyre_mu_dynamic; /* sliding friction; <= tyre_mu */
+    /* [motor] */
+    double gear_ratio;
+    double kt_nm_per_a;     /* torque constant at the output shaft */
+    double r_ohm, l_h;
+    double battery_v, battery_r_ohm;
+    double rotor_inertia_kgm2; /* at the motor shaft; 0 = ignored */
+    /* [encoder] */
+    double encoder_ppr;     /* pulses per motor-shaft revolution */
+    /* [tof] */
+    double tof_range_m, tof_blind_m, tof_cv, tof_period_s;
+    double tof_x_m, tof_y_m;  /* side sensors' position on the body (x = +-) */
+    double tof_front_y_m;     /* front sensor, on the centre line */
+    double tof_side_angle_deg; /* side sensors point this far out from ahead */
+    /* [sim] */
+    double step_s;          /* physics step */
+    double solver_iterations;
+    double control_hz;      /* firmware control tick */
+    double time_limit_s;    /* contest limit */
+} simcfg_t;
+
+/* The defaults (the paper's robot). */
+void config_defaults(simcfg_t *c);
+
+/* Apply an INI file over c. Returns 0, or -1 with one line in err:
+ * "FILE:LINE: section.key: reason" (or "FILE: cannot open: ..."). */
+int config_load(simcfg_t *c, const char *path, char *err, size_t errlen);
+
+/* Same from a NUL-terminated string (name is used in messages). */
+int config_load_string(simcfg_t *c, const char *text, const char *name, char *err, size_t errlen);
+
+/* Write every key with its value, unit and source, as a valid INI file. */
+void config_print(const simcfg_t *c, FILE *out);
+
+/* SHA-256 of config_print's text, as 64 hex digits + NUL. */
+void config_hash(const simcfg_t *c, char out[65]);
+
+#endif

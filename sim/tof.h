@@ -1,0 +1,33 @@
+/* tof.h - time-of-flight distance sensor model (after the ray cast).
+ *
+ * true distance d from the ray cast -> clamp to at least the blind spot ->
+ * add Gaussian noise, sigma = cv * d -> clamp to [0, range]. Nothing hit
+ * within range = timeout, reported as a flag (and the range as distance).
+ * Each sensor has its own PRNG stream (splitmix64 seeded from the run seed
+ * and the sensor index; Box-Muller for the normal deviate), so adding a
+ * sensor or reading one more often never changes another one's noise. */
+#ifndef TOF_H
+#define TOF_H
+
+#include <stdint.h>
+#include "config.h"
+
+typedef struct {
+    double range_m, blind_m, cv;
+    uint64_t rng;     /* splitmix64 state */
+    int has_spare;    /* Box-Muller makes two deviates at a time */
+    double spare;
+} tof_t;
+
+typedef struct {
+    double dist_m;    /* what the sensor reports, m */
+    int timeout;      /* 1 = nothing within range */
+} tof_reading_t;
+
+void tof_init(tof_t *t, const simcfg_t *c, uint64_t seed, unsigned index);
+/* true_m < 0 means the ray hit nothing. */
+tof_reading_t tof_measure(tof_t *t, double true_m);
+/* A standard normal deviate from the sensor's stream (exposed for tests). */
+double tof_gauss(tof_t *t);
+
+#endif

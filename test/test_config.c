@@ -1,0 +1,88 @@
+/* test_config.c - the robot/world config: defaults, INI errors with
+ * FILE:LINE, print -> load round trip, hash. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "config.h"
+
+static simcfg_t c;
+static char err[300];
+
+static void test_defaults_are_the_papers_robot(void **state)
+{
+    (void)state;
+    config_defaults(&c);
+    assert_true(c.cell_m == 0.180 && c.body_w_m == 0.096 && c.body_l_m == 0.120 && c.body_mass_kg == 0.127);
+    assert_true(c.wheel_d_m == 0.032 && c.gear_ratio == 29.86 && c.kt_nm_per_a == 0.079025 && c.r_ohm == 16.6667);
+    assert_true(c.l_h == 0.001 && c.battery_v == 6.0 && c.encoder_ppr == 12 && c.tof_range_m == 1.2);
+    assert_true(c.tof_cv == 0.05 && c.tof_period_s == 0.030 && c.step_s == 0.001 && c.time_limit_s == 600);
+}
+
+static void test_load_and_errors(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *text, *want;
+    } bad[] = {
+        { "[motor]\nbattery_v = 7.4\nbogus = 1\n", "c.ini:3: motor.bogus: unknown key" },
+        { "[motor]\nbattery_v =\n", "c.ini:2: motor.battery_v: missing value" },
+        { "\n[motor]\nbattery_v = -3\n", "c.ini:3: motor.battery_v: -3 V is out of range [0.5, 50]" },
+        { "[robot]\ntyre_mu = lots\n", "c.ini:2: robot.tyre_mu: 'lots' is not a number" },
+        { "[robot]\nthis line has no equals sign\n", "c.ini:2: syntax error" },
+        { "[robot]\ntyre_mu = 0.3\n", "c.ini: robot.tyre_mu_dynamic: 1 is above tyre_mu 0.3" },
+        { "[nosuch]\nx = 1\n", "c.ini:2: nosuch.x: unknown key" },
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        config_defaults(&c);
+        assert_int_equal(config_load_string(&c, bad[i].text, "c.ini", err, sizeof err), -1);
+        if (strncmp(err, bad[i].want, strlen(bad[i].want)) != 0) fail_msg("case %zu: got \"%s\"", i, err);
+        assert_true(c.battery_v == 6.0 && c.tyre_mu == 1.0); /* nothing applied */
+    }
+    config_defaults(&c);
+    assert_int_equal(config_load_string(&c, "; paper friction\n[robot]\ntyre_mu = 0.35\ntyre_mu_dynamic = 0.25\n", "p.ini", err, sizeof err), 0);
+    assert_true(c.tyre_mu == 0.35 && c.tyre_mu_dynamic == 0.25);
+    assert_int_equal(config_load(&c, "/nonexistent/c.ini", err, sizeof err), -1);
+    assert_string_equal(err, "/nonexistent/c.ini: cannot open: No such file or directory");
+}
+
+static void test_print_round_trip_and_hash(void **state)
+{
+    (void)state;
+    simcfg_t d;
+    char h1[65], h2[65];
+    config_defaults(&c);
+    c.battery_v = 7.4;
+    char *text = NULL;
+    size_t len = 0;
+    FILE *mem = open_memstream(&text, &len);
+    config_print(&c, mem);
+    fclose(mem);
+    assert_non_null(strstr(text, "battery_v = 7.4 ; V;"));
+    config_defaults(&d);
+    assert_int_equal(config_load_string(&d, text, "printed", err, sizeof err), 0);
+    assert_memory_equal(&c, &d, sizeof c);
+    free(text);
+    config_hash(&c, h1);
+    config_hash(&d, h2);
+    assert_int_equal(strlen(h1), 64);
+    assert_string_equal(h1, h2);
+    d.battery_v = 7.5;
+    config_hash(&d, h2);
+    assert_string_not_equal(h1, h2);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_defaults_are_the_papers_robot),
+        cmocka_unit_test(test_load_and_errors),
+        cmocka_unit_test(test_print_round_trip_and_hash),
+    };
+    return cmocka_run_group_tests_name("config", tests, NULL, NULL);
+}
