@@ -19,7 +19,7 @@ B       := build
 FW_SRC   := $(wildcard firmware/*.c)
 HOST_SRC := $(wildcard sim/*.c) hal/sim/hal_sim.c
 LIB_SRC  := $(FW_SRC) $(HOST_SRC)
-TOOLS    := mmmaze
+TOOLS    := mmmaze mmsim
 TEST_SRC := $(wildcard test/test_*.c)
 TESTS    := $(patsubst test/%.c,$(B)/test/%,$(TEST_SRC))
 
@@ -63,7 +63,7 @@ $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
 
 test: deps $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) firmware-size
-	@MMMAZE=$(B)/san-tools/mmmaze SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
+	@MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
 # ---- AVR build of the firmware (ATmega328P) ----
 AVR_CC    := avr-gcc
@@ -76,9 +76,12 @@ firmware-size: | deps
 	@avr-nm -S --size-sort $(B)/avr/firmware.elf | grep -i ' [bd] ' | tail -8
 firmware: firmware-size
 
-# ---- simulation (grid mode until the physics simulator lands) ----
+# ---- simulation: the physics with the scripted driver until the firmware's
+# motion layer lands, then the grid-mode exploration of the firmware ----
 MAZE ?= mazes/gen-16x16-s1.txt
-sim: deps $(B)/mmmaze
+SEED ?= 1
+sim: deps $(B)/mmsim $(B)/mmmaze
+	$(B)/mmsim --maze $(MAZE) --seed $(SEED)
 	$(B)/mmmaze explore $(MAZE)
 
 # ---- benchmarks ----

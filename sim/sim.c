@@ -1,0 +1,71 @@
+/* sim.c - the contest loop around the world (see sim.h). */
+#include "sim.h"
+
+#include <math.h>
+
+static double start_heading(uint8_t d)
+{
+    static const double a[4] = { M_PI / 2, 0.0, -M_PI / 2, M_PI };
+    return a[d & 3];
+}
+
+int sim_init(sim_t *s, const simcfg_t *c, const maze_t *m, uint64_t seed)
+{
+    double cell = c->cell_m;
+    s->cfg = *c;
+    s->maze = m;
+    s->seed = seed;
+    s->world = world_create(c, m, (maze_x(m, m->start) + 0.5) * cell, (maze_y(m, m->start) + 0.5) * cell,
+                            start_heading(m->start_heading));
+    if (!s->world) return -1;
+    double counts_per_rev = c->encoder_ppr * c->gear_ratio;
+    uint64_t period = (uint64_t)llround(c->tof_period_s / c->step_s);
+    if (period == 0) period = 1;
+    for (int i = 0; i < 2; i++) {
+        motor_init(&s->motor[i], c);
+        encoder_init(&s->encoder[i], counts_per_rev, world_wheel_angle(s->world, i));
+        s->cmd[i] = 0;
+    }
+    for (int i = 0; i < WORLD_TOF_COUNT; i++) {
+        tof_init(&s->tof[i], c, seed, (unsigned)i);
+        s->tof_last[i].dist_m = c->tof_range_m;
+        s->tof_last[i].timeout = 1;
+        s->tof_true_m[i] = -1;
+        s->tof_next_step[i] = (uint64_t)i * period / WORLD_TOF_COUNT; /* staggered */
+    }
+    s->tof_enabled = 1;
+    race_init(&s->race, m, cell, c->time_limit_s);
+    s->step = 0;
+    return 0;
+}
+
+void sim_free(sim_t *s)
+{
+    world_destroy(s->world);
+    s->world = NULL;
+}
+
+double sim_time_s(const sim_t *s) { return (double)s->step * s->cfg.step_s; }
+
+void sim_step(sim_t *s)
+{
+    double dt = s->cfg.step_s;
+    double tl = motor_step(&s->motor[WORLD_LEFT], s->cmd[WORLD_LEFT], world_wheel_rate(s->world, WORLD_LEFT), dt);
+    double tr = motor_step(&s->motor[WORLD_RIGHT], s->cmd[WORLD_RIGHT], world_wheel_rate(s->world, WORLD_RIGHT), dt);
+    world_step(s->world, tl, tr);
+    s->step++;
+    for (int i = 0; i < 2; i++) encoder_update(&s->encoder[i], world_wheel_angle(s->world, i));
+    uint64_t period = (uint64_t)llround(s->cfg.tof_period_s / dt);
+    if (period == 0) period = 1;
+    for (int i = 0; i < WORLD_TOF_COUNT; i++) {
+        if (s->step < s->tof_next_step[i]) continue;
+        s->tof_next_step[i] += period;
+        if (!s->tof_enabled) continue;
+        /* rays only when a sensor updates: 3 rays per 30 ms, not per step */
+        s->tof_true_m[i] = world_tof_ray(s->world, i, s->cfg.tof_range_m);
+        s->tof_last[i] = tof_measure(&s->tof[i], s->tof_true_m[i]);
+    }
+    double x, y, h;
+    world_pose(s->world, &x, &y, &h);
+    race_update(&s->race, sim_time_s(s), x, y);
+}

@@ -1,0 +1,44 @@
+/* sim.h - one simulated contest: the ODE world, both motors and encoders,
+ * the three ToF sensors at their update periods, the contest timers.
+ * Time is simulation time only; every noise source has its own stream
+ * seeded from the run's seed, so the same inputs give the same run. */
+#ifndef SIM_H
+#define SIM_H
+
+#include <stdint.h>
+
+#include "config.h"
+#include "encoder.h"
+#include "maze.h"
+#include "motor.h"
+#include "race.h"
+#include "tof.h"
+#include "world.h"
+
+typedef struct {
+    simcfg_t cfg;
+    const maze_t *maze;
+    uint64_t seed;
+    world_t *world;
+    motor_t motor[2];
+    encoder_t encoder[2];
+    tof_t tof[WORLD_TOF_COUNT];
+    tof_reading_t tof_last[WORLD_TOF_COUNT];
+    double tof_true_m[WORLD_TOF_COUNT]; /* ray distance behind the last reading, -1 none */
+    uint64_t tof_next_step[WORLD_TOF_COUNT];
+    int tof_enabled;
+    race_t race;
+    uint64_t step;           /* physics steps done */
+    int cmd[2];              /* motor commands, -1023..1023 */
+} sim_t;
+
+/* Place the robot in the start cell's centre facing the start heading.
+ * Returns 0, or -1 if ODE could not be set up. */
+int sim_init(sim_t *s, const simcfg_t *c, const maze_t *m, uint64_t seed);
+void sim_free(sim_t *s);
+/* One physics step: motor currents from the commands, ODE step, encoders,
+ * due ToF readings (staggered by a third of a period each), timers. */
+void sim_step(sim_t *s);
+double sim_time_s(const sim_t *s);
+
+#endif

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# cli_mmsim.sh - the headless simulator: JSON keys, determinism, lap table,
+# zero wall contacts on generated mazes, config errors, exit codes, batch.
+set -u
+S=${MMSIM:-build/mmsim}
+T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
+fails=0
+ok()  { echo "ok: $1"; }
+bad() { echo "FAILED: $1"; fails=$((fails+1)); }
+want_rc() { local want=$1 desc=$2; shift 2
+  "$@" >"$T/out" 2>"$T/err"; local rc=$?
+  if [ $rc -eq "$want" ]; then ok "$desc"; else bad "$desc: exit $rc, want $want"; head -5 "$T/err"; fi; }
+py() { python3 -c "import json,sys; d=json.loads(open('$T/out').read().splitlines()[-1]); print($1)"; }
+
+want_rc 0 "run 8x8 json" "$S" --maze mazes/gen-8x8-s1.txt --runs 2 --json --seed 5
+[ "$(py "sorted(d.keys())")" = "['best_run_s', 'collisions', 'config_hash', 'driver', 'exit_reason', 'final_pose', 'first_run_s', 'laps', 'maze', 'reached_goal', 'real_time_factor', 'seed', 'sim_time_s', 'wall_time_s']" ] && ok "json keys" || bad "json keys: $(cat "$T/out")"
+[ "$(py "(d['reached_goal'], d['collisions'], len(d['laps']), d['exit_reason'], d['seed'])")" = "(True, 0, 2, 'done', 5)" ] && ok "two laps, no contact" || bad "laps: $(cat "$T/out")"
+[ "$(py "all(abs(l['run_s'] - (l['end_s'] - l['start_s'])) < 0.0015 for l in d['laps']) and d['best_run_s'] == min(l['run_s'] for l in d['laps'])")" = True ] && ok "lap arithmetic" || bad "lap arithmetic"
+strip() { python3 -c "import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1]); d.pop('wall_time_s'); d.pop('real_time_factor'); print(json.dumps(d, sort_keys=True))" "$1"; }
+cp "$T/out" "$T/a"; "$S" --maze mazes/gen-8x8-s1.txt --runs 2 --json --seed 5 >"$T/b"
+[ "$(strip "$T/a")" = "$(strip "$T/b")" ] && ok "deterministic" || bad "deterministic"
+
+want_rc 0 "text lap table" "$S" --maze mazes/gen-6x6-s1.txt --runs 1
+grep -q '^Lap   Start time  End time    Run time' "$T/out" && grep -q '^1     0:00.000' "$T/out" && ok "lap table" || bad "lap table: $(cat "$T/out")"
+
+# config: print -> load gives the same hash; errors with FILE:LINE
+"$S" --print-config >"$T/cfg.ini"
+want_rc 0 "run with printed config" "$S" --maze mazes/gen-5x5-s1.txt --runs 1 --json --config "$T/cfg.ini"
+h1=$(py "d['config_hash']"); "$S" --maze mazes/gen-5x5-s1.txt --runs 1 --json >"$T/out"; h2=$(py "d['config_hash']")
+[ "$h1" = "$h2" ] && ok "config hash stable" || bad "config hash"
+printf '[motor]\nbattery_v = 7.4\nwarp = 9\n' >"$T/bad.ini"
+want_rc 2 "unknown config key" "$S" --maze mazes/gen-5x5-s1.txt --config "$T/bad.ini"
+grep -q "^$T/bad.ini:3: motor.warp: unknown key$" "$T/err" && ok "config error line" || bad "config error line: $(cat "$T/err")"
+printf '[motor]\nbattery_v = 7.4\n' >"$T/v.ini"
+"$S" --maze mazes/gen-5x5-s1.txt --runs 1 --json --config "$T/v.ini" >"$T/out"; h3=$(py "d['config_hash']")
+[ "$h3" != "$h2" ] && ok "config hash changes" || bad "config hash changes"
+
+# bad input and unreachable goals
+want_rc 2 "missing maze" "$S" --maze "$T/none.txt"
+want_rc 2 "bad flag" "$S" --maze mazes/gen-5x5-s1.txt --warp
+want_rc 2 "bad seed" "$S" --maze mazes/gen-5x5-s1.txt --seed x
+want_rc 2 "no maze" "$S"
+printf 'o---o---o---o\n| S |   |   |\no---o---o---o\n' >"$T/closed.txt"
+want_rc 1 "unreachable goal" "$S" --maze "$T/closed.txt" --json
+[ "$(py "(d['reached_goal'], d['exit_reason'])")" = "(False, 'unreachable')" ] && ok "unreachable reported" || bad "unreachable reported"
+want_rc 1 "time limit" "$S" --maze mazes/gen-16x16-s1.txt --time-limit 5 --json
+[ "$(py "d['exit_reason']")" = "time_limit" ] && ok "time_limit reason" || bad "time_limit reason: $(cat "$T/out")"
+
+# batch: one line per maze, input order, worst exit code
+mkdir "$T/batch"; cp mazes/gen-5x5-s1.txt "$T/batch/a.txt"; cp "$T/closed.txt" "$T/batch/b.txt"; cp mazes/gen-6x6-s1.txt "$T/batch/c.txt"
+want_rc 1 "batch worst code" "$S" --batch "$T/batch" --jobs 2 --runs 1
+[ "$(python3 -c "import json; print([json.loads(l)['maze'].split('/')[-1] for l in open('$T/out')])")" = "['a.txt', 'b.txt', 'c.txt']" ] && ok "batch order" || bad "batch order: $(cat "$T/out")"
+[ $fails -eq 0 ]

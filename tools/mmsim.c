@@ -1,0 +1,354 @@
+/* mmsim - the headless simulator: one contest on one maze, or a batch.
+ *
+ * Until the firmware's motion layer lands, the robot is driven by the
+ * built-in scripted driver (sim/driver.h) on its true pose.
+ * Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure;
+ * a batch returns the worst. */
+#include <dirent.h>
+#include <errno.h>
+#include <getopt.h>
+#include <jansson.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "config.h"
+#include "driver.h"
+#include "mazefile.h"
+#include "sim.h"
+
+enum { EXIT_OK = 0, EXIT_NOT_REACHED = 1, EXIT_BAD_INPUT = 2, EXIT_EXTERNAL = 3 };
+
+#define STALL_S 5.0 /* no progress for this long while driving = crash stop */
+
+typedef struct {
+    const char *config_path;
+    uint64_t seed;
+    double time_limit_s; /* <= 0: from the config */
+    int json, realtime, runs, centre_post, print_config;
+    int jobs;
+} opts_t;
+
+static double wall_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+static double ms3(double s) { return round(s * 1000.0) / 1000.0; }
+
+static int load_config(const opts_t *o, simcfg_t *c)
+{
+    char err[400];
+    config_defaults(c);
+    if (o->config_path && config_load(c, o->config_path, err, sizeof err) != 0) {
+        fprintf(stderr, "%s\n", err);
+        return -1;
+    }
+    if (o->time_limit_s > 0) c->time_limit_s = o->time_limit_s;
+    if (o->centre_post >= 0) c->centre_post = o->centre_post;
+    return 0;
+}
+
+/* Run one contest; fills *out (a JSON object) and returns the exit code. */
+static int run_one(const opts_t *o, const char *maze_path, json_t **out, int print_text)
+{
+    static maze_t maze;
+    static sim_t sim;
+    static driver_t drv;
+    simcfg_t cfg;
+    char err[MAZEFILE_ERR_LEN], hash[65];
+
+    *out = NULL;
+    if (load_config(o, &cfg) != 0) return EXIT_BAD_INPUT;
+    if (mazefile_load(&maze, maze_path, NULL, err, sizeof err) != 0) {
+        fprintf(stderr, "%s\n", err);
+        return EXIT_BAD_INPUT;
+    }
+    config_hash(&cfg, hash);
+    if (sim_init(&sim, &cfg, &maze, o->seed) != 0) {
+        fprintf(stderr, "%s: cannot set up the ODE world\n", maze_path);
+        return EXIT_EXTERNAL;
+    }
+    driver_init(&drv, &maze, &cfg, o->runs);
+
+    const char *reason = "done";
+    double t0 = wall_now(), last_x, last_y, h, progress_s = 0;
+    world_pose(sim.world, &last_x, &last_y, &h);
+    double hard_stop_s = cfg.time_limit_s + 60.0; /* a lap under way may finish over time, flagged */
+    if (!drv.reachable) reason = "unreachable";
+    while (!drv.done) {
+        driver_update(&drv, &sim);
+        sim_step(&sim);
+        double t = sim_time_s(&sim), x, y;
+        if (sim.race.over_time && !sim.race.in_run) {
+            reason = "time_limit";
+            break;
+        }
+        if (t > hard_stop_s) {
+            reason = "time_limit";
+            break;
+        }
+        if (sim.step % 100 == 0) {
+            world_pose(sim.world, &x, &y, &h);
+            if (hypot(x - last_x, y - last_y) > 0.01) {
+                last_x = x;
+                last_y = y;
+                progress_s = t;
+            } else if (t - progress_s > STALL_S) {
+                reason = "crash_stop"; /* stuck: motors off, reported */
+                sim.cmd[0] = sim.cmd[1] = 0;
+                break;
+            }
+        }
+        if (o->realtime) {
+            double ahead = t - (wall_now() - t0);
+            if (ahead > 0.002) {
+                struct timespec ts = { 0, (long)(ahead * 1e9) };
+                nanosleep(&ts, NULL);
+            }
+        }
+    }
+    double wall = wall_now() - t0, t = sim_time_s(&sim), x, y;
+    world_pose(sim.world, &x, &y, &h);
+    const race_t *r = &sim.race;
+
+    json_t *laps = json_array();
+    for (int i = 0; i < r->nlaps; i++)
+        json_array_append_new(laps, json_pack("{s:i, s:f, s:f, s:f}", "lap", i + 1, "start_s", ms3(r->laps[i].start_s),
+                                              "end_s", ms3(r->laps[i].end_s),
+                                              "run_s", ms3(r->laps[i].end_s - r->laps[i].start_s)));
+    json_t *o_json = json_pack("{s:s, s:I, s:f, s:f, s:f, s:o}", "maze", maze_path, "seed", (json_int_t)o->seed,
+                               "sim_time_s", ms3(t), "wall_time_s", ms3(wall), "real_time_factor",
+                               wall > 0 ? round(t / wall * 10) / 10 : 0.0, "laps", laps);
+    json_object_set_new(o_json, "first_run_s",
+                        r->nlaps ? json_real(ms3(r->laps[0].end_s - r->laps[0].start_s)) : json_null());
+    json_object_set_new(o_json, "best_run_s",
+                        r->best >= 0 ? json_real(ms3(r->laps[r->best].end_s - r->laps[r->best].start_s)) : json_null());
+    json_object_set_new(o_json, "reached_goal", json_boolean(r->nlaps > 0));
+    json_object_set_new(o_json, "collisions", json_integer(world_collisions(sim.world)));
+    json_object_set_new(o_json, "final_pose", json_pack("{s:f, s:f, s:f}", "x_m", round(x * 1e6) / 1e6, "y_m",
+                                                        round(y * 1e6) / 1e6, "heading_rad", round(h * 1e6) / 1e6));
+    json_object_set_new(o_json, "exit_reason", json_string(reason));
+    json_object_set_new(o_json, "config_hash", json_string(hash));
+    json_object_set_new(o_json, "driver", json_string("scripted"));
+
+    if (print_text) {
+        printf("%s: %ux%u, seed %llu, scripted driver, %d run%s\n", maze_path, maze.width, maze.height,
+               (unsigned long long)o->seed, o->runs, o->runs == 1 ? "" : "s");
+        race_print_table(r, stdout);
+        printf("sim time %.3f s, wall time %.3f s (%.0fx real time), collisions %u, exit: %s\n", t, wall,
+               wall > 0 ? t / wall : 0.0, world_collisions(sim.world), reason);
+    }
+    sim_free(&sim);
+    *out = o_json;
+    return r->nlaps > 0 && !strcmp(reason, "done") ? EXIT_OK : EXIT_NOT_REACHED;
+}
+
+static int print_json_line(json_t *j)
+{
+    char *s = json_dumps(j, JSON_COMPACT | JSON_ENSURE_ASCII | JSON_REAL_PRECISION(10));
+    if (!s) return -1;
+    puts(s);
+    fflush(stdout);
+    free(s);
+    return 0;
+}
+
+static int compare_names(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
+
+/* Every *.txt in dir, one child process per maze, `jobs` at a time; one JSON
+ * line per maze on stdout in input order; returns the worst exit code. */
+static int run_batch(const opts_t *o, const char *dir)
+{
+    DIR *d = opendir(dir);
+    if (!d) {
+        fprintf(stderr, "%s: cannot open: %s\n", dir, strerror(errno));
+        return EXIT_BAD_INPUT;
+    }
+    char **names = NULL;
+    size_t n = 0, cap = 0;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        size_t len = strlen(e->d_name);
+        if (len < 5 || strcmp(e->d_name + len - 4, ".txt")) continue;
+        if (n == cap) {
+            cap = cap ? 2 * cap : 64;
+            char **g = realloc(names, cap * sizeof *names);
+            if (!g) break;
+            names = g;
+        }
+        names[n] = malloc(strlen(dir) + len + 2);
+        if (!names[n]) break;
+        sprintf(names[n++], "%s/%s", dir, e->d_name);
+    }
+    closedir(d);
+    if (!n) {
+        fprintf(stderr, "%s: no .txt maze files\n", dir);
+        free(names);
+        return EXIT_BAD_INPUT;
+    }
+    qsort(names, n, sizeof *names, compare_names);
+    int worst = EXIT_OK;
+    size_t next = 0, done = 0, printed = 0;
+    pid_t *pid = calloc(n, sizeof *pid);
+    int *fd = calloc(n, sizeof *fd), *code = calloc(n, sizeof *code);
+    char **text = calloc(n, sizeof *text);
+    int running = 0;
+    while (done < n) {
+        while (running < o->jobs && next < n) {
+            int p[2];
+            if (pipe(p) != 0) return EXIT_EXTERNAL;
+            fflush(stdout);
+            pid_t c = fork();
+            if (c < 0) return EXIT_EXTERNAL;
+            if (c == 0) {
+                close(p[0]);
+                if (dup2(p[1], STDOUT_FILENO) < 0) _exit(EXIT_EXTERNAL);
+                json_t *j;
+                int rc = run_one(o, names[next], &j, 0);
+                if (j) print_json_line(j);
+                fflush(stdout);
+                _exit(rc);
+            }
+            close(p[1]);
+            pid[next] = c;
+            fd[next] = p[0];
+            next++;
+            running++;
+        }
+        int status;
+        pid_t c = wait(&status);
+        if (c < 0) break;
+        for (size_t i = 0; i < next; i++) {
+            if (pid[i] != c) continue;
+            char buf[8192];
+            ssize_t k = read(fd[i], buf, sizeof buf - 1);
+            close(fd[i]);
+            buf[k > 0 ? k : 0] = '\0';
+            text[i] = strdup(buf);
+            code[i] = WIFEXITED(status) ? WEXITSTATUS(status) : EXIT_EXTERNAL;
+            if (code[i] > worst) worst = code[i];
+            done++;
+            running--;
+            fprintf(stderr, "\r[%zu/%zu] %-60.60s", done, n, names[i]);
+        }
+        while (printed < n && text[printed]) { /* results in input order */
+            fputs(text[printed], stdout);
+            printed++;
+        }
+    }
+    fputc('\n', stderr);
+    fflush(stdout);
+    for (size_t i = 0; i < n; i++) {
+        free(names[i]);
+        free(text[i]);
+    }
+    free(names);
+    free(text);
+    free(pid);
+    free(fd);
+    free(code);
+    return worst;
+}
+
+static void usage(FILE *out)
+{
+    fputs("usage: mmsim --maze FILE [--config FILE] [--seed N] [--time-limit S] [--runs N]\n"
+          "             [--centre-post on|off] [--json] [--realtime]\n"
+          "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
+          "       mmsim --print-config [--config FILE]\n"
+          "Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure.\n",
+          out);
+}
+
+static int bad(const char *fmt, const char *arg)
+{
+    fprintf(stderr, "mmsim: ");
+    fprintf(stderr, fmt, arg);
+    fprintf(stderr, " (try 'mmsim --help')\n");
+    return EXIT_BAD_INPUT;
+}
+
+static int num(const char *opt, const char *s, double lo, double hi, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (errno || end == s || *end || !(v >= lo && v <= hi)) {
+        fprintf(stderr, "mmsim: %s: expected a number from %g to %g, got '%s'\n", opt, lo, hi, s);
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    static const struct option opts[] = {
+        { "maze", required_argument, 0, 'm' },   { "config", required_argument, 0, 'c' },
+        { "seed", required_argument, 0, 's' },   { "time-limit", required_argument, 0, 't' },
+        { "json", no_argument, 0, 'j' },         { "realtime", no_argument, 0, 'r' },
+        { "runs", required_argument, 0, 'n' },   { "centre-post", required_argument, 0, 'p' },
+        { "print-config", no_argument, 0, 'P' }, { "batch", required_argument, 0, 'b' },
+        { "jobs", required_argument, 0, 'J' },   { "help", no_argument, 0, 'h' },
+        { 0, 0, 0, 0 },
+    };
+    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 1 };
+    const char *maze = NULL, *batch = NULL;
+    double v;
+    int c;
+    opterr = 0;
+    while ((c = getopt_long(argc, argv, "", opts, NULL)) != -1) {
+        switch (c) {
+        case 'm': maze = optarg; break;
+        case 'c': o.config_path = optarg; break;
+        case 's':
+            if (num("--seed", optarg, 0, 9007199254740992.0, &v)) return EXIT_BAD_INPUT;
+            if (v != floor(v)) return bad("--seed: expected a whole number, got '%s'", optarg);
+            o.seed = (uint64_t)v;
+            break;
+        case 't':
+            if (num("--time-limit", optarg, 1, 86400, &o.time_limit_s)) return EXIT_BAD_INPUT;
+            break;
+        case 'n':
+            if (num("--runs", optarg, 1, 64, &v) || v != floor(v)) return bad("--runs: expected 1 to 64, got '%s'", optarg);
+            o.runs = (int)v;
+            break;
+        case 'J':
+            if (num("--jobs", optarg, 1, 256, &v) || v != floor(v)) return bad("--jobs: expected 1 to 256, got '%s'", optarg);
+            o.jobs = (int)v;
+            break;
+        case 'p':
+            if (!strcmp(optarg, "on")) o.centre_post = 1;
+            else if (!strcmp(optarg, "off")) o.centre_post = 0;
+            else return bad("--centre-post: expected on or off, got '%s'", optarg);
+            break;
+        case 'j': o.json = 1; break;
+        case 'r': o.realtime = 1; break;
+        case 'P': o.print_config = 1; break;
+        case 'b': batch = optarg; break;
+        case 'h': usage(stdout); return EXIT_OK;
+        default: return bad("unknown option or missing value: '%s'", argv[optind - 1]);
+        }
+    }
+    if (optind != argc) return bad("unexpected argument '%s'", argv[optind]);
+    if (o.print_config) {
+        simcfg_t cfg;
+        if (load_config(&o, &cfg) != 0) return EXIT_BAD_INPUT;
+        config_print(&cfg, stdout);
+        return EXIT_OK;
+    }
+    if (batch) return run_batch(&o, batch);
+    if (!maze) return bad("%s", "--maze FILE is required");
+    json_t *j;
+    int rc = run_one(&o, maze, &j, !o.json);
+    if (j && o.json && print_json_line(j) != 0) rc = EXIT_EXTERNAL;
+    json_decref(j);
+    return rc;
+}
