@@ -6,7 +6,7 @@
 #define ARRIVE_M 0.015      /* a waypoint is reached within 15 mm */
 #define TURN_IN_PLACE 0.35  /* rad: above this heading error, turn on the spot */
 #define CRUISE_M_S 0.7      /* speed on straights */
-#define DECEL_M_S2 2.0      /* braking into corners */
+#define DECEL_G 0.5         /* brake at half the sliding friction's limit */
 
 static solve_path_t best;
 
@@ -15,8 +15,10 @@ void driver_init(driver_t *d, const maze_t *m, const simcfg_t *c, int runs)
     /* m/s per command step at no load: V/1023 / Kt * wheel radius */
     d->v_per_cmd = c->battery_v / 1023.0 / c->kt_nm_per_a * c->wheel_d_m / 2;
     double cell_m = c->cell_m;
+    d->decel_m_s2 = fmin(2.0, DECEL_G * c->tyre_mu_dynamic * 9.81);
     d->n = 0;
     d->idx = 1;
+    d->vref = 0;
     d->dir = 1;
     d->runs_left = runs;
     d->done = 0;
@@ -72,11 +74,17 @@ void driver_update(driver_t *d, sim_t *s)
     double e = remainder(atan2(dy, dx) - h, 2 * M_PI);
     double fwd = 0, turn;
     if (fabs(e) > TURN_IN_PLACE) {
-        turn = clamp(900 * e - 60 * om, -450, 450); /* on the spot, yaw rate damped */
+        /* on the spot, yaw rate damped; gentler on slippery tyres */
+        double lim = 450 * fmin(1.0, s->cfg.tyre_mu_dynamic);
+        turn = clamp(900 * e - 60 * om, -lim, lim);
+        d->vref = 0;
     } else {
         /* speed reference: cruise, braking into each corner at DECEL_M_S2;
          * feed-forward from the motor's no-load speed plus a speed loop */
-        double vref = fmin(CRUISE_M_S, sqrt(2 * DECEL_M_S2 * dist));
+        double vref = fmin(CRUISE_M_S, sqrt(2 * d->decel_m_s2 * dist));
+        /* and accelerate no harder than we brake, or the tyres spin */
+        vref = fmin(vref, d->vref + d->decel_m_s2 * s->cfg.step_s);
+        d->vref = vref;
         fwd = clamp(vref / d->v_per_cmd + 3000 * (vref - v), -1023, 1023);
         turn = clamp(1200 * e - 40 * om, -300, 300);
     }

@@ -18,6 +18,8 @@ typedef struct {
     int done;        /* 1 = finished all runs (stopped at the start) */
     int reachable;   /* the goal can be reached at all */
     double v_per_cmd; /* no-load m/s per command step */
+    double decel_m_s2; /* braking into corners, from the tyre friction */
+    double vref;      /* speed reference, ramped */
 } driver_t;
 
 /* Plan on the true maze; runs = number of start-to-goal runs. */

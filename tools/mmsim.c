@@ -30,6 +30,7 @@ typedef struct {
     uint64_t seed;
     double time_limit_s; /* <= 0: from the config */
     int json, realtime, runs, centre_post, print_config;
+    int paper_friction; /* --profile paper */
     int jobs;
 } opts_t;
 
@@ -52,6 +53,11 @@ static int load_config(const opts_t *o, simcfg_t *c)
     }
     if (o->time_limit_s > 0) c->time_limit_s = o->time_limit_s;
     if (o->centre_post >= 0) c->centre_post = o->centre_post;
+    if (o->paper_friction) {
+        /* the paper's shipped Unity values: static 0.35, dynamic 0.25 */
+        c->tyre_mu = 0.35;
+        c->tyre_mu_dynamic = 0.25;
+    }
     return 0;
 }
 
@@ -260,7 +266,7 @@ static int run_batch(const opts_t *o, const char *dir)
 static void usage(FILE *out)
 {
     fputs("usage: mmsim --maze FILE [--config FILE] [--seed N] [--time-limit S] [--runs N]\n"
-          "             [--centre-post on|off] [--json] [--realtime]\n"
+          "             [--centre-post on|off] [--profile default|paper] [--json] [--realtime]\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
           "       mmsim --print-config [--config FILE]\n"
           "Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure.\n",
@@ -297,9 +303,10 @@ int main(int argc, char **argv)
         { "runs", required_argument, 0, 'n' },   { "centre-post", required_argument, 0, 'p' },
         { "print-config", no_argument, 0, 'P' }, { "batch", required_argument, 0, 'b' },
         { "jobs", required_argument, 0, 'J' },   { "help", no_argument, 0, 'h' },
+        { "profile", required_argument, 0, 'F' },
         { 0, 0, 0, 0 },
     };
-    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 1 };
+    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1 };
     const char *maze = NULL, *batch = NULL;
     double v;
     int c;
@@ -328,6 +335,10 @@ int main(int argc, char **argv)
             if (!strcmp(optarg, "on")) o.centre_post = 1;
             else if (!strcmp(optarg, "off")) o.centre_post = 0;
             else return bad("--centre-post: expected on or off, got '%s'", optarg);
+            break;
+        case 'F':
+            if (!strcmp(optarg, "paper")) o.paper_friction = 1;
+            else if (strcmp(optarg, "default")) return bad("--profile: expected default or paper, got '%s'", optarg);
             break;
         case 'j': o.json = 1; break;
         case 'r': o.realtime = 1; break;
