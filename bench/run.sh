@@ -15,6 +15,15 @@ if [ -d "$DB" ]; then
   $B/mmmaze explore --all "$DB/classic" 2>/dev/null
   end=$(date +%s%N)
   awk -v ns=$((end - start)) 'BEGIN { printf "wall time of mmmaze explore --all classic: %.2f s\n", ns / 1e9 }'
+  for m in japan2018 japan2019; do
+    for i in 1 2 3; do $B/mmsim --maze "$DB/classic/$m.txt" --json; done | python3 -c '
+import json, sys
+runs = [json.loads(l) for l in sys.stdin]
+d = runs[0]
+print("mmsim %s (scripted driver, 3 runs to the goal): sim %.1f s, real-time factor best %.0fx median %.0fx, laps %s, collisions %d" % (
+    d["maze"].split("/")[-1], d["sim_time_s"], max(r["real_time_factor"] for r in runs),
+    sorted(r["real_time_factor"] for r in runs)[1], [l["run_s"] for l in d["laps"]], d["collisions"]))'
+  done
 else
   echo "SKIP database benchmarks: $DB not found"
   $B/bench_flood mazes/*.txt

@@ -24,6 +24,7 @@ typedef struct {
     double wall_height_m;
     double post_m;          /* post side */
     double centre_post;     /* 1 = the post in the middle of the goal is there */
+    double body_wall_mu;    /* robot body/wheel on a wall or post */
     /* [robot] */
     double body_w_m, body_l_m, body_h_m, body_mass_kg;
     double body_clearance_m; /* floor to the underside of the body */
@@ -33,6 +34,7 @@ typedef struct {
     double caster_r_m, caster_mass_kg, caster_y_m;
     double tyre_mu;         /* Coulomb friction, tyre on floor */
     double tyre_mu_dynamic; /* sliding friction; <= tyre_mu */
+    double tyre_slip_m_s;   /* contact slip speed above which tyre_mu_dynamic applies */
     /* [motor] */
     double gear_ratio;
     double kt_nm_per_a;     /* torque constant at the output shaft */
@@ -49,6 +51,7 @@ typedef struct {
     /* [sim] */
     double step_s;          /* physics step */
     double solver_iterations;
+    double contact_erp, contact_cfm; /* contact softness (ODE units) */
     double control_hz;      /* firmware control tick */
     double time_limit_s;    /* contest limit */
 } simcfg_t;

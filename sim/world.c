@@ -9,8 +9,6 @@
 #define CAT_ROBOT 2u
 #define CAT_RAY 4u
 #define MAX_CONTACTS 4
-#define SLIP_M_S 0.005 /* tangential speed above which a tyre slides (dynamic mu) */
-#define BODY_WALL_MU 0.3 /* plastic body on painted wood; only matters in a crash */
 
 struct world {
     simcfg_t cfg;
@@ -161,8 +159,8 @@ world_t *world_create(const simcfg_t *c, const maze_t *m, double x_m, double y_m
     w->world = dWorldCreate();
     dWorldSetGravity(w->world, 0, 0, -9.81);
     dWorldSetQuickStepNumIterations(w->world, (int)c->solver_iterations);
-    dWorldSetCFM(w->world, 1e-6);
-    dWorldSetERP(w->world, 0.4);
+    dWorldSetCFM(w->world, 1e-6); /* joints (hinges): near rigid */
+    dWorldSetERP(w->world, 0.4);  /* joint drift corrected in ~2 steps */
     w->top = dSimpleSpaceCreate(0);
     double wx = m->width * c->cell_m, wy = m->height * c->cell_m, ext = fmax(wx, wy) + 0.1;
     dVector3 centre = { wx / 2, wy / 2, 0, 0 }, extents = { ext, ext, ext, 0 };
@@ -216,14 +214,14 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
     int wall = b != w->floor;
     if (wall) w->touching = 1;
     for (int i = 0; i < n; i++) {
-        double mu = BODY_WALL_MU;
+        double mu = w->cfg.body_wall_mu;
         if (a == w->caster) {
             mu = 0.0; /* the paper's caster: frictionless */
         } else if (!wall && (a == w->wheel_geom[0] || a == w->wheel_geom[1])) {
             dVector3 v;
             dBodyGetPointVel(dGeomGetBody(a), c[i].geom.pos[0], c[i].geom.pos[1], c[i].geom.pos[2], v);
             double slip = hypot(v[0], v[1]);
-            mu = slip > SLIP_M_S ? w->cfg.tyre_mu_dynamic : w->cfg.tyre_mu;
+            mu = slip > w->cfg.tyre_slip_m_s ? w->cfg.tyre_mu_dynamic : w->cfg.tyre_mu;
         }
         c[i].surface.mode = dContactApprox1 | dContactSoftERP | dContactSoftCFM;
         if (!wall && (a == w->wheel_geom[0] || a == w->wheel_geom[1])) {
@@ -238,8 +236,8 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
             c[i].fdir1[2] = 0;
         }
         c[i].surface.mu = mu;
-        c[i].surface.soft_erp = 0.4;
-        c[i].surface.soft_cfm = 1e-5;
+        c[i].surface.soft_erp = w->cfg.contact_erp;
+        c[i].surface.soft_cfm = w->cfg.contact_cfm;
         dJointID j = dJointCreateContact(w->world, w->contacts, &c[i]);
         dJointAttach(j, dGeomGetBody(c[i].geom.g1), dGeomGetBody(c[i].geom.g2));
     }
