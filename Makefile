@@ -80,8 +80,9 @@ firmware: firmware-size
 # motion layer lands, then the grid-mode exploration of the firmware ----
 MAZE ?= mazes/gen-16x16-s1.txt
 SEED ?= 1
+DRIVER ?= scripted
 sim: deps $(B)/mmsim $(B)/mmmaze
-	$(B)/mmsim --maze $(MAZE) --seed $(SEED)
+	$(B)/mmsim --maze $(MAZE) --seed $(SEED) --driver $(DRIVER)
 	$(B)/mmmaze explore $(MAZE)
 
 # ---- benchmarks ----

@@ -169,3 +169,11 @@ int explore_run_dir(explore_t *e, maze_cell_t c, uint8_t h)
     uint16_t k = flood_run(&e->flood, &e->map, c, h, 0);
     return flood_next_dir(&e->flood, &e->map, c, h, k, 0);
 }
+
+int explore_home_dir(explore_t *e, maze_cell_t c, uint8_t h)
+{
+    flood_target_clear(&e->flood);
+    flood_target_add(&e->flood, e->map.start);
+    uint16_t k = flood_run(&e->flood, &e->map, c, h, 0);
+    return flood_next_dir(&e->flood, &e->map, c, h, k, 0);
+}

@@ -63,5 +63,7 @@ void explore_moved(explore_t *e, uint8_t d);
 /* After a proven run: the heading to leave cell c in, facing h, along the
  * best path through known-open walls (the speed-run path); -1 at the goal. */
 int explore_run_dir(explore_t *e, maze_cell_t c, uint8_t h);
+/* The same towards the start cell (for the way back after a speed run). */
+int explore_home_dir(explore_t *e, maze_cell_t c, uint8_t h);
 
 #endif

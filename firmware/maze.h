@@ -31,7 +31,7 @@ enum { MAZE_NORTH = 0, MAZE_EAST = 1, MAZE_SOUTH = 2, MAZE_WEST = 3 };
 /* Wall state as seen by the mouse. */
 enum { MAZE_WALL_UNKNOWN = 0, MAZE_WALL_OPEN = 1, MAZE_WALL_CLOSED = 2 };
 
-typedef struct {
+typedef struct maze_s {
     uint8_t width, height;   /* cells, 1..MAZE_MAX_W / MAZE_MAX_H */
     /* One byte per cell: bit d = wall present on side d, bit 4+d = that
      * wall is known. Each interior wall is stored in both cells it

@@ -3,25 +3,56 @@
  *   hal/sim      links the firmware into the simulator (host, in-process)
  *   hal/arduino  an Arduino library speaking the wire protocol (HIL)
  *
- * This is the part the maze algorithms need today: time and a log line.
- * Motors, encoders, distance sensors and the control tick come with the
- * firmware issue and are added here, not elsewhere.
+ * A backend also calls the firmware's three entry points (fw_*, below):
+ * fw_setup once, fw_tick at HAL_TICK_HZ from a timer interrupt (control:
+ * odometry, profiles, motor commands; must return within one tick) and
+ * fw_loop repeatedly from the main loop (planning: floods, decisions).
  *
  * Backend guarantees:
  * - hal_micros: microseconds since start, monotonic, wrapping at 2^32
  *   (71.6 minutes). In hal/sim it is simulation time, never wall clock.
+ * - hal_motor_set: command per wheel, -1023..+1023 = -100..+100 % of the
+ *   battery voltage, positive drives the robot forward; applied at once.
+ * - hal_encoder: signed counts accumulated since start (or the last
+ *   hal_encoder_reset), positive forward; 358.32 counts per wheel turn on
+ *   the default robot (12 PPR x 29.86 gear).
+ * - hal_distance: the latest reading of a ToF sensor in mm and its timeout
+ *   flag (nothing within range); each sensor updates about every 30 ms.
  * - hal_log: one text line without the trailing newline, at most
  *   HAL_LOG_MAX bytes; the backend may print, forward or drop it, and must
  *   not block for longer than it takes to queue it.
+ * - hal_belief: the mouse's map and position for telemetry; the backend
+ *   may copy it or ignore it, and must not keep the pointer.
  */
 #ifndef HAL_H
 #define HAL_H
 
 #include <stdint.h>
 
-#define HAL_LOG_MAX 80 /* bytes per log line, without the NUL */
+#define HAL_LOG_MAX 80   /* bytes per log line, without the NUL */
+#define HAL_TICK_HZ 1000 /* default control tick; the backend may be configured otherwise */
+
+enum { HAL_LEFT = 0, HAL_RIGHT = 1 };
+enum { HAL_TOF_LEFT = 0, HAL_TOF_FRONT = 1, HAL_TOF_RIGHT = 2, HAL_TOF_COUNT = 3 };
+
+typedef struct {
+    uint16_t mm;     /* distance, millimetres */
+    uint8_t timeout; /* 1 = nothing within range (mm is then the range) */
+} hal_distance_t;
+
+struct maze_s;
 
 uint32_t hal_micros(void);
+void hal_motor_set(int16_t left, int16_t right);
+int32_t hal_encoder(uint8_t side);
+void hal_encoder_reset(void);
+hal_distance_t hal_distance(uint8_t sensor);
 void hal_log(const char *line);
+void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_t state);
+
+/* The firmware's entry points, called by the backend. */
+void fw_setup(void);
+void fw_tick(void);
+void fw_loop(void);
 
 #endif

@@ -15,7 +15,7 @@
 #include "tof.h"
 #include "world.h"
 
-typedef struct {
+typedef struct sim_s {
     simcfg_t cfg;
     const maze_t *maze;
     uint64_t seed;

@@ -18,6 +18,10 @@
 
 #include "config.h"
 #include "driver.h"
+#include "hal.h"
+#include "hal_sim.h"
+#include "mouse.h"
+#include "solve.h"
 #include "mazefile.h"
 #include "sim.h"
 
@@ -31,6 +35,8 @@ typedef struct {
     double time_limit_s; /* <= 0: from the config */
     int json, realtime, runs, centre_post, print_config;
     int paper_friction; /* --profile paper */
+    int scripted;       /* --driver scripted */
+    int verbose;        /* --verbose: firmware log lines on stderr */
     int jobs;
 } opts_t;
 
@@ -81,7 +87,16 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         fprintf(stderr, "%s: cannot set up the ODE world\n", maze_path);
         return EXIT_EXTERNAL;
     }
-    driver_init(&drv, &maze, &cfg, o->runs);
+    if (o->scripted) {
+        driver_init(&drv, &maze, &cfg, o->runs);
+    } else {
+        drv.done = 0;
+        drv.reachable = 1;
+        hal_sim_attach(&sim);
+        hal_sim_set_log(o->verbose ? stderr : NULL);
+        fw_set_maze(&maze);
+        fw_setup();
+    }
 
     const char *reason = "done";
     double t0 = wall_now(), last_x, last_y, h, progress_s = 0;
@@ -89,8 +104,24 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     double hard_stop_s = cfg.time_limit_s + 60.0; /* a lap under way may finish over time, flagged */
     if (!drv.reachable) reason = "unreachable";
     while (!drv.done) {
-        driver_update(&drv, &sim);
-        sim_step(&sim);
+        if (o->scripted) {
+            driver_update(&drv, &sim);
+            sim_step(&sim);
+        } else {
+            sim_step(&sim);
+            fw_tick(); /* control tick every physics step (1 kHz) */
+            fw_loop();
+            uint8_t mode = mouse_status()->mode;
+            if (mode == MOUSE_DONE) break;
+            if (mode == MOUSE_NO_GOAL) {
+                reason = "unreachable";
+                break;
+            }
+            if (mode == MOUSE_CRASHED) {
+                reason = "crash_stop";
+                break;
+            }
+        }
         double t = sim_time_s(&sim), x, y;
         if (sim.race.over_time && !sim.race.in_run) {
             reason = "time_limit";
@@ -142,11 +173,24 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
                                                         round(y * 1e6) / 1e6, "heading_rad", round(h * 1e6) / 1e6));
     json_object_set_new(o_json, "exit_reason", json_string(reason));
     json_object_set_new(o_json, "config_hash", json_string(hash));
-    json_object_set_new(o_json, "driver", json_string("scripted"));
+    json_object_set_new(o_json, "driver", json_string(o->scripted ? "scripted" : "firmware"));
+    if (!o->scripted) {
+        /* the path the mouse would run: best through known-open walls */
+        static solve_path_t truth, known;
+        int ok_truth = solve_best(&maze, 0, &truth) == 0, ok_known = solve_best(mouse_map(), 0, &known) == 0;
+        uint16_t proven = mouse_proven_at_step();
+        json_object_set_new(o_json, "proven_at_step", proven == 0xFFFFu ? json_null() : json_integer(proven));
+        json_object_set_new(o_json, "final_path_optimal", json_boolean(ok_truth && ok_known && proven != 0xFFFFu &&
+                                                                       known.cost == truth.cost));
+        hal_sim_attach(NULL);
+    }
 
     if (print_text) {
-        printf("%s: %ux%u, seed %llu, scripted driver, %d run%s\n", maze_path, maze.width, maze.height,
-               (unsigned long long)o->seed, o->runs, o->runs == 1 ? "" : "s");
+        if (o->scripted)
+            printf("%s: %ux%u, seed %llu, scripted driver, %d run%s\n", maze_path, maze.width, maze.height,
+                   (unsigned long long)o->seed, o->runs, o->runs == 1 ? "" : "s");
+        else
+            printf("%s: %ux%u, seed %llu, firmware\n", maze_path, maze.width, maze.height, (unsigned long long)o->seed);
         race_print_table(r, stdout);
         printf("sim time %.3f s, wall time %.3f s (%.0fx real time), collisions %u, exit: %s\n", t, wall,
                wall > 0 ? t / wall : 0.0, world_collisions(sim.world), reason);
@@ -266,7 +310,8 @@ static int run_batch(const opts_t *o, const char *dir)
 static void usage(FILE *out)
 {
     fputs("usage: mmsim --maze FILE [--config FILE] [--seed N] [--time-limit S] [--runs N]\n"
-          "             [--centre-post on|off] [--profile default|paper] [--json] [--realtime]\n"
+          "             [--centre-post on|off] [--profile default|paper] [--driver firmware|scripted]\n"
+          "             [--json] [--realtime] [--verbose]\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
           "       mmsim --print-config [--config FILE]\n"
           "Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure.\n",
@@ -303,10 +348,11 @@ int main(int argc, char **argv)
         { "runs", required_argument, 0, 'n' },   { "centre-post", required_argument, 0, 'p' },
         { "print-config", no_argument, 0, 'P' }, { "batch", required_argument, 0, 'b' },
         { "jobs", required_argument, 0, 'J' },   { "help", no_argument, 0, 'h' },
-        { "profile", required_argument, 0, 'F' },
+        { "profile", required_argument, 0, 'F' }, { "driver", required_argument, 0, 'D' },
+        { "verbose", no_argument, 0, 'v' },
         { 0, 0, 0, 0 },
     };
-    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1 };
+    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1 }; /* scripted by default until the firmware passes issue 4 */
     const char *maze = NULL, *batch = NULL;
     double v;
     int c;
@@ -340,6 +386,11 @@ int main(int argc, char **argv)
             if (!strcmp(optarg, "paper")) o.paper_friction = 1;
             else if (strcmp(optarg, "default")) return bad("--profile: expected default or paper, got '%s'", optarg);
             break;
+        case 'D':
+            if (!strcmp(optarg, "scripted")) o.scripted = 1;
+            else if (strcmp(optarg, "firmware")) return bad("--driver: expected firmware or scripted, got '%s'", optarg);
+            break;
+        case 'v': o.verbose = 1; break;
         case 'j': o.json = 1; break;
         case 'r': o.realtime = 1; break;
         case 'P': o.print_config = 1; break;

@@ -1,17 +1,66 @@
-/* hal_sim.c - hal/hal.h for the simulator: time is simulation time, set by
- * the simulator as it steps; log lines go to a stream the simulator picks. */
+/* hal_sim.c - hal/hal.h for the simulator: time is simulation time; motors,
+ * encoders and ToF readings are the attached simulation's. */
 #include "hal.h"
 #include "hal_sim.h"
 
+#include <math.h>
+
+#include "sim.h"
+
+static sim_t *sim;
 static uint64_t sim_time_us;
 static FILE *log_out;
+static int32_t encoder_zero[2];
 
+void hal_sim_attach(struct sim_s *s)
+{
+    sim = s;
+    encoder_zero[0] = encoder_zero[1] = 0;
+}
 void hal_sim_set_time_us(uint64_t t_us) { sim_time_us = t_us; }
 void hal_sim_set_log(FILE *out) { log_out = out; }
 
-uint32_t hal_micros(void) { return (uint32_t)sim_time_us; }
+uint32_t hal_micros(void)
+{
+    if (sim) return (uint32_t)(sim->step * (uint64_t)llround(sim->cfg.step_s * 1e6));
+    return (uint32_t)sim_time_us;
+}
+
+void hal_motor_set(int16_t left, int16_t right)
+{
+    if (!sim) return;
+    sim->cmd[WORLD_LEFT] = left;
+    sim->cmd[WORLD_RIGHT] = right;
+}
+
+int32_t hal_encoder(uint8_t side)
+{
+    return sim ? sim->encoder[side & 1].count - encoder_zero[side & 1] : 0;
+}
+
+void hal_encoder_reset(void)
+{
+    if (!sim) return;
+    encoder_zero[0] = sim->encoder[0].count;
+    encoder_zero[1] = sim->encoder[1].count;
+}
+
+hal_distance_t hal_distance(uint8_t sensor)
+{
+    hal_distance_t d = { 0, 1 };
+    if (!sim || sensor >= HAL_TOF_COUNT) return d;
+    const tof_reading_t *r = &sim->tof_last[sensor];
+    d.mm = (uint16_t)lround(r->dist_m * 1000.0);
+    d.timeout = (uint8_t)r->timeout;
+    return d;
+}
 
 void hal_log(const char *line)
 {
     if (log_out) fprintf(log_out, "%s\n", line);
+}
+
+void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_t state)
+{
+    (void)map; (void)cell; (void)heading; (void)state; /* telemetry comes with the LCM issue */
 }

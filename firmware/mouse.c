@@ -1,0 +1,269 @@
+/* mouse.c - the contest: search until the run path is proven, back to the
+ * start, then speed runs on the proven path until the time is up.
+ *
+ * Search moves cell by cell without stopping on straights: RC_SENSE_BEFORE_MM
+ * before the centre of the cell ahead, the walls of that cell are read
+ * (diagonal sensors for its sides, the front sensor for its far wall), the
+ * map and the plan are updated, and the move is either extended by a cell
+ * or ends at that cell's centre for an in-place turn. A wall ahead also
+ * resets the distance to go (front-wall alignment). Speed runs drive each
+ * straight of the proven path in one move at RC_RUN_MM_S.
+ *
+ * Hardware seam: everything here goes through hal.h; fw_tick runs from the
+ * control interrupt, fw_loop from the main loop. */
+#include "mouse.h"
+
+#include <stdio.h>
+
+#include "explore.h"
+#include "hal.h"
+#include "motion.h"
+#include "robot_config.h"
+
+static explore_t ex;
+static motion_t mo;
+static maze_t blank;
+static mouse_status_t st;
+
+/* what the loop is waiting for */
+enum { WAIT_NONE, WAIT_MOVE, WAIT_TURN };
+static uint8_t waiting;
+static uint8_t sensed;        /* walls of the cell ahead read during this move */
+static int8_t next_dir;       /* heading to take at the end of the move, -1 none */
+static uint8_t wall_ahead;    /* the move ends facing a wall */
+static uint32_t start_us;
+
+void fw_set_maze(const struct maze_s *m) { blank = *m; }
+
+const mouse_status_t *mouse_status(void) { return &st; }
+
+static void log_line(const char *fmt, unsigned a, unsigned b)
+{
+    char line[HAL_LOG_MAX + 1];
+    snprintf(line, sizeof line, fmt, a, b);
+    hal_log(line);
+}
+
+void fw_setup(void)
+{
+    if (blank.width == 0) maze_init(&blank, 16, 16); /* a classic contest by default */
+    explore_init(&ex, &blank);
+    motion_init(&mo);
+    st.mode = MOUSE_SEARCH;
+    st.runs = 0;
+    st.cell = ex.cell;
+    st.heading = ex.heading;
+    waiting = WAIT_NONE;
+    sensed = 0;
+    next_dir = -1;
+    start_us = hal_micros();
+}
+
+void fw_tick(void)
+{
+    motion_tick(&mo, 1.0f / HAL_TICK_HZ);
+    if (mo.crashed && st.mode != MOUSE_CRASHED) st.mode = MOUSE_CRASHED;
+}
+
+/* Relative quarter turns from heading h to heading d: 0, 1 (right), 2, -1. */
+static int8_t quarter(uint8_t h, uint8_t d)
+{
+    int8_t q = (int8_t)((d - h) & 3);
+    return q == 3 ? -1 : q;
+}
+
+/* Walls of the cell ahead, read from the sensors (EXPLORE_WALL_* bits). */
+static uint8_t read_walls(void)
+{
+    uint8_t w = 0;
+    hal_distance_t l = hal_distance(HAL_TOF_LEFT), f = hal_distance(HAL_TOF_FRONT), r = hal_distance(HAL_TOF_RIGHT);
+    float to_centre = profile_remaining(&mo.fwd);
+    /* the far wall of the cell ahead is RC_FRONT_AT_CENTRE_MM beyond its centre */
+    if (!f.timeout && f.mm < to_centre + RC_FRONT_AT_CENTRE_MM + RC_CELL_MM / 2) w |= EXPLORE_WALL_FRONT;
+    if (!l.timeout && l.mm < RC_SIDE_THRESHOLD_MM) w |= EXPLORE_WALL_LEFT;
+    if (!r.timeout && r.mm < RC_SIDE_THRESHOLD_MM) w |= EXPLORE_WALL_RIGHT;
+    return w;
+}
+
+/* Wall centring from the diagonal sensors, rad/s (positive = turn left). */
+static float centring(void)
+{
+    hal_distance_t l = hal_distance(HAL_TOF_LEFT), r = hal_distance(HAL_TOF_RIGHT);
+    int hl = !l.timeout && l.mm < RC_SIDE_THRESHOLD_MM, hr = !r.timeout && r.mm < RC_SIDE_THRESHOLD_MM;
+    float el = 0.7071f * ((float)l.mm - RC_SIDE_WALL_MM), er = 0.7071f * ((float)r.mm - RC_SIDE_WALL_MM);
+    float e = hl && hr ? 0.5f * (el - er) : hl ? el : hr ? -er : 0.0f;
+    return RC_KP_STEER * e;
+}
+
+/* With a wall ahead of the cell we stop in, steer the distance left
+ * towards what the front sensor says (removes the odometry error of the
+ * straight). Called every loop in the last RC_ALIGN_FROM_MM of a stopping
+ * move; readings are 30 ms old at worst and noisy (5 %), so blend gently. */
+static void align_to_front_wall(void)
+{
+    hal_distance_t f = hal_distance(HAL_TOF_FRONT);
+    float left = profile_remaining(&mo.fwd);
+    if (f.timeout || left > RC_ALIGN_FROM_MM) return;
+    float by_sensor = (float)f.mm - RC_FRONT_AT_CENTRE_MM;
+    if (by_sensor > left - 50.0f && by_sensor < left + 50.0f)
+        profile_set_remaining(&mo.fwd, left + 0.02f * (by_sensor - left));
+}
+
+static void start_forward(float cells, float speed, float v_end)
+{
+    motion_forward(&mo, cells * RC_CELL_MM, speed, v_end);
+    waiting = WAIT_MOVE;
+    sensed = 0;
+    wall_ahead = 0;
+}
+
+static void start_turn(int8_t q)
+{
+    motion_turn(&mo, -90.0f * q); /* a right turn (q = 1) is clockwise */
+    waiting = WAIT_TURN;
+}
+
+/* Search: decide at the sensing point of each cell. st.heading is the way
+ * the robot faces; ex.cell is the cell it is in or committed to. */
+static void search_step(void)
+{
+    if (waiting == WAIT_NONE) {
+        /* standing at a cell centre: the start (or after the last stop) */
+        if (ex.steps == 0 && ex.phase == EXPLORE_TO_GOAL) {
+            hal_distance_t f = hal_distance(HAL_TOF_FRONT);
+            /* the start cell: by the rules open only ahead */
+            uint8_t w = EXPLORE_WALL_LEFT | EXPLORE_WALL_RIGHT;
+            if (!f.timeout && f.mm < RC_FRONT_AT_CENTRE_MM + 60) w |= EXPLORE_WALL_FRONT;
+            explore_sense(&ex, w);
+        }
+        int d = explore_next(&ex);
+        if (d < 0) {
+            st.mode = ex.phase == EXPLORE_DONE ? MOUSE_TO_RUN : MOUSE_NO_GOAL;
+            return;
+        }
+        int8_t q = quarter(st.heading, (uint8_t)d);
+        st.heading = (uint8_t)d;
+        if (q) start_turn(q);
+        else start_forward(1, RC_SEARCH_MM_S, RC_SEARCH_MM_S);
+        return;
+    }
+    if (waiting == WAIT_TURN) {
+        if (motion_busy(&mo)) return;
+        start_forward(1, RC_SEARCH_MM_S, RC_SEARCH_MM_S);
+        return;
+    }
+    /* WAIT_MOVE */
+    mo.steer_rad_s = centring();
+    if (!sensed && profile_remaining(&mo.fwd) <= RC_SENSE_BEFORE_MM) {
+        sensed = 1;
+        uint8_t walls = read_walls();
+        explore_moved(&ex, st.heading); /* committed to the cell ahead */
+        explore_sense(&ex, walls);
+        log_line("sensed cell %u walls %u", ex.cell, walls);
+        hal_belief(&ex.map, ex.cell, st.heading, st.mode);
+        int d = explore_next(&ex);
+        if (d >= 0 && (uint8_t)d == st.heading) {
+            profile_set_remaining(&mo.fwd, profile_remaining(&mo.fwd) + RC_CELL_MM);
+            sensed = 0;
+            return;
+        }
+        mo.fwd.v_end = 0; /* stop in the cell ahead */
+        wall_ahead = (walls & EXPLORE_WALL_FRONT) != 0;
+        next_dir = (int8_t)d;
+        return;
+    }
+    if (sensed && wall_ahead && mo.fwd.active) align_to_front_wall();
+    if (sensed && !motion_busy(&mo)) {
+        mo.steer_rad_s = 0;
+        if (next_dir < 0) {
+            waiting = WAIT_NONE; /* explore has ended: the next call sees it */
+            return;
+        }
+        int8_t q = quarter(st.heading, (uint8_t)next_dir);
+        st.heading = (uint8_t)next_dir;
+        start_turn(q);
+    }
+}
+
+/* Speed runs and the way back: one move per straight of the known path. */
+static void run_step(int to_goal)
+{
+    if (waiting == WAIT_TURN && motion_busy(&mo)) return;
+    if (waiting == WAIT_MOVE) {
+        mo.steer_rad_s = centring();
+        if (!maze_passable(&ex.map, st.cell, st.heading, 0)) align_to_front_wall();
+        if (motion_busy(&mo)) return;
+        mo.steer_rad_s = 0;
+    }
+    int d = to_goal ? explore_run_dir(&ex, st.cell, st.heading) : explore_home_dir(&ex, st.cell, st.heading);
+    if (d < 0) {
+        waiting = WAIT_NONE;
+        if (to_goal) {
+            st.runs++;
+            log_line("run %u reached the goal at %u ms", st.runs, (unsigned)((hal_micros() - start_us) / 1000u));
+            st.mode = MOUSE_RETURN;
+        } else {
+            st.mode = MOUSE_TO_RUN;
+        }
+        return;
+    }
+    int8_t q = quarter(st.heading, (uint8_t)d);
+    if (q) {
+        start_turn(q);
+        st.heading = (uint8_t)d;
+        return;
+    }
+    /* count the straight cells ahead on the path */
+    maze_cell_t c = st.cell;
+    uint8_t n = 0;
+    for (;;) {
+        maze_cell_t nx;
+        if (!maze_neighbour(&ex.map, c, st.heading, &nx)) break;
+        c = nx;
+        n++;
+        int dd = to_goal ? explore_run_dir(&ex, c, st.heading) : explore_home_dir(&ex, c, st.heading);
+        if (dd != st.heading) break;
+    }
+    start_forward(n, to_goal ? RC_RUN_MM_S : RC_SEARCH_MM_S, 0);
+    st.cell = c;
+}
+
+void fw_loop(void)
+{
+    switch (st.mode) {
+    case MOUSE_SEARCH:
+        search_step();
+        st.cell = ex.cell;
+        if (st.mode == MOUSE_TO_RUN) {
+            log_line("search done in %u steps, path proven at step %u", ex.steps, ex.proven_at_step);
+            waiting = WAIT_NONE;
+        }
+        break;
+    case MOUSE_TO_RUN:
+        if (motion_busy(&mo)) break;
+        if ((hal_micros() - start_us) / 1000000u >= MOUSE_RUN_DEADLINE_S || st.runs >= MOUSE_SPEED_RUNS) {
+            st.mode = MOUSE_DONE;
+            motion_stop(&mo);
+            hal_log("contest done");
+            break;
+        }
+        st.mode = MOUSE_RUN;
+        waiting = WAIT_NONE;
+        break;
+    case MOUSE_RUN:
+        run_step(1);
+        break;
+    case MOUSE_RETURN:
+        run_step(0);
+        break;
+    case MOUSE_NO_GOAL:
+    case MOUSE_CRASHED:
+        motion_stop(&mo);
+        break;
+    default:
+        break;
+    }
+}
+
+const maze_t *mouse_map(void) { return &ex.map; }
+uint16_t mouse_proven_at_step(void) { return ex.proven_at_step; }

@@ -1,0 +1,73 @@
+/* robot_config.h - every robot-specific number of the firmware, with its
+ * unit and where it comes from. Port the firmware to another mouse by
+ * changing this file only. Defaults: the paper's robot as simulated by
+ * mmsim (sim/config.c holds the simulator's side of the same numbers). */
+#ifndef ROBOT_CONFIG_H
+#define ROBOT_CONFIG_H
+
+/* ---- geometry ---- */
+#define RC_CELL_MM 180.0f            /* classic maze pitch */
+#define RC_WALL_MM 12.0f             /* wall thickness */
+#define RC_WHEEL_DIAMETER_MM 32.0f   /* paper Table 1 */
+/* Effective track for odometry: the wheel centre planes are 96 mm apart,
+ * but the 8 mm wide tyres touch the floor nearer their outer edges in
+ * turns; calibrated in mmsim by 90-degree turns on the spot (odometry said
+ * 90.4, the robot turned 84.0 with 96 mm). Calibrate a real mouse the same
+ * way (10 turns, compare with the walls). */
+#define RC_TRACK_MM 103.4f
+#define RC_COUNTS_PER_REV 358.32f    /* 12 PPR on the motor x 29.86 gear */
+#define RC_MM_PER_COUNT (3.14159265f * RC_WHEEL_DIAMETER_MM / RC_COUNTS_PER_REV) /* 0.2806 mm */
+
+/* ---- motor model, for feed-forward ---- */
+/* no-load wheel speed per command step: 6 V / 1023 / 0.079025 N*m/A * 16 mm */
+#define RC_MM_S_PER_CMD 1.1874f
+/* command per mm/s^2 of acceleration: F = m a over two wheels, T = F r,
+ * i = T / Kt, V = i R: 0.157 kg * 0.016 m / 2 / 0.079025 * 16.667 ohm
+ * / 6 V * 1023 / 1000 = 0.0447 per mm/s^2 (for rotation the same per wheel) */
+#define RC_CMD_PER_MM_S2 0.045f
+#define RC_CMD_MAX 1023
+
+/* ---- ToF sensors (positions match sim/config.c defaults) ---- */
+#define RC_TOF_FRONT_Y_MM 55.0f      /* front sensor ahead of the body centre */
+#define RC_TOF_SIDE_X_MM 40.0f       /* diagonal sensors' offset from the centre line */
+#define RC_TOF_SIDE_Y_MM 50.0f       /* diagonal sensors ahead of the body centre */
+/* A diagonal sensor at 45 degrees sees a side wall 84 - 40 = 44 mm away
+ * sideways, 62 mm along the ray; without that wall the ray runs on to a
+ * wall one cell further out (~310 mm) or to a post. */
+#define RC_SIDE_WALL_MM 62.0f
+#define RC_SIDE_THRESHOLD_MM 110.0f  /* nearer = wall present */
+/* distance from the front sensor to the wall ahead when centred in a cell */
+#define RC_FRONT_AT_CENTRE_MM (RC_CELL_MM / 2 - RC_WALL_MM / 2 - RC_TOF_FRONT_Y_MM) /* 29 mm */
+
+/* ---- search and run speeds ---- */
+#define RC_SEARCH_MM_S 700.0f        /* straights while exploring */
+#define RC_RUN_MM_S 1100.0f          /* speed runs (motor no-load ~1210 mm/s at 6 V) */
+#define RC_ACCEL_MM_S2 3000.0f       /* ~0.3 g; tyres hold ~1 g at mu 1.0 */
+#define RC_TURN_DEG_S 600.0f         /* in-place turns */
+#define RC_TURN_ACCEL_DEG_S2 6000.0f
+/* sense the next cell's walls this far before its centre: the diagonal
+ * rays then hit it 74 mm past its entry boundary, clear of the posts */
+#define RC_SENSE_BEFORE_MM 110.0f
+/* front-wall alignment works in the last part of a stopping move */
+#define RC_ALIGN_FROM_MM 90.0f
+
+/* ---- controller gains (tuned in mmsim on japan2018) ---- */
+/* Plant: one command step accelerates the robot by ~22 mm/s^2, and the
+ * motor's back-EMF damps it with a 54 ms time constant, so the loop needs
+ * a stiff P and no D (a 1 ms encoder difference is 280 mm/s per count). */
+#define RC_KP_FWD 30.0f    /* command per mm of forward position error */
+#define RC_KD_FWD 0.0f     /* command per mm/s of forward speed error */
+#define RC_KP_ROT 30.0f    /* command per mm of wheel-arc rotation error */
+#define RC_KD_ROT 0.0f     /* command per mm/s of wheel-arc rotation rate error */
+#define RC_KP_STEER 0.02f  /* rad/s of steering per mm of lateral error (wall centring) */
+#define RC_KP_HEADING 10.0f /* rad/s of steering per rad of heading error */
+
+/* a move is over when the robot is within this of its setpoint, this slow */
+#define RC_SETTLE_MM 1.5f
+#define RC_SETTLE_MM_S 25.0f
+
+/* ---- safety ---- */
+#define RC_STALL_MM 40.0f       /* forward error that means we are stuck... */
+#define RC_STALL_MS 400u        /* ...for this long: crash stop */
+
+#endif
