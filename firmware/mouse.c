@@ -31,6 +31,9 @@ static uint8_t waiting;
 static uint8_t sensed;        /* walls of the cell ahead read during this move */
 static int8_t next_dir;       /* heading to take at the end of the move, -1 none */
 static uint8_t wall_ahead;    /* the move ends facing a wall */
+static uint8_t uturn_stage;   /* 0, or the step of a U-turn under way */
+static uint32_t stage_us;     /* when the current U-turn step began */
+static uint8_t fix_stage;     /* 0, or the step of a front-wall fix under way */
 static uint32_t start_us;
 
 void fw_set_maze(const struct maze_s *m) { blank = *m; }
@@ -56,6 +59,8 @@ void fw_setup(void)
     waiting = WAIT_NONE;
     sensed = 0;
     next_dir = -1;
+    uturn_stage = 0;
+    fix_stage = 0;
     start_us = hal_micros();
 }
 
@@ -105,8 +110,34 @@ static void align_to_front_wall(void)
     float left = profile_remaining(&mo.fwd);
     if (f.timeout || left > RC_ALIGN_FROM_MM) return;
     float by_sensor = (float)f.mm - RC_FRONT_AT_CENTRE_MM;
-    if (by_sensor > left - 50.0f && by_sensor < left + 50.0f)
+    if (by_sensor > left - 20.0f && by_sensor < left + 20.0f)
         profile_set_remaining(&mo.fwd, left + 0.02f * (by_sensor - left));
+}
+
+/* Standing before a wall: wait for a fresh front reading (>= 35 ms: the
+ * sensor updates every 30 ms), then creep to RC_FRONT_AT_CENTRE_MM from it.
+ * Returns 1 when done. Puts the robot on the cell's centre along its
+ * heading to +-2 mm before it turns on the spot. */
+static int front_fix(void)
+{
+    if (motion_busy(&mo)) return 0;
+    if (fix_stage == 0) {
+        stage_us = hal_micros();
+        fix_stage = 1;
+        return 0;
+    }
+    if (fix_stage == 1) {
+        if (hal_micros() - stage_us < 35000u) return 0;
+        hal_distance_t f = hal_distance(HAL_TOF_FRONT);
+        float adjust = (float)f.mm - RC_FRONT_AT_CENTRE_MM;
+        fix_stage = 2;
+        if (!f.timeout && adjust > -30.0f && adjust < 30.0f && (adjust > 2.0f || adjust < -2.0f)) {
+            motion_forward(&mo, adjust, 200.0f, 0.0f);
+            return 0;
+        }
+    }
+    fix_stage = 0;
+    return 1;
 }
 
 static void start_forward(float cells, float speed, float v_end)
@@ -117,10 +148,37 @@ static void start_forward(float cells, float speed, float v_end)
     wall_ahead = 0;
 }
 
+/* A turn on the spot; a U-turn is two left quarter turns with a stop
+ * between, facing the side wall of the cell, where the front sensor puts
+ * the robot back on the cell's centre line (7 mm of clearance for the body's
+ * corners sweeping round: the offset from the straight must go first). */
 static void start_turn(int8_t q)
 {
-    motion_turn(&mo, -90.0f * q); /* a right turn (q = 1) is clockwise */
+    if (q == 2 || q == -2) {
+        motion_turn(&mo, 90.0f);
+        uturn_stage = 1;
+    } else {
+        motion_turn(&mo, -90.0f * q); /* a right turn (q = 1) is clockwise */
+        uturn_stage = 0;
+    }
     waiting = WAIT_TURN;
+}
+
+/* 1 when the turn started by start_turn (all its stages) is over. */
+static int turn_done(void)
+{
+    if (motion_busy(&mo)) return 0;
+    if (uturn_stage == 1) {
+        if (!front_fix()) return 0;
+        uturn_stage = 3;
+    }
+    if (uturn_stage == 3) {
+        motion_turn(&mo, 90.0f);
+        uturn_stage = 4;
+        return 0;
+    }
+    uturn_stage = 0;
+    return 1;
 }
 
 /* Search: decide at the sensing point of each cell. st.heading is the way
@@ -148,7 +206,7 @@ static void search_step(void)
         return;
     }
     if (waiting == WAIT_TURN) {
-        if (motion_busy(&mo)) return;
+        if (!turn_done()) return;
         start_forward(1, RC_SEARCH_MM_S, RC_SEARCH_MM_S);
         return;
     }
@@ -175,6 +233,7 @@ static void search_step(void)
     if (sensed && wall_ahead && mo.fwd.active) align_to_front_wall();
     if (sensed && !motion_busy(&mo)) {
         mo.steer_rad_s = 0;
+        if (wall_ahead && !front_fix()) return;
         if (next_dir < 0) {
             waiting = WAIT_NONE; /* explore has ended: the next call sees it */
             return;
@@ -188,12 +247,13 @@ static void search_step(void)
 /* Speed runs and the way back: one move per straight of the known path. */
 static void run_step(int to_goal)
 {
-    if (waiting == WAIT_TURN && motion_busy(&mo)) return;
+    if (waiting == WAIT_TURN && !turn_done()) return;
     if (waiting == WAIT_MOVE) {
         mo.steer_rad_s = centring();
         if (!maze_passable(&ex.map, st.cell, st.heading, 0)) align_to_front_wall();
         if (motion_busy(&mo)) return;
         mo.steer_rad_s = 0;
+        if (!maze_passable(&ex.map, st.cell, st.heading, 0) && !front_fix()) return;
     }
     int d = to_goal ? explore_run_dir(&ex, st.cell, st.heading) : explore_home_dir(&ex, st.cell, st.heading);
     if (d < 0) {

@@ -35,8 +35,11 @@ void profile_update(profile_t *p, float dt_s)
     float v_brake = sqrtf(p->v_end * p->v_end + 2.0f * p->accel * (remaining > 0 ? remaining : 0));
     float v_goal = fminf(fabsf(p->v_max), v_brake) * sign;
     float dv = p->accel * dt_s;
-    if (p->speed < v_goal - dv) p->speed += dv;
-    else if (p->speed > v_goal + dv) p->speed -= dv;
+    /* brake up to twice as hard when the end moved closer (front-wall
+     * alignment shortens a move under way) */
+    float dv_brake = fabsf(p->speed) > fabsf(v_goal) + dv ? 2.0f * dv : dv;
+    if (p->speed < v_goal - dv_brake) p->speed += sign > 0 ? dv : dv_brake;
+    else if (p->speed > v_goal + dv_brake) p->speed -= sign > 0 ? dv_brake : dv;
     else p->speed = v_goal;
     p->pos += p->speed * dt_s;
     if ((p->target - p->pos) * sign <= 0 || (fabsf(p->speed) < 1e-3f && remaining < 0.05f)) {
@@ -45,6 +48,9 @@ void profile_update(profile_t *p, float dt_s)
         p->active = 0;
     }
     p->accel_now = (p->speed - before) / dt_s;
+    /* arriving a little fast (the end moved): no feed-forward spike */
+    if (p->accel_now > 2.0f * p->accel) p->accel_now = 2.0f * p->accel;
+    if (p->accel_now < -2.0f * p->accel) p->accel_now = -2.0f * p->accel;
 }
 
 float profile_remaining(const profile_t *p) { return p->target - p->pos; }

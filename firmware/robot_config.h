@@ -9,12 +9,7 @@
 #define RC_CELL_MM 180.0f            /* classic maze pitch */
 #define RC_WALL_MM 12.0f             /* wall thickness */
 #define RC_WHEEL_DIAMETER_MM 32.0f   /* paper Table 1 */
-/* Effective track for odometry: the wheel centre planes are 96 mm apart,
- * but the 8 mm wide tyres touch the floor nearer their outer edges in
- * turns; calibrated in mmsim by 90-degree turns on the spot (odometry said
- * 90.4, the robot turned 84.0 with 96 mm). Calibrate a real mouse the same
- * way (10 turns, compare with the walls). */
-#define RC_TRACK_MM 103.4f
+#define RC_TRACK_MM 96.0f            /* wheel centre planes at +-48 mm */
 #define RC_COUNTS_PER_REV 358.32f    /* 12 PPR on the motor x 29.86 gear */
 #define RC_MM_PER_COUNT (3.14159265f * RC_WHEEL_DIAMETER_MM / RC_COUNTS_PER_REV) /* 0.2806 mm */
 

@@ -8,6 +8,11 @@
 #define CAT_STATIC 1u
 #define CAT_ROBOT 2u
 #define CAT_RAY 4u
+#define CAT_FLOOR 8u
+#define CAT_TYRE 16u       /* wheel-floor contact sphere */
+#define CAT_WHEEL_SIDE 32u /* wheel cylinder, against walls only */
+/* ODE pairs two geoms when either one's category meets the other's collide
+ * bits, so each kind that must not meet another has its own category */
 #define MAX_CONTACTS 4
 
 struct world {
@@ -15,7 +20,7 @@ struct world {
     dWorldID world;
     dSpaceID top, statics, robot;
     dJointGroupID contacts;
-    dGeomID floor, centre_post, box, caster, wheel_geom[2], ray;
+    dGeomID floor, centre_post, box, caster, wheel_geom[2], wheel_side[2], ray;
     dBodyID chassis, wheel[2];
     dJointID hinge[2];
     double box_offset[3];  /* chassis box centre in the chassis body frame */
@@ -33,7 +38,7 @@ static dGeomID static_box(world_t *w, double x, double y, double lx, double ly)
     dGeomID g = dCreateBox(w->statics, lx, ly, h);
     dGeomSetPosition(g, x, y, h / 2);
     dGeomSetCategoryBits(g, CAT_STATIC);
-    dGeomSetCollideBits(g, CAT_ROBOT | CAT_RAY);
+    dGeomSetCollideBits(g, CAT_ROBOT | CAT_RAY | CAT_WHEEL_SIDE);
     return g;
 }
 
@@ -118,8 +123,17 @@ static void build_robot(world_t *w, double x, double y, double heading)
         dRFromAxisAndAngle(r2, 0, 1, 0, M_PI / 2);
         dMultiply0(r3, rot, r2, 3, 3, 3);
         dBodySetRotation(w->wheel[s], r3);
-        w->wheel_geom[s] = dCreateCylinder(w->robot, rw, c->wheel_w_m);
+        /* the tyre touches the floor as a sphere of the wheel's radius: one
+         * contact on the wheel's centre plane, as a rounded tyre. A flat
+         * cylinder touches with one rim edge or the other as the chassis
+         * rolls a little, which moved the effective track between 88 and
+         * 104 mm and made in-place turns miss by up to 9 degrees. The
+         * wheel's mass and inertia stay those of a cylinder. */
+        w->wheel_geom[s] = dCreateSphere(w->robot, rw);
         dGeomSetBody(w->wheel_geom[s], w->wheel[s]);
+        /* ...but against walls and posts the wheel is its real cylinder */
+        w->wheel_side[s] = dCreateCylinder(w->robot, rw, c->wheel_w_m);
+        dGeomSetBody(w->wheel_side[s], w->wheel[s]);
 
         const dReal *ax = dBodyGetRotation(w->chassis); /* robot x axis in the world: column 0 */
         w->hinge[s] = dJointCreateHinge(w->world, 0);
@@ -127,10 +141,16 @@ static void build_robot(world_t *w, double x, double y, double heading)
         dJointSetHingeAnchor(w->hinge[s], ww[0], ww[1], ww[2]);
         dJointSetHingeAxis(w->hinge[s], ax[0], ax[4], ax[8]);
     }
-    dGeomID parts[4] = { w->box, w->caster, w->wheel_geom[0], w->wheel_geom[1] };
-    for (int k = 0; k < 4; k++) {
+    dGeomID parts[2] = { w->box, w->caster };
+    for (int k = 0; k < 2; k++) {
         dGeomSetCategoryBits(parts[k], CAT_ROBOT);
-        dGeomSetCollideBits(parts[k], CAT_STATIC);
+        dGeomSetCollideBits(parts[k], CAT_STATIC | CAT_FLOOR);
+    }
+    for (int k = 0; k < 2; k++) {
+        dGeomSetCategoryBits(w->wheel_geom[k], CAT_TYRE);
+        dGeomSetCollideBits(w->wheel_geom[k], CAT_FLOOR);
+        dGeomSetCategoryBits(w->wheel_side[k], CAT_WHEEL_SIDE);
+        dGeomSetCollideBits(w->wheel_side[k], CAT_STATIC);
     }
 
     /* ToF sensors at the body's mid height, inside the body outline (a ray
@@ -166,13 +186,13 @@ world_t *world_create(const simcfg_t *c, const maze_t *m, double x_m, double y_m
     dVector3 centre = { wx / 2, wy / 2, 0, 0 }, extents = { ext, ext, ext, 0 };
     w->statics = dQuadTreeSpaceCreate(w->top, centre, extents, 5);
     dGeomSetCategoryBits((dGeomID)w->statics, CAT_STATIC);
-    dGeomSetCollideBits((dGeomID)w->statics, CAT_ROBOT | CAT_RAY);
+    dGeomSetCollideBits((dGeomID)w->statics, CAT_ROBOT | CAT_RAY | CAT_WHEEL_SIDE);
     w->robot = dSimpleSpaceCreate(w->top);
-    dGeomSetCategoryBits((dGeomID)w->robot, CAT_ROBOT);
-    dGeomSetCollideBits((dGeomID)w->robot, CAT_STATIC);
+    dGeomSetCategoryBits((dGeomID)w->robot, CAT_ROBOT | CAT_TYRE | CAT_WHEEL_SIDE);
+    dGeomSetCollideBits((dGeomID)w->robot, CAT_STATIC | CAT_FLOOR);
     w->floor = dCreatePlane(w->top, 0, 0, 1, 0);
-    dGeomSetCategoryBits(w->floor, CAT_STATIC);
-    dGeomSetCollideBits(w->floor, CAT_ROBOT);
+    dGeomSetCategoryBits(w->floor, CAT_FLOOR);
+    dGeomSetCollideBits(w->floor, CAT_ROBOT | CAT_TYRE);
     w->contacts = dJointGroupCreate(0);
     build_maze(w, m);
     build_robot(w, x_m, y_m, heading_rad);
@@ -196,7 +216,8 @@ void world_destroy(world_t *w)
 
 static int is_robot_part(const world_t *w, dGeomID g)
 {
-    return g == w->box || g == w->caster || g == w->wheel_geom[0] || g == w->wheel_geom[1];
+    return g == w->box || g == w->caster || g == w->wheel_geom[0] || g == w->wheel_geom[1] || g == w->wheel_side[0] ||
+           g == w->wheel_side[1];
 }
 
 static void near_cb(void *data, dGeomID a, dGeomID b)

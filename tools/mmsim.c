@@ -387,8 +387,9 @@ int main(int argc, char **argv)
             else if (strcmp(optarg, "default")) return bad("--profile: expected default or paper, got '%s'", optarg);
             break;
         case 'D':
-            if (!strcmp(optarg, "scripted")) o.scripted = 1;
-            else if (strcmp(optarg, "firmware")) return bad("--driver: expected firmware or scripted, got '%s'", optarg);
+            if (strcmp(optarg, "scripted") && strcmp(optarg, "firmware"))
+                return bad("--driver: expected firmware or scripted, got '%s'", optarg);
+            o.scripted = !strcmp(optarg, "scripted");
             break;
         case 'v': o.verbose = 1; break;
         case 'j': o.json = 1; break;
