@@ -26,7 +26,12 @@ void motion_init(motion_t *m)
 
 void motion_forward(motion_t *m, float distance_mm, float v_max, float v_end)
 {
-    profile_start(&m->fwd, distance_mm, v_max, v_end, RC_ACCEL_MM_S2);
+    motion_forward_accel(m, distance_mm, v_max, v_end, RC_ACCEL_MM_S2);
+}
+
+void motion_forward_accel(motion_t *m, float distance_mm, float v_max, float v_end, float accel)
+{
+    profile_start(&m->fwd, distance_mm, v_max, v_end, accel);
 }
 
 void motion_turn(motion_t *m, float degrees)

@@ -33,6 +33,8 @@ typedef struct {
 void motion_init(motion_t *m);
 /* Forward move of distance_mm, cruising at v_max, ending at v_end. */
 void motion_forward(motion_t *m, float distance_mm, float v_max, float v_end);
+/* The same with a given acceleration (mm/s^2). */
+void motion_forward_accel(motion_t *m, float distance_mm, float v_max, float v_end, float accel);
 /* In-place turn, degrees counter-clockwise (negative = clockwise). */
 void motion_turn(motion_t *m, float degrees);
 int motion_busy(const motion_t *m);

@@ -285,6 +285,7 @@ static void run_step(int to_goal)
         if (dd != st.heading) break;
     }
     start_forward(n, to_goal ? RC_RUN_MM_S : RC_SEARCH_MM_S, 0);
+    if (to_goal) mo.fwd.accel = RC_RUN_ACCEL_MM_S2;
     st.cell = c;
 }
 

@@ -38,6 +38,7 @@
 #define RC_SEARCH_MM_S 700.0f        /* straights while exploring */
 #define RC_RUN_MM_S 1100.0f          /* speed runs (motor no-load ~1210 mm/s at 6 V) */
 #define RC_ACCEL_MM_S2 3000.0f       /* ~0.3 g; tyres hold ~1 g at mu 1.0 */
+#define RC_RUN_ACCEL_MM_S2 3000.0f   /* speed runs: 5000 crashed on japan2019 (wheel slip in the stops) */
 #define RC_TURN_DEG_S 600.0f         /* in-place turns */
 #define RC_TURN_ACCEL_DEG_S2 6000.0f
 /* sense the next cell's walls this far before its centre: the diagonal
