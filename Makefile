@@ -25,6 +25,8 @@ TESTS    := $(patsubst test/%.c,$(B)/test/%,$(TEST_SRC))
 
 # Link-time mocks: a test that wraps HAL calls names them here.
 WRAP_test_explore := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros
+WRAP_test_firmware := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros -Wl,--wrap=hal_motor_set \
+	-Wl,--wrap=hal_encoder -Wl,--wrap=hal_distance
 
 .PHONY: all deps test sim bench fuzz firmware firmware-size mazes clean tools
 all: tools

@@ -50,4 +50,13 @@ want_rc 1 "time limit" "$S" --maze mazes/gen-16x16-s1.txt --time-limit 5 --json
 mkdir "$T/batch"; cp mazes/gen-5x5-s1.txt "$T/batch/a.txt"; cp "$T/closed.txt" "$T/batch/b.txt"; cp mazes/gen-6x6-s1.txt "$T/batch/c.txt"
 want_rc 1 "batch worst code" "$S" --batch "$T/batch" --jobs 2 --runs 1
 [ "$(python3 -c "import json; print([json.loads(l)['maze'].split('/')[-1] for l in open('$T/out')])")" = "['a.txt', 'b.txt', 'c.txt']" ] && ok "batch order" || bad "batch order: $(cat "$T/out")"
+# the firmware in the loop: search, prove, speed runs on small mazes
+for m in gen-5x5-s1 gen-8x8-s1; do
+  want_rc 0 "firmware contest $m" "$S" --maze mazes/$m.txt --driver firmware --json
+  [ "$(py "(d['driver'], d['reached_goal'], d['final_path_optimal'], d['exit_reason'], len(d['laps']) >= 2, d['best_run_s'] <= d['first_run_s'])")" = "('firmware', True, True, 'done', True, True)" ] && ok "firmware $m proven and raced" || bad "firmware $m: $(cat "$T/out")"
+done
+"$S" --maze mazes/gen-5x5-s1.txt --driver firmware --json >"$T/f1"; "$S" --maze mazes/gen-5x5-s1.txt --driver firmware --json >"$T/f2"
+[ "$(strip "$T/f1")" = "$(strip "$T/f2")" ] && ok "firmware run deterministic" || bad "firmware run deterministic"
+want_rc 1 "firmware, goal unreachable" "$S" --maze "$T/closed.txt" --driver firmware --json
+[ "$(py "d['exit_reason']")" = "unreachable" ] && ok "firmware reports unreachable" || bad "firmware unreachable: $(cat "$T/out")"
 [ $fails -eq 0 ]

@@ -1,0 +1,200 @@
+/* test_firmware.c - odometry, speed profiles, the wheel controller's crash
+ * stop and the contest state machine, against a HAL mocked at link time
+ * (-Wl,--wrap=hal_*): encoder counts, ToF readings and time come from the
+ * test, motor commands and log lines go to it. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <string.h>
+
+#include "hal.h"
+#include "motion.h"
+#include "mouse.h"
+#include "odom.h"
+#include "profile.h"
+#include "robot_config.h"
+
+/* ---- the mocked HAL ---- */
+static int32_t enc[2];
+static int16_t motor[2];
+static uint32_t now_us;
+static hal_distance_t tof[3];
+static int log_checked;
+
+uint32_t __wrap_hal_micros(void);
+void __wrap_hal_motor_set(int16_t left, int16_t right);
+int32_t __wrap_hal_encoder(uint8_t side);
+hal_distance_t __wrap_hal_distance(uint8_t sensor);
+void __wrap_hal_log(const char *line);
+
+uint32_t __wrap_hal_micros(void) { return now_us; }
+void __wrap_hal_motor_set(int16_t left, int16_t right)
+{
+    motor[0] = left;
+    motor[1] = right;
+}
+int32_t __wrap_hal_encoder(uint8_t side) { return enc[side & 1]; }
+hal_distance_t __wrap_hal_distance(uint8_t sensor) { return tof[sensor % 3]; }
+void __wrap_hal_log(const char *line)
+{
+    if (log_checked) check_expected(line);
+}
+
+static void near(double got, double want, double tol)
+{
+    if (fabs(got - want) > tol) fail_msg("got %.6g, want %.6g +- %.3g", got, want, tol);
+}
+
+static void test_odometry(void **state)
+{
+    (void)state;
+    odom_t o;
+    odom_init(&o, 100, 100);
+    odom_update(&o, 1100, 1100, 0.5f); /* 1000 counts each: straight */
+    near(o.dist_mm, 1000 * RC_MM_PER_COUNT, 1e-3);
+    near(o.theta_rad, 0, 1e-6);
+    near(o.y_mm, 1000 * RC_MM_PER_COUNT, 1e-3);
+    /* on the spot, left back and right forward: counter-clockwise */
+    int32_t n = (int32_t)lroundf(0.25f * 3.14159265f * RC_TRACK_MM / RC_MM_PER_COUNT); /* a quarter turn */
+    odom_update(&o, 1100 - n, 1100 + n, 0.5f);
+    near(o.theta_rad, 3.14159265 / 2, 0.005);
+    near(o.dist_mm, 1000 * RC_MM_PER_COUNT, 1e-3); /* no distance */
+}
+
+static void test_profile_trapezoid(void **state)
+{
+    (void)state;
+    profile_t p;
+    profile_reset(&p);
+    profile_start(&p, 900.0f, 700.0f, 0.0f, 3000.0f);
+    float vmax = 0, t = 0;
+    while (p.active && t < 5.0f) {
+        profile_update(&p, 0.001f);
+        if (p.speed > vmax) vmax = p.speed;
+        t += 0.001f;
+    }
+    assert_false(p.active);
+    near(p.pos, 900, 1e-3);
+    near(p.speed, 0, 1e-6);
+    near(vmax, 700, 1e-3);
+    near(t, 900.0 / 700 + 700.0 / 3000, 0.01); /* d/v + v/a */
+    /* too short to reach v_max: a triangle */
+    profile_start(&p, 50.0f, 700.0f, 0.0f, 3000.0f);
+    vmax = 0;
+    while (p.active) {
+        profile_update(&p, 0.001f);
+        if (p.speed > vmax) vmax = p.speed;
+    }
+    near(vmax, sqrt(3000.0 * 50), 15);
+    /* backwards, and moving the end while under way */
+    profile_start(&p, -30.0f, 200.0f, 0.0f, 3000.0f);
+    for (int i = 0; i < 20; i++) profile_update(&p, 0.001f);
+    assert_true(p.speed < 0 && p.pos < 0);
+    profile_start(&p, 100.0f, 500.0f, 500.0f, 3000.0f);
+    profile_update(&p, 0.001f);
+    profile_set_remaining(&p, profile_remaining(&p) + 180.0f);
+    near(p.target, 280, 1e-3);
+}
+
+/* Commanded forward but the wheels do not turn: crash stop, reported. */
+static void test_motion_stall_is_a_crash(void **state)
+{
+    (void)state;
+    motion_t m;
+    enc[0] = enc[1] = 0;
+    motion_init(&m);
+    motion_forward(&m, 500.0f, 700.0f, 0.0f);
+    motion_tick(&m, 0.001f);
+    assert_true(motor[0] > 0 && motor[1] > 0); /* feed-forward drives */
+    log_checked = 1;
+    expect_string(__wrap_hal_log, line, "motion: stuck, motors off");
+    for (int i = 0; i < 2000 && !m.crashed; i++) motion_tick(&m, 0.001f);
+    log_checked = 0;
+    assert_true(m.crashed);
+    assert_int_equal(motor[0], 0);
+    assert_int_equal(motor[1], 0);
+}
+
+/* Following the profile, wheels turning as commanded: no crash, and the
+ * commands are symmetric on a straight. */
+static void test_motion_tracks_straight(void **state)
+{
+    (void)state;
+    motion_t m;
+    enc[0] = enc[1] = 0;
+    motion_init(&m);
+    motion_forward(&m, 180.0f, 700.0f, 0.0f);
+    float pos = 0;
+    for (int i = 0; i < 1000 && motion_busy(&m); i++) {
+        pos += m.fwd.speed * 0.001f; /* the wheels follow the setpoint exactly */
+        enc[0] = enc[1] = (int32_t)lroundf(pos / RC_MM_PER_COUNT);
+        motion_tick(&m, 0.001f);
+        assert_int_equal(motor[0], motor[1]);
+    }
+    assert_false(m.crashed);
+    near(m.odom.dist_mm, 180, 1.0);
+}
+
+/* The start cell boxed in: the mouse reports it and stops. */
+static void test_mouse_no_goal(void **state)
+{
+    (void)state;
+    maze_t m;
+    maze_init(&m, 4, 4);
+    enc[0] = enc[1] = 0;
+    now_us = 0;
+    for (int i = 0; i < 3; i++) tof[i] = (hal_distance_t){ 20, 0 }; /* walls all round */
+    fw_set_maze(&m);
+    log_checked = 1;
+    expect_string(__wrap_hal_log, line, "explore: goal unreachable");
+    fw_setup();
+    for (int i = 0; i < 10; i++) {
+        fw_tick();
+        fw_loop();
+        now_us += 1000;
+    }
+    log_checked = 0;
+    assert_int_equal(mouse_status()->mode, MOUSE_NO_GOAL);
+    assert_int_equal(motor[0], 0);
+    assert_int_equal(motor[1], 0);
+}
+
+/* An open start cell: the mouse sets off north (both wheels forward). */
+static void test_mouse_sets_off(void **state)
+{
+    (void)state;
+    maze_t m;
+    maze_init(&m, 4, 4);
+    enc[0] = enc[1] = 0;
+    now_us = 0;
+    tof[HAL_TOF_FRONT] = (hal_distance_t){ 1200, 1 };
+    tof[HAL_TOF_LEFT] = tof[HAL_TOF_RIGHT] = (hal_distance_t){ 62, 0 };
+    fw_set_maze(&m);
+    fw_setup();
+    for (int i = 0; i < 50; i++) {
+        fw_tick();
+        fw_loop();
+        now_us += 1000;
+        float t = (float)(i + 1) * 0.001f; /* the wheels follow the accelerating profile */
+        enc[0] = enc[1] = (int32_t)lroundf(0.5f * RC_ACCEL_MM_S2 * t * t / RC_MM_PER_COUNT);
+    }
+    assert_int_equal(mouse_status()->mode, MOUSE_SEARCH);
+    assert_true(motor[0] > 0 && motor[1] > 0);
+    assert_int_equal(mouse_status()->heading, MAZE_NORTH);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_odometry),
+        cmocka_unit_test(test_profile_trapezoid),
+        cmocka_unit_test(test_motion_stall_is_a_crash),
+        cmocka_unit_test(test_motion_tracks_straight),
+        cmocka_unit_test(test_mouse_no_goal),
+        cmocka_unit_test(test_mouse_sets_off),
+    };
+    return cmocka_run_group_tests_name("firmware", tests, NULL, NULL);
+}
