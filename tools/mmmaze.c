@@ -2,7 +2,6 @@
  * and grid-mode exploration with the firmware's search code.
  *
  * Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure. */
-#include <dirent.h>
 #include <errno.h>
 #include <getopt.h>
 #include <jansson.h>
@@ -13,6 +12,7 @@
 #include "grid.h"
 #include "hal_sim.h"
 #include "maze.h"
+#include "mazedir.h"
 #include "mazefile.h"
 #include "mazegen.h"
 #include "solve.h"
@@ -262,42 +262,20 @@ static void explore_text(const char *name, const grid_result_t *r)
         printf("%s: run path never proven\n", name);
 }
 
-static int compare_names(const void *a, const void *b)
-{
-    return strcmp(*(char *const *)a, *(char *const *)b);
-}
-
 /* Explore every *.txt file in dir (sorted, not recursive). */
 static int explore_all(const char *dir, int json)
 {
-    DIR *d = opendir(dir);
-    if (!d) {
+    char **names;
+    long nn = mazedir_list(dir, &names);
+    if (nn < 0) {
         fprintf(stderr, "%s: cannot open: %s\n", dir, strerror(errno));
         return EXIT_BAD_INPUT;
     }
-    char **names = NULL;
-    size_t n = 0, cap = 0;
-    struct dirent *e;
-    while ((e = readdir(d)) != NULL) {
-        size_t len = strlen(e->d_name);
-        if (len < 5 || strcmp(e->d_name + len - 4, ".txt") != 0) continue;
-        if (n == cap) {
-            cap = cap ? cap * 2 : 64;
-            char **grown = realloc(names, cap * sizeof *names);
-            if (!grown) break;
-            names = grown;
-        }
-        names[n] = malloc(strlen(dir) + len + 2);
-        if (!names[n]) break;
-        sprintf(names[n++], "%s/%s", dir, e->d_name);
-    }
-    closedir(d);
-    if (n == 0) {
+    if (nn == 0) {
         fprintf(stderr, "%s: no .txt maze files\n", dir);
-        free(names);
         return EXIT_BAD_INPUT;
     }
-    qsort(names, n, sizeof *names, compare_names);
+    size_t n = (size_t)nn;
 
     int rc = EXIT_OK;
     unsigned long total = 0, explored = 0, unreachable = 0, not_optimal = 0, bad = 0, worst = 0;
@@ -338,8 +316,7 @@ static int explore_all(const char *dir, int json)
         printf("mean steps %.1f, worst %lu (%s), final path not the true shortest: %lu\n", mean, worst, worst_name,
                not_optimal);
     }
-    for (size_t i = 0; i < n; i++) free(names[i]);
-    free(names);
+    mazedir_free(names, nn);
     if (rc == EXIT_OK && not_optimal) rc = EXIT_NOT_REACHED;
     return rc;
 }

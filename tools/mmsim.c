@@ -4,7 +4,6 @@
  * built-in scripted driver (sim/driver.h) on its true pose.
  * Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure;
  * a batch returns the worst. */
-#include <dirent.h>
 #include <errno.h>
 #include <getopt.h>
 #include <jansson.h>
@@ -22,6 +21,7 @@
 #include "hal_sim.h"
 #include "mouse.h"
 #include "solve.h"
+#include "mazedir.h"
 #include "mazefile.h"
 #include "sim.h"
 
@@ -210,40 +210,21 @@ static int print_json_line(json_t *j)
     return 0;
 }
 
-static int compare_names(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
-
 /* Every *.txt in dir, one child process per maze, `jobs` at a time; one JSON
  * line per maze on stdout in input order; returns the worst exit code. */
 static int run_batch(const opts_t *o, const char *dir)
 {
-    DIR *d = opendir(dir);
-    if (!d) {
+    char **names;
+    long nn = mazedir_list(dir, &names);
+    if (nn < 0) {
         fprintf(stderr, "%s: cannot open: %s\n", dir, strerror(errno));
         return EXIT_BAD_INPUT;
     }
-    char **names = NULL;
-    size_t n = 0, cap = 0;
-    struct dirent *e;
-    while ((e = readdir(d)) != NULL) {
-        size_t len = strlen(e->d_name);
-        if (len < 5 || strcmp(e->d_name + len - 4, ".txt")) continue;
-        if (n == cap) {
-            cap = cap ? 2 * cap : 64;
-            char **g = realloc(names, cap * sizeof *names);
-            if (!g) break;
-            names = g;
-        }
-        names[n] = malloc(strlen(dir) + len + 2);
-        if (!names[n]) break;
-        sprintf(names[n++], "%s/%s", dir, e->d_name);
-    }
-    closedir(d);
-    if (!n) {
+    if (nn == 0) {
         fprintf(stderr, "%s: no .txt maze files\n", dir);
-        free(names);
         return EXIT_BAD_INPUT;
     }
-    qsort(names, n, sizeof *names, compare_names);
+    size_t n = (size_t)nn;
     int worst = EXIT_OK;
     size_t next = 0, done = 0, printed = 0;
     pid_t *pid = calloc(n, sizeof *pid);
@@ -295,11 +276,8 @@ static int run_batch(const opts_t *o, const char *dir)
     }
     fputc('\n', stderr);
     fflush(stdout);
-    for (size_t i = 0; i < n; i++) {
-        free(names[i]);
-        free(text[i]);
-    }
-    free(names);
+    for (size_t i = 0; i < n; i++) free(text[i]);
+    mazedir_free(names, nn);
     free(text);
     free(pid);
     free(fd);

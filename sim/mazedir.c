@@ -1,0 +1,44 @@
+/* mazedir.c - list a folder's maze files in a stable (sorted) order, so a
+ * batch's output is the same on every machine. */
+#include "mazedir.h"
+
+#include <dirent.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int compare_names(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
+
+long mazedir_list(const char *dir, char ***names)
+{
+    DIR *d = opendir(dir);
+    *names = NULL;
+    if (!d) return -1;
+    char **list = NULL;
+    size_t n = 0, cap = 0;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        size_t len = strlen(e->d_name);
+        if (len < 5 || strcmp(e->d_name + len - 4, ".txt") != 0) continue;
+        if (n == cap) {
+            cap = cap ? cap * 2 : 64;
+            char **grown = realloc(list, cap * sizeof *list);
+            if (!grown) break;
+            list = grown;
+        }
+        size_t size = strlen(dir) + len + 2;
+        list[n] = malloc(size);
+        if (!list[n]) break;
+        snprintf(list[n++], size, "%s/%s", dir, e->d_name);
+    }
+    closedir(d);
+    if (n) qsort(list, n, sizeof *list, compare_names);
+    *names = list;
+    return (long)n;
+}
+
+void mazedir_free(char **names, long n)
+{
+    for (long i = 0; i < n; i++) free(names[i]);
+    free(names);
+}
