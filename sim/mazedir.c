@@ -3,6 +3,7 @@
 #include "mazedir.h"
 
 #include <dirent.h>
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -41,4 +42,17 @@ void mazedir_free(char **names, long n)
 {
     for (long i = 0; i < n; i++) free(names[i]);
     free(names);
+}
+
+long mazedir_list_or_report(const char *dir, char ***names)
+{
+    long n = mazedir_list(dir, names);
+    if (n < 0) fprintf(stderr, "%s: cannot open: %s\n", dir, strerror(errno));
+    else if (n == 0) fprintf(stderr, "%s: no .txt maze files\n", dir);
+    if (n <= 0) {
+        mazedir_free(*names, 0);
+        *names = NULL;
+        return -1;
+    }
+    return n;
 }

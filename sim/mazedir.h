@@ -9,5 +9,8 @@
  * Free the list with mazedir_free. */
 long mazedir_list(const char *dir, char ***names);
 void mazedir_free(char **names, long n);
+/* mazedir_list for a command: on no files or an unreadable folder, prints
+ * one line "DIR: ..." on stderr and returns -1. */
+long mazedir_list_or_report(const char *dir, char ***names);
 
 #endif

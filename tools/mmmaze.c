@@ -266,15 +266,8 @@ static void explore_text(const char *name, const grid_result_t *r)
 static int explore_all(const char *dir, int json)
 {
     char **names;
-    long nn = mazedir_list(dir, &names);
-    if (nn < 0) {
-        fprintf(stderr, "%s: cannot open: %s\n", dir, strerror(errno));
-        return EXIT_BAD_INPUT;
-    }
-    if (nn == 0) {
-        fprintf(stderr, "%s: no .txt maze files\n", dir);
-        return EXIT_BAD_INPUT;
-    }
+    long nn = mazedir_list_or_report(dir, &names);
+    if (nn < 0) return EXIT_BAD_INPUT;
     size_t n = (size_t)nn;
 
     int rc = EXIT_OK;

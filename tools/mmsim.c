@@ -215,15 +215,8 @@ static int print_json_line(json_t *j)
 static int run_batch(const opts_t *o, const char *dir)
 {
     char **names;
-    long nn = mazedir_list(dir, &names);
-    if (nn < 0) {
-        fprintf(stderr, "%s: cannot open: %s\n", dir, strerror(errno));
-        return EXIT_BAD_INPUT;
-    }
-    if (nn == 0) {
-        fprintf(stderr, "%s: no .txt maze files\n", dir);
-        return EXIT_BAD_INPUT;
-    }
+    long nn = mazedir_list_or_report(dir, &names);
+    if (nn < 0) return EXIT_BAD_INPUT;
     size_t n = (size_t)nn;
     int worst = EXIT_OK;
     size_t next = 0, done = 0, printed = 0;
