@@ -40,6 +40,11 @@ want_rc 2 "missing maze" "$S" --maze "$T/none.txt"
 want_rc 2 "bad flag" "$S" --maze mazes/gen-5x5-s1.txt --warp
 want_rc 2 "bad seed" "$S" --maze mazes/gen-5x5-s1.txt --seed x
 want_rc 2 "no maze" "$S"
+want_rc 2 "bad driver" "$S" --maze mazes/gen-5x5-s1.txt --driver warp
+grep -q "^mmsim: --driver: expected firmware or scripted, got 'warp'" "$T/err" && ok "driver error line" || bad "driver error line: $(cat "$T/err")"
+want_rc 2 "bad profile" "$S" --maze mazes/gen-5x5-s1.txt --profile ice
+want_rc 2 "bad centre post" "$S" --maze mazes/gen-5x5-s1.txt --centre-post maybe
+want_rc 2 "bad time limit" "$S" --maze mazes/gen-5x5-s1.txt --time-limit 0
 printf 'o---o---o---o\n| S |   |   |\no---o---o---o\n' >"$T/closed.txt"
 want_rc 1 "unreachable goal" "$S" --maze "$T/closed.txt" --json
 [ "$(py "(d['reached_goal'], d['exit_reason'])")" = "(False, 'unreachable')" ] && ok "unreachable reported" || bad "unreachable reported"
