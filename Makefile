@@ -88,13 +88,18 @@ sim: deps $(B)/mmsim $(B)/mmmaze
 	$(B)/mmmaze explore $(MAZE)
 
 # ---- benchmarks ----
-bench: deps $(B)/mmmaze $(B)/bench_flood $(B)/simavr_cycles $(B)/avr/flood0.elf $(B)/avr/flood10.elf
+bench: deps $(B)/mmmaze $(B)/mmsim $(B)/bench_flood $(B)/simavr_cycles $(B)/avr/flood0.elf $(B)/avr/flood10.elf \
+	$(B)/avr/tick0.elf $(B)/avr/tick100.elf
 	bash bench/run.sh
 $(B)/simavr_cycles: bench/simavr_cycles.c | deps
 	$(CC) -O2 $< $$(pkg-config --cflags --libs simavr) -o $@
 $(B)/avr/flood%.elf: bench/avr_flood.c $(FW_SRC) | deps
 	@mkdir -p $(dir $@)
 	$(AVR_CC) $(AVR_FLAGS) -DREPS=$* -Wl,--gc-sections bench/avr_flood.c firmware/flood.c firmware/maze.c -o $@
+$(B)/avr/tick%.elf: bench/avr_tick.c $(FW_SRC) | deps
+	@mkdir -p $(dir $@)
+	$(AVR_CC) $(AVR_FLAGS) -DREPS=$* -Wl,--gc-sections bench/avr_tick.c firmware/motion.c firmware/odom.c \
+	  firmware/profile.c -lm -o $@
 $(B)/bench_flood: bench/bench_flood.c $(B)/libmm.a
 	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(B)/libmm.a $(LIBS) -o $@
 

@@ -30,4 +30,6 @@ else
 fi
 base=$($B/simavr_cycles $B/avr/flood0.elf 2>/dev/null | tail -1); ten=$($B/simavr_cycles $B/avr/flood10.elf 2>/dev/null | tail -1)
 awk -v a="$base" -v b="$ten" 'BEGIN { c = (b - a) / 10; printf "AVR (ATmega328P 16 MHz, simavr): full heading-aware flood of a blank 16x16 map: %d cycles = %.1f ms\n", c, c / 16000 }'
+base=$($B/simavr_cycles $B/avr/tick0.elf 2>/dev/null | tail -1); hundred=$($B/simavr_cycles $B/avr/tick100.elf 2>/dev/null | tail -1)
+awk -v a="$base" -v b="$hundred" 'BEGIN { c = (b - a) / 100; printf "AVR (ATmega328P 16 MHz, simavr): one control tick (motion_tick, float): %d cycles = %.3f ms\n", c, c / 16000 }'
 make -s firmware-size
