@@ -150,9 +150,9 @@ static int front_fix(void)
     return 1;
 }
 
-static void start_forward(float cells, float speed, float v_end)
+static void start_forward(float cells, float speed, float v_end, float accel)
 {
-    motion_forward(&mo, cells * RC_CELL_MM, speed, v_end);
+    motion_forward_accel(&mo, cells * RC_CELL_MM, speed, v_end, accel);
     waiting = WAIT_MOVE;
     sensed = 0;
     wall_ahead = 0;
@@ -212,12 +212,12 @@ static void search_step(void)
         int8_t q = quarter(st.heading, (uint8_t)d);
         st.heading = (uint8_t)d;
         if (q) start_turn(q);
-        else start_forward(1, RC_SEARCH_MM_S, RC_SEARCH_MM_S);
+        else start_forward(1, RC_SEARCH_MM_S, RC_SEARCH_MM_S, RC_ACCEL_MM_S2);
         return;
     }
     if (waiting == WAIT_TURN) {
         if (!turn_done()) return;
-        start_forward(1, RC_SEARCH_MM_S, RC_SEARCH_MM_S);
+        start_forward(1, RC_SEARCH_MM_S, RC_SEARCH_MM_S, RC_ACCEL_MM_S2);
         return;
     }
     /* WAIT_MOVE */
@@ -294,8 +294,7 @@ static void run_step(int to_goal)
         int dd = to_goal ? explore_run_dir(&ex, c, st.heading) : explore_home_dir(&ex, c, st.heading);
         if (dd != st.heading) break;
     }
-    start_forward(n, to_goal ? RC_RUN_MM_S : RC_SEARCH_MM_S, 0);
-    if (to_goal) mo.fwd.accel = RC_RUN_ACCEL_MM_S2;
+    start_forward(n, to_goal ? RC_RUN_MM_S : RC_SEARCH_MM_S, 0, to_goal ? RC_RUN_ACCEL_MM_S2 : RC_ACCEL_MM_S2);
     st.cell = c;
 }
 
