@@ -5,15 +5,16 @@ SHELL := /bin/bash
 # Debian packages the build and tests need; `make deps` installs the missing ones.
 DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev libinih-dev \
 	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev \
-	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev
+	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev \
+	libpng-dev
 
 CC      ?= gcc
 STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
 WARN    := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wno-unused-parameter
-INC      = -Ifirmware -Ihal -Ihal/sim -Isim $(shell pkg-config --cflags glib-2.0 ode 2>/dev/null)
+INC      = -Ifirmware -Ihal -Ihal/sim -Isim $(shell pkg-config --cflags glib-2.0 ode libpng 2>/dev/null)
 CFLAGS  ?= -O2 -g
 SAN     := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
-LIBS     = -ljansson -linih $(shell pkg-config --libs glib-2.0 ode 2>/dev/null) -lm
+LIBS     = -ljansson -linih $(shell pkg-config --libs glib-2.0 ode libpng 2>/dev/null) -lm
 B       := build
 
 FW_SRC   := $(wildcard firmware/*.c)

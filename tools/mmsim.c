@@ -24,6 +24,8 @@
 #include "mazedir.h"
 #include "mazefile.h"
 #include "sim.h"
+#include "outfile.h"
+#include "report.h"
 
 enum { EXIT_OK = 0, EXIT_NOT_REACHED = 1, EXIT_BAD_INPUT = 2, EXIT_EXTERNAL = 3 };
 
@@ -38,6 +40,7 @@ typedef struct {
     int scripted;       /* --driver scripted */
     int verbose;        /* --verbose: firmware log lines on stderr */
     int jobs;
+    const char *report; /* --report FILE.png, or NULL */
 } opts_t;
 
 static double wall_now(void)
@@ -98,6 +101,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         fw_setup();
     }
 
+    report_t *rep = o->report ? report_new(&sim) : NULL;
     const char *reason = "done";
     double t0 = wall_now(), last_x, last_y, h, progress_s = 0;
     world_pose(sim.world, &last_x, &last_y, &h);
@@ -122,6 +126,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
                 break;
             }
         }
+        if (rep) report_step(rep, &sim);
         double t = sim_time_s(&sim), x, y;
         if (sim.race.over_time && !sim.race.in_run) {
             reason = "time_limit";
@@ -174,6 +179,17 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     json_object_set_new(o_json, "exit_reason", json_string(reason));
     json_object_set_new(o_json, "config_hash", json_string(hash));
     json_object_set_new(o_json, "driver", json_string(o->scripted ? "scripted" : "firmware"));
+    int report_failed = 0;
+    if (rep) {
+        char title[300], rerr[600];
+        snprintf(title, sizeof title, "%s  %ux%u  seed %llu  %s driver  exit: %s", maze_path, maze.width, maze.height,
+                 (unsigned long long)o->seed, o->scripted ? "scripted" : "firmware", reason);
+        if (report_write(rep, &sim, o->scripted ? NULL : mouse_map(), o->report, title, rerr, sizeof rerr) != 0) {
+            fprintf(stderr, "%s\n", rerr);
+            report_failed = 1;
+        }
+        report_free(rep);
+    }
     if (!o->scripted) {
         /* the path the mouse would run: best through known-open walls */
         static solve_path_t truth, known;
@@ -197,6 +213,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     }
     sim_free(&sim);
     *out = o_json;
+    if (report_failed) return EXIT_EXTERNAL;
     return r->nlaps > 0 && !strcmp(reason, "done") ? EXIT_OK : EXIT_NOT_REACHED;
 }
 
@@ -282,7 +299,7 @@ static void usage(FILE *out)
 {
     fputs("usage: mmsim --maze FILE [--config FILE] [--seed N] [--time-limit S] [--runs N]\n"
           "             [--centre-post on|off] [--profile default|paper] [--driver firmware|scripted]\n"
-          "             [--json] [--realtime] [--verbose]\n"
+          "             [--json] [--realtime] [--verbose] [--report FILE.png]\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
           "       mmsim --print-config [--config FILE]\n"
           "Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure.\n",
@@ -320,10 +337,10 @@ int main(int argc, char **argv)
         { "print-config", no_argument, 0, 'P' }, { "batch", required_argument, 0, 'b' },
         { "jobs", required_argument, 0, 'J' },   { "help", no_argument, 0, 'h' },
         { "profile", required_argument, 0, 'F' }, { "driver", required_argument, 0, 'D' },
-        { "verbose", no_argument, 0, 'v' },
+        { "verbose", no_argument, 0, 'v' },      { "report", required_argument, 0, 'R' },
         { 0, 0, 0, 0 },
     };
-    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1 }; /* scripted by default until the firmware passes issue 4 */
+    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, NULL }; /* scripted by default until the firmware passes issue 4 */
     const char *maze = NULL, *batch = NULL;
     double v;
     int c;
@@ -363,6 +380,7 @@ int main(int argc, char **argv)
             o.scripted = !strcmp(optarg, "scripted");
             break;
         case 'v': o.verbose = 1; break;
+        case 'R': o.report = optarg; break;
         case 'j': o.json = 1; break;
         case 'r': o.realtime = 1; break;
         case 'P': o.print_config = 1; break;
@@ -378,8 +396,18 @@ int main(int argc, char **argv)
         config_print(&cfg, stdout);
         return EXIT_OK;
     }
+    if (batch && o.report) return bad("%s", "--report needs --maze (one run), not --batch");
     if (batch) return run_batch(&o, batch);
     if (!maze) return bad("%s", "--maze FILE is required");
+    if (o.report) { /* fail now, not after a ten-minute contest */
+        char perr[600];
+        outfile_t probe;
+        if (outfile_open(&probe, o.report, perr, sizeof perr) != 0) {
+            fprintf(stderr, "mmsim: --report: %s\n", perr);
+            return EXIT_BAD_INPUT;
+        }
+        outfile_abort(&probe);
+    }
     json_t *j;
     int rc = run_one(&o, maze, &j, !o.json);
     if (j && o.json && print_json_line(j) != 0) rc = EXIT_EXTERNAL;
