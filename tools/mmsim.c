@@ -26,6 +26,7 @@
 #include "sim.h"
 #include "outfile.h"
 #include "report.h"
+#include "view.h"
 
 enum { EXIT_OK = 0, EXIT_NOT_REACHED = 1, EXIT_BAD_INPUT = 2, EXIT_EXTERNAL = 3 };
 
@@ -41,6 +42,10 @@ typedef struct {
     int verbose;        /* --verbose: firmware log lines on stderr */
     int jobs;
     const char *report; /* --report FILE.png, or NULL */
+    int gui;            /* --gui: live viewer */
+    const char *shot;   /* --screenshot FILE.png, or NULL */
+    double shot_at_s;   /* --at: sim time of the screenshot */
+    view_opts_t view;   /* --size, --speed, --camera, --port, --baud */
 } opts_t;
 
 static double wall_now(void)
@@ -102,6 +107,19 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     }
 
     report_t *rep = o->report ? report_new(&sim) : NULL;
+    view_t *view = NULL;
+    if (o->gui || o->shot) {
+        char verr[400] = "out of memory";
+        view = view_new(&o->view);
+        if (!view || view_open(view, o->gui, verr, sizeof verr) != 0) {
+            fprintf(stderr, "mmsim: %s\n", verr);
+            view_free(view);
+            report_free(rep);
+            hal_sim_attach(NULL);
+            sim_free(&sim);
+            return EXIT_EXTERNAL;
+        }
+    }
     const char *reason = "done";
     double t0 = wall_now(), last_x, last_y, h, progress_s = 0;
     world_pose(sim.world, &last_x, &last_y, &h);
@@ -127,6 +145,14 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
             }
         }
         if (rep) report_step(rep, &sim);
+        if (o->gui && view_step(view, &sim)) {
+            reason = "window_closed";
+            break;
+        }
+        if (o->shot && sim_time_s(&sim) >= o->shot_at_s) {
+            reason = "screenshot";
+            break;
+        }
         double t = sim_time_s(&sim), x, y;
         if (sim.race.over_time && !sim.race.in_run) {
             reason = "time_limit";
@@ -155,6 +181,16 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
                 nanosleep(&ts, NULL);
             }
         }
+    }
+    int view_failed = 0;
+    if (view) {
+        char verr[600];
+        if (o->shot && view_screenshot(view, &sim, o->shot, verr, sizeof verr) != 0) {
+            fprintf(stderr, "mmsim: %s\n", verr);
+            view_failed = 1;
+        }
+        if (o->gui) view_hold(view, &sim);
+        view_free(view);
     }
     double wall = wall_now() - t0, t = sim_time_s(&sim), x, y;
     world_pose(sim.world, &x, &y, &h);
@@ -213,7 +249,8 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     }
     sim_free(&sim);
     *out = o_json;
-    if (report_failed) return EXIT_EXTERNAL;
+    if (report_failed || view_failed) return EXIT_EXTERNAL;
+    if (o->shot) return EXIT_OK; /* the picture was the point */
     return r->nlaps > 0 && !strcmp(reason, "done") ? EXIT_OK : EXIT_NOT_REACHED;
 }
 
@@ -300,6 +337,8 @@ static void usage(FILE *out)
     fputs("usage: mmsim --maze FILE [--config FILE] [--seed N] [--time-limit S] [--runs N]\n"
           "             [--centre-post on|off] [--profile default|paper] [--driver firmware|scripted]\n"
           "             [--json] [--realtime] [--verbose] [--report FILE.png]\n"
+          "             [--gui [--speed 1..64]] [--screenshot FILE.png [--at SECONDS]]\n"
+          "             [--camera 1|2|3] [--size WxH] [--port DEV] [--baud N]   (viewer)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
           "       mmsim --print-config [--config FILE]\n"
           "Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure.\n",
@@ -338,9 +377,13 @@ int main(int argc, char **argv)
         { "jobs", required_argument, 0, 'J' },   { "help", no_argument, 0, 'h' },
         { "profile", required_argument, 0, 'F' }, { "driver", required_argument, 0, 'D' },
         { "verbose", no_argument, 0, 'v' },      { "report", required_argument, 0, 'R' },
+        { "gui", no_argument, 0, 'G' },          { "screenshot", required_argument, 0, 'S' },
+        { "at", required_argument, 0, 'A' },     { "camera", required_argument, 0, 'C' },
+        { "size", required_argument, 0, 'Z' },   { "speed", required_argument, 0, 'X' },
+        { "port", required_argument, 0, 'T' },   { "baud", required_argument, 0, 'B' },
         { 0, 0, 0, 0 },
     };
-    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, NULL }; /* scripted by default until the firmware passes issue 4 */
+    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, NULL, 0, NULL, 0, { 1024, 720, 1, 1, "", 115200 } }; /* scripted by default until the firmware passes issue 4 */
     const char *maze = NULL, *batch = NULL;
     double v;
     int c;
@@ -381,6 +424,31 @@ int main(int argc, char **argv)
             break;
         case 'v': o.verbose = 1; break;
         case 'R': o.report = optarg; break;
+        case 'G': o.gui = 1; break;
+        case 'S': o.shot = optarg; break;
+        case 'A':
+            if (num("--at", optarg, 0, 86400, &o.shot_at_s)) return EXIT_BAD_INPUT;
+            break;
+        case 'C':
+            if (num("--camera", optarg, 1, 3, &v) || v != floor(v)) return bad("--camera: expected 1, 2 or 3, got '%s'", optarg);
+            o.view.camera = (int)v;
+            break;
+        case 'X':
+            if (num("--speed", optarg, 1, VIEW_SPEED_MAX, &o.view.speed)) return EXIT_BAD_INPUT;
+            break;
+        case 'Z': {
+            int w, h, n = 0;
+            if (sscanf(optarg, "%dx%d%n", &w, &h, &n) != 2 || optarg[n] || w < 64 || h < 64 || w > 8192 || h > 8192)
+                return bad("--size: expected WxH, 64 to 8192 pixels each, got '%s'", optarg);
+            o.view.width = w;
+            o.view.height = h;
+            break;
+        }
+        case 'T': o.view.port = optarg; break;
+        case 'B':
+            if (num("--baud", optarg, 1, 4000000, &v) || v != floor(v)) return bad("--baud: expected a whole number, got '%s'", optarg);
+            o.view.baud = (long)v;
+            break;
         case 'j': o.json = 1; break;
         case 'r': o.realtime = 1; break;
         case 'P': o.print_config = 1; break;
@@ -396,14 +464,17 @@ int main(int argc, char **argv)
         config_print(&cfg, stdout);
         return EXIT_OK;
     }
-    if (batch && o.report) return bad("%s", "--report needs --maze (one run), not --batch");
+    if (batch && (o.report || o.gui || o.shot)) return bad("%s", "--report, --gui and --screenshot need --maze (one run), not --batch");
+    if (o.gui && o.shot) return bad("%s", "--gui and --screenshot: one at a time");
     if (batch) return run_batch(&o, batch);
     if (!maze) return bad("%s", "--maze FILE is required");
-    if (o.report) { /* fail now, not after a ten-minute contest */
+    const char *outs[2][2] = { { "--report", o.report }, { "--screenshot", o.shot } };
+    for (int i = 0; i < 2; i++) { /* fail now, not after a ten-minute contest */
         char perr[600];
         outfile_t probe;
-        if (outfile_open(&probe, o.report, perr, sizeof perr) != 0) {
-            fprintf(stderr, "mmsim: --report: %s\n", perr);
+        if (!outs[i][1]) continue;
+        if (outfile_open(&probe, outs[i][1], perr, sizeof perr) != 0) {
+            fprintf(stderr, "mmsim: %s: %s\n", outs[i][0], perr);
             return EXIT_BAD_INPUT;
         }
         outfile_abort(&probe);

@@ -11,11 +11,16 @@ static sim_t *sim;
 static uint64_t sim_time_us;
 static FILE *log_out;
 static int32_t encoder_zero[2];
+static maze_t belief;        /* copy of the last hal_belief map */
+static uint16_t belief_cell;
+static uint8_t belief_heading, belief_state;
+static int belief_valid;
 
 void hal_sim_attach(struct sim_s *s)
 {
     sim = s;
     encoder_zero[0] = encoder_zero[1] = 0;
+    belief_valid = 0;
 }
 void hal_sim_set_time_us(uint64_t t_us) { sim_time_us = t_us; }
 void hal_sim_set_log(FILE *out) { log_out = out; }
@@ -62,5 +67,21 @@ void hal_log(const char *line)
 
 void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_t state)
 {
-    (void)map; (void)cell; (void)heading; (void)state; /* telemetry comes with the LCM issue */
+    /* kept for the viewer's overlay; telemetry comes with the LCM issue */
+    if (!map) return;
+    belief = *map;
+    belief_cell = cell;
+    belief_heading = heading;
+    belief_state = state;
+    belief_valid = 1;
+}
+
+int hal_sim_belief(const struct maze_s **map, uint16_t *cell, uint8_t *heading, uint8_t *state)
+{
+    if (!belief_valid) return 0;
+    if (map) *map = &belief;
+    if (cell) *cell = belief_cell;
+    if (heading) *heading = belief_heading;
+    if (state) *state = belief_state;
+    return 1;
 }

@@ -16,4 +16,8 @@ void hal_sim_set_time_us(uint64_t t_us);
 /* Where hal_log lines go: a stream (NULL = dropped, the default). */
 void hal_sim_set_log(FILE *out);
 
+/* The mouse's last hal_belief report (a copy): returns 1 and fills the
+ * non-NULL outputs, or 0 if none since the last attach. */
+int hal_sim_belief(const struct maze_s **map, uint16_t *cell, uint8_t *heading, uint8_t *state);
+
 #endif
