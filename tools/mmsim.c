@@ -430,8 +430,9 @@ int main(int argc, char **argv)
             if (num("--at", optarg, 0, 86400, &o.shot_at_s)) return EXIT_BAD_INPUT;
             break;
         case 'C':
-            if (num("--camera", optarg, 1, 3, &v) || v != floor(v)) return bad("--camera: expected 1, 2 or 3, got '%s'", optarg);
-            o.view.camera = (int)v;
+            if (strlen(optarg) != 1 || optarg[0] < '1' || optarg[0] > '3')
+                return bad("--camera: expected 1, 2 or 3, got '%s'", optarg);
+            o.view.camera = optarg[0] - '0';
             break;
         case 'X':
             if (num("--speed", optarg, 1, VIEW_SPEED_MAX, &o.view.speed)) return EXIT_BAD_INPUT;
@@ -446,7 +447,8 @@ int main(int argc, char **argv)
         }
         case 'T': o.view.port = optarg; break;
         case 'B':
-            if (num("--baud", optarg, 1, 4000000, &v) || v != floor(v)) return bad("--baud: expected a whole number, got '%s'", optarg);
+            if (num("--baud", optarg, 1, 4000000, &v)) return EXIT_BAD_INPUT;
+            if (v != floor(v)) return bad("--baud: expected a whole number, got '%s'", optarg);
             o.view.baud = (long)v;
             break;
         case 'j': o.json = 1; break;

@@ -1,0 +1,143 @@
+/* test_view.c - the viewer's UI actions without a window: the "Toggle
+ * post" button adds and removes the centre post in the physics world (a
+ * ray across the centre hits it or not), camera keys and buttons, speed
+ * limits, pause and single step; the HUD timers turn over-time after the
+ * limit. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <math.h>
+
+#include "config.h"
+#include "hud.h"
+#include "sim.h"
+#include "view.h"
+
+static maze_t maze;
+static sim_t sim;
+static view_t *view;
+static const view_opts_t opts = { 800, 600, 1, 1, "", 115200 };
+
+static int setup(void **state)
+{
+    (void)state;
+    simcfg_t c;
+    config_defaults(&c);
+    maze_init(&maze, 4, 4); /* even size: a post at the centre (2, 2) */
+    maze_close_unknown(&maze);
+    for (uint16_t k = 0; k < 16; k++) /* open every inner wall so only posts stand */
+        for (uint8_t d = 0; d < 4; d++) maze_set_wall(&maze, (maze_cell_t)k, d, MAZE_WALL_OPEN);
+    if (sim_init(&sim, &c, &maze, 1) != 0) return -1;
+    view = view_new(&opts);
+    return view ? 0 : -1;
+}
+
+static int teardown(void **state)
+{
+    (void)state;
+    view_free(view);
+    sim_free(&sim);
+    return 0;
+}
+
+/* A diagonal ray from the centre of cell (1,1) to the north-east: meets
+ * the centre post (at (2,2) cells) corner first, or runs on to the post at
+ * (3,3). */
+static double ray_across_centre(void)
+{
+    double cell = sim.cfg.cell_m;
+    return world_ray(sim.world, 1.5 * cell, 1.5 * cell, 0.02, M_PI / 4, 1.0);
+}
+
+static void click_button(int b)
+{
+    hud_button_t bt[HUD_BTN_COUNT];
+    hud_layout(opts.width, opts.height, bt);
+    assert_int_equal(view_click(view, &sim, bt[b].x + bt[b].w / 2.0, bt[b].y + bt[b].h / 2.0), b);
+}
+
+static void test_toggle_post_button(void **state)
+{
+    (void)state;
+    double cell = sim.cfg.cell_m, half = sim.cfg.post_m / 2;
+    assert_true(world_has_centre_post(sim.world));
+    assert_true(fabs(ray_across_centre() - M_SQRT2 * (0.5 * cell - half)) < 0.001);
+    click_button(HUD_BTN_POST);
+    assert_false(world_has_centre_post(sim.world));
+    assert_true(fabs(ray_across_centre() - M_SQRT2 * (1.5 * cell - half)) < 0.001); /* the next post */
+    view_key(view, &sim, GLFW_KEY_P);
+    assert_true(world_has_centre_post(sim.world));
+    assert_true(fabs(ray_across_centre() - M_SQRT2 * (0.5 * cell - half)) < 0.001);
+    /* a click on no button does nothing */
+    assert_int_equal(view_click(view, &sim, opts.width / 2.0, opts.height / 2.0), -1);
+    assert_true(world_has_centre_post(sim.world));
+}
+
+static void test_cameras(void **state)
+{
+    (void)state;
+    assert_int_equal(view_camera(view), 1);
+    view_key(view, &sim, GLFW_KEY_2);
+    assert_int_equal(view_camera(view), 2);
+    view_key(view, &sim, GLFW_KEY_3);
+    assert_int_equal(view_camera(view), 3);
+    click_button(HUD_BTN_BIRD);
+    assert_int_equal(view_camera(view), 1);
+    click_button(HUD_BTN_FOLLOW);
+    assert_int_equal(view_camera(view), 2);
+    int on = view_overlay(view);
+    click_button(HUD_BTN_OVERLAY);
+    assert_int_equal(view_overlay(view), !on);
+}
+
+static void test_speed_pause_step(void **state)
+{
+    (void)state;
+    for (int i = 0; i < 10; i++) view_key(view, &sim, GLFW_KEY_EQUAL);
+    assert_true(view_speed(view) == VIEW_SPEED_MAX);
+    click_button(HUD_BTN_SLOWER);
+    assert_true(view_speed(view) == VIEW_SPEED_MAX / 2);
+    for (int i = 0; i < 10; i++) view_key(view, &sim, GLFW_KEY_MINUS);
+    assert_true(view_speed(view) == 1);
+    assert_false(view_paused(view));
+    view_key(view, &sim, GLFW_KEY_SPACE);
+    assert_true(view_paused(view));
+    click_button(HUD_BTN_PAUSE);
+    assert_false(view_paused(view));
+    click_button(HUD_BTN_STEP); /* a step pauses */
+    assert_true(view_paused(view));
+    /* without a window, view_step never blocks */
+    assert_int_equal(view_step(view, &sim), 0);
+}
+
+static void test_hud_timers(void **state)
+{
+    (void)state;
+    char g[16], l[16];
+    int over;
+    hud_timers(&sim, g, l, &over);
+    assert_string_equal(g, "0:00.000");
+    assert_false(over);
+    sim.race.started = 1;
+    sim.race.global_start_s = 0;
+    sim.step = (uint64_t)llround((sim.race.limit_s + 1.5) / sim.cfg.step_s);
+    hud_timers(&sim, g, l, &over);
+    assert_true(over);
+    sim.step = 0;
+    sim.race.started = 0;
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_toggle_post_button),
+        cmocka_unit_test(test_cameras),
+        cmocka_unit_test(test_speed_pause_step),
+        cmocka_unit_test(test_hud_timers),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
