@@ -329,7 +329,7 @@ static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_t 
     c_text(c, bx + bw + 8, ty, C_TEXT, buf);
 }
 
-static int layout_make(layout_t *L, const report_t *r, const sim_t *s)
+static int layout_make(layout_t *L, const report_t *r, const sim_t *s, const char *title)
 {
     const maze_t *m = r->maze;
     int side = m->width > m->height ? m->width : m->height;
@@ -357,6 +357,7 @@ static int layout_make(layout_t *L, const report_t *r, const sim_t *s)
     int mw = (int)(m->width * L->cp), mh = (int)(m->height * L->cp);
     int text_w = widest * FONT_ADVANCE * TEXT_SCALE;
     if (text_w < 62 * FONT_ADVANCE * TEXT_SCALE) text_w = 62 * FONT_ADVANCE * TEXT_SCALE; /* totals line */
+    if (text_w < font_text_width(title, TEXT_SCALE)) text_w = font_text_width(title, TEXT_SCALE);
     L->w = (mw > text_w ? mw : text_w) + 2 * MARGIN_PX;
     L->ox = (L->w - mw) / 2;
     L->oy = MARGIN_PX + mh;
@@ -402,7 +403,7 @@ int report_write(const report_t *r, const sim_t *s, const maze_t *learned, const
     char svg_path[4096], json_path[4096];
     report_sibling(png_path, ".svg", svg_path, sizeof svg_path);
     report_sibling(png_path, ".json", json_path, sizeof json_path);
-    if (layout_make(&L, r, s) != 0) {
+    if (layout_make(&L, r, s, title) != 0) {
         snprintf(err, errlen, "%s: out of memory", png_path);
         return -1;
     }
