@@ -33,6 +33,12 @@ rc=$?; [ $rc -eq 0 ] && ok "firmware run with report" || { bad "firmware run: ex
 learned=$($P "$T/fw" near:202020:0)
 [ "${learned:-0}" -gt 1000 ] && ok "learned walls drawn" || bad "learned wall pixels: $learned"
 
+# recording changes nothing in the run
+"$S" --maze mazes/gen-5x5-s1.txt --driver firmware --json >"$T/a" 2>/dev/null
+"$S" --maze mazes/gen-5x5-s1.txt --driver firmware --json --report "$T/again.png" >"$T/b" 2>/dev/null
+strip() { python3 -c "import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1]); d.pop('wall_time_s'); d.pop('real_time_factor'); print(json.dumps(d, sort_keys=True))" "$1"; }
+[ "$(strip "$T/a")" = "$(strip "$T/b")" ] && ok "same run with and without --report" || bad "report changed the run"
+
 # errors: one line, exit 2, before running; nothing written
 "$S" --maze mazes/gen-5x5-s1.txt --report "$T/no/such/dir/x.png" >"$T/out" 2>"$T/err"; rc=$?
 [ $rc -eq 2 ] && [ "$(wc -l <"$T/err")" -eq 1 ] && grep -q "^mmsim: --report: $T/no/such/dir/x.png: cannot write" "$T/err" \
