@@ -10,14 +10,14 @@ DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev l
 CC      ?= gcc
 STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
 WARN    := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wno-unused-parameter
-INC      = -Ifirmware -Ihal -Ihal/sim -Isim $(shell pkg-config --cflags glib-2.0 ode 2>/dev/null)
+INC      = -Ifirmware -Ihal -Ihal/sim -Ihal/wire -Isim $(shell pkg-config --cflags glib-2.0 ode 2>/dev/null)
 CFLAGS  ?= -O2 -g
 SAN     := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 LIBS     = -ljansson -linih $(shell pkg-config --libs glib-2.0 ode 2>/dev/null) -lm
 B       := build
 
 FW_SRC   := $(wildcard firmware/*.c)
-HOST_SRC := $(wildcard sim/*.c) hal/sim/hal_sim.c
+HOST_SRC := $(wildcard sim/*.c) hal/sim/hal_sim.c hal/wire/wire.c
 LIB_SRC  := $(FW_SRC) $(HOST_SRC)
 TOOLS    := mmmaze mmsim
 TEST_SRC := $(wildcard test/test_*.c)
@@ -27,6 +27,8 @@ TESTS    := $(patsubst test/%.c,$(B)/test/%,$(TEST_SRC))
 WRAP_test_explore := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros
 WRAP_test_firmware := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros -Wl,--wrap=hal_motor_set \
 	-Wl,--wrap=hal_encoder -Wl,--wrap=hal_distance
+# Extra sources a test links (shared test vectors).
+EXTRA_test_wire := test/wire_vectors.c
 
 .PHONY: all deps test sim bench fuzz firmware firmware-size mazes clean tools
 all: tools
@@ -57,14 +59,14 @@ $(B)/san/%.o: %.c | deps
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) -MMD -MP -c $< -o $@
 $(B)/libmm_san.a: $(patsubst %.c,$(B)/san/%.o,$(LIB_SRC))
 	@rm -f $@; ar rcs $@ $^
-$(B)/test/%: test/%.c $(B)/libmm_san.a
+$(B)/test/%: test/%.c $(B)/libmm_san.a test/wire_vectors.c
 	@mkdir -p $(dir $@)
-	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(WRAP_$*) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(EXTRA_$*) $(WRAP_$*) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
 $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
 
-test: deps $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) firmware-size
+test: deps $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) firmware-size $(B)/avr/wire_selftest.elf
 	@MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
 # ---- AVR build of the firmware (ATmega328P) ----
@@ -77,6 +79,11 @@ firmware-size: | deps
 	avr-size $(B)/avr/firmware.elf
 	@avr-nm -S --size-sort $(B)/avr/firmware.elf | grep -i ' [bd] ' | tail -8
 firmware: firmware-size
+# The wire codec's shared vectors on the AVR (Mega 2560: they need 2 KB RAM), run in simavr by a CLI test.
+$(B)/avr/wire_selftest.elf: test/avr_wire.c test/wire_vectors.c hal/wire/wire.c hal/wire/wire.h | deps
+	@mkdir -p $(dir $@)
+	$(AVR_CC) -mmcu=atmega2560 -DF_CPU=16000000L -Os -std=c99 -Wall -Wextra -ffunction-sections -fdata-sections \
+	  -Ihal/wire -Itest -Wl,--gc-sections test/avr_wire.c test/wire_vectors.c hal/wire/wire.c -o $@
 
 # ---- simulation: the physics with the scripted driver until the firmware's
 # motion layer lands, then the grid-mode exploration of the firmware ----
