@@ -18,4 +18,54 @@ else
   echo "SKIP cli_hil AVR vectors: simavr or $B/avr/wire_selftest.elf missing"
 fi
 
+# flag and device errors: 2 for bad flags, 3 for a device that fails
+want_rc() { local want=$1 desc=$2; shift 2
+  "$@" >"$T/out" 2>"$T/err"; local rc=$?
+  if [ $rc -eq "$want" ]; then ok "$desc"; else bad "$desc: exit $rc, want $want"; head -3 "$T/err"; fi
+  [ "$(wc -l <"$T/err")" -le 1 ] || bad "$desc: more than one error line: $(cat "$T/err")"; }
+M=mazes/gen-5x5-s1.txt
+want_rc 2 "bad baud" "$S" --maze $M --pty --baud 9
+want_rc 2 "baud too high" "$S" --maze $M --pty --baud 12000001
+want_rc 2 "fractional baud" "$S" --maze $M --pty --baud 115200.5
+want_rc 2 "bad protocol" "$S" --maze $M --pty --protocol morse
+grep -q "^mmsim: --protocol: expected framed or compat, got 'morse'" "$T/err" && ok "protocol error line" || bad "protocol error line: $(cat "$T/err")"
+want_rc 2 "serial and pty" "$S" --maze $M --pty --serial /dev/null
+want_rc 2 "baud without a link" "$S" --maze $M --baud 115200
+want_rc 2 "bad silence" "$S" --maze $M --pty --silence-ms 0
+want_rc 2 "serial with batch" "$S" --batch mazes --serial /dev/null
+want_rc 3 "missing device" "$S" --maze $M --serial "$T/no-such-tty"
+grep -q "no-such-tty: cannot open: No such file or directory" "$T/err" && ok "device error line" || bad "device error line: $(cat "$T/err")"
+want_rc 3 "not a terminal" "$S" --maze $M --serial /dev/null
+grep -q "^mmsim: /dev/null: not a serial device" "$T/err" && ok "not-a-tty error line" || bad "not-a-tty line: $(cat "$T/err")"
+want_rc 2 "bad maze with a link" "$S" --maze "$T/none.txt" --pty
+
+# mmsim --pty with hil_mcu.py as the MCU: sensors out, motors in, silence,
+# unplug and replug; in real time, 4 s each
+hil() { local proto=$1
+  "$S" --maze $M --pty --protocol "$proto" --time-limit 4 --json >"$T/$proto.json" 2>"$T/$proto.err" &
+  SIMPID=$!
+  local p="" i
+  for i in $(seq 100); do p=$(sed -n 's/^mmsim: pty //p' "$T/$proto.err" 2>/dev/null); [ -n "$p" ] && break; sleep 0.05; done
+  if [ -z "$p" ]; then
+    wait $SIMPID; SIMPID=
+    if grep -q "cannot create a pseudo-terminal" "$T/$proto.err"; then echo "SKIP cli_hil $proto: no pseudo-terminals here"; return; fi
+    bad "$proto: no pty path: $(cat "$T/$proto.err")"; return
+  fi
+  python3 test/hil_mcu.py "$proto" "$p" 2.5 >"$T/$proto.mcu" 2>&1 && ok "$proto: MCU got sensors: $(cat "$T/$proto.mcu")" \
+    || bad "$proto: MCU side: $(cat "$T/$proto.mcu")"
+  wait $SIMPID; local rc=$?; SIMPID=
+  [ $rc -eq 1 ] && ok "$proto: exit 1 (goal not reached)" || bad "$proto: mmsim exit $rc: $(cat "$T/$proto.err")"
+  local got
+  got=$(python3 -c "
+import json,sys; d=json.load(open(sys.argv[1])); l=d['link']; e=l['decoder']
+print(d['driver'], l['protocol'], l['connects'] >= 2, l['disconnects'] >= 1, l['silences'] >= 1,
+      sum(e[k] for k in ('crc','cobs','overflow','unknown','length','value')), l['mcu_log_lines'] >= 1,
+      d['final_pose']['y_m'] > 0.09 + 0.03, l['tx_dropped'], l['handshake'])" "$T/$proto.json" 2>&1)
+  [ "$got" = "serial $proto True True True 0 True True 0 True" ] && ok "$proto: link report" || bad "$proto: link report: $got $(cat "$T/$proto.json")"
+  grep -q "MCU silent: motors off" "$T/$proto.err" && grep -q "disconnected, motors off" "$T/$proto.err" \
+    && grep -q "^mcu: hello from the test MCU" "$T/$proto.err" && ok "$proto: states reported" || bad "$proto: states: $(cat "$T/$proto.err")"
+}
+if command -v python3 >/dev/null; then hil compat; hil framed; else echo "SKIP cli_hil pty: python3 missing"; fi
+grep -q "hello from the MCU: protocol 1, ToF range 1200 mm" "$T/framed.err" && ok "framed handshake reported" || bad "framed handshake: $(cat "$T/framed.err")"
+
 [ $fails -eq 0 ] || exit 1

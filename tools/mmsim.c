@@ -19,6 +19,8 @@
 #include "driver.h"
 #include "hal.h"
 #include "hal_sim.h"
+#include "link.h"
+#include "serial.h"
 #include "mouse.h"
 #include "solve.h"
 #include "mazedir.h"
@@ -38,6 +40,8 @@ typedef struct {
     int scripted;       /* --driver scripted */
     int verbose;        /* --verbose: firmware log lines on stderr */
     int jobs;
+    int serial;         /* --serial / --pty: the MCU drives over a serial link */
+    link_opts_t link;
 } opts_t;
 
 static double wall_now(void)
@@ -87,7 +91,18 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         fprintf(stderr, "%s: cannot set up the ODE world\n", maze_path);
         return EXIT_EXTERNAL;
     }
-    if (o->scripted) {
+    static link_t lnk;
+    if (o->serial) {
+        char lerr[400];
+        drv.done = 0;
+        drv.reachable = 1;
+        if (link_open(&lnk, &o->link, cfg.step_s, (uint16_t)lround(cfg.tof_range_m * 1000.0),
+                      (uint32_t)lround(cfg.encoder_ppr * cfg.gear_ratio * 100.0), stderr, lerr, sizeof lerr) != 0) {
+            fprintf(stderr, "mmsim: %s\n", lerr);
+            sim_free(&sim);
+            return EXIT_EXTERNAL;
+        }
+    } else if (o->scripted) {
         driver_init(&drv, &maze, &cfg, o->runs);
     } else {
         drv.done = 0;
@@ -104,7 +119,14 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     double hard_stop_s = cfg.time_limit_s + 60.0; /* a lap under way may finish over time, flagged */
     if (!drv.reachable) reason = "unreachable";
     while (!drv.done) {
-        if (o->scripted) {
+        if (o->serial) { /* HIL: the contest lasts the time limit */
+            sim_step(&sim);
+            link_step(&lnk, &sim);
+            if (sim_time_s(&sim) >= cfg.time_limit_s) {
+                reason = "time_limit";
+                break;
+            }
+        } else if (o->scripted) {
             driver_update(&drv, &sim);
             sim_step(&sim);
         } else {
@@ -131,7 +153,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
             reason = "time_limit";
             break;
         }
-        if (sim.step % 100 == 0) {
+        if (sim.step % 100 == 0 && !o->serial) { /* a HIL robot may wait for its MCU */
             world_pose(sim.world, &x, &y, &h);
             if (hypot(x - last_x, y - last_y) > 0.01) {
                 last_x = x;
@@ -173,8 +195,11 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
                                                         round(y * 1e6) / 1e6, "heading_rad", round(h * 1e6) / 1e6));
     json_object_set_new(o_json, "exit_reason", json_string(reason));
     json_object_set_new(o_json, "config_hash", json_string(hash));
-    json_object_set_new(o_json, "driver", json_string(o->scripted ? "scripted" : "firmware"));
-    if (!o->scripted) {
+    json_object_set_new(o_json, "driver", json_string(o->serial ? "serial" : o->scripted ? "scripted" : "firmware"));
+    if (o->serial) {
+        json_object_set_new(o_json, "link", link_json(&lnk));
+        link_close(&lnk);
+    } else if (!o->scripted) {
         /* the path the mouse would run: best through known-open walls */
         static solve_path_t truth, known;
         int ok_truth = solve_best(&maze, 0, &truth) == 0, ok_known = solve_best(mouse_map(), 0, &known) == 0;
@@ -186,7 +211,16 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     }
 
     if (print_text) {
-        if (o->scripted)
+        if (o->serial)
+            printf("%s: %ux%u, seed %llu, MCU over %s (%s, %u baud): sent %llu B (%.0f %%), received %llu B (%.0f %%), "
+                   "dropped %llu messages, %u decode errors, %u silences, %u disconnects\n",
+                   maze_path, maze.width, maze.height, (unsigned long long)o->seed, lnk.path,
+                   o->link.protocol == LINK_COMPAT ? "compat" : "framed", (unsigned)lnk.o.baud,
+                   (unsigned long long)lnk.st.tx_bytes, link_util_tx(&lnk) * 100, (unsigned long long)lnk.st.rx_bytes,
+                   link_util_rx(&lnk) * 100, (unsigned long long)lnk.st.tx_dropped,
+                   (unsigned)wire_stats_errors(o->link.protocol == LINK_COMPAT ? &lnk.crx.stats : &lnk.dec.stats),
+                   (unsigned)lnk.st.silences, (unsigned)lnk.st.disconnects);
+        else if (o->scripted)
             printf("%s: %ux%u, seed %llu, scripted driver, %d run%s\n", maze_path, maze.width, maze.height,
                    (unsigned long long)o->seed, o->runs, o->runs == 1 ? "" : "s");
         else
@@ -283,6 +317,9 @@ static void usage(FILE *out)
     fputs("usage: mmsim --maze FILE [--config FILE] [--seed N] [--time-limit S] [--runs N]\n"
           "             [--centre-post on|off] [--profile default|paper] [--driver firmware|scripted]\n"
           "             [--json] [--realtime] [--verbose]\n"
+          "       mmsim --maze FILE --serial DEV|--pty [--baud N] [--protocol framed|compat] [--silence-ms N]\n"
+          "             (hardware in the loop: an MCU drives over a serial link, in real time;\n"
+          "              --pty creates a pseudo-terminal and prints its path; docs/PROTOCOL.md)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
           "       mmsim --print-config [--config FILE]\n"
           "Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure.\n",
@@ -321,12 +358,15 @@ int main(int argc, char **argv)
         { "jobs", required_argument, 0, 'J' },   { "help", no_argument, 0, 'h' },
         { "profile", required_argument, 0, 'F' }, { "driver", required_argument, 0, 'D' },
         { "verbose", no_argument, 0, 'v' },
+        { "serial", required_argument, 0, 'S' }, { "pty", no_argument, 0, 'Y' },
+        { "baud", required_argument, 0, 'B' },   { "protocol", required_argument, 0, 'R' },
+        { "silence-ms", required_argument, 0, 'Q' },
         { 0, 0, 0, 0 },
     };
-    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1 }; /* scripted by default until the firmware passes issue 4 */
+    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, 0, { NULL, 0, 0, LINK_FRAMED, 0 } }; /* scripted by default until the firmware passes issue 4 */
     const char *maze = NULL, *batch = NULL;
     double v;
-    int c;
+    int c, link_flags = 0;
     opterr = 0;
     while ((c = getopt_long(argc, argv, "", opts, NULL)) != -1) {
         switch (c) {
@@ -363,6 +403,23 @@ int main(int argc, char **argv)
             o.scripted = !strcmp(optarg, "scripted");
             break;
         case 'v': o.verbose = 1; break;
+        case 'S': o.link.device = optarg; break;
+        case 'Y': o.link.pty = 1; break;
+        case 'B':
+            if (num("--baud", optarg, 50, SERIAL_BAUD_MAX, &v)) return EXIT_BAD_INPUT;
+            if (v != floor(v)) return bad("--baud: expected a whole number of bits/s, got '%s'", optarg);
+            o.link.baud = (uint32_t)v;
+            link_flags++;
+            break;
+        case 'R':
+            if ((o.link.protocol = link_parse_protocol(optarg)) < 0) return bad("--protocol: expected framed or compat, got '%s'", optarg);
+            link_flags++;
+            break;
+        case 'Q':
+            if (num("--silence-ms", optarg, 1, 60000, &v)) return EXIT_BAD_INPUT;
+            o.link.silence_s = v / 1000.0;
+            link_flags++;
+            break;
         case 'j': o.json = 1; break;
         case 'r': o.realtime = 1; break;
         case 'P': o.print_config = 1; break;
@@ -372,6 +429,12 @@ int main(int argc, char **argv)
         }
     }
     if (optind != argc) return bad("unexpected argument '%s'", argv[optind]);
+    o.serial = o.link.device || o.link.pty;
+    if (o.link.device && o.link.pty) return bad("%s", "--serial and --pty exclude each other");
+    if (!o.serial && link_flags)
+        return bad("%s", "--baud, --protocol and --silence-ms need --serial DEV or --pty");
+    if (o.serial && batch) return bad("%s", "--serial/--pty run one maze, not --batch");
+    if (o.serial) o.realtime = 1; /* a real MCU runs in real time */
     if (o.print_config) {
         simcfg_t cfg;
         if (load_config(&o, &cfg) != 0) return EXIT_BAD_INPUT;
