@@ -30,7 +30,7 @@ WRAP_test_firmware := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros -Wl,--wrap=hal_mo
 # Extra sources a test links (shared test vectors).
 EXTRA_test_wire := test/wire_vectors.c
 
-.PHONY: all deps test sim bench fuzz firmware firmware-size mazes clean tools
+.PHONY: all deps test sim bench fuzz firmware firmware-size arduino mazes clean tools
 all: tools
 
 deps:
@@ -78,12 +78,60 @@ firmware-size: | deps
 	$(AVR_CC) $(AVR_FLAGS) -Wl,--gc-sections $(FW_SRC) test/avr_main.c -o $(B)/avr/firmware.elf
 	avr-size $(B)/avr/firmware.elf
 	@avr-nm -S --size-sort $(B)/avr/firmware.elf | grep -i ' [bd] ' | tail -8
-firmware: firmware-size
+firmware: firmware-size arduino
 # The wire codec's shared vectors on the AVR (Mega 2560: they need 2 KB RAM), run in simavr by a CLI test.
 $(B)/avr/wire_selftest.elf: test/avr_wire.c test/wire_vectors.c hal/wire/wire.c hal/wire/wire.h | deps
 	@mkdir -p $(dir $@)
 	$(AVR_CC) -mmcu=atmega2560 -DF_CPU=16000000L -Os -std=c99 -Wall -Wextra -ffunction-sections -fdata-sections \
 	  -Ihal/wire -Itest -Wl,--gc-sections test/avr_wire.c test/wire_vectors.c hal/wire/wire.c -o $@
+
+# ---- Arduino builds: hal/arduino + firmware/ + Debian's arduino-core-avr, for the
+# Uno (ATmega328P) and the Mega 2560, every example sketch; flags as the core's
+# platform.txt/boards.txt. `make arduino` (part of `make firmware`) prints avr-size.
+ARD_DIR      := /usr/share/arduino/hardware/arduino/avr
+ARD_CORE     := $(ARD_DIR)/cores/arduino
+ARD_BOARDS   := uno mega2560
+ARD_EXAMPLES := Mouse DriveToWall
+ARD_COMMON   := -DF_CPU=16000000L -DARDUINO=10819 -DARDUINO_ARCH_AVR -Os -ffunction-sections -fdata-sections \
+	-DMAZE_MAX_SIZE=16 -I$(ARD_CORE) -Ihal -Ihal/wire -Ihal/arduino/src -Ifirmware
+ARD_CXX      := -std=gnu++11 -fno-exceptions -fno-threadsafe-statics -fpermissive -DDECIMAL_DIG=__DECIMAL_DIG__
+ARD_uno      := -mmcu=atmega328p -DARDUINO_AVR_UNO -I$(ARD_DIR)/variants/standard
+ARD_mega2560 := -mmcu=atmega2560 -DARDUINO_AVR_MEGA2560 -I$(ARD_DIR)/variants/mega
+ARD_LIB_SRC  := $(wildcard hal/arduino/src/*.cpp) hal/wire/wire.c $(FW_SRC)
+ARD_CORE_SRC := $(wildcard $(ARD_CORE)/*.c $(ARD_CORE)/*.cpp) $(ARD_CORE)/wiring_pulse.S
+ARD_HDRS     := $(wildcard hal/arduino/src/*.h firmware/*.h) hal/hal.h hal/wire/wire.h
+
+define ARD_BOARD_RULES
+$(B)/arduino/$(1)/core/%.c.o: $(ARD_CORE)/%.c | deps
+	@mkdir -p $$(dir $$@)
+	@avr-gcc $(ARD_$(1)) $(ARD_COMMON) -std=gnu11 -c $$< -o $$@
+$(B)/arduino/$(1)/core/%.cpp.o: $(ARD_CORE)/%.cpp | deps
+	@mkdir -p $$(dir $$@)
+	@avr-g++ $(ARD_$(1)) $(ARD_COMMON) $(ARD_CXX) -c $$< -o $$@
+$(B)/arduino/$(1)/core/%.S.o: $(ARD_CORE)/%.S | deps
+	@mkdir -p $$(dir $$@)
+	@avr-gcc $(ARD_$(1)) $(ARD_COMMON) -x assembler-with-cpp -c $$< -o $$@
+$(B)/arduino/$(1)/core.a: $(patsubst $(ARD_CORE)/%,$(B)/arduino/$(1)/core/%.o,$(ARD_CORE_SRC))
+	@rm -f $$@; avr-gcc-ar rcs $$@ $$^
+$(B)/arduino/$(1)/lib/%.c.o: %.c $(ARD_HDRS) | deps
+	@mkdir -p $$(dir $$@)
+	avr-gcc $(ARD_$(1)) $(ARD_COMMON) -std=c99 -Wall -Wextra -c $$< -o $$@
+$(B)/arduino/$(1)/lib/%.cpp.o: %.cpp $(ARD_HDRS) | deps
+	@mkdir -p $$(dir $$@)
+	avr-g++ $(ARD_$(1)) $(ARD_COMMON) $(ARD_CXX) -Wall -Wextra -c $$< -o $$@
+$(B)/arduino/$(1)/libmicromouse.a: $(patsubst %,$(B)/arduino/$(1)/lib/%.o,$(ARD_LIB_SRC))
+	@rm -f $$@; avr-gcc-ar rcs $$@ $$^
+$(foreach e,$(ARD_EXAMPLES),
+$(B)/arduino/$(1)/$(e).elf: hal/arduino/examples/$(e)/$(e).ino $(B)/arduino/$(1)/libmicromouse.a $(B)/arduino/$(1)/core.a $(ARD_HDRS)
+	avr-g++ $(ARD_$(1)) $(ARD_COMMON) $(ARD_CXX) -Wall -x c++ -include Arduino.h -c $$< -o $$@.o
+	avr-gcc $(ARD_$(1)) -Os -Wl,--gc-sections $$@.o $(B)/arduino/$(1)/libmicromouse.a $(B)/arduino/$(1)/core.a -lm -o $$@
+	avr-objcopy -O ihex -R .eeprom $$@ $$(@:.elf=.hex)
+)
+endef
+$(foreach b,$(ARD_BOARDS),$(eval $(call ARD_BOARD_RULES,$(b))))
+ARD_ELFS := $(foreach b,$(ARD_BOARDS),$(foreach e,$(ARD_EXAMPLES),$(B)/arduino/$(b)/$(e).elf))
+arduino: $(ARD_ELFS)
+	@avr-size $(ARD_ELFS)
 
 # ---- simulation: the physics with the scripted driver until the firmware's
 # motion layer lands, then the grid-mode exploration of the firmware ----

@@ -29,8 +29,18 @@
 
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define HAL_LOG_MAX 80   /* bytes per log line, without the NUL */
-#define HAL_TICK_HZ 1000 /* default control tick; the backend may be configured otherwise */
+#ifndef HAL_TICK_HZ /* control tick, Hz; a build may set it (-DHAL_TICK_HZ=...) */
+#ifdef __AVR__
+#define HAL_TICK_HZ 500  /* the float control tick takes 0.98 ms at 16 MHz: 1 kHz leaves no time */
+#else
+#define HAL_TICK_HZ 1000
+#endif
+#endif
 
 enum { HAL_LEFT = 0, HAL_RIGHT = 1 };
 enum { HAL_TOF_LEFT = 0, HAL_TOF_FRONT = 1, HAL_TOF_RIGHT = 2, HAL_TOF_COUNT = 3 };
@@ -54,5 +64,9 @@ void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_
 void fw_setup(void);
 void fw_tick(void);
 void fw_loop(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

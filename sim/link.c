@@ -43,6 +43,7 @@ static void on_connect(link_t *l)
     l->ctx.enc_sent[0] = l->ctx.enc_sent[1] = INT32_MIN; /* set from the first reading sent */
     l->motor[0] = l->motor[1] = 0;
     l->running = 1;
+    l->sensors_on = l->o.protocol != LINK_COMPAT; /* compat: nothing until requestEnableSensors, as in the paper */
     l->hello_ok = l->o.protocol == LINK_COMPAT; /* compat has no handshake */
     l->silent = 0;
     l->last_rx_step = l->step;
@@ -233,6 +234,7 @@ int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2])
         enqueue(l, &m);
         l->next_hello_step = l->step + steps_of(l, LINK_RETRY_S);
     }
+    if (l->o.protocol == LINK_COMPAT && !l->sensors_on) goto move; /* the paper's sim sends nothing */
     memset(&m, 0, sizeof m);
     m.type = WIRE_ENCODER;
     m.u.encoder.t_us = in->t_us;
@@ -250,7 +252,7 @@ int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2])
         enqueue(l, &m);
     }
 
-    /* sim -> MCU: at most the credit's whole bytes */
+move: /* sim -> MCU: at most the credit's whole bytes */
     while (l->q_len > 0 && l->credit_tx >= BYTE_COST) {
         size_t n = l->q_cap - l->q_head;
         if (n > l->q_len) n = l->q_len;

@@ -80,6 +80,10 @@ static void test_compat_budget(void **state)
     size_t total = 0, most = 0;
     int16_t mo[2];
     open_pair(LINK_COMPAT, 115200, 10.0);
+    step(0, mo);
+    assert_int_equal(drain(buf, sizeof buf), 0); /* compat: nothing before requestEnableSensors */
+    static const uint8_t enable[] = { 7, 2 };
+    assert_int_equal(write(peer, enable, 2), 2);
     for (int s = 0; s < 1000; s++) {
         step(s * 3, mo);
         size_t n = drain(buf, sizeof buf);
@@ -90,7 +94,7 @@ static void test_compat_budget(void **state)
     assert_true(most <= 12); /* 11.52 bytes per 1 ms step at 115200 */
     assert_int_equal(lk.st.tx_dropped, 0);
     assert_int_equal(lk.st.tx_bytes, total);
-    assert_true(total <= 11520 + 1);
+    assert_true(total <= 11520 + 12);
     /* 6 B encoders each step + 3 B per ToF reading: 6,300 B/s of 11,520 */
     double u = link_util_tx(&lk);
     assert_true(u > 0.5 && u < 0.6);
@@ -107,6 +111,14 @@ static void test_compat_budget(void **state)
         }
     assert_int_equal(wire_stats_errors(&rx.stats), 0);
     assert_true(last > 2800 && last <= 999 * 3); /* the queue lags by at most a few steps */
+    /* disabled: no sensor bytes at all */
+    static const uint8_t disable[] = { 7, 3 };
+    assert_int_equal(write(peer, disable, 2), 2);
+    step(0, mo);
+    step(0, mo);
+    drain(buf, sizeof buf);
+    for (int s = 0; s < 50; s++) step(0, mo);
+    assert_int_equal(drain(buf, sizeof buf), 0);
     assert_true(dist >= 95);
     close_pair();
 }

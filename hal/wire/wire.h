@@ -19,6 +19,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define WIRE_VERSION 1          /* protocol version carried in HELLO */
 #define WIRE_LOG_MAX 80         /* bytes of text in a LOG message (= HAL_LOG_MAX) */
 #define WIRE_RAW_MAX (1 + WIRE_LOG_MAX + 2)      /* type + longest payload + CRC, bytes */
@@ -152,5 +156,9 @@ void wire_compat_rx_init(wire_compat_rx_t *r, uint16_t range_mm);
  * 65535 = timeout), MOTOR (both sides' latest commands), SENSORS, RUN, LOG.
  * An unknown ID is counted and skipped (one byte). */
 int wire_compat_decode_byte(wire_compat_rx_t *r, uint8_t b, wire_msg_t *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
