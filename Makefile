@@ -66,7 +66,7 @@ $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
 
-test: deps $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) firmware-size $(B)/avr/wire_selftest.elf
+test: deps $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) firmware-size $(B)/avr/wire_selftest.elf arduino
 	@MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
 # ---- AVR build of the firmware (ATmega328P) ----
@@ -79,10 +79,10 @@ firmware-size: | deps
 	avr-size $(B)/avr/firmware.elf
 	@avr-nm -S --size-sort $(B)/avr/firmware.elf | grep -i ' [bd] ' | tail -8
 firmware: firmware-size arduino
-# The wire codec's shared vectors on the AVR (Mega 2560: they need 2 KB RAM), run in simavr by a CLI test.
+# The wire codec's shared vectors on the ATmega328P, run in simavr by test/cli_hil.sh.
 $(B)/avr/wire_selftest.elf: test/avr_wire.c test/wire_vectors.c hal/wire/wire.c hal/wire/wire.h | deps
 	@mkdir -p $(dir $@)
-	$(AVR_CC) -mmcu=atmega2560 -DF_CPU=16000000L -Os -std=c99 -Wall -Wextra -ffunction-sections -fdata-sections \
+	$(AVR_CC) -mmcu=atmega328p -DF_CPU=16000000L -Os -std=c99 -Wall -Wextra -ffunction-sections -fdata-sections \
 	  -Ihal/wire -Itest -Wl,--gc-sections test/avr_wire.c test/wire_vectors.c hal/wire/wire.c -o $@
 
 # ---- Arduino builds: hal/arduino + firmware/ + Debian's arduino-core-avr, for the

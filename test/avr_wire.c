@@ -1,6 +1,5 @@
-/* avr_wire.c - the wire codec's shared vectors checked on an AVR
- * (16-bit int, avr-gcc), built for the Mega 2560: the vectors take 2 KB of
- * RAM, the whole of a 328P. Run in simavr by test/cli_hil.sh. Prints one line
+/* avr_wire.c - the wire codec's shared vectors checked on the ATmega328P
+ * (16-bit int, avr-gcc). Run in simavr by test/cli_hil.sh. Prints one line
  * on UART0 and stops the CPU (simavr then exits). */
 #include <avr/io.h>
 #include <avr/interrupt.h>

@@ -12,7 +12,7 @@ bad() { echo "FAILED: $1"; fails=$((fails+1)); }
 
 # the codec on a 16-bit-int AVR: same vectors as the host test
 if command -v simavr >/dev/null && [ -f "$B/avr/wire_selftest.elf" ]; then
-  timeout 60 simavr -m atmega2560 -f 16000000 "$B/avr/wire_selftest.elf" >"$T/avr" 2>&1
+  timeout 60 simavr -m atmega328p -f 16000000 "$B/avr/wire_selftest.elf" >"$T/avr" 2>&1
   grep -q 'wire vectors: 0 failed' "$T/avr" && ok "AVR wire vectors" || bad "AVR wire vectors: $(cat -v "$T/avr")"
 else
   echo "SKIP cli_hil AVR vectors: simavr or $B/avr/wire_selftest.elf missing"

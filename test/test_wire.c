@@ -21,6 +21,9 @@ static uint32_t rnd(void) /* splitmix64, deterministic */
     return (uint32_t)((z ^ (z >> 31)) >> 16);
 }
 
+static char texts[3000][WIRE_LOG_MAX + 1]; /* log text behind random messages */
+static unsigned text_next;
+
 static void random_msg(wire_msg_t *m)
 {
     memset(m, 0, sizeof *m);
@@ -57,7 +60,9 @@ static void random_msg(wire_msg_t *m)
     default:
         m->type = WIRE_LOG;
         m->u.log.len = (uint8_t)(rnd() % (WIRE_LOG_MAX + 1));
-        for (uint8_t i = 0; i < m->u.log.len; i++) m->u.log.text[i] = (char)(1 + rnd() % 255);
+        char *t = texts[text_next++ % 3000];
+        for (uint8_t i = 0; i < m->u.log.len; i++) t[i] = (char)(1 + rnd() % 255);
+        m->u.log.text = t;
         break;
     }
 }
@@ -67,7 +72,7 @@ static void assert_same(const wire_msg_t *a, const wire_msg_t *b)
     wire_msg_t x = *a, y = *b; /* compare the used bytes only */
     if (x.type == WIRE_LOG) {
         assert_int_equal(x.u.log.len, y.u.log.len);
-        assert_memory_equal(x.u.log.text, y.u.log.text, x.u.log.len);
+        if (x.u.log.len) assert_memory_equal(x.u.log.text, y.u.log.text, x.u.log.len);
         return;
     }
     assert_int_equal(x.type, y.type);
@@ -120,16 +125,20 @@ static void test_encode_rejects(void **state)
     assert_int_equal(wire_encode(&m, buf, sizeof buf), 0);
     m = (wire_msg_t){ .type = WIRE_DISTANCE, .u.distance = { 0, 3, 0, 5 } };
     assert_int_equal(wire_encode(&m, buf, sizeof buf), 0);
-    m = (wire_msg_t){ .type = WIRE_LOG, .u.log = { WIRE_LOG_MAX + 1, "" } };
+    m = (wire_msg_t){ .type = WIRE_LOG, .u.log = { WIRE_LOG_MAX + 1, "x" } };
     assert_int_equal(wire_encode(&m, buf, sizeof buf), 0);
     m = (wire_msg_t){ .type = 0x7F };
     assert_int_equal(wire_encode(&m, buf, sizeof buf), 0);
     m = (wire_msg_t){ .type = WIRE_RUN, .u.flag = { 1 } };
     assert_int_equal(wire_encode(&m, buf, 5), 0); /* needs 6 */
     assert_int_equal(wire_encode(&m, buf, 6), 6);
-    m = (wire_msg_t){ .type = WIRE_LOG, .u.log = { WIRE_LOG_MAX } };
-    memset(m.u.log.text, 'x', WIRE_LOG_MAX);
+    char longest[WIRE_LOG_MAX];
+    memset(longest, 'x', sizeof longest);
+    m = (wire_msg_t){ .type = WIRE_LOG, .u.log = { WIRE_LOG_MAX, longest } };
     assert_int_equal(wire_encode(&m, buf, sizeof buf), WIRE_FRAME_MAX - 1); /* longest frame */
+    assert_int_equal(wire_encode(&m, buf, WIRE_FRAME_MAX - 2), 0);
+    m = (wire_msg_t){ .type = WIRE_LOG, .u.log = { 0, NULL } };
+    assert_int_equal(wire_encode(&m, buf, sizeof buf), 5); /* an empty line */
 }
 
 /* a frame with a valid CRC around arbitrary raw bytes (type + payload) */
@@ -342,8 +351,9 @@ static void test_compat_details(void **state)
     assert_int_equal(k, 0);
     assert_int_equal(rx.stats.overflow, 1);
     /* the longest log line passes */
-    m = (wire_msg_t){ .type = WIRE_LOG, .u.log = { WIRE_LOG_MAX } };
-    memset(m.u.log.text, 'z', WIRE_LOG_MAX);
+    char zs[WIRE_LOG_MAX];
+    memset(zs, 'z', sizeof zs);
+    m = (wire_msg_t){ .type = WIRE_LOG, .u.log = { WIRE_LOG_MAX, zs } };
     n = wire_compat_encode(&tx, &m, b, sizeof b);
     assert_int_equal(n, WIRE_LOG_MAX + 2);
     wire_compat_rx_init(&rx, 1200);
@@ -351,6 +361,7 @@ static void test_compat_details(void **state)
     for (size_t i = 0; i < n; i++) k += wire_compat_decode_byte(&rx, b[i], &out);
     assert_int_equal(k, 1);
     assert_int_equal(out.u.log.len, WIRE_LOG_MAX);
+    assert_int_equal(strlen(out.u.log.text), WIRE_LOG_MAX);
     /* hello has no compat form */
     m = (wire_msg_t){ .type = WIRE_HELLO };
     assert_int_equal(wire_compat_encode(&tx, &m, b, sizeof b), 0);

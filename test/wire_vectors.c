@@ -65,7 +65,7 @@ static int same_msg(const wire_msg_t *a, const wire_msg_t *b)
                                a->u.distance.timeout == b->u.distance.timeout && a->u.distance.mm == b->u.distance.mm;
     case WIRE_SENSORS:
     case WIRE_RUN: return a->u.flag.on == b->u.flag.on;
-    case WIRE_LOG: return a->u.log.len == b->u.log.len && !memcmp(a->u.log.text, b->u.log.text, a->u.log.len);
+    case WIRE_LOG: return a->u.log.len == b->u.log.len && (!a->u.log.len || !memcmp(a->u.log.text, b->u.log.text, a->u.log.len));
     default: return 0;
     }
 }

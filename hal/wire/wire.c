@@ -48,8 +48,24 @@ static uint32_t get32(const uint8_t *p)
 
 static int motor_ok(int16_t v) { return v >= -WIRE_MOTOR_MAX && v <= WIRE_MOTOR_MAX; }
 
-/* type + payload into raw; returns the length, 0 if m is invalid */
-static size_t pack(const wire_msg_t *m, uint8_t *raw)
+/* bytes of type + payload for m, 0 if m is invalid */
+static size_t raw_len(const wire_msg_t *m)
+{
+    switch (m->type) {
+    case WIRE_HELLO: return 1 + LEN_HELLO;
+    case WIRE_MOTOR: return motor_ok(m->u.motor.left) && motor_ok(m->u.motor.right) ? 1 + LEN_MOTOR : 0;
+    case WIRE_ENCODER: return 1 + LEN_ENCODER;
+    case WIRE_DISTANCE:
+        return m->u.distance.sensor < WIRE_SENSOR_COUNT && m->u.distance.timeout <= 1 ? 1 + LEN_DISTANCE : 0;
+    case WIRE_SENSORS:
+    case WIRE_RUN: return m->u.flag.on <= 1 ? 1 + LEN_FLAG : 0;
+    case WIRE_LOG: return m->u.log.len <= WIRE_LOG_MAX && (m->u.log.text || !m->u.log.len) ? 1u + m->u.log.len : 0;
+    default: return 0;
+    }
+}
+
+/* type + payload into raw (raw_len(m) bytes, m valid) */
+static void pack(const wire_msg_t *m, uint8_t *raw)
 {
     raw[0] = m->type;
     uint8_t *p = raw + 1;
@@ -60,72 +76,57 @@ static size_t pack(const wire_msg_t *m, uint8_t *raw)
         put16(p + 2, m->u.hello.tof_range_mm);
         put32(p + 4, m->u.hello.counts_per_rev_x100);
         put16(p + 8, m->u.hello.tick_hz);
-        return 1 + LEN_HELLO;
+        break;
     case WIRE_MOTOR:
-        if (!motor_ok(m->u.motor.left) || !motor_ok(m->u.motor.right)) return 0;
         put32(p, m->u.motor.t_us);
         put16(p + 4, (uint16_t)m->u.motor.left);
         put16(p + 6, (uint16_t)m->u.motor.right);
-        return 1 + LEN_MOTOR;
+        break;
     case WIRE_ENCODER:
         put32(p, m->u.encoder.t_us);
         put32(p + 4, (uint32_t)m->u.encoder.left);
         put32(p + 8, (uint32_t)m->u.encoder.right);
-        return 1 + LEN_ENCODER;
+        break;
     case WIRE_DISTANCE:
-        if (m->u.distance.sensor >= WIRE_SENSOR_COUNT || m->u.distance.timeout > 1) return 0;
         put32(p, m->u.distance.t_us);
         p[4] = m->u.distance.sensor;
         p[5] = m->u.distance.timeout;
         put16(p + 6, m->u.distance.mm);
-        return 1 + LEN_DISTANCE;
+        break;
     case WIRE_SENSORS:
-    case WIRE_RUN:
-        if (m->u.flag.on > 1) return 0;
-        p[0] = m->u.flag.on;
-        return 1 + LEN_FLAG;
+    case WIRE_RUN: p[0] = m->u.flag.on; break;
     case WIRE_LOG:
-        if (m->u.log.len > WIRE_LOG_MAX) return 0;
-        memcpy(p, m->u.log.text, m->u.log.len);
-        return 1u + m->u.log.len;
-    default:
-        return 0;
+        if (m->u.log.len) memcpy(p, m->u.log.text, m->u.log.len);
+        break;
     }
 }
 
 size_t wire_encode(const wire_msg_t *m, uint8_t *out, size_t cap)
 {
-    uint8_t raw[WIRE_RAW_MAX];
-    size_t n = pack(m, raw);
-    if (n == 0) return 0;
-    uint16_t crc = wire_crc16(raw, n);
-    put16(raw + n, crc);
+    size_t n = raw_len(m);
+    if (n == 0 || cap < n + 4) return 0; /* + CRC + COBS code + delimiter (n < 254: one code per zero) */
+    pack(m, out + 1);
+    put16(out + 1 + n, wire_crc16(out + 1, n));
     n += 2;
-    /* COBS: n < 254, so one code block per zero plus one, and the delimiter */
-    if (cap < n + 2) return 0;
-    size_t code_at = 0, o = 1;
-    uint8_t code = 1;
-    for (size_t i = 0; i < n; i++) {
-        if (raw[i] == 0) {
-            out[code_at] = code;
-            code_at = o++;
-            code = 1;
-        } else {
-            out[o++] = raw[i];
-            code++;
+    /* COBS in place: raw is at out[1..n]; each zero becomes the distance
+     * to the next one, out[0] the distance to the first */
+    size_t last = 0;
+    for (size_t i = 1; i <= n; i++)
+        if (out[i] == 0) {
+            out[last] = (uint8_t)(i - last);
+            last = i;
         }
-    }
-    out[code_at] = code;
-    out[o++] = 0;
-    return o;
+    out[last] = (uint8_t)(n + 1 - last);
+    out[n + 1] = 0;
+    return n + 2;
 }
 
 void wire_decoder_init(wire_decoder_t *d) { memset(d, 0, sizeof *d); }
 
-/* raw (type + payload, CRC stripped) -> message; 0 and counted if malformed */
-static int unpack(wire_stats_t *st, const uint8_t *raw, size_t n, wire_msg_t *m)
+/* raw (type + payload, CRC after it) -> message; 0 and counted if malformed */
+static int unpack(wire_stats_t *st, uint8_t *raw, size_t n, wire_msg_t *m)
 {
-    const uint8_t *p = raw + 1;
+    uint8_t *p = raw + 1;
     size_t len = n - 1, want;
     memset(m, 0, sizeof *m);
     m->type = raw[0];
@@ -177,8 +178,8 @@ static int unpack(wire_stats_t *st, const uint8_t *raw, size_t n, wire_msg_t *m)
         break;
     case WIRE_LOG:
         m->u.log.len = (uint8_t)len;
-        memcpy(m->u.log.text, p, len);
-        m->u.log.text[len] = '\0';
+        p[len] = 0; /* over the CRC, already checked */
+        m->u.log.text = (const char *)p;
         break;
     }
     return 1;
@@ -291,11 +292,11 @@ size_t wire_compat_encode(wire_compat_tx_t *t, const wire_msg_t *m, uint8_t *out
         return 2;
     case WIRE_LOG: {
         size_t n = m->u.log.len <= WIRE_LOG_MAX ? m->u.log.len : WIRE_LOG_MAX;
-        const char *nul = memchr(m->u.log.text, 0, n);
+        const char *nul = n ? memchr(m->u.log.text, 0, n) : NULL;
         if (nul) n = (size_t)(nul - m->u.log.text);
         if (cap < n + 2) return 0;
         out[0] = WIRE_C_LOGGER;
-        memcpy(out + 1, m->u.log.text, n);
+        if (n) memcpy(out + 1, m->u.log.text, n);
         out[n + 1] = 0;
         return n + 2;
     }
@@ -339,8 +340,8 @@ int wire_compat_decode_byte(wire_compat_rx_t *r, uint8_t b, wire_msg_t *out)
         memset(out, 0, sizeof *out);
         out->type = WIRE_LOG;
         out->u.log.len = r->n;
-        memcpy(out->u.log.text, r->buf, r->n);
-        out->u.log.text[r->n] = '\0';
+        r->buf[r->n] = 0;
+        out->u.log.text = (const char *)r->buf;
         r->id = 0xFF;
         r->stats.frames_ok++;
         return 1;

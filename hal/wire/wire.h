@@ -72,7 +72,8 @@ typedef struct {
         } flag;
         struct {
             uint8_t len;            /* 0..WIRE_LOG_MAX */
-            char text[WIRE_LOG_MAX + 1]; /* NUL-terminated copy */
+            const char *text;       /* len bytes; decoded: NUL-terminated, inside the
+                                       decoder, valid until the next byte is fed */
         } log;
     } u;
 } wire_msg_t;
@@ -97,9 +98,9 @@ uint16_t wire_crc16(const uint8_t *p, size_t n);
 
 /* ---- framed mode ---- */
 
-/* Encode one message into out (a complete frame incl. the trailing 0x00).
- * Returns the bytes written, or 0 if the message is invalid or cap is
- * smaller than WIRE_FRAME_MAX would need. */
+/* Encode one message into out (a complete frame incl. the trailing 0x00),
+ * in place (no second buffer: small stack on the MCU). Returns the bytes
+ * written, or 0 if the message is invalid or does not fit cap. */
 size_t wire_encode(const wire_msg_t *m, uint8_t *out, size_t cap);
 
 typedef struct {

@@ -29,7 +29,7 @@ void ActuatorManager::log(const char *text)
     memset(&m, 0, sizeof m);
     m.type = WIRE_LOG;
     size_t n = text ? strnlen(text, WIRE_LOG_MAX) : 0;
-    memcpy(m.u.log.text, text, n);
+    m.u.log.text = text;
     m.u.log.len = (uint8_t)n;
     mmLink.send(m);
 }

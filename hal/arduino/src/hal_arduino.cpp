@@ -87,7 +87,7 @@ static void tick()
         memset(&m, 0, sizeof m);
         m.type = WIRE_LOG;
         m.u.log.len = (uint8_t)strlen(log_line);
-        memcpy(m.u.log.text, log_line, m.u.log.len);
+        m.u.log.text = log_line;
         mmLink.send(m);
         log_full = 0;
     }
