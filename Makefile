@@ -13,7 +13,7 @@ WARN    := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wno-unused-parameter
 INC      = -Ifirmware -Ihal -Ihal/sim -Ihal/wire -Isim $(shell pkg-config --cflags glib-2.0 ode 2>/dev/null)
 CFLAGS  ?= -O2 -g
 SAN     := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
-LIBS     = -ljansson -linih $(shell pkg-config --libs glib-2.0 ode 2>/dev/null) -lm
+LIBS     = -ljansson -linih $(shell pkg-config --libs glib-2.0 ode 2>/dev/null) -lsimavr -lelf -lm
 B       := build
 
 FW_SRC   := $(wildcard firmware/*.c)
@@ -66,7 +66,7 @@ $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
 
-test: deps $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) firmware-size $(B)/avr/wire_selftest.elf arduino
+test: deps $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) firmware-size $(B)/avr/wire_selftest.elf arduino $(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf
 	@MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
 # ---- AVR build of the firmware (ATmega328P) ----
@@ -130,6 +130,10 @@ $(B)/arduino/$(1)/$(e).elf: hal/arduino/examples/$(e)/$(e).ino $(B)/arduino/$(1)
 endef
 $(foreach b,$(ARD_BOARDS),$(eval $(call ARD_BOARD_RULES,$(b))))
 ARD_ELFS := $(foreach b,$(ARD_BOARDS),$(foreach e,$(ARD_EXAMPLES),$(B)/arduino/$(b)/$(e).elf))
+# The processor-in-the-loop test image: the Mouse sketch on a 5x5 maze (test/cli_pil.sh).
+$(B)/arduino/%/Mouse-5x5.elf: hal/arduino/examples/Mouse/Mouse.ino $(B)/arduino/%/libmicromouse.a $(B)/arduino/%/core.a $(ARD_HDRS)
+	avr-g++ $(ARD_$*) $(ARD_COMMON) $(ARD_CXX) -DMM_MAZE_SIZE=5 -Wall -x c++ -include Arduino.h -c $< -o $@.o
+	avr-gcc $(ARD_$*) -Os -Wl,--gc-sections $@.o $(B)/arduino/$*/libmicromouse.a $(B)/arduino/$*/core.a -lm -o $@
 arduino: $(ARD_ELFS)
 	@avr-size $(ARD_ELFS)
 

@@ -46,6 +46,7 @@ static void on_connect(link_t *l)
     l->sensors_on = l->o.protocol != LINK_COMPAT; /* compat: nothing until requestEnableSensors, as in the paper */
     l->hello_ok = l->o.protocol == LINK_COMPAT; /* compat has no handshake */
     l->silent = 0;
+    l->enc_every = 1;
     l->last_rx_step = l->step;
     l->next_hello_step = l->step;
     say(l, "connected");
@@ -179,9 +180,18 @@ static void handle(link_t *l, const wire_msg_t *m)
             say(l, line);
         }
         l->hello_ok = 1;
+        /* no point sending encoders faster than the MCU's control tick */
+        l->enc_every = m->u.hello.tick_hz ? (uint32_t)lround(1.0 / (l->step_s * m->u.hello.tick_hz)) : 1;
+        if (l->enc_every < 1) l->enc_every = 1;
         break;
     case WIRE_SENSORS: l->sensors_on = m->u.flag.on; break;
-    case WIRE_RUN: l->running = m->u.flag.on; break;
+    case WIRE_RUN:
+        l->running = m->u.flag.on;
+        if (!m->u.flag.on) {
+            l->st.stops++;
+            say(l, "MCU stopped the run");
+        }
+        break;
     case WIRE_LOG:
         l->st.logs++;
         if (l->report) fprintf(l->report, "mcu: %s\n", m->u.log.text);
@@ -235,12 +245,14 @@ int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2])
         l->next_hello_step = l->step + steps_of(l, LINK_RETRY_S);
     }
     if (l->o.protocol == LINK_COMPAT && !l->sensors_on) goto move; /* the paper's sim sends nothing */
-    memset(&m, 0, sizeof m);
-    m.type = WIRE_ENCODER;
-    m.u.encoder.t_us = in->t_us;
-    m.u.encoder.left = in->encoder[0];
-    m.u.encoder.right = in->encoder[1];
-    enqueue(l, &m);
+    if (l->enc_every <= 1 || l->step % l->enc_every == 0) {
+        memset(&m, 0, sizeof m);
+        m.type = WIRE_ENCODER;
+        m.u.encoder.t_us = in->t_us;
+        m.u.encoder.left = in->encoder[0];
+        m.u.encoder.right = in->encoder[1];
+        enqueue(l, &m);
+    }
     for (uint8_t i = 0; i < 3; i++) {
         if (!in->tof_new[i]) continue;
         memset(&m, 0, sizeof m);

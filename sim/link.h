@@ -37,6 +37,7 @@ typedef struct {
     uint64_t tx_blocked_bytes;           /* bytes the budget allowed but the OS did not take */
     uint64_t steps;                      /* physics steps seen */
     uint32_t silences, disconnects, connects, logs;
+    uint32_t stops;                      /* RUN stop received (mmsim ends the run) */
 } link_stats_t;
 
 /* What the link reads from and writes to each step (sim-independent, so the
@@ -69,6 +70,7 @@ typedef struct link_s {
     int sensors_on;           /* SENSORS enable (default) / disable */
     int hello_ok;             /* framed: MCU HELLO with our version seen */
     int silent;
+    uint32_t enc_every;       /* framed: ENCODER every this many steps (the MCU's tick, from its HELLO) */
     uint64_t step, last_rx_step, next_hello_step, next_retry_step;
     uint64_t tof_seen[3];
     link_stats_t st;

@@ -20,6 +20,7 @@
 #include "hal.h"
 #include "hal_sim.h"
 #include "link.h"
+#include "pil.h"
 #include "serial.h"
 #include "mouse.h"
 #include "solve.h"
@@ -40,8 +41,10 @@ typedef struct {
     int scripted;       /* --driver scripted */
     int verbose;        /* --verbose: firmware log lines on stderr */
     int jobs;
-    int serial;         /* --serial / --pty: the MCU drives over a serial link */
+    int serial;         /* --serial / --pty / --avr: the MCU drives over a serial link */
     link_opts_t link;
+    const char *avr_elf, *avr_mcu; /* --avr ELF: processor in the loop (simavr), --mcu */
+    uint32_t avr_f_cpu;            /* --f-cpu, Hz (0 = from the ELF or 16 MHz) */
 } opts_t;
 
 static double wall_now(void)
@@ -92,8 +95,20 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         return EXIT_EXTERNAL;
     }
     static link_t lnk;
-    if (o->serial) {
-        char lerr[400];
+    static pil_t pil;
+    char lerr[400];
+    if (o->avr_elf) {
+        int lfd;
+        drv.done = 0;
+        drv.reachable = 1;
+        if (pil_open(&pil, o->avr_elf, o->avr_mcu, o->avr_f_cpu, cfg.step_s, &lfd, lerr, sizeof lerr) != 0) {
+            fprintf(stderr, "mmsim: %s\n", lerr);
+            sim_free(&sim);
+            return EXIT_EXTERNAL;
+        }
+        link_open_fd(&lnk, lfd, &o->link, cfg.step_s, (uint16_t)lround(cfg.tof_range_m * 1000.0),
+                     (uint32_t)lround(cfg.encoder_ppr * cfg.gear_ratio * 100.0), o->verbose ? stderr : NULL);
+    } else if (o->serial) {
         drv.done = 0;
         drv.reachable = 1;
         if (link_open(&lnk, &o->link, cfg.step_s, (uint16_t)lround(cfg.tof_range_m * 1000.0),
@@ -122,6 +137,12 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         if (o->serial) { /* HIL: the contest lasts the time limit */
             sim_step(&sim);
             link_step(&lnk, &sim);
+            if (o->avr_elf && pil_step(&pil, lerr, sizeof lerr) != 0) {
+                fprintf(stderr, "mmsim: %s: %s\n", o->avr_elf, lerr);
+                reason = "avr_stopped";
+                break;
+            }
+            if (lnk.st.stops) break; /* the MCU ended the contest (RUN stop) */
             if (sim_time_s(&sim) >= cfg.time_limit_s) {
                 reason = "time_limit";
                 break;
@@ -199,6 +220,14 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     if (o->serial) {
         json_object_set_new(o_json, "link", link_json(&lnk));
         link_close(&lnk);
+        if (o->avr_elf) {
+            json_object_set_new(o_json, "avr", json_pack("{s:s, s:s, s:I, s:I, s:I, s:I}", "elf", o->avr_elf, "mcu",
+                                                         pil.mcu, "f_cpu_hz", (json_int_t)pil.f_cpu, "cycles",
+                                                         (json_int_t)pil.cycles, "uart_bytes_in",
+                                                         (json_int_t)pil.bytes_in, "uart_bytes_out",
+                                                         (json_int_t)pil.bytes_out));
+            pil_close(&pil);
+        }
     } else if (!o->scripted) {
         /* the path the mouse would run: best through known-open walls */
         static solve_path_t truth, known;
@@ -231,6 +260,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     }
     sim_free(&sim);
     *out = o_json;
+    if (!strcmp(reason, "avr_stopped")) return EXIT_EXTERNAL;
     return r->nlaps > 0 && !strcmp(reason, "done") ? EXIT_OK : EXIT_NOT_REACHED;
 }
 
@@ -320,6 +350,8 @@ static void usage(FILE *out)
           "       mmsim --maze FILE --serial DEV|--pty [--baud N] [--protocol framed|compat] [--silence-ms N]\n"
           "             (hardware in the loop: an MCU drives over a serial link, in real time;\n"
           "              --pty creates a pseudo-terminal and prints its path; docs/PROTOCOL.md)\n"
+          "       mmsim --maze FILE --avr ELF [--mcu NAME] [--f-cpu HZ] [--baud N] [--protocol P]\n"
+          "             (processor in the loop: the AVR image runs in simavr, in lockstep)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
           "       mmsim --print-config [--config FILE]\n"
           "Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure.\n",
@@ -361,9 +393,11 @@ int main(int argc, char **argv)
         { "serial", required_argument, 0, 'S' }, { "pty", no_argument, 0, 'Y' },
         { "baud", required_argument, 0, 'B' },   { "protocol", required_argument, 0, 'R' },
         { "silence-ms", required_argument, 0, 'Q' },
+        { "avr", required_argument, 0, 'A' },    { "mcu", required_argument, 0, 'M' },
+        { "f-cpu", required_argument, 0, 'f' },
         { 0, 0, 0, 0 },
     };
-    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, 0, { NULL, 0, 0, LINK_FRAMED, 0 } }; /* scripted by default until the firmware passes issue 4 */
+    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, 0, { NULL, 0, 0, LINK_FRAMED, 0 }, NULL, NULL, 0 }; /* scripted by default until the firmware passes issue 4 */
     const char *maze = NULL, *batch = NULL;
     double v;
     int c, link_flags = 0;
@@ -404,6 +438,13 @@ int main(int argc, char **argv)
             break;
         case 'v': o.verbose = 1; break;
         case 'S': o.link.device = optarg; break;
+        case 'A': o.avr_elf = optarg; break;
+        case 'M': o.avr_mcu = optarg; link_flags++; break;
+        case 'f':
+            if (num("--f-cpu", optarg, 1000, 100e6, &v)) return EXIT_BAD_INPUT;
+            o.avr_f_cpu = (uint32_t)v;
+            link_flags++;
+            break;
         case 'Y': o.link.pty = 1; break;
         case 'B':
             if (num("--baud", optarg, 50, SERIAL_BAUD_MAX, &v)) return EXIT_BAD_INPUT;
@@ -429,12 +470,13 @@ int main(int argc, char **argv)
         }
     }
     if (optind != argc) return bad("unexpected argument '%s'", argv[optind]);
-    o.serial = o.link.device || o.link.pty;
-    if (o.link.device && o.link.pty) return bad("%s", "--serial and --pty exclude each other");
+    o.serial = o.link.device || o.link.pty || o.avr_elf;
+    if (!!o.link.device + o.link.pty + !!o.avr_elf > 1) return bad("%s", "--serial, --pty and --avr exclude each other");
     if (!o.serial && link_flags)
-        return bad("%s", "--baud, --protocol and --silence-ms need --serial DEV or --pty");
-    if (o.serial && batch) return bad("%s", "--serial/--pty run one maze, not --batch");
-    if (o.serial) o.realtime = 1; /* a real MCU runs in real time */
+        return bad("%s", "--baud, --protocol, --silence-ms, --mcu and --f-cpu need --serial DEV, --pty or --avr ELF");
+    if (!o.avr_elf && (o.avr_mcu || o.avr_f_cpu)) return bad("%s", "--mcu and --f-cpu need --avr ELF");
+    if (o.serial && batch) return bad("%s", "--serial/--pty/--avr run one maze, not --batch");
+    if (o.serial && !o.avr_elf) o.realtime = 1; /* a real MCU runs in real time; simavr in lockstep */
     if (o.print_config) {
         simcfg_t cfg;
         if (load_config(&o, &cfg) != 0) return EXIT_BAD_INPUT;

@@ -19,11 +19,15 @@ uint32_t wire_stats_errors(const wire_stats_t *s)
 
 uint16_t wire_crc16(const uint8_t *p, size_t n)
 {
+    /* byte-wise, no table (the classic shift form of poly 0x1021, MSB
+     * first): ~25 AVR cycles a byte instead of ~100 for the bit loop */
     uint16_t crc = 0xFFFFu;
     while (n--) {
-        crc ^= (uint16_t)((uint16_t)*p++ << 8);
-        for (uint8_t i = 0; i < 8; i++)
-            crc = (crc & 0x8000u) ? (uint16_t)((crc << 1) ^ 0x1021u) : (uint16_t)(crc << 1);
+        crc = (uint16_t)((crc >> 8) | (crc << 8));
+        crc ^= *p++;
+        crc ^= (uint16_t)((crc & 0xFFu) >> 4);
+        crc ^= (uint16_t)(crc << 12);
+        crc ^= (uint16_t)((crc & 0xFFu) << 5);
     }
     return crc;
 }

@@ -7,7 +7,8 @@
  * UART keeps receiving at 1 Mbaud) and is the only code that touches the
  * link: it reads the sensors in, runs fw_tick, then sends the motor
  * command and any queued log line. hal_* called from fw_loop only read
- * copies or queue. */
+ * copies or queue. When the mouse is done (or gives up) the runner sends
+ * RUN stop once, which ends the simulator's run. */
 #ifndef MM_MOUSE_H
 #define MM_MOUSE_H
 
@@ -20,5 +21,8 @@ void mm_mouse_begin(Stream &s, uint8_t protocol = MM_FRAMED);
 void mm_mouse_loop();
 /* Ticks skipped because the previous one had not finished. */
 uint16_t mm_mouse_overruns();
+/* The longest tick so far (link poll + fw_tick + sends), us; a tick that
+ * outlasts the period wraps Timer1 and reads short (see overruns). */
+uint16_t mm_mouse_worst_tick_us();
 
 #endif

@@ -4,6 +4,9 @@
 #include <util/atomic.h>
 
 #include "hal.h"
+extern "C" { /* the firmware's headers are plain C */
+#include "mouse.h"
+}
 
 static volatile int16_t cmd[2];          /* latest motor command */
 static volatile int32_t enc_zero[2];
@@ -11,6 +14,8 @@ static char log_line[HAL_LOG_MAX + 1];
 static volatile uint8_t log_full;        /* log_line waits to be sent */
 static volatile uint16_t log_dropped, overruns;
 static volatile uint8_t busy;
+static uint8_t stop_sent;                /* RUN stop sent: the contest is over */
+static volatile uint16_t worst_tick_half_us; /* longest tick, Timer1 counts (0.5 us at 16 MHz) */
 
 uint32_t hal_micros(void) { return micros(); }
 
@@ -83,6 +88,13 @@ static void tick()
     m.u.motor.left = cmd[0];
     m.u.motor.right = cmd[1];
     mmLink.send(m);
+    if (!stop_sent && mouse_status()->mode >= MOUSE_DONE) { /* done, no goal or crashed: tell the sim */
+        memset(&m, 0, sizeof m);
+        m.type = WIRE_RUN;
+        m.u.flag.on = 0;
+        mmLink.send(m);
+        stop_sent = 1;
+    }
     if (log_full) {
         memset(&m, 0, sizeof m);
         m.type = WIRE_LOG;
@@ -101,6 +113,8 @@ ISR(TIMER1_COMPA_vect, ISR_NOBLOCK)
     }
     busy = 1;
     tick();
+    uint16_t t = TCNT1; /* counts since this tick's compare match */
+    if (t > worst_tick_half_us) worst_tick_half_us = t;
     busy = 0;
 }
 
@@ -127,6 +141,13 @@ void mm_mouse_begin(Stream &s, uint8_t protocol)
 }
 
 void mm_mouse_loop() { fw_loop(); }
+
+uint16_t mm_mouse_worst_tick_us()
+{
+    uint16_t n;
+    ATOMIC_BLOCK(ATOMIC_RESTORESTATE) { n = worst_tick_half_us; }
+    return (uint16_t)(n / 2u);
+}
 
 uint16_t mm_mouse_overruns()
 {
