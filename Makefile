@@ -170,6 +170,9 @@ fuzz: | deps
 	  test/fuzz_mazefile.c sim/mazefile.c firmware/maze.c -o $(B)/fuzz/fuzz_mazefile
 	cp -n mazes/*.txt $(B)/fuzz/corpus/ 2>/dev/null || true
 	$(B)/fuzz/fuzz_mazefile -max_total_time=$(FUZZ_SECONDS) -max_len=8192 $(B)/fuzz/corpus
+	@mkdir -p $(B)/fuzz/corpus_wire
+	clang -g -O1 -fsanitize=fuzzer,address,undefined -Ihal/wire hal/wire/wire.c test/fuzz_wire.c -o $(B)/fuzz/fuzz_wire
+	$(B)/fuzz/fuzz_wire -max_total_time=$(FUZZ_SECONDS) -max_len=512 $(B)/fuzz/corpus_wire
 
 mazes:
 	@if [ -d $(B)/mazefiles ]; then echo "$(B)/mazefiles exists"; else \

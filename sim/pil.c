@@ -105,6 +105,7 @@ int pil_open(pil_t *p, const char *elf, const char *mcu, uint32_t f_cpu, double 
     avr_load_firmware(p->avr, &fw);
     p->avr->frequency = p->f_cpu;
     p->avr->sleep = no_sleep;
+    for (uint32_t a = p->avr->ioend + 1u; a <= p->avr->ramend; a++) p->avr->data[a] = PIL_PAINT; /* for pil_stack */
 
     uint32_t flags = 0; /* simavr would print UART lines itself, and usleep while the AVR polls the UART */
     avr_ioctl(p->avr, AVR_IOCTL_UART_GET_FLAGS('0'), &flags);
@@ -164,6 +165,26 @@ int pil_step(pil_t *p, char *err, size_t errn)
     }
     p->cycles = p->avr->cycle;
     return 0;
+}
+
+void pil_stack(const pil_t *p, uint32_t *stack_max, uint32_t *free_min)
+{
+    /* up from the start of SRAM: .data and .bss are written at reset, the
+     * first 16 untouched bytes start the gap; the first touched byte above
+     * it is the deepest the stack went (scanning down from the top would
+     * stop early at untouched holes inside stack frames) */
+    const uint8_t *d = p->avr->data;
+    uint32_t lo = p->avr->ioend + 1u, top = p->avr->ramend, a = lo;
+    while (a + 16u <= top) {
+        uint32_t k = 0;
+        while (k < 16u && d[a + k] == PIL_PAINT) k++;
+        if (k == 16u) break;
+        a += k + 1u;
+    }
+    uint32_t gap = a;
+    while (a <= top && d[a] == PIL_PAINT) a++;
+    *free_min = a - gap;
+    *stack_max = top + 1u - a;
 }
 
 void pil_close(pil_t *p)

@@ -14,6 +14,7 @@ struct avr_t;
 struct avr_irq_t;
 
 #define PIL_IN_MAX 4096u /* bytes waiting for the AVR's receive FIFO */
+#define PIL_PAINT 0xA5   /* SRAM fill before reset: untouched bytes keep it */
 
 typedef struct {
     struct avr_t *avr;
@@ -39,6 +40,10 @@ int pil_open(pil_t *p, const char *elf, const char *mcu, uint32_t f_cpu, double 
 /* One physics step of AVR time. Returns 0, or -1 if the AVR stopped
  * (crashed or halted) with the reason in err. */
 int pil_step(pil_t *p, char *err, size_t errn);
+/* Stack high-water mark so far, bytes below the top of SRAM, and the
+ * smallest gap that stayed untouched between .bss and the stack (SRAM is
+ * painted at load; the firmware must not malloc). */
+void pil_stack(const pil_t *p, uint32_t *stack_max, uint32_t *free_min);
 void pil_close(pil_t *p);
 
 #endif

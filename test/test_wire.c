@@ -127,6 +127,8 @@ static void test_encode_rejects(void **state)
     assert_int_equal(wire_encode(&m, buf, sizeof buf), 0);
     m = (wire_msg_t){ .type = WIRE_LOG, .u.log = { WIRE_LOG_MAX + 1, "x" } };
     assert_int_equal(wire_encode(&m, buf, sizeof buf), 0);
+    m = (wire_msg_t){ .type = WIRE_HELLO, .u.hello = { WIRE_VERSION, 2, 1200, 35832, 1000 } }; /* found by fuzz_wire */
+    assert_int_equal(wire_encode(&m, buf, sizeof buf), 0);
     m = (wire_msg_t){ .type = 0x7F };
     assert_int_equal(wire_encode(&m, buf, sizeof buf), 0);
     m = (wire_msg_t){ .type = WIRE_RUN, .u.flag = { 1 } };

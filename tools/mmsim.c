@@ -221,11 +221,15 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         json_object_set_new(o_json, "link", link_json(&lnk));
         link_close(&lnk);
         if (o->avr_elf) {
-            json_object_set_new(o_json, "avr", json_pack("{s:s, s:s, s:I, s:I, s:I, s:I}", "elf", o->avr_elf, "mcu",
-                                                         pil.mcu, "f_cpu_hz", (json_int_t)pil.f_cpu, "cycles",
+            uint32_t stack_max, free_min;
+            pil_stack(&pil, &stack_max, &free_min);
+            json_object_set_new(o_json, "avr", json_pack("{s:s, s:s, s:I, s:I, s:I, s:I, s:I, s:I}", "elf", o->avr_elf,
+                                                         "mcu", pil.mcu, "f_cpu_hz", (json_int_t)pil.f_cpu, "cycles",
                                                          (json_int_t)pil.cycles, "uart_bytes_in",
                                                          (json_int_t)pil.bytes_in, "uart_bytes_out",
-                                                         (json_int_t)pil.bytes_out));
+                                                         (json_int_t)pil.bytes_out, "stack_max_bytes",
+                                                         (json_int_t)stack_max, "sram_free_min_bytes",
+                                                         (json_int_t)free_min));
             pil_close(&pil);
         }
     } else if (!o->scripted) {

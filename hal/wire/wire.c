@@ -56,7 +56,7 @@ static int motor_ok(int16_t v) { return v >= -WIRE_MOTOR_MAX && v <= WIRE_MOTOR_
 static size_t raw_len(const wire_msg_t *m)
 {
     switch (m->type) {
-    case WIRE_HELLO: return 1 + LEN_HELLO;
+    case WIRE_HELLO: return m->u.hello.role <= WIRE_ROLE_MCU ? 1 + LEN_HELLO : 0;
     case WIRE_MOTOR: return motor_ok(m->u.motor.left) && motor_ok(m->u.motor.right) ? 1 + LEN_MOTOR : 0;
     case WIRE_ENCODER: return 1 + LEN_ENCODER;
     case WIRE_DISTANCE:
