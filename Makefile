@@ -30,7 +30,7 @@ WRAP_test_firmware := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros -Wl,--wrap=hal_mo
 # Extra sources a test links (shared test vectors).
 EXTRA_test_wire := test/wire_vectors.c
 
-.PHONY: all deps test sim bench fuzz firmware firmware-size arduino mazes clean tools
+.PHONY: all deps test sim bench fuzz firmware firmware-size arduino arduino-lib mazes clean tools
 all: tools
 
 deps:
@@ -136,6 +136,15 @@ $(B)/arduino/%/Mouse-5x5.elf: hal/arduino/examples/Mouse/Mouse.ino $(B)/arduino/
 	avr-gcc $(ARD_$*) -Os -Wl,--gc-sections $@.o $(B)/arduino/$*/libmicromouse.a $(B)/arduino/$*/core.a -lm -o $@
 arduino: $(ARD_ELFS)
 	@avr-size $(ARD_ELFS)
+# The installable Arduino library (copy to ~/Arduino/libraries/): hal/arduino
+# plus the HAL contract, the wire codec and the firmware, assembled here (a
+# build product: never committed).
+arduino-lib:
+	@rm -rf $(B)/arduino-lib/Micromouse; mkdir -p $(B)/arduino-lib/Micromouse/src
+	cp -r hal/arduino/library.properties hal/arduino/README.md hal/arduino/examples $(B)/arduino-lib/Micromouse/
+	cp hal/arduino/src/* hal/hal.h hal/wire/wire.c hal/wire/wire.h $(B)/arduino-lib/Micromouse/src/
+	cp firmware/*.c firmware/*.h $(B)/arduino-lib/Micromouse/src/
+	@echo "$(B)/arduino-lib/Micromouse: copy it to your Arduino libraries folder (see hal/arduino/README.md)"
 
 # ---- simulation: the physics with the scripted driver until the firmware's
 # motion layer lands, then the grid-mode exploration of the firmware ----
