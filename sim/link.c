@@ -208,6 +208,10 @@ static void check_connection(link_t *l)
         else if (!peer && l->connected) on_disconnect(l);
         return;
     }
+    if (l->connected && l->fd >= 0 && l->o.device && serial_hung_up(l->fd)) {
+        on_disconnect(l);
+        return;
+    }
     if (l->connected || !l->o.device || l->step < l->next_retry_step) return;
     char err[300];
     l->fd = serial_open(l->o.device, l->o.baud, err, sizeof err);
@@ -296,10 +300,6 @@ move: /* sim -> MCU: at most the credit's whole bytes */
     if (want > 0) {
         ssize_t k = read(l->fd, buf, want);
         if (k < 0 && io_failed(errno)) {
-            on_disconnect(l);
-            return l->sensors_on;
-        }
-        if (k == 0 && !l->o.pty) { /* a hung-up terminal reads end of file */
             on_disconnect(l);
             return l->sensors_on;
         }

@@ -81,6 +81,13 @@ int serial_open_pty(char *path, size_t pathn, char *err, size_t errn)
 
 void serial_flush(int fd) { ioctl(fd, TCFLSH, TCIOFLUSH); }
 
+int serial_hung_up(int fd)
+{
+    struct pollfd p = { fd, POLLIN, 0 };
+    if (poll(&p, 1, 0) < 0) return 0;
+    return (p.revents & (POLLHUP | POLLERR | POLLNVAL)) != 0;
+}
+
 int serial_pty_peer(int master_fd)
 {
     struct pollfd p = { master_fd, POLLIN, 0 };

@@ -68,4 +68,21 @@ print(d['driver'], l['protocol'], l['connects'] >= 2, l['disconnects'] >= 1, l['
 if command -v python3 >/dev/null; then hil compat; hil framed; else echo "SKIP cli_hil pty: python3 missing"; fi
 grep -q "hello from the MCU: protocol 1, ToF range 1200 mm" "$T/framed.err" && ok "framed handshake reported" || bad "framed handshake: $(cat "$T/framed.err")"
 
+# a real serial device path (a pty slave behind a symlink), custom baud via
+# termios2, unplugged and plugged back: mmsim reports it and reopens it
+if command -v python3 >/dev/null; then
+  python3 test/hil_replug.py "$T/tty" 1.2 >"$T/replug.out" 2>&1 &
+  RP=$!
+  for i in $(seq 100); do [ -e "$T/tty" ] && break; sleep 0.05; done
+  "$S" --maze $M --serial "$T/tty" --baud 250000 --protocol compat --time-limit 4 --json >"$T/rp.json" 2>"$T/rp.err"; rc=$?
+  wait $RP && ok "replug: device side: $(cat "$T/replug.out")" || bad "replug device side: $(cat "$T/replug.out") $(cat "$T/rp.err")"
+  [ $rc -eq 1 ] && ok "replug: mmsim exit 1" || bad "replug: mmsim exit $rc: $(cat "$T/rp.err")"
+  got=$(python3 -c "
+import json,sys; l=json.load(open(sys.argv[1]))['link']
+print(l['baud'], l['connects'] >= 2, l['disconnects'] >= 1, l['decoder']['unknown'])" "$T/rp.json" 2>&1)
+  [ "$got" = "250000 True True 0" ] && ok "replug: reconnected" || bad "replug: $got $(cat "$T/rp.err")"
+  grep -q "disconnected, motors off" "$T/rp.err" && [ "$(grep -c ': connected at' "$T/rp.err")" -ge 2 ] \
+    && ok "replug: states reported" || bad "replug states: $(cat "$T/rp.err")"
+fi
+
 [ $fails -eq 0 ] || exit 1
