@@ -247,6 +247,63 @@ static void test_compat_manager_and_pacing(void **state)
     close_pair();
 }
 
+/* Faults on the wire MCU -> sim: motor frames hit by drops, bit flips and
+ * garbage bursts; the link reads them at the baud and its decoder must count
+ * exactly one error per corrupted chunk between delimiters, and apply every
+ * intact command. */
+static void test_faults_through_link(void **state)
+{
+    enum { N = 400 };
+    static uint8_t clean[N * 16], bad[N * 16 * 4];
+    static size_t start[N + 1];
+    size_t len = 0, blen = 0;
+    uint64_t r = 5;
+    int16_t mo[2];
+    for (int i = 0; i < N; i++) {
+        wire_msg_t m = { .type = WIRE_MOTOR, .u.motor = { (uint32_t)i * 4000u, (int16_t)(i % 1000), (int16_t)-(i % 777) } };
+        start[i] = len;
+        len += wire_encode(&m, clean + len, 16);
+    }
+    start[N] = len;
+    for (size_t i = 0; i < len; i++) {
+        r = r * 6364136223846793005ull + 1442695040888963407ull;
+        unsigned x = (unsigned)(r >> 33) % 1000;
+        if (x < 4) continue;                                          /* drop */
+        uint8_t b = clean[i];
+        if (x < 8) b ^= (uint8_t)(1u << ((r >> 20) & 7));             /* flip */
+        bad[blen++] = b;
+        if (x < 11) for (unsigned k = (unsigned)(r >> 40) % 9; k; k--) bad[blen++] = (uint8_t)(r >> (k * 3)); /* garbage */
+    }
+    unsigned exp_ok = 0, exp_err = 0;
+    size_t cs = 0;
+    for (size_t i = 0; i < blen; i++) {
+        if (bad[i] != 0) continue;
+        size_t clen = i - cs + 1;
+        if (clen > 1) {
+            int found = 0;
+            for (int f = 0; f < N && !found; f++)
+                found = start[f + 1] - start[f] == clen && !memcmp(clean + start[f], bad + cs, clen);
+            if (found) exp_ok++;
+            else exp_err++;
+        }
+        cs = i + 1;
+    }
+    open_pair(LINK_FRAMED, 115200, 10.0);
+    send_hello();
+    step(0, mo);
+    assert_int_equal(write(peer, bad, blen), (ssize_t)blen);
+    uint8_t sink[4096];
+    for (int s = 0; s < 2000 && lk.st.rx_bytes < blen + 15; s++) {
+        step(0, mo);
+        drain(sink, sizeof sink);
+    }
+    assert_int_equal(lk.st.rx_bytes, blen + 15); /* every byte, at the baud */
+    assert_int_equal(lk.dec.stats.frames_ok, exp_ok + 1);  /* + the HELLO */
+    assert_int_equal(wire_stats_errors(&lk.dec.stats), exp_err);
+    assert_true(exp_err > 5 && exp_ok > N / 2);
+    close_pair();
+}
+
 int main(void)
 {
     signal(SIGPIPE, SIG_IGN); /* a socket peer gone: EPIPE, as a tty gives EIO */
@@ -255,6 +312,7 @@ int main(void)
         cmocka_unit_test(test_framed_overload_drops_whole),
         cmocka_unit_test(test_handshake_and_motor),
         cmocka_unit_test(test_compat_manager_and_pacing),
+        cmocka_unit_test(test_faults_through_link),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
