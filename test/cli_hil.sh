@@ -18,6 +18,14 @@ else
   echo "SKIP cli_hil AVR vectors: simavr or $B/avr/wire_selftest.elf missing"
 fi
 
+# platformio.ini parses (PlatformIO cannot download its platforms here: no build)
+if command -v pio >/dev/null; then
+  pio project config >"$T/pio" 2>&1 && grep -q "env:megaatmega2560" "$T/pio" && grep -q "env:native" "$T/pio" \
+    && ok "platformio.ini parses" || bad "platformio.ini: $(tail -3 "$T/pio")"
+else
+  echo "SKIP cli_hil platformio.ini check: pio not installed"
+fi
+
 # flag and device errors: 2 for bad flags, 3 for a device that fails
 want_rc() { local want=$1 desc=$2; shift 2
   "$@" >"$T/out" 2>"$T/err"; local rc=$?
