@@ -142,7 +142,10 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
                 reason = "avr_stopped";
                 break;
             }
-            if (lnk.st.stops) break; /* the MCU ended the contest (RUN stop) */
+            if (lnk.st.stops) { /* the MCU ended the contest (RUN stop) */
+                reason = "mcu_stopped";
+                break;
+            }
             if (sim_time_s(&sim) >= cfg.time_limit_s) {
                 reason = "time_limit";
                 break;
@@ -265,7 +268,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     sim_free(&sim);
     *out = o_json;
     if (!strcmp(reason, "avr_stopped")) return EXIT_EXTERNAL;
-    return r->nlaps > 0 && !strcmp(reason, "done") ? EXIT_OK : EXIT_NOT_REACHED;
+    return r->nlaps > 0 && (!strcmp(reason, "done") || !strcmp(reason, "mcu_stopped")) ? EXIT_OK : EXIT_NOT_REACHED;
 }
 
 static int print_json_line(json_t *j)

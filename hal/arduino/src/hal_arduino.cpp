@@ -11,10 +11,11 @@ extern "C" { /* the firmware's headers are plain C */
 static volatile int16_t cmd[2];          /* latest motor command */
 static volatile int32_t enc_zero[2];
 static char log_line[HAL_LOG_MAX + 1];
-static volatile uint8_t log_full;        /* log_line waits to be sent */
+static volatile uint8_t log_state;       /* 0 free, 1 being filled, 2 waits to be sent */
 static volatile uint16_t log_dropped, overruns;
 static volatile uint8_t busy;
 static uint8_t stop_sent;                /* RUN stop sent: the contest is over */
+static uint8_t done_ticks;               /* ticks since the mouse finished */
 static volatile uint16_t worst_tick_half_us; /* longest tick, Timer1 counts (0.5 us at 16 MHz) */
 
 uint32_t hal_micros(void) { return micros(); }
@@ -63,13 +64,20 @@ hal_distance_t hal_distance(uint8_t sensor)
 
 void hal_log(const char *line)
 {
-    if (log_full) { /* one line in flight: drop, never block */
-        log_dropped++;
-        return;
+    uint8_t mine = 0;
+    ATOMIC_BLOCK(ATOMIC_RESTORESTATE) /* fw_loop and fw_tick may both log */
+    {
+        if (log_state == 0) {
+            log_state = 1;
+            mine = 1;
+        } else {
+            log_dropped++; /* one line in flight: drop, never block */
+        }
     }
+    if (!mine) return;
     strncpy(log_line, line, HAL_LOG_MAX);
     log_line[HAL_LOG_MAX] = '\0';
-    log_full = 1;
+    log_state = 2;
 }
 
 void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_t state)
@@ -88,20 +96,23 @@ static void tick()
     m.u.motor.left = cmd[0];
     m.u.motor.right = cmd[1];
     mmLink.send(m);
-    if (!stop_sent && mouse_status()->mode >= MOUSE_DONE) { /* done, no goal or crashed: tell the sim */
-        memset(&m, 0, sizeof m);
-        m.type = WIRE_RUN;
-        m.u.flag.on = 0;
-        mmLink.send(m);
-        stop_sent = 1;
-    }
-    if (log_full) {
+    if (log_state == 2) {
         memset(&m, 0, sizeof m);
         m.type = WIRE_LOG;
         m.u.log.len = (uint8_t)strlen(log_line);
         m.u.log.text = log_line;
         mmLink.send(m);
-        log_full = 0;
+        log_state = 0;
+    }
+    /* done, no goal or crashed: tell the sim, after 25 ticks and an empty log
+     * queue so the mouse's last lines arrive first */
+    if (mouse_status()->mode >= MOUSE_DONE && done_ticks < 25) done_ticks++;
+    if (!stop_sent && done_ticks >= 25 && log_state == 0) {
+        memset(&m, 0, sizeof m);
+        m.type = WIRE_RUN;
+        m.u.flag.on = 0;
+        mmLink.send(m);
+        stop_sent = 1;
     }
 }
 
