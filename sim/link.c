@@ -88,11 +88,11 @@ static void init_common(link_t *l, const link_opts_t *o, double step_s, uint16_t
     for (int i = 0; i < 3; i++) l->tof_seen[i] = UINT64_MAX; /* not yet synced to the sim */
 }
 
-void link_open_fd(link_t *l, int fd, const link_opts_t *o, double step_s, uint16_t tof_range_mm,
+void link_open_fd(link_t *l, int fd, const char *name, const link_opts_t *o, double step_s, uint16_t tof_range_mm,
                   uint32_t counts_per_rev_x100, FILE *report)
 {
     l->fd = fd;
-    snprintf(l->path, sizeof l->path, "fd %d", fd);
+    snprintf(l->path, sizeof l->path, "%s", name);
     init_common(l, o, step_s, tof_range_mm, counts_per_rev_x100, report);
     l->o.pty = 0;
     l->o.device = NULL;

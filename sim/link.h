@@ -83,8 +83,9 @@ int link_parse_protocol(const char *s);
  * HELLO. Returns 0, or -1 with a one-line message in err. */
 int link_open(link_t *l, const link_opts_t *o, double step_s, uint16_t tof_range_mm, uint32_t counts_per_rev_x100,
               FILE *report, char *err, size_t errn);
-/* Same on an already open fd (tests: a socketpair); the link owns fd. */
-void link_open_fd(link_t *l, int fd, const link_opts_t *o, double step_s, uint16_t tof_range_mm,
+/* Same on an already open fd (simavr's UART, tests: a socketpair), named
+ * name in reports; the link owns fd. */
+void link_open_fd(link_t *l, int fd, const char *name, const link_opts_t *o, double step_s, uint16_t tof_range_mm,
                   uint32_t counts_per_rev_x100, FILE *report);
 /* One physics step: queue this step's sensor messages, move at most the
  * baud's bytes each way, decode; motor_out gets the commands to apply (0 when

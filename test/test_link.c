@@ -26,7 +26,7 @@ static void open_pair(int protocol, uint32_t baud, double silence_s)
     fcntl(sv[0], F_SETFL, O_NONBLOCK);
     fcntl(sv[1], F_SETFL, O_NONBLOCK);
     link_opts_t o = { NULL, 0, baud, protocol, silence_s };
-    link_open_fd(&lk, sv[0], &o, 0.001, 1200, 35832, NULL);
+    link_open_fd(&lk, sv[0], "socketpair", &o, 0.001, 1200, 35832, NULL);
     peer = sv[1];
 }
 

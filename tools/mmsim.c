@@ -106,7 +106,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
             sim_free(&sim);
             return EXIT_EXTERNAL;
         }
-        link_open_fd(&lnk, lfd, &o->link, cfg.step_s, (uint16_t)lround(cfg.tof_range_m * 1000.0),
+        link_open_fd(&lnk, lfd, "simavr UART0", &o->link, cfg.step_s, (uint16_t)lround(cfg.tof_range_m * 1000.0),
                      (uint32_t)lround(cfg.encoder_ppr * cfg.gear_ratio * 100.0), o->verbose ? stderr : NULL);
     } else if (o->serial) {
         drv.done = 0;
