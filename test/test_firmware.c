@@ -146,7 +146,7 @@ static void test_mouse_no_goal(void **state)
     maze_init(&m, 4, 4);
     enc[0] = enc[1] = 0;
     now_us = 0;
-    for (int i = 0; i < 3; i++) tof[i] = (hal_distance_t){ 20, 0 }; /* walls all round */
+    for (int i = 0; i < 3; i++) tof[i] = (hal_distance_t){ 20, 0, 0 }; /* walls all round */
     fw_set_maze(&m);
     log_checked = 1;
     expect_string(__wrap_hal_log, line, "explore: goal unreachable");
@@ -170,8 +170,8 @@ static void test_mouse_sets_off(void **state)
     maze_init(&m, 4, 4);
     enc[0] = enc[1] = 0;
     now_us = 0;
-    tof[HAL_TOF_FRONT] = (hal_distance_t){ 1200, 1 };
-    tof[HAL_TOF_LEFT] = tof[HAL_TOF_RIGHT] = (hal_distance_t){ 62, 0 };
+    tof[HAL_TOF_FRONT] = (hal_distance_t){ 1200, 1, 0 };
+    tof[HAL_TOF_LEFT] = tof[HAL_TOF_RIGHT] = (hal_distance_t){ 62, 0, 0 };
     fw_set_maze(&m);
     fw_setup();
     for (int i = 0; i < 50; i++) {

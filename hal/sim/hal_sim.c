@@ -47,11 +47,12 @@ void hal_encoder_reset(void)
 
 hal_distance_t hal_distance(uint8_t sensor)
 {
-    hal_distance_t d = { 0, 1 };
+    hal_distance_t d = { 0, 1, 0 };
     if (!sim || sensor >= HAL_TOF_COUNT) return d;
     const tof_reading_t *r = &sim->tof_last[sensor];
     d.mm = (uint16_t)lround(r->dist_m * 1000.0);
     d.timeout = (uint8_t)r->timeout;
+    d.seq = (uint8_t)sim->tof_count[sensor];
     return d;
 }
 
