@@ -48,7 +48,7 @@
 #define RC_ACCEL_MM_S2 3000.0f       /* ~0.3 g; tyres hold ~1 g at mu 1.0 */
 #define RC_RUN_ACCEL_MM_S2 3000.0f   /* speed runs: 5000 crashed on japan2019 (wheel slip in the stops) */
 #define RC_TURN_DEG_S 600.0f         /* in-place turns */
-#define RC_TURN_ACCEL_DEG_S2 6000.0f
+#define RC_TURN_ACCEL_DEG_S2 3000.0f
 /* Smooth 90-degree turns while moving at RC_SMOOTH_MM_S: the rotation
  * profile ramps to 8 rad/s at 160 rad/s^2 (peak 0.41 g sideways; outer
  * wheel 884 mm/s of the motor's ~1210). The turn starts ~75 mm before the
@@ -66,8 +66,9 @@
 /* without a fresh reading by this distance before a cell's centre, sense
  * with the last one (at most 30 ms = 15 mm old at search speed) */
 #define RC_SENSE_LATEST_MM 60.0f
-/* front-wall alignment works in the last part of a stopping move */
+/* front-wall alignment works in the last part of a move towards a wall */
 #define RC_ALIGN_FROM_MM 90.0f
+#define RC_ALIGN_GAIN 0.35f /* share of the sensor's correction taken per reading */
 
 /* ---- controller gains (tuned in mmsim on japan2018) ---- */
 /* Plant: one command step accelerates the robot by ~22 mm/s^2, and the
