@@ -41,6 +41,16 @@ void motion_turn(motion_t *m, float degrees)
     m->heading_rad += degrees * DEG_TO_RAD;
 }
 
+void motion_turn_about(motion_t *m, float degrees, float offset_mm)
+{
+    motion_turn(m, degrees);
+    /* the centre circles the pivot: the forward profile is the rotation's,
+     * scaled by the radius, so both run in step */
+    float k = offset_mm * DEG_TO_RAD; /* mm of travel per degree */
+    float dist = degrees * k, ak = fabsf(k);
+    if (dist != 0) profile_start(&m->fwd, dist, RC_TURN_DEG_S * ak, 0, RC_TURN_ACCEL_DEG_S2 * ak);
+}
+
 void motion_turn_smooth(motion_t *m, float degrees)
 {
     profile_start(&m->rot, degrees, RC_SMOOTH_DEG_S, 0, RC_SMOOTH_ACCEL_DEG_S2);

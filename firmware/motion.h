@@ -41,6 +41,11 @@ void motion_forward(motion_t *m, float distance_mm, float v_max, float v_end);
 void motion_forward_accel(motion_t *m, float distance_mm, float v_max, float v_end, float accel);
 /* In-place turn, degrees counter-clockwise (negative = clockwise). */
 void motion_turn(motion_t *m, float degrees);
+/* Turn on the spot about a point offset_mm to the left of the robot's
+ * centre on its axle line (negative: to the right): the body's corners
+ * then sweep a circle about that point. Used to turn about the cell's
+ * centre when the robot stopped off the centre line. */
+void motion_turn_about(motion_t *m, float degrees, float offset_mm);
 /* Smooth turn while moving, degrees counter-clockwise: only the rotation
  * profile (RC_SMOOTH_*); the forward profile keeps the speed. */
 void motion_turn_smooth(motion_t *m, float degrees);

@@ -45,6 +45,8 @@ static uint8_t side_seq[2];   /* centring: the side readings last looked at, */
 static uint16_t side_mm[2];   /* their distances */
 static uint8_t side_ok[2];    /* and whether they show a wall where it can be trusted */
 static uint8_t front_seq;     /* front-wall alignment: the reading last used */
+static float last_lateral_mm; /* the last centring estimate of this straight, */
+static uint8_t last_lateral_ok; /* if there was one */
 static uint32_t start_us;
 
 /* The map is set up here rather than copied: a second maze_t would cost
@@ -146,6 +148,10 @@ static void centring(void)
     float el = 0.7071f * ((float)side_mm[0] - RC_SIDE_WALL_MM), er = 0.7071f * ((float)side_mm[1] - RC_SIDE_WALL_MM);
     mo.lateral_mm = side_ok[0] && side_ok[1] ? 0.5f * (el - er) : side_ok[0] ? el : side_ok[1] ? -er : 0.0f;
     mo.lateral_valid = (uint8_t)(side_ok[0] || side_ok[1]);
+    if (mo.lateral_valid) {
+        last_lateral_mm = mo.lateral_mm;
+        last_lateral_ok = 1;
+    }
 }
 
 static void no_centring(void) { mo.lateral_valid = 0; }
@@ -205,6 +211,7 @@ static void mark_readings(void)
     side_seq[1] = tof_seq[HAL_TOF_RIGHT];
     side_ok[0] = side_ok[1] = 0;
     front_seq = tof_seq[HAL_TOF_FRONT];
+    last_lateral_ok = 0;
 }
 
 static int fresh(void)
@@ -241,11 +248,17 @@ static void start_smooth(void)
  * corners sweeping round: the offset from the straight must go first). */
 static void start_turn(int8_t q)
 {
+    /* off the centre line by more than the noise: turn about the centre */
+    float pivot = 0;
+    if (last_lateral_ok && (last_lateral_mm > 1.5f || last_lateral_mm < -1.5f))
+        pivot = last_lateral_mm > RC_PIVOT_MAX_MM ? RC_PIVOT_MAX_MM
+              : last_lateral_mm < -RC_PIVOT_MAX_MM ? -RC_PIVOT_MAX_MM : last_lateral_mm;
+    last_lateral_ok = 0;
     if (q == 2 || q == -2) {
-        motion_turn(&mo, 90.0f);
+        motion_turn_about(&mo, 90.0f, pivot);
         uturn_stage = 1;
     } else {
-        motion_turn(&mo, -90.0f * q); /* a right turn (q = 1) is clockwise */
+        motion_turn_about(&mo, -90.0f * q, pivot); /* a right turn (q = 1) is clockwise */
         uturn_stage = 0;
     }
     waiting = WAIT_TURN;

@@ -49,6 +49,10 @@
 #define RC_RUN_ACCEL_MM_S2 3000.0f   /* speed runs: 5000 crashed on japan2019 (wheel slip in the stops) */
 #define RC_TURN_DEG_S 600.0f         /* in-place turns */
 #define RC_TURN_ACCEL_DEG_S2 3000.0f
+/* On the spot the body's corners sweep 77 mm about the pivot and the cell
+ * leaves 84 mm: 7 mm off the centre line touches a wall. Off-centre stops
+ * turn about the cell's centre instead (up to this far from the robot's). */
+#define RC_PIVOT_MAX_MM 8.0f
 /* Smooth 90-degree turns while moving at RC_SMOOTH_MM_S: the rotation
  * profile ramps to 8 rad/s at 160 rad/s^2 (peak 0.41 g sideways; outer
  * wheel 884 mm/s of the motor's ~1210). The turn starts ~75 mm before the
