@@ -78,14 +78,13 @@ firmware-size: | deps
 	@avr-nm -S --size-sort $(B)/avr/firmware.elf | grep -i ' [bd] ' | tail -8
 firmware: firmware-size
 
-# ---- simulation: the physics with the scripted driver until the firmware's
-# motion layer lands, then the grid-mode exploration of the firmware ----
+# ---- simulation: a whole contest with the firmware in the loop (search,
+# proof, return, speed runs); DRIVER=scripted drives the true best path ----
 MAZE ?= mazes/gen-16x16-s1.txt
 SEED ?= 1
-DRIVER ?= scripted
-sim: deps $(B)/mmsim $(B)/mmmaze
+DRIVER ?= firmware
+sim: deps $(B)/mmsim
 	$(B)/mmsim --maze $(MAZE) --seed $(SEED) --driver $(DRIVER)
-	$(B)/mmmaze explore $(MAZE)
 
 # ---- benchmarks ----
 bench: deps $(B)/mmmaze $(B)/mmsim $(B)/bench_flood $(B)/simavr_cycles $(B)/avr/flood0.elf $(B)/avr/flood10.elf \
