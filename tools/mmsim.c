@@ -24,6 +24,7 @@
 #include "mazedir.h"
 #include "mazefile.h"
 #include "sim.h"
+#include "telem.h"
 
 enum { EXIT_OK = 0, EXIT_NOT_REACHED = 1, EXIT_BAD_INPUT = 2, EXIT_EXTERNAL = 3 };
 
@@ -38,6 +39,7 @@ typedef struct {
     int scripted;       /* --driver scripted */
     int verbose;        /* --verbose: firmware log lines on stderr */
     int jobs;
+    telem_opts_t telem; /* --lcm[=URL], --lcm-log FILE, --lcm-rate HZ */
 } opts_t;
 
 static double wall_now(void)
@@ -73,6 +75,8 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     static maze_t maze;
     static sim_t sim;
     static driver_t drv;
+    static telem_t tel;
+    int tel_on = o->telem.url || o->telem.log_path;
     simcfg_t cfg;
     char err[MAZEFILE_ERR_LEN], hash[65];
 
@@ -97,6 +101,12 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         fw_set_maze(&maze);
         fw_setup();
     }
+    if (tel_on && telem_open(&tel, &o->telem, &sim, err, sizeof err) != 0) {
+        fprintf(stderr, "mmsim: %s\n", err);
+        if (!o->scripted) hal_sim_attach(NULL);
+        sim_free(&sim);
+        return EXIT_EXTERNAL;
+    }
 
     const char *reason = "done";
     double t0 = wall_now(), last_x, last_y, h, progress_s = 0;
@@ -107,8 +117,10 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         if (o->scripted) {
             driver_update(&drv, &sim);
             sim_step(&sim);
+            if (tel_on) telem_step(&tel, &sim);
         } else {
             sim_step(&sim);
+            if (tel_on) telem_step(&tel, &sim);
             fw_tick(); /* control tick every physics step (1 kHz) */
             fw_loop();
             uint8_t mode = mouse_status()->mode;
@@ -150,6 +162,11 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
                 nanosleep(&ts, NULL);
             }
         }
+    }
+    int tel_rc = 0;
+    if (tel_on) {
+        telem_finish(&tel, &sim);
+        if ((tel_rc = telem_close(&tel, err, sizeof err)) != 0) fprintf(stderr, "mmsim: %s\n", err);
     }
     double wall = wall_now() - t0, t = sim_time_s(&sim), x, y;
     world_pose(sim.world, &x, &y, &h);
@@ -197,6 +214,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     }
     sim_free(&sim);
     *out = o_json;
+    if (tel_rc) return EXIT_EXTERNAL;
     return r->nlaps > 0 && !strcmp(reason, "done") ? EXIT_OK : EXIT_NOT_REACHED;
 }
 
@@ -283,6 +301,7 @@ static void usage(FILE *out)
     fputs("usage: mmsim --maze FILE [--config FILE] [--seed N] [--time-limit S] [--runs N]\n"
           "             [--centre-post on|off] [--profile default|paper] [--driver firmware|scripted]\n"
           "             [--json] [--realtime] [--verbose]\n"
+          "             [--lcm[=URL]] [--lcm-log FILE] [--lcm-rate HZ]   (LCM telemetry, sim/telem.h)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
           "       mmsim --print-config [--config FILE]\n"
           "Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure.\n",
@@ -321,9 +340,11 @@ int main(int argc, char **argv)
         { "jobs", required_argument, 0, 'J' },   { "help", no_argument, 0, 'h' },
         { "profile", required_argument, 0, 'F' }, { "driver", required_argument, 0, 'D' },
         { "verbose", no_argument, 0, 'v' },
+        { "lcm", optional_argument, 0, 'L' },    { "lcm-log", required_argument, 0, 'G' },
+        { "lcm-rate", required_argument, 0, 'R' },
         { 0, 0, 0, 0 },
     };
-    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1 }; /* scripted by default until the firmware passes issue 4 */
+    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, { NULL, NULL, 0 } }; /* scripted by default until the firmware passes issue 4 */
     const char *maze = NULL, *batch = NULL;
     double v;
     int c;
@@ -363,6 +384,17 @@ int main(int argc, char **argv)
             o.scripted = !strcmp(optarg, "scripted");
             break;
         case 'v': o.verbose = 1; break;
+        case 'L':
+            o.telem.url = optarg ? optarg : "";
+            if (optarg && !strstr(optarg, "://")) return bad("--lcm: expected an LCM URL like udpm://239.255.76.67:7667?ttl=0, got '%s'", optarg);
+            break;
+        case 'G':
+            if (!*optarg) return bad("%s", "--lcm-log: expected a file name");
+            o.telem.log_path = optarg;
+            break;
+        case 'R':
+            if (num("--lcm-rate", optarg, 1, 1000, &o.telem.rate_hz)) return EXIT_BAD_INPUT;
+            break;
         case 'j': o.json = 1; break;
         case 'r': o.realtime = 1; break;
         case 'P': o.print_config = 1; break;
@@ -378,6 +410,7 @@ int main(int argc, char **argv)
         config_print(&cfg, stdout);
         return EXIT_OK;
     }
+    if (batch && (o.telem.url || o.telem.log_path)) return bad("%s", "--lcm and --lcm-log work on one maze, not with --batch");
     if (batch) return run_batch(&o, batch);
     if (!maze) return bad("%s", "--maze FILE is required");
     json_t *j;

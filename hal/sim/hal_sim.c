@@ -11,11 +11,13 @@ static sim_t *sim;
 static uint64_t sim_time_us;
 static FILE *log_out;
 static int32_t encoder_zero[2];
+static hal_sim_belief_t belief;
 
 void hal_sim_attach(struct sim_s *s)
 {
     sim = s;
     encoder_zero[0] = encoder_zero[1] = 0;
+    belief.seq = 0;
 }
 void hal_sim_set_time_us(uint64_t t_us) { sim_time_us = t_us; }
 void hal_sim_set_log(FILE *out) { log_out = out; }
@@ -63,5 +65,13 @@ void hal_log(const char *line)
 
 void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_t state)
 {
-    (void)map; (void)cell; (void)heading; (void)state; /* telemetry comes with the LCM issue */
+    /* a copy for telemetry (sim/telem.c); the simulation never reads it */
+    belief.seq++;
+    belief.t_us = sim ? sim->step * (uint64_t)llround(sim->cfg.step_s * 1e6) : sim_time_us;
+    belief.map = *map;
+    belief.cell = cell;
+    belief.heading = heading;
+    belief.state = state;
 }
+
+const hal_sim_belief_t *hal_sim_belief(void) { return &belief; }
