@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# cli_lcm_udpm.sh - live telemetry over LCM's udpm (multicast) provider,
+# recorded by lcm-logger, inside a private network namespace this test
+# creates (multicast never leaves it). The live log must hold every message
+# of the run's own --lcm-log. Skipped (exit 77) if no namespace can be made.
+set -u
+S=$(realpath "${MMSIM:-build/mmsim}")
+L=$(realpath "${MMLOG:-build/mmlog}")
+T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
+skip() { echo "SKIP cli_lcm_udpm.sh: $1"; exit 77; }
+command -v unshare >/dev/null || skip "no unshare"
+command -v lcm-logger >/dev/null || skip "no lcm-logger (liblcm-bin)"
+command -v ip >/dev/null || skip "no ip (iproute2)"
+unshare -n true 2>/dev/null || skip "cannot create a network namespace (needs root or user namespaces)"
+
+# Inside the namespace: only lo, with a multicast route. The run is paced at
+# real time (--realtime), 4.5 s of contest, so udpm does not drop bursts.
+unshare -n bash -s "$S" "$L" "$T" "$PWD/mazes/gen-5x5-s1.txt" <<'EOF'
+S=$1 L=$2 T=$3 M=$4
+ip link set lo up && ip link set lo multicast on && ip route add 224.0.0.0/4 dev lo || exit 77
+URL='udpm://239.255.76.67:7667?ttl=0'
+lcm-logger --lcm-url="$URL&recv_buf_size=4194304" -f "$T/live.lcmlog" >"$T/logger.out" 2>&1 &
+logger=$!
+for i in $(seq 50); do [ -e "$T/live.lcmlog" ] && break; sleep 0.1; done
+sleep 0.5 # subscribed
+"$S" --maze "$M" --runs 1 --json --realtime --lcm="$URL" --lcm-log "$T/file.lcmlog" >"$T/run.json"; rc=$?
+sleep 0.5 # the last datagrams reach the logger
+kill -INT $logger; wait $logger
+exit $rc
+EOF
+rc=$?
+[ $rc -eq 77 ] && skip "cannot set up loopback multicast in the namespace"
+[ $rc -eq 0 ] || { echo "FAILED: mmsim with --lcm=udpm:// exited $rc"; cat "$T/logger.out"; exit 1; }
+"$L" --json "$T/file.lcmlog" >"$T/file.json" && "$L" --json "$T/live.lcmlog" >"$T/live.json" || { echo "FAILED: mmlog"; exit 1; }
+python3 - "$T/file.json" "$T/live.json" <<'EOF'
+import json, sys
+f = json.load(open(sys.argv[1])); l = json.load(open(sys.argv[2]))
+print("file log:", {k: v["count"] for k, v in f.items()})
+print("live log:", {k: v["count"] for k, v in l.items()})
+ok = sorted(f) == sorted(l) and all(f[k]["count"] == l[k]["count"] and f[k]["first_s"] == l[k]["first_s"]
+                                    and f[k]["last_s"] == l[k]["last_s"] and l[k]["bad"] == 0 for k in f)
+print("ok: live udpm log equals the file log" if ok else "FAILED: live udpm log differs from the file log")
+sys.exit(0 if ok else 1)
+EOF
