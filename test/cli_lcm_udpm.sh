@@ -2,7 +2,8 @@
 # cli_lcm_udpm.sh - live telemetry over LCM's udpm (multicast) provider,
 # recorded by lcm-logger, inside a private network namespace this test
 # creates (multicast never leaves it). The live log must hold every message
-# of the run's own --lcm-log. Skipped (exit 77) if no namespace can be made.
+# of the run's own --lcm-log, and so must a replay of that log with
+# lcm-logplayer (what `make replay` runs). Skipped (exit 77) if no namespace can be made.
 set -u
 S=$(realpath "${MMSIM:-build/mmsim}")
 L=$(realpath "${MMLOG:-build/mmlog}")
@@ -26,19 +27,33 @@ sleep 0.5 # subscribed
 "$S" --maze "$M" --runs 1 --json --realtime --lcm="$URL" --lcm-log "$T/file.lcmlog" >"$T/run.json"; rc=$?
 sleep 0.5 # the last datagrams reach the logger
 kill -INT $logger; wait $logger
-exit $rc
+[ $rc -eq 0 ] || exit $rc
+# the replay that `make replay` runs, at twice the speed, recorded again
+lcm-logger --lcm-url="$URL&recv_buf_size=4194304" -f "$T/replay.lcmlog" >"$T/logger2.out" 2>&1 &
+logger=$!
+for i in $(seq 50); do [ -e "$T/replay.lcmlog" ] && break; sleep 0.1; done
+sleep 0.5
+lcm-logplayer --speed=2 --lcm-url="$URL" "$T/file.lcmlog" >/dev/null || exit 5
+sleep 0.5
+kill -INT $logger; wait $logger
+exit 0
 EOF
 rc=$?
 [ $rc -eq 77 ] && skip "cannot set up loopback multicast in the namespace"
 [ $rc -eq 0 ] || { echo "FAILED: mmsim with --lcm=udpm:// exited $rc"; cat "$T/logger.out"; exit 1; }
-"$L" --json "$T/file.lcmlog" >"$T/file.json" && "$L" --json "$T/live.lcmlog" >"$T/live.json" || { echo "FAILED: mmlog"; exit 1; }
-python3 - "$T/file.json" "$T/live.json" <<'EOF'
+fails=0
+"$L" --json "$T/file.lcmlog" >"$T/file.json" || { echo "FAILED: mmlog"; exit 1; }
+for what in live replay; do
+  "$L" --json "$T/$what.lcmlog" >"$T/$what.json" || { echo "FAILED: mmlog $what"; exit 1; }
+  python3 - "$T/file.json" "$T/$what.json" "$what" <<'EOF' || fails=1
 import json, sys
-f = json.load(open(sys.argv[1])); l = json.load(open(sys.argv[2]))
+f = json.load(open(sys.argv[1])); l = json.load(open(sys.argv[2])); what = sys.argv[3]
 print("file log:", {k: v["count"] for k, v in f.items()})
-print("live log:", {k: v["count"] for k, v in l.items()})
+print(what, "log:", {k: v["count"] for k, v in l.items()})
 ok = sorted(f) == sorted(l) and all(f[k]["count"] == l[k]["count"] and f[k]["first_s"] == l[k]["first_s"]
                                     and f[k]["last_s"] == l[k]["last_s"] and l[k]["bad"] == 0 for k in f)
-print("ok: live udpm log equals the file log" if ok else "FAILED: live udpm log differs from the file log")
+print(("ok: %s udpm log equals the file log" if ok else "FAILED: %s udpm log differs from the file log") % what)
 sys.exit(0 if ok else 1)
 EOF
+done
+exit $fails
