@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "hal_sim.h"
@@ -70,32 +71,30 @@ int telem_open(telem_t *t, const telem_opts_t *o, const sim_t *s, char *err, siz
     t->failed = 0;
     t->live_errors = 0;
     t->published = 0;
-    if (o->log_path) {
-        if (strlen(o->log_path) >= sizeof t->log_path) {
-            snprintf(err, errlen, "%.200s...: log file name too long", o->log_path);
-            return -1;
-        }
-        errno = 0;
-        t->log = lcm_eventlog_create(o->log_path, "w");
-        if (!t->log) {
-            snprintf(err, errlen, "%s: cannot write the LCM log: %s", o->log_path,
-                     errno ? strerror(errno) : "unknown error");
-            return -1;
-        }
-        strcpy(t->log_path, o->log_path);
+    if (o->log_path && strlen(o->log_path) >= sizeof t->log_path) {
+        snprintf(err, errlen, "%.200s...: log file name too long", o->log_path);
+        return -1;
     }
+    /* the URL first: a bad URL leaves an existing log file untouched */
     if (o->url) {
         char why[200];
         t->lcm = create_quiet(o->url[0] ? o->url : NULL, why, sizeof why);
         if (!t->lcm) {
             snprintf(err, errlen, "%s: cannot open the LCM URL: %s", o->url[0] ? o->url : "LCM's default URL", why);
-            if (t->log) {
-                lcm_eventlog_destroy(t->log);
-                t->log = NULL;
-                unlink(t->log_path);
-            }
             return -1;
         }
+    }
+    if (o->log_path) {
+        errno = 0;
+        t->log = lcm_eventlog_create(o->log_path, "w");
+        if (!t->log) {
+            snprintf(err, errlen, "%s: cannot write the LCM log: %s", o->log_path,
+                     errno ? strerror(errno) : "unknown error");
+            if (t->lcm) lcm_destroy(t->lcm);
+            t->lcm = NULL;
+            return -1;
+        }
+        strcpy(t->log_path, o->log_path);
     }
     return 0;
 }
@@ -288,8 +287,10 @@ int telem_close(telem_t *t, char *err, size_t errlen)
         lcm_eventlog_destroy(t->log);
         t->log = NULL;
         if (t->failed) {
-            snprintf(err, errlen, "%s: writing the LCM log failed; removed", t->log_path);
-            unlink(t->log_path);
+            struct stat st;
+            int regular = stat(t->log_path, &st) == 0 && S_ISREG(st.st_mode);
+            snprintf(err, errlen, "%s: writing the LCM log failed%s", t->log_path, regular ? "; removed" : "");
+            if (regular) unlink(t->log_path); /* never a device or a pipe */
             rc = -1;
         }
     }
