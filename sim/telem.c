@@ -27,8 +27,8 @@ static uint64_t period_steps(double hz, double step_s)
     return p < 1.0 ? 1 : (uint64_t)p;
 }
 
-/* lcm_create, with what LCM prints on stderr caught: its last line goes to
- * why (one error line in all, for the caller to print). */
+/* lcm_create, with what LCM prints on stderr caught and summed up in why
+ * (one error line in all, for the caller to print). */
 static lcm_t *create_quiet(const char *url, char *why, size_t whylen)
 {
     snprintf(why, whylen, "unknown provider, bad address or no multicast route");
@@ -43,11 +43,24 @@ static lcm_t *create_quiet(const char *url, char *why, size_t whylen)
         fflush(stderr);
         dup2(saved, STDERR_FILENO);
         close(saved);
+        /* LCM's "Error: ..." line if any; its multi-line multicast advice
+         * in one line; else its first line */
         char line[200];
+        int first = 1, have_error = 0;
         rewind(tmp);
         while (fgets(line, sizeof line, tmp)) {
             line[strcspn(line, "\r\n")] = '\0';
-            if (line[0]) snprintf(why, whylen, "%s", strncmp(line, "Error: ", 7) ? line : line + 7);
+            if (!line[0] || have_error) continue;
+            if (!strncmp(line, "Error: ", 7)) {
+                snprintf(why, whylen, "%s", line + 7);
+                have_error = 1;
+            } else if (strstr(line, "requires a valid multicast route")) {
+                snprintf(why, whylen, "no multicast route (see http://lcm-proj.github.io/multicast_setup.html)");
+                first = 0;
+            } else if (first) {
+                snprintf(why, whylen, "%s", line);
+                first = 0;
+            }
         }
     }
     if (tmp) fclose(tmp);

@@ -14,6 +14,15 @@ command -v lcm-logger >/dev/null || skip "no lcm-logger (liblcm-bin)"
 command -v ip >/dev/null || skip "no ip (iproute2)"
 unshare -n true 2>/dev/null || skip "cannot create a network namespace (needs root or user namespaces)"
 
+# Without a multicast route: exit 3 and one error line, before any run.
+env -u LCM_DEFAULT_URL unshare -n bash -c 'ip link set lo up; "$1" --maze "$2" --lcm --json' _ "$S" mazes/gen-5x5-s1.txt >"$T/out" 2>"$T/err"
+rc=$?
+if [ $rc -eq 3 ] && [ "$(wc -l <"$T/err")" -eq 1 ] && grep -q "no multicast route" "$T/err" && [ ! -s "$T/out" ]; then
+  echo "ok: no multicast route: exit 3, one line"
+else
+  echo "FAILED: no multicast route: exit $rc, stderr: $(cat "$T/err")"; exit 1
+fi
+
 # Inside the namespace: only lo, with a multicast route. The run is paced at
 # real time (--realtime), 4.5 s of contest, so udpm does not drop bursts.
 unshare -n bash -s "$S" "$L" "$T" "$PWD/mazes/gen-5x5-s1.txt" <<'EOF'
