@@ -6,15 +6,16 @@ SHELL := /bin/bash
 DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev libinih-dev \
 	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev \
 	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev \
-	liblcm-java default-jdk-headless libjchart2d-java xvfb
+	liblcm-java default-jdk-headless libjchart2d-java xvfb \
+	libpng-dev libglfw3-dev libgl-dev
 
 CC      ?= gcc
 STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
 WARN    := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wno-unused-parameter
-INC      = -Ifirmware -Ihal -Ihal/sim -Isim -I$(B)/lcmgen $(shell pkg-config --cflags glib-2.0 ode 2>/dev/null)
+INC      = -Ifirmware -Ihal -Ihal/sim -Isim -I$(B)/lcmgen $(shell pkg-config --cflags glib-2.0 ode libpng 2>/dev/null)
 CFLAGS  ?= -O2 -g
 SAN     := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
-LIBS     = -ljansson -linih -llcm $(shell pkg-config --libs glib-2.0 ode 2>/dev/null) -lm
+LIBS     = -ljansson -linih -llcm $(shell pkg-config --libs glib-2.0 ode libpng glfw3 gl 2>/dev/null) -lm
 B       := build
 
 # LCM message types (package mmlcm): C and Java generated at build time into
@@ -104,8 +105,9 @@ firmware: firmware-size
 MAZE ?= mazes/gen-16x16-s1.txt
 SEED ?= 1
 DRIVER ?= firmware
+# GUI=1: the same run live in the 3D viewer at x8 (a whole contest in ~75 s)
 sim: deps $(B)/mmsim
-	$(B)/mmsim --maze $(MAZE) --seed $(SEED) --driver $(DRIVER)
+	$(B)/mmsim --maze $(MAZE) --seed $(SEED) --driver $(DRIVER) $(if $(GUI),--gui --speed 8)
 
 # ---- LCM tools: the spy on a live URL or a log, a log replayed in real time ----
 # make spy [LCM_URL=udpm://...] [LOG=run.lcmlog]    make replay LOG=run.lcmlog [SPEED=1]

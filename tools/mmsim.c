@@ -25,6 +25,9 @@
 #include "mazefile.h"
 #include "sim.h"
 #include "telem.h"
+#include "outfile.h"
+#include "report.h"
+#include "view.h"
 
 enum { EXIT_OK = 0, EXIT_NOT_REACHED = 1, EXIT_BAD_INPUT = 2, EXIT_EXTERNAL = 3 };
 
@@ -40,6 +43,11 @@ typedef struct {
     int verbose;        /* --verbose: firmware log lines on stderr */
     int jobs;
     telem_opts_t telem; /* --lcm[=URL], --lcm-log FILE, --lcm-rate HZ */
+    const char *report; /* --report FILE.png, or NULL */
+    int gui;            /* --gui: live viewer */
+    const char *shot;   /* --screenshot FILE.png, or NULL */
+    double shot_at_s;   /* --at: sim time of the screenshot */
+    view_opts_t view;   /* --size, --speed, --camera, --port, --baud */
 } opts_t;
 
 static double wall_now(void)
@@ -108,6 +116,20 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         return EXIT_EXTERNAL;
     }
 
+    report_t *rep = o->report ? report_new(&sim) : NULL;
+    view_t *view = NULL;
+    if (o->gui || o->shot) {
+        char verr[400] = "out of memory";
+        view = view_new(&o->view);
+        if (!view || view_open(view, o->gui, verr, sizeof verr) != 0) {
+            fprintf(stderr, "mmsim: %s\n", verr);
+            view_free(view);
+            report_free(rep);
+            hal_sim_attach(NULL);
+            sim_free(&sim);
+            return EXIT_EXTERNAL;
+        }
+    }
     const char *reason = "done";
     double t0 = wall_now(), last_x, last_y, h, progress_s = 0;
     world_pose(sim.world, &last_x, &last_y, &h);
@@ -133,6 +155,15 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
                 reason = "crash_stop";
                 break;
             }
+        }
+        if (rep) report_step(rep, &sim);
+        if (o->gui && view_step(view, &sim)) {
+            reason = "window_closed";
+            break;
+        }
+        if (o->shot && sim_time_s(&sim) >= o->shot_at_s) {
+            reason = "screenshot";
+            break;
         }
         double t = sim_time_s(&sim), x, y;
         if (sim.race.over_time && !sim.race.in_run) {
@@ -168,6 +199,16 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         telem_finish(&tel, &sim);
         if ((tel_rc = telem_close(&tel, err, sizeof err)) != 0) fprintf(stderr, "mmsim: %s\n", err);
     }
+    int view_failed = 0;
+    if (view) {
+        char verr[600];
+        if (o->shot && view_screenshot(view, &sim, o->shot, verr, sizeof verr) != 0) {
+            fprintf(stderr, "mmsim: %s\n", verr);
+            view_failed = 1;
+        }
+        if (o->gui) view_hold(view, &sim);
+        view_free(view);
+    }
     double wall = wall_now() - t0, t = sim_time_s(&sim), x, y;
     world_pose(sim.world, &x, &y, &h);
     const race_t *r = &sim.race;
@@ -191,6 +232,17 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     json_object_set_new(o_json, "exit_reason", json_string(reason));
     json_object_set_new(o_json, "config_hash", json_string(hash));
     json_object_set_new(o_json, "driver", json_string(o->scripted ? "scripted" : "firmware"));
+    int report_failed = 0;
+    if (rep) {
+        char title[300], rerr[600];
+        snprintf(title, sizeof title, "%s  %ux%u  seed %llu  %s driver  exit: %s", maze_path, maze.width, maze.height,
+                 (unsigned long long)o->seed, o->scripted ? "scripted" : "firmware", reason);
+        if (report_write(rep, &sim, o->scripted ? NULL : mouse_map(), o->report, title, rerr, sizeof rerr) != 0) {
+            fprintf(stderr, "%s\n", rerr);
+            report_failed = 1;
+        }
+        report_free(rep);
+    }
     if (!o->scripted) {
         /* the path the mouse would run: best through known-open walls */
         static solve_path_t truth, known;
@@ -215,6 +267,8 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     sim_free(&sim);
     *out = o_json;
     if (tel_rc) return EXIT_EXTERNAL;
+    if (report_failed || view_failed) return EXIT_EXTERNAL;
+    if (o->shot) return EXIT_OK; /* the picture was the point */
     return r->nlaps > 0 && !strcmp(reason, "done") ? EXIT_OK : EXIT_NOT_REACHED;
 }
 
@@ -300,8 +354,10 @@ static void usage(FILE *out)
 {
     fputs("usage: mmsim --maze FILE [--config FILE] [--seed N] [--time-limit S] [--runs N]\n"
           "             [--centre-post on|off] [--profile default|paper] [--driver firmware|scripted]\n"
-          "             [--json] [--realtime] [--verbose]\n"
+          "             [--json] [--realtime] [--verbose] [--report FILE.png]\n"
           "             [--lcm[=URL]] [--lcm-log FILE] [--lcm-rate HZ]   (LCM telemetry, sim/telem.h)\n"
+          "             [--gui [--speed 1..64]] [--screenshot FILE.png [--at SECONDS]]\n"
+          "             [--camera 1|2|3] [--size WxH] [--port DEV] [--baud N]   (viewer)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
           "       mmsim --print-config [--config FILE]\n"
           "Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure.\n",
@@ -342,9 +398,14 @@ int main(int argc, char **argv)
         { "verbose", no_argument, 0, 'v' },
         { "lcm", optional_argument, 0, 'L' },    { "lcm-log", required_argument, 0, 'G' },
         { "lcm-rate", required_argument, 0, 'R' },
+        { "report", required_argument, 0, 1001 },
+        { "gui", no_argument, 0, 1002 },          { "screenshot", required_argument, 0, 'S' },
+        { "at", required_argument, 0, 'A' },     { "camera", required_argument, 0, 'C' },
+        { "size", required_argument, 0, 'Z' },   { "speed", required_argument, 0, 'X' },
+        { "port", required_argument, 0, 'T' },   { "baud", required_argument, 0, 'B' },
         { 0, 0, 0, 0 },
     };
-    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, { NULL, NULL, 0 } }; /* scripted by default until the firmware passes issue 4 */
+    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, { NULL, NULL, 0 }, NULL, 0, NULL, 0, { 1024, 720, 1, 1, "", 115200 } }; /* scripted by default: it honours --runs */
     const char *maze = NULL, *batch = NULL;
     double v;
     int c;
@@ -395,6 +456,32 @@ int main(int argc, char **argv)
         case 'R':
             if (num("--lcm-rate", optarg, 1, 1000, &o.telem.rate_hz)) return EXIT_BAD_INPUT;
             break;
+        case 1001: o.report = optarg; break;
+        case 1002: o.gui = 1; break;
+        case 'S': o.shot = optarg; break;
+        case 'A':
+            if (num("--at", optarg, 0, 86400, &o.shot_at_s)) return EXIT_BAD_INPUT;
+            break;
+        case 'C':
+            if (num("--camera", optarg, 1, 3, &v) || v != floor(v)) return bad("--camera: expected 1, 2 or 3, got '%s'", optarg);
+            o.view.camera = (int)v;
+            break;
+        case 'X':
+            if (num("--speed", optarg, 1, VIEW_SPEED_MAX, &o.view.speed)) return EXIT_BAD_INPUT;
+            break;
+        case 'Z': {
+            int w, h, n = 0;
+            if (sscanf(optarg, "%dx%d%n", &w, &h, &n) != 2 || optarg[n] || w < 64 || h < 64 || w > 8192 || h > 8192)
+                return bad("--size: expected WxH, 64 to 8192 pixels each, got '%s'", optarg);
+            o.view.width = w;
+            o.view.height = h;
+            break;
+        }
+        case 'T': o.view.port = optarg; break;
+        case 'B':
+            if (num("--baud", optarg, 1, 4000000, &v) || v != floor(v)) return bad("--baud: expected a whole number, got '%s'", optarg);
+            o.view.baud = (long)v;
+            break;
         case 'j': o.json = 1; break;
         case 'r': o.realtime = 1; break;
         case 'P': o.print_config = 1; break;
@@ -411,8 +498,21 @@ int main(int argc, char **argv)
         return EXIT_OK;
     }
     if (batch && (o.telem.url || o.telem.log_path)) return bad("%s", "--lcm and --lcm-log work on one maze, not with --batch");
+    if (batch && (o.report || o.gui || o.shot)) return bad("%s", "--report, --gui and --screenshot need --maze (one run), not --batch");
+    if (o.gui && o.shot) return bad("%s", "--gui and --screenshot: one at a time");
     if (batch) return run_batch(&o, batch);
     if (!maze) return bad("%s", "--maze FILE is required");
+    const char *outs[2][2] = { { "--report", o.report }, { "--screenshot", o.shot } };
+    for (int i = 0; i < 2; i++) { /* fail now, not after a ten-minute contest */
+        char perr[600];
+        outfile_t probe;
+        if (!outs[i][1]) continue;
+        if (outfile_open(&probe, outs[i][1], perr, sizeof perr) != 0) {
+            fprintf(stderr, "mmsim: %s: %s\n", outs[i][0], perr);
+            return EXIT_BAD_INPUT;
+        }
+        outfile_abort(&probe);
+    }
     json_t *j;
     int rc = run_one(&o, maze, &j, !o.json);
     if (j && o.json && print_json_line(j) != 0) rc = EXIT_EXTERNAL;
