@@ -109,5 +109,8 @@ printf 'not a log at all\n' >"$T/junk"
 want_rc 2 "mmlog on a non-log" "$L" "$T/junk"
 one_line "mmlog on a non-log"
 want_rc 2 "mmlog on a missing file" "$L" "$T/none.lcmlog"
+head -c $(( $(stat -c %s "$T/r.lcmlog") - 7 )) "$T/r.lcmlog" >"$T/cut.lcmlog"
+want_rc 2 "mmlog on a truncated log" "$L" "$T/cut.lcmlog"
+one_line "mmlog on a truncated log"; grep -q '^MM_POSE ' "$T/out" && ok "summary before the cut" || bad "summary before the cut"
 want_rc 2 "mmlog bad flag" "$L" --warp "$T/r.lcmlog"
 [ $fails -eq 0 ]

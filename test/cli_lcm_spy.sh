@@ -21,9 +21,9 @@ d=90; while [ -e /tmp/.X$d-lock ] && [ $d -lt 140 ]; do d=$((d+1)); done
 Xvfb :$d -screen 0 1024x768x24 -nolisten tcp >"$T/xvfb.out" 2>&1 & xpid=$!
 for i in $(seq 50); do [ -e /tmp/.X11-unix/X$d ] && break; sleep 0.1; done
 [ -e /tmp/.X11-unix/X$d ] || skip "Xvfb did not start: $(head -1 "$T/xvfb.out")"
-# the log (25 s of contest, every channel within the first 6 s) in real time;
-# spy stopped after 10 s, before the end of the log (where LCM's Java log
-# provider prints an EOFException)
+# the log (about 18 s of contest, every channel within the first 5 s) in
+# real time; spy stopped after 10 s. At the end of a log LCM's Java log
+# provider prints an EOFException: that one is not a failure.
 DISPLAY=:$d timeout 10 java -Djava.net.preferIPv4Stack=true -cp "/usr/share/java/lcm.jar:/usr/share/java/jchart2d.jar:$JAR" \
   lcm.spy.Spy --lcm-url="file://$T/run.lcmlog?speed=1" >"$T/spy.out" 2>&1
 rc=$?
@@ -32,5 +32,5 @@ ntypes=$(ls lcm/*.lcm | wc -l)
 fails=0
 [ $rc -eq 124 ] && echo "ok: spy ran until stopped" || { echo "FAILED: spy exited $rc before the time limit"; fails=1; }
 grep -q "^Found $ntypes LCM types" "$T/spy.out" && echo "ok: spy found the $ntypes mmlcm types" || { echo "FAILED: types not found"; fails=1; }
-grep -qi 'exception\|error' "$T/spy.out" && { echo "FAILED: spy printed an error"; fails=1; } || echo "ok: no exception"
+grep -v 'java.io.EOFException: EOF' "$T/spy.out" | grep -qi 'exception\|error' && { echo "FAILED: spy printed an error"; fails=1; } || echo "ok: no exception"
 exit $fails

@@ -7,7 +7,8 @@
  * Times are the messages' utime (simulation time) for the mmlcm channels,
  * the log's event timestamp for any other channel. A message of an mmlcm
  * channel that does not decode is counted as bad.
- * Exit codes: 0 ok, 2 bad input (unreadable, not an LCM log, bad messages). */
+ * Exit codes: 0 ok, 2 bad input (unreadable, not an LCM log, bad messages,
+ * a truncated or corrupt event: what came before it is still summed up). */
 #include <jansson.h>
 #include <lcm/eventlog.h>
 #include <stdio.h>
@@ -153,10 +154,11 @@ int main(int argc, char **argv)
     }
     static chan_t ch[MAX_CHANNELS];
     int nch = 0, rc = 0;
-    long events = 0;
+    long events = 0, good_end = 0; /* byte after the last whole event */
     lcm_eventlog_event_t *ev;
     while ((ev = lcm_eventlog_read_next_event(log)) != NULL) {
         events++;
+        good_end = ftell(log->f);
         int64_t ut = ev->timestamp;
         json_t *j = NULL;
         int d = decode(ev->channel, ev->data, ev->datalen, &ut, dump && !strcmp(dump, ev->channel) ? &j : NULL);
@@ -192,6 +194,11 @@ int main(int argc, char **argv)
     if (events == 0 && st.st_size > 0) {
         fprintf(stderr, "%s: not an LCM log (no event found)\n", path);
         return 2;
+    }
+    if (rc == 0 && good_end < (long)st.st_size) {
+        fprintf(stderr, "%s: truncated or corrupt event at byte %ld of %lld (summary of the %ld events before it)\n",
+                path, good_end, (long long)st.st_size, events);
+        rc = 2;
     }
     json_t *out = json_object();
     if (!dump && !as_json) printf("%-16s %8s %10s %12s %12s %6s\n", "channel", "count", "rate_hz", "first_s", "last_s", "bad");
