@@ -5,21 +5,31 @@ SHELL := /bin/bash
 # Debian packages the build and tests need; `make deps` installs the missing ones.
 DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev libinih-dev \
 	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev \
-	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev
+	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev \
+	liblcm-java default-jdk-headless libjchart2d-java xvfb \
+	libpng-dev libglfw3-dev libgl-dev
 
 CC      ?= gcc
 STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
 WARN    := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wno-unused-parameter
-INC      = -Ifirmware -Ihal -Ihal/sim -Ihal/wire -Isim $(shell pkg-config --cflags glib-2.0 ode 2>/dev/null)
+INC      = -Ifirmware -Ihal -Ihal/sim -Ihal/wire -Isim -I$(B)/lcmgen $(shell pkg-config --cflags glib-2.0 ode libpng 2>/dev/null)
 CFLAGS  ?= -O2 -g
 SAN     := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
-LIBS     = -ljansson -linih $(shell pkg-config --libs glib-2.0 ode 2>/dev/null) -lsimavr -lelf -lm
+LIBS     = -ljansson -linih -llcm $(shell pkg-config --libs glib-2.0 ode libpng glfw3 gl 2>/dev/null) -lsimavr -lelf -lm
 B       := build
 
+# LCM message types (package mmlcm): C and Java generated at build time into
+# $(B)/lcmgen and $(B)/lcmjava, never committed.
+LCM_TYPES := $(wildcard lcm/*.lcm)
+LCM_C     := $(patsubst lcm/%.lcm,$(B)/lcmgen/mmlcm_%.c,$(LCM_TYPES))
+LCM_STAMP := $(B)/lcmgen/.stamp
+LCM_JAR   := $(B)/lcmjava/mmlcm-types.jar
+JAVA_CP   := /usr/share/java/lcm.jar:/usr/share/java/jchart2d.jar:$(LCM_JAR)
+
 FW_SRC   := $(wildcard firmware/*.c)
-HOST_SRC := $(wildcard sim/*.c) hal/sim/hal_sim.c hal/wire/wire.c
+HOST_SRC := $(wildcard sim/*.c) hal/sim/hal_sim.c hal/wire/wire.c $(LCM_C)
 LIB_SRC  := $(FW_SRC) $(HOST_SRC)
-TOOLS    := mmmaze mmsim
+TOOLS    := mmmaze mmsim mmlog
 TEST_SRC := $(wildcard test/test_*.c)
 TESTS    := $(patsubst test/%.c,$(B)/test/%,$(TEST_SRC))
 
@@ -30,7 +40,7 @@ WRAP_test_firmware := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros -Wl,--wrap=hal_mo
 # Extra sources a test links (shared test vectors).
 EXTRA_test_wire := test/wire_vectors.c
 
-.PHONY: all deps test sim bench fuzz firmware firmware-size arduino arduino-lib mazes clean tools
+.PHONY: all deps test sim bench fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay
 all: tools
 
 deps:
@@ -43,8 +53,20 @@ deps:
 	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null || { echo "make deps: apt-get failed" >&2; exit 3; }; \
 	fi
 
+# ---- LCM types ----
+$(LCM_STAMP): $(LCM_TYPES) | deps
+	@mkdir -p $(dir $@)
+	lcm-gen -c --c-cpath $(B)/lcmgen --c-hpath $(B)/lcmgen $(LCM_TYPES)
+	@touch $@
+$(LCM_C): $(LCM_STAMP)
+$(LCM_JAR): $(LCM_TYPES) | deps
+	@rm -rf $(B)/lcmjava; mkdir -p $(B)/lcmjava/classes
+	lcm-gen -j --jpath $(B)/lcmjava/src $(LCM_TYPES)
+	javac -nowarn -cp /usr/share/java/lcm.jar -d $(B)/lcmjava/classes $$(find $(B)/lcmjava/src -name '*.java')
+	jar cf $@ -C $(B)/lcmjava/classes .
+
 # ---- host library and tools (optimised, no sanitizers) ----
-$(B)/host/%.o: %.c | deps
+$(B)/host/%.o: %.c | deps $(LCM_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) -MMD -MP -c $< -o $@
 $(B)/libmm.a: $(patsubst %.c,$(B)/host/%.o,$(LIB_SRC))
@@ -54,7 +76,7 @@ $(B)/%: tools/%.c $(B)/libmm.a
 tools: $(addprefix $(B)/,$(TOOLS))
 
 # ---- tests (sanitized) ----
-$(B)/san/%.o: %.c | deps
+$(B)/san/%.o: %.c | deps $(LCM_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) -MMD -MP -c $< -o $@
 $(B)/libmm_san.a: $(patsubst %.c,$(B)/san/%.o,$(LIB_SRC))
@@ -66,8 +88,9 @@ $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
 
-test: deps $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) firmware-size $(B)/avr/wire_selftest.elf arduino $(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf
-	@MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
+test: deps $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
+	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf
+	@MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim MMLOG=$(B)/san-tools/mmlog LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
 # ---- AVR build of the firmware (ATmega328P) ----
 AVR_CC    := avr-gcc
@@ -146,14 +169,25 @@ arduino-lib:
 	cp firmware/*.c firmware/*.h $(B)/arduino-lib/Micromouse/src/
 	@echo "$(B)/arduino-lib/Micromouse: copy it to your Arduino libraries folder (see hal/arduino/README.md)"
 
-# ---- simulation: the physics with the scripted driver until the firmware's
-# motion layer lands, then the grid-mode exploration of the firmware ----
+# ---- simulation: a whole contest with the firmware in the loop (search,
+# proof, return, speed runs); DRIVER=scripted drives the true best path ----
 MAZE ?= mazes/gen-16x16-s1.txt
 SEED ?= 1
-DRIVER ?= scripted
-sim: deps $(B)/mmsim $(B)/mmmaze
-	$(B)/mmsim --maze $(MAZE) --seed $(SEED) --driver $(DRIVER)
-	$(B)/mmmaze explore $(MAZE)
+DRIVER ?= firmware
+# GUI=1: the same run live in the 3D viewer at x8 (a whole contest in ~75 s)
+sim: deps $(B)/mmsim
+	$(B)/mmsim --maze $(MAZE) --seed $(SEED) --driver $(DRIVER) $(if $(GUI),--gui --speed 8)
+
+# ---- LCM tools: the spy on a live URL or a log, a log replayed in real time ----
+# make spy [LCM_URL=udpm://...] [LOG=run.lcmlog]    make replay LOG=run.lcmlog [SPEED=1]
+LCM_URL ?=
+SPEED ?= 1
+spy: $(LCM_JAR)
+	java -Djava.net.preferIPv4Stack=true -cp $(JAVA_CP) lcm.spy.Spy \
+	  $(if $(LOG),--lcm-url='file://$(abspath $(LOG))?speed=$(SPEED)',$(if $(LCM_URL),--lcm-url='$(LCM_URL)'))
+replay:
+	@[ -n "$(LOG)" ] || { echo "make replay: LOG=FILE is required" >&2; exit 2; }
+	lcm-logplayer --speed=$(SPEED) $(if $(LCM_URL),--lcm-url='$(LCM_URL)') $(LOG)
 
 # ---- benchmarks ----
 bench: deps $(B)/mmmaze $(B)/mmsim $(B)/bench_flood $(B)/simavr_cycles $(B)/avr/flood0.elf $(B)/avr/flood10.elf \

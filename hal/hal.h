@@ -18,6 +18,8 @@
  *   the default robot (12 PPR x 29.86 gear).
  * - hal_distance: the latest reading of a ToF sensor in mm and its timeout
  *   flag (nothing within range); each sensor updates about every 30 ms.
+ *   seq counts the readings (the sensor's data-ready events), so the
+ *   firmware can wait for one taken after a given moment, e.g. after a turn.
  * - hal_log: one text line without the trailing newline, at most
  *   HAL_LOG_MAX bytes; the backend may print, forward or drop it, and must
  *   not block for longer than it takes to queue it.
@@ -51,6 +53,7 @@ enum { HAL_TOF_LEFT = 0, HAL_TOF_FRONT = 1, HAL_TOF_RIGHT = 2, HAL_TOF_COUNT = 3
 typedef struct {
     uint16_t mm;     /* distance, millimetres */
     uint8_t timeout; /* 1 = nothing within range (mm is then the range) */
+    uint8_t seq;     /* +1 (mod 256) with every new reading of this sensor */
 } hal_distance_t;
 
 struct maze_s;

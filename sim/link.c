@@ -341,13 +341,13 @@ void link_step(link_t *l, struct sim_s *s)
     io.t_us = (uint32_t)(s->step * (uint64_t)llround(s->cfg.step_s * 1e6));
     io.encoder[0] = s->encoder[WORLD_LEFT].count;
     io.encoder[1] = s->encoder[WORLD_RIGHT].count;
-    for (int i = 0; i < 3; i++) { /* a new reading moved the sensor's next step */
-        if (s->tof_next_step[i] != l->tof_seen[i] && l->tof_seen[i] != UINT64_MAX && s->tof_enabled) {
+    for (int i = 0; i < 3; i++) { /* a new reading bumped the sensor's count */
+        if (l->tof_seen[i] != UINT64_MAX && s->tof_count[i] != l->tof_seen[i]) {
             io.tof_new[i] = 1;
             io.tof_mm[i] = (uint16_t)lround(s->tof_last[i].dist_m * 1000.0);
             io.tof_timeout[i] = (uint8_t)s->tof_last[i].timeout;
         }
-        l->tof_seen[i] = s->tof_next_step[i];
+        l->tof_seen[i] = (uint64_t)s->tof_count[i];
     }
     int16_t mo[2];
     s->tof_enabled = link_step_io(l, &io, mo);

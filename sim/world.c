@@ -327,13 +327,21 @@ double world_ray(world_t *w, double x_m, double y_m, double z_m, double dir_rad,
     return w->ray_best;
 }
 
-double world_tof_ray(world_t *w, int s, double max_m)
+void world_tof_origin(const world_t *w, int s, double pos_m[3], double *dir_rad)
 {
     dVector3 p, f;
     double a = w->tof_dir[s];
     dBodyGetRelPointPos(w->chassis, w->tof_pos[s][0], w->tof_pos[s][1], w->tof_pos[s][2], p);
     dBodyVectorToWorld(w->chassis, cos(a), sin(a), 0, f);
-    return world_ray(w, p[0], p[1], p[2], atan2(f[1], f[0]), max_m);
+    for (int k = 0; k < 3; k++) pos_m[k] = p[k];
+    *dir_rad = atan2(f[1], f[0]);
+}
+
+double world_tof_ray(world_t *w, int s, double max_m)
+{
+    double p[3], dir;
+    world_tof_origin(w, s, p, &dir);
+    return world_ray(w, p[0], p[1], p[2], dir, max_m);
 }
 
 int world_touching(const world_t *w) { return w->touched_last; }

@@ -44,6 +44,9 @@ double world_wheel_rate(const world_t *w, int side);
 /* True distance from sensor s's origin to the nearest wall or post along
  * its ray, in metres; -1 if nothing within max_m. */
 double world_tof_ray(world_t *w, int s, double max_m);
+/* Where sensor s sits (world point, m) and the way it looks (heading,
+ * rad), for drawing its ray. */
+void world_tof_origin(const world_t *w, int s, double pos_m[3], double *dir_rad);
 /* Cast a ray from any point in any horizontal direction (for tests). */
 double world_ray(world_t *w, double x_m, double y_m, double z_m, double dir_rad, double max_m);
 

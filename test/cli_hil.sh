@@ -38,7 +38,7 @@ want_rc 2 "fractional baud" "$S" --maze $M --pty --baud 115200.5
 want_rc 2 "bad protocol" "$S" --maze $M --pty --protocol morse
 grep -q "^mmsim: --protocol: expected framed or compat, got 'morse'" "$T/err" && ok "protocol error line" || bad "protocol error line: $(cat "$T/err")"
 want_rc 2 "serial and pty" "$S" --maze $M --pty --serial /dev/null
-want_rc 2 "baud without a link" "$S" --maze $M --baud 115200
+want_rc 2 "protocol without a link" "$S" --maze $M --protocol compat
 want_rc 2 "bad silence" "$S" --maze $M --pty --silence-ms 0
 want_rc 2 "serial with batch" "$S" --batch mazes --serial /dev/null
 want_rc 3 "missing device" "$S" --maze $M --serial "$T/no-such-tty"

@@ -27,6 +27,10 @@
 #include "mazedir.h"
 #include "mazefile.h"
 #include "sim.h"
+#include "telem.h"
+#include "outfile.h"
+#include "report.h"
+#include "view.h"
 
 enum { EXIT_OK = 0, EXIT_NOT_REACHED = 1, EXIT_BAD_INPUT = 2, EXIT_EXTERNAL = 3 };
 
@@ -41,7 +45,13 @@ typedef struct {
     int scripted;       /* --driver scripted */
     int verbose;        /* --verbose: firmware log lines on stderr */
     int jobs;
-    int serial;         /* --serial / --pty / --avr: the MCU drives over a serial link */
+    telem_opts_t telem; /* --lcm[=URL], --lcm-log FILE, --lcm-rate HZ */
+    const char *report; /* --report FILE.png, or NULL */
+    int gui;            /* --gui: live viewer */
+    const char *shot;   /* --screenshot FILE.png, or NULL */
+    double shot_at_s;   /* --at: sim time of the screenshot */
+    view_opts_t view;   /* --size, --speed, --camera, --port, --baud */
+    int serial;         /* --serial/--port, --pty or --avr: an MCU drives over a serial link */
     link_opts_t link;
     const char *avr_elf, *avr_mcu; /* --avr ELF: processor in the loop (simavr), --mcu */
     uint32_t avr_f_cpu;            /* --f-cpu, Hz (0 = from the ELF or 16 MHz) */
@@ -80,6 +90,8 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     static maze_t maze;
     static sim_t sim;
     static driver_t drv;
+    static telem_t tel;
+    int tel_on = o->telem.url || o->telem.log_path;
     simcfg_t cfg;
     char err[MAZEFILE_ERR_LEN], hash[65];
 
@@ -97,6 +109,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     static link_t lnk;
     static pil_t pil;
     char lerr[400];
+    view_opts_t vo = o->view;
     if (o->avr_elf) {
         int lfd;
         drv.done = 0;
@@ -127,7 +140,31 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         fw_set_maze(&maze);
         fw_setup();
     }
+    if (tel_on && telem_open(&tel, &o->telem, &sim, err, sizeof err) != 0) {
+        fprintf(stderr, "mmsim: %s\n", err);
+        if (!o->scripted) hal_sim_attach(NULL);
+        sim_free(&sim);
+        return EXIT_EXTERNAL;
+    }
 
+    report_t *rep = o->report ? report_new(&sim) : NULL;
+    view_t *view = NULL;
+    if (o->gui || o->shot) {
+        char verr[400] = "out of memory";
+        if (o->serial) { /* the HUD shows the link's port and baud */
+            vo.port = lnk.path;
+            vo.baud = (long)lnk.o.baud;
+        }
+        view = view_new(&vo);
+        if (!view || view_open(view, o->gui, verr, sizeof verr) != 0) {
+            fprintf(stderr, "mmsim: %s\n", verr);
+            view_free(view);
+            report_free(rep);
+            hal_sim_attach(NULL);
+            sim_free(&sim);
+            return EXIT_EXTERNAL;
+        }
+    }
     const char *reason = "done";
     double t0 = wall_now(), last_x, last_y, h, progress_s = 0;
     world_pose(sim.world, &last_x, &last_y, &h);
@@ -137,6 +174,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         if (o->serial) { /* HIL: the contest lasts the time limit */
             sim_step(&sim);
             link_step(&lnk, &sim);
+            if (tel_on) telem_step(&tel, &sim);
             if (o->avr_elf && pil_step(&pil, lerr, sizeof lerr) != 0) {
                 fprintf(stderr, "mmsim: %s: %s\n", o->avr_elf, lerr);
                 reason = "avr_stopped";
@@ -153,8 +191,10 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         } else if (o->scripted) {
             driver_update(&drv, &sim);
             sim_step(&sim);
+            if (tel_on) telem_step(&tel, &sim);
         } else {
             sim_step(&sim);
+            if (tel_on) telem_step(&tel, &sim);
             fw_tick(); /* control tick every physics step (1 kHz) */
             fw_loop();
             uint8_t mode = mouse_status()->mode;
@@ -167,6 +207,15 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
                 reason = "crash_stop";
                 break;
             }
+        }
+        if (rep) report_step(rep, &sim);
+        if (o->gui && view_step(view, &sim)) {
+            reason = "window_closed";
+            break;
+        }
+        if (o->shot && sim_time_s(&sim) >= o->shot_at_s) {
+            reason = "screenshot";
+            break;
         }
         double t = sim_time_s(&sim), x, y;
         if (sim.race.over_time && !sim.race.in_run) {
@@ -197,6 +246,21 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
             }
         }
     }
+    int tel_rc = 0;
+    if (tel_on) {
+        telem_finish(&tel, &sim);
+        if ((tel_rc = telem_close(&tel, err, sizeof err)) != 0) fprintf(stderr, "mmsim: %s\n", err);
+    }
+    int view_failed = 0;
+    if (view) {
+        char verr[600];
+        if (o->shot && view_screenshot(view, &sim, o->shot, verr, sizeof verr) != 0) {
+            fprintf(stderr, "mmsim: %s\n", verr);
+            view_failed = 1;
+        }
+        if (o->gui) view_hold(view, &sim);
+        view_free(view);
+    }
     double wall = wall_now() - t0, t = sim_time_s(&sim), x, y;
     world_pose(sim.world, &x, &y, &h);
     const race_t *r = &sim.race;
@@ -219,7 +283,8 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
                                                         round(y * 1e6) / 1e6, "heading_rad", round(h * 1e6) / 1e6));
     json_object_set_new(o_json, "exit_reason", json_string(reason));
     json_object_set_new(o_json, "config_hash", json_string(hash));
-    json_object_set_new(o_json, "driver", json_string(o->serial ? "serial" : o->scripted ? "scripted" : "firmware"));
+    const char *driver_name = o->serial ? "serial" : o->scripted ? "scripted" : "firmware";
+    json_object_set_new(o_json, "driver", json_string(driver_name));
     if (o->serial) {
         json_object_set_new(o_json, "link", link_json(&lnk));
         link_close(&lnk);
@@ -235,7 +300,19 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
                                                          (json_int_t)free_min));
             pil_close(&pil);
         }
-    } else if (!o->scripted) {
+    }
+    int report_failed = 0;
+    if (rep) {
+        char title[300], rerr[600];
+        snprintf(title, sizeof title, "%s  %ux%u  seed %llu  %s driver  exit: %s", maze_path, maze.width, maze.height,
+                 (unsigned long long)o->seed, driver_name, reason);
+        if (report_write(rep, &sim, o->scripted || o->serial ? NULL : mouse_map(), o->report, title, rerr, sizeof rerr) != 0) {
+            fprintf(stderr, "%s\n", rerr);
+            report_failed = 1;
+        }
+        report_free(rep);
+    }
+    if (!o->scripted && !o->serial) {
         /* the path the mouse would run: best through known-open walls */
         static solve_path_t truth, known;
         int ok_truth = solve_best(&maze, 0, &truth) == 0, ok_known = solve_best(mouse_map(), 0, &known) == 0;
@@ -267,6 +344,9 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     }
     sim_free(&sim);
     *out = o_json;
+    if (tel_rc) return EXIT_EXTERNAL;
+    if (report_failed || view_failed) return EXIT_EXTERNAL;
+    if (o->shot) return EXIT_OK; /* the picture was the point */
     if (!strcmp(reason, "avr_stopped")) return EXIT_EXTERNAL;
     return r->nlaps > 0 && (!strcmp(reason, "done") || !strcmp(reason, "mcu_stopped")) ? EXIT_OK : EXIT_NOT_REACHED;
 }
@@ -353,10 +433,13 @@ static void usage(FILE *out)
 {
     fputs("usage: mmsim --maze FILE [--config FILE] [--seed N] [--time-limit S] [--runs N]\n"
           "             [--centre-post on|off] [--profile default|paper] [--driver firmware|scripted]\n"
-          "             [--json] [--realtime] [--verbose]\n"
-          "       mmsim --maze FILE --serial DEV|--pty [--baud N] [--protocol framed|compat] [--silence-ms N]\n"
-          "             (hardware in the loop: an MCU drives over a serial link, in real time;\n"
-          "              --pty creates a pseudo-terminal and prints its path; docs/PROTOCOL.md)\n"
+          "             [--json] [--realtime] [--verbose] [--report FILE.png]\n"
+          "             [--lcm[=URL]] [--lcm-log FILE] [--lcm-rate HZ]   (LCM telemetry, sim/telem.h)\n"
+          "             [--gui [--speed 1..64]] [--screenshot FILE.png [--at SECONDS]]\n"
+          "             [--camera 1|2|3] [--size WxH]   (viewer)\n"
+          "       mmsim --maze FILE --serial DEV|--port DEV|--pty [--baud N] [--protocol framed|compat]\n"
+          "             [--silence-ms N]   (hardware in the loop: an MCU drives over a serial link,\n"
+          "             in real time; --pty creates a pseudo-terminal and prints its path; docs/PROTOCOL.md)\n"
           "       mmsim --maze FILE --avr ELF [--mcu NAME] [--f-cpu HZ] [--baud N] [--protocol P]\n"
           "             (processor in the loop: the AVR image runs in simavr, in lockstep)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
@@ -397,14 +480,21 @@ int main(int argc, char **argv)
         { "jobs", required_argument, 0, 'J' },   { "help", no_argument, 0, 'h' },
         { "profile", required_argument, 0, 'F' }, { "driver", required_argument, 0, 'D' },
         { "verbose", no_argument, 0, 'v' },
-        { "serial", required_argument, 0, 'S' }, { "pty", no_argument, 0, 'Y' },
-        { "baud", required_argument, 0, 'B' },   { "protocol", required_argument, 0, 'R' },
-        { "silence-ms", required_argument, 0, 'Q' },
-        { "avr", required_argument, 0, 'A' },    { "mcu", required_argument, 0, 'M' },
-        { "f-cpu", required_argument, 0, 'f' },
+        { "lcm", optional_argument, 0, 'L' },    { "lcm-log", required_argument, 0, 'G' },
+        { "lcm-rate", required_argument, 0, 'R' },
+        { "report", required_argument, 0, 1001 },
+        { "gui", no_argument, 0, 1002 },          { "screenshot", required_argument, 0, 'S' },
+        { "at", required_argument, 0, 'A' },     { "camera", required_argument, 0, 'C' },
+        { "size", required_argument, 0, 'Z' },   { "speed", required_argument, 0, 'X' },
+        { "port", required_argument, 0, 'T' },   { "baud", required_argument, 0, 'B' },
+        { "serial", required_argument, 0, 'T' }, { "pty", no_argument, 0, 2001 },
+        { "protocol", required_argument, 0, 2002 }, { "silence-ms", required_argument, 0, 2003 },
+        { "avr", required_argument, 0, 2004 },   { "mcu", required_argument, 0, 2005 },
+        { "f-cpu", required_argument, 0, 2006 },
         { 0, 0, 0, 0 },
     };
-    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, 0, { NULL, 0, 0, LINK_FRAMED, 0 }, NULL, NULL, 0 }; /* scripted by default until the firmware passes issue 4 */
+    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, { NULL, NULL, 0 }, NULL, 0, NULL, 0, { 1024, 720, 1, 1, "", 115200 },
+                 0, { NULL, 0, 0, LINK_FRAMED, 0 }, NULL, NULL, 0 }; /* scripted by default: it honours --runs */
     const char *maze = NULL, *batch = NULL;
     double v;
     int c, link_flags = 0;
@@ -444,29 +534,63 @@ int main(int argc, char **argv)
             o.scripted = !strcmp(optarg, "scripted");
             break;
         case 'v': o.verbose = 1; break;
-        case 'S': o.link.device = optarg; break;
-        case 'A': o.avr_elf = optarg; break;
-        case 'M': o.avr_mcu = optarg; link_flags++; break;
-        case 'f':
-            if (num("--f-cpu", optarg, 1000, 100e6, &v)) return EXIT_BAD_INPUT;
-            o.avr_f_cpu = (uint32_t)v;
-            link_flags++;
+        case 'L':
+            o.telem.url = optarg ? optarg : "";
+            if (optarg && !strstr(optarg, "://")) return bad("--lcm: expected an LCM URL like udpm://239.255.76.67:7667?ttl=0, got '%s'", optarg);
             break;
-        case 'Y': o.link.pty = 1; break;
-        case 'B':
+        case 'G':
+            if (!*optarg) return bad("%s", "--lcm-log: expected a file name");
+            o.telem.log_path = optarg;
+            break;
+        case 'R':
+            if (num("--lcm-rate", optarg, 1, 1000, &o.telem.rate_hz)) return EXIT_BAD_INPUT;
+            break;
+        case 1001: o.report = optarg; break;
+        case 1002: o.gui = 1; break;
+        case 'S': o.shot = optarg; break;
+        case 'A':
+            if (num("--at", optarg, 0, 86400, &o.shot_at_s)) return EXIT_BAD_INPUT;
+            break;
+        case 'C':
+            if (num("--camera", optarg, 1, 3, &v) || v != floor(v)) return bad("--camera: expected 1, 2 or 3, got '%s'", optarg);
+            o.view.camera = (int)v;
+            break;
+        case 'X':
+            if (num("--speed", optarg, 1, VIEW_SPEED_MAX, &o.view.speed)) return EXIT_BAD_INPUT;
+            break;
+        case 'Z': {
+            int w, h, n = 0;
+            if (sscanf(optarg, "%dx%d%n", &w, &h, &n) != 2 || optarg[n] || w < 64 || h < 64 || w > 8192 || h > 8192)
+                return bad("--size: expected WxH, 64 to 8192 pixels each, got '%s'", optarg);
+            o.view.width = w;
+            o.view.height = h;
+            break;
+        }
+        case 'T': /* --serial DEV or --port DEV (the viewer shows it) */
+            o.link.device = optarg;
+            o.view.port = optarg;
+            break;
+        case 'B': /* the link's rate, shown by the viewer */
             if (num("--baud", optarg, 50, SERIAL_BAUD_MAX, &v)) return EXIT_BAD_INPUT;
             if (v != floor(v)) return bad("--baud: expected a whole number of bits/s, got '%s'", optarg);
             o.link.baud = (uint32_t)v;
-            link_flags++;
+            o.view.baud = (long)v;
             break;
-        case 'R':
+        case 2001: o.link.pty = 1; break;
+        case 2002:
             if ((o.link.protocol = link_parse_protocol(optarg)) < 0) return bad("--protocol: expected framed or compat, got '%s'", optarg);
             link_flags++;
             break;
-        case 'Q':
+        case 2003:
             if (num("--silence-ms", optarg, 1, 60000, &v)) return EXIT_BAD_INPUT;
             o.link.silence_s = v / 1000.0;
             link_flags++;
+            break;
+        case 2004: o.avr_elf = optarg; break;
+        case 2005: o.avr_mcu = optarg; break;
+        case 2006:
+            if (num("--f-cpu", optarg, 1000, 100e6, &v)) return EXIT_BAD_INPUT;
+            o.avr_f_cpu = (uint32_t)v;
             break;
         case 'j': o.json = 1; break;
         case 'r': o.realtime = 1; break;
@@ -478,9 +602,8 @@ int main(int argc, char **argv)
     }
     if (optind != argc) return bad("unexpected argument '%s'", argv[optind]);
     o.serial = o.link.device || o.link.pty || o.avr_elf;
-    if (!!o.link.device + o.link.pty + !!o.avr_elf > 1) return bad("%s", "--serial, --pty and --avr exclude each other");
-    if (!o.serial && link_flags)
-        return bad("%s", "--baud, --protocol, --silence-ms, --mcu and --f-cpu need --serial DEV, --pty or --avr ELF");
+    if (!!o.link.device + o.link.pty + !!o.avr_elf > 1) return bad("%s", "--serial/--port, --pty and --avr exclude each other");
+    if (!o.serial && link_flags) return bad("%s", "--protocol and --silence-ms need --serial DEV, --pty or --avr ELF");
     if (!o.avr_elf && (o.avr_mcu || o.avr_f_cpu)) return bad("%s", "--mcu and --f-cpu need --avr ELF");
     if (o.serial && batch) return bad("%s", "--serial/--pty/--avr run one maze, not --batch");
     if (o.serial && !o.avr_elf) o.realtime = 1; /* a real MCU runs in real time; simavr in lockstep */
@@ -490,8 +613,22 @@ int main(int argc, char **argv)
         config_print(&cfg, stdout);
         return EXIT_OK;
     }
+    if (batch && (o.telem.url || o.telem.log_path)) return bad("%s", "--lcm and --lcm-log work on one maze, not with --batch");
+    if (batch && (o.report || o.gui || o.shot)) return bad("%s", "--report, --gui and --screenshot need --maze (one run), not --batch");
+    if (o.gui && o.shot) return bad("%s", "--gui and --screenshot: one at a time");
     if (batch) return run_batch(&o, batch);
     if (!maze) return bad("%s", "--maze FILE is required");
+    const char *outs[2][2] = { { "--report", o.report }, { "--screenshot", o.shot } };
+    for (int i = 0; i < 2; i++) { /* fail now, not after a ten-minute contest */
+        char perr[600];
+        outfile_t probe;
+        if (!outs[i][1]) continue;
+        if (outfile_open(&probe, outs[i][1], perr, sizeof perr) != 0) {
+            fprintf(stderr, "mmsim: %s: %s\n", outs[i][0], perr);
+            return EXIT_BAD_INPUT;
+        }
+        outfile_abort(&probe);
+    }
     json_t *j;
     int rc = run_one(&o, maze, &j, !o.json);
     if (j && o.json && print_json_line(j) != 0) rc = EXIT_EXTERNAL;

@@ -16,6 +16,7 @@ void MMLink::begin(Stream &stream, uint8_t protocol, uint16_t tick, uint16_t ran
     for (uint8_t i = 0; i < MM_TOF_COUNT; i++) {
         tof_mm[i] = range_mm;
         tof_timeout[i] = 1;
+        tof_seq[i] = 0;
     }
     sim_us = 0;
     hello_seen = 0;
@@ -72,6 +73,7 @@ void MMLink::poll()
         case WIRE_DISTANCE:
             tof_mm[m.u.distance.sensor] = m.u.distance.mm; /* sensor < 3: checked by the decoder */
             tof_timeout[m.u.distance.sensor] = m.u.distance.timeout;
+            tof_seq[m.u.distance.sensor]++;
             break;
         case WIRE_HELLO:
             if (m.u.hello.role == WIRE_ROLE_SIM) {

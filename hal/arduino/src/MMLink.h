@@ -28,6 +28,7 @@ public:
     volatile int32_t enc[2];           /* accumulated counts */
     volatile uint16_t tof_mm[MM_TOF_COUNT];
     volatile uint8_t tof_timeout[MM_TOF_COUNT];
+    volatile uint8_t tof_seq[MM_TOF_COUNT];     /* +1 per reading received (hal_distance_t.seq) */
     volatile uint32_t sim_us;          /* sim time of the latest reading (framed), us */
     volatile uint8_t hello_seen;       /* framed: the sim's HELLO arrived */
     const wire_stats_t &stats() const;

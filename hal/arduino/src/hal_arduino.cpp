@@ -52,12 +52,13 @@ void hal_encoder_reset(void)
 
 hal_distance_t hal_distance(uint8_t sensor)
 {
-    hal_distance_t d = { WIRE_COMPAT_RANGE_MM, 1 };
+    hal_distance_t d = { WIRE_COMPAT_RANGE_MM, 1, 0 };
     if (sensor >= HAL_TOF_COUNT) return d;
     ATOMIC_BLOCK(ATOMIC_RESTORESTATE)
     {
         d.mm = mmLink.tof_mm[sensor];
         d.timeout = mmLink.tof_timeout[sensor];
+        d.seq = mmLink.tof_seq[sensor];
     }
     return d;
 }

@@ -1,0 +1,163 @@
+/* hud.c - the viewer's 2D overlay (see hud.h). */
+#include "hud.h"
+
+#include <GL/gl.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "font.h"
+
+#define PAD 8         /* pixels between things */
+#define BTN_H 28      /* button height, pixels */
+#define CHAR_PX (FONT_ADVANCE * HUD_TEXT_SCALE)
+
+static const char *const labels[HUD_BTN_COUNT] = {
+    "1 Bird", "2 Follow", "3 Top", "Overlay", "-", "Pause", "Step", "+", "Toggle post", "Connect",
+};
+
+static int btn_w(const char *label) { return (int)strlen(label) * CHAR_PX + 2 * PAD; }
+
+void hud_layout(int W, int H, hud_button_t b[HUD_BTN_COUNT])
+{
+    for (int i = 0; i < HUD_BTN_COUNT; i++) {
+        b[i].label = labels[i];
+        b[i].w = btn_w(labels[i]);
+        b[i].h = BTN_H;
+        b[i].y = H - PAD - BTN_H;
+    }
+    /* lower left: cameras and overlay */
+    int x = PAD;
+    for (int i = HUD_BTN_BIRD; i <= HUD_BTN_OVERLAY; i++) {
+        b[i].x = x;
+        x += b[i].w + PAD / 2;
+    }
+    /* bottom centre: run controls */
+    int total = 0;
+    for (int i = HUD_BTN_SLOWER; i <= HUD_BTN_FASTER; i++) total += b[i].w + PAD / 2;
+    x = (W - total) / 2;
+    int left_end = b[HUD_BTN_OVERLAY].x + b[HUD_BTN_OVERLAY].w + PAD;
+    if (x < left_end) x = left_end;
+    for (int i = HUD_BTN_SLOWER; i <= HUD_BTN_FASTER; i++) {
+        b[i].x = x;
+        x += b[i].w + PAD / 2;
+    }
+    /* lower right: toggle post; above it if the row is full */
+    b[HUD_BTN_POST].x = W - PAD - b[HUD_BTN_POST].w;
+    if (b[HUD_BTN_POST].x < x + PAD) b[HUD_BTN_POST].y -= BTN_H + PAD;
+    /* upper right: connect, under the port and baud fields */
+    b[HUD_BTN_CONNECT].x = W - PAD - b[HUD_BTN_CONNECT].w;
+    b[HUD_BTN_CONNECT].y = PAD + 2 * (FONT_LINE * HUD_TEXT_SCALE + PAD);
+}
+
+int hud_hit(int W, int H, double x, double y)
+{
+    hud_button_t b[HUD_BTN_COUNT];
+    hud_layout(W, H, b);
+    for (int i = 0; i < HUD_BTN_COUNT; i++)
+        if (x >= b[i].x && x < b[i].x + b[i].w && y >= b[i].y && y < b[i].y + b[i].h) return i;
+    return -1;
+}
+
+static void mmss(double s, char out[16])
+{
+    long ms = lround(s * 1000.0);
+    if (ms < 0) ms = 0;
+    snprintf(out, 16, "%ld:%02ld.%03ld", ms / 60000 % 1000, (ms / 1000) % 60, ms % 1000);
+}
+
+void hud_timers(const sim_t *s, char global[16], char lap[16], int *over_time)
+{
+    const race_t *r = &s->race;
+    double t = sim_time_s(s), g = race_global_s(r, t), l = 0;
+    if (r->in_run) l = t - r->run_start_s;
+    else if (r->nlaps) l = r->laps[r->nlaps - 1].end_s - r->laps[r->nlaps - 1].start_s;
+    mmss(g, global);
+    mmss(l, lap);
+    *over_time = r->over_time || g > r->limit_s;
+}
+
+static void col(uint32_t rgb, float a)
+{
+    glColor4f((float)((rgb >> 16) & 255) / 255.f, (float)((rgb >> 8) & 255) / 255.f, (float)(rgb & 255) / 255.f, a);
+}
+
+static void rect(int x, int y, int w, int h, uint32_t rgb, float a)
+{
+    col(rgb, a);
+    glBegin(GL_QUADS);
+    glVertex2i(x, y), glVertex2i(x + w, y), glVertex2i(x + w, y + h), glVertex2i(x, y + h);
+    glEnd();
+}
+
+static void text(int x, int y, uint32_t rgb, const char *s)
+{
+    const int k = HUD_TEXT_SCALE;
+    col(rgb, 1);
+    glBegin(GL_QUADS);
+    for (; *s; s++, x += CHAR_PX)
+        for (int row = 0; row < FONT_H; row++) {
+            int bits = font_row(*s, row);
+            for (int c = 0; c < FONT_W; c++)
+                if (bits & (1 << (FONT_W - 1 - c))) {
+                    int px = x + c * k, py = y + row * k;
+                    glVertex2i(px, py), glVertex2i(px + k, py), glVertex2i(px + k, py + k), glVertex2i(px, py + k);
+                }
+        }
+    glEnd();
+}
+
+#define LINE (FONT_LINE * HUD_TEXT_SCALE)
+
+void hud_draw(const sim_t *s, const hud_info_t *in, int W, int H)
+{
+    glViewport(0, 0, W, H);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, W, H, 0, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_LIGHTING);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+
+    /* upper left: timers */
+    char g[16], l[16], line[96];
+    int over;
+    hud_timers(s, g, l, &over);
+    uint32_t tc = over ? 0xFF3030u : 0xFFFFFFu;
+    rect(PAD / 2, PAD / 2, 30 * CHAR_PX, 3 * LINE + PAD, 0x000000u, 0.55f);
+    snprintf(line, sizeof line, "Global %s", g);
+    text(PAD, PAD, tc, line);
+    snprintf(line, sizeof line, "Lap    %s", l);
+    text(PAD, PAD + LINE, tc, line);
+    snprintf(line, sizeof line, "Sim %.3f s  x%g%s", sim_time_s(s), in->speed, in->paused ? "  paused" : "");
+    text(PAD, PAD + 2 * LINE, 0xB0B0B0u, line);
+
+    /* upper right: serial port and baud fields */
+    char port[64], baud[32];
+    snprintf(port, sizeof port, "Port %-14.14s", in->port && *in->port ? in->port : "(none)");
+    snprintf(baud, sizeof baud, "Baud %-14ld", in->baud);
+    int fw = (int)strlen(port) * CHAR_PX + 2 * PAD, fx = W - PAD - fw;
+    rect(fx, PAD / 2, fw, LINE + PAD / 2, 0x303030u, 0.85f);
+    text(fx + PAD, PAD, 0xFFFFFFu, port);
+    rect(fx, PAD + LINE + PAD / 2, fw, LINE + PAD / 2, 0x303030u, 0.85f);
+    text(fx + PAD, PAD + LINE + PAD, 0xFFFFFFu, baud);
+
+    /* buttons */
+    hud_button_t b[HUD_BTN_COUNT];
+    hud_layout(W, H, b);
+    for (int i = 0; i < HUD_BTN_COUNT; i++) {
+        int on = (i <= HUD_BTN_TOP && in->camera == i + 1) || (i == HUD_BTN_OVERLAY && in->overlay) ||
+                 (i == HUD_BTN_PAUSE && in->paused) || (i == HUD_BTN_POST && world_has_centre_post(s->world));
+        rect(b[i].x, b[i].y, b[i].w, b[i].h, on ? 0x3070D0u : 0x404040u, 0.85f);
+        text(b[i].x + PAD, b[i].y + (BTN_H - FONT_H * HUD_TEXT_SCALE) / 2, 0xFFFFFFu, b[i].label);
+    }
+    if (in->status && *in->status) {
+        int y = b[HUD_BTN_BIRD].y - LINE - PAD;
+        rect(PAD / 2, y - PAD / 2, (int)strlen(in->status) * CHAR_PX + PAD, LINE + PAD / 2, 0x000000u, 0.55f);
+        text(PAD, y, 0xFFE080u, in->status);
+    }
+    glDisable(GL_BLEND);
+}

@@ -1,0 +1,435 @@
+/* report.c - run reports (see report.h). One drawing routine paints onto a
+ * small canvas interface that either rasterises (PNG) or prints SVG
+ * elements, so both files show the same picture. */
+#include "report.h"
+
+#include <jansson.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "font.h"
+#include "image.h"
+#include "outfile.h"
+#include "solve.h"
+
+typedef struct {
+    float x, y, v; /* body centre, m; speed along the heading, m/s */
+    double t;      /* sim time, s */
+} sample_t;
+
+struct report {
+    const maze_t *maze;
+    double cell_m;
+    uint64_t every; /* physics steps per sample */
+    sample_t *s;
+    size_t n, cap;
+    double vmax;    /* highest |speed| seen, m/s */
+    uint8_t visited[MAZE_MAX_CELLS];
+};
+
+report_t *report_new(const sim_t *s)
+{
+    report_t *r = calloc(1, sizeof *r);
+    if (!r) return NULL;
+    r->maze = s->maze;
+    r->cell_m = s->cfg.cell_m;
+    r->every = (uint64_t)llround(REPORT_SAMPLE_S / s->cfg.step_s);
+    if (r->every == 0) r->every = 1;
+    r->visited[s->maze->start] = 1;
+    return r;
+}
+
+void report_free(report_t *r)
+{
+    if (!r) return;
+    free(r->s);
+    free(r);
+}
+
+void report_step(report_t *r, const sim_t *s)
+{
+    if (s->step % r->every) return;
+    if (r->n == r->cap) {
+        size_t cap = r->cap ? r->cap * 2 : 4096;
+        sample_t *p = realloc(r->s, cap * sizeof *p);
+        if (!p) return; /* out of memory: the trajectory just stops */
+        r->s = p;
+        r->cap = cap;
+    }
+    double x, y, h, v, w;
+    world_pose(s->world, &x, &y, &h);
+    world_velocity(s->world, &v, &w);
+    r->s[r->n++] = (sample_t){ (float)x, (float)y, (float)v, sim_time_s(s) };
+    if (fabs(v) > r->vmax) r->vmax = fabs(v);
+    double fx = floor(x / r->cell_m), fy = floor(y / r->cell_m);
+    if (fx >= 0 && fy >= 0 && fx < r->maze->width && fy < r->maze->height)
+        r->visited[maze_cell(r->maze, (uint8_t)fx, (uint8_t)fy)] = 1;
+}
+
+void report_sibling(const char *png_path, const char *ext, char *out, size_t len)
+{
+    size_t n = strlen(png_path);
+    if (n >= 4 && !strcmp(png_path + n - 4, ".png")) n -= 4;
+    snprintf(out, len, "%.*s%s", (int)n, png_path, ext);
+}
+
+/* ---- canvas: raster or SVG ---- */
+
+typedef struct {
+    image_t *im; /* raster, or NULL */
+    FILE *svg;   /* SVG, or NULL */
+} canvas_t;
+
+static void svg_colour(char out[8], uint32_t rgb) { snprintf(out, 8, "#%06x", (unsigned)(rgb & 0xFFFFFF)); }
+
+static void c_rect(canvas_t *c, double x0, double y0, double x1, double y1, uint32_t rgb)
+{
+    if (c->im) image_rect(c->im, (int)lround(x0), (int)lround(y0), (int)lround(x1), (int)lround(y1), rgb);
+    if (c->svg) {
+        char col[8];
+        svg_colour(col, rgb);
+        fprintf(c->svg, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"%s\"/>\n", x0, y0, x1 - x0,
+                y1 - y0, col);
+    }
+}
+
+static void c_line(canvas_t *c, double x0, double y0, double x1, double y1, double w, uint32_t rgb)
+{
+    if (c->im) image_line(c->im, x0, y0, x1, y1, w, rgb);
+    if (c->svg) {
+        char col[8];
+        svg_colour(col, rgb);
+        fprintf(c->svg,
+                "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\" stroke-width=\"%.1f\" "
+                "stroke-linecap=\"round\"/>\n",
+                x0, y0, x1, y1, col, w);
+    }
+}
+
+static void c_disc(canvas_t *c, double x, double y, double r, uint32_t rgb)
+{
+    if (c->im) image_disc(c->im, x, y, r, rgb);
+    if (c->svg) {
+        char col[8];
+        svg_colour(col, rgb);
+        fprintf(c->svg, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"%.1f\" fill=\"%s\"/>\n", x, y, r, col);
+    }
+}
+
+/* Polyline through n points (x, y pairs). */
+static void c_polyline(canvas_t *c, const double *p, size_t n, double w, uint32_t rgb)
+{
+    if (c->im)
+        for (size_t i = 1; i < n; i++) image_line(c->im, p[2 * i - 2], p[2 * i - 1], p[2 * i], p[2 * i + 1], w, rgb);
+    if (c->svg) {
+        char col[8];
+        svg_colour(col, rgb);
+        fputs("<polyline points=\"", c->svg);
+        for (size_t i = 0; i < n; i++) fprintf(c->svg, "%s%.1f,%.1f", i ? " " : "", p[2 * i], p[2 * i + 1]);
+        fprintf(c->svg, "\" fill=\"none\" stroke=\"%s\" stroke-width=\"%.1f\" stroke-linejoin=\"round\" "
+                        "stroke-linecap=\"round\"/>\n", col, w);
+    }
+}
+
+/* Text at scale 2 of the built-in font; SVG gets monospace text of the same size. */
+#define TEXT_SCALE 2
+#define LINE_PX (FONT_LINE * TEXT_SCALE)
+
+static void c_text(canvas_t *c, double x, double y, uint32_t rgb, const char *s)
+{
+    if (c->im) image_text(c->im, (int)x, (int)y, TEXT_SCALE, rgb, s);
+    if (c->svg) {
+        char col[8];
+        svg_colour(col, rgb);
+        fprintf(c->svg,
+                "<text x=\"%.1f\" y=\"%.1f\" fill=\"%s\" font-family=\"monospace\" font-size=\"%d\" "
+                "xml:space=\"preserve\">",
+                x, y + FONT_H * TEXT_SCALE, col, (FONT_H + 3) * TEXT_SCALE);
+        for (const char *p = s; *p; p++) {
+            if (*p == '<') fputs("&lt;", c->svg);
+            else if (*p == '>') fputs("&gt;", c->svg);
+            else if (*p == '&') fputs("&amp;", c->svg);
+            else fputc(*p, c->svg);
+        }
+        fputs("</text>\n", c->svg);
+    }
+}
+
+/* ---- the picture ---- */
+
+#define C_BG 0xFFFFFFu
+#define C_CELL 0xF2F2F2u
+#define C_VISITED 0xCFE4FAu
+#define C_START 0xA8E0A8u
+#define C_GOAL 0xFFDD80u
+#define C_TRUE_WALL 0xB4B4B4u  /* true wall the mouse did not learn */
+#define C_LEARNED 0x202020u    /* wall the mouse learned, and it is there */
+#define C_WRONG 0xE000E0u      /* the mouse's wall state disagrees with the truth */
+#define C_POST 0x606060u
+#define C_PATH 0xD9B8F0u       /* final run path, under the trajectory */
+#define C_TEXT 0x101010u
+#define MARGIN_PX 20
+#define SPEED_LEVELS 16 /* colour steps of the speed scale */
+
+/* Speed colour: blue (0) - cyan - green - yellow - red (vmax). */
+static uint32_t speed_colour(double f)
+{
+    static const double stops[5][3] = { { 32, 64, 255 }, { 0, 200, 220 }, { 40, 200, 40 }, { 250, 210, 0 }, { 230, 30, 20 } };
+    if (!(f > 0)) f = 0;
+    if (f > 1) f = 1;
+    double p = f * 4;
+    int i = (int)p;
+    if (i > 3) i = 3;
+    double u = p - i;
+    uint32_t out = 0;
+    for (int k = 0; k < 3; k++) out = out << 8 | (uint32_t)lround(stops[i][k] + (stops[i + 1][k] - stops[i][k]) * u);
+    return out;
+}
+
+typedef struct {
+    double cp;       /* pixels per cell */
+    double ox, oy;   /* pixel of the maze's south-west corner (oy = its bottom) */
+    int w, h;        /* image size */
+    int text_y;      /* top of the text panel */
+    char *table;     /* lap table text */
+    int table_lines;
+} layout_t;
+
+static double px_x(const layout_t *L, double cells) { return L->ox + cells * L->cp; }
+static double px_y(const layout_t *L, double cells) { return L->oy - cells * L->cp; }
+
+static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_t *s, const maze_t *learned,
+                 const char *title)
+{
+    const maze_t *m = r->maze;
+    double cp = L->cp, cell_m = r->cell_m;
+    c_rect(c, 0, 0, L->w, L->h, C_BG);
+    for (uint8_t y = 0; y < m->height; y++)
+        for (uint8_t x = 0; x < m->width; x++) {
+            maze_cell_t k = maze_cell(m, x, y);
+            uint32_t col = k == m->start ? C_START : maze_is_goal(m, k) ? C_GOAL : r->visited[k] ? C_VISITED : C_CELL;
+            c_rect(c, px_x(L, x), px_y(L, y + 1), px_x(L, x + 1), px_y(L, y), col);
+        }
+
+    /* final run path: the best path on the learned map (or the truth) */
+    static solve_path_t path;
+    if (solve_best(learned ? learned : m, 0, &path) == 0)
+        for (int i = 0; i + 1 < path.len; i++) {
+            maze_cell_t a = path.path[i], b = path.path[i + 1];
+            c_line(c, px_x(L, maze_x(m, a) + 0.5), px_y(L, maze_y(m, a) + 0.5), px_x(L, maze_x(m, b) + 0.5),
+                   px_y(L, maze_y(m, b) + 0.5), cp * 0.4, C_PATH);
+        }
+
+    /* walls: south and west of every cell, plus the outer north and east */
+    double wall_px = fmax(2.0, cp * 0.08);
+    for (uint8_t y = 0; y < m->height; y++)
+        for (uint8_t x = 0; x < m->width; x++) {
+            maze_cell_t k = maze_cell(m, x, y);
+            for (uint8_t d = 0; d < 4; d++) {
+                if ((d == MAZE_NORTH && y != m->height - 1) || (d == MAZE_EAST && x != m->width - 1)) continue;
+                int truth = maze_wall(m, k, d) == MAZE_WALL_CLOSED;
+                uint8_t known = learned ? maze_wall(learned, k, d) : MAZE_WALL_UNKNOWN;
+                uint32_t col;
+                if (known == MAZE_WALL_UNKNOWN) {
+                    if (!truth) continue;
+                    col = C_TRUE_WALL;
+                } else if ((known == MAZE_WALL_CLOSED) != truth) {
+                    col = C_WRONG;
+                } else if (truth) {
+                    col = C_LEARNED;
+                } else {
+                    continue; /* known open, truly open */
+                }
+                double x0 = x, y0 = y, x1 = x, y1 = y;
+                if (d == MAZE_SOUTH) x1 = x + 1;
+                if (d == MAZE_NORTH) y0 = y1 = y + 1, x1 = x + 1;
+                if (d == MAZE_WEST) y1 = y + 1;
+                if (d == MAZE_EAST) x0 = x1 = x + 1, y1 = y + 1;
+                c_line(c, px_x(L, x0), px_y(L, y0), px_x(L, x1), px_y(L, y1), wall_px, col);
+            }
+        }
+    for (int y = 0; y <= m->height; y++)
+        for (int x = 0; x <= m->width; x++)
+            c_rect(c, px_x(L, x) - wall_px / 2, px_y(L, y) - wall_px / 2, px_x(L, x) + wall_px / 2,
+                   px_y(L, y) + wall_px / 2, C_POST);
+
+    /* trajectory by speed; the last lap thicker */
+    const race_t *rc = &s->race;
+    double lap0 = rc->nlaps ? rc->laps[rc->nlaps - 1].start_s : -1, lap1 = rc->nlaps ? rc->laps[rc->nlaps - 1].end_s : -1;
+    double vmax = r->vmax > 0.05 ? r->vmax : 0.05, k = cp / cell_m;
+    /* runs of equal colour (speed in SPEED_LEVELS steps) as one polyline each */
+    double *pts = malloc((r->n + 1) * 2 * sizeof *pts);
+    for (int pass = 0; pass < 2 && pts; pass++) {
+        size_t np = 0;
+        int run_q = -1;
+        for (size_t i = 1; i < r->n; i++) {
+            const sample_t *a = &r->s[i - 1], *b = &r->s[i];
+            int last = b->t >= lap0 && b->t <= lap1;
+            int q = (int)lround(fabs(b->v) / vmax * (SPEED_LEVELS - 1));
+            if (last != pass || q != run_q) {
+                if (np > 1) c_polyline(c, pts, np, pass ? 4.0 : 1.5, speed_colour((double)run_q / (SPEED_LEVELS - 1)));
+                np = 0;
+                run_q = -1;
+                if (last != pass) continue;
+                run_q = q;
+                pts[0] = L->ox + a->x * k;
+                pts[1] = L->oy - a->y * k;
+                np = 1;
+            }
+            pts[2 * np] = L->ox + b->x * k;
+            pts[2 * np + 1] = L->oy - b->y * k;
+            np++;
+        }
+        if (np > 1) c_polyline(c, pts, np, pass ? 4.0 : 1.5, speed_colour((double)run_q / (SPEED_LEVELS - 1)));
+    }
+    free(pts);
+    if (r->n) {
+        const sample_t *e = &r->s[r->n - 1];
+        c_disc(c, L->ox + e->x * k, L->oy - e->y * k, fmax(3.0, cp * 0.12), 0x000000);
+    }
+
+    /* text panel: title, lap table, totals, legend */
+    int ty = L->text_y;
+    c_text(c, MARGIN_PX, ty, C_TEXT, title);
+    ty += LINE_PX + LINE_PX / 2;
+    char *save = NULL, *tab = strdup(L->table ? L->table : "");
+    for (char *line = strtok_r(tab, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
+        c_text(c, MARGIN_PX, ty, C_TEXT, line);
+        ty += LINE_PX;
+    }
+    free(tab);
+    char buf[160];
+    snprintf(buf, sizeof buf, "Sim time %.3f s  laps %d  collisions %u  top speed %.2f m/s", sim_time_s(s), rc->nlaps,
+             world_collisions(s->world), r->vmax);
+    ty += LINE_PX / 2;
+    c_text(c, MARGIN_PX, ty, C_TEXT, buf);
+    ty += LINE_PX + LINE_PX / 2;
+    static const struct { uint32_t col; const char *name; } legend[] = {
+        { C_VISITED, "visited" }, { C_LEARNED, "learned wall" }, { C_TRUE_WALL, "unlearned wall" },
+        { C_WRONG, "wrong wall" }, { C_PATH, "final path" },
+    };
+    int lx = MARGIN_PX;
+    for (size_t i = 0; i < sizeof legend / sizeof legend[0]; i++) {
+        if (!learned && (legend[i].col == C_LEARNED || legend[i].col == C_WRONG)) continue;
+        int item = 20 + font_text_width(legend[i].name, TEXT_SCALE);
+        if (lx > MARGIN_PX && lx + item > L->w - MARGIN_PX) { /* wrap */
+            lx = MARGIN_PX;
+            ty += LINE_PX + 4;
+        }
+        c_rect(c, lx, ty, lx + 14, ty + 14, legend[i].col);
+        c_text(c, lx + 20, ty, C_TEXT, legend[i].name);
+        lx += 20 + font_text_width(legend[i].name, TEXT_SCALE) + 16;
+    }
+    ty += LINE_PX + 4;
+    c_text(c, MARGIN_PX, ty, C_TEXT, "speed 0");
+    int bx = MARGIN_PX + font_text_width("speed 0 ", TEXT_SCALE), bw = 200;
+    for (int i = 0; i < bw; i++) c_rect(c, bx + i, ty, bx + i + 1, ty + 14, speed_colour((double)i / (bw - 1)));
+    snprintf(buf, sizeof buf, "%.2f m/s", vmax);
+    c_text(c, bx + bw + 8, ty, C_TEXT, buf);
+}
+
+static int layout_make(layout_t *L, const report_t *r, const sim_t *s)
+{
+    const maze_t *m = r->maze;
+    int side = m->width > m->height ? m->width : m->height;
+    L->cp = floor(640.0 / side);
+    if (L->cp < 16) L->cp = 16;
+    if (L->cp > 96) L->cp = 96;
+    /* the lap table, exactly as the CLI prints it */
+    size_t len = 0;
+    L->table = NULL;
+    FILE *f = open_memstream(&L->table, &len);
+    if (!f) return -1;
+    race_print_table(&s->race, f);
+    fclose(f);
+    L->table_lines = 0;
+    int widest = 0, cur = 0;
+    for (const char *p = L->table; *p; p++) {
+        if (*p == '\n') {
+            L->table_lines++;
+            if (cur > widest) widest = cur;
+            cur = 0;
+        } else {
+            cur++;
+        }
+    }
+    int mw = (int)(m->width * L->cp), mh = (int)(m->height * L->cp);
+    int text_w = widest * FONT_ADVANCE * TEXT_SCALE;
+    if (text_w < 62 * FONT_ADVANCE * TEXT_SCALE) text_w = 62 * FONT_ADVANCE * TEXT_SCALE; /* totals line */
+    L->w = (mw > text_w ? mw : text_w) + 2 * MARGIN_PX;
+    L->ox = (L->w - mw) / 2;
+    L->oy = MARGIN_PX + mh;
+    L->text_y = MARGIN_PX + mh + MARGIN_PX;
+    L->h = L->text_y + (L->table_lines + 8) * LINE_PX + MARGIN_PX;
+    return 0;
+}
+
+static int write_json(const report_t *r, const sim_t *s, const char *path, const char *png, const char *svg,
+                      const char *title, char *err, size_t errlen)
+{
+    const race_t *rc = &s->race;
+    json_t *laps = json_array();
+    for (int i = 0; i < rc->nlaps; i++)
+        json_array_append_new(laps, json_pack("{s:i, s:f, s:f, s:f, s:b}", "lap", i + 1, "start_s", rc->laps[i].start_s,
+                                              "end_s", rc->laps[i].end_s, "run_s",
+                                              rc->laps[i].end_s - rc->laps[i].start_s, "over_time", rc->laps[i].over_time));
+    int visited = 0;
+    for (uint16_t k = 0; k < maze_cells(r->maze); k++) visited += r->visited[k];
+    json_t *j = json_pack("{s:s, s:f, s:o, s:i, s:f, s:s, s:s, s:i}", "title", title, "sim_time_s", sim_time_s(s),
+                          "laps", laps, "visited_cells", visited, "top_speed_m_s", r->vmax, "png", png, "svg", svg,
+                          "trajectory_samples", (int)r->n);
+    json_object_set_new(j, "best_run_s", rc->best >= 0 ? json_real(rc->laps[rc->best].end_s - rc->laps[rc->best].start_s)
+                                                       : json_null());
+    outfile_t o;
+    int rcode = -1;
+    if (outfile_open(&o, path, err, errlen) == 0) {
+        if (json_dumpf(j, o.f, JSON_INDENT(2) | JSON_REAL_PRECISION(10)) == 0 && fputc('\n', o.f) != EOF)
+            rcode = outfile_commit(&o, err, errlen);
+        else {
+            outfile_abort(&o);
+            snprintf(err, errlen, "%s: cannot write", path);
+        }
+    }
+    json_decref(j);
+    return rcode;
+}
+
+int report_write(const report_t *r, const sim_t *s, const maze_t *learned, const char *png_path, const char *title,
+                 char *err, size_t errlen)
+{
+    layout_t L;
+    char svg_path[4096], json_path[4096];
+    report_sibling(png_path, ".svg", svg_path, sizeof svg_path);
+    report_sibling(png_path, ".json", json_path, sizeof json_path);
+    if (layout_make(&L, r, s) != 0) {
+        snprintf(err, errlen, "%s: out of memory", png_path);
+        return -1;
+    }
+    int rc = -1;
+    image_t im;
+    if (image_init(&im, L.w, L.h, C_BG) != 0) {
+        snprintf(err, errlen, "%s: out of memory", png_path);
+        free(L.table);
+        return -1;
+    }
+    canvas_t cv = { &im, NULL };
+    draw(&cv, &L, r, s, learned, title);
+    rc = image_write_png(&im, png_path, err, errlen);
+    image_free(&im);
+
+    outfile_t o;
+    if (rc == 0 && outfile_open(&o, svg_path, err, errlen) == 0) {
+        fprintf(o.f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" viewBox=\"0 0 %d %d\">\n",
+                L.w, L.h, L.w, L.h);
+        canvas_t sv = { NULL, o.f };
+        draw(&sv, &L, r, s, learned, title);
+        fputs("</svg>\n", o.f);
+        rc = outfile_commit(&o, err, errlen);
+    } else {
+        rc = -1;
+    }
+    if (rc == 0) rc = write_json(r, s, json_path, png_path, svg_path, title, err, errlen);
+    free(L.table);
+    return rc;
+}

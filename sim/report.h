@@ -1,0 +1,37 @@
+/* report.h - a picture of every run: a top-down view of the maze with the
+ * true walls, the walls the mouse learned, the cells it visited, its
+ * trajectory coloured by speed, the final run path and the lap table as
+ * text. Written as PNG (libpng), SVG beside it (same drawing) and JSON
+ * beside it (the lap table), each atomically.
+ *
+ * Record during the run with report_step after every physics step; the
+ * pose is sampled every REPORT_SAMPLE_S of simulation time. */
+#ifndef REPORT_H
+#define REPORT_H
+
+#include <stddef.h>
+
+#include "sim.h"
+
+#define REPORT_SAMPLE_S 0.005 /* trajectory sample period, s of sim time */
+
+typedef struct report report_t;
+
+/* Start recording the run of s (already initialised). NULL out of memory. */
+report_t *report_new(const sim_t *s);
+void report_free(report_t *r);
+/* Call after every sim_step. */
+void report_step(report_t *r, const sim_t *s);
+
+/* Write png_path, and beside it the same name with .svg and .json
+ * (a trailing .png is replaced). learned = the mouse's map, or NULL when
+ * the driver does not map (then the final path is the true maze's best).
+ * title is one line of text (maze, seed, driver). Returns 0, or -1 with one
+ * line in err; nothing is left half written. */
+int report_write(const report_t *r, const sim_t *s, const maze_t *learned, const char *png_path, const char *title,
+                 char *err, size_t errlen);
+
+/* The .svg / .json path beside png_path, into out. */
+void report_sibling(const char *png_path, const char *ext, char *out, size_t len);
+
+#endif

@@ -1,0 +1,300 @@
+/* scene.c - 3D scene in legacy OpenGL (see scene.h). */
+#include "scene.h"
+
+#include <GL/gl.h>
+#include <math.h>
+#include <string.h>
+
+#include "solve.h"
+
+#define FOV_DEG 45.0  /* vertical field of view */
+#define NEAR_M 0.01
+#define FAR_M 30.0
+
+static void colour(uint32_t rgb, float a)
+{
+    glColor4f((float)((rgb >> 16) & 255) / 255.f, (float)((rgb >> 8) & 255) / 255.f, (float)(rgb & 255) / 255.f, a);
+}
+
+void scene_camera(const sim_t *s, int cam, const scene_orbit_t *orbit, double eye[3], double target[3], double up[3])
+{
+    const maze_t *m = s->maze;
+    double cell = s->cfg.cell_m, W = m->width * cell, H = m->height * cell;
+    double x, y, h;
+    world_pose(s->world, &x, &y, &h);
+    double yaw, pitch, dist;
+    up[0] = up[1] = 0;
+    up[2] = 1;
+    if (cam == SCENE_FOLLOW) {
+        /* behind the robot, looking at its body centre */
+        target[0] = x, target[1] = y, target[2] = s->cfg.body_clearance_m + s->cfg.body_h_m / 2;
+        yaw = h + M_PI, pitch = 22 * M_PI / 180, dist = 0.32;
+    } else if (cam == SCENE_TOP) {
+        target[0] = x, target[1] = y, target[2] = 0;
+        yaw = h + M_PI, pitch = 89.5 * M_PI / 180, dist = 0.55;
+    } else {
+        /* the whole maze from the south, high up */
+        target[0] = W / 2, target[1] = H / 2 * 0.98, target[2] = 0;
+        yaw = -M_PI / 2, pitch = 72 * M_PI / 180;
+        dist = fmax(W, H) * 0.66 / tan(FOV_DEG / 2 * M_PI / 180) + 0.05;
+    }
+    if (orbit) {
+        yaw += orbit->dyaw_rad;
+        pitch += orbit->dpitch_rad;
+        if (orbit->zoom > 0) dist *= orbit->zoom;
+    }
+    if (pitch > 89.5 * M_PI / 180) pitch = 89.5 * M_PI / 180;
+    if (pitch < 2 * M_PI / 180) pitch = 2 * M_PI / 180;
+    eye[0] = target[0] + dist * cos(pitch) * cos(yaw);
+    eye[1] = target[1] + dist * cos(pitch) * sin(yaw);
+    eye[2] = target[2] + dist * sin(pitch);
+    if (cam == SCENE_TOP) { /* robot's forward points up the screen */
+        up[0] = cos(h), up[1] = sin(h), up[2] = 0;
+    }
+}
+
+/* gluLookAt without GLU. */
+static void look_at(const double e[3], const double t[3], const double u[3])
+{
+    double f[3] = { t[0] - e[0], t[1] - e[1], t[2] - e[2] }, n = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    for (int k = 0; k < 3; k++) f[k] /= n;
+    double sx[3] = { f[1] * u[2] - f[2] * u[1], f[2] * u[0] - f[0] * u[2], f[0] * u[1] - f[1] * u[0] };
+    n = sqrt(sx[0] * sx[0] + sx[1] * sx[1] + sx[2] * sx[2]);
+    for (int k = 0; k < 3; k++) sx[k] /= n;
+    double ux[3] = { sx[1] * f[2] - sx[2] * f[1], sx[2] * f[0] - sx[0] * f[2], sx[0] * f[1] - sx[1] * f[0] };
+    double mm[16] = { sx[0], ux[0], -f[0], 0, sx[1], ux[1], -f[1], 0, sx[2], ux[2], -f[2], 0, 0, 0, 0, 1 };
+    glMultMatrixd(mm);
+    glTranslated(-e[0], -e[1], -e[2]);
+}
+
+/* Axis-aligned box (before the current transform) with normals; the top in its own colour. */
+static void box(double cx, double cy, double cz, double lx, double ly, double lz, uint32_t side, uint32_t top)
+{
+    double x0 = cx - lx / 2, x1 = cx + lx / 2, y0 = cy - ly / 2, y1 = cy + ly / 2, z0 = cz - lz / 2, z1 = cz + lz / 2;
+    glBegin(GL_QUADS);
+    colour(top, 1);
+    glNormal3d(0, 0, 1);
+    glVertex3d(x0, y0, z1), glVertex3d(x1, y0, z1), glVertex3d(x1, y1, z1), glVertex3d(x0, y1, z1);
+    colour(side, 1);
+    glNormal3d(0, -1, 0);
+    glVertex3d(x0, y0, z0), glVertex3d(x1, y0, z0), glVertex3d(x1, y0, z1), glVertex3d(x0, y0, z1);
+    glNormal3d(0, 1, 0);
+    glVertex3d(x1, y1, z0), glVertex3d(x0, y1, z0), glVertex3d(x0, y1, z1), glVertex3d(x1, y1, z1);
+    glNormal3d(-1, 0, 0);
+    glVertex3d(x0, y1, z0), glVertex3d(x0, y0, z0), glVertex3d(x0, y0, z1), glVertex3d(x0, y1, z1);
+    glNormal3d(1, 0, 0);
+    glVertex3d(x1, y0, z0), glVertex3d(x1, y1, z0), glVertex3d(x1, y1, z1), glVertex3d(x1, y0, z1);
+    glNormal3d(0, 0, -1);
+    glVertex3d(x0, y1, z0), glVertex3d(x1, y1, z0), glVertex3d(x1, y0, z0), glVertex3d(x0, y0, z0);
+    glEnd();
+}
+
+/* Cylinder along x, centred at the origin; a stripe on the rim turns with angle. */
+static void wheel(double r, double w, double angle)
+{
+    enum { SEG = 20 };
+    glBegin(GL_QUAD_STRIP);
+    for (int i = 0; i <= SEG; i++) {
+        double a = 2 * M_PI * i / SEG + angle, c = cos(a), s = sin(a);
+        colour(i == 0 || i == 1 ? 0xC8C8C8u : 0x202020u, 1);
+        glNormal3d(0, c, s);
+        glVertex3d(-w / 2, r * c, r * s);
+        glVertex3d(w / 2, r * c, r * s);
+    }
+    glEnd();
+    for (int side = -1; side <= 1; side += 2) {
+        glBegin(GL_TRIANGLE_FAN);
+        colour(0x505050u, 1);
+        glNormal3d(side, 0, 0);
+        glVertex3d(side * w / 2, 0, 0);
+        for (int i = 0; i <= SEG; i++) {
+            double a = 2 * M_PI * i / SEG * -side;
+            glVertex3d(side * w / 2, r * cos(a), r * sin(a));
+        }
+        glEnd();
+        /* a spoke, to see the wheel turn */
+        glDisable(GL_LIGHTING);
+        colour(0xE0E0E0u, 1);
+        glBegin(GL_LINES);
+        glVertex3d(side * (w / 2 + 0.0005), 0, 0);
+        glVertex3d(side * (w / 2 + 0.0005), r * 0.9 * cos(angle), r * 0.9 * sin(angle));
+        glEnd();
+        glEnable(GL_LIGHTING);
+    }
+}
+
+static void floor_and_cells(const sim_t *s)
+{
+    const maze_t *m = s->maze;
+    double cell = s->cfg.cell_m, W = m->width * cell, H = m->height * cell, pad = cell;
+    glNormal3d(0, 0, 1);
+    glBegin(GL_QUADS);
+    colour(SCENE_FLOOR, 1);
+    glVertex3d(-pad, -pad, 0), glVertex3d(W + pad, -pad, 0), glVertex3d(W + pad, H + pad, 0), glVertex3d(-pad, H + pad, 0);
+    for (uint16_t k = 0; k < maze_cells(m); k++) {
+        int start = k == m->start, goal = maze_is_goal(m, (maze_cell_t)k);
+        if (!start && !goal) continue;
+        double x0 = maze_x(m, (maze_cell_t)k) * cell + 0.012, y0 = maze_y(m, (maze_cell_t)k) * cell + 0.012,
+               x1 = x0 + cell - 0.024, y1 = y0 + cell - 0.024, z = 0.0005;
+        colour(start ? SCENE_START : SCENE_GOAL, 1);
+        glVertex3d(x0, y0, z), glVertex3d(x1, y0, z), glVertex3d(x1, y1, z), glVertex3d(x0, y1, z);
+    }
+    glEnd();
+}
+
+static void walls(const sim_t *s)
+{
+    const maze_t *m = s->maze;
+    const simcfg_t *c = &s->cfg;
+    double cell = c->cell_m, post = c->post_m, th = c->wall_thick_m, hh = c->wall_height_m;
+    int cx = m->width % 2 == 0 ? m->width / 2 : -1, cy = m->height % 2 == 0 ? m->height / 2 : -1;
+    int centre_post = world_has_centre_post(s->world);
+    for (int py = 0; py <= m->height; py++)
+        for (int px = 0; px <= m->width; px++)
+            if (px != cx || py != cy || centre_post)
+                box(px * cell, py * cell, hh / 2, post, post, hh, SCENE_WALL_SIDE, SCENE_WALL_TOP);
+    for (uint8_t y = 0; y < m->height; y++)
+        for (uint8_t x = 0; x < m->width; x++) {
+            maze_cell_t k = maze_cell(m, x, y);
+            if (!maze_passable(m, k, MAZE_SOUTH, 0))
+                box((x + 0.5) * cell, y * cell, hh / 2, cell - post, th, hh, SCENE_WALL_SIDE, SCENE_WALL_TOP);
+            if (!maze_passable(m, k, MAZE_WEST, 0))
+                box(x * cell, (y + 0.5) * cell, hh / 2, th, cell - post, hh, SCENE_WALL_SIDE, SCENE_WALL_TOP);
+            if (y == m->height - 1 && !maze_passable(m, k, MAZE_NORTH, 0))
+                box((x + 0.5) * cell, (y + 1) * cell, hh / 2, cell - post, th, hh, SCENE_WALL_SIDE, SCENE_WALL_TOP);
+            if (x == m->width - 1 && !maze_passable(m, k, MAZE_EAST, 0))
+                box((x + 1) * cell, (y + 0.5) * cell, hh / 2, th, cell - post, hh, SCENE_WALL_SIDE, SCENE_WALL_TOP);
+        }
+}
+
+static void robot(const sim_t *s)
+{
+    const simcfg_t *c = &s->cfg;
+    double x, y, h;
+    world_pose(s->world, &x, &y, &h);
+    glPushMatrix();
+    glTranslated(x, y, 0);
+    glRotated((h - M_PI / 2) * 180 / M_PI, 0, 0, 1); /* robot frame: x right, y forward */
+    box(0, 0, c->body_clearance_m + c->body_h_m / 2, c->body_w_m, c->body_l_m, c->body_h_m, SCENE_ROBOT, SCENE_ROBOT);
+    /* a white nose so the heading shows from above */
+    box(0, c->body_l_m / 2 - 0.006, c->body_clearance_m + c->body_h_m + 0.001, c->body_w_m * 0.5, 0.01, 0.002,
+        0xF0F0F0u, 0xF0F0F0u);
+    for (int side = 0; side < 2; side++) {
+        glPushMatrix();
+        glTranslated(side == WORLD_LEFT ? -c->wheel_x_m : c->wheel_x_m, c->axle_y_m, c->wheel_d_m / 2);
+        /* hinge angle positive = forward roll: about -x in the robot frame */
+        wheel(c->wheel_d_m / 2, c->wheel_w_m, -world_wheel_angle(s->world, side));
+        glPopMatrix();
+    }
+    glPopMatrix();
+}
+
+static void rays(sim_t *s)
+{
+    glDisable(GL_LIGHTING);
+    glLineWidth(2);
+    for (int i = 0; i < WORLD_TOF_COUNT; i++) {
+        double p[3], dir, d = s->tof_true_m[i];
+        world_tof_origin(s->world, i, p, &dir);
+        double len = d >= 0 ? d : s->cfg.tof_range_m;
+        glBegin(GL_LINES);
+        colour(0xFFE040u, 1);
+        glVertex3d(p[0], p[1], p[2]);
+        glVertex3d(p[0] + len * cos(dir), p[1] + len * sin(dir), p[2]);
+        glEnd();
+        if (d >= 0) {
+            glPointSize(7);
+            glBegin(GL_POINTS);
+            colour(0xFF4020u, 1);
+            glVertex3d(p[0] + d * cos(dir), p[1] + d * sin(dir), p[2]);
+            glEnd();
+        }
+    }
+    glLineWidth(1);
+    glEnable(GL_LIGHTING);
+}
+
+/* The mouse's walls as bars over the wall tops (cyan where it agrees with
+ * the truth, magenta where it does not) and its planned path. */
+static void overlay(const sim_t *s, const scene_belief_t *b)
+{
+    const maze_t *m = s->maze, *k = b->map;
+    if (k->width != m->width || k->height != m->height) return;
+    double cell = s->cfg.cell_m, z = s->cfg.wall_height_m + 0.003;
+    glDisable(GL_LIGHTING);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glLineWidth(4);
+    glBegin(GL_LINES);
+    for (uint8_t y = 0; y < m->height; y++)
+        for (uint8_t x = 0; x < m->width; x++) {
+            maze_cell_t c = maze_cell(m, x, y);
+            for (uint8_t d = MAZE_EAST; d <= MAZE_SOUTH; d++) { /* east and south of each cell: every inner wall once */
+                uint8_t known = maze_wall(k, c, d);
+                if (known != MAZE_WALL_CLOSED) continue;
+                int truth = maze_wall(m, c, d) == MAZE_WALL_CLOSED;
+                colour(truth ? 0x30E0FFu : 0xFF30FFu, 0.9f);
+                if (d == MAZE_EAST) glVertex3d((x + 1) * cell, y * cell, z), glVertex3d((x + 1) * cell, (y + 1) * cell, z);
+                else glVertex3d(x * cell, y * cell, z), glVertex3d((x + 1) * cell, y * cell, z);
+            }
+        }
+    glEnd();
+    /* planned path: best from the mouse's cell and heading, unknown walls open */
+    static maze_t plan;
+    static solve_path_t path;
+    plan = *k;
+    if (b->cell < maze_cells(&plan)) {
+        plan.start = (maze_cell_t)b->cell;
+        plan.start_heading = b->heading & 3;
+        if (solve_best(&plan, 1, &path) == 0) {
+            glLineWidth(5);
+            colour(0xC040FFu, 0.85f);
+            glBegin(GL_LINE_STRIP);
+            for (int i = 0; i < path.len; i++)
+                glVertex3d((maze_x(&plan, path.path[i]) + 0.5) * cell, (maze_y(&plan, path.path[i]) + 0.5) * cell, 0.004);
+            glEnd();
+        }
+    }
+    glLineWidth(1);
+    glDisable(GL_BLEND);
+    glEnable(GL_LIGHTING);
+}
+
+void scene_draw(sim_t *s, int cam, const scene_orbit_t *orbit, const scene_belief_t *b, int show_overlay, int w, int h)
+{
+    glViewport(0, 0, w, h);
+    glClearColor(0.08f, 0.09f, 0.11f, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    double top = NEAR_M * tan(FOV_DEG / 2 * M_PI / 180), right = top * (double)w / (h > 0 ? h : 1);
+    glFrustum(-right, right, -top, top, NEAR_M, FAR_M);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    double eye[3], target[3], up[3];
+    scene_camera(s, cam, orbit, eye, target, up);
+    look_at(eye, target, up);
+
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glEnable(GL_NORMALIZE);
+    glEnable(GL_COLOR_MATERIAL);
+    glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+    glShadeModel(GL_SMOOTH);
+    /* light from above, a little from the south-west; tops are lit fully */
+    GLfloat pos[4] = { 0.25f, 0.35f, 1.0f, 0 }, amb[4] = { 0.5f, 0.5f, 0.5f, 1 }, dif[4] = { 0.55f, 0.55f, 0.55f, 1 };
+    GLfloat glob[4] = { 0, 0, 0, 1 };
+    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, glob);
+    glLightfv(GL_LIGHT0, GL_POSITION, pos);
+    glLightfv(GL_LIGHT0, GL_AMBIENT, amb);
+    glLightfv(GL_LIGHT0, GL_DIFFUSE, dif);
+
+    floor_and_cells(s);
+    walls(s);
+    robot(s);
+    rays(s);
+    if (show_overlay && b && b->map) overlay(s, b);
+    glDisable(GL_LIGHTING);
+    glDisable(GL_DEPTH_TEST);
+}

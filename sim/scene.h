@@ -1,0 +1,43 @@
+/* scene.h - the 3D scene of a simulation in legacy OpenGL: floor, start
+ * and goal cells, posts, walls, the robot's body and wheels, the ToF rays
+ * with their hit points, and (toggle) the mouse's discovered walls and its
+ * planned path. Needs a current GL context; draws into the viewport given.
+ *
+ * Cameras (as in the paper): 1 a static bird's view of the whole maze,
+ * 2 following the robot from behind, 3 a close-up top view over the robot.
+ * Each is an orbit around its target; the user's drag and scroll adjust
+ * it through scene_orbit_t. */
+#ifndef SCENE_H
+#define SCENE_H
+
+#include "sim.h"
+
+enum { SCENE_BIRD = 1, SCENE_FOLLOW = 2, SCENE_TOP = 3, SCENE_CAMERAS = 3 };
+
+/* Colours (0xRRGGBB), exported for tests that look for them. */
+#define SCENE_FLOOR 0x1E1E24u
+#define SCENE_WALL_TOP 0xD02828u /* wall and post tops (red, as on a real maze) */
+#define SCENE_WALL_SIDE 0xE6E6E6u
+#define SCENE_ROBOT 0x2A5CE0u    /* robot body */
+#define SCENE_START 0x2E8B3Eu
+#define SCENE_GOAL 0xD8B020u
+
+typedef struct {
+    double dyaw_rad, dpitch_rad; /* added to the camera's own angles */
+    double zoom;                 /* distance factor, 1 = the camera's own */
+} scene_orbit_t;
+
+typedef struct {
+    const maze_t *map;  /* the mouse's map, or NULL (no overlay) */
+    uint16_t cell;      /* the mouse's cell and heading (MAZE_NORTH..) */
+    uint8_t heading;
+} scene_belief_t;
+
+/* Eye, target and up vector of camera cam (SCENE_*) for the current pose. */
+void scene_camera(const sim_t *s, int cam, const scene_orbit_t *orbit, double eye[3], double target[3],
+                  double up[3]);
+/* Draw the scene for camera cam into the viewport w x h pixels (clears it).
+ * overlay: draw b's walls and planned path (b may be NULL). */
+void scene_draw(sim_t *s, int cam, const scene_orbit_t *orbit, const scene_belief_t *b, int overlay, int w, int h);
+
+#endif

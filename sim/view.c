@@ -1,0 +1,325 @@
+/* view.c - the viewer's window, pacing and input (see view.h). */
+#include "view.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <GL/gl.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "hal_sim.h"
+#include "hud.h"
+#include "image.h"
+#include "scene.h"
+
+#define FRAME_S (1.0 / 60)   /* wall time between drawn frames */
+#define MAX_LAG_S 0.25       /* sim time behind the wall clock before the backlog is dropped */
+#define DRAG_RAD_PER_PX 0.008
+
+struct view {
+    view_opts_t o;
+    GLFWwindow *win;
+    int camera, paused, overlay, step_req, closed;
+    double speed;
+    scene_orbit_t orbit[SCENE_CAMERAS + 1];
+    double sim0, wall0;      /* pacing: sim time at wall time */
+    double next_frame;       /* wall time of the next frame */
+    int dragging;
+    double drag_x, drag_y;
+    char status[96];
+    sim_t *sim;              /* the simulation being shown (for callbacks) */
+};
+
+static int glfw_users;
+
+static double wall_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+static void orbit_reset(scene_orbit_t *o)
+{
+    o->dyaw_rad = o->dpitch_rad = 0;
+    o->zoom = 1;
+}
+
+view_t *view_new(const view_opts_t *o)
+{
+    view_t *v = calloc(1, sizeof *v);
+    if (!v) return NULL;
+    v->o = *o;
+    v->camera = o->camera >= 1 && o->camera <= SCENE_CAMERAS ? o->camera : SCENE_BIRD;
+    v->speed = o->speed >= 1 && o->speed <= VIEW_SPEED_MAX ? o->speed : 1;
+    v->overlay = 1;
+    for (int i = 0; i <= SCENE_CAMERAS; i++) orbit_reset(&v->orbit[i]);
+    if (v->o.width <= 0) v->o.width = 1024;
+    if (v->o.height <= 0) v->o.height = 720;
+    return v;
+}
+
+int view_camera(const view_t *v) { return v->camera; }
+double view_speed(const view_t *v) { return v->speed; }
+int view_paused(const view_t *v) { return v->paused; }
+int view_overlay(const view_t *v) { return v->overlay; }
+
+static void resync(view_t *v)
+{
+    v->sim0 = v->sim ? sim_time_s(v->sim) : 0;
+    v->wall0 = wall_now();
+}
+
+void view_button(view_t *v, sim_t *s, int button)
+{
+    switch (button) {
+    case HUD_BTN_BIRD: case HUD_BTN_FOLLOW: case HUD_BTN_TOP: v->camera = button - HUD_BTN_BIRD + 1; break;
+    case HUD_BTN_OVERLAY: v->overlay = !v->overlay; break;
+    case HUD_BTN_SLOWER: if (v->speed > 1) v->speed /= 2; resync(v); break;
+    case HUD_BTN_FASTER: if (v->speed < VIEW_SPEED_MAX) v->speed *= 2; resync(v); break;
+    case HUD_BTN_PAUSE: v->paused = !v->paused; resync(v); break;
+    case HUD_BTN_STEP: v->paused = 1; v->step_req = 1; break;
+    case HUD_BTN_POST:
+        if (s) {
+            world_set_centre_post(s->world, !world_has_centre_post(s->world));
+            snprintf(v->status, sizeof v->status, "centre post %s", world_has_centre_post(s->world) ? "on" : "off");
+        }
+        break;
+    case HUD_BTN_CONNECT:
+        snprintf(v->status, sizeof v->status, "HIL link not built yet: the port is shown only");
+        break;
+    default: break;
+    }
+}
+
+int view_click(view_t *v, sim_t *s, double x, double y)
+{
+    int b = hud_hit(v->o.width, v->o.height, x, y);
+    if (b >= 0) view_button(v, s, b);
+    return b;
+}
+
+void view_key(view_t *v, sim_t *s, int key)
+{
+    switch (key) {
+    case GLFW_KEY_1: case GLFW_KEY_KP_1: view_button(v, s, HUD_BTN_BIRD); break;
+    case GLFW_KEY_2: case GLFW_KEY_KP_2: view_button(v, s, HUD_BTN_FOLLOW); break;
+    case GLFW_KEY_3: case GLFW_KEY_KP_3: view_button(v, s, HUD_BTN_TOP); break;
+    case GLFW_KEY_O: view_button(v, s, HUD_BTN_OVERLAY); break;
+    case GLFW_KEY_SPACE: view_button(v, s, HUD_BTN_PAUSE); break;
+    case GLFW_KEY_S: case GLFW_KEY_PERIOD: view_button(v, s, HUD_BTN_STEP); break;
+    case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD: view_button(v, s, HUD_BTN_FASTER); break;
+    case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: view_button(v, s, HUD_BTN_SLOWER); break;
+    case GLFW_KEY_P: view_button(v, s, HUD_BTN_POST); break;
+    case GLFW_KEY_R: orbit_reset(&v->orbit[v->camera]); break;
+    case GLFW_KEY_ESCAPE: case GLFW_KEY_Q: v->closed = 1; break;
+    default: break;
+    }
+}
+
+/* ---- GLFW callbacks ---- */
+
+static void on_key(GLFWwindow *w, int key, int scancode, int action, int mods)
+{
+    (void)scancode, (void)mods;
+    view_t *v = glfwGetWindowUserPointer(w);
+    if (action == GLFW_PRESS || action == GLFW_REPEAT) view_key(v, v->sim, key);
+}
+
+static void on_button(GLFWwindow *w, int button, int action, int mods)
+{
+    (void)mods;
+    view_t *v = glfwGetWindowUserPointer(w);
+    if (button != GLFW_MOUSE_BUTTON_LEFT) return;
+    double x, y;
+    glfwGetCursorPos(w, &x, &y);
+    if (action == GLFW_PRESS) {
+        if (view_click(v, v->sim, x, y) < 0) {
+            v->dragging = 1;
+            v->drag_x = x;
+            v->drag_y = y;
+        }
+    } else {
+        v->dragging = 0;
+    }
+}
+
+static void on_cursor(GLFWwindow *w, double x, double y)
+{
+    view_t *v = glfwGetWindowUserPointer(w);
+    if (!v->dragging) return;
+    scene_orbit_t *o = &v->orbit[v->camera];
+    o->dyaw_rad -= (x - v->drag_x) * DRAG_RAD_PER_PX;
+    o->dpitch_rad += (y - v->drag_y) * DRAG_RAD_PER_PX;
+    if (o->dpitch_rad > 1.6) o->dpitch_rad = 1.6;
+    if (o->dpitch_rad < -1.6) o->dpitch_rad = -1.6;
+    v->drag_x = x;
+    v->drag_y = y;
+}
+
+static void on_scroll(GLFWwindow *w, double dx, double dy)
+{
+    (void)dx;
+    view_t *v = glfwGetWindowUserPointer(w);
+    scene_orbit_t *o = &v->orbit[v->camera];
+    o->zoom *= pow(0.9, dy);
+    if (o->zoom < 0.1) o->zoom = 0.1;
+    if (o->zoom > 10) o->zoom = 10;
+}
+
+static void on_size(GLFWwindow *w, int width, int height)
+{
+    view_t *v = glfwGetWindowUserPointer(w);
+    v->o.width = width;
+    v->o.height = height;
+}
+
+int view_open(view_t *v, int visible, char *err, size_t errlen)
+{
+    if (glfw_users == 0 && !glfwInit()) {
+        const char *d = NULL;
+        glfwGetError(&d);
+        snprintf(err, errlen, "cannot start the viewer: %s", d ? d : "GLFW init failed (no X display?)");
+        return -1;
+    }
+    glfw_users++;
+    glfwDefaultWindowHints();
+    glfwWindowHint(GLFW_VISIBLE, visible ? GLFW_TRUE : GLFW_FALSE);
+    glfwWindowHint(GLFW_RESIZABLE, visible ? GLFW_TRUE : GLFW_FALSE);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 2);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 1);
+    glfwWindowHint(GLFW_DEPTH_BITS, 24);
+    v->win = glfwCreateWindow(v->o.width, v->o.height, "mmsim", NULL, NULL);
+    if (!v->win) {
+        const char *d = NULL;
+        glfwGetError(&d);
+        snprintf(err, errlen, "cannot open the viewer window: %s", d ? d : "unknown GLFW error");
+        if (--glfw_users == 0) glfwTerminate();
+        return -1;
+    }
+    glfwMakeContextCurrent(v->win);
+    glfwSwapInterval(0); /* pacing is ours */
+    glfwSetWindowUserPointer(v->win, v);
+    glfwSetKeyCallback(v->win, on_key);
+    glfwSetMouseButtonCallback(v->win, on_button);
+    glfwSetCursorPosCallback(v->win, on_cursor);
+    glfwSetScrollCallback(v->win, on_scroll);
+    glfwSetWindowSizeCallback(v->win, on_size);
+    glfwGetWindowSize(v->win, &v->o.width, &v->o.height);
+    return 0;
+}
+
+void view_free(view_t *v)
+{
+    if (!v) return;
+    if (v->win) {
+        glfwDestroyWindow(v->win);
+        if (--glfw_users == 0) glfwTerminate();
+    }
+    free(v);
+}
+
+static void draw(view_t *v, sim_t *s)
+{
+    int fw, fh;
+    glfwGetFramebufferSize(v->win, &fw, &fh);
+    scene_belief_t b = { NULL, 0, 0 };
+    const hal_sim_belief_t *hb = hal_sim_belief();
+    if (hb->seq) {
+        b.map = &hb->map;
+        b.cell = hb->cell;
+        b.heading = hb->heading;
+    }
+    scene_draw(s, v->camera, &v->orbit[v->camera], &b, v->overlay, fw, fh);
+    const char *status = v->status[0] ? v->status : v->overlay && !b.map ? "no mouse map to overlay yet" : NULL;
+    hud_info_t in = { v->camera, v->overlay, v->paused, v->speed, v->o.port, v->o.baud, status };
+    hud_draw(s, &in, v->o.width, v->o.height);
+}
+
+static void frame(view_t *v, sim_t *s)
+{
+    draw(v, s);
+    glfwSwapBuffers(v->win);
+    v->next_frame = wall_now() + FRAME_S;
+}
+
+int view_step(view_t *v, sim_t *s)
+{
+    if (!v->win) return 0;
+    if (v->sim != s) {
+        v->sim = s;
+        resync(v);
+    }
+    if (v->closed) return 1;
+    double now = wall_now();
+    if (!v->paused && !v->step_req && sim_time_s(s) < v->sim0 + (now - v->wall0) * v->speed && now < v->next_frame)
+        return 0; /* behind the wall clock and no frame due: keep stepping */
+    for (;;) {
+        now = wall_now();
+        if (now >= v->next_frame) frame(v, s);
+        glfwPollEvents();
+        if (glfwWindowShouldClose(v->win)) v->closed = 1;
+        if (v->closed) return 1;
+        if (v->step_req) {
+            v->step_req = 0;
+            resync(v);
+            return 0; /* one physics step */
+        }
+        if (v->paused) {
+            glfwWaitEventsTimeout(FRAME_S);
+            resync(v);
+            continue;
+        }
+        double target = v->sim0 + (now - v->wall0) * v->speed, t = sim_time_s(s);
+        if (target - t > MAX_LAG_S) { /* cannot keep up: drop the backlog */
+            resync(v);
+            return 0;
+        }
+        if (t < target) return 0;
+        double wait = (t - target) / v->speed, to_frame = v->next_frame - now;
+        if (to_frame < wait) wait = to_frame;
+        if (wait > 0) glfwWaitEventsTimeout(wait);
+    }
+}
+
+void view_hold(view_t *v, sim_t *s)
+{
+    if (!v->win) return;
+    v->sim = s;
+    if (!v->status[0]) snprintf(v->status, sizeof v->status, "run over: close the window to exit");
+    while (!v->closed && !glfwWindowShouldClose(v->win)) {
+        frame(v, s);
+        glfwWaitEventsTimeout(FRAME_S * 4);
+        v->step_req = 0;
+    }
+    v->closed = 1;
+}
+
+int view_screenshot(view_t *v, sim_t *s, const char *path, char *err, size_t errlen)
+{
+    if (!v->win) {
+        snprintf(err, errlen, "%s: no viewer window", path);
+        return -1;
+    }
+    v->sim = s;
+    err[0] = '\0';
+    int fw, fh;
+    glfwGetFramebufferSize(v->win, &fw, &fh);
+    glDrawBuffer(GL_BACK);
+    draw(v, s);
+    glFinish();
+    uint8_t *px = malloc((size_t)fw * (size_t)fh * 3);
+    if (!px) {
+        snprintf(err, errlen, "%s: out of memory", path);
+        return -1;
+    }
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadBuffer(GL_BACK);
+    glReadPixels(0, 0, fw, fh, GL_RGB, GL_UNSIGNED_BYTE, px);
+    int rc = glGetError() == GL_NO_ERROR ? image_write_png_rows(px, fw, fh, 1, path, err, errlen) : -1;
+    if (rc != 0 && !err[0]) snprintf(err, errlen, "%s: cannot read the frame back from OpenGL", path);
+    free(px);
+    return rc;
+}

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# cli_report.sh - mmsim --report: PNG + SVG + JSON beside it for a short
+# run, several colours, true and learned walls drawn, lap table in the JSON
+# (the same as the run's own JSON), errors up front, nothing half written.
+set -u
+S=${MMSIM:-build/mmsim}
+P="python3 test/pngcheck.py"
+T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
+fails=0
+ok()  { echo "ok: $1"; }
+bad() { echo "FAILED: $1"; fails=$((fails+1)); }
+
+# scripted driver (fast): no map of its own, so true walls only
+"$S" --maze mazes/gen-5x5-s1.txt --driver scripted --runs 1 --json --report "$T/run.png" >"$T/out" 2>"$T/err"
+rc=$?; [ $rc -eq 0 ] && ok "scripted run with report" || { bad "scripted run: exit $rc"; cat "$T/err"; }
+[ -s "$T/run.png" ] && [ -s "$T/run.svg" ] && [ -s "$T/run.json" ] && ok "png, svg, json written" || bad "files: $(ls "$T")"
+[ -z "$(ls "$T" | grep '\.tmp\.')" ] && ok "no temporaries left" || bad "temporaries: $(ls "$T")"
+read -r w h cols walls <<<"$($P "$T/run.png" size colours near:b4b4b4:0 | tr '\n' ' ')"
+[ "${w:-0}" -ge 400 ] && [ "${h:-0}" -ge 400 ] && ok "png size ${w}x$h" || bad "png size: $w x $h"
+[ "${cols:-0}" -ge 8 ] && ok "png has $cols colours" || bad "png colours: $cols"
+[ "${walls:-0}" -gt 1000 ] && ok "true walls drawn" || bad "true wall pixels: $walls"
+same=$(python3 -c "
+import json
+r = json.load(open('$T/run.json')); d = json.loads(open('$T/out').read().splitlines()[-1])
+print(len(r['laps']) == len(d['laps']) == 1 and all(abs(a['run_s'] - b['run_s']) < 0.0015 for a, b in zip(r['laps'], d['laps'])) and r['trajectory_samples'] > 100)")
+[ "$same" = True ] && ok "lap table in the report JSON" || bad "report JSON: $(cat "$T/run.json")"
+grep -q '^<svg ' "$T/run.svg" && grep -q '</svg>' "$T/run.svg" && grep -q 'Run time' "$T/run.svg" && ok "svg with lap table" || bad "svg"
+
+# firmware: the learned walls appear in the learned colour
+"$S" --maze mazes/gen-5x5-s1.txt --driver firmware --report "$T/fw" >"$T/out" 2>"$T/err"
+rc=$?; [ $rc -eq 0 ] && ok "firmware run with report" || { bad "firmware run: exit $rc"; cat "$T/err"; }
+[ -s "$T/fw" ] && [ -s "$T/fw.svg" ] && [ -s "$T/fw.json" ] && ok "name without .png: siblings appended" || bad "files: $(ls "$T")"
+learned=$($P "$T/fw" near:202020:0)
+[ "${learned:-0}" -gt 1000 ] && ok "learned walls drawn" || bad "learned wall pixels: $learned"
+
+# errors: one line, exit 2, before running; nothing written
+"$S" --maze mazes/gen-5x5-s1.txt --report "$T/no/such/dir/x.png" >"$T/out" 2>"$T/err"; rc=$?
+[ $rc -eq 2 ] && [ "$(wc -l <"$T/err")" -eq 1 ] && grep -q "^mmsim: --report: $T/no/such/dir/x.png: cannot write" "$T/err" \
+  && ok "unwritable report path" || bad "unwritable report path: exit $rc $(cat "$T/err")"
+"$S" --batch mazes --report "$T/b.png" >"$T/out" 2>"$T/err"; rc=$?
+[ $rc -eq 2 ] && [ ! -e "$T/b.png" ] && ok "--report with --batch refused" || bad "--report with --batch: exit $rc"
+
+[ $fails -eq 0 ] || { echo "$fails failed"; exit 1; }
