@@ -1,6 +1,7 @@
 /* hal_arduino.cpp - hal/hal.h on an Arduino, over mmLink (see MMMouse.h). */
 #include "MMMouse.h"
 
+#include <stdio.h>
 #include <util/atomic.h>
 
 #include "hal.h"
@@ -15,7 +16,7 @@ static volatile uint8_t log_state;       /* 0 free, 1 being filled, 2 waits to b
 static volatile uint16_t log_dropped, overruns;
 static volatile uint8_t busy;
 static uint8_t stop_sent;                /* RUN stop sent: the contest is over */
-static uint8_t done_ticks;               /* ticks since the mouse finished */
+static uint8_t done_ticks;               /* ticks since the mouse finished (26: report queued) */
 static volatile uint16_t worst_tick_half_us; /* longest tick, Timer1 counts (0.5 us at 16 MHz) */
 
 uint32_t hal_micros(void) { return micros(); }
@@ -108,7 +109,13 @@ static void tick()
     /* done, no goal or crashed: tell the sim, after 25 ticks and an empty log
      * queue so the mouse's last lines arrive first */
     if (mouse_status()->mode >= MOUSE_DONE && done_ticks < 25) done_ticks++;
-    if (!stop_sent && done_ticks >= 25 && log_state == 0) {
+    if (done_ticks == 25 && log_state == 0) { /* the runner's own report, once */
+        snprintf(log_line, sizeof log_line, "runner: %u Hz tick, %u overruns, worst tick %u us, %u log lines dropped",
+                 (unsigned)HAL_TICK_HZ, (unsigned)overruns, (unsigned)(worst_tick_half_us / 2u), (unsigned)log_dropped);
+        log_state = 2;
+        done_ticks = 26;
+    }
+    if (!stop_sent && done_ticks > 25 && log_state == 0) {
         memset(&m, 0, sizeof m);
         m.type = WIRE_RUN;
         m.u.flag.on = 0;
