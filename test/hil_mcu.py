@@ -6,7 +6,8 @@ against an independent one.
 
 usage: hil_mcu.py compat|framed PTY SECONDS
 Drives forward at 250/1023 until the front ToF reads under 150 mm, then
-stops; half-way it goes quiet for 0.3 s and unplugs for 0.3 s (reconnects).
+stops; at 20 % it sends one garbage chunk, at 40 % it goes quiet for 0.3 s,
+at 60 % it unplugs for 0.3 s (reconnects).
 Prints one line of what it saw; exit 0 if sensors and encoders arrived."""
 import os, select, struct, sys, time, tty
 
@@ -114,10 +115,14 @@ m.sensors(True)
 m.log('hello from the test MCU')
 end = time.monotonic() + seconds
 quiet_at, unplug_at = time.monotonic() + seconds * 0.4, time.monotonic() + seconds * 0.6
-quiet_done = unplug_done = False
+garbage_at = time.monotonic() + seconds * 0.2
+quiet_done = unplug_done = garbage_done = False
 stopped_at_wall = False
 while time.monotonic() < end:
     now = time.monotonic()
+    if not garbage_done and now >= garbage_at:  # one corrupt chunk: the sim counts exactly one error
+        m.send(bytes([0x42]) if mode == 'compat' else bytes([0x13, 0x37, 0xFF, 0x00]))
+        garbage_done = True
     if not quiet_done and now >= quiet_at:
         time.sleep(0.3); quiet_done = True          # silence: the sim must stop the motors
     if not unplug_done and now >= unplug_at:
