@@ -88,7 +88,7 @@ void view_button(view_t *v, sim_t *s, int button)
         }
         break;
     case HUD_BTN_CONNECT:
-        snprintf(v->status, sizeof v->status, "HIL link not built yet: the port is shown only");
+        snprintf(v->status, sizeof v->status, "the link opens at start: mmsim --serial PORT / --pty / --avr");
         break;
     default: break;
     }
