@@ -39,8 +39,8 @@ extern "C" {
 #ifndef HAL_TICK_HZ /* control tick, Hz; a build may set it (-DHAL_TICK_HZ=...) */
 #ifdef __AVR__
 /* 16 MHz AVR: the float control tick takes ~1 ms, the serial link's
- * decoding and interrupts up to ~1 ms more: at 500 Hz 19 % of the ticks
- * overran in simavr (mmsim --avr), at 250 Hz almost none */
+ * decoding and interrupts up to ~1 ms more: at 500 Hz 19-31 % of the ticks
+ * overran in simavr (mmsim --avr), at 250 Hz none (docs/BENCHMARKS.md) */
 #define HAL_TICK_HZ 250
 #else
 #define HAL_TICK_HZ 1000
