@@ -6,21 +6,30 @@ SHELL := /bin/bash
 DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev libinih-dev \
 	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev \
 	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev \
-	libpng-dev libglfw3-dev libgl-dev xvfb
+	liblcm-java default-jdk-headless libjchart2d-java xvfb \
+	libpng-dev libglfw3-dev libgl-dev
 
 CC      ?= gcc
 STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
 WARN    := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wno-unused-parameter
-INC      = -Ifirmware -Ihal -Ihal/sim -Isim $(shell pkg-config --cflags glib-2.0 ode libpng 2>/dev/null)
+INC      = -Ifirmware -Ihal -Ihal/sim -Ihal/wire -Isim -I$(B)/lcmgen $(shell pkg-config --cflags glib-2.0 ode libpng 2>/dev/null)
 CFLAGS  ?= -O2 -g
 SAN     := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
-LIBS     = -ljansson -linih $(shell pkg-config --libs glib-2.0 ode libpng glfw3 gl 2>/dev/null) -lm
+LIBS     = -ljansson -linih -llcm $(shell pkg-config --libs glib-2.0 ode libpng glfw3 gl 2>/dev/null) -lsimavr -lelf -lm
 B       := build
 
+# LCM message types (package mmlcm): C and Java generated at build time into
+# $(B)/lcmgen and $(B)/lcmjava, never committed.
+LCM_TYPES := $(wildcard lcm/*.lcm)
+LCM_C     := $(patsubst lcm/%.lcm,$(B)/lcmgen/mmlcm_%.c,$(LCM_TYPES))
+LCM_STAMP := $(B)/lcmgen/.stamp
+LCM_JAR   := $(B)/lcmjava/mmlcm-types.jar
+JAVA_CP   := /usr/share/java/lcm.jar:/usr/share/java/jchart2d.jar:$(LCM_JAR)
+
 FW_SRC   := $(wildcard firmware/*.c)
-HOST_SRC := $(wildcard sim/*.c) hal/sim/hal_sim.c
+HOST_SRC := $(wildcard sim/*.c) hal/sim/hal_sim.c hal/wire/wire.c $(LCM_C)
 LIB_SRC  := $(FW_SRC) $(HOST_SRC)
-TOOLS    := mmmaze mmsim
+TOOLS    := mmmaze mmsim mmlog
 TEST_SRC := $(wildcard test/test_*.c)
 TESTS    := $(patsubst test/%.c,$(B)/test/%,$(TEST_SRC))
 
@@ -28,8 +37,10 @@ TESTS    := $(patsubst test/%.c,$(B)/test/%,$(TEST_SRC))
 WRAP_test_explore := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros
 WRAP_test_firmware := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros -Wl,--wrap=hal_motor_set \
 	-Wl,--wrap=hal_encoder -Wl,--wrap=hal_distance
+# Extra sources a test links (shared test vectors).
+EXTRA_test_wire := test/wire_vectors.c
 
-.PHONY: all deps test sim bench fuzz firmware firmware-size mazes clean tools
+.PHONY: all deps test sim bench fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay
 all: tools
 
 deps:
@@ -42,8 +53,20 @@ deps:
 	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null || { echo "make deps: apt-get failed" >&2; exit 3; }; \
 	fi
 
+# ---- LCM types ----
+$(LCM_STAMP): $(LCM_TYPES) | deps
+	@mkdir -p $(dir $@)
+	lcm-gen -c --c-cpath $(B)/lcmgen --c-hpath $(B)/lcmgen $(LCM_TYPES)
+	@touch $@
+$(LCM_C): $(LCM_STAMP)
+$(LCM_JAR): $(LCM_TYPES) | deps
+	@rm -rf $(B)/lcmjava; mkdir -p $(B)/lcmjava/classes
+	lcm-gen -j --jpath $(B)/lcmjava/src $(LCM_TYPES)
+	javac -nowarn -cp /usr/share/java/lcm.jar -d $(B)/lcmjava/classes $$(find $(B)/lcmjava/src -name '*.java')
+	jar cf $@ -C $(B)/lcmjava/classes .
+
 # ---- host library and tools (optimised, no sanitizers) ----
-$(B)/host/%.o: %.c | deps
+$(B)/host/%.o: %.c | deps $(LCM_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) -MMD -MP -c $< -o $@
 $(B)/libmm.a: $(patsubst %.c,$(B)/host/%.o,$(LIB_SRC))
@@ -53,20 +76,21 @@ $(B)/%: tools/%.c $(B)/libmm.a
 tools: $(addprefix $(B)/,$(TOOLS))
 
 # ---- tests (sanitized) ----
-$(B)/san/%.o: %.c | deps
+$(B)/san/%.o: %.c | deps $(LCM_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) -MMD -MP -c $< -o $@
 $(B)/libmm_san.a: $(patsubst %.c,$(B)/san/%.o,$(LIB_SRC))
 	@rm -f $@; ar rcs $@ $^
-$(B)/test/%: test/%.c $(B)/libmm_san.a
+$(B)/test/%: test/%.c $(B)/libmm_san.a test/wire_vectors.c
 	@mkdir -p $(dir $@)
-	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(WRAP_$*) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(EXTRA_$*) $(WRAP_$*) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
 $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
 
-test: deps $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) firmware-size
-	@MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
+test: deps $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
+	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf
+	@MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim MMLOG=$(B)/san-tools/mmlog LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
 # ---- AVR build of the firmware (ATmega328P) ----
 AVR_CC    := avr-gcc
@@ -77,17 +101,93 @@ firmware-size: | deps
 	$(AVR_CC) $(AVR_FLAGS) -Wl,--gc-sections $(FW_SRC) test/avr_main.c -o $(B)/avr/firmware.elf
 	avr-size $(B)/avr/firmware.elf
 	@avr-nm -S --size-sort $(B)/avr/firmware.elf | grep -i ' [bd] ' | tail -8
-firmware: firmware-size
+firmware: firmware-size arduino
+# The wire codec's shared vectors on the ATmega328P, run in simavr by test/cli_hil.sh.
+$(B)/avr/wire_selftest.elf: test/avr_wire.c test/wire_vectors.c hal/wire/wire.c hal/wire/wire.h | deps
+	@mkdir -p $(dir $@)
+	$(AVR_CC) -mmcu=atmega328p -DF_CPU=16000000L -Os -std=c99 -Wall -Wextra -ffunction-sections -fdata-sections \
+	  -Ihal/wire -Itest -Wl,--gc-sections test/avr_wire.c test/wire_vectors.c hal/wire/wire.c -o $@
 
-# ---- simulation: the physics with the scripted driver until the firmware's
-# motion layer lands, then the grid-mode exploration of the firmware ----
+# ---- Arduino builds: hal/arduino + firmware/ + Debian's arduino-core-avr, for the
+# Uno (ATmega328P) and the Mega 2560, every example sketch; flags as the core's
+# platform.txt/boards.txt. `make arduino` (part of `make firmware`) prints avr-size.
+ARD_DIR      := /usr/share/arduino/hardware/arduino/avr
+ARD_CORE     := $(ARD_DIR)/cores/arduino
+ARD_BOARDS   := uno mega2560
+ARD_EXAMPLES := Mouse DriveToWall
+ARD_COMMON   := -DF_CPU=16000000L -DARDUINO=10819 -DARDUINO_ARCH_AVR -Os -ffunction-sections -fdata-sections \
+	-DMAZE_MAX_SIZE=16 -I$(ARD_CORE) -Ihal -Ihal/wire -Ihal/arduino/src -Ifirmware
+ARD_CXX      := -std=gnu++11 -fno-exceptions -fno-threadsafe-statics -fpermissive -DDECIMAL_DIG=__DECIMAL_DIG__
+ARD_uno      := -mmcu=atmega328p -DARDUINO_AVR_UNO -I$(ARD_DIR)/variants/standard
+ARD_mega2560 := -mmcu=atmega2560 -DARDUINO_AVR_MEGA2560 -I$(ARD_DIR)/variants/mega
+ARD_LIB_SRC  := $(wildcard hal/arduino/src/*.cpp) hal/wire/wire.c $(FW_SRC)
+ARD_CORE_SRC := $(wildcard $(ARD_CORE)/*.c $(ARD_CORE)/*.cpp) $(ARD_CORE)/wiring_pulse.S
+ARD_HDRS     := $(wildcard hal/arduino/src/*.h firmware/*.h) hal/hal.h hal/wire/wire.h
+
+define ARD_BOARD_RULES
+$(B)/arduino/$(1)/core/%.c.o: $(ARD_CORE)/%.c | deps
+	@mkdir -p $$(dir $$@)
+	@avr-gcc $(ARD_$(1)) $(ARD_COMMON) -std=gnu11 -c $$< -o $$@
+$(B)/arduino/$(1)/core/%.cpp.o: $(ARD_CORE)/%.cpp | deps
+	@mkdir -p $$(dir $$@)
+	@avr-g++ $(ARD_$(1)) $(ARD_COMMON) $(ARD_CXX) -c $$< -o $$@
+$(B)/arduino/$(1)/core/%.S.o: $(ARD_CORE)/%.S | deps
+	@mkdir -p $$(dir $$@)
+	@avr-gcc $(ARD_$(1)) $(ARD_COMMON) -x assembler-with-cpp -c $$< -o $$@
+$(B)/arduino/$(1)/core.a: $(patsubst $(ARD_CORE)/%,$(B)/arduino/$(1)/core/%.o,$(ARD_CORE_SRC))
+	@rm -f $$@; avr-gcc-ar rcs $$@ $$^
+$(B)/arduino/$(1)/lib/%.c.o: %.c $(ARD_HDRS) | deps
+	@mkdir -p $$(dir $$@)
+	avr-gcc $(ARD_$(1)) $(ARD_COMMON) -std=c99 -Wall -Wextra -c $$< -o $$@
+$(B)/arduino/$(1)/lib/%.cpp.o: %.cpp $(ARD_HDRS) | deps
+	@mkdir -p $$(dir $$@)
+	avr-g++ $(ARD_$(1)) $(ARD_COMMON) $(ARD_CXX) -Wall -Wextra -c $$< -o $$@
+$(B)/arduino/$(1)/libmicromouse.a: $(patsubst %,$(B)/arduino/$(1)/lib/%.o,$(ARD_LIB_SRC))
+	@rm -f $$@; avr-gcc-ar rcs $$@ $$^
+$(foreach e,$(ARD_EXAMPLES),
+$(B)/arduino/$(1)/$(e).elf: hal/arduino/examples/$(e)/$(e).ino $(B)/arduino/$(1)/libmicromouse.a $(B)/arduino/$(1)/core.a $(ARD_HDRS)
+	avr-g++ $(ARD_$(1)) $(ARD_COMMON) $(ARD_CXX) -Wall -x c++ -include Arduino.h -c $$< -o $$@.o
+	avr-gcc $(ARD_$(1)) -Os -Wl,--gc-sections $$@.o $(B)/arduino/$(1)/libmicromouse.a $(B)/arduino/$(1)/core.a -lm -o $$@
+	avr-objcopy -O ihex -R .eeprom $$@ $$(@:.elf=.hex)
+)
+endef
+$(foreach b,$(ARD_BOARDS),$(eval $(call ARD_BOARD_RULES,$(b))))
+ARD_ELFS := $(foreach b,$(ARD_BOARDS),$(foreach e,$(ARD_EXAMPLES),$(B)/arduino/$(b)/$(e).elf))
+# The processor-in-the-loop test image: the Mouse sketch on a 5x5 maze (test/cli_pil.sh).
+$(B)/arduino/%/Mouse-5x5.elf: hal/arduino/examples/Mouse/Mouse.ino $(B)/arduino/%/libmicromouse.a $(B)/arduino/%/core.a $(ARD_HDRS)
+	avr-g++ $(ARD_$*) $(ARD_COMMON) $(ARD_CXX) -DMM_MAZE_SIZE=5 -Wall -x c++ -include Arduino.h -c $< -o $@.o
+	avr-gcc $(ARD_$*) -Os -Wl,--gc-sections $@.o $(B)/arduino/$*/libmicromouse.a $(B)/arduino/$*/core.a -lm -o $@
+arduino: $(ARD_ELFS)
+	@avr-size $(ARD_ELFS)
+# The installable Arduino library (copy to ~/Arduino/libraries/): hal/arduino
+# plus the HAL contract, the wire codec and the firmware, assembled here (a
+# build product: never committed).
+arduino-lib:
+	@rm -rf $(B)/arduino-lib/Micromouse; mkdir -p $(B)/arduino-lib/Micromouse/src
+	cp -r hal/arduino/library.properties hal/arduino/README.md hal/arduino/examples $(B)/arduino-lib/Micromouse/
+	cp hal/arduino/src/* hal/hal.h hal/wire/wire.c hal/wire/wire.h $(B)/arduino-lib/Micromouse/src/
+	cp firmware/*.c firmware/*.h $(B)/arduino-lib/Micromouse/src/
+	@echo "$(B)/arduino-lib/Micromouse: copy it to your Arduino libraries folder (see hal/arduino/README.md)"
+
+# ---- simulation: a whole contest with the firmware in the loop (search,
+# proof, return, speed runs); DRIVER=scripted drives the true best path ----
 MAZE ?= mazes/gen-16x16-s1.txt
 SEED ?= 1
-DRIVER ?= scripted
+DRIVER ?= firmware
 # GUI=1: the same run live in the 3D viewer at x8 (a whole contest in ~75 s)
-sim: deps $(B)/mmsim $(B)/mmmaze
+sim: deps $(B)/mmsim
 	$(B)/mmsim --maze $(MAZE) --seed $(SEED) --driver $(DRIVER) $(if $(GUI),--gui --speed 8)
-	$(B)/mmmaze explore $(MAZE)
+
+# ---- LCM tools: the spy on a live URL or a log, a log replayed in real time ----
+# make spy [LCM_URL=udpm://...] [LOG=run.lcmlog]    make replay LOG=run.lcmlog [SPEED=1]
+LCM_URL ?=
+SPEED ?= 1
+spy: $(LCM_JAR)
+	java -Djava.net.preferIPv4Stack=true -cp $(JAVA_CP) lcm.spy.Spy \
+	  $(if $(LOG),--lcm-url='file://$(abspath $(LOG))?speed=$(SPEED)',$(if $(LCM_URL),--lcm-url='$(LCM_URL)'))
+replay:
+	@[ -n "$(LOG)" ] || { echo "make replay: LOG=FILE is required" >&2; exit 2; }
+	lcm-logplayer --speed=$(SPEED) $(if $(LCM_URL),--lcm-url='$(LCM_URL)') $(LOG)
 
 # ---- benchmarks ----
 bench: deps $(B)/mmmaze $(B)/mmsim $(B)/bench_flood $(B)/simavr_cycles $(B)/avr/flood0.elf $(B)/avr/flood10.elf \
@@ -113,6 +213,9 @@ fuzz: | deps
 	  test/fuzz_mazefile.c sim/mazefile.c firmware/maze.c -o $(B)/fuzz/fuzz_mazefile
 	cp -n mazes/*.txt $(B)/fuzz/corpus/ 2>/dev/null || true
 	$(B)/fuzz/fuzz_mazefile -max_total_time=$(FUZZ_SECONDS) -max_len=8192 $(B)/fuzz/corpus
+	@mkdir -p $(B)/fuzz/corpus_wire
+	clang -g -O1 -fsanitize=fuzzer,address,undefined -Ihal/wire hal/wire/wire.c test/fuzz_wire.c -o $(B)/fuzz/fuzz_wire
+	$(B)/fuzz/fuzz_wire -max_total_time=$(FUZZ_SECONDS) -max_len=512 $(B)/fuzz/corpus_wire
 
 mazes:
 	@if [ -d $(B)/mazefiles ]; then echo "$(B)/mazefiles exists"; else \

@@ -32,4 +32,52 @@ base=$($B/simavr_cycles $B/avr/flood0.elf 2>/dev/null | tail -1); ten=$($B/simav
 awk -v a="$base" -v b="$ten" 'BEGIN { c = (b - a) / 10; printf "AVR (ATmega328P 16 MHz, simavr): full heading-aware flood of a blank 16x16 map: %d cycles = %.1f ms\n", c, c / 16000 }'
 base=$($B/simavr_cycles $B/avr/tick0.elf 2>/dev/null | tail -1); hundred=$($B/simavr_cycles $B/avr/tick100.elf 2>/dev/null | tail -1)
 awk -v a="$base" -v b="$hundred" 'BEGIN { c = (b - a) / 100; printf "AVR (ATmega328P 16 MHz, simavr): one control tick (motion_tick, float): %d cycles = %.3f ms\n", c, c / 16000 }'
+# LCM telemetry overhead: the firmware contest on mazes/gen-16x16-s1.txt, best
+# of 7 runs' CPU time (user + sys; steadier than wall time on a shared
+# machine), headless vs publishing at the default and the highest rate
+python3 - "$B/mmsim" <<'PYEOF'
+import json, os, resource, subprocess, sys, tempfile
+sim, maze = sys.argv[1], "mazes/gen-16x16-s1.txt"
+d = tempfile.mkdtemp(); log = os.path.join(d, "run.lcmlog")
+modes = [("headless", []), ("--lcm-log", ["--lcm-log", log]), ("--lcm=memq://", ["--lcm=memq://"]),
+         ("--lcm-log --lcm=memq://", ["--lcm-log", log, "--lcm=memq://"]),
+         ("--lcm-log --lcm-rate 1000", ["--lcm-log", log, "--lcm-rate", "1000"])]
+best = {}
+for rep in range(7):  # modes interleaved, so drifting load hits them alike
+    for name, args in modes:
+        r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+        out = subprocess.run([sim, "--maze", maze, "--driver", "firmware", "--json"] + args, capture_output=True, text=True).stdout
+        r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+        cpu = (r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime)
+        best[name] = min(best.get(name, cpu), cpu)
+        simt = json.loads(out.splitlines()[-1])["sim_time_s"]
+        size = os.path.getsize(log) if os.path.exists(log) else None
+        if size is not None: os.remove(log)
+        if rep == 0: best[name + " size"] = size
+for name, args in modes:
+    size = best[name + " size"]
+    print("mmsim telemetry %-26s: %.3f s CPU for %.1f s of contest (%+.1f %% vs headless)%s" % (
+        name, best[name], simt, (best[name] / best["headless"] - 1) * 100, "" if size is None else ", log %.1f MB" % (size / 1e6)))
+os.rmdir(d)
+PYEOF
+# The same comparison counted in instructions (valgrind's callgrind: the same
+# count every run, whatever the load), on the firmware contest on gen-8x8-s1
+if command -v valgrind >/dev/null; then
+  TL=$(mktemp -d)
+  for mode in headless --lcm-log --lcm=memq:// "--lcm-log --lcm-rate 1000"; do
+    case $mode in
+      headless) args=() ;;
+      --lcm-log) args=(--lcm-log "$TL/run.lcmlog") ;;
+      --lcm=memq://) args=(--lcm=memq://) ;;
+      *) args=(--lcm-log "$TL/run.lcmlog" --lcm-rate 1000) ;;
+    esac
+    n=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null $B/mmsim --maze mazes/gen-8x8-s1.txt --driver firmware \
+      --json "${args[@]}" 2>&1 >/dev/null | sed -n 's/.*Collected : //p')
+    [ "$mode" = headless ] && base=$n
+    awk -v m="$mode" -v n="$n" -v b="$base" 'BEGIN { printf "mmsim telemetry %-26s: %.3f G instructions, gen-8x8-s1 firmware contest (%+.1f %% vs headless)\n", m, n / 1e9, (n / b - 1) * 100 }'
+  done
+  rm -rf "$TL"
+else
+  echo "SKIP telemetry instruction counts: no valgrind"
+fi
 make -s firmware-size

@@ -17,7 +17,8 @@ void motion_init(motion_t *m)
     m->fwd_err_mm = m->rot_err_mm = 0;
     m->fwd_err_prev = m->rot_err_prev = 0;
     m->heading_rad = 0;
-    m->steer_rad_s = 0;
+    m->lateral_mm = 0;
+    m->lateral_valid = 0;
     m->stall_ms = 0;
     m->crashed = 0;
     m->enabled = 1;
@@ -38,6 +39,41 @@ void motion_turn(motion_t *m, float degrees)
 {
     profile_start(&m->rot, degrees, RC_TURN_DEG_S, 0, RC_TURN_ACCEL_DEG_S2);
     m->heading_rad += degrees * DEG_TO_RAD;
+}
+
+void motion_turn_about(motion_t *m, float degrees, float offset_mm)
+{
+    motion_turn(m, degrees);
+    /* the centre circles the pivot: the forward profile is the rotation's,
+     * scaled by the radius, so both run in step */
+    float k = offset_mm * DEG_TO_RAD; /* mm of travel per degree */
+    float dist = degrees * k, ak = fabsf(k);
+    if (dist != 0) profile_start(&m->fwd, dist, RC_TURN_DEG_S * ak, 0, RC_TURN_ACCEL_DEG_S2 * ak);
+}
+
+void motion_turn_smooth(motion_t *m, float degrees)
+{
+    profile_start(&m->rot, degrees, RC_SMOOTH_DEG_S, 0, RC_SMOOTH_ACCEL_DEG_S2);
+    m->heading_rad += degrees * DEG_TO_RAD;
+}
+
+void motion_smooth_geometry(float v_mm_s, float *offset_mm, float *length_mm)
+{
+    const float dt_s = 1.0f / HAL_TICK_HZ;
+    profile_t p;
+    float theta = 0, along = 0;
+    uint16_t ticks = 0;
+    profile_reset(&p);
+    profile_start(&p, 90.0f, RC_SMOOTH_DEG_S, 0, RC_SMOOTH_ACCEL_DEG_S2);
+    while (p.active && ticks < 5000u) { /* ~250 ticks; the bound is for bad constants */
+        profile_update(&p, dt_s);
+        float w = p.speed * DEG_TO_RAD;
+        along += v_mm_s * dt_s * cosf(theta + 0.5f * w * dt_s);
+        theta += w * dt_s;
+        ticks++;
+    }
+    *offset_mm = along; /* the path is symmetric: the same along both lines */
+    *length_mm = v_mm_s * dt_s * ticks;
 }
 
 /* Busy until the profiles are done AND the robot has caught up with them:
@@ -72,12 +108,22 @@ void motion_tick(motion_t *m, float dt_s)
 
     /* rotation setpoint: the turn profile, or hold the heading plus centring */
     float w_set = m->rot.speed * DEG_TO_RAD;
-    if (!m->rot.active) {
-        /* wall centring turns the heading the robot holds: the walls are
-         * the truth, odometry's heading drifts */
-        m->heading_rad += m->steer_rad_s * dt_s;
-        float heading_err = m->heading_rad - m->odom.theta_rad;
-        w_set += RC_KP_HEADING * heading_err + m->steer_rad_s;
+    if (m->rot.active) {
+        /* a turn follows its profile from the held heading, not from
+         * wherever centring had pointed the robot when it began: the
+         * turn's geometry is then the one planned */
+        float target = m->heading_rad - profile_remaining(&m->rot) * DEG_TO_RAD;
+        w_set += RC_KP_HEADING * (target - m->odom.theta_rad);
+    } else {
+        float offset_rad = 0;
+        if (m->lateral_valid) {
+            m->heading_rad += RC_KI_LATERAL * m->lateral_mm * dt_s;
+            offset_rad = RC_KP_LATERAL * m->lateral_mm;
+            if (offset_rad > RC_LATERAL_MAX_RAD) offset_rad = RC_LATERAL_MAX_RAD;
+            if (offset_rad < -RC_LATERAL_MAX_RAD) offset_rad = -RC_LATERAL_MAX_RAD;
+        }
+        float heading_err = m->heading_rad + offset_rad - m->odom.theta_rad;
+        w_set += RC_KP_HEADING * heading_err;
     }
     float v_set = m->fwd.speed;
     m->fwd_err_mm += v_set * dt_s - m->odom.ds_mm;

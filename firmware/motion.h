@@ -5,8 +5,11 @@
  * robot should be and where odometry says it is are accumulated (forward in
  * mm; rotation in mm of wheel arc), and each wheel gets
  *   feed-forward (motor model: speed and acceleration) + PD on the errors.
- * While driving straight, the heading is held to the move's heading and
- * wall centring adds a steering rate (motion_set_steer).
+ * While driving straight, the heading is held to the move's heading; wall
+ * centring (lateral_mm, set by the caller from the side sensors) turns the
+ * robot towards the centre line in proportion to the offset (P) and slowly
+ * corrects the held heading itself (I): the walls are the truth, odometry's
+ * heading drifts about a degree per metre.
  * Stuck (forward error above RC_STALL_MM for RC_STALL_MS) = crash: the
  * motors stop and stay off. */
 #ifndef MOTION_H
@@ -17,13 +20,14 @@
 #include "odom.h"
 #include "profile.h"
 
-typedef struct {
+typedef struct motion_s {
     odom_t odom;
     profile_t fwd, rot;
     float fwd_err_mm, rot_err_mm;       /* accumulated errors */
     float fwd_err_prev, rot_err_prev;
     float heading_rad;                  /* the heading straight moves hold */
-    float steer_rad_s;                  /* from wall centring, this tick */
+    float lateral_mm;                   /* wall centring: how far right of the centre line */
+    uint8_t lateral_valid;              /* lateral_mm was measured (a side wall is there) */
     uint16_t stall_ms;
     uint8_t crashed;
     uint8_t enabled;
@@ -37,6 +41,19 @@ void motion_forward(motion_t *m, float distance_mm, float v_max, float v_end);
 void motion_forward_accel(motion_t *m, float distance_mm, float v_max, float v_end, float accel);
 /* In-place turn, degrees counter-clockwise (negative = clockwise). */
 void motion_turn(motion_t *m, float degrees);
+/* Turn on the spot about a point offset_mm to the left of the robot's
+ * centre on its axle line (negative: to the right): the body's corners
+ * then sweep a circle about that point. Used to turn about the cell's
+ * centre when the robot stopped off the centre line. */
+void motion_turn_about(motion_t *m, float degrees, float offset_mm);
+/* Smooth turn while moving, degrees counter-clockwise: only the rotation
+ * profile (RC_SMOOTH_*); the forward profile keeps the speed. */
+void motion_turn_smooth(motion_t *m, float degrees);
+/* Where a smooth 90-degree turn at v_mm_s goes: it starts *offset_mm
+ * before the turn point (the crossing of the two centre lines) and ends
+ * *offset_mm past it; *length_mm is its path length. From the same
+ * discrete profile the control tick runs. */
+void motion_smooth_geometry(float v_mm_s, float *offset_mm, float *length_mm);
 int motion_busy(const motion_t *m);
 void motion_stop(motion_t *m);
 /* One control tick of dt_s: odometry, profiles, controller, motors. */

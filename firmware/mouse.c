@@ -13,6 +13,7 @@
  * control interrupt, fw_loop from the main loop. */
 #include "mouse.h"
 
+#include <math.h>
 #include <stdio.h>
 
 #include "explore.h"
@@ -26,14 +27,26 @@ static uint8_t configured;    /* fw_set_maze was called */
 static mouse_status_t st;
 
 /* what the loop is waiting for */
-enum { WAIT_NONE, WAIT_MOVE, WAIT_TURN };
+enum { WAIT_NONE, WAIT_MOVE, WAIT_TURN, WAIT_SMOOTH };
 static uint8_t waiting;
 static uint8_t sensed;        /* walls of the cell ahead read during this move */
 static int8_t next_dir;       /* heading to take at the end of the move, -1 none */
 static uint8_t wall_ahead;    /* the move ends facing a wall */
+static int8_t turn_pending;   /* +-1: a smooth turn starts when the straight ends */
 static uint8_t uturn_stage;   /* 0, or the step of a U-turn under way */
 static uint32_t stage_us;     /* when the current U-turn step began */
 static uint8_t fix_stage;     /* 0, or the step of a front-wall fix under way */
+static uint8_t tof_seq[HAL_TOF_COUNT]; /* readings' seq when the current move began */
+static float smooth_offset_mm; /* a smooth turn starts this far before the turn cell's centre */
+static float smooth_length_mm; /* and drives this far along its arc */
+static float run_offset_mm;   /* speed runs: how far past st.cell's centre the robot is */
+static float move_shift_mm;   /* the move under way ends this far before a cell centre */
+static uint8_t side_seq[2];   /* centring: the side readings last looked at, */
+static uint16_t side_mm[2];   /* their distances */
+static uint8_t side_ok[2];    /* and whether they show a wall where it can be trusted */
+static uint8_t front_seq;     /* front-wall alignment: the reading last used */
+static float last_lateral_mm; /* the last centring estimate of this straight, */
+static uint8_t last_lateral_ok; /* if there was one */
 static uint32_t start_us;
 
 /* The map is set up here rather than copied: a second maze_t would cost
@@ -71,6 +84,9 @@ void fw_setup(void)
     next_dir = -1;
     uturn_stage = 0;
     fix_stage = 0;
+    turn_pending = 0;
+    run_offset_mm = 0;
+    motion_smooth_geometry(RC_SMOOTH_MM_S, &smooth_offset_mm, &smooth_length_mm);
     start_us = hal_micros();
 }
 
@@ -100,28 +116,64 @@ static uint8_t read_walls(void)
     return w;
 }
 
-/* Wall centring from the diagonal sensors, rad/s (positive = turn left). */
-static float centring(void)
+/* Where the robot is along its heading relative to the nearest cell
+ * centre, mm (negative before it), from the move under way: its end lies
+ * move_shift_mm before a cell centre. */
+static float along_cell(void)
 {
-    hal_distance_t l = hal_distance(HAL_TOF_LEFT), r = hal_distance(HAL_TOF_RIGHT);
-    int hl = !l.timeout && l.mm < RC_SIDE_THRESHOLD_MM, hr = !r.timeout && r.mm < RC_SIDE_THRESHOLD_MM;
-    float el = 0.7071f * ((float)l.mm - RC_SIDE_WALL_MM), er = 0.7071f * ((float)r.mm - RC_SIDE_WALL_MM);
-    float e = hl && hr ? 0.5f * (el - er) : hl ? el : hr ? -er : 0.0f;
-    return RC_KP_STEER * e;
+    float y = -fmodf(profile_remaining(&mo.fwd) + move_shift_mm, RC_CELL_MM); /* (-180, 0] */
+    return y < -RC_CELL_MM / 2 ? y + RC_CELL_MM : y;
 }
 
-/* With a wall ahead of the cell we stop in, steer the distance left
- * towards what the front sensor says (removes the odometry error of the
- * straight). Called every loop in the last RC_ALIGN_FROM_MM of a stopping
- * move; readings are 30 ms old at worst and noisy (5 %), so blend gently. */
-static void align_to_front_wall(void)
+/* Wall centring from the diagonal sensors: the robot's offset right of
+ * the centre line, mm, when a side wall is seen (sets mo.lateral_*). A
+ * diagonal ray meets the wall at 45 degrees, so 1 mm sideways is 1.41 mm
+ * along the ray. A reading is judged where it arrived: between
+ * RC_SIDE_BLIND_FROM_MM before a cell centre and RC_SIDE_BLIND_TO_MM past
+ * it the rays can meet the wall across the end of the cell (or the next
+ * one's, where the side wall is missing), which looks like a near side
+ * wall; those readings are dropped. */
+static void centring(void)
+{
+    float y = along_cell();
+    uint8_t usable = y < -RC_SIDE_BLIND_FROM_MM || y > RC_SIDE_BLIND_TO_MM;
+    for (uint8_t i = 0; i < 2; i++) {
+        uint8_t sensor = i ? HAL_TOF_RIGHT : HAL_TOF_LEFT;
+        hal_distance_t d = hal_distance(sensor);
+        if (d.seq == side_seq[i]) continue;
+        side_seq[i] = d.seq;
+        side_ok[i] = usable && !d.timeout && d.mm < RC_SIDE_THRESHOLD_MM;
+        side_mm[i] = d.mm;
+    }
+    float el = 0.7071f * ((float)side_mm[0] - RC_SIDE_WALL_MM), er = 0.7071f * ((float)side_mm[1] - RC_SIDE_WALL_MM);
+    mo.lateral_mm = side_ok[0] && side_ok[1] ? 0.5f * (el - er) : side_ok[0] ? el : side_ok[1] ? -er : 0.0f;
+    mo.lateral_valid = (uint8_t)(side_ok[0] || side_ok[1]);
+    if (mo.lateral_valid) {
+        last_lateral_mm = mo.lateral_mm;
+        last_lateral_ok = 1;
+    }
+}
+
+static void no_centring(void) { mo.lateral_valid = 0; }
+
+/* With a wall ahead, move the end of the move towards what the front
+ * sensor says (removes the odometry error of the straight). The move ends
+ * `before_mm` short of the centre of the cell with that wall: 0 for a stop,
+ * the smooth-turn offset for a turn. Each reading is used once, when it
+ * arrives (it is exact then; 30 ms later the robot has moved up to 33 mm),
+ * and only if taken during this straight (not while turning into it). The
+ * sensor's noise is 5 % of the distance (6 mm at 120 mm), so each reading
+ * moves the end by RC_ALIGN_GAIN of the difference. */
+static void align_to_front_wall(float before_mm)
 {
     hal_distance_t f = hal_distance(HAL_TOF_FRONT);
+    if (f.seq == front_seq) return;
+    front_seq = f.seq;
     float left = profile_remaining(&mo.fwd);
     if (f.timeout || left > RC_ALIGN_FROM_MM) return;
-    float by_sensor = (float)f.mm - RC_FRONT_AT_CENTRE_MM;
+    float by_sensor = (float)f.mm - RC_FRONT_AT_CENTRE_MM - before_mm;
     if (by_sensor > left - 20.0f && by_sensor < left + 20.0f)
-        profile_set_remaining(&mo.fwd, left + 0.02f * (by_sensor - left));
+        profile_set_remaining(&mo.fwd, left + RC_ALIGN_GAIN * (by_sensor - left));
 }
 
 /* Standing before a wall: wait for a fresh front reading (>= 35 ms: the
@@ -150,12 +202,44 @@ static int front_fix(void)
     return 1;
 }
 
-static void start_forward(float cells, float speed, float v_end, float accel)
+/* Remember the sensors' reading counts: fresh() is true once each has
+ * delivered a reading taken after this moment. */
+static void mark_readings(void)
 {
-    motion_forward_accel(&mo, cells * RC_CELL_MM, speed, v_end, accel);
+    for (uint8_t i = 0; i < HAL_TOF_COUNT; i++) tof_seq[i] = hal_distance(i).seq;
+    side_seq[0] = tof_seq[HAL_TOF_LEFT];
+    side_seq[1] = tof_seq[HAL_TOF_RIGHT];
+    side_ok[0] = side_ok[1] = 0;
+    front_seq = tof_seq[HAL_TOF_FRONT];
+    last_lateral_ok = 0;
+}
+
+static int fresh(void)
+{
+    for (uint8_t i = 0; i < HAL_TOF_COUNT; i++)
+        if (hal_distance(i).seq == tof_seq[i]) return 0;
+    return 1;
+}
+
+static void start_forward(float mm, float speed, float v_end, float accel)
+{
+    motion_forward_accel(&mo, mm, speed, v_end, accel);
     waiting = WAIT_MOVE;
     sensed = 0;
     wall_ahead = 0;
+    turn_pending = 0;
+    move_shift_mm = 0;
+    mark_readings();
+}
+
+/* The straight before a smooth turn is over: turn, keeping the speed. */
+static void start_smooth(void)
+{
+    motion_forward_accel(&mo, smooth_length_mm, RC_SMOOTH_MM_S, RC_SMOOTH_MM_S, RC_ACCEL_MM_S2);
+    motion_turn_smooth(&mo, -90.0f * turn_pending); /* a right turn (+1) is clockwise */
+    no_centring();
+    turn_pending = 0;
+    waiting = WAIT_SMOOTH;
 }
 
 /* A turn on the spot; a U-turn is two left quarter turns with a stop
@@ -164,11 +248,17 @@ static void start_forward(float cells, float speed, float v_end, float accel)
  * corners sweeping round: the offset from the straight must go first). */
 static void start_turn(int8_t q)
 {
+    /* off the centre line by more than the noise: turn about the centre */
+    float pivot = 0;
+    if (last_lateral_ok && (last_lateral_mm > 1.5f || last_lateral_mm < -1.5f))
+        pivot = last_lateral_mm > RC_PIVOT_MAX_MM ? RC_PIVOT_MAX_MM
+              : last_lateral_mm < -RC_PIVOT_MAX_MM ? -RC_PIVOT_MAX_MM : last_lateral_mm;
+    last_lateral_ok = 0;
     if (q == 2 || q == -2) {
-        motion_turn(&mo, 90.0f);
+        motion_turn_about(&mo, 90.0f, pivot);
         uturn_stage = 1;
     } else {
-        motion_turn(&mo, -90.0f * q); /* a right turn (q = 1) is clockwise */
+        motion_turn_about(&mo, -90.0f * q, pivot); /* a right turn (q = 1) is clockwise */
         uturn_stage = 0;
     }
     waiting = WAIT_TURN;
@@ -192,7 +282,8 @@ static int turn_done(void)
 }
 
 /* Search: decide at the sensing point of each cell. st.heading is the way
- * the robot faces; ex.cell is the cell it is in or committed to. */
+ * the robot faces (or will face once a pending turn is made); ex.cell is
+ * the cell it is in or committed to. */
 static void search_step(void)
 {
     if (waiting == WAIT_NONE) {
@@ -212,17 +303,29 @@ static void search_step(void)
         int8_t q = quarter(st.heading, (uint8_t)d);
         st.heading = (uint8_t)d;
         if (q) start_turn(q);
-        else start_forward(1, RC_SEARCH_MM_S, RC_SEARCH_MM_S, RC_ACCEL_MM_S2);
+        else start_forward(RC_CELL_MM, RC_SEARCH_MM_S, RC_SEARCH_MM_S, RC_ACCEL_MM_S2);
         return;
     }
     if (waiting == WAIT_TURN) {
         if (!turn_done()) return;
-        start_forward(1, RC_SEARCH_MM_S, RC_SEARCH_MM_S, RC_ACCEL_MM_S2);
+        start_forward(RC_CELL_MM, RC_SEARCH_MM_S, RC_SEARCH_MM_S, RC_ACCEL_MM_S2);
+        return;
+    }
+    if (waiting == WAIT_SMOOTH) {
+        if (mo.rot.active) return;
+        /* on the new heading, the offset past the turn cell's centre */
+        start_forward(RC_CELL_MM - smooth_offset_mm, RC_SEARCH_MM_S, RC_SEARCH_MM_S, RC_ACCEL_MM_S2);
         return;
     }
     /* WAIT_MOVE */
-    mo.steer_rad_s = centring();
-    if (!sensed && profile_remaining(&mo.fwd) <= RC_SENSE_BEFORE_MM) {
+    centring();
+    if (turn_pending) {
+        if (wall_ahead) align_to_front_wall(smooth_offset_mm);
+        if (!mo.fwd.active) start_smooth();
+        return;
+    }
+    float left = profile_remaining(&mo.fwd);
+    if (!sensed && left <= RC_SENSE_BEFORE_MM && (fresh() || left <= RC_SENSE_LATEST_MM)) {
         sensed = 1;
         uint8_t walls = read_walls();
         explore_moved(&ex, st.heading); /* committed to the cell ahead */
@@ -230,19 +333,28 @@ static void search_step(void)
         log_line("sensed cell %u walls %u", ex.cell, walls);
         hal_belief(&ex.map, ex.cell, st.heading, st.mode);
         int d = explore_next(&ex);
+        wall_ahead = (walls & EXPLORE_WALL_FRONT) != 0;
         if (d >= 0 && (uint8_t)d == st.heading) {
-            profile_set_remaining(&mo.fwd, profile_remaining(&mo.fwd) + RC_CELL_MM);
+            profile_set_remaining(&mo.fwd, left + RC_CELL_MM);
             sensed = 0;
             return;
         }
+        int8_t q = d >= 0 ? quarter(st.heading, (uint8_t)d) : 0;
+        if ((q == 1 || q == -1) && left >= smooth_offset_mm + 1.0f) {
+            /* go on to the turn's start, turn there without stopping */
+            profile_set_remaining(&mo.fwd, left - smooth_offset_mm);
+            move_shift_mm = smooth_offset_mm;
+            turn_pending = q;
+            st.heading = (uint8_t)d;
+            return;
+        }
         mo.fwd.v_end = 0; /* stop in the cell ahead */
-        wall_ahead = (walls & EXPLORE_WALL_FRONT) != 0;
         next_dir = (int8_t)d;
         return;
     }
-    if (sensed && wall_ahead && mo.fwd.active) align_to_front_wall();
+    if (sensed && wall_ahead && mo.fwd.active) align_to_front_wall(0);
     if (sensed && !motion_busy(&mo)) {
-        mo.steer_rad_s = 0;
+        no_centring();
         if (wall_ahead && !front_fix()) return;
         if (next_dir < 0) {
             waiting = WAIT_NONE; /* explore has ended: the next call sees it */
@@ -254,18 +366,17 @@ static void search_step(void)
     }
 }
 
-/* Speed runs and the way back: one move per straight of the known path. */
-static void run_step(int to_goal)
+static int path_dir(int to_goal, maze_cell_t c, uint8_t h)
 {
-    if (waiting == WAIT_TURN && !turn_done()) return;
-    if (waiting == WAIT_MOVE) {
-        mo.steer_rad_s = centring();
-        if (!maze_passable(&ex.map, st.cell, st.heading, 0)) align_to_front_wall();
-        if (motion_busy(&mo)) return;
-        mo.steer_rad_s = 0;
-        if (!maze_passable(&ex.map, st.cell, st.heading, 0) && !front_fix()) return;
-    }
-    int d = to_goal ? explore_run_dir(&ex, st.cell, st.heading) : explore_home_dir(&ex, st.cell, st.heading);
+    return to_goal ? explore_run_dir(&ex, c, h) : explore_home_dir(&ex, c, h);
+}
+
+/* Speed runs and the way back: one move per straight of the known path,
+ * joined by smooth turns; stops only at the end (or for a U-turn). The
+ * robot is run_offset_mm past the centre of st.cell, facing st.heading. */
+static void run_plan(int to_goal)
+{
+    int d = path_dir(to_goal, st.cell, st.heading);
     if (d < 0) {
         waiting = WAIT_NONE;
         if (to_goal) {
@@ -278,24 +389,70 @@ static void run_step(int to_goal)
         return;
     }
     int8_t q = quarter(st.heading, (uint8_t)d);
-    if (q) {
+    if (q) { /* standing at a centre: turn on the spot */
         start_turn(q);
         st.heading = (uint8_t)d;
         return;
     }
-    /* count the straight cells ahead on the path */
+    /* the straight cells ahead, and what happens at the last one */
     maze_cell_t c = st.cell;
     uint8_t n = 0;
+    int dd;
     for (;;) {
         maze_cell_t nx;
-        if (!maze_neighbour(&ex.map, c, st.heading, &nx)) break;
+        if (!maze_neighbour(&ex.map, c, st.heading, &nx)) return; /* cannot happen on a known path */
         c = nx;
         n++;
-        int dd = to_goal ? explore_run_dir(&ex, c, st.heading) : explore_home_dir(&ex, c, st.heading);
+        dd = path_dir(to_goal, c, st.heading);
         if (dd != st.heading) break;
     }
-    start_forward(n, to_goal ? RC_RUN_MM_S : RC_SEARCH_MM_S, 0, to_goal ? RC_RUN_ACCEL_MM_S2 : RC_ACCEL_MM_S2);
+    float v_max = to_goal ? RC_RUN_MM_S : RC_SEARCH_MM_S;
+    float accel = to_goal ? RC_RUN_ACCEL_MM_S2 : RC_ACCEL_MM_S2;
+    float mm = n * RC_CELL_MM - run_offset_mm;
+    int8_t qq = dd >= 0 ? quarter(st.heading, (uint8_t)dd) : 0;
     st.cell = c;
+    if ((qq == 1 || qq == -1) && mm >= smooth_offset_mm) {
+        start_forward(mm - smooth_offset_mm, v_max, RC_SMOOTH_MM_S, accel);
+        move_shift_mm = smooth_offset_mm;
+        turn_pending = qq;
+        wall_ahead = !maze_passable(&ex.map, c, st.heading, 0);
+        st.heading = (uint8_t)dd;
+    } else {
+        start_forward(mm, v_max, 0, accel);
+        wall_ahead = !maze_passable(&ex.map, c, st.heading, 0);
+    }
+    run_offset_mm = 0;
+}
+
+static void run_step(int to_goal)
+{
+    if (waiting == WAIT_TURN) {
+        if (!turn_done()) return;
+        run_offset_mm = 0;
+        run_plan(to_goal);
+        return;
+    }
+    if (waiting == WAIT_SMOOTH) {
+        if (mo.rot.active) return;
+        run_offset_mm = smooth_offset_mm;
+        run_plan(to_goal);
+        return;
+    }
+    if (waiting == WAIT_MOVE) {
+        if (turn_pending) {
+            centring();
+            if (wall_ahead) align_to_front_wall(smooth_offset_mm);
+            if (!mo.fwd.active) start_smooth();
+            return;
+        }
+        centring();
+        if (wall_ahead) align_to_front_wall(0);
+        if (motion_busy(&mo)) return;
+        no_centring();
+        if (wall_ahead && !front_fix()) return;
+        run_offset_mm = 0;
+    }
+    run_plan(to_goal);
 }
 
 void fw_loop(void)
@@ -337,3 +494,4 @@ void fw_loop(void)
 
 const maze_t *mouse_map(void) { return &ex.map; }
 uint16_t mouse_proven_at_step(void) { return ex.proven_at_step; }
+const struct motion_s *mouse_motion(void) { return &mo; }

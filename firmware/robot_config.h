@@ -31,21 +31,48 @@
  * wall one cell further out (~310 mm) or to a post. */
 #define RC_SIDE_WALL_MM 62.0f
 #define RC_SIDE_THRESHOLD_MM 110.0f  /* nearer = wall present */
+/* The diagonal rays meet the side wall 94 mm ahead of the body centre: from
+ * 48 mm before a cell centre to 4 mm past it they can reach the post row
+ * at the cell's end first (a wall ahead, or the neighbour's end wall where
+ * the side wall is missing), which reads like a near side wall. */
+#define RC_SIDE_BLIND_FROM_MM 48.0f
+#define RC_SIDE_BLIND_TO_MM 4.0f
 /* distance from the front sensor to the wall ahead when centred in a cell */
 #define RC_FRONT_AT_CENTRE_MM (RC_CELL_MM / 2 - RC_WALL_MM / 2 - RC_TOF_FRONT_Y_MM) /* 29 mm */
 
 /* ---- search and run speeds ---- */
-#define RC_SEARCH_MM_S 700.0f        /* straights while exploring */
+/* Search runs at the smooth-turn speed throughout: the turn is decided at
+ * the sensing point, too late to brake from a faster straight. */
+#define RC_SEARCH_MM_S 500.0f
 #define RC_RUN_MM_S 1100.0f          /* speed runs (motor no-load ~1210 mm/s at 6 V) */
 #define RC_ACCEL_MM_S2 3000.0f       /* ~0.3 g; tyres hold ~1 g at mu 1.0 */
 #define RC_RUN_ACCEL_MM_S2 3000.0f   /* speed runs: 5000 crashed on japan2019 (wheel slip in the stops) */
 #define RC_TURN_DEG_S 600.0f         /* in-place turns */
-#define RC_TURN_ACCEL_DEG_S2 6000.0f
+#define RC_TURN_ACCEL_DEG_S2 3000.0f
+/* On the spot the body's corners sweep 77 mm about the pivot and the cell
+ * leaves 84 mm: 7 mm off the centre line touches a wall. Off-centre stops
+ * turn about the cell's centre instead (up to this far from the robot's). */
+#define RC_PIVOT_MAX_MM 8.0f
+/* Smooth 90-degree turns while moving at RC_SMOOTH_MM_S: the rotation
+ * profile ramps to 8 rad/s at 160 rad/s^2 (peak 0.41 g sideways; outer
+ * wheel 884 mm/s of the motor's ~1210). The turn starts ~75 mm before the
+ * turn cell's centre and ends ~75 mm past it on the new heading (computed
+ * at start-up, motion_smooth_geometry); its body keeps >= 17 mm from the
+ * cell's walls and 32 mm from the inner post (checked numerically for the
+ * 96 x 120 mm body). A shorter offset leaves the 30 ms ToF sensors time to
+ * deliver a fresh reading of the next cell before its own turn must start. */
+#define RC_SMOOTH_MM_S 500.0f
+#define RC_SMOOTH_DEG_S 458.4f       /* 8 rad/s */
+#define RC_SMOOTH_ACCEL_DEG_S2 9167.3f /* 160 rad/s^2 */
 /* sense the next cell's walls this far before its centre: the diagonal
  * rays then hit it 74 mm past its entry boundary, clear of the posts */
 #define RC_SENSE_BEFORE_MM 110.0f
-/* front-wall alignment works in the last part of a stopping move */
+/* without a fresh reading by this distance before a cell's centre, sense
+ * with the last one (at most 30 ms = 15 mm old at search speed) */
+#define RC_SENSE_LATEST_MM 60.0f
+/* front-wall alignment works in the last part of a move towards a wall */
 #define RC_ALIGN_FROM_MM 90.0f
+#define RC_ALIGN_GAIN 0.35f /* share of the sensor's correction taken per reading */
 
 /* ---- controller gains (tuned in mmsim on japan2018) ---- */
 /* Plant: one command step accelerates the robot by ~22 mm/s^2, and the
@@ -55,7 +82,13 @@
 #define RC_KD_FWD 0.0f     /* command per mm/s of forward speed error */
 #define RC_KP_ROT 30.0f    /* command per mm of wheel-arc rotation error */
 #define RC_KD_ROT 0.0f     /* command per mm/s of wheel-arc rotation rate error */
-#define RC_KP_STEER 0.02f  /* rad/s of steering per mm of lateral error (wall centring) */
+/* Wall centring: heading offset per mm off the centre line (P: 10 mm ->
+ * 5.7 degrees; with the heading loop's 0.1 s lag the lateral loop is
+ * damped at zeta ~0.7 at 500 mm/s, ~0.5 at 1100 mm/s) and the rate at
+ * which the held heading itself follows (I, a fifth of P per second). */
+#define RC_KP_LATERAL 0.01f   /* rad per mm */
+#define RC_KI_LATERAL 0.01f  /* rad/s per mm */
+#define RC_LATERAL_MAX_RAD 0.15f /* at most 8.6 degrees off the held heading */
 #define RC_KP_HEADING 10.0f /* rad/s of steering per rad of heading error */
 
 /* a move is over when the robot is within this of its setpoint, this slow */

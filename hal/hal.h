@@ -18,6 +18,8 @@
  *   the default robot (12 PPR x 29.86 gear).
  * - hal_distance: the latest reading of a ToF sensor in mm and its timeout
  *   flag (nothing within range); each sensor updates about every 30 ms.
+ *   seq counts the readings (the sensor's data-ready events), so the
+ *   firmware can wait for one taken after a given moment, e.g. after a turn.
  * - hal_log: one text line without the trailing newline, at most
  *   HAL_LOG_MAX bytes; the backend may print, forward or drop it, and must
  *   not block for longer than it takes to queue it.
@@ -29,8 +31,21 @@
 
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define HAL_LOG_MAX 80   /* bytes per log line, without the NUL */
-#define HAL_TICK_HZ 1000 /* default control tick; the backend may be configured otherwise */
+#ifndef HAL_TICK_HZ /* control tick, Hz; a build may set it (-DHAL_TICK_HZ=...) */
+#ifdef __AVR__
+/* 16 MHz AVR: the float control tick takes ~1 ms, the serial link's
+ * decoding and interrupts up to ~1 ms more: at 500 Hz 19-31 % of the ticks
+ * overran in simavr (mmsim --avr), at 250 Hz none (docs/BENCHMARKS.md) */
+#define HAL_TICK_HZ 250
+#else
+#define HAL_TICK_HZ 1000
+#endif
+#endif
 
 enum { HAL_LEFT = 0, HAL_RIGHT = 1 };
 enum { HAL_TOF_LEFT = 0, HAL_TOF_FRONT = 1, HAL_TOF_RIGHT = 2, HAL_TOF_COUNT = 3 };
@@ -38,6 +53,7 @@ enum { HAL_TOF_LEFT = 0, HAL_TOF_FRONT = 1, HAL_TOF_RIGHT = 2, HAL_TOF_COUNT = 3
 typedef struct {
     uint16_t mm;     /* distance, millimetres */
     uint8_t timeout; /* 1 = nothing within range (mm is then the range) */
+    uint8_t seq;     /* +1 (mod 256) with every new reading of this sensor */
 } hal_distance_t;
 
 struct maze_s;
@@ -54,5 +70,9 @@ void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_
 void fw_setup(void);
 void fw_tick(void);
 void fw_loop(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -32,6 +32,7 @@ int sim_init(sim_t *s, const simcfg_t *c, const maze_t *m, uint64_t seed)
         s->tof_last[i].timeout = 1;
         s->tof_true_m[i] = -1;
         s->tof_next_step[i] = (uint64_t)i * period / WORLD_TOF_COUNT; /* staggered */
+        s->tof_count[i] = 0;
     }
     s->tof_enabled = 1;
     race_init(&s->race, m, cell, c->time_limit_s);
@@ -64,6 +65,7 @@ void sim_step(sim_t *s)
         /* rays only when a sensor updates: 3 rays per 30 ms, not per step */
         s->tof_true_m[i] = world_tof_ray(s->world, i, s->cfg.tof_range_m);
         s->tof_last[i] = tof_measure(&s->tof[i], s->tof_true_m[i]);
+        s->tof_count[i]++;
     }
     double x, y, h;
     world_pose(s->world, &x, &y, &h);

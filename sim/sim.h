@@ -26,6 +26,7 @@ typedef struct sim_s {
     tof_reading_t tof_last[WORLD_TOF_COUNT];
     double tof_true_m[WORLD_TOF_COUNT]; /* ray distance behind the last reading, -1 none */
     uint64_t tof_next_step[WORLD_TOF_COUNT];
+    uint32_t tof_count[WORLD_TOF_COUNT]; /* readings taken */
     int tof_enabled;
     race_t race;
     uint64_t step;           /* physics steps done */

@@ -88,7 +88,7 @@ void view_button(view_t *v, sim_t *s, int button)
         }
         break;
     case HUD_BTN_CONNECT:
-        snprintf(v->status, sizeof v->status, "HIL link not built yet: the port is shown only");
+        snprintf(v->status, sizeof v->status, "the link opens at start: mmsim --serial PORT / --pty / --avr");
         break;
     default: break;
     }
@@ -226,7 +226,12 @@ static void draw(view_t *v, sim_t *s)
     int fw, fh;
     glfwGetFramebufferSize(v->win, &fw, &fh);
     scene_belief_t b = { NULL, 0, 0 };
-    hal_sim_belief(&b.map, &b.cell, &b.heading, NULL);
+    const hal_sim_belief_t *hb = hal_sim_belief();
+    if (hb->seq) {
+        b.map = &hb->map;
+        b.cell = hb->cell;
+        b.heading = hb->heading;
+    }
     scene_draw(s, v->camera, &v->orbit[v->camera], &b, v->overlay, fw, fh);
     const char *status = v->status[0] ? v->status : v->overlay && !b.map ? "no mouse map to overlay yet" : NULL;
     hud_info_t in = { v->camera, v->overlay, v->paused, v->speed, v->o.port, v->o.baud, status };

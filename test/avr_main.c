@@ -10,7 +10,7 @@ uint32_t hal_micros(void) { return fake_us; }
 void hal_motor_set(int16_t left, int16_t right) { motor[0] = left; motor[1] = right; }
 int32_t hal_encoder(uint8_t side) { return motor[side & 1]; }
 void hal_encoder_reset(void) {}
-hal_distance_t hal_distance(uint8_t sensor) { hal_distance_t d = { (uint16_t)(100u + sensor), 0 }; return d; }
+hal_distance_t hal_distance(uint8_t sensor) { hal_distance_t d = { (uint16_t)(100u + sensor), 0, 0 }; return d; }
 void hal_log(const char *line) { (void)line; }
 void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_t state)
 {

@@ -56,9 +56,9 @@ mkdir "$T/batch"; cp mazes/gen-5x5-s1.txt "$T/batch/a.txt"; cp "$T/closed.txt" "
 want_rc 1 "batch worst code" "$S" --batch "$T/batch" --jobs 2 --runs 1
 [ "$(python3 -c "import json; print([json.loads(l)['maze'].split('/')[-1] for l in open('$T/out')])")" = "['a.txt', 'b.txt', 'c.txt']" ] && ok "batch order" || bad "batch order: $(cat "$T/out")"
 # the firmware in the loop: search, prove, speed runs on small mazes
-for m in gen-5x5-s1 gen-8x8-s1; do
+for m in gen-5x5-s1 gen-8x8-s1 gen-16x16-s1 gen-16x16-s2; do
   want_rc 0 "firmware contest $m" "$S" --maze mazes/$m.txt --driver firmware --json
-  [ "$(py "(d['driver'], d['reached_goal'], d['final_path_optimal'], d['exit_reason'], len(d['laps']) >= 2, d['best_run_s'] <= d['first_run_s'])")" = "('firmware', True, True, 'done', True, True)" ] && ok "firmware $m proven and raced" || bad "firmware $m: $(cat "$T/out")"
+  [ "$(py "(d['driver'], d['reached_goal'], d['final_path_optimal'], d['exit_reason'], len(d['laps']) >= 2, d['best_run_s'] <= d['first_run_s'], d['collisions'])")" = "('firmware', True, True, 'done', True, True, 0)" ] && ok "firmware $m proven and raced, no wall touched" || bad "firmware $m: $(cat "$T/out")"
 done
 "$S" --maze mazes/gen-5x5-s1.txt --driver firmware --json >"$T/f1"; "$S" --maze mazes/gen-5x5-s1.txt --driver firmware --json >"$T/f2"
 [ "$(strip "$T/f1")" = "$(strip "$T/f2")" ] && ok "firmware run deterministic" || bad "firmware run deterministic"

@@ -138,6 +138,49 @@ static void test_motion_tracks_straight(void **state)
     near(m.odom.dist_mm, 180, 1.0);
 }
 
+/* A smooth turn at search speed: starts and ends 60-90 mm from the turn
+ * point (its body keeps clear of the posts and walls only there), and its
+ * path length is speed x duration of the rotation profile. */
+static void test_smooth_geometry(void **state)
+{
+    (void)state;
+    float d, len, d2, len2;
+    motion_smooth_geometry(RC_SMOOTH_MM_S, &d, &len);
+    assert_true(d > 60.0f && d < 90.0f);
+    /* a quarter circle through the same points would be pi/2 * d long;
+     * the ramps make the real path longer than that and shorter than the
+     * two legs */
+    assert_true(len > 1.5708f * d * 0.98f && len < 2.0f * d);
+    /* twice the speed, same profile in time: twice the size */
+    motion_smooth_geometry(2 * RC_SMOOTH_MM_S, &d2, &len2);
+    near(d2, 2 * d, 0.01 * d);
+    near(len2, 2 * len, 1e-3 * len);
+}
+
+/* Turning about a point beside the robot: the forward profile is the
+ * rotation's scaled by the radius, so both end together, and the distance
+ * is the arc (left pivot, counter-clockwise: forward). */
+static void test_turn_about(void **state)
+{
+    (void)state;
+    motion_t m;
+    enc[0] = enc[1] = 0;
+    motion_init(&m);
+    motion_turn_about(&m, 90.0f, 6.0f);
+    near(m.fwd.target, 6.0f * 1.5707963f, 1e-4);
+    int ticks = 0;
+    while ((m.fwd.active || m.rot.active) && ticks < 5000) {
+        profile_update(&m.fwd, 0.001f);
+        profile_update(&m.rot, 0.001f);
+        near(m.fwd.pos, m.rot.pos * 6.0f * 0.017453293f, 0.05);
+        ticks++;
+    }
+    assert_false(m.fwd.active);
+    assert_false(m.rot.active);
+    motion_turn_about(&m, -90.0f, 6.0f); /* clockwise about a left pivot: backwards */
+    assert_true(m.fwd.target < 0);
+}
+
 /* The start cell boxed in: the mouse reports it and stops. */
 static void test_mouse_no_goal(void **state)
 {
@@ -146,7 +189,7 @@ static void test_mouse_no_goal(void **state)
     maze_init(&m, 4, 4);
     enc[0] = enc[1] = 0;
     now_us = 0;
-    for (int i = 0; i < 3; i++) tof[i] = (hal_distance_t){ 20, 0 }; /* walls all round */
+    for (int i = 0; i < 3; i++) tof[i] = (hal_distance_t){ 20, 0, 0 }; /* walls all round */
     fw_set_maze(&m);
     log_checked = 1;
     expect_string(__wrap_hal_log, line, "explore: goal unreachable");
@@ -170,8 +213,8 @@ static void test_mouse_sets_off(void **state)
     maze_init(&m, 4, 4);
     enc[0] = enc[1] = 0;
     now_us = 0;
-    tof[HAL_TOF_FRONT] = (hal_distance_t){ 1200, 1 };
-    tof[HAL_TOF_LEFT] = tof[HAL_TOF_RIGHT] = (hal_distance_t){ 62, 0 };
+    tof[HAL_TOF_FRONT] = (hal_distance_t){ 1200, 1, 0 };
+    tof[HAL_TOF_LEFT] = tof[HAL_TOF_RIGHT] = (hal_distance_t){ 62, 0, 0 };
     fw_set_maze(&m);
     fw_setup();
     for (int i = 0; i < 50; i++) {
@@ -193,6 +236,8 @@ int main(void)
         cmocka_unit_test(test_profile_trapezoid),
         cmocka_unit_test(test_motion_stall_is_a_crash),
         cmocka_unit_test(test_motion_tracks_straight),
+        cmocka_unit_test(test_smooth_geometry),
+        cmocka_unit_test(test_turn_about),
         cmocka_unit_test(test_mouse_no_goal),
         cmocka_unit_test(test_mouse_sets_off),
     };

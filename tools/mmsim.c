@@ -19,11 +19,15 @@
 #include "driver.h"
 #include "hal.h"
 #include "hal_sim.h"
+#include "link.h"
+#include "pil.h"
+#include "serial.h"
 #include "mouse.h"
 #include "solve.h"
 #include "mazedir.h"
 #include "mazefile.h"
 #include "sim.h"
+#include "telem.h"
 #include "outfile.h"
 #include "report.h"
 #include "view.h"
@@ -41,11 +45,16 @@ typedef struct {
     int scripted;       /* --driver scripted */
     int verbose;        /* --verbose: firmware log lines on stderr */
     int jobs;
+    telem_opts_t telem; /* --lcm[=URL], --lcm-log FILE, --lcm-rate HZ */
     const char *report; /* --report FILE.png, or NULL */
     int gui;            /* --gui: live viewer */
     const char *shot;   /* --screenshot FILE.png, or NULL */
     double shot_at_s;   /* --at: sim time of the screenshot */
     view_opts_t view;   /* --size, --speed, --camera, --port, --baud */
+    int serial;         /* --serial/--port, --pty or --avr: an MCU drives over a serial link */
+    link_opts_t link;
+    const char *avr_elf, *avr_mcu; /* --avr ELF: processor in the loop (simavr), --mcu */
+    uint32_t avr_f_cpu;            /* --f-cpu, Hz (0 = from the ELF or 16 MHz) */
 } opts_t;
 
 static double wall_now(void)
@@ -81,6 +90,8 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     static maze_t maze;
     static sim_t sim;
     static driver_t drv;
+    static telem_t tel;
+    int tel_on = o->telem.url || o->telem.log_path;
     simcfg_t cfg;
     char err[MAZEFILE_ERR_LEN], hash[65];
 
@@ -95,7 +106,31 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         fprintf(stderr, "%s: cannot set up the ODE world\n", maze_path);
         return EXIT_EXTERNAL;
     }
-    if (o->scripted) {
+    static link_t lnk;
+    static pil_t pil;
+    char lerr[400];
+    view_opts_t vo = o->view;
+    if (o->avr_elf) {
+        int lfd;
+        drv.done = 0;
+        drv.reachable = 1;
+        if (pil_open(&pil, o->avr_elf, o->avr_mcu, o->avr_f_cpu, cfg.step_s, &lfd, lerr, sizeof lerr) != 0) {
+            fprintf(stderr, "mmsim: %s\n", lerr);
+            sim_free(&sim);
+            return EXIT_EXTERNAL;
+        }
+        link_open_fd(&lnk, lfd, "simavr UART0", &o->link, cfg.step_s, (uint16_t)lround(cfg.tof_range_m * 1000.0),
+                     (uint32_t)lround(cfg.encoder_ppr * cfg.gear_ratio * 100.0), o->verbose ? stderr : NULL);
+    } else if (o->serial) {
+        drv.done = 0;
+        drv.reachable = 1;
+        if (link_open(&lnk, &o->link, cfg.step_s, (uint16_t)lround(cfg.tof_range_m * 1000.0),
+                      (uint32_t)lround(cfg.encoder_ppr * cfg.gear_ratio * 100.0), stderr, lerr, sizeof lerr) != 0) {
+            fprintf(stderr, "mmsim: %s\n", lerr);
+            sim_free(&sim);
+            return EXIT_EXTERNAL;
+        }
+    } else if (o->scripted) {
         driver_init(&drv, &maze, &cfg, o->runs);
     } else {
         drv.done = 0;
@@ -105,12 +140,22 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         fw_set_maze(&maze);
         fw_setup();
     }
+    if (tel_on && telem_open(&tel, &o->telem, &sim, err, sizeof err) != 0) {
+        fprintf(stderr, "mmsim: %s\n", err);
+        if (!o->scripted) hal_sim_attach(NULL);
+        sim_free(&sim);
+        return EXIT_EXTERNAL;
+    }
 
     report_t *rep = o->report ? report_new(&sim) : NULL;
     view_t *view = NULL;
     if (o->gui || o->shot) {
         char verr[400] = "out of memory";
-        view = view_new(&o->view);
+        if (o->serial) { /* the HUD shows the link's port and baud */
+            vo.port = lnk.path;
+            vo.baud = (long)lnk.o.baud;
+        }
+        view = view_new(&vo);
         if (!view || view_open(view, o->gui, verr, sizeof verr) != 0) {
             fprintf(stderr, "mmsim: %s\n", verr);
             view_free(view);
@@ -126,11 +171,30 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     double hard_stop_s = cfg.time_limit_s + 60.0; /* a lap under way may finish over time, flagged */
     if (!drv.reachable) reason = "unreachable";
     while (!drv.done) {
-        if (o->scripted) {
+        if (o->serial) { /* HIL: the contest lasts the time limit */
+            sim_step(&sim);
+            link_step(&lnk, &sim);
+            if (tel_on) telem_step(&tel, &sim);
+            if (o->avr_elf && pil_step(&pil, lerr, sizeof lerr) != 0) {
+                fprintf(stderr, "mmsim: %s: %s\n", o->avr_elf, lerr);
+                reason = "avr_stopped";
+                break;
+            }
+            if (lnk.st.stops) { /* the MCU ended the contest (RUN stop) */
+                reason = "mcu_stopped";
+                break;
+            }
+            if (sim_time_s(&sim) >= cfg.time_limit_s) {
+                reason = "time_limit";
+                break;
+            }
+        } else if (o->scripted) {
             driver_update(&drv, &sim);
             sim_step(&sim);
+            if (tel_on) telem_step(&tel, &sim);
         } else {
             sim_step(&sim);
+            if (tel_on) telem_step(&tel, &sim);
             fw_tick(); /* control tick every physics step (1 kHz) */
             fw_loop();
             uint8_t mode = mouse_status()->mode;
@@ -162,7 +226,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
             reason = "time_limit";
             break;
         }
-        if (sim.step % 100 == 0) {
+        if (sim.step % 100 == 0 && !o->serial) { /* a HIL robot may wait for its MCU */
             world_pose(sim.world, &x, &y, &h);
             if (hypot(x - last_x, y - last_y) > 0.01) {
                 last_x = x;
@@ -181,6 +245,11 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
                 nanosleep(&ts, NULL);
             }
         }
+    }
+    int tel_rc = 0;
+    if (tel_on) {
+        telem_finish(&tel, &sim);
+        if ((tel_rc = telem_close(&tel, err, sizeof err)) != 0) fprintf(stderr, "mmsim: %s\n", err);
     }
     int view_failed = 0;
     if (view) {
@@ -214,19 +283,36 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
                                                         round(y * 1e6) / 1e6, "heading_rad", round(h * 1e6) / 1e6));
     json_object_set_new(o_json, "exit_reason", json_string(reason));
     json_object_set_new(o_json, "config_hash", json_string(hash));
-    json_object_set_new(o_json, "driver", json_string(o->scripted ? "scripted" : "firmware"));
+    const char *driver_name = o->serial ? "serial" : o->scripted ? "scripted" : "firmware";
+    json_object_set_new(o_json, "driver", json_string(driver_name));
+    if (o->serial) {
+        json_object_set_new(o_json, "link", link_json(&lnk));
+        link_close(&lnk);
+        if (o->avr_elf) {
+            uint32_t stack_max, free_min;
+            pil_stack(&pil, &stack_max, &free_min);
+            json_object_set_new(o_json, "avr", json_pack("{s:s, s:s, s:I, s:I, s:I, s:I, s:I, s:I}", "elf", o->avr_elf,
+                                                         "mcu", pil.mcu, "f_cpu_hz", (json_int_t)pil.f_cpu, "cycles",
+                                                         (json_int_t)pil.cycles, "uart_bytes_in",
+                                                         (json_int_t)pil.bytes_in, "uart_bytes_out",
+                                                         (json_int_t)pil.bytes_out, "stack_max_bytes",
+                                                         (json_int_t)stack_max, "sram_free_min_bytes",
+                                                         (json_int_t)free_min));
+            pil_close(&pil);
+        }
+    }
     int report_failed = 0;
     if (rep) {
         char title[300], rerr[600];
         snprintf(title, sizeof title, "%s  %ux%u  seed %llu  %s driver  exit: %s", maze_path, maze.width, maze.height,
-                 (unsigned long long)o->seed, o->scripted ? "scripted" : "firmware", reason);
-        if (report_write(rep, &sim, o->scripted ? NULL : mouse_map(), o->report, title, rerr, sizeof rerr) != 0) {
+                 (unsigned long long)o->seed, driver_name, reason);
+        if (report_write(rep, &sim, o->scripted || o->serial ? NULL : mouse_map(), o->report, title, rerr, sizeof rerr) != 0) {
             fprintf(stderr, "%s\n", rerr);
             report_failed = 1;
         }
         report_free(rep);
     }
-    if (!o->scripted) {
+    if (!o->scripted && !o->serial) {
         /* the path the mouse would run: best through known-open walls */
         static solve_path_t truth, known;
         int ok_truth = solve_best(&maze, 0, &truth) == 0, ok_known = solve_best(mouse_map(), 0, &known) == 0;
@@ -238,7 +324,16 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     }
 
     if (print_text) {
-        if (o->scripted)
+        if (o->serial)
+            printf("%s: %ux%u, seed %llu, MCU over %s (%s, %u baud): sent %llu B (%.0f %%), received %llu B (%.0f %%), "
+                   "dropped %llu messages, %u decode errors, %u silences, %u disconnects\n",
+                   maze_path, maze.width, maze.height, (unsigned long long)o->seed, lnk.path,
+                   o->link.protocol == LINK_COMPAT ? "compat" : "framed", (unsigned)lnk.o.baud,
+                   (unsigned long long)lnk.st.tx_bytes, link_util_tx(&lnk) * 100, (unsigned long long)lnk.st.rx_bytes,
+                   link_util_rx(&lnk) * 100, (unsigned long long)lnk.st.tx_dropped,
+                   (unsigned)wire_stats_errors(o->link.protocol == LINK_COMPAT ? &lnk.crx.stats : &lnk.dec.stats),
+                   (unsigned)lnk.st.silences, (unsigned)lnk.st.disconnects);
+        else if (o->scripted)
             printf("%s: %ux%u, seed %llu, scripted driver, %d run%s\n", maze_path, maze.width, maze.height,
                    (unsigned long long)o->seed, o->runs, o->runs == 1 ? "" : "s");
         else
@@ -249,9 +344,11 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     }
     sim_free(&sim);
     *out = o_json;
+    if (tel_rc) return EXIT_EXTERNAL;
     if (report_failed || view_failed) return EXIT_EXTERNAL;
     if (o->shot) return EXIT_OK; /* the picture was the point */
-    return r->nlaps > 0 && !strcmp(reason, "done") ? EXIT_OK : EXIT_NOT_REACHED;
+    if (!strcmp(reason, "avr_stopped")) return EXIT_EXTERNAL;
+    return r->nlaps > 0 && (!strcmp(reason, "done") || !strcmp(reason, "mcu_stopped")) ? EXIT_OK : EXIT_NOT_REACHED;
 }
 
 static int print_json_line(json_t *j)
@@ -337,8 +434,14 @@ static void usage(FILE *out)
     fputs("usage: mmsim --maze FILE [--config FILE] [--seed N] [--time-limit S] [--runs N]\n"
           "             [--centre-post on|off] [--profile default|paper] [--driver firmware|scripted]\n"
           "             [--json] [--realtime] [--verbose] [--report FILE.png]\n"
+          "             [--lcm[=URL]] [--lcm-log FILE] [--lcm-rate HZ]   (LCM telemetry, sim/telem.h)\n"
           "             [--gui [--speed 1..64]] [--screenshot FILE.png [--at SECONDS]]\n"
-          "             [--camera 1|2|3] [--size WxH] [--port DEV] [--baud N]   (viewer)\n"
+          "             [--camera 1|2|3] [--size WxH]   (viewer)\n"
+          "       mmsim --maze FILE --serial DEV|--port DEV|--pty [--baud N] [--protocol framed|compat]\n"
+          "             [--silence-ms N]   (hardware in the loop: an MCU drives over a serial link,\n"
+          "             in real time; --pty creates a pseudo-terminal and prints its path; docs/PROTOCOL.md)\n"
+          "       mmsim --maze FILE --avr ELF [--mcu NAME] [--f-cpu HZ] [--baud N] [--protocol P]\n"
+          "             (processor in the loop: the AVR image runs in simavr, in lockstep)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
           "       mmsim --print-config [--config FILE]\n"
           "Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure.\n",
@@ -376,17 +479,25 @@ int main(int argc, char **argv)
         { "print-config", no_argument, 0, 'P' }, { "batch", required_argument, 0, 'b' },
         { "jobs", required_argument, 0, 'J' },   { "help", no_argument, 0, 'h' },
         { "profile", required_argument, 0, 'F' }, { "driver", required_argument, 0, 'D' },
-        { "verbose", no_argument, 0, 'v' },      { "report", required_argument, 0, 'R' },
-        { "gui", no_argument, 0, 'G' },          { "screenshot", required_argument, 0, 'S' },
+        { "verbose", no_argument, 0, 'v' },
+        { "lcm", optional_argument, 0, 'L' },    { "lcm-log", required_argument, 0, 'G' },
+        { "lcm-rate", required_argument, 0, 'R' },
+        { "report", required_argument, 0, 1001 },
+        { "gui", no_argument, 0, 1002 },          { "screenshot", required_argument, 0, 'S' },
         { "at", required_argument, 0, 'A' },     { "camera", required_argument, 0, 'C' },
         { "size", required_argument, 0, 'Z' },   { "speed", required_argument, 0, 'X' },
         { "port", required_argument, 0, 'T' },   { "baud", required_argument, 0, 'B' },
+        { "serial", required_argument, 0, 'T' }, { "pty", no_argument, 0, 2001 },
+        { "protocol", required_argument, 0, 2002 }, { "silence-ms", required_argument, 0, 2003 },
+        { "avr", required_argument, 0, 2004 },   { "mcu", required_argument, 0, 2005 },
+        { "f-cpu", required_argument, 0, 2006 },
         { 0, 0, 0, 0 },
     };
-    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, NULL, 0, NULL, 0, { 1024, 720, 1, 1, "", 115200 } }; /* scripted by default until the firmware passes issue 4 */
+    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, { NULL, NULL, 0 }, NULL, 0, NULL, 0, { 1024, 720, 1, 1, "", 115200 },
+                 0, { NULL, 0, 0, LINK_FRAMED, 0 }, NULL, NULL, 0 }; /* scripted by default: it honours --runs */
     const char *maze = NULL, *batch = NULL;
     double v;
-    int c;
+    int c, link_flags = 0;
     opterr = 0;
     while ((c = getopt_long(argc, argv, "", opts, NULL)) != -1) {
         switch (c) {
@@ -423,8 +534,19 @@ int main(int argc, char **argv)
             o.scripted = !strcmp(optarg, "scripted");
             break;
         case 'v': o.verbose = 1; break;
-        case 'R': o.report = optarg; break;
-        case 'G': o.gui = 1; break;
+        case 'L':
+            o.telem.url = optarg ? optarg : "";
+            if (optarg && !strstr(optarg, "://")) return bad("--lcm: expected an LCM URL like udpm://239.255.76.67:7667?ttl=0, got '%s'", optarg);
+            break;
+        case 'G':
+            if (!*optarg) return bad("%s", "--lcm-log: expected a file name");
+            o.telem.log_path = optarg;
+            break;
+        case 'R':
+            if (num("--lcm-rate", optarg, 1, 1000, &o.telem.rate_hz)) return EXIT_BAD_INPUT;
+            break;
+        case 1001: o.report = optarg; break;
+        case 1002: o.gui = 1; break;
         case 'S': o.shot = optarg; break;
         case 'A':
             if (num("--at", optarg, 0, 86400, &o.shot_at_s)) return EXIT_BAD_INPUT;
@@ -445,11 +567,31 @@ int main(int argc, char **argv)
             o.view.height = h;
             break;
         }
-        case 'T': o.view.port = optarg; break;
-        case 'B':
-            if (num("--baud", optarg, 1, 4000000, &v)) return EXIT_BAD_INPUT;
-            if (v != floor(v)) return bad("--baud: expected a whole number, got '%s'", optarg);
+        case 'T': /* --serial DEV or --port DEV (the viewer shows it) */
+            o.link.device = optarg;
+            o.view.port = optarg;
+            break;
+        case 'B': /* the link's rate, shown by the viewer */
+            if (num("--baud", optarg, 50, SERIAL_BAUD_MAX, &v)) return EXIT_BAD_INPUT;
+            if (v != floor(v)) return bad("--baud: expected a whole number of bits/s, got '%s'", optarg);
+            o.link.baud = (uint32_t)v;
             o.view.baud = (long)v;
+            break;
+        case 2001: o.link.pty = 1; break;
+        case 2002:
+            if ((o.link.protocol = link_parse_protocol(optarg)) < 0) return bad("--protocol: expected framed or compat, got '%s'", optarg);
+            link_flags++;
+            break;
+        case 2003:
+            if (num("--silence-ms", optarg, 1, 60000, &v)) return EXIT_BAD_INPUT;
+            o.link.silence_s = v / 1000.0;
+            link_flags++;
+            break;
+        case 2004: o.avr_elf = optarg; break;
+        case 2005: o.avr_mcu = optarg; break;
+        case 2006:
+            if (num("--f-cpu", optarg, 1000, 100e6, &v)) return EXIT_BAD_INPUT;
+            o.avr_f_cpu = (uint32_t)v;
             break;
         case 'j': o.json = 1; break;
         case 'r': o.realtime = 1; break;
@@ -460,12 +602,19 @@ int main(int argc, char **argv)
         }
     }
     if (optind != argc) return bad("unexpected argument '%s'", argv[optind]);
+    o.serial = o.link.device || o.link.pty || o.avr_elf;
+    if (!!o.link.device + o.link.pty + !!o.avr_elf > 1) return bad("%s", "--serial/--port, --pty and --avr exclude each other");
+    if (!o.serial && link_flags) return bad("%s", "--protocol and --silence-ms need --serial DEV, --pty or --avr ELF");
+    if (!o.avr_elf && (o.avr_mcu || o.avr_f_cpu)) return bad("%s", "--mcu and --f-cpu need --avr ELF");
+    if (o.serial && batch) return bad("%s", "--serial/--pty/--avr run one maze, not --batch");
+    if (o.serial && !o.avr_elf) o.realtime = 1; /* a real MCU runs in real time; simavr in lockstep */
     if (o.print_config) {
         simcfg_t cfg;
         if (load_config(&o, &cfg) != 0) return EXIT_BAD_INPUT;
         config_print(&cfg, stdout);
         return EXIT_OK;
     }
+    if (batch && (o.telem.url || o.telem.log_path)) return bad("%s", "--lcm and --lcm-log work on one maze, not with --batch");
     if (batch && (o.report || o.gui || o.shot)) return bad("%s", "--report, --gui and --screenshot need --maze (one run), not --batch");
     if (o.gui && o.shot) return bad("%s", "--gui and --screenshot: one at a time");
     if (batch) return run_batch(&o, batch);

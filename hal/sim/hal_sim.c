@@ -11,16 +11,13 @@ static sim_t *sim;
 static uint64_t sim_time_us;
 static FILE *log_out;
 static int32_t encoder_zero[2];
-static maze_t belief;        /* copy of the last hal_belief map */
-static uint16_t belief_cell;
-static uint8_t belief_heading, belief_state;
-static int belief_valid;
+static hal_sim_belief_t belief;
 
 void hal_sim_attach(struct sim_s *s)
 {
     sim = s;
     encoder_zero[0] = encoder_zero[1] = 0;
-    belief_valid = 0;
+    belief.seq = 0;
 }
 void hal_sim_set_time_us(uint64_t t_us) { sim_time_us = t_us; }
 void hal_sim_set_log(FILE *out) { log_out = out; }
@@ -52,11 +49,12 @@ void hal_encoder_reset(void)
 
 hal_distance_t hal_distance(uint8_t sensor)
 {
-    hal_distance_t d = { 0, 1 };
+    hal_distance_t d = { 0, 1, 0 };
     if (!sim || sensor >= HAL_TOF_COUNT) return d;
     const tof_reading_t *r = &sim->tof_last[sensor];
     d.mm = (uint16_t)lround(r->dist_m * 1000.0);
     d.timeout = (uint8_t)r->timeout;
+    d.seq = (uint8_t)sim->tof_count[sensor];
     return d;
 }
 
@@ -67,21 +65,13 @@ void hal_log(const char *line)
 
 void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_t state)
 {
-    /* kept for the viewer's overlay; telemetry comes with the LCM issue */
-    if (!map) return;
-    belief = *map;
-    belief_cell = cell;
-    belief_heading = heading;
-    belief_state = state;
-    belief_valid = 1;
+    /* a copy for telemetry (sim/telem.c); the simulation never reads it */
+    belief.seq++;
+    belief.t_us = sim ? sim->step * (uint64_t)llround(sim->cfg.step_s * 1e6) : sim_time_us;
+    belief.map = *map;
+    belief.cell = cell;
+    belief.heading = heading;
+    belief.state = state;
 }
 
-int hal_sim_belief(const struct maze_s **map, uint16_t *cell, uint8_t *heading, uint8_t *state)
-{
-    if (!belief_valid) return 0;
-    if (map) *map = &belief;
-    if (cell) *cell = belief_cell;
-    if (heading) *heading = belief_heading;
-    if (state) *state = belief_state;
-    return 1;
-}
+const hal_sim_belief_t *hal_sim_belief(void) { return &belief; }

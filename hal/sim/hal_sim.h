@@ -7,7 +7,19 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "maze.h"
+
 struct sim_s;
+
+/* The firmware's latest hal_belief call, copied (telemetry reads it). */
+typedef struct {
+    uint32_t seq;     /* calls since hal_sim_attach; 0 = none yet */
+    uint64_t t_us;    /* simulation time of the call, microseconds */
+    maze_t map;       /* the mouse's map */
+    uint16_t cell;    /* the cell it is in or heading into */
+    uint8_t heading;  /* MAZE_NORTH.. */
+    uint8_t state;    /* the firmware's state machine (mouse.h MOUSE_*) */
+} hal_sim_belief_t;
 
 /* Serve the HAL from this simulation (NULL detaches). */
 void hal_sim_attach(struct sim_s *s);
@@ -15,9 +27,7 @@ void hal_sim_attach(struct sim_s *s);
 void hal_sim_set_time_us(uint64_t t_us);
 /* Where hal_log lines go: a stream (NULL = dropped, the default). */
 void hal_sim_set_log(FILE *out);
-
-/* The mouse's last hal_belief report (a copy): returns 1 and fills the
- * non-NULL outputs, or 0 if none since the last attach. */
-int hal_sim_belief(const struct maze_s **map, uint16_t *cell, uint8_t *heading, uint8_t *state);
+/* The latest belief the firmware reported (seq 0 until the first). */
+const hal_sim_belief_t *hal_sim_belief(void);
 
 #endif

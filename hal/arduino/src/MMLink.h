@@ -1,0 +1,49 @@
+/* MMLink.h - the MCU's end of the wire protocol (docs/PROTOCOL.md) over an
+ * Arduino Stream: decodes sensor messages into the latest encoder counts
+ * and ToF readings, sends commands. One link per sketch: mmLink. */
+#ifndef MM_LINK_H
+#define MM_LINK_H
+
+#include <Arduino.h>
+
+#include "wire.h"
+
+enum { MM_FRAMED = 0, MM_COMPAT = 1 };
+enum { MM_LEFT = 0, MM_RIGHT = 1 };
+enum { MM_TOF_LEFT = 0, MM_TOF_FRONT = 1, MM_TOF_RIGHT = 2, MM_TOF_COUNT = 3 };
+
+class MMLink {
+public:
+    /* tick_hz goes in HELLO (framed); range_mm scales compat distances */
+    void begin(Stream &s, uint8_t protocol, uint16_t tick_hz, uint16_t range_mm = WIRE_COMPAT_RANGE_MM);
+    /* Decode every byte waiting in the Stream; answers the sim's HELLO. */
+    void poll();
+    /* Encode and write one message (blocks while the Stream's buffer is full). */
+    void send(const wire_msg_t &m);
+    /* Compat only: one motor's command as ID 5/6 (the paper's Motor::setVoltage). */
+    void sendMotorSide(uint8_t side, int16_t value);
+    void sendHello();
+    uint8_t protocol() const { return proto; }
+    /* The latest readings (copy with interrupts off if poll runs in an ISR). */
+    volatile int32_t enc[2];           /* accumulated counts */
+    volatile uint16_t tof_mm[MM_TOF_COUNT];
+    volatile uint8_t tof_timeout[MM_TOF_COUNT];
+    volatile uint8_t tof_seq[MM_TOF_COUNT];     /* +1 per reading received (hal_distance_t.seq) */
+    volatile uint32_t sim_us;          /* sim time of the latest reading (framed), us */
+    volatile uint8_t hello_seen;       /* framed: the sim's HELLO arrived */
+    const wire_stats_t &stats() const;
+
+private:
+    Stream *s = nullptr;
+    uint8_t proto = MM_FRAMED;
+    uint16_t tick_hz = 0, range_mm = WIRE_COMPAT_RANGE_MM;
+    union { /* one decoder at a time: saves SRAM on the Uno */
+        wire_decoder_t framed;
+        wire_compat_rx_t compat;
+    } dec;
+    wire_compat_tx_t ctx;
+};
+
+extern MMLink mmLink;
+
+#endif

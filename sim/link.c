@@ -1,0 +1,376 @@
+/* link.c - the simulator's end of the HIL serial link (see link.h and
+ * docs/PROTOCOL.md). Time is sim time: everything is counted in physics
+ * steps; bytes move by a credit of bit-microseconds. */
+#include "link.h"
+
+#include <errno.h>
+#include <math.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "serial.h"
+#include "sim.h"
+
+#define BYTE_COST 10000000ull /* one 8N1 byte = 10 bits = 10e6 bit-us */
+
+int link_parse_protocol(const char *s)
+{
+    if (!strcmp(s, "framed")) return LINK_FRAMED;
+    if (!strcmp(s, "compat")) return LINK_COMPAT;
+    return -1;
+}
+
+static void say(link_t *l, const char *what)
+{
+    if (l->report) fprintf(l->report, "mmsim: link %s: %s at %.3f s\n", l->path, what, (double)l->step * l->step_s);
+}
+
+static uint64_t steps_of(const link_t *l, double s) { return (uint64_t)llround(s / l->step_s); }
+
+/* a new connection: fresh queue, decoders, handshake */
+static void on_connect(link_t *l)
+{
+    l->connected = 1;
+    l->st.connects++;
+    l->q_head = l->q_len = 0;
+    l->credit_tx = l->credit_rx = 0;
+    wire_stats_t keep_d = l->dec.stats, keep_c = l->crx.stats; /* error counts add up over connections */
+    wire_decoder_init(&l->dec);
+    wire_compat_rx_init(&l->crx, l->tof_range_mm);
+    l->dec.stats = keep_d;
+    l->crx.stats = keep_c;
+    wire_compat_tx_init(&l->ctx, l->tof_range_mm);
+    l->ctx.enc_sent[0] = l->ctx.enc_sent[1] = INT32_MIN; /* set from the first reading sent */
+    l->motor[0] = l->motor[1] = 0;
+    l->running = 1;
+    l->sensors_on = l->o.protocol != LINK_COMPAT; /* compat: nothing until requestEnableSensors, as in the paper */
+    l->hello_ok = l->o.protocol == LINK_COMPAT; /* compat has no handshake */
+    l->silent = 0;
+    l->enc_every = 1;
+    l->last_rx_step = l->step;
+    l->next_hello_step = l->step;
+    say(l, "connected");
+}
+
+static void on_disconnect(link_t *l)
+{
+    l->connected = 0;
+    l->st.disconnects++;
+    if (!l->o.pty && l->fd >= 0) {
+        close(l->fd);
+        l->fd = -1;
+    }
+    l->next_retry_step = l->step + steps_of(l, LINK_RETRY_S);
+    say(l, "disconnected, motors off");
+}
+
+static void init_common(link_t *l, const link_opts_t *o, double step_s, uint16_t range_mm, uint32_t cpr_x100,
+                        FILE *report)
+{
+    int fd = l->fd;
+    char path[sizeof l->path];
+    memcpy(path, l->path, sizeof path);
+    memset(l, 0, sizeof *l);
+    l->fd = fd;
+    memcpy(l->path, path, sizeof path);
+    l->o = *o;
+    if (l->o.baud == 0) l->o.baud = o->protocol == LINK_COMPAT ? 115200u : 1000000u;
+    if (l->o.silence_s <= 0) l->o.silence_s = LINK_SILENCE_S;
+    l->step_s = step_s;
+    l->tof_range_mm = range_mm;
+    l->counts_per_rev_x100 = cpr_x100;
+    l->report = report;
+    l->sensors_on = 1;
+    l->credit_step = (uint64_t)l->o.baud * (uint64_t)llround(step_s * 1e6);
+    l->credit_cap = l->credit_step + BYTE_COST;
+    uint64_t cap = 4 * l->credit_step / BYTE_COST;
+    l->q_cap = cap < 64 ? 64 : cap > LINK_Q_MAX ? LINK_Q_MAX : (size_t)cap;
+    for (int i = 0; i < 3; i++) l->tof_seen[i] = UINT64_MAX; /* not yet synced to the sim */
+}
+
+void link_open_fd(link_t *l, int fd, const char *name, const link_opts_t *o, double step_s, uint16_t tof_range_mm,
+                  uint32_t counts_per_rev_x100, FILE *report)
+{
+    l->fd = fd;
+    snprintf(l->path, sizeof l->path, "%s", name);
+    init_common(l, o, step_s, tof_range_mm, counts_per_rev_x100, report);
+    l->o.pty = 0;
+    l->o.device = NULL;
+    on_connect(l);
+}
+
+int link_open(link_t *l, const link_opts_t *o, double step_s, uint16_t tof_range_mm, uint32_t counts_per_rev_x100,
+              FILE *report, char *err, size_t errn)
+{
+    uint32_t baud = o->baud ? o->baud : (o->protocol == LINK_COMPAT ? 115200u : 1000000u);
+    if (baud > SERIAL_BAUD_MAX) {
+        snprintf(err, errn, "baud %u above %u", (unsigned)baud, SERIAL_BAUD_MAX);
+        return -1;
+    }
+    if (o->pty) {
+        l->fd = serial_open_pty(l->path, sizeof l->path, err, errn);
+    } else {
+        l->fd = serial_open(o->device, baud, err, errn);
+        snprintf(l->path, sizeof l->path, "%s", o->device);
+    }
+    if (l->fd < 0) return -1;
+    init_common(l, o, step_s, tof_range_mm, counts_per_rev_x100, report);
+    if (o->pty && report) {
+        fprintf(report, "mmsim: pty %s\n", l->path);
+        fflush(report);
+    }
+    if (!o->pty || serial_pty_peer(l->fd)) on_connect(l);
+    else say(l, "waiting for a program to open it");
+    return 0;
+}
+
+void link_close(link_t *l)
+{
+    if (l->fd >= 0) close(l->fd);
+    l->fd = -1;
+    l->connected = 0;
+}
+
+static void enqueue(link_t *l, const wire_msg_t *m)
+{
+    uint8_t b[WIRE_FRAME_MAX];
+    wire_compat_tx_t keep = l->ctx;
+    size_t n = l->o.protocol == LINK_COMPAT ? wire_compat_encode(&l->ctx, m, b, sizeof b)
+                                              : wire_encode(m, b, sizeof b);
+    if (n == 0) return; /* no form in this mode (HELLO in compat) */
+    if (l->q_len + n > l->q_cap) { /* whole message dropped; compat deltas not lost */
+        l->ctx = keep;
+        l->st.tx_dropped++;
+        return;
+    }
+    for (size_t i = 0; i < n; i++) l->q[(l->q_head + l->q_len + i) % l->q_cap] = b[i];
+    l->q_len += n;
+    l->st.tx_msgs++;
+}
+
+static void handle(link_t *l, const wire_msg_t *m)
+{
+    char line[160];
+    l->st.rx_msgs++;
+    l->last_rx_step = l->step;
+    if (l->silent) {
+        l->silent = 0;
+        say(l, "MCU talking again");
+    }
+    switch (m->type) {
+    case WIRE_MOTOR:
+        l->motor[0] = m->u.motor.left;
+        l->motor[1] = m->u.motor.right;
+        break;
+    case WIRE_HELLO:
+        if (m->u.hello.role != WIRE_ROLE_MCU) break;
+        if (m->u.hello.version != WIRE_VERSION) {
+            snprintf(line, sizeof line, "MCU speaks protocol version %u, we speak %u: motors stay off",
+                     m->u.hello.version, WIRE_VERSION);
+            say(l, line);
+            l->hello_ok = 0;
+            break;
+        }
+        if (!l->hello_ok) {
+            snprintf(line, sizeof line, "hello from the MCU: protocol %u, ToF range %u mm, %.2f counts/turn, tick %u Hz%s",
+                     m->u.hello.version, m->u.hello.tof_range_mm, m->u.hello.counts_per_rev_x100 / 100.0,
+                     m->u.hello.tick_hz,
+                     m->u.hello.tof_range_mm != l->tof_range_mm || m->u.hello.counts_per_rev_x100 != l->counts_per_rev_x100
+                         ? " (MISMATCH with the simulator's robot)" : "");
+            say(l, line);
+        }
+        l->hello_ok = 1;
+        /* no point sending encoders faster than the MCU's control tick */
+        l->enc_every = m->u.hello.tick_hz ? (uint32_t)lround(1.0 / (l->step_s * m->u.hello.tick_hz)) : 1;
+        if (l->enc_every < 1) l->enc_every = 1;
+        break;
+    case WIRE_SENSORS: l->sensors_on = m->u.flag.on; break;
+    case WIRE_RUN:
+        l->running = m->u.flag.on;
+        if (!m->u.flag.on) {
+            l->st.stops++;
+            say(l, "MCU stopped the run");
+        }
+        break;
+    case WIRE_LOG:
+        l->st.logs++;
+        if (l->report) fprintf(l->report, "mcu: %s\n", m->u.log.text);
+        break;
+    default: break;
+    }
+}
+
+static void check_connection(link_t *l)
+{
+    if (l->o.pty) {
+        int peer = serial_pty_peer(l->fd);
+        if (peer && !l->connected) on_connect(l);
+        else if (!peer && l->connected) on_disconnect(l);
+        return;
+    }
+    if (l->connected && l->fd >= 0 && l->o.device && serial_hung_up(l->fd)) {
+        on_disconnect(l);
+        return;
+    }
+    if (l->connected || !l->o.device || l->step < l->next_retry_step) return;
+    char err[300];
+    l->fd = serial_open(l->o.device, l->o.baud, err, sizeof err);
+    if (l->fd >= 0) on_connect(l);
+    else l->next_retry_step = l->step + steps_of(l, LINK_RETRY_S);
+}
+
+static int io_failed(int e) { return e != EAGAIN && e != EWOULDBLOCK && e != EINTR; }
+
+int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2])
+{
+    l->step++;
+    l->st.steps++;
+    motor_out[0] = motor_out[1] = 0;
+    check_connection(l);
+    if (!l->connected) return l->sensors_on;
+    l->credit_tx = l->credit_tx + l->credit_step < l->credit_cap ? l->credit_tx + l->credit_step : l->credit_cap;
+    l->credit_rx = l->credit_rx + l->credit_step < l->credit_cap ? l->credit_rx + l->credit_step : l->credit_cap;
+
+    /* this step's messages */
+    wire_msg_t m;
+    if (l->ctx.enc_sent[0] == INT32_MIN) { /* compat deltas start from the counts at connection */
+        l->ctx.enc_sent[0] = in->encoder[0];
+        l->ctx.enc_sent[1] = in->encoder[1];
+    }
+    if (!l->hello_ok && l->o.protocol == LINK_FRAMED && l->step >= l->next_hello_step) {
+        memset(&m, 0, sizeof m);
+        m.type = WIRE_HELLO;
+        m.u.hello.version = WIRE_VERSION;
+        m.u.hello.role = WIRE_ROLE_SIM;
+        m.u.hello.tof_range_mm = l->tof_range_mm;
+        m.u.hello.counts_per_rev_x100 = l->counts_per_rev_x100;
+        m.u.hello.tick_hz = (uint16_t)llround(1.0 / l->step_s);
+        enqueue(l, &m);
+        l->next_hello_step = l->step + steps_of(l, LINK_RETRY_S);
+    }
+    if (l->o.protocol == LINK_COMPAT && !l->sensors_on) goto move; /* the paper's sim sends nothing */
+    if (l->enc_every <= 1 || l->step % l->enc_every == 0) {
+        memset(&m, 0, sizeof m);
+        m.type = WIRE_ENCODER;
+        m.u.encoder.t_us = in->t_us;
+        m.u.encoder.left = in->encoder[0];
+        m.u.encoder.right = in->encoder[1];
+        enqueue(l, &m);
+    }
+    for (uint8_t i = 0; i < 3; i++) {
+        if (!in->tof_new[i]) continue;
+        memset(&m, 0, sizeof m);
+        m.type = WIRE_DISTANCE;
+        m.u.distance.t_us = in->t_us;
+        m.u.distance.sensor = i;
+        m.u.distance.timeout = in->tof_timeout[i] ? 1 : 0;
+        m.u.distance.mm = in->tof_mm[i];
+        enqueue(l, &m);
+    }
+
+move: /* sim -> MCU: at most the credit's whole bytes */
+    while (l->q_len > 0 && l->credit_tx >= BYTE_COST) {
+        size_t n = l->q_cap - l->q_head;
+        if (n > l->q_len) n = l->q_len;
+        uint64_t allow = l->credit_tx / BYTE_COST;
+        if (n > allow) n = (size_t)allow;
+        ssize_t k = write(l->fd, l->q + l->q_head, n);
+        if (k < 0) {
+            if (io_failed(errno)) {
+                on_disconnect(l);
+                return l->sensors_on;
+            }
+            l->st.tx_blocked_bytes += n;
+            break;
+        }
+        l->q_head = (l->q_head + (size_t)k) % l->q_cap;
+        l->q_len -= (size_t)k;
+        l->credit_tx -= (uint64_t)k * BYTE_COST;
+        l->st.tx_bytes += (uint64_t)k;
+        if ((size_t)k < n) {
+            l->st.tx_blocked_bytes += n - (size_t)k;
+            break;
+        }
+    }
+
+    /* MCU -> sim: at most the credit's whole bytes; the rest waits in the OS */
+    uint8_t buf[2048];
+    uint64_t allow = l->credit_rx / BYTE_COST;
+    size_t want = allow < sizeof buf ? (size_t)allow : sizeof buf;
+    if (want > 0) {
+        ssize_t k = read(l->fd, buf, want);
+        if (k < 0 && io_failed(errno)) {
+            on_disconnect(l);
+            return l->sensors_on;
+        }
+        for (ssize_t i = 0; i < k; i++) {
+            int got = l->o.protocol == LINK_COMPAT ? wire_compat_decode_byte(&l->crx, buf[i], &m)
+                                                   : wire_decode_byte(&l->dec, buf[i], &m);
+            if (got) handle(l, &m);
+        }
+        if (k > 0) {
+            l->credit_rx -= (uint64_t)k * BYTE_COST;
+            l->st.rx_bytes += (uint64_t)k;
+        }
+    }
+
+    if (!l->silent && l->step - l->last_rx_step > steps_of(l, l->o.silence_s)) {
+        l->silent = 1;
+        l->st.silences++;
+        say(l, "MCU silent: motors off");
+    }
+    if (l->hello_ok && l->running && !l->silent) {
+        motor_out[0] = l->motor[0];
+        motor_out[1] = l->motor[1];
+    }
+    return l->sensors_on;
+}
+
+static double util(const link_t *l, uint64_t bytes)
+{
+    double allowed = (double)l->st.steps * (double)l->credit_step / (double)BYTE_COST;
+    return allowed > 0 ? (double)bytes / allowed : 0.0;
+}
+double link_util_tx(const link_t *l) { return util(l, l->st.tx_bytes); }
+double link_util_rx(const link_t *l) { return util(l, l->st.rx_bytes); }
+
+void link_step(link_t *l, struct sim_s *s)
+{
+    link_io_t io;
+    memset(&io, 0, sizeof io);
+    io.t_us = (uint32_t)(s->step * (uint64_t)llround(s->cfg.step_s * 1e6));
+    io.encoder[0] = s->encoder[WORLD_LEFT].count;
+    io.encoder[1] = s->encoder[WORLD_RIGHT].count;
+    for (int i = 0; i < 3; i++) { /* a new reading bumped the sensor's count */
+        if (l->tof_seen[i] != UINT64_MAX && s->tof_count[i] != l->tof_seen[i]) {
+            io.tof_new[i] = 1;
+            io.tof_mm[i] = (uint16_t)lround(s->tof_last[i].dist_m * 1000.0);
+            io.tof_timeout[i] = (uint8_t)s->tof_last[i].timeout;
+        }
+        l->tof_seen[i] = (uint64_t)s->tof_count[i];
+    }
+    int16_t mo[2];
+    s->tof_enabled = link_step_io(l, &io, mo);
+    s->cmd[WORLD_LEFT] = mo[0];
+    s->cmd[WORLD_RIGHT] = mo[1];
+}
+
+json_t *link_json(const link_t *l)
+{
+    const wire_stats_t *d = l->o.protocol == LINK_COMPAT ? &l->crx.stats : &l->dec.stats;
+    json_t *dec = json_pack("{s:I, s:I, s:I, s:I, s:I, s:I, s:I, s:I}", "bytes", (json_int_t)d->bytes, "frames_ok",
+                            (json_int_t)d->frames_ok, "crc", (json_int_t)d->crc, "cobs", (json_int_t)d->cobs,
+                            "overflow", (json_int_t)d->overflow, "unknown", (json_int_t)d->unknown, "length",
+                            (json_int_t)d->length, "value", (json_int_t)d->value);
+    json_t *j = json_pack("{s:s, s:s, s:I, s:I, s:I, s:I, s:I, s:I, s:I, s:f, s:f, s:i, s:i, s:i, s:i, s:o}",
+                          "device", l->path, "protocol", l->o.protocol == LINK_COMPAT ? "compat" : "framed", "baud",
+                          (json_int_t)l->o.baud, "tx_bytes", (json_int_t)l->st.tx_bytes, "rx_bytes",
+                          (json_int_t)l->st.rx_bytes, "tx_msgs", (json_int_t)l->st.tx_msgs, "rx_msgs",
+                          (json_int_t)l->st.rx_msgs, "tx_dropped", (json_int_t)l->st.tx_dropped, "tx_blocked_bytes",
+                          (json_int_t)l->st.tx_blocked_bytes, "tx_utilisation", round(link_util_tx(l) * 1000) / 1000,
+                          "rx_utilisation", round(link_util_rx(l) * 1000) / 1000, "silences", (int)l->st.silences,
+                          "disconnects", (int)l->st.disconnects, "connects", (int)l->st.connects, "mcu_log_lines",
+                          (int)l->st.logs, "decoder", dec);
+    json_object_set_new(j, "handshake", json_boolean(l->hello_ok));
+    return j;
+}

@@ -1,0 +1,107 @@
+/* link.h - the simulator's end of the hardware-in-the-loop serial link.
+ *
+ * After each physics step link_step sends the robot's sensor readings to
+ * the microcontroller (ENCODER every step, DISTANCE when a ToF sensor took a
+ * new reading) and applies the motor commands it received. Bytes cross at
+ * the baud rate, 8N1 = 10 bits per byte, never faster; queue, drop,
+ * silence and reconnect policy: docs/PROTOCOL.md, "Link timing". */
+#ifndef LINK_H
+#define LINK_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include <jansson.h>
+
+#include "wire.h"
+
+enum { LINK_FRAMED = 0, LINK_COMPAT = 1 };
+
+#define LINK_Q_MAX 4096u          /* sim -> MCU queue limit, bytes */
+#define LINK_RETRY_S 0.5          /* reopen / HELLO interval, s of sim time */
+#define LINK_SILENCE_S 0.1        /* default silence timeout, s */
+
+typedef struct {
+    const char *device;   /* serial device path, or NULL with pty */
+    int pty;              /* create a pseudo-terminal instead */
+    uint32_t baud;        /* bits/s; 0 = the protocol's default */
+    int protocol;         /* LINK_FRAMED / LINK_COMPAT */
+    double silence_s;     /* no valid message this long -> motors 0 */
+} link_opts_t;
+
+typedef struct {
+    uint64_t tx_bytes, rx_bytes;         /* moved over the wire */
+    uint64_t tx_msgs, rx_msgs;           /* messages queued / decoded */
+    uint64_t tx_dropped;                 /* messages dropped: queue full */
+    uint64_t tx_blocked_bytes;           /* bytes the budget allowed but the OS did not take */
+    uint64_t steps;                      /* physics steps seen */
+    uint32_t silences, disconnects, connects, logs;
+    uint32_t stops;                      /* RUN stop received (mmsim ends the run) */
+} link_stats_t;
+
+/* What the link reads from and writes to each step (sim-independent, so the
+ * link can be tested without the physics). */
+typedef struct {
+    uint32_t t_us;              /* sim time after the step, us */
+    int32_t encoder[2];         /* accumulated counts */
+    uint8_t tof_new[3];         /* 1 = this sensor took a reading this step (HAL order) */
+    uint16_t tof_mm[3];
+    uint8_t tof_timeout[3];
+} link_io_t;
+
+typedef struct link_s {
+    link_opts_t o;
+    double step_s;
+    uint16_t tof_range_mm;
+    uint32_t counts_per_rev_x100;
+    int fd;
+    int connected;
+    char path[256];
+    uint64_t credit_tx, credit_rx; /* bit-microseconds: a byte costs 10e6 */
+    uint64_t credit_step, credit_cap;
+    uint8_t q[LINK_Q_MAX];
+    size_t q_head, q_len, q_cap;
+    wire_decoder_t dec;
+    wire_compat_rx_t crx;
+    wire_compat_tx_t ctx;
+    int16_t motor[2];         /* latest command received */
+    int running;              /* RUN start (default) / stop */
+    int sensors_on;           /* SENSORS enable (default) / disable */
+    int hello_ok;             /* framed: MCU HELLO with our version seen */
+    int silent;
+    uint32_t enc_every;       /* framed: ENCODER every this many steps (the MCU's tick, from its HELLO) */
+    uint64_t step, last_rx_step, next_hello_step, next_retry_step;
+    uint64_t tof_seen[3];
+    link_stats_t st;
+    FILE *report;             /* state changes and MCU log lines; NULL = quiet */
+} link_t;
+
+/* -1 unless s is "framed" or "compat". */
+int link_parse_protocol(const char *s);
+/* Open the link (device or pty). tof_range_mm and counts_per_rev_x100 go in
+ * HELLO. Returns 0, or -1 with a one-line message in err. */
+int link_open(link_t *l, const link_opts_t *o, double step_s, uint16_t tof_range_mm, uint32_t counts_per_rev_x100,
+              FILE *report, char *err, size_t errn);
+/* Same on an already open fd (simavr's UART, tests: a socketpair), named
+ * name in reports; the link owns fd. */
+void link_open_fd(link_t *l, int fd, const char *name, const link_opts_t *o, double step_s, uint16_t tof_range_mm,
+                  uint32_t counts_per_rev_x100, FILE *report);
+/* One physics step: queue this step's sensor messages, move at most the
+ * baud's bytes each way, decode; motor_out gets the commands to apply (0 when
+ * silent, stopped, disconnected or before the handshake). Returns whether
+ * the MCU asked for the ToF sensors on (1) or off (0). */
+int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2]);
+/* Utilisation of each direction so far: bytes moved / bytes the baud allowed. */
+double link_util_tx(const link_t *l);
+double link_util_rx(const link_t *l);
+void link_close(link_t *l);
+/* The link's settings, traffic, utilisation and decoder error counters. */
+json_t *link_json(const link_t *l);
+
+struct sim_s;
+/* link_step_io on a running simulation: its encoders and new ToF readings
+ * out, its motor commands and ToF enable in. */
+void link_step(link_t *l, struct sim_s *s);
+
+#endif

@@ -1,0 +1,49 @@
+/* pil.h - processor in the loop: an AVR image (ELF) runs in simavr,
+ * in-process and in lockstep with the physics: each physics step advances
+ * the AVR by exactly that step's cycles (f_cpu x step). Its UART0 is one end
+ * of a socketpair whose other end is the simulator's link (sim/link.h), so
+ * the bytes obey the link's baud budget and simavr's cycle-timed UART. No
+ * wall clock anywhere: the same ELF and inputs give the same run. */
+#ifndef PIL_H
+#define PIL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+struct avr_t;
+struct avr_irq_t;
+
+#define PIL_IN_MAX 4096u /* bytes waiting for the AVR's receive FIFO */
+#define PIL_PAINT 0xA5   /* SRAM fill before reset: untouched bytes keep it */
+
+typedef struct {
+    struct avr_t *avr;
+    struct avr_irq_t *uart_in;
+    int fd;                   /* the AVR's end of the socketpair */
+    int xoff;                 /* the UART's input FIFO is full */
+    uint8_t in[PIL_IN_MAX];   /* bytes from the link, not yet in the FIFO */
+    size_t in_head, in_len;
+    uint64_t cycles_per_step;
+    uint64_t target;          /* cycle count the AVR must reach */
+    uint64_t cycles;          /* AVR cycles run */
+    uint64_t bytes_in, bytes_out;
+    char mcu[64];
+    uint32_t f_cpu;
+} pil_t;
+
+/* Load elf into simavr. mcu / f_cpu: NULL / 0 = the ELF's .mmcu section,
+ * else atmega328p / 16 MHz. On success *link_fd is the simulator's end of
+ * the serial line (for link_open_fd) and 0 is returned; else -1 and a
+ * one-line message in err. */
+int pil_open(pil_t *p, const char *elf, const char *mcu, uint32_t f_cpu, double step_s, int *link_fd, char *err,
+             size_t errn);
+/* One physics step of AVR time. Returns 0, or -1 if the AVR stopped
+ * (crashed or halted) with the reason in err. */
+int pil_step(pil_t *p, char *err, size_t errn);
+/* Stack high-water mark so far, bytes below the top of SRAM, and the
+ * smallest gap that stayed untouched between .bss and the stack (SRAM is
+ * painted at load; the firmware must not malloc). */
+void pil_stack(const pil_t *p, uint32_t *stack_max, uint32_t *free_min);
+void pil_close(pil_t *p);
+
+#endif

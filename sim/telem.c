@@ -1,0 +1,315 @@
+/* telem.c - LCM telemetry of a running simulation (see telem.h). */
+#include "telem.h"
+
+#include <errno.h>
+#include <lcm/eventlog.h>
+#include <lcm/lcm.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "hal_sim.h"
+#include "mmlcm_belief_t.h"
+#include "mmlcm_motors_t.h"
+#include "mmlcm_pose_t.h"
+#include "mmlcm_race_event_t.h"
+#include "mmlcm_race_t.h"
+#include "mmlcm_sensors_t.h"
+#include "solve.h"
+
+#define NONE UINT64_MAX
+
+static uint64_t period_steps(double hz, double step_s)
+{
+    double p = round(1.0 / (hz * step_s));
+    return p < 1.0 ? 1 : (uint64_t)p;
+}
+
+/* lcm_create, with what LCM prints on stderr caught and summed up in why
+ * (one error line in all, for the caller to print). */
+static lcm_t *create_quiet(const char *url, char *why, size_t whylen)
+{
+    snprintf(why, whylen, "unknown provider, bad address or no multicast route");
+    FILE *tmp = tmpfile();
+    int saved = tmp ? dup(STDERR_FILENO) : -1;
+    if (saved >= 0) {
+        fflush(stderr);
+        dup2(fileno(tmp), STDERR_FILENO);
+    }
+    lcm_t *l = lcm_create(url);
+    if (saved >= 0) {
+        fflush(stderr);
+        dup2(saved, STDERR_FILENO);
+        close(saved);
+        /* LCM's "Error: ..." line if any; its multi-line multicast advice
+         * in one line; else its first line */
+        char line[200];
+        int first = 1, have_error = 0;
+        rewind(tmp);
+        while (fgets(line, sizeof line, tmp)) {
+            line[strcspn(line, "\r\n")] = '\0';
+            if (!line[0] || have_error) continue;
+            if (!strncmp(line, "Error: ", 7)) {
+                snprintf(why, whylen, "%s", line + 7);
+                have_error = 1;
+            } else if (strstr(line, "requires a valid multicast route")) {
+                snprintf(why, whylen, "no multicast route (see http://lcm-proj.github.io/multicast_setup.html)");
+                first = 0;
+            } else if (first) {
+                snprintf(why, whylen, "%s", line);
+                first = 0;
+            }
+        }
+    }
+    if (tmp) fclose(tmp);
+    return l;
+}
+
+int telem_open(telem_t *t, const telem_opts_t *o, const sim_t *s, char *err, size_t errlen)
+{
+    double hz = o->rate_hz > 0 ? o->rate_hz : TELEM_RATE_HZ;
+    t->lcm = NULL;
+    t->log = NULL;
+    t->log_path[0] = '\0';
+    t->step_us = (uint64_t)llround(s->cfg.step_s * 1e6);
+    t->fast_steps = period_steps(hz, s->cfg.step_s);
+    t->race_steps = period_steps(TELEM_RACE_HZ, s->cfg.step_s);
+    t->last_fast = t->last_race = NONE;
+    t->nlaps = 0;
+    t->in_run = 0;
+    t->run_start_s = 0;
+    t->belief_seq = 0;
+    t->failed = 0;
+    t->live_errors = 0;
+    t->published = 0;
+    if (o->log_path && strlen(o->log_path) >= sizeof t->log_path) {
+        snprintf(err, errlen, "%.200s...: log file name too long", o->log_path);
+        return -1;
+    }
+    /* the URL first: a bad URL leaves an existing log file untouched */
+    if (o->url) {
+        char why[200];
+        t->lcm = create_quiet(o->url[0] ? o->url : NULL, why, sizeof why);
+        if (!t->lcm) {
+            snprintf(err, errlen, "%s: cannot open the LCM URL: %s", o->url[0] ? o->url : "LCM's default URL", why);
+            return -1;
+        }
+    }
+    if (o->log_path) {
+        errno = 0;
+        t->log = lcm_eventlog_create(o->log_path, "w");
+        if (!t->log) {
+            snprintf(err, errlen, "%s: cannot write the LCM log: %s", o->log_path,
+                     errno ? strerror(errno) : "unknown error");
+            if (t->lcm) lcm_destroy(t->lcm);
+            t->lcm = NULL;
+            return -1;
+        }
+        strcpy(t->log_path, o->log_path);
+    }
+    return 0;
+}
+
+/* One encoded message to every output. */
+static void emit(telem_t *t, const char *channel, int64_t utime, int len)
+{
+    if (len < 0) {
+        t->failed = 1;
+        return;
+    }
+    /* a live message lost (udpm buffers full) is counted, not fatal */
+    if (t->lcm && lcm_publish(t->lcm, channel, t->buf, (unsigned)len) != 0) t->live_errors++;
+    if (t->log) {
+        lcm_eventlog_event_t ev;
+        ev.eventnum = 0; /* numbered by the log */
+        ev.timestamp = utime;
+        ev.channellen = (int32_t)strlen(channel);
+        ev.datalen = len;
+        ev.channel = (char *)channel;
+        ev.data = t->buf;
+        if (lcm_eventlog_write_event(t->log, &ev) != 0) t->failed = 1;
+    }
+    t->published++;
+}
+
+static int64_t utime_of(const telem_t *t, const sim_t *s) { return (int64_t)(s->step * t->step_us); }
+
+static void pub_fast(telem_t *t, const sim_t *s)
+{
+    int64_t ut = utime_of(t, s);
+    mmlcm_pose_t p;
+    p.utime = ut;
+    world_pose(s->world, &p.x_m, &p.y_m, &p.heading_rad);
+    world_velocity(s->world, &p.v_m_s, &p.omega_rad_s);
+    emit(t, "MM_POSE", ut, mmlcm_pose_t_encode(t->buf, 0, TELEM_BUF_BYTES, &p));
+
+    mmlcm_motors_t m;
+    m.utime = ut;
+    for (int i = 0; i < 2; i++) {
+        m.command[i] = (int16_t)s->cmd[i];
+        m.voltage_v[i] = s->motor[i].v_applied;
+        m.current_a[i] = s->motor[i].i_a;
+        m.wheel_rad_s[i] = world_wheel_rate(s->world, i);
+        m.torque_nm[i] = s->motor[i].kt_nm_per_a * s->motor[i].i_a; /* as motor_step returns it */
+    }
+    emit(t, "MM_MOTORS", ut, mmlcm_motors_t_encode(t->buf, 0, TELEM_BUF_BYTES, &m));
+
+    mmlcm_sensors_t r;
+    r.utime = ut;
+    for (int i = 0; i < 2; i++) r.encoder[i] = s->encoder[i].count;
+    for (int i = 0; i < 3; i++) {
+        r.tof_mm[i] = (int16_t)lround(s->tof_last[i].dist_m * 1000.0); /* as hal_distance rounds */
+        r.tof_timeout[i] = (int8_t)(s->tof_last[i].timeout != 0);
+        r.tof_true_m[i] = s->tof_true_m[i];
+    }
+    emit(t, "MM_SENSORS", ut, mmlcm_sensors_t_encode(t->buf, 0, TELEM_BUF_BYTES, &r));
+    t->last_fast = s->step;
+}
+
+static void pub_race(telem_t *t, const sim_t *s)
+{
+    const race_t *rc = &s->race;
+    double now = sim_time_s(s);
+    mmlcm_race_t m;
+    m.utime = utime_of(t, s);
+    m.started = (int8_t)(rc->started != 0);
+    m.global_s = race_global_s(rc, now);
+    m.in_run = (int8_t)(rc->in_run != 0);
+    m.lap_s = rc->in_run ? now - rc->run_start_s : 0.0;
+    m.over_time = (int8_t)(rc->over_time != 0);
+    m.laps = rc->nlaps;
+    m.best_lap = rc->best + 1;
+    m.best_run_s = rc->best >= 0 ? rc->laps[rc->best].end_s - rc->laps[rc->best].start_s : 0.0;
+    emit(t, "MM_RACE", m.utime, mmlcm_race_t_encode(t->buf, 0, TELEM_BUF_BYTES, &m));
+    t->last_race = s->step;
+}
+
+/* Lap starts and ends since the last step. */
+static void pub_events(telem_t *t, const sim_t *s)
+{
+    const race_t *rc = &s->race;
+    mmlcm_race_event_t e;
+    memset(&e, 0, sizeof e);
+    e.utime = utime_of(t, s);
+    while (t->nlaps < rc->nlaps) {
+        const race_lap_t *l = &rc->laps[t->nlaps];
+        e.kind = MMLCM_RACE_EVENT_T_LAP_END;
+        e.lap = t->nlaps + 1;
+        e.start_s = l->start_s;
+        e.end_s = l->end_s;
+        e.run_s = l->end_s - l->start_s;
+        e.over_time = (int8_t)(l->over_time != 0);
+        e.best = (int8_t)(rc->best == t->nlaps);
+        emit(t, "MM_RACE_EVENT", e.utime, mmlcm_race_event_t_encode(t->buf, 0, TELEM_BUF_BYTES, &e));
+        t->nlaps++;
+        t->in_run = 0;
+    }
+    if (rc->in_run && (!t->in_run || rc->run_start_s != t->run_start_s)) {
+        memset(&e, 0, sizeof e);
+        e.utime = utime_of(t, s);
+        e.kind = MMLCM_RACE_EVENT_T_LAP_START;
+        e.lap = rc->nlaps + 1;
+        e.start_s = race_global_s(rc, rc->run_start_s);
+        emit(t, "MM_RACE_EVENT", e.utime, mmlcm_race_event_t_encode(t->buf, 0, TELEM_BUF_BYTES, &e));
+    }
+    t->in_run = rc->in_run;
+    t->run_start_s = rc->run_start_s;
+}
+
+void telem_cost_field(const maze_t *m, int16_t *cost)
+{
+    static maze_cell_t queue[MAZE_MAX_CELLS];
+    uint16_t n = maze_cells(m), head = 0, tail = 0;
+    for (uint16_t c = 0; c < n; c++) {
+        cost[c] = -1;
+        if (maze_is_goal(m, (maze_cell_t)c)) {
+            cost[c] = 0;
+            queue[tail++] = (maze_cell_t)c;
+        }
+    }
+    while (head < tail) {
+        maze_cell_t c = queue[head++];
+        for (uint8_t d = 0; d < 4; d++) {
+            maze_cell_t nb;
+            if (maze_wall(m, c, d) == MAZE_WALL_CLOSED || !maze_neighbour(m, c, d, &nb) || cost[nb] >= 0) continue;
+            cost[nb] = (int16_t)(cost[c] + 1);
+            queue[tail++] = nb;
+        }
+    }
+}
+
+static void pub_belief(telem_t *t)
+{
+    const hal_sim_belief_t *b = hal_sim_belief();
+    static int8_t walls[MAZE_MAX_CELLS];
+    static int16_t cost[MAZE_MAX_CELLS], path[MAZE_MAX_CELLS + 1];
+    static solve_path_t best;
+    static maze_t from_here;
+    uint16_t n = maze_cells(&b->map);
+    for (uint16_t c = 0; c < n; c++) walls[c] = (int8_t)b->map.cell[c];
+    telem_cost_field(&b->map, cost);
+    from_here = b->map;
+    from_here.start = (maze_cell_t)b->cell;
+    from_here.start_heading = b->heading;
+    int16_t len = 0;
+    if (b->cell < n && solve_best(&from_here, 1, &best) == 0)
+        for (uint16_t i = 0; i < best.len; i++) path[len++] = (int16_t)best.path[i];
+
+    mmlcm_belief_t m;
+    m.utime = (int64_t)b->t_us;
+    m.width = (int8_t)b->map.width;
+    m.height = (int8_t)b->map.height;
+    m.ncells = (int16_t)n;
+    m.walls = walls;
+    m.cost = cost;
+    m.cell = (int16_t)b->cell;
+    m.heading = (int8_t)b->heading;
+    m.state = (int8_t)b->state;
+    m.path_len = len;
+    m.path = path;
+    emit(t, "MM_BELIEF", m.utime, mmlcm_belief_t_encode(t->buf, 0, TELEM_BUF_BYTES, &m));
+    t->belief_seq = b->seq;
+}
+
+void telem_step(telem_t *t, const sim_t *s)
+{
+    /* the belief reported during the last firmware loop comes first: its
+     * time is the previous step's, so the log stays in time order */
+    if (hal_sim_belief()->seq != t->belief_seq) pub_belief(t);
+    pub_events(t, s);
+    if (s->step % t->fast_steps == 0) pub_fast(t, s);
+    if (s->step % t->race_steps == 0) pub_race(t, s);
+}
+
+void telem_finish(telem_t *t, const sim_t *s)
+{
+    if (hal_sim_belief()->seq != t->belief_seq) pub_belief(t);
+    pub_events(t, s);
+    if (t->last_fast != s->step) pub_fast(t, s);
+    if (t->last_race != s->step) pub_race(t, s);
+}
+
+int telem_close(telem_t *t, char *err, size_t errlen)
+{
+    int rc = 0;
+    if (t->log) {
+        FILE *f = ((lcm_eventlog_t *)t->log)->f;
+        if (fflush(f) != 0 || ferror(f)) t->failed = 1;
+        lcm_eventlog_destroy(t->log);
+        t->log = NULL;
+        if (t->failed) {
+            struct stat st;
+            int regular = stat(t->log_path, &st) == 0 && S_ISREG(st.st_mode);
+            snprintf(err, errlen, "%s: writing the LCM log failed%s", t->log_path, regular ? "; removed" : "");
+            if (regular) unlink(t->log_path); /* never a device or a pipe */
+            rc = -1;
+        }
+    }
+    if (t->lcm) {
+        lcm_destroy(t->lcm);
+        t->lcm = NULL;
+    }
+    return rc;
+}

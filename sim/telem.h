@@ -1,0 +1,73 @@
+/* telem.h - LCM telemetry of a running simulation (types in the lcm/ folder,
+ * package mmlcm, generated with lcm-gen at build time).
+ *
+ * Channels (every message carries utime = simulation time, microseconds):
+ *   MM_POSE, MM_MOTORS, MM_SENSORS  at the high rate (rate_hz, default 100 Hz)
+ *   MM_RACE                         at TELEM_RACE_HZ
+ *   MM_RACE_EVENT                   on the step a lap starts or ends
+ *   MM_BELIEF                       when the firmware calls hal_belief
+ * A channel's messages go out on the physics steps that are multiples of its
+ * period (rate rounded to a whole number of steps), and once more at the end
+ * (telem_finish) unless the last step was one of them.
+ *
+ * Outputs: a live LCM URL (lcm_create; "" = LCM's default, udpm with ttl=0)
+ * and/or a log file written with LCM's event-log API (the format of
+ * lcm-logger and the file:// provider) whose event timestamps are the
+ * simulation time, so a log replays at contest speed whatever the simulation
+ * speed and the same run gives the same log bytes.
+ * Telemetry only reads the simulation: a run is the same with or without it.
+ */
+#ifndef TELEM_H
+#define TELEM_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "sim.h"
+
+#define TELEM_RATE_HZ 100.0 /* default rate of the high-rate channels, Hz */
+#define TELEM_RACE_HZ 10.0  /* rate of MM_RACE, Hz */
+#define TELEM_BUF_BYTES 16384 /* one encoded message, bytes (a 32x32 belief is ~5.2 KB) */
+
+typedef struct {
+    const char *url;      /* live LCM URL; NULL = none, "" = LCM's default */
+    const char *log_path; /* log file; NULL = none */
+    double rate_hz;       /* high-rate channels, Hz; <= 0 = TELEM_RATE_HZ */
+} telem_opts_t;
+
+typedef struct {
+    void *lcm;            /* lcm_t *, NULL = no live output */
+    void *log;            /* lcm_eventlog_t *, NULL = no log */
+    char log_path[4096];
+    uint64_t fast_steps;  /* period of the high-rate channels, physics steps */
+    uint64_t race_steps;  /* period of MM_RACE, physics steps */
+    uint64_t step_us;     /* physics step, microseconds */
+    uint64_t last_fast, last_race; /* step of the last publication, UINT64_MAX = none */
+    int nlaps;            /* laps already announced */
+    int in_run;           /* the run under way was announced */
+    double run_start_s;
+    uint32_t belief_seq;  /* last belief published */
+    int failed;           /* a log write or an encoding failed */
+    uint64_t live_errors; /* live messages lcm_publish could not send */
+    uint64_t published;   /* messages published (per output) */
+    uint8_t buf[TELEM_BUF_BYTES];
+} telem_t;
+
+/* Open the outputs for a run of simulation s (its step sets the periods).
+ * Returns 0, or -1 with one line in err (nothing is left open or written). */
+int telem_open(telem_t *t, const telem_opts_t *o, const sim_t *s, char *err, size_t errlen);
+/* After every physics step (and the firmware's tick and loop, if any). */
+void telem_step(telem_t *t, const sim_t *s);
+/* At the end of the run: the last state of every periodic channel and any
+ * belief not yet sent. */
+void telem_finish(telem_t *t, const sim_t *s);
+/* Close the outputs. Returns 0, or -1 with one line in err if a write
+ * failed (the log file is then removed: no half-written log is left). */
+int telem_close(telem_t *t, char *err, size_t errlen);
+
+/* Classic flood on map m: cell distances to the goal cells through walls
+ * not known closed (unknown counts open); -1 = unreachable. cost has
+ * maze_cells(m) entries. */
+void telem_cost_field(const maze_t *m, int16_t *cost);
+
+#endif

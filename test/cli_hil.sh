@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# cli_hil.sh - hardware in the loop: the wire codec's shared vectors on an
+# AVR in simavr; mmsim --pty with this script playing the MCU (compat and
+# framed); flag and device errors.
+set -u
+S=${MMSIM:-build/mmsim}
+B=${BUILD:-build}
+T=$(mktemp -d); trap 'rm -rf "$T"; [ -n "${SIMPID:-}" ] && kill "$SIMPID" 2>/dev/null' EXIT
+fails=0
+ok()  { echo "ok: $1"; }
+bad() { echo "FAILED: $1"; fails=$((fails+1)); }
+
+# the codec on a 16-bit-int AVR: same vectors as the host test
+if command -v simavr >/dev/null && [ -f "$B/avr/wire_selftest.elf" ]; then
+  timeout 60 simavr -m atmega328p -f 16000000 "$B/avr/wire_selftest.elf" >"$T/avr" 2>&1
+  grep -q 'wire vectors: 0 failed' "$T/avr" && ok "AVR wire vectors" || bad "AVR wire vectors: $(cat -v "$T/avr")"
+else
+  echo "SKIP cli_hil AVR vectors: simavr or $B/avr/wire_selftest.elf missing"
+fi
+
+# platformio.ini parses (PlatformIO cannot download its platforms here: no build)
+if command -v pio >/dev/null; then
+  pio project config >"$T/pio" 2>&1 && grep -q "env:megaatmega2560" "$T/pio" && grep -q "env:native" "$T/pio" \
+    && ok "platformio.ini parses" || bad "platformio.ini: $(tail -3 "$T/pio")"
+else
+  echo "SKIP cli_hil platformio.ini check: pio not installed"
+fi
+
+# flag and device errors: 2 for bad flags, 3 for a device that fails
+want_rc() { local want=$1 desc=$2; shift 2
+  "$@" >"$T/out" 2>"$T/err"; local rc=$?
+  if [ $rc -eq "$want" ]; then ok "$desc"; else bad "$desc: exit $rc, want $want"; head -3 "$T/err"; fi
+  [ "$(wc -l <"$T/err")" -le 1 ] || bad "$desc: more than one error line: $(cat "$T/err")"; }
+M=mazes/gen-5x5-s1.txt
+want_rc 2 "bad baud" "$S" --maze $M --pty --baud 9
+want_rc 2 "baud too high" "$S" --maze $M --pty --baud 12000001
+want_rc 2 "fractional baud" "$S" --maze $M --pty --baud 115200.5
+want_rc 2 "bad protocol" "$S" --maze $M --pty --protocol morse
+grep -q "^mmsim: --protocol: expected framed or compat, got 'morse'" "$T/err" && ok "protocol error line" || bad "protocol error line: $(cat "$T/err")"
+want_rc 2 "serial and pty" "$S" --maze $M --pty --serial /dev/null
+want_rc 2 "protocol without a link" "$S" --maze $M --protocol compat
+want_rc 2 "bad silence" "$S" --maze $M --pty --silence-ms 0
+want_rc 2 "serial with batch" "$S" --batch mazes --serial /dev/null
+want_rc 3 "missing device" "$S" --maze $M --serial "$T/no-such-tty"
+grep -q "no-such-tty: cannot open: No such file or directory" "$T/err" && ok "device error line" || bad "device error line: $(cat "$T/err")"
+want_rc 3 "not a terminal" "$S" --maze $M --serial /dev/null
+grep -q "^mmsim: /dev/null: not a serial device" "$T/err" && ok "not-a-tty error line" || bad "not-a-tty line: $(cat "$T/err")"
+want_rc 2 "bad maze with a link" "$S" --maze "$T/none.txt" --pty
+
+# mmsim --pty with hil_mcu.py as the MCU: sensors out, motors in, silence,
+# unplug and replug; in real time, 4 s each
+hil() { local proto=$1
+  "$S" --maze $M --pty --protocol "$proto" --time-limit 4 --json >"$T/$proto.json" 2>"$T/$proto.err" &
+  SIMPID=$!
+  local p="" i
+  for i in $(seq 100); do p=$(sed -n 's/^mmsim: pty //p' "$T/$proto.err" 2>/dev/null); [ -n "$p" ] && break; sleep 0.05; done
+  if [ -z "$p" ]; then
+    wait $SIMPID; SIMPID=
+    if grep -q "cannot create a pseudo-terminal" "$T/$proto.err"; then echo "SKIP cli_hil $proto: no pseudo-terminals here"; return; fi
+    bad "$proto: no pty path: $(cat "$T/$proto.err")"; return
+  fi
+  python3 test/hil_mcu.py "$proto" "$p" 2.5 >"$T/$proto.mcu" 2>&1 && ok "$proto: MCU got sensors: $(cat "$T/$proto.mcu")" \
+    || bad "$proto: MCU side: $(cat "$T/$proto.mcu")"
+  wait $SIMPID; local rc=$?; SIMPID=
+  [ $rc -eq 1 ] && ok "$proto: exit 1 (goal not reached)" || bad "$proto: mmsim exit $rc: $(cat "$T/$proto.err")"
+  local got
+  got=$(python3 -c "
+import json,sys; d=json.load(open(sys.argv[1])); l=d['link']; e=l['decoder']
+print(d['driver'], l['protocol'], l['connects'] >= 2, l['disconnects'] >= 1, l['silences'] >= 1,
+      sum(e[k] for k in ('crc','cobs','overflow','unknown','length','value')), l['mcu_log_lines'] >= 1,
+      d['final_pose']['y_m'] > 0.09 + 0.03, l['tx_dropped'], l['handshake'])" "$T/$proto.json" 2>&1)
+  [ "$got" = "serial $proto True True True 1 True True 0 True" ] && ok "$proto: link report (one garbage chunk counted)" || bad "$proto: link report: $got $(cat "$T/$proto.json")"
+  grep -q "MCU silent: motors off" "$T/$proto.err" && grep -q "disconnected, motors off" "$T/$proto.err" \
+    && grep -q "^mcu: hello from the test MCU" "$T/$proto.err" && ok "$proto: states reported" || bad "$proto: states: $(cat "$T/$proto.err")"
+}
+if command -v python3 >/dev/null; then hil compat; hil framed; else echo "SKIP cli_hil pty: python3 missing"; fi
+grep -q "hello from the MCU: protocol 1, ToF range 1200 mm" "$T/framed.err" && ok "framed handshake reported" || bad "framed handshake: $(cat "$T/framed.err")"
+
+# a real serial device path (a pty slave behind a symlink), custom baud via
+# termios2, unplugged and plugged back: mmsim reports it and reopens it
+if command -v python3 >/dev/null; then
+  python3 test/hil_replug.py "$T/tty" 1.2 >"$T/replug.out" 2>&1 &
+  RP=$!
+  for i in $(seq 100); do [ -e "$T/tty" ] && break; sleep 0.05; done
+  "$S" --maze $M --serial "$T/tty" --baud 250000 --protocol compat --time-limit 4 --json >"$T/rp.json" 2>"$T/rp.err"; rc=$?
+  wait $RP && ok "replug: device side: $(cat "$T/replug.out")" || bad "replug device side: $(cat "$T/replug.out") $(cat "$T/rp.err")"
+  [ $rc -eq 1 ] && ok "replug: mmsim exit 1" || bad "replug: mmsim exit $rc: $(cat "$T/rp.err")"
+  got=$(python3 -c "
+import json,sys; l=json.load(open(sys.argv[1]))['link']
+print(l['baud'], l['connects'] >= 2, l['disconnects'] >= 1, l['decoder']['unknown'])" "$T/rp.json" 2>&1)
+  [ "$got" = "250000 True True 0" ] && ok "replug: reconnected" || bad "replug: $got $(cat "$T/rp.err")"
+  grep -q "disconnected, motors off" "$T/rp.err" && [ "$(grep -c ': connected at' "$T/rp.err")" -ge 2 ] \
+    && ok "replug: states reported" || bad "replug states: $(cat "$T/rp.err")"
+fi
+
+[ $fails -eq 0 ] || exit 1

@@ -1,0 +1,116 @@
+#!/usr/bin/env bash
+# cli_lcm.sh - LCM telemetry to a log (mmsim --lcm-log), decoded with the
+# generated C types (mmlog): every channel present, counts match the rates,
+# lap events equal the lap table, the last pose equals final_pose, the run is
+# the same with and without telemetry, flag and file errors.
+set -u
+S=${MMSIM:-build/mmsim}
+L=${MMLOG:-build/mmlog}
+T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
+fails=0
+ok()  { echo "ok: $1"; }
+bad() { echo "FAILED: $1"; fails=$((fails+1)); }
+want_rc() { local want=$1 desc=$2; shift 2
+  "$@" >"$T/out" 2>"$T/err"; local rc=$?
+  if [ $rc -eq "$want" ]; then ok "$desc"; else bad "$desc: exit $rc, want $want"; head -5 "$T/err"; fi; }
+one_line() { [ "$(wc -l <"$T/err")" -eq 1 ] && ok "$1: one error line" || bad "$1: error lines: $(cat "$T/err")"; }
+strip() { python3 -c "import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1]); d.pop('wall_time_s'); d.pop('real_time_factor'); print(json.dumps(d, sort_keys=True))" "$1"; }
+
+# A firmware contest (search, then speed runs) on 5x5 with the default rate.
+M=mazes/gen-5x5-s1.txt
+want_rc 0 "firmware contest with --lcm-log" "$S" --maze $M --driver firmware --json --lcm-log "$T/run.lcmlog"
+cp "$T/out" "$T/run.json"
+want_rc 0 "mmlog summary" "$L" --json "$T/run.lcmlog"
+cp "$T/out" "$T/sum.json"
+for ch in POSE MOTORS SENSORS RACE RACE_EVENT BELIEF; do "$L" --dump MM_$ch "$T/run.lcmlog" >"$T/$ch.jsonl"; done
+
+python3 - "$T" <<'EOF' && ok "channels, counts, laps, final pose, belief" || bad "log content"
+import json, sys
+T = sys.argv[1]
+run = json.loads(open(T + "/run.json").read().splitlines()[-1])
+summ = json.loads(open(T + "/sum.json").read())
+dump = lambda ch: [json.loads(l) for l in open("%s/%s.jsonl" % (T, ch))]
+fails = []
+def check(cond, what):
+    if not cond: fails.append(what)
+chans = ["MM_POSE", "MM_MOTORS", "MM_SENSORS", "MM_RACE", "MM_RACE_EVENT", "MM_BELIEF"]
+check(sorted(summ) == sorted(chans), "channels %s" % sorted(summ))
+check(all(c["bad"] == 0 for c in summ.values()), "undecodable messages")
+steps = round(run["sim_time_s"] * 1000)  # 1 ms physics step
+def expect(period):  # multiples of the period, plus the final state
+    return steps // period + (1 if steps % period else 0)
+for ch in ["MM_POSE", "MM_MOTORS", "MM_SENSORS"]:
+    check(summ[ch]["count"] == expect(10), "%s count %d, want %d" % (ch, summ[ch]["count"], expect(10)))
+check(summ["MM_RACE"]["count"] == expect(100), "MM_RACE count %d, want %d" % (summ["MM_RACE"]["count"], expect(100)))
+check(abs(summ["MM_POSE"]["last_s"] - run["sim_time_s"]) < 1e-9, "last pose time")
+pose = dump("POSE")
+check([p["utime"] for p in pose] == sorted(p["utime"] for p in pose), "pose times in order")
+last = pose[-1]
+fp = run["final_pose"]
+check((round(last["x_m"], 6), round(last["y_m"], 6), round(last["heading_rad"], 6)) == (fp["x_m"], fp["y_m"], fp["heading_rad"]),
+      "final pose %s vs %s" % (last, fp))
+ends = [e for e in dump("RACE_EVENT") if e["kind"] == "lap_end"]
+starts = [e for e in dump("RACE_EVENT") if e["kind"] == "lap_start"]
+table = [(l["lap"], l["start_s"], l["end_s"], l["run_s"]) for l in run["laps"]]
+check([(e["lap"], round(e["start_s"], 3), round(e["end_s"], 3), round(e["run_s"], 3)) for e in ends] == table,
+      "lap events %s vs table %s" % (ends, table))
+check(len(starts) >= len(ends) and [s["lap"] for s in starts][:len(ends)] == [e["lap"] for e in ends], "lap starts")
+check(len(ends) >= 2 and sum(e["best"] for e in ends) >= 1, "best lap flagged")
+best = min(range(len(ends)), key=lambda i: ends[i]["run_s"])
+race = dump("RACE")
+check(race[-1]["laps"] == len(table) and race[-1]["best_lap"] == best + 1 and round(race[-1]["best_run_s"], 3) == run["best_run_s"],
+      "final race state %s" % race[-1])
+bel = dump("BELIEF")
+check(len(bel) >= 1, "belief messages")
+b = bel[-1]
+check(b["width"] == 5 and b["height"] == 5 and len(b["walls"]) == 25 and len(b["cost"]) == 25, "belief map size")
+check(b["path"] and b["path"][0] == b["cell"] and b["cost"][b["path"][-1]] == 0, "planned path from the mouse to the goal")
+check(all(0 <= m["state"] <= 6 and 0 <= m["heading"] <= 3 for m in bel), "belief state and heading")
+sens = dump("SENSORS")
+check(any(not t for s in sens for t in s["tof_timeout"]), "ToF readings")
+check(sens[-1]["encoder"][0] != 0 and sens[-1]["encoder"][1] != 0, "encoder counts")
+mot = dump("MOTORS")
+check(any(m["command"][0] != 0 for m in mot) and any(abs(m["current_a"][0]) > 0 for m in mot), "motor state")
+if fails:
+    print("\n".join(fails)); sys.exit(1)
+EOF
+
+# Determinism: the run is the same without telemetry, and the log is the same twice.
+want_rc 0 "same contest without telemetry" "$S" --maze $M --driver firmware --json
+[ "$(strip "$T/out")" = "$(strip "$T/run.json")" ] && ok "telemetry does not change the run" || bad "telemetry changed the run"
+"$S" --maze $M --driver firmware --json --lcm-log "$T/again.lcmlog" --lcm=memq:// >/dev/null
+cmp -s "$T/run.lcmlog" "$T/again.lcmlog" && ok "same log bytes (with a live memq:// URL too)" || bad "logs differ"
+
+# --lcm-rate: the high-rate channels follow it (scripted driver, 250 Hz = every 4 steps).
+want_rc 0 "scripted run at 250 Hz" "$S" --maze $M --runs 1 --json --lcm-rate 250 --lcm-log "$T/r.lcmlog"
+python3 - "$T/out" <(${L} --json "$T/r.lcmlog") <<'EOF' && ok "counts at --lcm-rate 250" || bad "counts at --lcm-rate 250"
+import json, sys
+run = json.loads(open(sys.argv[1]).read().splitlines()[-1]); s = json.loads(open(sys.argv[2]).read())
+n = round(run["sim_time_s"] * 1000)
+want = n // 4 + (1 if n % 4 else 0)
+print(s["MM_POSE"]["count"], want, s["MM_POSE"]["rate_hz"])
+sys.exit(0 if s["MM_POSE"]["count"] == want and "MM_BELIEF" not in s and abs(s["MM_POSE"]["rate_hz"] - 250) < 1 else 1)
+EOF
+want_rc 0 "mmlog text table" "$L" "$T/r.lcmlog"
+grep -q '^channel  *count  *rate_hz  *first_s  *last_s  *bad$' "$T/out" && grep -q '^MM_POSE ' "$T/out" && ok "mmlog table" || bad "mmlog table: $(cat "$T/out")"
+
+# Errors: one line, exit 2 for a bad flag, 3 for an output that cannot be opened; nothing left behind.
+want_rc 3 "unwritable log" "$S" --maze $M --lcm-log "$T/no/such/dir/x.lcmlog"
+one_line "unwritable log"; grep -q "cannot write the LCM log" "$T/err" || bad "unwritable log message: $(cat "$T/err")"
+want_rc 3 "unknown LCM provider" "$S" --maze $M --lcm=warp://x --lcm-log "$T/half.lcmlog"
+one_line "unknown LCM provider"; [ ! -e "$T/half.lcmlog" ] && ok "no log left after a failed open" || bad "log left behind"
+want_rc 2 "URL without a provider" "$S" --maze $M --lcm=nonsense
+one_line "URL without a provider"
+want_rc 2 "bad rate" "$S" --maze $M --lcm-log "$T/x.lcmlog" --lcm-rate 0
+want_rc 2 "bad rate text" "$S" --maze $M --lcm-log "$T/x.lcmlog" --lcm-rate fast
+want_rc 2 "empty log name" "$S" --maze $M --lcm-log ""
+want_rc 2 "telemetry in a batch" "$S" --batch mazes --lcm-log "$T/x.lcmlog"
+printf 'not a log at all\n' >"$T/junk"
+want_rc 2 "mmlog on a non-log" "$L" "$T/junk"
+one_line "mmlog on a non-log"
+want_rc 2 "mmlog on a missing file" "$L" "$T/none.lcmlog"
+head -c $(( $(stat -c %s "$T/r.lcmlog") - 7 )) "$T/r.lcmlog" >"$T/cut.lcmlog"
+want_rc 2 "mmlog on a truncated log" "$L" "$T/cut.lcmlog"
+one_line "mmlog on a truncated log"; grep -q '^MM_POSE ' "$T/out" && ok "summary before the cut" || bad "summary before the cut"
+want_rc 2 "mmlog bad flag" "$L" --warp "$T/r.lcmlog"
+[ $fails -eq 0 ]

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# cli_pil.sh - processor in the loop: AVR images built by `make arduino`
+# run in simavr inside mmsim (--avr), in lockstep with the physics.
+#  - the whole mouse firmware (Mega 2560 image, framed, 1 Mbaud) drives the
+#    robot from the start to the goal of a 5x5 maze; same run twice = same JSON;
+#    the whole contest ends by the runner's RUN stop (exit 0), no tick overran;
+#  - the paper-API sketch DriveToWall (Uno image, compat, 115200) reads the
+#    front sensor and stops at the wall;
+#  - bad images and flags: exit 3 / 2.
+set -u
+S=${MMSIM:-build/mmsim}
+B=${BUILD:-build}
+T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
+fails=0
+ok()  { echo "ok: $1"; }
+bad() { echo "FAILED: $1"; fails=$((fails+1)); }
+want_rc() { local want=$1 desc=$2; shift 2
+  "$@" >"$T/out" 2>"$T/err"; local rc=$?
+  if [ $rc -eq "$want" ]; then ok "$desc"; else bad "$desc: exit $rc, want $want"; head -3 "$T/err"; fi
+  case " $* " in *" --verbose "*) ;; *) [ "$(wc -l <"$T/err")" -le 1 ] || bad "$desc: more than one error line: $(cat "$T/err")" ;; esac; }
+M=mazes/gen-5x5-s1.txt
+MOUSE=$B/arduino/mega2560/Mouse-5x5.elf
+WALL=$B/arduino/uno/DriveToWall.elf
+for f in "$MOUSE" "$WALL"; do
+  [ -f "$f" ] || { echo "SKIP cli_pil: $f not built (make arduino)"; exit 77; }
+done
+
+# the AVR mouse reaches the goal; the lap ends at about 2.0 s of sim time
+want_rc 1 "AVR mouse, 3 s" "$S" --maze $M --avr "$MOUSE" --mcu atmega2560 --time-limit 3 --json
+cp "$T/out" "$T/a.json"
+got=$(python3 -c "
+import json,sys; d=json.load(open(sys.argv[1])); l=d['link']; a=d['avr']
+print(d['reached_goal'], d['driver'], l['handshake'], l['decoder']['frames_ok'] > 500,
+      sum(v for k,v in l['decoder'].items() if k not in ('bytes','frames_ok')), l['tx_dropped'],
+      a['mcu'], a['cycles'], d['first_run_s'] is not None and d['first_run_s'] < 2.8)" "$T/a.json" 2>&1)
+[ "$got" = "True serial True True 0 0 atmega2560 48000000 True" ] && ok "AVR mouse reached the goal" || bad "AVR mouse: $got $(cat "$T/a.json")"
+"$S" --maze $M --avr "$MOUSE" --mcu atmega2560 --time-limit 3 --json >"$T/b.json" 2>/dev/null
+strip() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); d.pop('wall_time_s'); d.pop('real_time_factor'); print(json.dumps(d, sort_keys=True))" "$1"; }
+[ "$(strip "$T/a.json")" = "$(strip "$T/b.json")" ] && ok "PIL deterministic" || bad "PIL not deterministic"
+
+# the whole contest: search, proof, speed runs; the runner reports its tick
+# and sends RUN stop, which ends the run with exit 0
+want_rc 0 "AVR mouse, whole contest" "$S" --maze $M --avr "$MOUSE" --mcu atmega2560 --time-limit 60 --json --verbose
+got=$(python3 -c "
+import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1])
+print(d['exit_reason'], len(d['laps']) >= 2, d['sim_time_s'] < 60)" "$T/out" 2>&1)
+[ "$got" = "mcu_stopped True True" ] && ok "whole contest ends by RUN stop" || bad "whole contest: $got"
+grep -q "^mcu: contest done" "$T/err" && grep -q "^mcu: runner: 250 Hz tick, 0 overruns" "$T/err" \
+  && ok "runner report: no tick overran" || bad "runner report: $(grep -v 'sensed cell' "$T/err" | tail -5)"
+
+# the paper's API in compat mode: drive until the front sensor sees the wall
+want_rc 1 "DriveToWall, 2 s" "$S" --maze $M --avr "$WALL" --protocol compat --time-limit 2 --json
+got=$(python3 -c "
+import json,sys; d=json.load(open(sys.argv[1])); l=d['link']; p=d['final_pose']
+# start centre y 0.09 m; the wall north of cell (0,1) is at y 0.36 m
+print(l['protocol'], l['baud'], l['mcu_log_lines'], d['collisions'], 0.15 < p['y_m'] < 0.30, l['rx_msgs'] > 300)" "$T/out" 2>&1)
+[ "$got" = "compat 115200 2 0 True True" ] && ok "DriveToWall stopped before the wall" || bad "DriveToWall: $got $(cat "$T/out")"
+
+# bad images and flags
+want_rc 3 "missing ELF" "$S" --maze $M --avr "$T/none.elf"
+grep -q "none.elf: cannot read" "$T/err" && ok "missing ELF line" || bad "missing ELF line: $(cat "$T/err")"
+printf 'not an elf\n' >"$T/bad.elf"
+want_rc 3 "not an ELF" "$S" --maze $M --avr "$T/bad.elf"
+want_rc 3 "unknown MCU" "$S" --maze $M --avr "$WALL" --mcu atmega9999
+grep -q "does not know the MCU 'atmega9999'" "$T/err" && ok "unknown MCU line" || bad "unknown MCU line: $(cat "$T/err")"
+want_rc 2 "--mcu without --avr" "$S" --maze $M --mcu atmega328p
+want_rc 2 "--avr with --pty" "$S" --maze $M --avr "$WALL" --pty
+want_rc 2 "bad --f-cpu" "$S" --maze $M --avr "$WALL" --f-cpu fast
+
+[ $fails -eq 0 ] || exit 1

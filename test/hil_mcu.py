@@ -1,0 +1,146 @@
+#!/usr/bin/env python3
+"""hil_mcu.py - plays the microcontroller on mmsim's --pty link, for
+test/cli_hil.sh. Its own implementation of the wire protocol (COBS,
+CRC-16/CCITT-FALSE, the compat layout), so the simulator's codec is checked
+against an independent one.
+
+usage: hil_mcu.py compat|framed PTY SECONDS
+Drives forward at 250/1023 until the front ToF reads under 150 mm, then
+stops; at 20 % it sends one garbage chunk, at 40 % it goes quiet for 0.3 s,
+at 60 % it unplugs for 0.3 s (reconnects).
+Prints one line of what it saw; exit 0 if sensors and encoders arrived."""
+import os, select, struct, sys, time, tty
+
+mode, path, seconds = sys.argv[1], sys.argv[2], float(sys.argv[3])
+RANGE_MM = 1200
+
+def crc16(b):
+    c = 0xFFFF
+    for x in b:
+        c ^= x << 8
+        for _ in range(8):
+            c = ((c << 1) ^ 0x1021) & 0xFFFF if c & 0x8000 else (c << 1) & 0xFFFF
+    return c
+
+def cobs(b):
+    out, blk = bytearray(), bytearray()
+    for x in b:
+        if x == 0:
+            out.append(len(blk) + 1); out += blk; blk = bytearray()
+        else:
+            blk.append(x)
+    out.append(len(blk) + 1); out += blk; out.append(0)
+    return bytes(out)
+
+def uncobs(b):
+    out, i = bytearray(), 0
+    while i < len(b):
+        code = b[i]; i += 1
+        if i + code - 1 > len(b): return None
+        out += b[i:i + code - 1]; i += code - 1
+        if code != 0xFF and i < len(b): out.append(0)
+    return bytes(out)
+
+def frame(t, payload):
+    raw = bytes([t]) + payload
+    return cobs(raw + struct.pack('<H', crc16(raw)))
+
+class Mcu:
+    def __init__(self):
+        self.fd = None
+        self.enc = [0, 0]; self.front = None; self.dists = 0; self.encs = 0
+        self.hellos = 0; self.bad = 0; self.buf = bytearray(); self.t0 = time.monotonic()
+    def open(self):
+        self.fd = os.open(path, os.O_RDWR | os.O_NOCTTY)
+        tty.setraw(self.fd)
+        self.buf = bytearray()
+    def send(self, b):
+        os.write(self.fd, b)
+    def motor(self, l, r):
+        if mode == 'compat':
+            self.send(bytes([5]) + struct.pack('<h', l) + bytes([6]) + struct.pack('<h', r))
+        else:
+            us = int((time.monotonic() - self.t0) * 1e6) & 0xFFFFFFFF
+            self.send(frame(2, struct.pack('<Ihh', us, l, r)))
+    def hello(self):
+        self.send(frame(1, struct.pack('<BBHIH', 1, 1, RANGE_MM, 35832, 1000)))
+    def log(self, text):
+        if mode == 'compat': self.send(bytes([8]) + text.encode() + b'\0')
+        else: self.send(frame(7, text.encode()))
+    def sensors(self, on):
+        if mode == 'compat': self.send(bytes([7, 2 if on else 3]))
+        else: self.send(frame(5, bytes([1 if on else 0])))
+    def poll(self, timeout):
+        r, _, _ = select.select([self.fd], [], [], timeout)
+        if not r: return
+        self.buf += os.read(self.fd, 4096)
+        if mode == 'compat': self.parse_compat()
+        else: self.parse_framed()
+    def parse_compat(self):
+        b = self.buf
+        while len(b) >= 3:
+            i, v = b[0], struct.unpack('<H', b[1:3])[0]
+            if i > 4: self.bad += 1; del b[0]; continue
+            if i in (3, 4):
+                self.enc[i - 3] += struct.unpack('<h', b[1:3])[0]; self.encs += 1
+            else:
+                self.dists += 1
+                if i == 2: self.front = None if v == 65535 else v * RANGE_MM / 65535
+            del b[:3]
+    def parse_framed(self):
+        while 0 in self.buf:
+            k = self.buf.index(0); chunk = bytes(self.buf[:k]); del self.buf[:k + 1]
+            if not chunk: continue
+            raw = uncobs(chunk)
+            if raw is None or len(raw) < 3 or crc16(raw[:-2]) != struct.unpack('<H', raw[-2:])[0]:
+                self.bad += 1; continue
+            t, p = raw[0], raw[1:-2]
+            if t == 1:
+                self.hellos += 1
+                ver, role, rng = struct.unpack('<BBH', p[:4])
+                assert ver == 1 and role == 0 and rng == RANGE_MM, p
+                self.hello()
+            elif t == 3:
+                _, l, r = struct.unpack('<Iii', p); self.enc = [l, r]; self.encs += 1
+            elif t == 4:
+                _, s, to, mm = struct.unpack('<IBBH', p); self.dists += 1
+                if s == 1: self.front = None if to else mm
+            else:
+                self.bad += 1
+
+m = Mcu()
+m.open()
+if mode == 'framed': m.hello()
+m.sensors(True)
+m.log('hello from the test MCU')
+end = time.monotonic() + seconds
+quiet_at, unplug_at = time.monotonic() + seconds * 0.4, time.monotonic() + seconds * 0.6
+garbage_at = time.monotonic() + seconds * 0.2
+quiet_done = unplug_done = garbage_done = False
+stopped_at_wall = False
+while time.monotonic() < end:
+    now = time.monotonic()
+    if not garbage_done and now >= garbage_at:  # one corrupt chunk: the sim counts exactly one error
+        m.send(bytes([0x42]) if mode == 'compat' else bytes([0x13, 0x37, 0xFF, 0x00]))
+        garbage_done = True
+    if not quiet_done and now >= quiet_at:
+        time.sleep(0.3); quiet_done = True          # silence: the sim must stop the motors
+    if not unplug_done and now >= unplug_at:
+        os.close(m.fd); time.sleep(0.3); m.open()   # unplug and replug
+        if mode == 'framed': m.hello()
+        unplug_done = True
+    try:
+        m.poll(0.002)
+    except OSError:
+        break                                       # the simulator ended
+    near = m.front is not None and m.front < 150
+    stopped_at_wall = stopped_at_wall or near
+    try:
+        m.motor(0, 0) if near else m.motor(250, 250)
+    except OSError:
+        break
+print("mcu: mode %s encoders %d distances %d enc %d %d front %s hellos %d bad %d wall %s" %
+      (mode, m.encs, m.dists, m.enc[0], m.enc[1], m.front, m.hellos, m.bad, stopped_at_wall))
+ok = m.encs > 500 and m.dists > 20 and m.enc[0] > 50 and m.enc[1] > 50 and m.bad == 0 and \
+     (mode == 'compat' or m.hellos >= 1)
+sys.exit(0 if ok else 1)

@@ -1,0 +1,318 @@
+/* test_link.c - the simulator's link end over a socketpair (the other end
+ * plays the MCU): byte budget per step at the baud, queue drops, handshake,
+ * silence timeout, compat manager messages, receive pacing, garbage,
+ * disconnect. No physics: link_step_io with made-up readings. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+#include <signal.h>
+#include <sys/socket.h>
+#include <fcntl.h>
+#include <unistd.h>
+#include <cmocka.h>
+
+#include "link.h"
+#include "wire.h"
+
+static link_t lk;
+static int peer;
+
+static void open_pair(int protocol, uint32_t baud, double silence_s)
+{
+    int sv[2];
+    assert_int_equal(socketpair(AF_UNIX, SOCK_STREAM, 0, sv), 0);
+    fcntl(sv[0], F_SETFL, O_NONBLOCK);
+    fcntl(sv[1], F_SETFL, O_NONBLOCK);
+    link_opts_t o = { NULL, 0, baud, protocol, silence_s };
+    link_open_fd(&lk, sv[0], "socketpair", &o, 0.001, 1200, 35832, NULL);
+    peer = sv[1];
+}
+
+static void close_pair(void)
+{
+    link_close(&lk);
+    if (peer >= 0) close(peer);
+    peer = -1;
+}
+
+/* one step with encoder counts e and a ToF reading every 30 steps */
+static int step(int32_t e, int16_t mo[2])
+{
+    link_io_t io;
+    memset(&io, 0, sizeof io);
+    io.t_us = (uint32_t)(lk.step + 1) * 1000u;
+    io.encoder[0] = e;
+    io.encoder[1] = -e;
+    for (int i = 0; i < 3; i++)
+        if ((lk.step + 1 + 10 * (uint64_t)i) % 30 == 0) {
+            io.tof_new[i] = 1;
+            io.tof_mm[i] = (uint16_t)(100 + i);
+        }
+    return link_step_io(&lk, &io, mo);
+}
+
+static size_t drain(uint8_t *buf, size_t cap)
+{
+    ssize_t k = read(peer, buf, cap);
+    return k > 0 ? (size_t)k : 0;
+}
+
+static void send_msg(const wire_msg_t *m)
+{
+    uint8_t b[WIRE_FRAME_MAX];
+    size_t n = wire_encode(m, b, sizeof b);
+    assert_true(n > 0);
+    assert_int_equal(write(peer, b, n), (ssize_t)n);
+}
+
+static void send_hello(void)
+{
+    wire_msg_t m = { .type = WIRE_HELLO, .u.hello = { WIRE_VERSION, WIRE_ROLE_MCU, 1200, 35832, 500 } };
+    send_msg(&m);
+}
+
+static void test_compat_budget(void **state)
+{
+    static uint8_t all[20000];
+    uint8_t buf[4096];
+    size_t total = 0, most = 0;
+    int16_t mo[2];
+    open_pair(LINK_COMPAT, 115200, 10.0);
+    step(0, mo);
+    assert_int_equal(drain(buf, sizeof buf), 0); /* compat: nothing before requestEnableSensors */
+    static const uint8_t enable[] = { 7, 2 };
+    assert_int_equal(write(peer, enable, 2), 2);
+    for (int s = 0; s < 1000; s++) {
+        step(s * 3, mo);
+        size_t n = drain(buf, sizeof buf);
+        if (n > most) most = n;
+        memcpy(all + total, buf, n);
+        total += n;
+    }
+    assert_true(most <= 12); /* 11.52 bytes per 1 ms step at 115200 */
+    assert_int_equal(lk.st.tx_dropped, 0);
+    assert_int_equal(lk.st.tx_bytes, total);
+    assert_true(total <= 11520 + 12);
+    /* 6 B encoders each step + 3 B per ToF reading: 6,300 B/s of 11,520 */
+    double u = link_util_tx(&lk);
+    assert_true(u > 0.5 && u < 0.6);
+    /* decode what the MCU got: counts sum up to what was sent, no error */
+    wire_compat_rx_t rx;
+    wire_msg_t m;
+    wire_compat_rx_init(&rx, 1200);
+    int32_t last = 0;
+    int dist = 0;
+    for (size_t i = 0; i < total; i++)
+        if (wire_compat_decode_byte(&rx, all[i], &m)) {
+            if (m.type == WIRE_ENCODER) last = m.u.encoder.left;
+            if (m.type == WIRE_DISTANCE) dist++;
+        }
+    assert_int_equal(wire_stats_errors(&rx.stats), 0);
+    assert_true(last > 2800 && last <= 999 * 3); /* the queue lags by at most a few steps */
+    /* disabled: no sensor bytes at all */
+    static const uint8_t disable[] = { 7, 3 };
+    assert_int_equal(write(peer, disable, 2), 2);
+    step(0, mo);
+    step(0, mo);
+    drain(buf, sizeof buf);
+    for (int s = 0; s < 50; s++) step(0, mo);
+    assert_int_equal(drain(buf, sizeof buf), 0);
+    assert_true(dist >= 95);
+    close_pair();
+}
+
+static void test_framed_overload_drops_whole(void **state)
+{
+    static uint8_t all[20000];
+    int16_t mo[2];
+    size_t total = 0;
+    open_pair(LINK_FRAMED, 115200, 10.0);
+    for (int s = 0; s < 1000; s++) {
+        step(s, mo);
+        total += drain(all + total, sizeof all - total);
+    }
+    assert_true(total <= 11521);
+    assert_true(lk.st.tx_dropped > 300); /* 18,300 B/s offered, 11,520 allowed */
+    wire_decoder_t d;
+    wire_msg_t m;
+    wire_decoder_init(&d);
+    int32_t prev = -1;
+    for (size_t i = 0; i < total; i++)
+        if (wire_decode_byte(&d, all[i], &m) && m.type == WIRE_ENCODER) {
+            assert_true(m.u.encoder.left > prev); /* fresh, never a torn frame */
+            prev = m.u.encoder.left;
+        }
+    assert_int_equal(wire_stats_errors(&d.stats), 0);
+    assert_true(d.stats.frames_ok > 500);
+    close_pair();
+}
+
+static void test_handshake_and_motor(void **state)
+{
+    uint8_t buf[4096];
+    int16_t mo[2];
+    open_pair(LINK_FRAMED, 1000000, 0.1);
+    wire_msg_t cmd = { .type = WIRE_MOTOR, .u.motor = { 0, 300, -200 } };
+    send_msg(&cmd);
+    for (int s = 0; s < 5; s++) step(0, mo);
+    assert_int_equal(mo[0], 0); /* no HELLO yet: motors stay off */
+    /* the sim's HELLO went out first */
+    wire_decoder_t d;
+    wire_msg_t m;
+    wire_decoder_init(&d);
+    size_t n = drain(buf, sizeof buf);
+    int hello = 0;
+    for (size_t i = 0; i < n; i++)
+        if (wire_decode_byte(&d, buf[i], &m) && m.type == WIRE_HELLO) {
+            hello++;
+            assert_int_equal(m.u.hello.tof_range_mm, 1200);
+            assert_int_equal(m.u.hello.role, WIRE_ROLE_SIM);
+        }
+    assert_int_equal(hello, 1);
+    send_hello();
+    send_msg(&cmd);
+    step(0, mo);
+    assert_int_equal(mo[0], 300);
+    assert_int_equal(mo[1], -200);
+    /* silence: 100 ms without a message -> 0 */
+    for (int s = 0; s < 100; s++) {
+        step(0, mo);
+        drain(buf, sizeof buf);
+    }
+    assert_int_equal(mo[0], 300);
+    step(0, mo);
+    step(0, mo);
+    assert_int_equal(mo[0], 0);
+    assert_int_equal(lk.st.silences, 1);
+    send_msg(&cmd);
+    step(0, mo);
+    assert_int_equal(mo[0], 300);
+    /* garbage between frames: counted, the next command still lands */
+    static const uint8_t junk[] = { 0x13, 0x37, 0xFF, 0x00, 0x05, 0x00, 0x42, 0x00 }; /* three bad chunks */
+    assert_int_equal(write(peer, junk, sizeof junk), (ssize_t)sizeof junk);
+    cmd.u.motor.left = 77;
+    send_msg(&cmd);
+    step(0, mo);
+    assert_int_equal(mo[0], 77);
+    assert_int_equal(wire_stats_errors(&lk.dec.stats), 3);
+    /* run stop / start */
+    wire_msg_t run = { .type = WIRE_RUN, .u.flag = { 0 } };
+    send_msg(&run);
+    step(0, mo);
+    assert_int_equal(mo[0], 0);
+    run.u.flag.on = 1;
+    send_msg(&run);
+    step(0, mo);
+    assert_int_equal(mo[0], 77);
+    /* a newer protocol version: motors off */
+    wire_msg_t h = { .type = WIRE_HELLO, .u.hello = { WIRE_VERSION + 1, WIRE_ROLE_MCU, 1200, 35832, 500 } };
+    send_msg(&h);
+    step(0, mo);
+    assert_int_equal(mo[0], 0);
+    close_pair();
+}
+
+static void test_compat_manager_and_pacing(void **state)
+{
+    uint8_t b[1200];
+    int16_t mo[2];
+    open_pair(LINK_COMPAT, 115200, 10.0);
+    static const uint8_t disable[] = { 7, 3 }, enable[] = { 7, 2 }, motor[] = { 5, 0x64, 0x00, 6, 0x9C, 0xFF };
+    assert_int_equal(write(peer, disable, 2), 2);
+    assert_int_equal(step(0, mo), 0);
+    assert_int_equal(write(peer, enable, 2), 2);
+    assert_int_equal(step(0, mo), 1);
+    assert_int_equal(write(peer, motor, 6), 6);
+    step(0, mo);
+    assert_int_equal(mo[0], 100);
+    assert_int_equal(mo[1], -100);
+    /* 1,200 bytes at once: read at the baud, not faster */
+    for (size_t i = 0; i < sizeof b; i += 2) { b[i] = 7; b[i + 1] = 2; }
+    assert_int_equal(write(peer, b, sizeof b), (ssize_t)sizeof b);
+    uint64_t before = lk.st.rx_bytes;
+    step(0, mo);
+    assert_true(lk.st.rx_bytes - before <= 12);
+    for (int s = 0; s < 200; s++) step(0, mo);
+    assert_int_equal(lk.st.rx_bytes, 10 + sizeof b);
+    /* the MCU unplugged: motors off, reported */
+    close(peer);
+    peer = -1;
+    step(0, mo);
+    step(0, mo);
+    assert_int_equal(lk.connected, 0);
+    assert_int_equal(lk.st.disconnects, 1);
+    assert_int_equal(mo[0], 0);
+    close_pair();
+}
+
+/* Faults on the wire MCU -> sim: motor frames hit by drops, bit flips and
+ * garbage bursts; the link reads them at the baud and its decoder must count
+ * exactly one error per corrupted chunk between delimiters, and apply every
+ * intact command. */
+static void test_faults_through_link(void **state)
+{
+    enum { N = 400 };
+    static uint8_t clean[N * 16], bad[N * 16 * 4];
+    static size_t start[N + 1];
+    size_t len = 0, blen = 0;
+    uint64_t r = 5;
+    int16_t mo[2];
+    for (int i = 0; i < N; i++) {
+        wire_msg_t m = { .type = WIRE_MOTOR, .u.motor = { (uint32_t)i * 4000u, (int16_t)(i % 1000), (int16_t)-(i % 777) } };
+        start[i] = len;
+        len += wire_encode(&m, clean + len, 16);
+    }
+    start[N] = len;
+    for (size_t i = 0; i < len; i++) {
+        r = r * 6364136223846793005ull + 1442695040888963407ull;
+        unsigned x = (unsigned)(r >> 33) % 1000;
+        if (x < 4) continue;                                          /* drop */
+        uint8_t b = clean[i];
+        if (x < 8) b ^= (uint8_t)(1u << ((r >> 20) & 7));             /* flip */
+        bad[blen++] = b;
+        if (x < 11) for (unsigned k = (unsigned)(r >> 40) % 9; k; k--) bad[blen++] = (uint8_t)(r >> (k * 3)); /* garbage */
+    }
+    unsigned exp_ok = 0, exp_err = 0;
+    size_t cs = 0;
+    for (size_t i = 0; i < blen; i++) {
+        if (bad[i] != 0) continue;
+        size_t clen = i - cs + 1;
+        if (clen > 1) {
+            int found = 0;
+            for (int f = 0; f < N && !found; f++)
+                found = start[f + 1] - start[f] == clen && !memcmp(clean + start[f], bad + cs, clen);
+            if (found) exp_ok++;
+            else exp_err++;
+        }
+        cs = i + 1;
+    }
+    open_pair(LINK_FRAMED, 115200, 10.0);
+    send_hello();
+    step(0, mo);
+    assert_int_equal(write(peer, bad, blen), (ssize_t)blen);
+    uint8_t sink[4096];
+    for (int s = 0; s < 2000 && lk.st.rx_bytes < blen + 15; s++) {
+        step(0, mo);
+        drain(sink, sizeof sink);
+    }
+    assert_int_equal(lk.st.rx_bytes, blen + 15); /* every byte, at the baud */
+    assert_int_equal(lk.dec.stats.frames_ok, exp_ok + 1);  /* + the HELLO */
+    assert_int_equal(wire_stats_errors(&lk.dec.stats), exp_err);
+    assert_true(exp_err > 5 && exp_ok > N / 2);
+    close_pair();
+}
+
+int main(void)
+{
+    signal(SIGPIPE, SIG_IGN); /* a socket peer gone: EPIPE, as a tty gives EIO */
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_compat_budget),
+        cmocka_unit_test(test_framed_overload_drops_whole),
+        cmocka_unit_test(test_handshake_and_motor),
+        cmocka_unit_test(test_compat_manager_and_pacing),
+        cmocka_unit_test(test_faults_through_link),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,237 @@
+/* test_telem.c - the telemetry publisher in-process over memq:// (LCM's
+ * in-process provider): which messages go out on which steps, their
+ * content decoded with the generated types, lap events, the belief from
+ * hal_belief with its cost field and path; the cost field; open errors. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <lcm/lcm.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "config.h"
+#include "hal.h"
+#include "hal_sim.h"
+#include "mmlcm_belief_t.h"
+#include "mmlcm_motors_t.h"
+#include "mmlcm_pose_t.h"
+#include "mmlcm_race_event_t.h"
+#include "mmlcm_race_t.h"
+#include "mmlcm_sensors_t.h"
+#include "sim.h"
+#include "telem.h"
+
+/* What the subscribers saw. */
+static struct {
+    int pose, motors, sensors, race, events, belief;
+    int64_t pose_ut[64];
+    mmlcm_race_event_t ev[8];
+    int64_t belief_ut;
+    int belief_cell, belief_heading, belief_state, belief_ncells, path_len, path0, path_last;
+    int8_t walls[MAZE_MAX_CELLS];
+    int16_t cost[MAZE_MAX_CELLS];
+    int last_cmd0;
+    double last_x;
+} seen;
+
+static void on_pose(const lcm_recv_buf_t *rb, const char *ch, const mmlcm_pose_t *m, void *u)
+{
+    if (seen.pose < 64) seen.pose_ut[seen.pose] = m->utime;
+    seen.pose++;
+    seen.last_x = m->x_m;
+}
+static void on_motors(const lcm_recv_buf_t *rb, const char *ch, const mmlcm_motors_t *m, void *u)
+{
+    seen.motors++;
+    seen.last_cmd0 = m->command[0];
+}
+static void on_sensors(const lcm_recv_buf_t *rb, const char *ch, const mmlcm_sensors_t *m, void *u) { seen.sensors++; }
+static void on_race(const lcm_recv_buf_t *rb, const char *ch, const mmlcm_race_t *m, void *u) { seen.race++; }
+static void on_event(const lcm_recv_buf_t *rb, const char *ch, const mmlcm_race_event_t *m, void *u)
+{
+    if (seen.events < 8) seen.ev[seen.events] = *m;
+    seen.events++;
+}
+static void on_belief(const lcm_recv_buf_t *rb, const char *ch, const mmlcm_belief_t *m, void *u)
+{
+    seen.belief++;
+    seen.belief_ut = m->utime;
+    seen.belief_cell = m->cell;
+    seen.belief_heading = m->heading;
+    seen.belief_state = m->state;
+    seen.belief_ncells = m->ncells;
+    memcpy(seen.walls, m->walls, (size_t)m->ncells);
+    memcpy(seen.cost, m->cost, (size_t)m->ncells * sizeof *m->cost);
+    seen.path_len = m->path_len;
+    seen.path0 = m->path_len ? m->path[0] : -1;
+    seen.path_last = m->path_len ? m->path[m->path_len - 1] : -1;
+}
+
+static void open_maze(maze_t *m)
+{
+    maze_init(m, 4, 4); /* every interior wall unknown, goal the centre 2x2 */
+}
+
+static void drain(lcm_t *l)
+{
+    while (lcm_handle_timeout(l, 0) > 0) {
+    }
+}
+
+/* 95 steps at 100 Hz: poses at steps 10..90 and the final 95; one race
+ * state (the final one, the period being 100 steps); events from the race
+ * state; one belief with its time. */
+static void test_memq_messages(void **state)
+{
+    (void)state;
+    static maze_t m;
+    static sim_t sim;
+    static telem_t t;
+    simcfg_t cfg;
+    char err[300];
+    config_defaults(&cfg);
+    open_maze(&m);
+    assert_int_equal(sim_init(&sim, &cfg, &m, 1), 0);
+    hal_sim_attach(&sim);
+    memset(&seen, 0, sizeof seen);
+    telem_opts_t o = { "memq://", NULL, 100.0 };
+    assert_int_equal(telem_open(&t, &o, &sim, err, sizeof err), 0);
+    lcm_t *l = t.lcm;
+    mmlcm_pose_t_subscription_t *s1 = mmlcm_pose_t_subscribe(l, "MM_POSE", on_pose, NULL);
+    mmlcm_motors_t_subscription_t *s2 = mmlcm_motors_t_subscribe(l, "MM_MOTORS", on_motors, NULL);
+    mmlcm_sensors_t_subscription_t *s3 = mmlcm_sensors_t_subscribe(l, "MM_SENSORS", on_sensors, NULL);
+    mmlcm_race_t_subscription_t *s4 = mmlcm_race_t_subscribe(l, "MM_RACE", on_race, NULL);
+    mmlcm_race_event_t_subscription_t *s5 = mmlcm_race_event_t_subscribe(l, "MM_RACE_EVENT", on_event, NULL);
+    mmlcm_belief_t_subscription_t *s6 = mmlcm_belief_t_subscribe(l, "MM_BELIEF", on_belief, NULL);
+
+    static maze_t map;
+    open_maze(&map);
+    maze_set_wall(&map, 0, MAZE_NORTH, MAZE_WALL_CLOSED);
+    for (int i = 0; i < 95; i++) {
+        sim.cmd[0] = sim.cmd[1] = 300;
+        sim_step(&sim);
+        /* the robot stays in the start cell: a lap is written into the race
+         * state by hand, after the step's own race_update */
+        if (sim.step == 41) { /* a run starts */
+            sim.race.in_run = 1;
+            sim.race.started = 1;
+            sim.race.global_start_s = 0.041;
+            sim.race.run_start_s = 0.041;
+        }
+        if (sim.step == 61) { /* and ends at the goal */
+            sim.race.in_run = 0;
+            sim.race.laps[0] = (race_lap_t){ 0.0, 0.020, 0 };
+            sim.race.nlaps = 1;
+            sim.race.best = 0;
+        }
+        telem_step(&t, &sim);
+        if (sim.step == 30) hal_belief(&map, 1, MAZE_EAST, 0); /* as fw_loop would */
+        drain(l);
+    }
+    telem_finish(&t, &sim);
+    drain(l);
+
+    assert_int_equal(seen.pose, 10);
+    assert_int_equal(seen.motors, 10);
+    assert_int_equal(seen.sensors, 10);
+    assert_int_equal(seen.race, 1);
+    for (int i = 0; i < 9; i++) assert_int_equal(seen.pose_ut[i], (i + 1) * 10000);
+    assert_int_equal(seen.pose_ut[9], 95000);
+    double x, y, h;
+    world_pose(sim.world, &x, &y, &h);
+    assert_true(seen.last_x == x); /* the final pose exactly */
+    assert_int_equal(seen.last_cmd0, 300);
+
+    assert_int_equal(seen.events, 2);
+    assert_int_equal(seen.ev[0].kind, MMLCM_RACE_EVENT_T_LAP_START);
+    assert_int_equal(seen.ev[0].utime, 41000);
+    assert_int_equal(seen.ev[0].lap, 1);
+    assert_int_equal(seen.ev[1].kind, MMLCM_RACE_EVENT_T_LAP_END);
+    assert_int_equal(seen.ev[1].utime, 61000);
+    assert_true(fabs(seen.ev[1].run_s - 0.020) < 1e-12);
+    assert_true(seen.ev[1].best);
+
+    assert_int_equal(seen.belief, 1);
+    assert_int_equal(seen.belief_ut, 30000); /* the time of the hal_belief call */
+    assert_int_equal(seen.belief_cell, 1);
+    assert_int_equal(seen.belief_heading, MAZE_EAST);
+    assert_int_equal(seen.belief_ncells, 16);
+    for (int c = 0; c < 16; c++) assert_int_equal((uint8_t)seen.walls[c], map.cell[c]);
+    /* the centre 2x2 is cells 5, 6, 9, 10; cell 1 is one step from 5 */
+    assert_int_equal(seen.cost[5], 0);
+    assert_int_equal(seen.cost[1], 1);
+    assert_int_equal(seen.cost[0], 2);
+    assert_int_equal(seen.path0, 1);
+    assert_true(maze_is_goal(&map, (maze_cell_t)seen.path_last));
+    assert_int_equal(seen.path_len, 2);
+
+    mmlcm_pose_t_unsubscribe(l, s1);
+    mmlcm_motors_t_unsubscribe(l, s2);
+    mmlcm_sensors_t_unsubscribe(l, s3);
+    mmlcm_race_t_unsubscribe(l, s4);
+    mmlcm_race_event_t_unsubscribe(l, s5);
+    mmlcm_belief_t_unsubscribe(l, s6);
+    assert_int_equal(telem_close(&t, err, sizeof err), 0);
+    hal_sim_attach(NULL);
+    sim_free(&sim);
+}
+
+/* Walls known closed stop the flood; unknown walls count open. */
+static void test_cost_field(void **state)
+{
+    (void)state;
+    static maze_t m;
+    int16_t cost[MAZE_MAX_CELLS];
+    maze_init(&m, 3, 3); /* goal: the centre cell 4 */
+    telem_cost_field(&m, cost);
+    int16_t want[9] = { 2, 1, 2, 1, 0, 1, 2, 1, 2 };
+    for (int c = 0; c < 9; c++) assert_int_equal(cost[c], want[c]);
+    /* wall cell 0 in: no way out */
+    maze_set_wall(&m, 0, MAZE_NORTH, MAZE_WALL_CLOSED);
+    maze_set_wall(&m, 0, MAZE_EAST, MAZE_WALL_CLOSED);
+    /* and make the long way round for cell 1: north closed */
+    maze_set_wall(&m, 1, MAZE_NORTH, MAZE_WALL_CLOSED);
+    telem_cost_field(&m, cost);
+    assert_int_equal(cost[0], -1);
+    assert_int_equal(cost[1], 3); /* 1 -> 2 -> 5 -> 4 */
+    assert_int_equal(cost[4], 0);
+}
+
+/* Open errors: one message, nothing left open, no file created. */
+static void test_open_errors(void **state)
+{
+    (void)state;
+    static maze_t m;
+    static sim_t sim;
+    static telem_t t;
+    simcfg_t cfg;
+    char err[300], path[64];
+    config_defaults(&cfg);
+    open_maze(&m);
+    assert_int_equal(sim_init(&sim, &cfg, &m, 1), 0);
+    telem_opts_t o = { NULL, "/nonexistent-dir/x.lcmlog", 0 };
+    assert_int_equal(telem_open(&t, &o, &sim, err, sizeof err), -1);
+    assert_non_null(strstr(err, "cannot write the LCM log"));
+    assert_null(strchr(err, '\n'));
+
+    snprintf(path, sizeof path, "/tmp/test_telem_%d.lcmlog", (int)getpid());
+    telem_opts_t o2 = { "nosuch://x", path, 0 };
+    assert_int_equal(telem_open(&t, &o2, &sim, err, sizeof err), -1);
+    assert_non_null(strstr(err, "nosuch://x: cannot open the LCM URL"));
+    assert_int_equal(access(path, F_OK), -1); /* the log was not created */
+    sim_free(&sim);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_memq_messages),
+        cmocka_unit_test(test_cost_field),
+        cmocka_unit_test(test_open_errors),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

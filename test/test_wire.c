@@ -1,0 +1,385 @@
+/* test_wire.c - the wire codec: shared vectors, round trips, malformed
+ * frames, and fault injection (drops, bit flips, garbage) with the error
+ * counters checked against what the injected faults must produce. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "wire.h"
+#include "wire_vectors.h"
+
+static uint64_t rng = 1;
+static uint32_t rnd(void) /* splitmix64, deterministic */
+{
+    uint64_t z = (rng += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return (uint32_t)((z ^ (z >> 31)) >> 16);
+}
+
+static char texts[3000][WIRE_LOG_MAX + 1]; /* log text behind random messages */
+static unsigned text_next;
+
+static void random_msg(wire_msg_t *m)
+{
+    memset(m, 0, sizeof *m);
+    switch (rnd() % 7) {
+    case 0:
+        m->type = WIRE_HELLO;
+        m->u.hello.version = (uint8_t)rnd();
+        m->u.hello.role = (uint8_t)(rnd() & 1);
+        m->u.hello.tof_range_mm = (uint16_t)rnd();
+        m->u.hello.counts_per_rev_x100 = rnd();
+        m->u.hello.tick_hz = (uint16_t)rnd();
+        break;
+    case 1:
+        m->type = WIRE_MOTOR;
+        m->u.motor.t_us = rnd();
+        m->u.motor.left = (int16_t)((int)(rnd() % 2047) - 1023);
+        m->u.motor.right = (int16_t)((int)(rnd() % 2047) - 1023);
+        break;
+    case 2:
+        m->type = WIRE_ENCODER;
+        m->u.encoder.t_us = rnd();
+        m->u.encoder.left = (int32_t)(rnd() * 3u);
+        m->u.encoder.right = (int32_t)rnd() - 1000;
+        break;
+    case 3:
+        m->type = WIRE_DISTANCE;
+        m->u.distance.t_us = rnd();
+        m->u.distance.sensor = (uint8_t)(rnd() % 3);
+        m->u.distance.timeout = (uint8_t)(rnd() & 1);
+        m->u.distance.mm = (uint16_t)rnd();
+        break;
+    case 4: m->type = WIRE_SENSORS; m->u.flag.on = (uint8_t)(rnd() & 1); break;
+    case 5: m->type = WIRE_RUN; m->u.flag.on = (uint8_t)(rnd() & 1); break;
+    default:
+        m->type = WIRE_LOG;
+        m->u.log.len = (uint8_t)(rnd() % (WIRE_LOG_MAX + 1));
+        char *t = texts[text_next++ % 3000];
+        for (uint8_t i = 0; i < m->u.log.len; i++) t[i] = (char)(1 + rnd() % 255);
+        m->u.log.text = t;
+        break;
+    }
+}
+
+static void assert_same(const wire_msg_t *a, const wire_msg_t *b)
+{
+    wire_msg_t x = *a, y = *b; /* compare the used bytes only */
+    if (x.type == WIRE_LOG) {
+        assert_int_equal(x.u.log.len, y.u.log.len);
+        if (x.u.log.len) assert_memory_equal(x.u.log.text, y.u.log.text, x.u.log.len);
+        return;
+    }
+    assert_int_equal(x.type, y.type);
+    uint8_t ex[WIRE_FRAME_MAX], ey[WIRE_FRAME_MAX];
+    size_t nx = wire_encode(&x, ex, sizeof ex), ny = wire_encode(&y, ey, sizeof ey);
+    assert_true(nx > 0);
+    assert_int_equal(nx, ny);
+    assert_memory_equal(ex, ey, nx);
+}
+
+static void test_vectors(void **state)
+{
+    const char *first;
+    unsigned bad = wire_vectors_check(&first);
+    if (bad) fail_msg("%u vector checks failed, first: %s", bad, first);
+}
+
+static void test_round_trip_stream(void **state)
+{
+    enum { N = 2000 };
+    static wire_msg_t sent[N];
+    static uint8_t stream[N * WIRE_FRAME_MAX];
+    size_t len = 0;
+    rng = 7;
+    for (int i = 0; i < N; i++) {
+        random_msg(&sent[i]);
+        size_t n = wire_encode(&sent[i], stream + len, WIRE_FRAME_MAX);
+        assert_true(n > 0 && n <= WIRE_FRAME_MAX);
+        for (size_t k = 0; k < n - 1; k++) assert_int_not_equal(stream[len + k], 0);
+        assert_int_equal(stream[len + n - 1], 0);
+        len += n;
+    }
+    wire_decoder_t d;
+    wire_decoder_init(&d);
+    wire_msg_t m;
+    int got = 0;
+    for (size_t i = 0; i < len; i++)
+        if (wire_decode_byte(&d, stream[i], &m)) assert_same(&m, &sent[got++]);
+    assert_int_equal(got, N);
+    assert_int_equal(wire_stats_errors(&d.stats), 0);
+    assert_int_equal(d.stats.bytes, len);
+}
+
+static void test_encode_rejects(void **state)
+{
+    uint8_t buf[WIRE_FRAME_MAX];
+    wire_msg_t m = { .type = WIRE_MOTOR, .u.motor = { 0, 1024, 0 } };
+    assert_int_equal(wire_encode(&m, buf, sizeof buf), 0);
+    m.u.motor.left = -1024;
+    assert_int_equal(wire_encode(&m, buf, sizeof buf), 0);
+    m = (wire_msg_t){ .type = WIRE_DISTANCE, .u.distance = { 0, 3, 0, 5 } };
+    assert_int_equal(wire_encode(&m, buf, sizeof buf), 0);
+    m = (wire_msg_t){ .type = WIRE_LOG, .u.log = { WIRE_LOG_MAX + 1, "x" } };
+    assert_int_equal(wire_encode(&m, buf, sizeof buf), 0);
+    m = (wire_msg_t){ .type = WIRE_HELLO, .u.hello = { WIRE_VERSION, 2, 1200, 35832, 1000 } }; /* found by fuzz_wire */
+    assert_int_equal(wire_encode(&m, buf, sizeof buf), 0);
+    m = (wire_msg_t){ .type = 0x7F };
+    assert_int_equal(wire_encode(&m, buf, sizeof buf), 0);
+    m = (wire_msg_t){ .type = WIRE_RUN, .u.flag = { 1 } };
+    assert_int_equal(wire_encode(&m, buf, 5), 0); /* needs 6 */
+    assert_int_equal(wire_encode(&m, buf, 6), 6);
+    char longest[WIRE_LOG_MAX];
+    memset(longest, 'x', sizeof longest);
+    m = (wire_msg_t){ .type = WIRE_LOG, .u.log = { WIRE_LOG_MAX, longest } };
+    assert_int_equal(wire_encode(&m, buf, sizeof buf), WIRE_FRAME_MAX - 1); /* longest frame */
+    assert_int_equal(wire_encode(&m, buf, WIRE_FRAME_MAX - 2), 0);
+    m = (wire_msg_t){ .type = WIRE_LOG, .u.log = { 0, NULL } };
+    assert_int_equal(wire_encode(&m, buf, sizeof buf), 5); /* an empty line */
+}
+
+/* a frame with a valid CRC around arbitrary raw bytes (type + payload) */
+static size_t frame_raw(const uint8_t *raw, size_t n, uint8_t *out)
+{
+    uint8_t r[256];
+    memcpy(r, raw, n);
+    uint16_t c = wire_crc16(r, n);
+    r[n] = (uint8_t)c;
+    r[n + 1] = (uint8_t)(c >> 8);
+    n += 2;
+    size_t code_at = 0, o = 1;
+    uint8_t code = 1;
+    for (size_t i = 0; i < n; i++) {
+        if (r[i] == 0) { out[code_at] = code; code_at = o++; code = 1; }
+        else { out[o++] = r[i]; code++; }
+    }
+    out[code_at] = code;
+    out[o++] = 0;
+    return o;
+}
+
+static wire_stats_t feed(const uint8_t *b, size_t n, int *ok)
+{
+    wire_decoder_t d;
+    wire_msg_t m;
+    wire_decoder_init(&d);
+    *ok = 0;
+    for (size_t i = 0; i < n; i++) *ok += wire_decode_byte(&d, b[i], &m);
+    return d.stats;
+}
+
+static void test_malformed_frames(void **state)
+{
+    uint8_t f[300];
+    int ok;
+    wire_stats_t s;
+    static const uint8_t unknown[] = { 0x42, 1, 2 }, short_motor[] = { WIRE_MOTOR, 1, 2, 3 },
+                         big_motor[] = { WIRE_MOTOR, 0, 0, 0, 0, 0x00, 0x04, 0, 0 }, /* left 1024 */
+                         bad_sensor[] = { WIRE_DISTANCE, 0, 0, 0, 0, 3, 0, 1, 0 },
+                         bad_flag[] = { WIRE_RUN, 2 }, bad_role[] = { WIRE_HELLO, 1, 2, 0, 0, 0, 0, 0, 0, 0, 0 };
+    s = feed(f, frame_raw(unknown, sizeof unknown, f), &ok);
+    assert_int_equal(s.unknown, 1);
+    assert_int_equal(ok, 0);
+    s = feed(f, frame_raw(short_motor, sizeof short_motor, f), &ok);
+    assert_int_equal(s.length, 1);
+    s = feed(f, frame_raw(big_motor, sizeof big_motor, f), &ok);
+    assert_int_equal(s.value, 1);
+    s = feed(f, frame_raw(bad_sensor, sizeof bad_sensor, f), &ok);
+    assert_int_equal(s.value, 1);
+    s = feed(f, frame_raw(bad_flag, sizeof bad_flag, f), &ok);
+    assert_int_equal(s.value, 1);
+    s = feed(f, frame_raw(bad_role, sizeof bad_role, f), &ok);
+    assert_int_equal(s.value, 1);
+    /* too short to hold a type and a CRC */
+    static const uint8_t tiny[] = { 0x02, 0x07, 0x00 };
+    s = feed(tiny, sizeof tiny, &ok);
+    assert_int_equal(s.length, 1);
+    /* a COBS code pointing past the end */
+    static const uint8_t past[] = { 0x09, 0x01, 0x02, 0x00 };
+    s = feed(past, sizeof past, &ok);
+    assert_int_equal(s.cobs, 1);
+    /* idle delimiters are not errors */
+    static const uint8_t idle[] = { 0, 0, 0 };
+    s = feed(idle, sizeof idle, &ok);
+    assert_int_equal(wire_stats_errors(&s), 0);
+    /* 200 non-zero bytes: one overflow, then the next frame decodes */
+    memset(f, 0x55, 200);
+    f[200] = 0;
+    wire_msg_t m = { .type = WIRE_SENSORS, .u.flag = { 1 } };
+    size_t n = wire_encode(&m, f + 201, 99);
+    s = feed(f, 201 + n, &ok);
+    assert_int_equal(s.overflow, 1);
+    assert_int_equal(wire_stats_errors(&s), 1);
+    assert_int_equal(ok, 1);
+}
+
+/* Fault injection: a stream of random frames hit by drops, bit flips and
+ * garbage bursts. Whatever happens, decoding must see exactly the chunks
+ * between delimiters: an untouched frame decodes, every other non-empty
+ * chunk is one counted error. */
+static void fault_run(uint64_t seed, int n_frames, int per_mille)
+{
+    enum { MAXN = 3000 };
+    static uint8_t clean[MAXN * WIRE_FRAME_MAX], bad[MAXN * WIRE_FRAME_MAX * 2];
+    static size_t start[MAXN + 1];
+    static wire_msg_t sent[MAXN];
+    size_t len = 0, blen = 0;
+    rng = seed;
+    for (int i = 0; i < n_frames; i++) {
+        random_msg(&sent[i]);
+        start[i] = len;
+        len += wire_encode(&sent[i], clean + len, WIRE_FRAME_MAX);
+    }
+    start[n_frames] = len;
+    unsigned drops = 0, flips = 0, bursts = 0;
+    for (size_t i = 0; i < len; i++) {
+        uint32_t r = rnd() % 1000;
+        if ((int)r < per_mille / 3) { drops++; continue; }
+        uint8_t b = clean[i];
+        if ((int)r < 2 * per_mille / 3) { b ^= (uint8_t)(1u << (rnd() % 8)); flips++; }
+        bad[blen++] = b;
+        if ((int)r >= 2 * per_mille / 3 && (int)r < per_mille) {
+            bursts++;
+            for (uint32_t k = rnd() % 40; k > 0; k--) bad[blen++] = (uint8_t)rnd();
+        }
+    }
+    assert_true(drops > 0 && flips > 0 && bursts > 0);
+    /* expected: split at delimiters; a chunk equal to a whole clean frame decodes */
+    unsigned exp_ok = 0, exp_err = 0;
+    size_t cs = 0;
+    static wire_msg_t expect[MAXN];
+    for (size_t i = 0; i < blen; i++) {
+        if (bad[i] != 0) continue;
+        size_t clen = i - cs + 1;
+        if (clen > 1) {
+            int found = -1;
+            for (int f = 0; f < n_frames && found < 0; f++) /* a clean frame is unique: it carries random data */
+                if (start[f + 1] - start[f] == clen && !memcmp(clean + start[f], bad + cs, clen)) found = f;
+            if (found >= 0) expect[exp_ok++] = sent[found];
+            else exp_err++;
+        }
+        cs = i + 1;
+    }
+    wire_decoder_t d;
+    wire_decoder_init(&d);
+    wire_msg_t m;
+    unsigned got = 0;
+    for (size_t i = 0; i < blen; i++)
+        if (wire_decode_byte(&d, bad[i], &m)) {
+            assert_true(got < exp_ok);
+            assert_same(&m, &expect[got]);
+            got++;
+        }
+    assert_int_equal(got, exp_ok);
+    assert_int_equal(d.stats.frames_ok, exp_ok);
+    assert_int_equal(wire_stats_errors(&d.stats), exp_err);
+    assert_true(exp_ok > (unsigned)n_frames / 4); /* the stream recovered again and again */
+}
+
+static void test_faults_light(void **state) { fault_run(11, 3000, 3); }
+static void test_faults_heavy(void **state) { fault_run(12, 3000, 30); }
+
+static void test_pure_garbage(void **state)
+{
+    wire_decoder_t d;
+    wire_compat_rx_t c;
+    wire_msg_t m;
+    wire_decoder_init(&d);
+    wire_compat_rx_init(&c, 1200);
+    rng = 99;
+    for (int i = 0; i < 200000; i++) {
+        uint8_t b = (uint8_t)rnd();
+        wire_decode_byte(&d, b, &m);
+        wire_compat_decode_byte(&c, b, &m);
+    }
+    assert_int_equal(d.stats.bytes, 200000);
+    assert_int_equal(d.stats.frames_ok, 0); /* CRC-16 lets through ~1 in 65536 chunks; none with this seed */
+    assert_true(wire_stats_errors(&d.stats) > 0);
+    /* compat has no checksum: garbage decodes; it must only not crash or run out of bounds */
+    assert_int_equal(c.stats.bytes, 200000);
+    assert_true(c.stats.unknown > 0);
+}
+
+static void test_compat_details(void **state)
+{
+    wire_compat_tx_t tx;
+    wire_compat_rx_t rx;
+    uint8_t b[128];
+    wire_msg_t m = { .type = WIRE_ENCODER, .u.encoder = { 0, 40000, -40000 } }, out;
+    wire_compat_tx_init(&tx, 1200);
+    wire_compat_rx_init(&rx, 1200);
+    /* a delta beyond int16 goes in two sends, nothing lost */
+    size_t n = wire_compat_encode(&tx, &m, b, sizeof b);
+    n += wire_compat_encode(&tx, &m, b + n, sizeof b - n);
+    assert_int_equal(n, 12);
+    int k = 0;
+    for (size_t i = 0; i < n; i++) k += wire_compat_decode_byte(&rx, b[i], &out);
+    assert_int_equal(k, 4);
+    assert_int_equal(out.u.encoder.left, 40000);
+    assert_int_equal(out.u.encoder.right, -40000);
+    /* no room: state unchanged */
+    m.u.encoder.left = 40010;
+    assert_int_equal(wire_compat_encode(&tx, &m, b, 5), 0);
+    assert_int_equal(tx.enc_sent[0], 40000);
+    /* distance scaling: range and beyond -> 65534, not the timeout code */
+    m = (wire_msg_t){ .type = WIRE_DISTANCE, .u.distance = { 0, WIRE_SENSOR_LEFT, 0, 5000 } };
+    assert_int_equal(wire_compat_encode(&tx, &m, b, sizeof b), 3);
+    assert_int_equal(b[1] | b[2] << 8, 65534);
+    /* motor clamping on receive (the paper clamps to +-1023) */
+    static const uint8_t big[] = { 5, 0x10, 0x27, 6, 0xF0, 0xD8 }; /* +10000, -10000 */
+    k = 0;
+    for (size_t i = 0; i < sizeof big; i++) k += wire_compat_decode_byte(&rx, big[i], &out);
+    assert_int_equal(k, 2);
+    assert_int_equal(out.u.motor.left, 1023);
+    assert_int_equal(out.u.motor.right, -1023);
+    /* unknown IDs and manager values are counted and skipped */
+    static const uint8_t junk[] = { 9, 200, 7, 9, 7, 1 };
+    k = 0;
+    for (size_t i = 0; i < sizeof junk; i++) k += wire_compat_decode_byte(&rx, junk[i], &out);
+    assert_int_equal(k, 1);
+    assert_int_equal(out.type, WIRE_RUN);
+    assert_int_equal(rx.stats.unknown, 2);
+    assert_int_equal(rx.stats.value, 1);
+    /* an overlong log line is counted and dropped */
+    b[0] = 8;
+    memset(b + 1, 'a', 100);
+    k = 0;
+    for (size_t i = 0; i < 1 + WIRE_LOG_MAX + 1; i++) k += wire_compat_decode_byte(&rx, b[i], &out);
+    assert_int_equal(k, 0);
+    assert_int_equal(rx.stats.overflow, 1);
+    /* the longest log line passes */
+    char zs[WIRE_LOG_MAX];
+    memset(zs, 'z', sizeof zs);
+    m = (wire_msg_t){ .type = WIRE_LOG, .u.log = { WIRE_LOG_MAX, zs } };
+    n = wire_compat_encode(&tx, &m, b, sizeof b);
+    assert_int_equal(n, WIRE_LOG_MAX + 2);
+    wire_compat_rx_init(&rx, 1200);
+    k = 0;
+    for (size_t i = 0; i < n; i++) k += wire_compat_decode_byte(&rx, b[i], &out);
+    assert_int_equal(k, 1);
+    assert_int_equal(out.u.log.len, WIRE_LOG_MAX);
+    assert_int_equal(strlen(out.u.log.text), WIRE_LOG_MAX);
+    /* hello has no compat form */
+    m = (wire_msg_t){ .type = WIRE_HELLO };
+    assert_int_equal(wire_compat_encode(&tx, &m, b, sizeof b), 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_vectors),
+        cmocka_unit_test(test_round_trip_stream),
+        cmocka_unit_test(test_encode_rejects),
+        cmocka_unit_test(test_malformed_frames),
+        cmocka_unit_test(test_faults_light),
+        cmocka_unit_test(test_faults_heavy),
+        cmocka_unit_test(test_pure_garbage),
+        cmocka_unit_test(test_compat_details),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,229 @@
+/* mmlog - read an LCM log (mmsim --lcm-log, lcm-logger): per-channel
+ * summary, or one channel's messages decoded as JSON lines.
+ *
+ *   mmlog [--json] LOG           count, rate, first and last time per channel
+ *   mmlog --dump CHANNEL LOG     decoded mmlcm messages, one JSON object a line
+ *
+ * Times are the messages' utime (simulation time) for the mmlcm channels,
+ * the log's event timestamp for any other channel. A message of an mmlcm
+ * channel that does not decode is counted as bad.
+ * Exit codes: 0 ok, 2 bad input (unreadable, not an LCM log, bad messages,
+ * a truncated or corrupt event: what came before it is still summed up). */
+#include <jansson.h>
+#include <lcm/eventlog.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "mmlcm_belief_t.h"
+#include "mmlcm_link_t.h"
+#include "mmlcm_motors_t.h"
+#include "mmlcm_pose_t.h"
+#include "mmlcm_race_event_t.h"
+#include "mmlcm_race_t.h"
+#include "mmlcm_sensors_t.h"
+
+#define MAX_CHANNELS 256
+
+static json_t *darr(const double *v, int n)
+{
+    json_t *a = json_array();
+    for (int i = 0; i < n; i++) json_array_append_new(a, json_real(v[i]));
+    return a;
+}
+
+static json_t *iarr16(const int16_t *v, int n)
+{
+    json_t *a = json_array();
+    for (int i = 0; i < n; i++) json_array_append_new(a, json_integer(v[i]));
+    return a;
+}
+
+/* Decode one message of a known channel: its utime in *ut and, if j is not
+ * NULL, the message as JSON. Returns 0, -1 if it does not decode, 1 if the
+ * channel is not an mmlcm one. */
+static int decode(const char *ch, const void *data, int len, int64_t *ut, json_t **j)
+{
+    json_t *o = NULL;
+    if (!strcmp(ch, "MM_POSE")) {
+        mmlcm_pose_t m;
+        if (mmlcm_pose_t_decode(data, 0, len, &m) != len) return -1;
+        *ut = m.utime;
+        if (j) o = json_pack("{s:I, s:f, s:f, s:f, s:f, s:f}", "utime", (json_int_t)m.utime, "x_m", m.x_m, "y_m", m.y_m,
+                             "heading_rad", m.heading_rad, "v_m_s", m.v_m_s, "omega_rad_s", m.omega_rad_s);
+    } else if (!strcmp(ch, "MM_MOTORS")) {
+        mmlcm_motors_t m;
+        if (mmlcm_motors_t_decode(data, 0, len, &m) != len) return -1;
+        *ut = m.utime;
+        if (j) o = json_pack("{s:I, s:o, s:o, s:o, s:o, s:o}", "utime", (json_int_t)m.utime, "command",
+                             iarr16(m.command, 2), "voltage_v", darr(m.voltage_v, 2), "current_a", darr(m.current_a, 2),
+                             "wheel_rad_s", darr(m.wheel_rad_s, 2), "torque_nm", darr(m.torque_nm, 2));
+    } else if (!strcmp(ch, "MM_SENSORS")) {
+        mmlcm_sensors_t m;
+        if (mmlcm_sensors_t_decode(data, 0, len, &m) != len) return -1;
+        *ut = m.utime;
+        if (j) {
+            json_t *to = json_array();
+            for (int i = 0; i < 3; i++) json_array_append_new(to, json_boolean(m.tof_timeout[i]));
+            o = json_pack("{s:I, s:[i,i], s:o, s:o, s:o}", "utime", (json_int_t)m.utime, "encoder", (int)m.encoder[0],
+                          (int)m.encoder[1], "tof_mm", iarr16(m.tof_mm, 3), "tof_timeout", to, "tof_true_m",
+                          darr(m.tof_true_m, 3));
+        }
+    } else if (!strcmp(ch, "MM_RACE")) {
+        mmlcm_race_t m;
+        if (mmlcm_race_t_decode(data, 0, len, &m) != len) return -1;
+        *ut = m.utime;
+        if (j) o = json_pack("{s:I, s:b, s:f, s:b, s:f, s:b, s:i, s:i, s:f}", "utime", (json_int_t)m.utime, "started",
+                             m.started, "global_s", m.global_s, "in_run", m.in_run, "lap_s", m.lap_s, "over_time",
+                             m.over_time, "laps", (int)m.laps, "best_lap", (int)m.best_lap, "best_run_s", m.best_run_s);
+    } else if (!strcmp(ch, "MM_RACE_EVENT")) {
+        mmlcm_race_event_t m;
+        if (mmlcm_race_event_t_decode(data, 0, len, &m) != len) return -1;
+        *ut = m.utime;
+        if (j) o = json_pack("{s:I, s:s, s:i, s:f, s:f, s:f, s:b, s:b}", "utime", (json_int_t)m.utime, "kind",
+                             m.kind == MMLCM_RACE_EVENT_T_LAP_START ? "lap_start"
+                             : m.kind == MMLCM_RACE_EVENT_T_LAP_END ? "lap_end" : "unknown",
+                             "lap", (int)m.lap, "start_s", m.start_s, "end_s", m.end_s, "run_s", m.run_s, "over_time",
+                             m.over_time, "best", m.best);
+    } else if (!strcmp(ch, "MM_BELIEF")) {
+        mmlcm_belief_t m;
+        if (mmlcm_belief_t_decode(data, 0, len, &m) != len) return -1;
+        *ut = m.utime;
+        if (j) {
+            json_t *w = json_array();
+            for (int i = 0; i < m.ncells; i++) json_array_append_new(w, json_integer((uint8_t)m.walls[i]));
+            o = json_pack("{s:I, s:i, s:i, s:o, s:o, s:i, s:i, s:i, s:o}", "utime", (json_int_t)m.utime, "width",
+                          (int)(uint8_t)m.width, "height", (int)(uint8_t)m.height, "walls", w, "cost",
+                          iarr16(m.cost, m.ncells), "cell", (int)m.cell, "heading", (int)m.heading, "state",
+                          (int)m.state, "path", iarr16(m.path, m.path_len));
+        }
+        mmlcm_belief_t_decode_cleanup(&m);
+    } else if (!strcmp(ch, "MM_LINK")) {
+        mmlcm_link_t m;
+        if (mmlcm_link_t_decode(data, 0, len, &m) != len) return -1;
+        *ut = m.utime;
+        if (j) o = json_pack("{s:I, s:I, s:I, s:f, s:f, s:i}", "utime", (json_int_t)m.utime, "bytes_to_mcu",
+                             (json_int_t)m.bytes_to_mcu, "bytes_from_mcu", (json_int_t)m.bytes_from_mcu, "util_to_mcu",
+                             m.util_to_mcu, "util_from_mcu", m.util_from_mcu, "frame_errors", (int)m.frame_errors);
+    } else {
+        return 1;
+    }
+    if (j) *j = o;
+    return 0;
+}
+
+typedef struct {
+    char *name;
+    long count, bad;
+    int64_t first_us, last_us;
+} chan_t;
+
+static int usage(void)
+{
+    fputs("usage: mmlog [--json] LOG\n"
+          "       mmlog --dump CHANNEL LOG\n"
+          "Per-channel count, rate and first/last time of an LCM log, or one channel's mmlcm messages as JSON lines.\n",
+          stderr);
+    return 2;
+}
+
+int main(int argc, char **argv)
+{
+    int as_json = 0;
+    const char *dump = NULL, *path = NULL;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--json")) as_json = 1;
+        else if (!strcmp(argv[i], "--dump") && i + 1 < argc) dump = argv[++i];
+        else if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return usage(), 0;
+        else if (argv[i][0] == '-' || path) {
+            fprintf(stderr, "mmlog: unexpected argument '%s' (try 'mmlog --help')\n", argv[i]);
+            return 2;
+        } else path = argv[i];
+    }
+    if (!path) return usage();
+    struct stat st;
+    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode)) {
+        fprintf(stderr, "%s: cannot read: not a regular file\n", path);
+        return 2;
+    }
+    lcm_eventlog_t *log = lcm_eventlog_create(path, "r");
+    if (!log) {
+        fprintf(stderr, "%s: cannot read\n", path);
+        return 2;
+    }
+    static chan_t ch[MAX_CHANNELS];
+    int nch = 0, rc = 0;
+    long events = 0, good_end = 0; /* byte after the last whole event */
+    lcm_eventlog_event_t *ev;
+    while ((ev = lcm_eventlog_read_next_event(log)) != NULL) {
+        events++;
+        good_end = ftell(log->f);
+        int64_t ut = ev->timestamp;
+        json_t *j = NULL;
+        int d = decode(ev->channel, ev->data, ev->datalen, &ut, dump && !strcmp(dump, ev->channel) ? &j : NULL);
+        if (j) {
+            char *s = json_dumps(j, JSON_COMPACT | JSON_REAL_PRECISION(17));
+            if (s) puts(s);
+            free(s);
+            json_decref(j);
+        }
+        int k = 0;
+        while (k < nch && strcmp(ch[k].name, ev->channel)) k++;
+        if (k == nch) {
+            if (nch == MAX_CHANNELS) {
+                fprintf(stderr, "%s: more than %d channels\n", path, MAX_CHANNELS);
+                lcm_eventlog_free_event(ev);
+                rc = 2;
+                break;
+            }
+            ch[nch].name = strdup(ev->channel);
+            ch[nch].first_us = ut;
+            nch++;
+        }
+        if (d < 0) {
+            ch[k].bad++;
+        } else {
+            if (ch[k].count == 0) ch[k].first_us = ut;
+            ch[k].count++;
+            ch[k].last_us = ut;
+        }
+        lcm_eventlog_free_event(ev);
+    }
+    lcm_eventlog_destroy(log);
+    if (events == 0 && st.st_size > 0) {
+        fprintf(stderr, "%s: not an LCM log (no event found)\n", path);
+        return 2;
+    }
+    if (rc == 0 && good_end < (long)st.st_size) {
+        fprintf(stderr, "%s: truncated or corrupt event at byte %ld of %lld (summary of the %ld events before it)\n",
+                path, good_end, (long long)st.st_size, events);
+        rc = 2;
+    }
+    json_t *out = json_object();
+    if (!dump && !as_json) printf("%-16s %8s %10s %12s %12s %6s\n", "channel", "count", "rate_hz", "first_s", "last_s", "bad");
+    for (int k = 0; k < nch; k++) {
+        chan_t *c = &ch[k];
+        double first = c->first_us * 1e-6, last = c->last_us * 1e-6;
+        double rate = c->count > 1 && last > first ? (c->count - 1) / (last - first) : 0.0;
+        if (c->bad) {
+            fprintf(stderr, "%s: %s: %ld message%s do not decode as mmlcm types\n", path, c->name, c->bad,
+                    c->bad == 1 ? "" : "s");
+            rc = 2;
+        }
+        if (as_json)
+            json_object_set_new(out, c->name, json_pack("{s:I, s:f, s:f, s:f, s:I}", "count", (json_int_t)c->count,
+                                                        "rate_hz", rate, "first_s", first, "last_s", last, "bad",
+                                                        (json_int_t)c->bad));
+        else if (!dump)
+            printf("%-16s %8ld %10.3f %12.6f %12.6f %6ld\n", c->name, c->count, rate, first, last, c->bad);
+        free(c->name);
+    }
+    if (as_json && !dump) {
+        char *s = json_dumps(out, JSON_COMPACT | JSON_SORT_KEYS | JSON_REAL_PRECISION(17));
+        if (s) puts(s);
+        free(s);
+    }
+    json_decref(out);
+    return rc;
+}
