@@ -6,9 +6,7 @@ set -u
 S=${MMSIM:-build/mmsim}
 B=${BUILD:-build}
 T=$(mktemp -d); trap 'rm -rf "$T"; [ -n "${SIMPID:-}" ] && kill "$SIMPID" 2>/dev/null' EXIT
-fails=0
-ok()  { echo "ok: $1"; }
-bad() { echo "FAILED: $1"; fails=$((fails+1)); }
+ONE_ERROR_LINE=1; . "$(dirname "$0")/lib.sh"
 
 # the codec on a 16-bit-int AVR: same vectors as the host test
 if command -v simavr >/dev/null && [ -f "$B/avr/wire_selftest.elf" ]; then
@@ -27,10 +25,6 @@ else
 fi
 
 # flag and device errors: 2 for bad flags, 3 for a device that fails
-want_rc() { local want=$1 desc=$2; shift 2
-  "$@" >"$T/out" 2>"$T/err"; local rc=$?
-  if [ $rc -eq "$want" ]; then ok "$desc"; else bad "$desc: exit $rc, want $want"; head -3 "$T/err"; fi
-  [ "$(wc -l <"$T/err")" -le 1 ] || bad "$desc: more than one error line: $(cat "$T/err")"; }
 M=mazes/gen-5x5-s1.txt
 want_rc 2 "bad baud" "$S" --maze $M --pty --baud 9
 want_rc 2 "baud too high" "$S" --maze $M --pty --baud 12000001

@@ -7,14 +7,8 @@ set -u
 S=${MMSIM:-build/mmsim}
 L=${MMLOG:-build/mmlog}
 T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-fails=0
-ok()  { echo "ok: $1"; }
-bad() { echo "FAILED: $1"; fails=$((fails+1)); }
-want_rc() { local want=$1 desc=$2; shift 2
-  "$@" >"$T/out" 2>"$T/err"; local rc=$?
-  if [ $rc -eq "$want" ]; then ok "$desc"; else bad "$desc: exit $rc, want $want"; head -5 "$T/err"; fi; }
+. "$(dirname "$0")/lib.sh"
 one_line() { [ "$(wc -l <"$T/err")" -eq 1 ] && ok "$1: one error line" || bad "$1: error lines: $(cat "$T/err")"; }
-strip() { python3 -c "import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1]); d.pop('wall_time_s'); d.pop('real_time_factor'); print(json.dumps(d, sort_keys=True))" "$1"; }
 
 # A firmware contest (search, then speed runs) on 5x5 with the default rate.
 M=mazes/gen-5x5-s1.txt

@@ -5,14 +5,7 @@ set -u
 M=${MMMAZE:-build/mmmaze}
 DB=${SHARED:-../shared}/mazes
 T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-fails=0
-ok()   { echo "ok: $1"; }
-bad()  { echo "FAILED: $1"; fails=$((fails+1)); }
-want_rc() { # want_rc RC DESC cmd...
-  local want=$1 desc=$2; shift 2
-  "$@" >"$T/out" 2>"$T/err"; local rc=$?
-  if [ $rc -eq "$want" ]; then ok "$desc"; else bad "$desc: exit $rc, want $want"; cat "$T/err"; fi
-}
+. "$(dirname "$0")/lib.sh"
 json() { python3 -c "import json,sys; d=json.load(open('$T/out')); print($1)"; }
 
 # gen: deterministic, valid, different seeds differ

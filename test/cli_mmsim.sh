@@ -4,19 +4,13 @@
 set -u
 S=${MMSIM:-build/mmsim}
 T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-fails=0
-ok()  { echo "ok: $1"; }
-bad() { echo "FAILED: $1"; fails=$((fails+1)); }
-want_rc() { local want=$1 desc=$2; shift 2
-  "$@" >"$T/out" 2>"$T/err"; local rc=$?
-  if [ $rc -eq "$want" ]; then ok "$desc"; else bad "$desc: exit $rc, want $want"; head -5 "$T/err"; fi; }
+. "$(dirname "$0")/lib.sh"
 py() { python3 -c "import json,sys; d=json.loads(open('$T/out').read().splitlines()[-1]); print($1)"; }
 
 want_rc 0 "run 8x8 json" "$S" --maze mazes/gen-8x8-s1.txt --runs 2 --json --seed 5
 [ "$(py "sorted(d.keys())")" = "['best_run_s', 'collisions', 'config_hash', 'driver', 'exit_reason', 'final_pose', 'first_run_s', 'laps', 'maze', 'reached_goal', 'real_time_factor', 'seed', 'sim_time_s', 'wall_time_s']" ] && ok "json keys" || bad "json keys: $(cat "$T/out")"
 [ "$(py "(d['reached_goal'], d['collisions'], len(d['laps']), d['exit_reason'], d['seed'])")" = "(True, 0, 2, 'done', 5)" ] && ok "two laps, no contact" || bad "laps: $(cat "$T/out")"
 [ "$(py "all(abs(l['run_s'] - (l['end_s'] - l['start_s'])) < 0.0015 for l in d['laps']) and d['best_run_s'] == min(l['run_s'] for l in d['laps'])")" = True ] && ok "lap arithmetic" || bad "lap arithmetic"
-strip() { python3 -c "import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1]); d.pop('wall_time_s'); d.pop('real_time_factor'); print(json.dumps(d, sort_keys=True))" "$1"; }
 cp "$T/out" "$T/a"; "$S" --maze mazes/gen-8x8-s1.txt --runs 2 --json --seed 5 >"$T/b"
 [ "$(strip "$T/a")" = "$(strip "$T/b")" ] && ok "deterministic" || bad "deterministic"
 

@@ -11,13 +11,7 @@ set -u
 S=${MMSIM:-build/mmsim}
 B=${BUILD:-build}
 T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-fails=0
-ok()  { echo "ok: $1"; }
-bad() { echo "FAILED: $1"; fails=$((fails+1)); }
-want_rc() { local want=$1 desc=$2; shift 2
-  "$@" >"$T/out" 2>"$T/err"; local rc=$?
-  if [ $rc -eq "$want" ]; then ok "$desc"; else bad "$desc: exit $rc, want $want"; head -3 "$T/err"; fi
-  case " $* " in *" --verbose "*) ;; *) [ "$(wc -l <"$T/err")" -le 1 ] || bad "$desc: more than one error line: $(cat "$T/err")" ;; esac; }
+ONE_ERROR_LINE=1; . "$(dirname "$0")/lib.sh"
 M=mazes/gen-5x5-s1.txt
 MOUSE=$B/arduino/mega2560/Mouse-5x5.elf
 WALL=$B/arduino/uno/DriveToWall.elf

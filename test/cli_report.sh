@@ -6,9 +6,7 @@ set -u
 S=${MMSIM:-build/mmsim}
 P="python3 test/pngcheck.py"
 T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-fails=0
-ok()  { echo "ok: $1"; }
-bad() { echo "FAILED: $1"; fails=$((fails+1)); }
+. "$(dirname "$0")/lib.sh"
 
 # scripted driver (fast): no map of its own, so true walls only
 "$S" --maze mazes/gen-5x5-s1.txt --driver scripted --runs 1 --json --report "$T/run.png" >"$T/out" 2>"$T/err"
@@ -36,7 +34,6 @@ learned=$($P "$T/fw" near:202020:0)
 # recording changes nothing in the run
 "$S" --maze mazes/gen-5x5-s1.txt --driver firmware --json >"$T/a" 2>/dev/null
 "$S" --maze mazes/gen-5x5-s1.txt --driver firmware --json --report "$T/again.png" >"$T/b" 2>/dev/null
-strip() { python3 -c "import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1]); d.pop('wall_time_s'); d.pop('real_time_factor'); print(json.dumps(d, sort_keys=True))" "$1"; }
 [ "$(strip "$T/a")" = "$(strip "$T/b")" ] && ok "same run with and without --report" || bad "report changed the run"
 
 # errors: one line, exit 2, before running; nothing written

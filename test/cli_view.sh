@@ -11,9 +11,7 @@ T=$(mktemp -d)
 XPID=
 cleanup() { [ -n "$XPID" ] && kill "$XPID" 2>/dev/null; rm -rf "$T"; }
 trap cleanup EXIT
-fails=0
-ok()  { echo "ok: $1"; }
-bad() { echo "FAILED: $1"; fails=$((fails+1)); }
+. "$(dirname "$0")/lib.sh"
 
 command -v Xvfb >/dev/null || { echo "SKIP cli_view.sh: Xvfb not installed"; exit 77; }
 Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$T/dpy" 2>"$T/xvfb.err" &
