@@ -242,6 +242,14 @@ static void start_smooth(void)
     waiting = WAIT_SMOOTH;
 }
 
+/* On the straight before a smooth turn: align on the wall ahead (the turn
+ * starts the smooth-turn offset before that cell's centre), turn at its end. */
+static void approach_turn(void)
+{
+    if (wall_ahead) align_to_front_wall(smooth_offset_mm);
+    if (!mo.fwd.active) start_smooth();
+}
+
 /* A turn on the spot; a U-turn is two left quarter turns with a stop
  * between, facing the side wall of the cell, where the front sensor puts
  * the robot back on the cell's centre line (7 mm of clearance for the body's
@@ -320,8 +328,7 @@ static void search_step(void)
     /* WAIT_MOVE */
     centring();
     if (turn_pending) {
-        if (wall_ahead) align_to_front_wall(smooth_offset_mm);
-        if (!mo.fwd.active) start_smooth();
+        approach_turn();
         return;
     }
     float left = profile_remaining(&mo.fwd);
@@ -439,13 +446,11 @@ static void run_step(int to_goal)
         return;
     }
     if (waiting == WAIT_MOVE) {
+        centring();
         if (turn_pending) {
-            centring();
-            if (wall_ahead) align_to_front_wall(smooth_offset_mm);
-            if (!mo.fwd.active) start_smooth();
+            approach_turn();
             return;
         }
-        centring();
         if (wall_ahead) align_to_front_wall(0);
         if (motion_busy(&mo)) return;
         no_centring();
