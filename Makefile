@@ -40,7 +40,7 @@ WRAP_test_firmware := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros -Wl,--wrap=hal_mo
 # Extra sources a test links (shared test vectors).
 EXTRA_test_wire := test/wire_vectors.c
 
-.PHONY: all deps test sim bench fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay
+.PHONY: all deps test test-run sim sim-run bench bench-run fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay
 all: tools
 
 deps:
@@ -88,7 +88,11 @@ $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
 
-test: deps $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
+# deps first, then a fresh make: on a new machine the packages (and the Arduino
+# core's files that the wildcards below list) only exist once deps has run.
+test: deps
+	@$(MAKE) --no-print-directory test-run
+test-run: $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
 	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf
 	@MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim MMLOG=$(B)/san-tools/mmlog LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
@@ -175,7 +179,9 @@ MAZE ?= mazes/gen-16x16-s1.txt
 SEED ?= 1
 DRIVER ?= firmware
 # GUI=1: the same run live in the 3D viewer at x8 (a whole contest in ~75 s)
-sim: deps $(B)/mmsim
+sim: deps
+	@$(MAKE) --no-print-directory sim-run
+sim-run: $(B)/mmsim
 	$(B)/mmsim --maze $(MAZE) --seed $(SEED) --driver $(DRIVER) $(if $(GUI),--gui --speed 8)
 
 # ---- LCM tools: the spy on a live URL or a log, a log replayed in real time ----
@@ -190,7 +196,9 @@ replay:
 	lcm-logplayer --speed=$(SPEED) $(if $(LCM_URL),--lcm-url='$(LCM_URL)') $(LOG)
 
 # ---- benchmarks ----
-bench: deps $(B)/mmmaze $(B)/mmsim $(B)/bench_flood $(B)/simavr_cycles $(B)/avr/flood0.elf $(B)/avr/flood10.elf \
+bench: deps
+	@$(MAKE) --no-print-directory bench-run
+bench-run: $(B)/mmmaze $(B)/mmsim $(B)/bench_flood $(B)/simavr_cycles $(B)/avr/flood0.elf $(B)/avr/flood10.elf \
 	$(B)/avr/tick0.elf $(B)/avr/tick100.elf
 	bash bench/run.sh
 $(B)/simavr_cycles: bench/simavr_cycles.c | deps
