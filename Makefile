@@ -29,7 +29,7 @@ JAVA_CP   := /usr/share/java/lcm.jar:/usr/share/java/jchart2d.jar:$(LCM_JAR)
 FW_SRC   := $(wildcard firmware/*.c)
 HOST_SRC := $(wildcard sim/*.c) hal/sim/hal_sim.c hal/wire/wire.c $(LCM_C)
 LIB_SRC  := $(FW_SRC) $(HOST_SRC)
-TOOLS    := mmmaze mmsim mmlog
+TOOLS    := mmmaze mmsim mmlog mmview
 TEST_SRC := $(wildcard test/test_*.c)
 TESTS    := $(patsubst test/%.c,$(B)/test/%,$(TEST_SRC))
 

@@ -50,6 +50,36 @@ void hud_layout(int W, int H, hud_button_t b[HUD_BTN_COUNT])
     b[HUD_BTN_CONNECT].y = PAD + 2 * (FONT_LINE * HUD_TEXT_SCALE + PAD);
 }
 
+#define SLIDER_H 18 /* slider bar height, pixels */
+
+void hud_slider(int W, int H, hud_button_t *out)
+{
+    hud_button_t b[HUD_BTN_COUNT];
+    hud_layout(W, H, b);
+    int top = b[HUD_BTN_POST].y < b[HUD_BTN_BIRD].y ? b[HUD_BTN_POST].y : b[HUD_BTN_BIRD].y;
+    out->label = "";
+    out->x = PAD;
+    out->w = W - 2 * PAD > 1 ? W - 2 * PAD : 1;
+    out->h = SLIDER_H;
+    out->y = top - PAD - SLIDER_H;
+}
+
+int hud_slider_hit(int W, int H, double x, double y)
+{
+    hud_button_t sl;
+    hud_slider(W, H, &sl);
+    return x >= sl.x && x < sl.x + sl.w && y >= sl.y && y < sl.y + sl.h;
+}
+
+double hud_slider_time(int W, int H, double x, double end_s)
+{
+    hud_button_t sl;
+    hud_slider(W, H, &sl);
+    double f = (x - sl.x) / sl.w;
+    f = f < 0 ? 0 : f > 1 ? 1 : f;
+    return f * end_s;
+}
+
 int hud_hit(int W, int H, double x, double y)
 {
     hud_button_t b[HUD_BTN_COUNT];
@@ -132,7 +162,11 @@ void hud_draw(const sim_t *s, const hud_info_t *in, int W, int H)
     text(PAD, PAD, tc, line);
     snprintf(line, sizeof line, "Lap    %s", l);
     text(PAD, PAD + LINE, tc, line);
-    snprintf(line, sizeof line, "Sim %.3f s  x%g%s", sim_time_s(s), in->speed, in->paused ? "  paused" : "");
+    if (in->replay)
+        snprintf(line, sizeof line, "Log %.3f/%.3f x%g%s", in->replay_s, in->replay_end_s, in->speed,
+                 in->paused ? " paused" : "");
+    else
+        snprintf(line, sizeof line, "Sim %.3f s  x%g%s", sim_time_s(s), in->speed, in->paused ? "  paused" : "");
     text(PAD, PAD + 2 * LINE, 0xB0B0B0u, line);
 
     /* upper right: serial port and baud fields */
@@ -154,8 +188,17 @@ void hud_draw(const sim_t *s, const hud_info_t *in, int W, int H)
         rect(b[i].x, b[i].y, b[i].w, b[i].h, on ? 0x3070D0u : 0x404040u, 0.85f);
         text(b[i].x + PAD, b[i].y + (BTN_H - FONT_H * HUD_TEXT_SCALE) / 2, 0xFFFFFFu, b[i].label);
     }
+    hud_button_t sl;
+    hud_slider(W, H, &sl);
+    if (in->replay) { /* bar, the part played, a knob */
+        double f = in->replay_end_s > 0 ? in->replay_s / in->replay_end_s : 0;
+        int kx = sl.x + (int)lround((f < 0 ? 0 : f > 1 ? 1 : f) * sl.w);
+        rect(sl.x, sl.y + sl.h / 3, sl.w, sl.h / 3, 0x404040u, 0.85f);
+        rect(sl.x, sl.y + sl.h / 3, kx - sl.x, sl.h / 3, 0x3070D0u, 0.95f);
+        rect(kx - 4, sl.y, 8, sl.h, 0xF0F0F0u, 1);
+    }
     if (in->status && *in->status) {
-        int y = b[HUD_BTN_BIRD].y - LINE - PAD;
+        int y = (in->replay ? sl.y : b[HUD_BTN_BIRD].y) - LINE - PAD;
         rect(PAD / 2, y - PAD / 2, (int)strlen(in->status) * CHAR_PX + PAD, LINE + PAD / 2, 0x000000u, 0.55f);
         text(PAD, y, 0xFFE080u, in->status);
     }

@@ -1,7 +1,8 @@
 /* hud.h - the viewer's 2D overlay: timers at the upper left (red after
  * the contest limit), serial port and baud fields with a Connect button at
  * the upper right, camera and overlay buttons at the lower left, run
- * controls at the bottom centre, "Toggle post" at the lower right.
+ * controls at the bottom centre, "Toggle post" at the lower right; when
+ * replaying a log, a time slider above the bottom row.
  * Layout and hit tests need no GL (the viewer's tests use them); drawing
  * needs a current GL context. Pixel coordinates: origin top-left. */
 #ifndef HUD_H
@@ -31,12 +32,20 @@ typedef struct {
     const char *port;     /* serial port text ("" none) */
     long baud;
     const char *status;   /* one line of status text, or NULL */
+    int replay;           /* a log replay (mmview): the time slider is shown */
+    double replay_s, replay_end_s; /* its time and length, s */
 } hud_info_t;
 
 /* Where the buttons sit in a win_w x win_h window. */
 void hud_layout(int win_w, int win_h, hud_button_t out[HUD_BTN_COUNT]);
 /* The button under (x, y), or -1. */
 int hud_hit(int win_w, int win_h, double x, double y);
+/* The replay's time slider: a bar across the window above the bottom row. */
+void hud_slider(int win_w, int win_h, hud_button_t *out);
+/* Is (x, y) on the slider? */
+int hud_slider_hit(int win_w, int win_h, double x, double y);
+/* The time at x along the slider of a replay end_s long (clamped to 0..end_s). */
+double hud_slider_time(int win_w, int win_h, double x, double end_s);
 /* The global and current lap timer texts ("m:ss.mmm") and whether they are over the contest limit. */
 void hud_timers(const sim_t *s, char global[16], char lap[16], int *over_time);
 /* Draw the overlay (GL, orthographic, over whatever is drawn). */

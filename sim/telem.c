@@ -6,12 +6,14 @@
 #include <lcm/lcm.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include "hal_sim.h"
 #include "mmlcm_belief_t.h"
+#include "mmlcm_maze_t.h"
 #include "mmlcm_motors_t.h"
 #include "mmlcm_pose_t.h"
 #include "mmlcm_race_event_t.h"
@@ -67,6 +69,47 @@ static lcm_t *create_quiet(const char *url, char *why, size_t whylen)
     return l;
 }
 
+static void emit(telem_t *t, const char *channel, int64_t utime, int len); /* below */
+
+/* The true maze, the seed and the config, once at the start. */
+static void pub_maze(telem_t *t, const sim_t *s, const char *path)
+{
+    static int8_t walls[MAZE_MAX_CELLS];
+    static int16_t goals[MAZE_MAX_CELLS];
+    const maze_t *m = s->maze;
+    uint16_t n = maze_cells(m);
+    int16_t ng = 0;
+    for (uint16_t c = 0; c < n; c++) {
+        walls[c] = (int8_t)m->cell[c];
+        if (maze_is_goal(m, (maze_cell_t)c)) goals[ng++] = (int16_t)c;
+    }
+    char *ini = NULL;
+    size_t len = 0;
+    FILE *mem = open_memstream(&ini, &len);
+    if (!mem) {
+        t->failed = 1;
+        return;
+    }
+    config_print(&s->cfg, mem);
+    fclose(mem);
+    mmlcm_maze_t mz;
+    mz.utime = 0;
+    mz.path = (char *)(path ? path : "");
+    mz.width = (int8_t)m->width;
+    mz.height = (int8_t)m->height;
+    mz.ncells = (int16_t)n;
+    mz.walls = walls;
+    mz.start = (int16_t)m->start;
+    mz.start_heading = (int8_t)m->start_heading;
+    mz.ngoals = ng;
+    mz.goals = goals;
+    mz.centre_post = (int8_t)(world_has_centre_post(s->world) != 0);
+    mz.seed = (int64_t)s->seed;
+    mz.config = ini ? ini : (char *)"";
+    emit(t, "MM_MAZE", 0, mmlcm_maze_t_encode(t->buf, 0, TELEM_BUF_BYTES, &mz));
+    free(ini);
+}
+
 int telem_open(telem_t *t, const telem_opts_t *o, const sim_t *s, char *err, size_t errlen)
 {
     double hz = o->rate_hz > 0 ? o->rate_hz : TELEM_RATE_HZ;
@@ -109,6 +152,7 @@ int telem_open(telem_t *t, const telem_opts_t *o, const sim_t *s, char *err, siz
         }
         strcpy(t->log_path, o->log_path);
     }
+    pub_maze(t, s, o->maze_path);
     return 0;
 }
 

@@ -6,6 +6,9 @@
  *   MM_RACE                         at TELEM_RACE_HZ
  *   MM_RACE_EVENT                   on the step a lap starts or ends
  *   MM_BELIEF                       when the firmware calls hal_belief
+ *   MM_MAZE                         once, first (utime 0): the true maze,
+ *                                   its file, the seed and the config, so
+ *                                   the log alone replays (mmview)
  * A channel's messages go out on the physics steps that are multiples of its
  * period (rate rounded to a whole number of steps), and once more at the end
  * (telem_finish) unless the last step was one of them.
@@ -33,6 +36,7 @@ typedef struct {
     const char *url;      /* live LCM URL; NULL = none, "" = LCM's default */
     const char *log_path; /* log file; NULL = none */
     double rate_hz;       /* high-rate channels, Hz; <= 0 = TELEM_RATE_HZ */
+    const char *maze_path; /* the maze file, for MM_MAZE; NULL = "" */
 } telem_opts_t;
 
 typedef struct {
@@ -53,8 +57,8 @@ typedef struct {
     uint8_t buf[TELEM_BUF_BYTES];
 } telem_t;
 
-/* Open the outputs for a run of simulation s (its step sets the periods).
- * Returns 0, or -1 with one line in err (nothing is left open or written). */
+/* Open the outputs for a run of simulation s (its step sets the periods)
+ * and publish MM_MAZE. Returns 0, or -1 with one line in err (nothing is left open or written). */
 int telem_open(telem_t *t, const telem_opts_t *o, const sim_t *s, char *err, size_t errlen);
 /* After every physics step (and the firmware's tick and loop, if any). */
 void telem_step(telem_t *t, const sim_t *s);

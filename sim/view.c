@@ -12,6 +12,7 @@
 #include "hal_sim.h"
 #include "hud.h"
 #include "image.h"
+#include "replay.h"
 #include "scene.h"
 
 #define FRAME_S (1.0 / 60)   /* wall time between drawn frames */
@@ -30,6 +31,9 @@ struct view {
     double drag_x, drag_y;
     char status[96];
     sim_t *sim;              /* the simulation being shown (for callbacks) */
+    replay_t *rp;            /* a log replayed into sim (mmview), or NULL */
+    double rp_t;             /* replay time, s */
+    int rp_drag;             /* the slider is being dragged */
 };
 
 static int glfw_users;
@@ -68,12 +72,52 @@ int view_overlay(const view_t *v) { return v->overlay; }
 
 static void resync(view_t *v)
 {
-    v->sim0 = v->sim ? sim_time_s(v->sim) : 0;
+    v->sim0 = v->rp ? v->rp_t : v->sim ? sim_time_s(v->sim) : 0;
     v->wall0 = wall_now();
+}
+
+void view_set_replay(view_t *v, replay_t *r, sim_t *s)
+{
+    v->rp = r;
+    v->sim = s;
+    v->rp_t = 0;
+    v->paused = 0;
+    if (r) replay_apply(r, s, 0);
+    resync(v);
+}
+
+void view_seek(view_t *v, double t_s)
+{
+    if (!v->rp) return;
+    double end = replay_end_s(v->rp);
+    v->rp_t = t_s < 0 ? 0 : t_s > end ? end : t_s;
+    replay_apply(v->rp, v->sim, v->rp_t);
+    resync(v);
+}
+
+double view_time(const view_t *v) { return v->rp ? v->rp_t : v->sim ? sim_time_s(v->sim) : 0; }
+
+/* One logged pose forward (dir 1) or back (-1), paused. */
+static void replay_step(view_t *v, int dir)
+{
+    v->paused = 1;
+    view_seek(v, replay_next_s(v->rp, v->rp_t, dir));
 }
 
 void view_button(view_t *v, sim_t *s, int button)
 {
+    if (v->rp) { /* replay: the run controls drive the log's clock */
+        switch (button) {
+        case HUD_BTN_PAUSE:
+            if (v->paused && v->rp_t >= replay_end_s(v->rp)) view_seek(v, 0); /* play again from the start */
+            v->paused = !v->paused;
+            resync(v);
+            return;
+        case HUD_BTN_STEP: replay_step(v, 1); return;
+        case HUD_BTN_CONNECT: snprintf(v->status, sizeof v->status, "replaying a log: no serial link"); return;
+        default: break;
+        }
+    }
     switch (button) {
     case HUD_BTN_BIRD: case HUD_BTN_FOLLOW: case HUD_BTN_TOP: v->camera = button - HUD_BTN_BIRD + 1; break;
     case HUD_BTN_OVERLAY: v->overlay = !v->overlay; break;
@@ -96,13 +140,35 @@ void view_button(view_t *v, sim_t *s, int button)
 
 int view_click(view_t *v, sim_t *s, double x, double y)
 {
+    if (v->rp && hud_slider_hit(v->o.width, v->o.height, x, y)) {
+        v->rp_drag = 1;
+        view_seek(v, hud_slider_time(v->o.width, v->o.height, x, replay_end_s(v->rp)));
+        return VIEW_SLIDER;
+    }
     int b = hud_hit(v->o.width, v->o.height, x, y);
     if (b >= 0) view_button(v, s, b);
     return b;
 }
 
+void view_drag(view_t *v, double x)
+{
+    if (v->rp && v->rp_drag) view_seek(v, hud_slider_time(v->o.width, v->o.height, x, replay_end_s(v->rp)));
+}
+
+void view_release(view_t *v) { v->rp_drag = 0; }
+
 void view_key(view_t *v, sim_t *s, int key)
 {
+    if (v->rp) {
+        switch (key) {
+        case GLFW_KEY_COMMA: replay_step(v, -1); return;
+        case GLFW_KEY_LEFT: view_seek(v, v->rp_t - 1); return;
+        case GLFW_KEY_RIGHT: view_seek(v, v->rp_t + 1); return;
+        case GLFW_KEY_HOME: view_seek(v, 0); return;
+        case GLFW_KEY_END: view_seek(v, replay_end_s(v->rp)); return;
+        default: break;
+        }
+    }
     switch (key) {
     case GLFW_KEY_1: case GLFW_KEY_KP_1: view_button(v, s, HUD_BTN_BIRD); break;
     case GLFW_KEY_2: case GLFW_KEY_KP_2: view_button(v, s, HUD_BTN_FOLLOW); break;
@@ -136,19 +202,21 @@ static void on_button(GLFWwindow *w, int button, int action, int mods)
     double x, y;
     glfwGetCursorPos(w, &x, &y);
     if (action == GLFW_PRESS) {
-        if (view_click(v, v->sim, x, y) < 0) {
+        if (view_click(v, v->sim, x, y) == -1) {
             v->dragging = 1;
             v->drag_x = x;
             v->drag_y = y;
         }
     } else {
         v->dragging = 0;
+        view_release(v);
     }
 }
 
 static void on_cursor(GLFWwindow *w, double x, double y)
 {
     view_t *v = glfwGetWindowUserPointer(w);
+    if (v->rp_drag) view_drag(v, x);
     if (!v->dragging) return;
     scene_orbit_t *o = &v->orbit[v->camera];
     o->dyaw_rad -= (x - v->drag_x) * DRAG_RAD_PER_PX;
@@ -227,14 +295,17 @@ static void draw(view_t *v, sim_t *s)
     glfwGetFramebufferSize(v->win, &fw, &fh);
     scene_belief_t b = { NULL, 0, 0 };
     const hal_sim_belief_t *hb = hal_sim_belief();
-    if (hb->seq) {
+    if (v->rp) {
+        replay_belief(v->rp, v->rp_t, &b);
+    } else if (hb->seq) {
         b.map = &hb->map;
         b.cell = hb->cell;
         b.heading = hb->heading;
     }
     scene_draw(s, v->camera, &v->orbit[v->camera], &b, v->overlay, fw, fh);
     const char *status = v->status[0] ? v->status : v->overlay && !b.map ? "no mouse map to overlay yet" : NULL;
-    hud_info_t in = { v->camera, v->overlay, v->paused, v->speed, v->o.port, v->o.baud, status };
+    hud_info_t in = { v->camera, v->overlay, v->paused, v->speed, v->o.port, v->o.baud, status, v->rp != NULL,
+                      v->rp_t, v->rp ? replay_end_s(v->rp) : 0 };
     hud_draw(s, &in, v->o.width, v->o.height);
 }
 
@@ -292,6 +363,29 @@ void view_hold(view_t *v, sim_t *s)
     while (!v->closed && !glfwWindowShouldClose(v->win)) {
         frame(v, s);
         glfwWaitEventsTimeout(FRAME_S * 4);
+        v->step_req = 0;
+    }
+    v->closed = 1;
+}
+
+void view_play(view_t *v)
+{
+    if (!v->win || !v->rp) return;
+    resync(v);
+    while (!v->closed && !glfwWindowShouldClose(v->win)) {
+        if (!v->paused && !v->rp_drag) {
+            double end = replay_end_s(v->rp), t = v->sim0 + (wall_now() - v->wall0) * v->speed;
+            if (t >= end) {
+                t = end;
+                v->paused = 1;
+            }
+            v->rp_t = t < 0 ? 0 : t;
+            replay_apply(v->rp, v->sim, v->rp_t);
+        }
+        frame(v, v->sim);
+        /* a frame's time, or until the user acts when paused */
+        if (v->paused) glfwWaitEventsTimeout(FRAME_S * 4);
+        else glfwWaitEventsTimeout(FRAME_S);
         v->step_req = 0;
     }
     v->closed = 1;

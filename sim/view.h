@@ -13,6 +13,13 @@
  *   O                      discovered walls and planned path overlay
  *   P or "Toggle post"     add/remove the centre post in the physics world
  *   Esc or Q               close
+ * Replay (mmview): view_set_replay gives the view a log loaded into a
+ * stand-in simulation; view_play runs it at `speed` with a time slider
+ * (click or drag to seek) and these keys instead of the physics ones:
+ *   space or "Pause"       play / pause (at the end: play from the start)
+ *   S (or .) / ,           one logged pose forward / back, paused
+ *   + / -                  speed x2 / /2 (x1 .. x64)
+ *   Left / Right           one second back / forward; Home / End
  * The UI actions work without a window too (view_button, view_click,
  * view_key), which is how they are tested. */
 #ifndef VIEW_H
@@ -20,9 +27,11 @@
 
 #include <stddef.h>
 
+#include "replay.h"
 #include "sim.h"
 
 #define VIEW_SPEED_MAX 64.0
+#define VIEW_SLIDER 100 /* view_click's answer for the replay slider */
 
 typedef struct {
     int width, height; /* window or picture, pixels */
@@ -50,9 +59,20 @@ void view_hold(view_t *v, sim_t *s);
  * the window's size. Returns 0, or -1 with one line in err. */
 int view_screenshot(view_t *v, sim_t *s, const char *path, char *err, size_t errlen);
 
+/* Replay: show log r put into s (replay_sim_init) from time 0. */
+void view_set_replay(view_t *v, replay_t *r, sim_t *s);
+/* Replay: run the log in the window until it is closed. */
+void view_play(view_t *v);
+/* Replay: go to t_s (clamped to the log). */
+void view_seek(view_t *v, double t_s);
+/* The time shown, s (replay time, or the simulation's). */
+double view_time(const view_t *v);
+
 /* UI actions. */
 void view_button(view_t *v, sim_t *s, int button);             /* HUD_BTN_* */
-int view_click(view_t *v, sim_t *s, double x, double y);       /* the button hit, or -1 */
+int view_click(view_t *v, sim_t *s, double x, double y);       /* the button hit, VIEW_SLIDER, or -1 */
+void view_drag(view_t *v, double x);                           /* mouse moved to x (slider drag) */
+void view_release(view_t *v);                                  /* mouse button up */
 void view_key(view_t *v, sim_t *s, int key);                   /* GLFW_KEY_* */
 int view_camera(const view_t *v);
 double view_speed(const view_t *v);

@@ -24,6 +24,7 @@ struct world {
     dBodyID chassis, wheel[2];
     dJointID hinge[2];
     double box_offset[3];  /* chassis box centre in the chassis body frame */
+    double com[3];         /* chassis centre of mass in the robot frame (world_place) */
     double tof_pos[WORLD_TOF_COUNT][3], tof_dir[WORLD_TOF_COUNT];
     int touching, touched_last;
     unsigned collisions;
@@ -99,6 +100,7 @@ static void build_robot(world_t *w, double x, double y, double heading)
     dBodySetPosition(w->chassis, com_w[0], com_w[1], com_w[2]);
     dBodySetRotation(w->chassis, rot);
     for (int k = 0; k < 3; k++) w->box_offset[k] = box_p[k] - com[k];
+    for (int k = 0; k < 3; k++) w->com[k] = com[k];
 
     w->box = dCreateBox(w->robot, c->body_w_m, c->body_l_m, c->body_h_m);
     dGeomSetBody(w->box, w->chassis);
@@ -342,6 +344,32 @@ double world_tof_ray(world_t *w, int s, double max_m)
     double p[3], dir;
     world_tof_origin(w, s, p, &dir);
     return world_ray(w, p[0], p[1], p[2], dir, max_m);
+}
+
+void world_place(world_t *w, double x_m, double y_m, double heading_rad, const double wheel_rad[2])
+{
+    const simcfg_t *c = &w->cfg;
+    dMatrix3 rot, r2, r3, spin, r4;
+    double com_w[3];
+    frame_point(x_m, y_m, heading_rad, w->com, com_w);
+    dRFromAxisAndAngle(rot, 0, 0, 1, heading_rad - M_PI / 2);
+    dBodySetPosition(w->chassis, com_w[0], com_w[1], com_w[2]);
+    dBodySetRotation(w->chassis, rot);
+    dBodySetLinearVel(w->chassis, 0, 0, 0);
+    dBodySetAngularVel(w->chassis, 0, 0, 0);
+    for (int s = 0; s < 2; s++) {
+        double wp[3] = { s == WORLD_LEFT ? -c->wheel_x_m : c->wheel_x_m, c->axle_y_m, c->wheel_d_m / 2 }, ww[3];
+        frame_point(x_m, y_m, heading_rad, wp, ww);
+        /* as built (cylinder z along the robot's x), then turned about that axis */
+        dRFromAxisAndAngle(r2, 0, 1, 0, M_PI / 2);
+        dMultiply0(r3, rot, r2, 3, 3, 3);
+        dRFromAxisAndAngle(spin, 0, 0, 1, wheel_rad ? wheel_rad[s] : 0.0);
+        dMultiply0(r4, r3, spin, 3, 3, 3);
+        dBodySetPosition(w->wheel[s], ww[0], ww[1], ww[2]);
+        dBodySetRotation(w->wheel[s], r4);
+        dBodySetLinearVel(w->wheel[s], 0, 0, 0);
+        dBodySetAngularVel(w->wheel[s], 0, 0, 0);
+    }
 }
 
 int world_touching(const world_t *w) { return w->touched_last; }

@@ -50,6 +50,11 @@ void world_tof_origin(const world_t *w, int s, double pos_m[3], double *dir_rad)
 /* Cast a ray from any point in any horizontal direction (for tests). */
 double world_ray(world_t *w, double x_m, double y_m, double z_m, double dir_rad, double max_m);
 
+/* Put the robot, at rest and level, with its body centre over (x_m, y_m)
+ * facing heading_rad and its wheels at these hinge angles (rad, positive =
+ * forward; NULL = 0): for replaying a logged pose (mmview), not physics. */
+void world_place(world_t *w, double x_m, double y_m, double heading_rad, const double wheel_rad[2]);
+
 /* Robot-wall contact: are robot and any wall or post touching after the
  * last step, and how many separate contact episodes so far. */
 int world_touching(const world_t *w);

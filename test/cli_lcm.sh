@@ -16,7 +16,7 @@ want_rc 0 "firmware contest with --lcm-log" "$S" --maze $M --driver firmware --j
 cp "$T/out" "$T/run.json"
 want_rc 0 "mmlog summary" "$L" --json "$T/run.lcmlog"
 cp "$T/out" "$T/sum.json"
-for ch in POSE MOTORS SENSORS RACE RACE_EVENT BELIEF; do "$L" --dump MM_$ch "$T/run.lcmlog" >"$T/$ch.jsonl"; done
+for ch in POSE MOTORS SENSORS RACE RACE_EVENT BELIEF MAZE; do "$L" --dump MM_$ch "$T/run.lcmlog" >"$T/$ch.jsonl"; done
 
 python3 - "$T" <<'EOF' && ok "channels, counts, laps, final pose, belief" || bad "log content"
 import json, sys
@@ -27,7 +27,7 @@ dump = lambda ch: [json.loads(l) for l in open("%s/%s.jsonl" % (T, ch))]
 fails = []
 def check(cond, what):
     if not cond: fails.append(what)
-chans = ["MM_POSE", "MM_MOTORS", "MM_SENSORS", "MM_RACE", "MM_RACE_EVENT", "MM_BELIEF"]
+chans = ["MM_POSE", "MM_MOTORS", "MM_SENSORS", "MM_RACE", "MM_RACE_EVENT", "MM_BELIEF", "MM_MAZE"]
 check(sorted(summ) == sorted(chans), "channels %s" % sorted(summ))
 check(all(c["bad"] == 0 for c in summ.values()), "undecodable messages")
 steps = round(run["sim_time_s"] * 1000)  # 1 ms physics step
@@ -63,6 +63,9 @@ check(all(0 <= m["state"] <= 6 and 0 <= m["heading"] <= 3 for m in bel), "belief
 sens = dump("SENSORS")
 check(any(not t for s in sens for t in s["tof_timeout"]), "ToF readings")
 check(sens[-1]["encoder"][0] != 0 and sens[-1]["encoder"][1] != 0, "encoder counts")
+mz = dump("MAZE")
+check(len(mz) == 1 and mz[0]["utime"] == 0 and mz[0]["path"] == "mazes/gen-5x5-s1.txt" and mz[0]["width"] == 5
+      and len(mz[0]["walls"]) == 25 and mz[0]["goals"] and "cell_m = 0.18" in mz[0]["config"], "MM_MAZE: maze, path, config")
 mot = dump("MOTORS")
 check(any(m["command"][0] != 0 for m in mot) and any(abs(m["current_a"][0]) > 0 for m in mot), "motor state")
 if fails:

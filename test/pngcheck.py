@@ -8,6 +8,10 @@
   near:RRGGBB:TOL[:X0:Y0:X1:Y1] -> pixels within TOL (max channel
       difference) of the colour, in the box (fractions 0..1 of the size;
       default the whole image)
+  centroid:RRGGBB:TOL[:box]     -> "X Y", mean pixel position of those
+      pixels ("- -" if none)
+  diff:OTHER.png:TOL[:box]      -> pixels of the box whose colour differs
+      from OTHER's (same size) by more than TOL in some channel
 Exit 2 with one line on stderr if the file is not such a PNG."""
 import struct
 import sys
@@ -74,18 +78,38 @@ def main():
             print(w, h)
         elif a[0] == 'colours':
             print(len({px(x, y) for y in range(h) for x in range(w)}))
-        elif a[0] == 'near':
-            col = int(a[1], 16)
-            want = (col >> 16, (col >> 8) & 255, col & 255)
+        elif a[0] == 'diff':
+            ow, oh, obpp, orows = read_png(a[1])
+            if (ow, oh) != (w, h):
+                print(f'{a[1]}: size {ow}x{oh}, not {w}x{h}', file=sys.stderr)
+                sys.exit(2)
             tol = int(a[2])
             box = [float(v) for v in a[3:7]] if len(a) >= 7 else [0, 0, 1, 1]
             x0, y0, x1, y1 = int(box[0] * w), int(box[1] * h), int(box[2] * w), int(box[3] * h)
             n = 0
             for y in range(y0, y1):
                 for x in range(x0, x1):
-                    if max(abs(u - v) for u, v in zip(px(x, y), want)) <= tol:
+                    o = tuple(orows[y][x * obpp:x * obpp + 3])
+                    if max(abs(u - v) for u, v in zip(px(x, y), o)) > tol:
                         n += 1
             print(n)
+        elif a[0] in ('near', 'centroid'):
+            col = int(a[1], 16)
+            want = (col >> 16, (col >> 8) & 255, col & 255)
+            tol = int(a[2])
+            box = [float(v) for v in a[3:7]] if len(a) >= 7 else [0, 0, 1, 1]
+            x0, y0, x1, y1 = int(box[0] * w), int(box[1] * h), int(box[2] * w), int(box[3] * h)
+            n = sx = sy = 0
+            for y in range(y0, y1):
+                for x in range(x0, x1):
+                    if max(abs(u - v) for u, v in zip(px(x, y), want)) <= tol:
+                        n += 1
+                        sx += x
+                        sy += y
+            if a[0] == 'near':
+                print(n)
+            else:
+                print(f'{sx / n:.2f} {sy / n:.2f}' if n else '- -')
         else:
             print(f'unknown question {q}', file=sys.stderr)
             sys.exit(2)

@@ -10,14 +10,14 @@
  * Exit codes: 0 ok, 2 bad input (unreadable, not an LCM log, bad messages,
  * a truncated or corrupt event: what came before it is still summed up). */
 #include <jansson.h>
-#include <lcm/eventlog.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
+#include "lcmlog.h"
 #include "mmlcm_belief_t.h"
 #include "mmlcm_link_t.h"
+#include "mmlcm_maze_t.h"
 #include "mmlcm_motors_t.h"
 #include "mmlcm_pose_t.h"
 #include "mmlcm_race_event_t.h"
@@ -106,6 +106,20 @@ static int decode(const char *ch, const void *data, int len, int64_t *ut, json_t
         if (j) o = json_pack("{s:I, s:I, s:I, s:f, s:f, s:i}", "utime", (json_int_t)m.utime, "bytes_to_mcu",
                              (json_int_t)m.bytes_to_mcu, "bytes_from_mcu", (json_int_t)m.bytes_from_mcu, "util_to_mcu",
                              m.util_to_mcu, "util_from_mcu", m.util_from_mcu, "frame_errors", (int)m.frame_errors);
+    } else if (!strcmp(ch, "MM_MAZE")) {
+        mmlcm_maze_t m;
+        if (mmlcm_maze_t_decode(data, 0, len, &m) != len) return -1;
+        *ut = m.utime;
+        if (j) {
+            json_t *w = json_array();
+            for (int i = 0; i < m.ncells; i++) json_array_append_new(w, json_integer((uint8_t)m.walls[i]));
+            o = json_pack("{s:I, s:s, s:i, s:i, s:o, s:i, s:i, s:o, s:b, s:I, s:s}", "utime", (json_int_t)m.utime,
+                          "path", m.path, "width", (int)(uint8_t)m.width, "height", (int)(uint8_t)m.height, "walls", w,
+                          "start", (int)m.start, "start_heading", (int)m.start_heading, "goals",
+                          iarr16(m.goals, m.ngoals), "centre_post", m.centre_post, "seed", (json_int_t)m.seed, "config",
+                          m.config);
+        }
+        mmlcm_maze_t_decode_cleanup(&m);
     } else {
         return 1;
     }
@@ -118,6 +132,47 @@ typedef struct {
     long count, bad;
     int64_t first_us, last_us;
 } chan_t;
+
+typedef struct {
+    chan_t *ch;
+    int nch;
+    const char *dump, *path;
+} read_t;
+
+/* One event: decoded (and printed if dumped), counted on its channel. */
+static int on_event(void *ctx, const lcm_eventlog_event_t *ev)
+{
+    read_t *r = ctx;
+    int64_t ut = ev->timestamp;
+    json_t *j = NULL;
+    int d = decode(ev->channel, ev->data, ev->datalen, &ut, r->dump && !strcmp(r->dump, ev->channel) ? &j : NULL);
+    if (j) {
+        char *s = json_dumps(j, JSON_COMPACT | JSON_REAL_PRECISION(17));
+        if (s) puts(s);
+        free(s);
+        json_decref(j);
+    }
+    int k = 0;
+    while (k < r->nch && strcmp(r->ch[k].name, ev->channel)) k++;
+    if (k == r->nch) {
+        if (r->nch == MAX_CHANNELS) {
+            fprintf(stderr, "%s: more than %d channels\n", r->path, MAX_CHANNELS);
+            return 1;
+        }
+        r->ch[r->nch].name = strdup(ev->channel);
+        r->ch[r->nch].first_us = ut;
+        r->nch++;
+    }
+    chan_t *c = &r->ch[k];
+    if (d < 0) {
+        c->bad++;
+    } else {
+        if (c->count == 0) c->first_us = ut;
+        c->count++;
+        c->last_us = ut;
+    }
+    return 0;
+}
 
 static int usage(void)
 {
@@ -142,64 +197,20 @@ int main(int argc, char **argv)
         } else path = argv[i];
     }
     if (!path) return usage();
-    struct stat st;
-    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode)) {
-        fprintf(stderr, "%s: cannot read: not a regular file\n", path);
-        return 2;
-    }
-    lcm_eventlog_t *log = lcm_eventlog_create(path, "r");
-    if (!log) {
-        fprintf(stderr, "%s: cannot read\n", path);
-        return 2;
-    }
     static chan_t ch[MAX_CHANNELS];
-    int nch = 0, rc = 0;
-    long events = 0, good_end = 0; /* byte after the last whole event */
-    lcm_eventlog_event_t *ev;
-    while ((ev = lcm_eventlog_read_next_event(log)) != NULL) {
-        events++;
-        good_end = ftell(log->f);
-        int64_t ut = ev->timestamp;
-        json_t *j = NULL;
-        int d = decode(ev->channel, ev->data, ev->datalen, &ut, dump && !strcmp(dump, ev->channel) ? &j : NULL);
-        if (j) {
-            char *s = json_dumps(j, JSON_COMPACT | JSON_REAL_PRECISION(17));
-            if (s) puts(s);
-            free(s);
-            json_decref(j);
+    read_t rd = { ch, 0, dump, path };
+    char err[4200];
+    long events;
+    int rc = lcmlog_each(path, on_event, &rd, &events, err, sizeof err);
+    int nch = rd.nch;
+    if (rc < 0) {
+        if (events == 0) {
+            fprintf(stderr, "%s\n", err);
+            return 2;
         }
-        int k = 0;
-        while (k < nch && strcmp(ch[k].name, ev->channel)) k++;
-        if (k == nch) {
-            if (nch == MAX_CHANNELS) {
-                fprintf(stderr, "%s: more than %d channels\n", path, MAX_CHANNELS);
-                lcm_eventlog_free_event(ev);
-                rc = 2;
-                break;
-            }
-            ch[nch].name = strdup(ev->channel);
-            ch[nch].first_us = ut;
-            nch++;
-        }
-        if (d < 0) {
-            ch[k].bad++;
-        } else {
-            if (ch[k].count == 0) ch[k].first_us = ut;
-            ch[k].count++;
-            ch[k].last_us = ut;
-        }
-        lcm_eventlog_free_event(ev);
+        fprintf(stderr, "%s (summary of the %ld events before it)\n", err, events);
     }
-    lcm_eventlog_destroy(log);
-    if (events == 0 && st.st_size > 0) {
-        fprintf(stderr, "%s: not an LCM log (no event found)\n", path);
-        return 2;
-    }
-    if (rc == 0 && good_end < (long)st.st_size) {
-        fprintf(stderr, "%s: truncated or corrupt event at byte %ld of %lld (summary of the %ld events before it)\n",
-                path, good_end, (long long)st.st_size, events);
-        rc = 2;
-    }
+    rc = rc ? 2 : 0;
     json_t *out = json_object();
     if (!dump && !as_json) printf("%-16s %8s %10s %12s %12s %6s\n", "channel", "count", "rate_hz", "first_s", "last_s", "bad");
     for (int k = 0; k < nch; k++) {
