@@ -363,7 +363,7 @@ void world_place(world_t *w, double x_m, double y_m, double heading_rad, const d
         /* as built (cylinder z along the robot's x), then turned about that axis */
         dRFromAxisAndAngle(r2, 0, 1, 0, M_PI / 2);
         dMultiply0(r3, rot, r2, 3, 3, 3);
-        dRFromAxisAndAngle(spin, 0, 0, 1, wheel_rad ? wheel_rad[s] : 0.0);
+        dRFromAxisAndAngle(spin, 0, 0, 1, wheel_rad ? -wheel_rad[s] : 0.0); /* hinge angles count the other way */
         dMultiply0(r4, r3, spin, 3, 3, 3);
         dBodySetPosition(w->wheel[s], ww[0], ww[1], ww[2]);
         dBodySetRotation(w->wheel[s], r4);

@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# cli_mmview.sh - mmview replays a log of mmsim --lcm-log, under an Xvfb
+# the test starts: a firmware contest logged, mmview --screenshot at two
+# times shows the robot in two places, and each matches mmsim --screenshot
+# --at the same time of the same run (robot at the same pixels, the maze
+# area the same but for a few pixels); flag and log errors get one line
+# and exit 2; no display gets exit 3. Skips if no X server can be started.
+set -u
+S=${MMSIM:-build/mmsim}
+V=${MMVIEW:-build/mmview}
+P="python3 test/pngcheck.py"
+T=$(mktemp -d)
+XPID=
+cleanup() { [ -n "$XPID" ] && kill "$XPID" 2>/dev/null; rm -rf "$T"; }
+trap cleanup EXIT
+. "$(dirname "$0")/lib.sh"
+
+command -v Xvfb >/dev/null || { echo "SKIP cli_mmview.sh: Xvfb not installed"; exit 77; }
+Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$T/dpy" 2>"$T/xvfb.err" &
+XPID=$!
+for _ in $(seq 50); do [ -s "$T/dpy" ] && break; sleep 0.1; done
+[ -s "$T/dpy" ] || { echo "SKIP cli_mmview.sh: Xvfb did not start: $(head -1 "$T/xvfb.err")"; exit 77; }
+export DISPLAY=:$(head -1 "$T/dpy")
+
+# sanitized build: keep Mesa's frames named for the suppressions (as cli_view.sh)
+run() { local b=$1; shift
+  if ldd "$b" | grep -q libasan; then
+    local asan dri pre=
+    asan=$(ldd "$b" | awk '/libasan/ {print $3}')
+    dri=$(ls /usr/lib/*/dri/swrast_dri.so 2>/dev/null | head -1)
+    [ -n "$dri" ] && pre="$asan $dri"
+    env "LD_PRELOAD=$pre" "LSAN_OPTIONS=suppressions=$PWD/test/lsan-gl.supp" "$b" "$@"
+  else "$b" "$@"; fi; }
+
+M=mazes/gen-5x5-s1.txt
+want_rc 0 "firmware contest logged" "$S" --maze $M --driver firmware --lcm-log "$T/run.lcmlog"
+BOX=0:0.2:1:0.8   # the maze area, clear of the HUD rows (which differ: log time, slider)
+for t in 2 5; do
+  want_rc 0 "mmview screenshot at $t s" run "$V" "$T/run.lcmlog" --screenshot "$T/view$t.png" --at $t --size 640x480
+  want_rc 0 "mmsim screenshot at $t s" run "$S" --maze $M --driver firmware --screenshot "$T/sim$t.png" --at $t --size 640x480
+  [ "$($P "$T/view$t.png" size)" = "640 480" ] && ok "size at $t s" || bad "size at $t s"
+  read -r vx vy <<<"$($P "$T/view$t.png" centroid:2a5ce0:30:$BOX)"
+  read -r sx sy <<<"$($P "$T/sim$t.png" centroid:2a5ce0:30:$BOX)"
+  eval "vx$t=$vx vy$t=$vy"
+  python3 -c "import sys; sys.exit(0 if abs($vx-$sx) < 1 and abs($vy-$sy) < 1 else 1)" 2>/dev/null \
+    && ok "robot where mmsim draws it at $t s ($vx,$vy vs $sx,$sy)" || bad "robot at $t s: mmview $vx,$vy mmsim $sx,$sy"
+  d=$($P "$T/view$t.png" diff:"$T/sim$t.png":40:$BOX)
+  # measured: 33 and 60 of 184320 px differ (wheel angles to an encoder count, body height)
+  [ "${d:-99999}" -lt 500 ] && ok "scene as mmsim's at $t s ($d px differ)" || bad "scene differs from mmsim's at $t s: $d px"
+done
+python3 -c "import math,sys; sys.exit(0 if math.hypot($vx2-$vx5, $vy2-$vy5) > 20 else 1)" \
+  && ok "the robot moved between 2 s and 5 s ($vx2,$vy2 -> $vx5,$vy5)" || bad "robot did not move: $vx2,$vy2 -> $vx5,$vy5"
+# the mouse's map overlay (cyan wall bars) is drawn from the log's belief
+n=$($P "$T/view5.png" near:30e0ff:40:$BOX); [ "${n:-0}" -gt 200 ] && ok "belief overlay drawn ($n px)" || bad "overlay pixels: $n"
+want_rc 0 "follow camera" run "$V" "$T/run.lcmlog" --screenshot "$T/follow.png" --at 5 --camera 2 --size 320x240
+n=$($P "$T/follow.png" near:2a5ce0:60:0.4:0.4:0.6:0.6); [ "${n:-0}" -gt 200 ] && ok "robot at the centre of the follow view" || bad "follow view robot pixels: $n"
+
+# errors: one line, exit 2 (bad flags, bad logs), nothing written
+ONE_ERROR_LINE=1
+want_rc 2 "no log" "$V"
+want_rc 2 "missing log" "$V" "$T/none.lcmlog" --screenshot "$T/x.png" --at 1
+want_rc 2 "bad camera" "$V" "$T/run.lcmlog" --screenshot "$T/x.png" --at 1 --camera 4
+want_rc 2 "bad size" "$V" "$T/run.lcmlog" --screenshot "$T/x.png" --at 1 --size 10x10
+want_rc 2 "bad speed" "$V" "$T/run.lcmlog" --speed 100
+want_rc 2 "bad --at" "$V" "$T/run.lcmlog" --screenshot "$T/x.png" --at soon
+want_rc 2 "--at after the log's end" "$V" "$T/run.lcmlog" --screenshot "$T/x.png" --at 999
+want_rc 2 "--screenshot without --at" "$V" "$T/run.lcmlog" --screenshot "$T/x.png"
+want_rc 2 "--at without --screenshot" "$V" "$T/run.lcmlog" --at 1
+want_rc 2 "two logs" "$V" "$T/run.lcmlog" "$T/run.lcmlog"
+want_rc 2 "unwritable screenshot" "$V" "$T/run.lcmlog" --screenshot "$T/no/dir/x.png" --at 1
+printf 'not a log at all\n' >"$T/junk"
+want_rc 2 "not a log" "$V" "$T/junk" --screenshot "$T/x.png" --at 1
+head -c $(( $(stat -c %s "$T/run.lcmlog") - 7 )) "$T/run.lcmlog" >"$T/cut.lcmlog"
+want_rc 2 "truncated log" "$V" "$T/cut.lcmlog" --screenshot "$T/x.png" --at 1
+grep -q "truncated or corrupt" "$T/err" && ok "truncated log named" || bad "truncated message: $(cat "$T/err")"
+python3 - "$T/run.lcmlog" "$T/flip.lcmlog" <<'PY'
+import sys
+d = bytearray(open(sys.argv[1], 'rb').read())
+# the first MM_POSE payload's first byte (its type fingerprint): the message no longer decodes
+i = d.index(b'MM_POSE') + len('MM_POSE')
+d[i] ^= 0xFF
+open(sys.argv[2], 'wb').write(bytes(d))
+PY
+want_rc 2 "corrupt message" "$V" "$T/flip.lcmlog" --screenshot "$T/x.png" --at 1
+grep -q "does not decode" "$T/err" && ok "corrupt message named" || bad "corrupt message: $(cat "$T/err")"
+[ ! -e "$T/x.png" ] && ok "no picture written on errors" || bad "picture written"
+ONE_ERROR_LINE=0
+DISPLAY= run "$V" "$T/run.lcmlog" --screenshot "$T/nod.png" --at 1 >"$T/out" 2>"$T/err"; rc=$?
+[ $rc -eq 3 ] && [ "$(wc -l <"$T/err")" -eq 1 ] && grep -q '^mmview: cannot start the viewer' "$T/err" && [ ! -e "$T/nod.png" ] \
+  && ok "no display: exit 3, one line" || bad "no display: exit $rc $(cat "$T/err")"
+DISPLAY= run "$V" "$T/run.lcmlog" >"$T/out" 2>"$T/err"; rc=$?
+[ $rc -eq 3 ] && ok "window without a display: exit 3" || bad "window without a display: exit $rc $(cat "$T/err")"
+[ -z "$(ls "$T" | grep '\.tmp\.')" ] && ok "no temporaries left" || bad "temporaries: $(ls "$T")"
+
+[ $fails -eq 0 ] || { echo "$fails failed"; exit 1; }
