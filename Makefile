@@ -40,7 +40,7 @@ WRAP_test_firmware := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros -Wl,--wrap=hal_mo
 # Extra sources a test links (shared test vectors).
 EXTRA_test_wire := test/wire_vectors.c
 
-.PHONY: all deps test test-run sim sim-run bench bench-run fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay
+.PHONY: all deps test test-run sim sim-run bench bench-run fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay view
 all: tools
 
 deps:
@@ -186,6 +186,7 @@ sim-run: $(B)/mmsim
 
 # ---- LCM tools: the spy on a live URL or a log, a log replayed in real time ----
 # make spy [LCM_URL=udpm://...] [LOG=run.lcmlog]    make replay LOG=run.lcmlog [SPEED=1]
+# make view LOG=run.lcmlog [SPEED=1]
 LCM_URL ?=
 SPEED ?= 1
 spy: $(LCM_JAR)
@@ -194,6 +195,10 @@ spy: $(LCM_JAR)
 replay:
 	@[ -n "$(LOG)" ] || { echo "make replay: LOG=FILE is required" >&2; exit 2; }
 	lcm-logplayer --speed=$(SPEED) $(if $(LCM_URL),--lcm-url='$(LCM_URL)') $(LOG)
+# make view LOG=run.lcmlog [SPEED=1]: the log in the 3D viewer with a time slider (mmview)
+view: $(B)/mmview
+	@[ -n "$(LOG)" ] || { echo "make view: LOG=FILE is required" >&2; exit 2; }
+	$(B)/mmview $(LOG) --speed $(SPEED)
 
 # ---- benchmarks ----
 bench: deps
