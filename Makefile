@@ -7,7 +7,7 @@ DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev l
 	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev \
 	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev \
 	liblcm-java default-jdk-headless libjchart2d-java xvfb \
-	libpng-dev libglfw3-dev libgl-dev
+	libpng-dev libglfw3-dev libgl-dev libx11-dev libxtst6
 
 CC      ?= gcc
 STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
@@ -88,13 +88,18 @@ $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
 
+# XTEST input for test/cli_connect.sh (libXtst.so.6 without its -dev header: test/xinput.c declares the calls)
+$(B)/test/xinput: test/xinput.c | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) -O1 $< -lX11 -l:libXtst.so.6 -o $@
+
 # deps first, then a fresh make: on a new machine the packages (and the Arduino
 # core's files that the wildcards below list) only exist once deps has run.
 test: deps
 	@$(MAKE) --no-print-directory test-run
-test-run: $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
+test-run: $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
 	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf
-	@MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
+	@MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
 # ---- AVR build of the firmware (ATmega328P) ----
 AVR_CC    := avr-gcc

@@ -50,6 +50,30 @@ void hud_layout(int W, int H, hud_button_t b[HUD_BTN_COUNT])
     b[HUD_BTN_CONNECT].y = PAD + 2 * (FONT_LINE * HUD_TEXT_SCALE + PAD);
 }
 
+#define FIELD_CHARS 19 /* "Port " + 14 characters */
+
+void hud_fields(int W, int H, hud_button_t f[HUD_FIELDS])
+{
+    (void)H;
+    int fw = FIELD_CHARS * CHAR_PX + 2 * PAD, fx = W - PAD - fw;
+    for (int i = 0; i < HUD_FIELDS; i++) {
+        f[i].label = i == HUD_FIELD_PORT ? "Port" : "Baud";
+        f[i].x = fx;
+        f[i].w = fw;
+        f[i].h = FONT_LINE * HUD_TEXT_SCALE + PAD / 2;
+        f[i].y = PAD / 2 + i * (FONT_LINE * HUD_TEXT_SCALE + PAD);
+    }
+}
+
+int hud_field_hit(int W, int H, double x, double y)
+{
+    hud_button_t f[HUD_FIELDS];
+    hud_fields(W, H, f);
+    for (int i = 0; i < HUD_FIELDS; i++)
+        if (x >= f[i].x && x < f[i].x + f[i].w && y >= f[i].y && y < f[i].y + f[i].h) return i;
+    return -1;
+}
+
 #define SLIDER_H 18 /* slider bar height, pixels */
 
 void hud_slider(int W, int H, hud_button_t *out)
@@ -169,15 +193,21 @@ void hud_draw(const sim_t *s, const hud_info_t *in, int W, int H)
         snprintf(line, sizeof line, "Sim %.3f s  x%g%s", sim_time_s(s), in->speed, in->paused ? "  paused" : "");
     text(PAD, PAD + 2 * LINE, 0xB0B0B0u, line);
 
-    /* upper right: serial port and baud fields */
-    char port[64], baud[32];
-    snprintf(port, sizeof port, "Port %-14.14s", in->port && *in->port ? in->port : "(none)");
-    snprintf(baud, sizeof baud, "Baud %-14ld", in->baud);
-    int fw = (int)strlen(port) * CHAR_PX + 2 * PAD, fx = W - PAD - fw;
-    rect(fx, PAD / 2, fw, LINE + PAD / 2, 0x303030u, 0.85f);
-    text(fx + PAD, PAD, 0xFFFFFFu, port);
-    rect(fx, PAD + LINE + PAD / 2, fw, LINE + PAD / 2, 0x303030u, 0.85f);
-    text(fx + PAD, PAD + LINE + PAD, 0xFFFFFFu, baud);
+    /* upper right: serial port and baud fields (the tail of a long port
+     * name; a cursor and a lighter box while typing) */
+    hud_button_t f[HUD_FIELDS];
+    hud_fields(W, H, f);
+    for (int i = 0; i < HUD_FIELDS; i++) {
+        char val[64], shown[80];
+        int ed = in->editing == i;
+        if (i == HUD_FIELD_PORT) snprintf(val, sizeof val, "%s%s", in->port && *in->port ? in->port : ed ? "" : "(none)", ed ? "_" : "");
+        else if (in->baud_text) snprintf(val, sizeof val, "%s%s", in->baud_text, ed ? "_" : "");
+        else snprintf(val, sizeof val, "%ld", in->baud);
+        size_t n = strlen(val), room = FIELD_CHARS - 5;
+        snprintf(shown, sizeof shown, "%s %s", f[i].label, n > room ? val + n - room : val);
+        rect(f[i].x, f[i].y, f[i].w, f[i].h, ed ? 0x505868u : 0x303030u, 0.85f);
+        text(f[i].x + PAD, f[i].y + PAD / 2, 0xFFFFFFu, shown);
+    }
 
     /* buttons */
     hud_button_t b[HUD_BTN_COUNT];
@@ -191,8 +221,8 @@ void hud_draw(const sim_t *s, const hud_info_t *in, int W, int H)
     hud_button_t sl;
     hud_slider(W, H, &sl);
     if (in->replay) { /* bar, the part played, a knob */
-        double f = in->replay_end_s > 0 ? in->replay_s / in->replay_end_s : 0;
-        int kx = sl.x + (int)lround((f < 0 ? 0 : f > 1 ? 1 : f) * sl.w);
+        double frac = in->replay_end_s > 0 ? in->replay_s / in->replay_end_s : 0;
+        int kx = sl.x + (int)lround((frac < 0 ? 0 : frac > 1 ? 1 : frac) * sl.w);
         rect(sl.x, sl.y + sl.h / 3, sl.w, sl.h / 3, 0x404040u, 0.85f);
         rect(sl.x, sl.y + sl.h / 3, kx - sl.x, sl.h / 3, 0x3070D0u, 0.95f);
         rect(kx - 4, sl.y, 8, sl.h, 0xF0F0F0u, 1);

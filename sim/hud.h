@@ -34,12 +34,19 @@ typedef struct {
     const char *status;   /* one line of status text, or NULL */
     int replay;           /* a log replay (mmview): the time slider is shown */
     double replay_s, replay_end_s; /* its time and length, s */
+    int editing;          /* the field being typed in (HUD_FIELD_*), -1 none */
+    const char *baud_text; /* the baud field's text, or NULL: baud */
 } hud_info_t;
+
+enum { HUD_FIELD_PORT = 0, HUD_FIELD_BAUD = 1, HUD_FIELDS = 2 };
 
 /* Where the buttons sit in a win_w x win_h window. */
 void hud_layout(int win_w, int win_h, hud_button_t out[HUD_BTN_COUNT]);
 /* The button under (x, y), or -1. */
 int hud_hit(int win_w, int win_h, double x, double y);
+/* Where the port and baud fields sit; the field under (x, y), or -1. */
+void hud_fields(int win_w, int win_h, hud_button_t out[HUD_FIELDS]);
+int hud_field_hit(int win_w, int win_h, double x, double y);
 /* The replay's time slider: a bar across the window above the bottom row. */
 void hud_slider(int win_w, int win_h, hud_button_t *out);
 /* Is (x, y) on the slider? */

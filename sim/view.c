@@ -14,6 +14,7 @@
 #include "image.h"
 #include "replay.h"
 #include "scene.h"
+#include "serial.h"
 
 #define FRAME_S (1.0 / 60)   /* wall time between drawn frames */
 #define MAX_LAG_S 0.25       /* sim time behind the wall clock before the backlog is dropped */
@@ -34,6 +35,9 @@ struct view {
     replay_t *rp;            /* a log replayed into sim (mmview), or NULL */
     double rp_t;             /* replay time, s */
     int rp_drag;             /* the slider is being dragged */
+    char port[256], baud[24]; /* the HUD's fields, as typed */
+    int editing;             /* HUD_FIELD_* being typed in, -1 none */
+    int connect_req;         /* Connect pressed with a valid port and baud */
 };
 
 static int glfw_users;
@@ -60,6 +64,9 @@ view_t *view_new(const view_opts_t *o)
     v->speed = o->speed >= 1 && o->speed <= VIEW_SPEED_MAX ? o->speed : 1;
     v->overlay = 1;
     for (int i = 0; i <= SCENE_CAMERAS; i++) orbit_reset(&v->orbit[i]);
+    snprintf(v->port, sizeof v->port, "%s", o->port ? o->port : "");
+    snprintf(v->baud, sizeof v->baud, "%ld", o->baud > 0 ? o->baud : 115200L);
+    v->editing = -1;
     if (v->o.width <= 0) v->o.width = 1024;
     if (v->o.height <= 0) v->o.height = 720;
     return v;
@@ -131,9 +138,19 @@ void view_button(view_t *v, sim_t *s, int button)
             snprintf(v->status, sizeof v->status, "centre post %s", world_has_centre_post(s->world) ? "on" : "off");
         }
         break;
-    case HUD_BTN_CONNECT:
-        snprintf(v->status, sizeof v->status, "the link opens at start: mmsim --serial PORT / --pty / --avr");
+    case HUD_BTN_CONNECT: {
+        char *end;
+        long b = strtol(v->baud, &end, 10);
+        v->editing = -1;
+        if (!v->port[0]) snprintf(v->status, sizeof v->status, "type the serial port first (click the Port field)");
+        else if (!v->baud[0] || *end || b < 50 || b > (long)SERIAL_BAUD_MAX)
+            snprintf(v->status, sizeof v->status, "baud: 50 to %lu", (unsigned long)SERIAL_BAUD_MAX);
+        else {
+            v->connect_req = 1;
+            snprintf(v->status, sizeof v->status, "connecting to %.60s at %ld baud", v->port, b);
+        }
         break;
+    }
     default: break;
     }
 }
@@ -145,6 +162,12 @@ int view_click(view_t *v, sim_t *s, double x, double y)
         view_seek(v, hud_slider_time(v->o.width, v->o.height, x, replay_end_s(v->rp)));
         return VIEW_SLIDER;
     }
+    int f = hud_field_hit(v->o.width, v->o.height, x, y);
+    if (f >= 0 && !v->rp) {
+        v->editing = f;
+        return VIEW_FIELD + f;
+    }
+    v->editing = -1;
     int b = hud_hit(v->o.width, v->o.height, x, y);
     if (b >= 0) view_button(v, s, b);
     return b;
@@ -157,8 +180,43 @@ void view_drag(view_t *v, double x)
 
 void view_release(view_t *v) { v->rp_drag = 0; }
 
+void view_char(view_t *v, unsigned codepoint)
+{
+    if (v->editing < 0 || codepoint <= ' ' || codepoint > '~') return; /* printable ASCII, no spaces */
+    char *buf = v->editing == HUD_FIELD_PORT ? v->port : v->baud;
+    size_t cap = v->editing == HUD_FIELD_PORT ? sizeof v->port : sizeof v->baud, n = strlen(buf);
+    if (v->editing == HUD_FIELD_BAUD && (codepoint < '0' || codepoint > '9')) return;
+    if (n + 1 < cap) {
+        buf[n] = (char)codepoint;
+        buf[n + 1] = '\0';
+    }
+}
+
+int view_connect_request(view_t *v, const char **port, long *baud)
+{
+    if (!v->connect_req) return 0;
+    v->connect_req = 0;
+    *port = v->port;
+    *baud = strtol(v->baud, NULL, 10);
+    return 1;
+}
+
+void view_set_status(view_t *v, const char *text) { snprintf(v->status, sizeof v->status, "%s", text ? text : ""); }
+
 void view_key(view_t *v, sim_t *s, int key)
 {
+    if (v->editing >= 0) { /* typing in a field: the characters come through view_char */
+        char *buf = v->editing == HUD_FIELD_PORT ? v->port : v->baud;
+        size_t n = strlen(buf);
+        switch (key) {
+        case GLFW_KEY_BACKSPACE: if (n) buf[n - 1] = '\0'; break;
+        case GLFW_KEY_TAB: v->editing = v->editing == HUD_FIELD_PORT ? HUD_FIELD_BAUD : HUD_FIELD_PORT; break;
+        case GLFW_KEY_ENTER: case GLFW_KEY_KP_ENTER: view_button(v, s, HUD_BTN_CONNECT); break;
+        case GLFW_KEY_ESCAPE: v->editing = -1; break;
+        default: break;
+        }
+        return;
+    }
     if (v->rp) {
         switch (key) {
         case GLFW_KEY_COMMA: replay_step(v, -1); return;
@@ -192,6 +250,11 @@ static void on_key(GLFWwindow *w, int key, int scancode, int action, int mods)
     (void)scancode, (void)mods;
     view_t *v = glfwGetWindowUserPointer(w);
     if (action == GLFW_PRESS || action == GLFW_REPEAT) view_key(v, v->sim, key);
+}
+
+static void on_char(GLFWwindow *w, unsigned codepoint)
+{
+    view_char(glfwGetWindowUserPointer(w), codepoint);
 }
 
 static void on_button(GLFWwindow *w, int button, int action, int mods)
@@ -271,6 +334,7 @@ int view_open(view_t *v, int visible, char *err, size_t errlen)
     glfwSwapInterval(0); /* pacing is ours */
     glfwSetWindowUserPointer(v->win, v);
     glfwSetKeyCallback(v->win, on_key);
+    glfwSetCharCallback(v->win, on_char);
     glfwSetMouseButtonCallback(v->win, on_button);
     glfwSetCursorPosCallback(v->win, on_cursor);
     glfwSetScrollCallback(v->win, on_scroll);
@@ -304,8 +368,8 @@ static void draw(view_t *v, sim_t *s)
     }
     scene_draw(s, v->camera, &v->orbit[v->camera], &b, v->overlay, fw, fh);
     const char *status = v->status[0] ? v->status : v->overlay && !b.map ? "no mouse map to overlay yet" : NULL;
-    hud_info_t in = { v->camera, v->overlay, v->paused, v->speed, v->o.port, v->o.baud, status, v->rp != NULL,
-                      v->rp_t, v->rp ? replay_end_s(v->rp) : 0 };
+    hud_info_t in = { v->camera, v->overlay, v->paused, v->speed, v->port, v->o.baud, status, v->rp != NULL,
+                      v->rp_t, v->rp ? replay_end_s(v->rp) : 0, v->editing, v->baud };
     hud_draw(s, &in, v->o.width, v->o.height);
 }
 

@@ -13,6 +13,9 @@
  *   O                      discovered walls and planned path overlay
  *   P or "Toggle post"     add/remove the centre post in the physics world
  *   Esc or Q               close
+ *   click Port / Baud      type a serial port and baud (Tab: the other
+ *                          field, Backspace, Esc: done); Connect or Enter
+ *                          asks the caller to open the link (HIL)
  * Replay (mmview): view_set_replay gives the view a log loaded into a
  * stand-in simulation; view_play runs it at `speed` with a time slider
  * (click or drag to seek) and these keys instead of the physics ones:
@@ -32,6 +35,7 @@
 
 #define VIEW_SPEED_MAX 64.0
 #define VIEW_SLIDER 100 /* view_click's answer for the replay slider */
+#define VIEW_FIELD 200  /* view_click's answer for a HUD field: + HUD_FIELD_* */
 
 typedef struct {
     int width, height; /* window or picture, pixels */
@@ -59,6 +63,13 @@ void view_hold(view_t *v, sim_t *s);
  * the window's size. Returns 0, or -1 with one line in err. */
 int view_screenshot(view_t *v, sim_t *s, const char *path, char *err, size_t errlen);
 
+/* HIL at run time: the port and baud typed into the HUD's fields when
+ * Connect was pressed (or Enter in a field), once: returns 1 and sets
+ * them (valid until the next call), else 0. The caller opens the link and
+ * reports the outcome with view_set_status. */
+int view_connect_request(view_t *v, const char **port, long *baud);
+void view_set_status(view_t *v, const char *text);
+
 /* Replay: show log r put into s (replay_sim_init) from time 0. */
 void view_set_replay(view_t *v, replay_t *r, sim_t *s);
 /* Replay: run the log in the window until it is closed. */
@@ -70,7 +81,8 @@ double view_time(const view_t *v);
 
 /* UI actions. */
 void view_button(view_t *v, sim_t *s, int button);             /* HUD_BTN_* */
-int view_click(view_t *v, sim_t *s, double x, double y);       /* the button hit, VIEW_SLIDER, or -1 */
+int view_click(view_t *v, sim_t *s, double x, double y);       /* the button hit, VIEW_SLIDER, VIEW_FIELD + f, or -1 */
+void view_char(view_t *v, unsigned codepoint);                 /* a typed character (into the field being edited) */
 void view_drag(view_t *v, double x);                           /* mouse moved to x (slider drag) */
 void view_release(view_t *v);                                  /* mouse button up */
 void view_key(view_t *v, sim_t *s, int key);                   /* GLFW_KEY_* */

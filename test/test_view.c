@@ -2,7 +2,7 @@
  * post" button adds and removes the centre post in the physics world (a
  * ray across the centre hits it or not), camera keys and buttons, speed
  * limits, pause and single step; the HUD timers turn over-time after the
- * limit. */
+ * limit; the port and baud fields and Connect. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -131,6 +131,47 @@ static void test_hud_timers(void **state)
     sim.race.started = 0;
 }
 
+/* The port and baud fields take typing (not the viewer's keys) and
+ * Connect hands a valid pair to the caller once. */
+static void test_connect_fields(void **state)
+{
+    (void)state;
+    const char *port;
+    long baud;
+    hud_button_t f[HUD_FIELDS];
+    hud_fields(opts.width, opts.height, f);
+    /* no port yet: Connect only says so */
+    click_button(HUD_BTN_CONNECT);
+    assert_int_equal(view_connect_request(view, &port, &baud), 0);
+    assert_int_equal(view_click(view, &sim, f[0].x + 5.0, f[0].y + 5.0), VIEW_FIELD + HUD_FIELD_PORT);
+    int cam = view_camera(view);
+    for (const char *c = "/dev/ttyq1"; *c; c++) view_char(view, (unsigned char)*c);
+    view_key(view, &sim, GLFW_KEY_2); /* a key while typing: not the camera */
+    view_key(view, &sim, GLFW_KEY_Q); /* nor quit */
+    assert_int_equal(view_camera(view), cam);
+    view_char(view, 'X');
+    view_key(view, &sim, GLFW_KEY_BACKSPACE);
+    view_key(view, &sim, GLFW_KEY_TAB); /* to the baud field: digits only */
+    for (int i = 0; i < 6; i++) view_key(view, &sim, GLFW_KEY_BACKSPACE);
+    for (const char *c = "5x7600"; *c; c++) view_char(view, (unsigned char)*c);
+    view_key(view, &sim, GLFW_KEY_ENTER); /* Enter = Connect */
+    assert_int_equal(view_connect_request(view, &port, &baud), 1);
+    assert_string_equal(port, "/dev/ttyq1");
+    assert_int_equal(baud, 57600);
+    assert_int_equal(view_connect_request(view, &port, &baud), 0); /* once */
+    /* a bad baud is refused */
+    assert_int_equal(view_click(view, &sim, f[1].x + 5.0, f[1].y + 5.0), VIEW_FIELD + HUD_FIELD_BAUD);
+    for (int i = 0; i < 6; i++) view_key(view, &sim, GLFW_KEY_BACKSPACE);
+    view_char(view, '9');
+    view_key(view, &sim, GLFW_KEY_ESCAPE); /* done typing */
+    click_button(HUD_BTN_CONNECT);
+    assert_int_equal(view_connect_request(view, &port, &baud), 0);
+    /* keys work again after Esc */
+    view_key(view, &sim, GLFW_KEY_3);
+    assert_int_equal(view_camera(view), 3);
+    view_key(view, &sim, GLFW_KEY_1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -138,6 +179,7 @@ int main(void)
         cmocka_unit_test(test_cameras),
         cmocka_unit_test(test_speed_pause_step),
         cmocka_unit_test(test_hud_timers),
+        cmocka_unit_test(test_connect_fields),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -172,8 +172,9 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     world_pose(sim.world, &last_x, &last_y, &h);
     double hard_stop_s = cfg.time_limit_s + 60.0; /* a lap under way may finish over time, flagged */
     if (!drv.reachable) reason = "unreachable";
+    int hil = o->serial; /* an MCU drives: from the start, or since the HUD's Connect */
     while (!drv.done) {
-        if (o->serial) { /* HIL: the contest lasts the time limit */
+        if (hil) { /* HIL: the contest lasts the time limit */
             sim_step(&sim);
             link_step(&lnk, &sim);
             if (tel_on) telem_step(&tel, &sim);
@@ -215,6 +216,23 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
             reason = "window_closed";
             break;
         }
+        const char *cport;
+        long cbaud;
+        if (o->gui && view_connect_request(view, &cport, &cbaud)) { /* HUD Connect: the MCU drives from now on */
+            link_opts_t lo = o->link;
+            lo.device = cport;
+            lo.pty = 0;
+            lo.baud = (uint32_t)cbaud;
+            if (hil) view_set_status(view, "already connected: one link per run");
+            else if (link_open(&lnk, &lo, cfg.step_s, (uint16_t)lround(cfg.tof_range_m * 1000.0),
+                               (uint32_t)lround(cfg.encoder_ppr * cfg.gear_ratio * 100.0), stderr, lerr, sizeof lerr) != 0)
+                view_set_status(view, lerr);
+            else {
+                hil = 1;
+                sim.cmd[0] = sim.cmd[1] = 0;
+                view_set_status(view, "connected: the MCU drives from now on");
+            }
+        }
         if (o->shot && sim_time_s(&sim) >= o->shot_at_s) {
             reason = "screenshot";
             break;
@@ -228,7 +246,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
             reason = "time_limit";
             break;
         }
-        if (sim.step % 100 == 0 && !o->serial) { /* a HIL robot may wait for its MCU */
+        if (sim.step % 100 == 0 && !hil) { /* a HIL robot may wait for its MCU */
             world_pose(sim.world, &x, &y, &h);
             if (hypot(x - last_x, y - last_y) > 0.01) {
                 last_x = x;
@@ -287,7 +305,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     json_object_set_new(o_json, "config_hash", json_string(hash));
     const char *driver_name = o->serial ? "serial" : o->scripted ? "scripted" : "firmware";
     json_object_set_new(o_json, "driver", json_string(driver_name));
-    if (o->serial) {
+    if (hil) {
         json_object_set_new(o_json, "link", link_json(&lnk));
         link_close(&lnk);
         if (o->avr_elf) {
