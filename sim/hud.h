@@ -1,8 +1,9 @@
 /* hud.h - the viewer's 2D overlay: timers at the upper left (red after
- * the contest limit), serial port and baud fields with a Connect button at
- * the upper right, camera and overlay buttons at the lower left, run
- * controls at the bottom centre, "Toggle post" at the lower right; when
- * replaying a log, a time slider above the bottom row.
+ * the contest limit), serial port and baud fields (editable, see view.h)
+ * with a Connect button at the upper right, camera and overlay buttons at
+ * the lower left, run controls at the bottom centre, "Toggle post" at
+ * the lower right; when replaying a log, a time slider above the bottom
+ * row.
  * Layout and hit tests need no GL (the viewer's tests use them); drawing
  * needs a current GL context. Pixel coordinates: origin top-left. */
 #ifndef HUD_H

@@ -87,6 +87,7 @@ void view_set_replay(view_t *v, replay_t *r, sim_t *s)
 {
     v->rp = r;
     v->sim = s;
+    if (v->win) glfwSetWindowTitle(v->win, "mmview");
     v->rp_t = 0;
     v->paused = 0;
     if (r) replay_apply(r, s, 0);
