@@ -140,7 +140,9 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         fw_set_maze(&maze);
         fw_setup();
     }
-    if (tel_on && telem_open(&tel, &o->telem, &sim, err, sizeof err) != 0) {
+    telem_opts_t topts = o->telem;
+    if (o->serial) topts.link = &lnk; /* MM_LINK in HIL/PIL runs */
+    if (tel_on && telem_open(&tel, &topts, &sim, err, sizeof err) != 0) {
         fprintf(stderr, "mmsim: %s\n", err);
         if (!o->scripted) hal_sim_attach(NULL);
         sim_free(&sim);
@@ -493,7 +495,7 @@ int main(int argc, char **argv)
         { "f-cpu", required_argument, 0, 2006 },
         { 0, 0, 0, 0 },
     };
-    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, { NULL, NULL, 0 }, NULL, 0, NULL, 0, { 1024, 720, 1, 1, "", 115200 },
+    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, { NULL, NULL, 0, NULL }, NULL, 0, NULL, 0, { 1024, 720, 1, 1, "", 115200 },
                  0, { NULL, 0, 0, LINK_FRAMED, 0 }, NULL, NULL, 0 }; /* scripted by default: it honours --runs */
     const char *maze = NULL, *batch = NULL;
     double v;
