@@ -17,8 +17,10 @@ else
 fi
 
 # platformio.ini parses (PlatformIO cannot download its platforms here: no build)
-if command -v pio >/dev/null; then
-  pio project config >"$T/pio" 2>&1 && grep -q "env:megaatmega2560" "$T/pio" && grep -q "env:native" "$T/pio" \
+PIO=${PIO:-${BUILD:-build}/pio/bin/pio}; [ -x "$PIO" ] || PIO=$(command -v pio)
+if [ -n "$PIO" ]; then
+  PLATFORMIO_SETTING_ENABLE_TELEMETRY=No "$PIO" project config >"$T/pio" 2>&1 && grep -q "env:uno" "$T/pio" && grep -q "env:megaatmega2560" "$T/pio" \
+    && grep -q "env:native" "$T/pio" && grep -q "symlink://hal/arduino" "$T/pio" \
     && ok "platformio.ini parses" || bad "platformio.ini: $(tail -3 "$T/pio")"
 else
   echo "SKIP cli_hil platformio.ini check: pio not installed"
