@@ -7,7 +7,7 @@ DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev l
 	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev \
 	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev \
 	liblcm-java default-jdk-headless libjchart2d-java xvfb \
-	libpng-dev libglfw3-dev libgl-dev libx11-dev libxtst6
+	libpng-dev libglfw3-dev libgl-dev python3-venv libx11-dev libxtst6
 
 CC      ?= gcc
 STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
@@ -97,9 +97,16 @@ $(B)/test/xinput: test/xinput.c | deps
 # core's files that the wildcards below list) only exist once deps has run.
 test: deps
 	@$(MAKE) --no-print-directory test-run
-test-run: $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
+test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
 	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf
 	@MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
+
+# PlatformIO from PyPI in a venv, only to check that platformio.ini parses
+# (`pio run` cannot download its platforms here). No PyPI: the check skips.
+PIO_VERSION := 6.2.0
+$(B)/pio/bin/pio: | deps
+	@python3 -m venv $(B)/pio && $(B)/pio/bin/pip install -q platformio==$(PIO_VERSION) >/dev/null 2>&1 \
+	  || { echo "make: platformio $(PIO_VERSION) not installed from PyPI: its check will be skipped"; rm -f $@; }
 
 # ---- AVR build of the firmware (ATmega328P) ----
 AVR_CC    := avr-gcc

@@ -326,13 +326,17 @@ move: /* sim -> MCU: at most the credit's whole bytes */
     return l->sensors_on;
 }
 
-static double util(const link_t *l, uint64_t bytes)
+double link_util_over(const link_t *l, uint64_t bytes, uint64_t steps)
 {
-    double allowed = (double)l->st.steps * (double)l->credit_step / (double)BYTE_COST;
+    double allowed = (double)steps * (double)l->credit_step / (double)BYTE_COST;
     return allowed > 0 ? (double)bytes / allowed : 0.0;
 }
-double link_util_tx(const link_t *l) { return util(l, l->st.tx_bytes); }
-double link_util_rx(const link_t *l) { return util(l, l->st.rx_bytes); }
+double link_util_tx(const link_t *l) { return link_util_over(l, l->st.tx_bytes, l->st.steps); }
+double link_util_rx(const link_t *l) { return link_util_over(l, l->st.rx_bytes, l->st.steps); }
+const wire_stats_t *link_decoder_stats(const link_t *l)
+{
+    return l->o.protocol == LINK_COMPAT ? &l->crx.stats : &l->dec.stats;
+}
 
 void link_step(link_t *l, struct sim_s *s)
 {
@@ -357,7 +361,7 @@ void link_step(link_t *l, struct sim_s *s)
 
 json_t *link_json(const link_t *l)
 {
-    const wire_stats_t *d = l->o.protocol == LINK_COMPAT ? &l->crx.stats : &l->dec.stats;
+    const wire_stats_t *d = link_decoder_stats(l);
     json_t *dec = json_pack("{s:I, s:I, s:I, s:I, s:I, s:I, s:I, s:I}", "bytes", (json_int_t)d->bytes, "frames_ok",
                             (json_int_t)d->frames_ok, "crc", (json_int_t)d->crc, "cobs", (json_int_t)d->cobs,
                             "overflow", (json_int_t)d->overflow, "unknown", (json_int_t)d->unknown, "length",

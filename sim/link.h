@@ -95,6 +95,10 @@ int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2]);
 /* Utilisation of each direction so far: bytes moved / bytes the baud allowed. */
 double link_util_tx(const link_t *l);
 double link_util_rx(const link_t *l);
+/* Share of the line's capacity that bytes used over steps physics steps. */
+double link_util_over(const link_t *l, uint64_t bytes, uint64_t steps);
+/* The decoder's counters of the link's protocol (framed or compat). */
+const wire_stats_t *link_decoder_stats(const link_t *l);
 void link_close(link_t *l);
 /* The link's settings, traffic, utilisation and decoder error counters. */
 json_t *link_json(const link_t *l);

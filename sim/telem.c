@@ -12,7 +12,9 @@
 #include <unistd.h>
 
 #include "hal_sim.h"
+#include "link.h"
 #include "mmlcm_belief_t.h"
+#include "mmlcm_link_t.h"
 #include "mmlcm_maze_t.h"
 #include "mmlcm_motors_t.h"
 #include "mmlcm_pose_t.h"
@@ -119,7 +121,10 @@ int telem_open(telem_t *t, const telem_opts_t *o, const sim_t *s, char *err, siz
     t->step_us = (uint64_t)llround(s->cfg.step_s * 1e6);
     t->fast_steps = period_steps(hz, s->cfg.step_s);
     t->race_steps = period_steps(TELEM_RACE_HZ, s->cfg.step_s);
-    t->last_fast = t->last_race = NONE;
+    t->link_steps = period_steps(TELEM_LINK_HZ, s->cfg.step_s);
+    t->last_fast = t->last_race = t->last_link = NONE;
+    t->link = o->link;
+    t->link_tx0 = t->link_rx0 = t->link_steps0 = 0;
     t->nlaps = 0;
     t->in_run = 0;
     t->run_start_s = 0;
@@ -230,6 +235,29 @@ static void pub_race(telem_t *t, const sim_t *s)
     t->last_race = s->step;
 }
 
+/* The link's counters; utilisation over the steps since the last MM_LINK. */
+static void pub_link(telem_t *t, const sim_t *s)
+{
+    const link_t *l = t->link;
+    mmlcm_link_t m;
+    m.utime = utime_of(t, s);
+    m.bytes_to_mcu = (int64_t)l->st.tx_bytes;
+    m.bytes_from_mcu = (int64_t)l->st.rx_bytes;
+    uint64_t steps = l->st.steps - t->link_steps0;
+    m.util_to_mcu = link_util_over(l, l->st.tx_bytes - t->link_tx0, steps);
+    m.util_from_mcu = link_util_over(l, l->st.rx_bytes - t->link_rx0, steps);
+    m.frame_errors = (int32_t)wire_stats_errors(link_decoder_stats(l));
+    m.dropped_to_mcu = (int64_t)l->st.tx_dropped;
+    m.baud = (int32_t)l->o.baud;
+    m.connected = (int8_t)(l->connected != 0);
+    m.handshake = (int8_t)(l->hello_ok != 0);
+    emit(t, "MM_LINK", m.utime, mmlcm_link_t_encode(t->buf, 0, TELEM_BUF_BYTES, &m));
+    t->link_tx0 = l->st.tx_bytes;
+    t->link_rx0 = l->st.rx_bytes;
+    t->link_steps0 = l->st.steps;
+    t->last_link = s->step;
+}
+
 /* Lap starts and ends since the last step. */
 static void pub_events(telem_t *t, const sim_t *s)
 {
@@ -325,6 +353,7 @@ void telem_step(telem_t *t, const sim_t *s)
     pub_events(t, s);
     if (s->step % t->fast_steps == 0) pub_fast(t, s);
     if (s->step % t->race_steps == 0) pub_race(t, s);
+    if (t->link && s->step % t->link_steps == 0) pub_link(t, s);
 }
 
 void telem_finish(telem_t *t, const sim_t *s)
@@ -333,6 +362,7 @@ void telem_finish(telem_t *t, const sim_t *s)
     pub_events(t, s);
     if (t->last_fast != s->step) pub_fast(t, s);
     if (t->last_race != s->step) pub_race(t, s);
+    if (t->link && t->last_link != s->step) pub_link(t, s);
 }
 
 int telem_close(telem_t *t, char *err, size_t errlen)

@@ -6,6 +6,7 @@
  *   MM_RACE                         at TELEM_RACE_HZ
  *   MM_RACE_EVENT                   on the step a lap starts or ends
  *   MM_BELIEF                       when the firmware calls hal_belief
+ *   MM_LINK                         at TELEM_LINK_HZ, HIL/PIL runs only (opts.link)
  *   MM_MAZE                         once, first (utime 0): the true maze,
  *                                   its file, the seed and the config, so
  *                                   the log alone replays (mmview)
@@ -30,12 +31,14 @@
 
 #define TELEM_RATE_HZ 100.0 /* default rate of the high-rate channels, Hz */
 #define TELEM_RACE_HZ 10.0  /* rate of MM_RACE, Hz */
+#define TELEM_LINK_HZ 10.0  /* rate of MM_LINK, Hz */
 #define TELEM_BUF_BYTES 16384 /* one encoded message, bytes (a 32x32 belief is ~5.2 KB) */
 
 typedef struct {
     const char *url;      /* live LCM URL; NULL = none, "" = LCM's default */
     const char *log_path; /* log file; NULL = none */
     double rate_hz;       /* high-rate channels, Hz; <= 0 = TELEM_RATE_HZ */
+    const struct link_s *link; /* HIL/PIL: the serial link whose statistics go on MM_LINK; NULL = none */
     const char *maze_path; /* the maze file, for MM_MAZE; NULL = "" */
 } telem_opts_t;
 
@@ -45,6 +48,10 @@ typedef struct {
     char log_path[4096];
     uint64_t fast_steps;  /* period of the high-rate channels, physics steps */
     uint64_t race_steps;  /* period of MM_RACE, physics steps */
+    uint64_t link_steps;  /* period of MM_LINK, physics steps */
+    const struct link_s *link;
+    uint64_t last_link;   /* step of the last MM_LINK, UINT64_MAX = none */
+    uint64_t link_tx0, link_rx0, link_steps0; /* the link's counters at the last MM_LINK */
     uint64_t step_us;     /* physics step, microseconds */
     uint64_t last_fast, last_race; /* step of the last publication, UINT64_MAX = none */
     int nlaps;            /* laps already announced */

@@ -4,10 +4,12 @@
 # type a serial port into the Port field, press Enter (= Connect): the link
 # opens and the simulator sends its sensor messages over it (a pseudo-
 # terminal this script holds); a port that does not exist opens nothing and
-# the run goes on. Skips without Xvfb or the XTEST helper.
+# the run goes on; MM_LINK is logged from the Connect on. Skips without
+# Xvfb or the XTEST helper.
 set -u
 S=${MMSIM:-build/mmsim}
 X=${XINPUT:-build/test/xinput}
+L=${MMLOG:-build/mmlog}
 T=$(mktemp -d)
 XPID= SPID= MPID=
 cleanup() { for p in $SPID $MPID $XPID; do kill "$p" 2>/dev/null; done; rm -rf "$T"; }
@@ -51,7 +53,7 @@ PTS=$(cat "$T/pts")
 
 # Port field at the upper right of an 800x600 window at (0, 0) (hud_fields: x 548..792, y 4..26).
 live() { # $1 = the port to type; the run's JSON in $T/$2.json
-  "${SIM[@]}" --maze mazes/gen-5x5-s1.txt --driver scripted --gui --size 800x600 --json >"$T/$2.json" 2>"$T/$2.err" &
+  "${SIM[@]}" --maze mazes/gen-5x5-s1.txt --driver scripted --gui --size 800x600 --json --lcm-log "$T/$2.lcmlog" >"$T/$2.json" 2>"$T/$2.err" &
   SPID=$!
   "$X" wait mmsim 30 || { bad "$2: no window"; return; }
   sleep 0.5
@@ -68,6 +70,9 @@ l = j.get("link") or {}
 print("link:", {k: l.get(k) for k in ("device", "baud", "tx_bytes", "tx_msgs")})
 sys.exit(0 if l.get("device") == sys.argv[2] and l.get("tx_bytes", 0) > 0 and l.get("baud") == 115200 and j["exit_reason"] == "window_closed" else 1)
 PY
+"$L" --dump MM_LINK "$T/good.lcmlog" >"$T/link.jsonl" 2>&1
+python3 -c "import json,sys; m=[json.loads(x) for x in open(sys.argv[1])]; sys.exit(0 if m and m[0]['utime'] > 0 and m[-1]['bytes_to_mcu'] > 0 else 1)" "$T/link.jsonl" \
+  && ok "MM_LINK logged from the Connect on ($(wc -l <"$T/link.jsonl") messages)" || bad "MM_LINK after Connect: $(head -3 "$T/link.jsonl")"
 touch "$T/stop"; wait $MPID; MPID=
 n=$(cat "$T/mcu_bytes" 2>/dev/null); [ "${n:-0}" -gt 0 ] && ok "the MCU end received $n bytes" || bad "nothing arrived on the pty"
 

@@ -17,8 +17,10 @@ else
 fi
 
 # platformio.ini parses (PlatformIO cannot download its platforms here: no build)
-if command -v pio >/dev/null; then
-  pio project config >"$T/pio" 2>&1 && grep -q "env:megaatmega2560" "$T/pio" && grep -q "env:native" "$T/pio" \
+PIO=${PIO:-${BUILD:-build}/pio/bin/pio}; [ -x "$PIO" ] || PIO=$(command -v pio)
+if [ -n "$PIO" ]; then
+  PLATFORMIO_SETTING_ENABLE_TELEMETRY=No "$PIO" project config >"$T/pio" 2>&1 && grep -q "env:uno" "$T/pio" && grep -q "env:megaatmega2560" "$T/pio" \
+    && grep -q "env:native" "$T/pio" && grep -q "symlink://hal/arduino" "$T/pio" \
     && ok "platformio.ini parses" || bad "platformio.ini: $(tail -3 "$T/pio")"
 else
   echo "SKIP cli_hil platformio.ini check: pio not installed"
@@ -44,7 +46,7 @@ want_rc 2 "bad maze with a link" "$S" --maze "$T/none.txt" --pty
 # mmsim --pty with hil_mcu.py as the MCU: sensors out, motors in, silence,
 # unplug and replug; in real time, 4 s each
 hil() { local proto=$1
-  "$S" --maze $M --pty --protocol "$proto" --time-limit 4 --json >"$T/$proto.json" 2>"$T/$proto.err" &
+  "$S" --maze $M --pty --protocol "$proto" --time-limit 4 --json --lcm-log "$T/$proto.lcmlog" >"$T/$proto.json" 2>"$T/$proto.err" &
   SIMPID=$!
   local p="" i
   for i in $(seq 100); do p=$(sed -n 's/^mmsim: pty //p' "$T/$proto.err" 2>/dev/null); [ -n "$p" ] && break; sleep 0.05; done
@@ -64,6 +66,15 @@ print(d['driver'], l['protocol'], l['connects'] >= 2, l['disconnects'] >= 1, l['
       sum(e[k] for k in ('crc','cobs','overflow','unknown','length','value')), l['mcu_log_lines'] >= 1,
       d['final_pose']['y_m'] > 0.09 + 0.03, l['tx_dropped'], l['handshake'])" "$T/$proto.json" 2>&1)
   [ "$got" = "serial $proto True True True 1 True True 0 True" ] && ok "$proto: link report (one garbage chunk counted)" || bad "$proto: link report: $got $(cat "$T/$proto.json")"
+  # MM_LINK telemetry (10 Hz): the same counters as the JSON; connected goes
+  # 1 (MCU open), 0 (unplugged), 1 (back), 0 (the test MCU ended)
+  "${MMLOG:-build/mmlog}" --dump MM_LINK "$T/$proto.lcmlog" >"$T/$proto.link" 2>&1
+  got=$(python3 -c "
+import json,sys; d=json.load(open(sys.argv[1]))['link']; m=[json.loads(x) for x in open(sys.argv[2])]
+print(len(m), m[-1]['bytes_to_mcu'] == d['tx_bytes'], m[-1]['bytes_from_mcu'] == d['rx_bytes'], m[-1]['frame_errors'],
+      m[-1]['baud'] == d['baud'], ''.join('1' if x['connected'] else '0' for x in m).strip('0').count('01'), m[-1]['handshake'] == d['handshake'])" \
+      "$T/$proto.json" "$T/$proto.link" 2>&1)
+  [ "$got" = "40 True True 1 True 1 True" ] && ok "$proto: MM_LINK log (counters, unplug and replug, one error)" || bad "$proto: MM_LINK: $got"
   grep -q "MCU silent: motors off" "$T/$proto.err" && grep -q "disconnected, motors off" "$T/$proto.err" \
     && grep -q "^mcu: hello from the test MCU" "$T/$proto.err" && ok "$proto: states reported" || bad "$proto: states: $(cat "$T/$proto.err")"
 }

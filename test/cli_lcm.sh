@@ -91,6 +91,34 @@ EOF
 want_rc 0 "mmlog text table" "$L" "$T/r.lcmlog"
 grep -q '^channel  *count  *rate_hz  *first_s  *last_s  *bad$' "$T/out" && grep -q '^MM_POSE ' "$T/out" && ok "mmlog table" || bad "mmlog table: $(cat "$T/out")"
 
+# MM_LINK in processor-in-the-loop runs (the Mega image in simavr, 1 Mbaud):
+# 10 Hz and at the end, totals equal the JSON's link report, each message's
+# utilisation is its window's bytes over the window's capacity.
+E=${BUILD:-build}/arduino/mega2560/Mouse-5x5.elf
+if [ -f "$E" ]; then
+  want_rc 1 "PIL run with --lcm-log" "$S" --maze $M --avr "$E" --mcu atmega2560 --time-limit 2.05 --json --lcm-log "$T/pil.lcmlog"
+  cp "$T/out" "$T/pil.json"
+  "$L" --dump MM_LINK "$T/pil.lcmlog" >"$T/pil.link" 2>&1
+  python3 - "$T/pil.json" "$T/pil.link" <<'EOF2' && ok "MM_LINK: rate, totals, windowed utilisation" || bad "MM_LINK in PIL"
+import json, sys
+d = json.load(open(sys.argv[1]))["link"]; m = [json.loads(x) for x in open(sys.argv[2])]
+fails = []
+if [x["utime"] for x in m] != [100000 * i for i in range(1, 21)] + [2050000]: fails.append("times %s" % [x["utime"] for x in m])
+last = m[-1]
+if (last["bytes_to_mcu"], last["bytes_from_mcu"], last["baud"]) != (d["tx_bytes"], d["rx_bytes"], d["baud"]): fails.append("totals")
+if not (last["connected"] and last["handshake"] and last["frame_errors"] == 0 and last["dropped_to_mcu"] == 0): fails.append("state")
+prev_t = prev_tx = prev_rx = 0
+for x in m:  # a window of w seconds at 1 Mbaud carries at most 100000*w bytes
+    cap = (x["utime"] - prev_t) / 1e6 * d["baud"] / 10
+    for k, b in (("util_to_mcu", x["bytes_to_mcu"] - prev_tx), ("util_from_mcu", x["bytes_from_mcu"] - prev_rx)):
+        if abs(x[k] - b / cap) > 1e-9 or not 0 < x[k] < 1: fails.append("%s at %d: %s vs %s" % (k, x["utime"], x[k], b / cap))
+    prev_t, prev_tx, prev_rx = x["utime"], x["bytes_to_mcu"], x["bytes_from_mcu"]
+print("\n".join(fails)); sys.exit(1 if fails else 0)
+EOF2
+else
+  echo "SKIP cli_lcm MM_LINK: $E not built (make arduino)"
+fi
+
 # Errors: one line, exit 2 for a bad flag, 3 for an output that cannot be opened; nothing left behind.
 want_rc 3 "unwritable log" "$S" --maze $M --lcm-log "$T/no/such/dir/x.lcmlog"
 one_line "unwritable log"; grep -q "cannot write the LCM log" "$T/err" || bad "unwritable log message: $(cat "$T/err")"

@@ -57,7 +57,7 @@ static int setup(void **state)
     hal_sim_attach(&sim);
     driver_init(&drv, &maze, &cfg, 1);
     snprintf(log_path, sizeof log_path, "/tmp/test_replay_%d.lcmlog", (int)getpid());
-    telem_opts_t o = { NULL, log_path, 0, "gen.txt" };
+    telem_opts_t o = { NULL, log_path, 0, NULL, "gen.txt" };
     if (telem_open(&tel, &o, &sim, err, sizeof err) != 0) return -1;
     maze_forget(&bmap, &maze);
     maze_set_wall(&bmap, 0, MAZE_EAST, MAZE_WALL_CLOSED);

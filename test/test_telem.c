@@ -98,7 +98,7 @@ static void test_memq_messages(void **state)
     assert_int_equal(sim_init(&sim, &cfg, &m, 1), 0);
     hal_sim_attach(&sim);
     memset(&seen, 0, sizeof seen);
-    telem_opts_t o = { "memq://", NULL, 100.0, NULL };
+    telem_opts_t o = { "memq://", NULL, 100.0, NULL, NULL };
     assert_int_equal(telem_open(&t, &o, &sim, err, sizeof err), 0);
     lcm_t *l = t.lcm;
     mmlcm_pose_t_subscription_t *s1 = mmlcm_pose_t_subscribe(l, "MM_POSE", on_pose, NULL);
@@ -213,13 +213,13 @@ static void test_open_errors(void **state)
     config_defaults(&cfg);
     open_maze(&m);
     assert_int_equal(sim_init(&sim, &cfg, &m, 1), 0);
-    telem_opts_t o = { NULL, "/nonexistent-dir/x.lcmlog", 0, NULL };
+    telem_opts_t o = { NULL, "/nonexistent-dir/x.lcmlog", 0, NULL, NULL };
     assert_int_equal(telem_open(&t, &o, &sim, err, sizeof err), -1);
     assert_non_null(strstr(err, "cannot write the LCM log"));
     assert_null(strchr(err, '\n'));
 
     snprintf(path, sizeof path, "/tmp/test_telem_%d.lcmlog", (int)getpid());
-    telem_opts_t o2 = { "nosuch://x", path, 0, NULL };
+    telem_opts_t o2 = { "nosuch://x", path, 0, NULL, NULL };
     assert_int_equal(telem_open(&t, &o2, &sim, err, sizeof err), -1);
     assert_non_null(strstr(err, "nosuch://x: cannot open the LCM URL"));
     assert_int_equal(access(path, F_OK), -1); /* the log was not created */

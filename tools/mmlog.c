@@ -103,9 +103,12 @@ static int decode(const char *ch, const void *data, int len, int64_t *ut, json_t
         mmlcm_link_t m;
         if (mmlcm_link_t_decode(data, 0, len, &m) != len) return -1;
         *ut = m.utime;
-        if (j) o = json_pack("{s:I, s:I, s:I, s:f, s:f, s:i}", "utime", (json_int_t)m.utime, "bytes_to_mcu",
-                             (json_int_t)m.bytes_to_mcu, "bytes_from_mcu", (json_int_t)m.bytes_from_mcu, "util_to_mcu",
-                             m.util_to_mcu, "util_from_mcu", m.util_from_mcu, "frame_errors", (int)m.frame_errors);
+        if (j)
+            o = json_pack("{s:I, s:I, s:I, s:f, s:f, s:i, s:I, s:i, s:b, s:b}", "utime", (json_int_t)m.utime,
+                          "bytes_to_mcu", (json_int_t)m.bytes_to_mcu, "bytes_from_mcu", (json_int_t)m.bytes_from_mcu,
+                          "util_to_mcu", m.util_to_mcu, "util_from_mcu", m.util_from_mcu, "frame_errors",
+                          (int)m.frame_errors, "dropped_to_mcu", (json_int_t)m.dropped_to_mcu, "baud", (int)m.baud,
+                          "connected", (int)m.connected, "handshake", (int)m.handshake);
     } else if (!strcmp(ch, "MM_MAZE")) {
         mmlcm_maze_t m;
         if (mmlcm_maze_t_decode(data, 0, len, &m) != len) return -1;

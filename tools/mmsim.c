@@ -140,9 +140,10 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         fw_set_maze(&maze);
         fw_setup();
     }
-    telem_opts_t to = o->telem;
-    to.maze_path = maze_path; /* MM_MAZE names it */
-    if (tel_on && telem_open(&tel, &to, &sim, err, sizeof err) != 0) {
+    telem_opts_t topts = o->telem;
+    if (o->serial) topts.link = &lnk; /* MM_LINK in HIL/PIL runs */
+    topts.maze_path = maze_path;      /* MM_MAZE names it */
+    if (tel_on && telem_open(&tel, &topts, &sim, err, sizeof err) != 0) {
         fprintf(stderr, "mmsim: %s\n", err);
         if (!o->scripted) hal_sim_attach(NULL);
         sim_free(&sim);
@@ -230,6 +231,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
             else {
                 hil = 1;
                 sim.cmd[0] = sim.cmd[1] = 0;
+                if (tel_on) tel.link = &lnk; /* MM_LINK from now on */
                 view_set_status(view, "connected: the MCU drives from now on");
             }
         }
@@ -513,7 +515,7 @@ int main(int argc, char **argv)
         { "f-cpu", required_argument, 0, 2006 },
         { 0, 0, 0, 0 },
     };
-    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, { NULL, NULL, 0, NULL }, NULL, 0, NULL, 0, { 1024, 720, 1, 1, "", 115200 },
+    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, { NULL, NULL, 0, NULL, NULL }, NULL, 0, NULL, 0, { 1024, 720, 1, 1, "", 115200 },
                  0, { NULL, 0, 0, LINK_FRAMED, 0 }, NULL, NULL, 0 }; /* scripted by default: it honours --runs */
     const char *maze = NULL, *batch = NULL;
     double v;
