@@ -7,7 +7,7 @@ DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev l
 	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev \
 	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev \
 	liblcm-java default-jdk-headless libjchart2d-java xvfb \
-	libpng-dev libglfw3-dev libgl-dev python3-venv libx11-dev libxtst6
+	libpng-dev libglfw3-dev libgl-dev python3-venv libx11-dev libxtst-dev
 
 CC      ?= gcc
 STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
@@ -88,10 +88,10 @@ $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
 
-# XTEST input for test/cli_connect.sh (libXtst.so.6 without its -dev header: test/xinput.c declares the calls)
+# XTEST input for test/cli_connect.sh (libxtst-dev)
 $(B)/test/xinput: test/xinput.c | deps
 	@mkdir -p $(dir $@)
-	$(CC) $(STD) $(WARN) -O1 $< -lX11 -l:libXtst.so.6 -o $@
+	$(CC) $(STD) $(WARN) -O1 $< -lX11 -lXtst -o $@
 
 # deps first, then a fresh make: on a new machine the packages (and the Arduino
 # core's files that the wildcards below list) only exist once deps has run.

@@ -1,7 +1,5 @@
 /* xinput.c - types and clicks into an X display through the XTEST
- * extension, for the viewer's CLI tests (test/cli_connect.sh). Debian ships
- * libXtst.so.6 with libglfw3's X stack but its header only in libxtst-dev,
- * so the three calls used are declared here (X11/extensions/XTest.h).
+ * extension, for the viewer's CLI tests (test/cli_connect.sh; libxtst-dev).
  *
  *   xinput wait NAME SECONDS       wait until a top-level window is named NAME
  *   xinput click X Y               left click at root (X, Y)
@@ -9,15 +7,12 @@
  *   xinput key KEYSYM              press and release one key (Return, Escape)
  * Exit 0 done, 1 not found / failed, 2 usage. */
 #include <X11/Xlib.h>
+#include <X11/extensions/XTest.h>
 #include <X11/keysym.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-
-extern int XTestFakeButtonEvent(Display *, unsigned int button, Bool is_press, unsigned long delay);
-extern int XTestFakeMotionEvent(Display *, int screen, int x, int y, unsigned long delay);
-extern int XTestFakeKeyEvent(Display *, unsigned int keycode, Bool is_press, unsigned long delay);
 
 static void nap_ms(long ms)
 {
