@@ -288,6 +288,26 @@ void world_pose(const world_t *w, double *x_m, double *y_m, double *heading_rad)
     *heading_rad = atan2(f[1], f[0]);
 }
 
+void world_place(world_t *w, double x_m, double y_m, double heading_rad)
+{
+    double x0, y0, h0;
+    world_pose(w, &x0, &y0, &h0);
+    double da = heading_rad - h0, ca = cos(da), sa = sin(da);
+    dMatrix3 r;
+    dRFromAxisAndAngle(r, 0, 0, 1, da);
+    dBodyID b[3] = { w->chassis, w->wheel[0], w->wheel[1] };
+    for (int i = 0; i < 3; i++) {
+        const dReal *p = dBodyGetPosition(b[i]);
+        double dx = p[0] - x0, dy = p[1] - y0, z = p[2];
+        dMatrix3 r2;
+        dMultiply0(r2, r, dBodyGetRotation(b[i]), 3, 3, 3);
+        dBodySetPosition(b[i], x_m + ca * dx - sa * dy, y_m + sa * dx + ca * dy, z);
+        dBodySetRotation(b[i], r2);
+        dBodySetLinearVel(b[i], 0, 0, 0);
+        dBodySetAngularVel(b[i], 0, 0, 0);
+    }
+}
+
 void world_velocity(const world_t *w, double *v_m_s, double *omega_rad_s)
 {
     const dReal *lv = dBodyGetLinearVel(w->chassis), *av = dBodyGetAngularVel(w->chassis);

@@ -34,6 +34,9 @@ void world_step(world_t *w, double torque_left_nm, double torque_right_nm);
 /* Body centre and heading; speed along the heading (m/s) and yaw rate. */
 void world_pose(const world_t *w, double *x_m, double *y_m, double *heading_rad);
 void world_velocity(const world_t *w, double *v_m_s, double *omega_rad_s);
+/* Put the robot, at rest, with its body centre at (x_m, y_m) facing
+ * heading_rad (a rigid move of chassis and wheels; the mms reset). */
+void world_place(world_t *w, double x_m, double y_m, double heading_rad);
 /* Height of the body centre above the floor, m (to check it stays down). */
 double world_body_z(const world_t *w);
 
