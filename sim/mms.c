@@ -595,6 +595,15 @@ void *mms_json(const mms_t *m)
                           m->o.ideal_walls, "timeout_ms", m->o.timeout_ms, "commands", (json_int_t)m->commands,
                           "invalid_commands", (json_int_t)m->invalid, "moves", (json_int_t)m->moves, "crashes",
                           (json_int_t)m->crashes, "resets", (json_int_t)m->resets, "stats", st);
+    json_t *colors = json_object(), *texts = json_object();
+    for (uint16_t c = 0; c < maze_cells(m->truth); c++) {
+        char key[16];
+        snprintf(key, sizeof key, "%u,%u", maze_x(m->truth, c), maze_y(m->truth, c));
+        if (m->color[c]) json_object_set_new(colors, key, json_stringn(&m->color[c], 1));
+        if (m->text[c][0]) json_object_set_new(texts, key, json_string(m->text[c]));
+    }
+    json_object_set_new(j, "colors", colors);
+    json_object_set_new(j, "texts", texts);
     int es = m->exit_status;
     json_object_set_new(j, "exit_status", es >= 0 && WIFEXITED(es) ? json_integer(WEXITSTATUS(es)) : json_null());
     json_object_set_new(j, "exit_signal", es >= 0 && WIFSIGNALED(es) ? json_integer(WTERMSIG(es)) : json_null());
