@@ -46,6 +46,12 @@ grep -q '^conform: [0-9]* checks ok$' "$T/err" && ok "conformance: $(grep -o '[0
 [ "$(py "(d['exit_reason'], d['mms']['resets'], d['mms']['colors'], sorted(d['mms']['texts'].items()))")" = "('mms_exited', 1, {'3,3': 'G'}, [('0,1', 'ok'), ('1,1', 'hello worl'), ('2,2', 'a?b?'), ('3,4', 'two  space'), ('4,4', 'abc')])" ] \
   && ok "colours and texts (10 printable characters, others '?')" || bad "colours/texts: $(cat "$T/out")"
 
+# the run report draws the algorithm's colours (floodfill: cyan on its path) and texts
+want_rc 0 "report of an mms run" "$S" --maze mazes/gen-8x8-s1.txt --mms "$A/floodfill.py 2" --report "$T/r.png"
+cyan=$(python3 test/pngcheck.py "$T/r.png" near:00ffff:8)
+[ "${cyan:-0}" -gt 2000 ] && ok "report: cell colours drawn ($cyan cyan pixels)" || bad "report: cyan pixels: $cyan"
+grep -q '>6</text>' "$T/r.svg" && ok "report: cell texts drawn" || bad "report: no cell text in the SVG"
+
 # faults: the run ends with one message, the JSON summary, the child reaped
 fault() { local rc=$1 reason=$2 desc=$3; shift 3
   want_rc "$rc" "fault: $desc" "$S" --maze mazes/gen-5x5-s1.txt --json --mms-timeout-ms 300 --mms "$@"

@@ -337,6 +337,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         char title[300], rerr[600];
         snprintf(title, sizeof title, "%s  %ux%u  seed %llu  %s driver  exit: %s", maze_path, maze.width, maze.height,
                  (unsigned long long)o->seed, driver_name, reason);
+        if (o->mms.command) report_set_cells(rep, mms.color, &mms.text[0][0], sizeof mms.text[0]);
         if (report_write(rep, &sim, o->scripted || o->serial ? NULL : mouse_map(), o->report, title, rerr, sizeof rerr) != 0) {
             fprintf(stderr, "%s\n", rerr);
             report_failed = 1;
