@@ -13,6 +13,7 @@ enum {
     HUD_BTN_BIRD, HUD_BTN_FOLLOW, HUD_BTN_TOP, HUD_BTN_OVERLAY,
     HUD_BTN_SLOWER, HUD_BTN_PAUSE, HUD_BTN_STEP, HUD_BTN_FASTER,
     HUD_BTN_POST, HUD_BTN_CONNECT,
+    HUD_BTN_RESET, /* mms runs only: the Reset button (wasReset) */
     HUD_BTN_COUNT
 };
 
@@ -31,6 +32,7 @@ typedef struct {
     const char *port;     /* serial port text ("" none) */
     long baud;
     const char *status;   /* one line of status text, or NULL */
+    int mms;              /* an mms algorithm drives: show Reset */
 } hud_info_t;
 
 /* Where the buttons sit in a win_w x win_h window. */

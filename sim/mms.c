@@ -102,6 +102,15 @@ int mms_stats_get(const mms_stats_t *s, const char *name, char *out, size_t len)
     return 0;
 }
 
+uint32_t mms_colour_rgb(char letter)
+{
+    static const char letters[] = "kbacgorwyBCAGRY";
+    static const uint32_t rgb[] = { 0x000000, 0x0000FF, 0xA0A0A4, 0x00FFFF, 0x00FF00, 0xFFA500, 0xFF0000, 0xFFFFFF,
+                                    0xFFFF00, 0x000080, 0x008080, 0x808080, 0x008000, 0x800000, 0x808000 };
+    const char *p = letter ? strchr(letters, letter) : NULL;
+    return p ? rgb[p - letters] : 0;
+}
+
 /* ---- commands ---- */
 
 void mms_init(mms_t *m, const mms_opts_t *o, const maze_t *truth)

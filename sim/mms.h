@@ -88,6 +88,10 @@ typedef struct mms_s {
     uint8_t drawn_walls[MAZE_MAX_CELLS]; /* bit d = setWall on side d */
 } mms_t;
 
+/* RGB (0xRRGGBB) of an mms colour letter (kbacgorwyBCAGRY: Qt's named
+ * colours, orange #ffa500); 0 for anything else. */
+uint32_t mms_colour_rgb(char letter);
+
 /* Set up the state without a child (mms_start does it; unit tests). */
 void mms_init(mms_t *m, const mms_opts_t *o, const maze_t *truth);
 /* Start the algorithm; the firmware must be set up (fw_setup) first. 0, or

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "font.h"
+#include "mms.h"
 #include "image.h"
 #include "outfile.h"
 #include "solve.h"
@@ -55,16 +56,6 @@ void report_set_cells(report_t *r, const char *colours, const char *texts, size_
         r->colour[k] = colours[k];
         snprintf(r->text[k], sizeof r->text[k], "%s", texts + k * text_stride);
     }
-}
-
-/* mms's colour letters as RGB (Qt's named colours; orange #ffa500). */
-static uint32_t mms_rgb(char letter)
-{
-    static const char letters[] = "kbacgorwyBCAGRY";
-    static const uint32_t rgb[] = { 0x000000, 0x0000FF, 0xA0A0A4, 0x00FFFF, 0x00FF00, 0xFFA500, 0xFF0000, 0xFFFFFF,
-                                    0xFFFF00, 0x000080, 0x008080, 0x808080, 0x008000, 0x800000, 0x808000 };
-    const char *p = letter ? strchr(letters, letter) : NULL;
-    return p ? rgb[p - letters] : 0;
 }
 
 void report_step(report_t *r, const sim_t *s)
@@ -232,7 +223,7 @@ static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_t 
         for (uint8_t x = 0; x < m->width; x++) {
             maze_cell_t k = maze_cell(m, x, y);
             uint32_t col = k == m->start ? C_START : maze_is_goal(m, k) ? C_GOAL : r->visited[k] ? C_VISITED : C_CELL;
-            if (r->colour[k]) col = mms_rgb(r->colour[k]);
+            if (r->colour[k]) col = mms_colour_rgb(r->colour[k]);
             c_rect(c, px_x(L, x), px_y(L, y + 1), px_x(L, x + 1), px_y(L, y), col);
         }
 
@@ -279,7 +270,7 @@ static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_t 
         int fit = (int)((cp - wall_px - 2) / (FONT_W + 1));
         if (!r->text[k][0] || fit < 1) continue;
         snprintf(t, sizeof t, "%.*s", fit < 11 ? fit : 11, r->text[k]);
-        uint32_t bg = r->colour[k] ? mms_rgb(r->colour[k]) : C_CELL;
+        uint32_t bg = r->colour[k] ? mms_colour_rgb(r->colour[k]) : C_CELL;
         int dark = ((bg >> 16) & 255) + ((bg >> 8) & 255) + (bg & 255) < 300;
         c_text_at(c, px_x(L, maze_x(m, k)) + wall_px / 2 + 1, px_y(L, maze_y(m, k) + 1) + wall_px / 2 + 1, 1,
                   dark ? 0xFFFFFFu : C_TEXT, t);

@@ -1,6 +1,8 @@
 /* scene.c - 3D scene in legacy OpenGL (see scene.h). */
 #include "scene.h"
 
+#include "mms.h"
+
 #include <GL/gl.h>
 #include <math.h>
 #include <string.h>
@@ -296,5 +298,22 @@ void scene_draw(sim_t *s, int cam, const scene_orbit_t *orbit, const scene_belie
     rays(s);
     if (show_overlay && b && b->map) overlay(s, b);
     glDisable(GL_LIGHTING);
+    glDisable(GL_DEPTH_TEST);
+}
+
+void scene_draw_cells(const sim_t *s, const char *colours)
+{
+    const maze_t *m = s->maze;
+    double cell = s->cfg.cell_m;
+    glEnable(GL_DEPTH_TEST);
+    glBegin(GL_QUADS);
+    for (uint16_t k = 0; k < maze_cells(m); k++) {
+        if (!colours[k]) continue;
+        double x0 = maze_x(m, (maze_cell_t)k) * cell + 0.012, y0 = maze_y(m, (maze_cell_t)k) * cell + 0.012,
+               x1 = x0 + cell - 0.024, y1 = y0 + cell - 0.024, z = 0.0008; /* over the start and goal tiles */
+        colour(mms_colour_rgb(colours[k]), 1);
+        glVertex3d(x0, y0, z), glVertex3d(x1, y0, z), glVertex3d(x1, y1, z), glVertex3d(x0, y1, z);
+    }
+    glEnd();
     glDisable(GL_DEPTH_TEST);
 }

@@ -30,6 +30,8 @@ struct view {
     double drag_x, drag_y;
     char status[96];
     sim_t *sim;              /* the simulation being shown (for callbacks) */
+    const char *mms_colours; /* view_set_mms: cell colours, or NULL */
+    int *mms_reset;          /* set to 1 by the Reset button, or NULL */
 };
 
 static int glfw_users;
@@ -87,6 +89,12 @@ void view_button(view_t *v, sim_t *s, int button)
             snprintf(v->status, sizeof v->status, "centre post %s", world_has_centre_post(s->world) ? "on" : "off");
         }
         break;
+    case HUD_BTN_RESET:
+        if (v->mms_reset) {
+            *v->mms_reset = 1;
+            snprintf(v->status, sizeof v->status, "reset pressed: waiting for the algorithm's ackReset");
+        }
+        break;
     case HUD_BTN_CONNECT:
         snprintf(v->status, sizeof v->status, "the link opens at start: mmsim --serial PORT / --pty / --avr");
         break;
@@ -113,6 +121,7 @@ void view_key(view_t *v, sim_t *s, int key)
     case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD: view_button(v, s, HUD_BTN_FASTER); break;
     case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: view_button(v, s, HUD_BTN_SLOWER); break;
     case GLFW_KEY_P: view_button(v, s, HUD_BTN_POST); break;
+    case GLFW_KEY_X: view_button(v, s, HUD_BTN_RESET); break;
     case GLFW_KEY_R: orbit_reset(&v->orbit[v->camera]); break;
     case GLFW_KEY_ESCAPE: case GLFW_KEY_Q: v->closed = 1; break;
     default: break;
@@ -233,8 +242,9 @@ static void draw(view_t *v, sim_t *s)
         b.heading = hb->heading;
     }
     scene_draw(s, v->camera, &v->orbit[v->camera], &b, v->overlay, fw, fh);
+    if (v->mms_colours) scene_draw_cells(s, v->mms_colours);
     const char *status = v->status[0] ? v->status : v->overlay && !b.map ? "no mouse map to overlay yet" : NULL;
-    hud_info_t in = { v->camera, v->overlay, v->paused, v->speed, v->o.port, v->o.baud, status };
+    hud_info_t in = { v->camera, v->overlay, v->paused, v->speed, v->o.port, v->o.baud, status, v->mms_reset != NULL };
     hud_draw(s, &in, v->o.width, v->o.height);
 }
 
@@ -322,4 +332,10 @@ int view_screenshot(view_t *v, sim_t *s, const char *path, char *err, size_t err
     if (rc != 0 && !err[0]) snprintf(err, errlen, "%s: cannot read the frame back from OpenGL", path);
     free(px);
     return rc;
+}
+
+void view_set_mms(view_t *v, const char *colours, int *reset)
+{
+    v->mms_colours = colours;
+    v->mms_reset = reset;
 }
