@@ -12,6 +12,7 @@
  *   + / -                  speed x2 / /2 (x1 .. x64)
  *   O                      discovered walls and planned path overlay
  *   P or "Toggle post"     add/remove the centre post in the physics world
+ *   X or "Reset"           mms runs: press mms's Reset button (wasReset)
  *   Esc or Q               close
  * The UI actions work without a window too (view_button, view_click,
  * view_key), which is how they are tested. */
