@@ -16,6 +16,8 @@ for m in gen-5x5-s1 gen-6x6-s1 gen-8x8-s1; do
   [ "$(py "(d['driver'], d['reached_goal'], d['exit_reason'], len(d['laps']), d['collisions'], d['mms']['crashes'], d['mms']['stats']['best_run_distance'] > 0, d['mms']['stats']['score'] < 2000)")" = "('mms', True, 'mms_exited', 2, 0, 0, True, True)" ] \
     && ok "floodfill $m: two runs to the goal, no crash, no contact" || bad "floodfill $m: $(cat "$T/out")"
 done
+[ "$(py "sorted(d.keys()) + sorted(d['mms'].keys()) + sorted(d['mms']['stats'].keys())")" = "['best_run_s', 'collisions', 'config_hash', 'driver', 'exit_reason', 'final_pose', 'first_run_s', 'laps', 'maze', 'mms', 'reached_goal', 'real_time_factor', 'seed', 'sim_time_s', 'wall_time_s', 'colors', 'command', 'commands', 'crashes', 'exit_signal', 'exit_status', 'ideal_walls', 'invalid_commands', 'moves', 'resets', 'stats', 'texts', 'timeout_ms', 'best_run_distance', 'best_run_effective_distance', 'best_run_turns', 'current_run_distance', 'current_run_effective_distance', 'current_run_turns', 'score', 'total_distance', 'total_effective_distance', 'total_turns']" ] \
+  && ok "json keys" || bad "json keys: $(cat "$T/out")"
 for m in gen-5x5-s1 gen-8x8-s1; do
   want_rc 0 "wall follower $m" "$S" --maze mazes/$m.txt --mms "$A/wallfollow.py" --json
   [ "$(py "(d['reached_goal'], d['exit_reason'], d['mms']['exit_status'])")" = "(True, 'mms_exited', 0)" ] && ok "wall follower $m reached the goal" || bad "wall follower $m: $(cat "$T/out")"

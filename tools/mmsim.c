@@ -350,9 +350,11 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         static solve_path_t truth, known;
         int ok_truth = solve_best(&maze, 0, &truth) == 0, ok_known = solve_best(mouse_map(), 0, &known) == 0;
         uint16_t proven = mouse_proven_at_step();
-        json_object_set_new(o_json, "proven_at_step", proven == 0xFFFFu ? json_null() : json_integer(proven));
-        json_object_set_new(o_json, "final_path_optimal", json_boolean(ok_truth && ok_known && proven != 0xFFFFu &&
-                                                                       known.cost == truth.cost));
+        if (!o->mms.command) { /* the firmware's own search (an mms algorithm searches by itself) */
+            json_object_set_new(o_json, "proven_at_step", proven == 0xFFFFu ? json_null() : json_integer(proven));
+            json_object_set_new(o_json, "final_path_optimal", json_boolean(ok_truth && ok_known && proven != 0xFFFFu &&
+                                                                           known.cost == truth.cost));
+        }
         hal_sim_attach(NULL);
     }
 
