@@ -513,7 +513,7 @@ const struct motion_s *mouse_motion(void) { return &mo; }
  * ahead and ends with a front fix; turns are start_turn's in-place turns
  * about the cell's centre. The mouse stands at a cell centre between
  * commands. */
-enum { CMD_NONE = 0, CMD_SENSE, CMD_FORWARD, CMD_TURN, CMD_RUN };
+enum { CMD_NONE = 0, CMD_SENSE, CMD_FORWARD, CMD_TURN };
 static uint8_t cmd_kind;      /* CMD_*: the command under way */
 static uint8_t cmd_result;    /* MOUSE_CMD_* of the last command */
 static uint8_t cmd_left;      /* cells of the forward move still to enter */
@@ -549,20 +549,6 @@ int mouse_cmd_forward(uint8_t cells)
     cmd_left = cells;
     cmd_moved = 0;
     cmd_blocked = 0;
-    /* every wall on the way known open and the one at the end known: a
-     * straight of the speed runs (RC_RUN_MM_S, no sensing needed) */
-    uint8_t fast = cells >= 2 && maze_wall(&ex.map, c, st.heading) != MAZE_WALL_UNKNOWN;
-    c = ex.cell;
-    for (uint8_t i = 0; i < cells && fast; i++) {
-        if (maze_wall(&ex.map, c, st.heading) != MAZE_WALL_OPEN) fast = 0;
-        c = maze_step(&ex.map, c, st.heading);
-    }
-    if (fast) {
-        cmd_kind = CMD_RUN;
-        start_forward(cells * RC_CELL_MM, RC_RUN_MM_S, 0, RC_RUN_ACCEL_MM_S2);
-        wall_ahead = !maze_passable(&ex.map, c, st.heading, 0);
-        return 0;
-    }
     cmd_kind = CMD_FORWARD;
     start_forward(RC_CELL_MM, RC_SEARCH_MM_S, RC_SEARCH_MM_S, RC_ACCEL_MM_S2);
     return 0;
@@ -666,15 +652,6 @@ static void cmd_step(void)
         /* facing a wall: put the robot back on the cell's centre (as the
          * U-turn's middle step), so that the next turn sweeps clear */
         if (maze_wall(&ex.map, ex.cell, st.heading) == MAZE_WALL_CLOSED && !front_fix()) return;
-        cmd_finish(MOUSE_CMD_DONE);
-        break;
-    case CMD_RUN: /* as run_step's straight */
-        centring();
-        if (wall_ahead) align_to_front_wall(0);
-        if (motion_busy(&mo)) return;
-        no_centring();
-        if (wall_ahead && !front_fix()) return;
-        for (; cmd_left > 0; cmd_left--, cmd_moved++) explore_moved(&ex, st.heading);
         cmd_finish(MOUSE_CMD_DONE);
         break;
     default:

@@ -524,6 +524,14 @@ int mms_service(mms_t *m, struct sim_s *s)
     for (;;) {
         if (m->pending) {
             uint8_t st = mouse_cmd_status();
+            if (st == MOUSE_CMD_BUSY && sim_time_s(s) - m->move_start_s > MMS_MOVE_MAX_S) {
+                m->crashes++;
+                send_line(m, "crash");
+                snprintf(m->message, sizeof m->message,
+                         "mmsim: mms: the robot did not finish a move in %.0f s of simulation time: stuck", MMS_MOVE_MAX_S);
+                m->reason = "crash_stop";
+                return MMS_END;
+            }
             if (st == MOUSE_CMD_BUSY) return MMS_STEP;
             int was = m->pending;
             m->pending = MOVE_NONE;
@@ -542,7 +550,8 @@ int mms_service(mms_t *m, struct sim_s *s)
             if (st == MOUSE_CMD_CRASHED) {
                 if (was != MOVE_SENSE) send_line(m, "crash");
                 m->crashes++;
-                return end_run(m, "crash_stop", "mmsim: mms: the robot is stuck (motion stall): run ended%.0ld", "", 0);
+                return end_run(m, "crash_stop", "mmsim: mms: the robot is stuck (motion stall) during a %s: run ended%.0ld",
+                               was == MOVE_FORWARD ? "forward move" : was == MOVE_TURN ? "turn" : "reset", 0);
             }
             if (m->o.reset_at_s >= 0 && sim_time_s(s) >= m->o.reset_at_s) {
                 m->was_reset = 1; /* the Reset button, pressed once */
@@ -558,7 +567,10 @@ int mms_service(mms_t *m, struct sim_s *s)
             return end_run(m, "mms_flood", "mmsim: mms: the algorithm '%s' sent %ld commands without a move",
                            m->o.command, MMS_FLOOD_LIMIT);
         if (read_line(m, line) != MMS_STEP) return MMS_END;
-        if (mms_execute(m, s, line, resp, sizeof resp)) continue; /* a move: answered when done */
+        if (mms_execute(m, s, line, resp, sizeof resp)) { /* a move: answered when done */
+            m->move_start_s = sim_time_s(s);
+            continue;
+        }
         if (resp[0]) {
             if (!strcmp(resp, "crash")) m->crashes++;
             int w = send_line(m, resp);

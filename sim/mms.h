@@ -30,6 +30,7 @@ struct sim_s;
 #define MMS_LINE_MAX 1024         /* bytes per command line */
 #define MMS_FLOOD_LIMIT 1000000L  /* commands in a row without a move */
 #define MMS_TEXT_MAX 10           /* characters of cell text (mms) */
+#define MMS_MOVE_MAX_S 30.0       /* sim seconds a move may take: longer = stuck (a 32-cell straight takes ~12 s) */
 
 /* mms's Stats tab (Stats.cpp): distances in cells, effective distance
  * counts every cell of a moveForward N after the second as 0.5. */
@@ -75,7 +76,7 @@ typedef struct mms_s {
     char buf[MMS_LINE_MAX + 1];
     size_t len;
     int pending;           /* a move is under way (MMS_MOVE_*) */
-    int pending_turn;      /* the turn under way counts as a turn */
+    double move_start_s;   /* sim time the move under way began */
     int was_reset;
     int exit_status;       /* waitpid status when reaped, -1 before */
     const char *reason;    /* exit_reason for the JSON */

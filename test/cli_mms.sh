@@ -54,6 +54,12 @@ cyan=$(python3 test/pngcheck.py "$T/r.png" near:00ffff:8)
 [ "${cyan:-0}" -gt 2000 ] && ok "report: cell colours drawn ($cyan cyan pixels)" || bad "report: cyan pixels: $cyan"
 grep -q '>6</text>' "$T/r.svg" && ok "report: cell texts drawn" || bad "report: no cell text in the SVG"
 
+# a robot too weak to move (0.5 V battery): the firmware's stall stop answers crash and ends the run
+printf '[motor]\nbattery_v = 0.5\n' >"$T/weak.ini"
+want_rc 1 "stuck robot" "$S" --maze mazes/gen-5x5-s1.txt --config "$T/weak.ini" --mms "$A/floodfill.py" --json
+[ "$(py "(d['exit_reason'], d['mms']['crashes'], d['reached_goal'])")" = "('crash_stop', 1, False)" ] && grep -q "^mmsim: mms: the robot is stuck (motion stall) during a forward move: run ended$" "$T/err" \
+  && ok "stuck robot: crash_stop, one message" || bad "stuck robot: $(cat "$T/out" "$T/err")"
+
 # faults: the run ends with one message, the JSON summary, the child reaped
 fault() { local rc=$1 reason=$2 desc=$3; shift 3
   want_rc "$rc" "fault: $desc" "$S" --maze mazes/gen-5x5-s1.txt --json --mms-timeout-ms 300 --mms "$@"
