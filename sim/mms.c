@@ -456,6 +456,11 @@ static int child_gone(mms_t *m)
                    st >= 0 && WIFEXITED(st) ? WEXITSTATUS(st) : -1);
 }
 
+static void trace(const mms_t *m, const struct sim_s *s, const char *dir, const char *text)
+{
+    if (m->o.trace) fprintf(m->o.trace, "mms %9.3f %s %s\n", s ? sim_time_s(s) : 0.0, dir, text);
+}
+
 static int send_line(mms_t *m, const char *resp)
 {
     char out[64];
@@ -559,6 +564,7 @@ int mms_service(mms_t *m, struct sim_s *s)
             }
             if (was != MOVE_SENSE) {
                 const char *r = st == MOUSE_CMD_BLOCKED ? "crash" : "ack";
+                trace(m, s, "<", r);
                 if (st == MOUSE_CMD_BLOCKED) m->crashes++;
                 if (send_line(m, r) != 0) return child_gone(m);
             }
@@ -567,7 +573,11 @@ int mms_service(mms_t *m, struct sim_s *s)
             return end_run(m, "mms_flood", "mmsim: mms: the algorithm '%s' sent %ld commands without a move",
                            m->o.command, MMS_FLOOD_LIMIT);
         if (read_line(m, line) != MMS_STEP) return MMS_END;
-        if (mms_execute(m, s, line, resp, sizeof resp)) { /* a move: answered when done */
+        long inv = m->invalid;
+        int move = mms_execute(m, s, line, resp, sizeof resp);
+        trace(m, s, m->invalid != inv ? "> (ignored)" : ">", line);
+        if (resp[0]) trace(m, s, "<", resp);
+        if (move) { /* a move: answered when done */
             m->move_start_s = sim_time_s(s);
             continue;
         }

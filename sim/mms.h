@@ -21,6 +21,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <sys/types.h>
 
 #include "maze.h"
@@ -66,6 +67,7 @@ typedef struct {
     int ideal_walls;      /* answer wall queries from the maze file */
     int timeout_ms;       /* per command */
     double reset_at_s;    /* wasReset turns true at this sim time; < 0 never */
+    FILE *trace;          /* every command and answer, with sim time (NULL: none) */
 } mms_opts_t;
 
 typedef struct mms_s {

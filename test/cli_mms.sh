@@ -26,6 +26,11 @@ done
 want_rc 3 "wall follower fails on a looped maze" "$S" --maze mazes/gen-6x6-s1.txt --mms "$A/wallfollow.py" --json
 [ "$(py "(d['reached_goal'], d['exit_reason'], d['mms']['stats']['score'])")" = "(False, 'mms_failed', 2000.0)" ] && ok "score 2000 without the goal" || bad "looped maze: $(cat "$T/out")"
 
+# --verbose: the dialogue on stderr with the simulation time
+want_rc 0 "verbose trace" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/wallfollow.py" --verbose
+grep -q '^mms *0\.[0-9]* > moveForward$' "$T/err" && grep -q '^mms *[0-9.]* < ack$' "$T/err" && grep -q '^mms *[0-9.]* > setColor 0 1 g$' "$T/err" \
+  && ok "verbose trace" || bad "verbose trace: $(head -5 "$T/err")"
+
 # determinism, and sensed walls = the maze file's on a noise-free robot
 "$S" --maze mazes/gen-8x8-s1.txt --mms "$A/floodfill.py 2" --json >"$T/a"; "$S" --maze mazes/gen-8x8-s1.txt --mms "$A/floodfill.py 2" --json >"$T/b"
 [ "$(strip "$T/a")" = "$(strip "$T/b")" ] && ok "mms run deterministic" || bad "mms run deterministic"

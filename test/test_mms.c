@@ -65,7 +65,7 @@ static void setup_maze(void)
         for (uint8_t d = 0; d < 4; d++) maze_set_wall(&truth, (maze_cell_t)c, d, MAZE_WALL_OPEN);
     maze_set_wall(&truth, maze_cell(&truth, 0, 1), MAZE_NORTH, MAZE_WALL_CLOSED);
     maze_set_wall(&truth, maze_cell(&truth, 0, 0), MAZE_EAST, MAZE_WALL_CLOSED);
-    mms_opts_t o = { "test", 1, 1000, -1 };
+    mms_opts_t o = { "test", 1, 1000, -1, NULL };
     mms_init(&mm, &o, &truth);
 }
 

@@ -541,7 +541,7 @@ int main(int argc, char **argv)
         { 0, 0, 0, 0 },
     };
     opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, { NULL, NULL, 0 }, NULL, 0, NULL, 0, { 1024, 720, 1, 1, "", 115200 },
-                 0, { NULL, 0, 0, LINK_FRAMED, 0 }, NULL, NULL, 0, { NULL, 0, 5000, -1 } }; /* scripted by default: it honours --runs */
+                 0, { NULL, 0, 0, LINK_FRAMED, 0 }, NULL, NULL, 0, { NULL, 0, 5000, -1, NULL } }; /* scripted by default: it honours --runs */
     const char *maze = NULL, *batch = NULL;
     double v;
     int c, link_flags = 0, mms_flags = 0, driver_given = 0;
@@ -669,6 +669,7 @@ int main(int argc, char **argv)
     if (!o.serial && link_flags) return bad("%s", "--protocol and --silence-ms need --serial DEV, --pty or --avr ELF");
     if (!o.avr_elf && (o.avr_mcu || o.avr_f_cpu)) return bad("%s", "--mcu and --f-cpu need --avr ELF");
     if (!o.mms.command && mms_flags) return bad("%s", "--mms-ideal-walls, --mms-timeout-ms and --mms-reset-at need --mms COMMAND");
+    if (o.mms.command && o.verbose) o.mms.trace = stderr; /* --verbose: the mms dialogue too */
     if (o.mms.command && !driver_given) o.scripted = 0; /* the firmware's motion layer runs the moves */
     if (o.mms.command && (o.serial || o.scripted || batch))
         return bad("%s", "--mms drives the firmware of one run: not with --serial/--pty/--avr, --driver scripted or --batch");
