@@ -31,6 +31,8 @@ struct view {
     char status[96];
     sim_t *sim;              /* the simulation being shown (for callbacks) */
     const char *mms_colours; /* view_set_mms: cell colours, or NULL */
+    const char *mms_texts;   /* and texts, mms_stride bytes per cell */
+    size_t mms_stride;
     int *mms_reset;          /* set to 1 by the Reset button, or NULL */
 };
 
@@ -242,7 +244,7 @@ static void draw(view_t *v, sim_t *s)
         b.heading = hb->heading;
     }
     scene_draw(s, v->camera, &v->orbit[v->camera], &b, v->overlay, fw, fh);
-    if (v->mms_colours) scene_draw_cells(s, v->mms_colours);
+    if (v->mms_colours) scene_draw_cells(s, v->mms_colours, v->mms_texts, v->mms_stride);
     const char *status = v->status[0] ? v->status : v->overlay && !b.map ? "no mouse map to overlay yet" : NULL;
     hud_info_t in = { v->camera, v->overlay, v->paused, v->speed, v->o.port, v->o.baud, status, v->mms_reset != NULL };
     hud_draw(s, &in, v->o.width, v->o.height);
@@ -334,8 +336,10 @@ int view_screenshot(view_t *v, sim_t *s, const char *path, char *err, size_t err
     return rc;
 }
 
-void view_set_mms(view_t *v, const char *colours, int *reset)
+void view_set_mms(view_t *v, const char *colours, const char *texts, size_t text_stride, int *reset)
 {
     v->mms_colours = colours;
+    v->mms_texts = texts;
+    v->mms_stride = text_stride;
     v->mms_reset = reset;
 }

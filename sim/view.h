@@ -56,9 +56,10 @@ void view_button(view_t *v, sim_t *s, int button);             /* HUD_BTN_* */
 int view_click(view_t *v, sim_t *s, double x, double y);       /* the button hit, or -1 */
 void view_key(view_t *v, sim_t *s, int key);                   /* GLFW_KEY_* */
 /* An mms run: the floor shows the algorithm's cell colours (mms letters per
- * cell, 0 none; the array must outlive the view) and the Reset button (or
+ * cell, 0 none) and texts (text_stride bytes per cell; the arrays must
+ * outlive the view), and the Reset button (or
  * the X key) sets *reset to 1 (mms wasReset). */
-void view_set_mms(view_t *v, const char *colours, int *reset);
+void view_set_mms(view_t *v, const char *colours, const char *texts, size_t text_stride, int *reset);
 int view_camera(const view_t *v);
 double view_speed(const view_t *v);
 int view_paused(const view_t *v);

@@ -139,7 +139,7 @@ static void test_mms_reset_button(void **state)
     int reset = 0;
     char colours[MAZE_MAX_CELLS] = { 0 };
     view_key(view, &sim, GLFW_KEY_X); /* no mms run: nothing to press */
-    view_set_mms(view, colours, &reset);
+    view_set_mms(view, colours, NULL, 0, &reset);
     click_button(HUD_BTN_RESET);
     assert_int_equal(reset, 1);
     reset = 0;
@@ -150,7 +150,7 @@ static void test_mms_reset_button(void **state)
     for (int i = 0; i < HUD_BTN_RESET; i++)
         assert_true(bt[i].x + bt[i].w <= bt[HUD_BTN_RESET].x || bt[HUD_BTN_RESET].x + bt[HUD_BTN_RESET].w <= bt[i].x ||
                     bt[i].y + bt[i].h <= bt[HUD_BTN_RESET].y || bt[HUD_BTN_RESET].y + bt[HUD_BTN_RESET].h <= bt[i].y);
-    view_set_mms(view, NULL, NULL);
+    view_set_mms(view, NULL, NULL, 0, NULL);
 }
 
 int main(void)

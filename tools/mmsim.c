@@ -173,7 +173,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
             vo.baud = (long)lnk.o.baud;
         }
         view = view_new(&vo);
-        if (view && o->mms.command) view_set_mms(view, mms.color, &mms.was_reset);
+        if (view && o->mms.command) view_set_mms(view, mms.color, &mms.text[0][0], sizeof mms.text[0], &mms.was_reset);
         if (!view || view_open(view, o->gui, verr, sizeof verr) != 0) {
             fprintf(stderr, "mmsim: %s\n", verr);
             view_free(view);
