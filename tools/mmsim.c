@@ -315,7 +315,11 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     json_object_set_new(o_json, "exit_reason", json_string(reason));
     json_object_set_new(o_json, "config_hash", json_string(hash));
     const char *driver_name = o->serial ? "serial" : o->scripted ? "scripted" : o->mms.command ? "mms" : "firmware";
-    if (o->mms.command) json_object_set_new(o_json, "mms", mms_json(&mms));
+    if (o->mms.command) {
+        json_t *mj = mms_json(&mms);
+        json_object_set_new(mj, "wall_contacts", json_integer(world_collisions(sim.world))); /* = collisions */
+        json_object_set_new(o_json, "mms", mj);
+    }
     json_object_set_new(o_json, "driver", json_string(driver_name));
     if (o->serial) {
         json_object_set_new(o_json, "link", link_json(&lnk));
