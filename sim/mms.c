@@ -365,6 +365,31 @@ static double now_s(void)
     return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
+/* mmsim interrupted (Ctrl-C, kill): the algorithm's group is not in the
+ * terminal's foreground group, so end it here, then die of the signal. */
+static volatile pid_t child_group;
+
+static void on_fatal_signal(int sig)
+{
+    if (child_group > 0) kill(-child_group, SIGKILL);
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+static void guard_signals(int on)
+{
+    static const int sigs[3] = { SIGINT, SIGTERM, SIGHUP };
+    static void (*old[3])(int);
+    for (int i = 0; i < 3; i++) {
+        if (on) {
+            old[i] = signal(sigs[i], on_fatal_signal);
+            if (old[i] == SIG_IGN) signal(sigs[i], SIG_IGN); /* ignored stays ignored (nohup) */
+        } else {
+            signal(sigs[i], old[i] == SIG_ERR ? SIG_DFL : old[i]);
+        }
+    }
+}
+
 static int pipe_cloexec(int fd[2])
 {
     if (pipe(fd) != 0) return -1;
@@ -404,6 +429,8 @@ int mms_start(mms_t *m, const mms_opts_t *o, const maze_t *truth, char *err, siz
         _exit(127);
     }
     setpgid(pid, pid); /* also here: no race with the kill at the end */
+    child_group = pid;
+    guard_signals(1);
     close(in[0]);
     close(out[1]);
     m->pid = pid;
@@ -597,6 +624,10 @@ void mms_stop(mms_t *m)
     if (m->to_child >= 0) close(m->to_child);
     if (m->from_child >= 0) close(m->from_child);
     m->to_child = m->from_child = -1;
+    if (child_group) {
+        guard_signals(0);
+        child_group = 0;
+    }
     if (m->pid) {
         if (!reap(m, 0)) {
             kill(-m->pid, SIGKILL);

@@ -82,8 +82,13 @@ fault 3 mms_flood "floods stdout with invalid lines" "yes"
 fault 3 mms_timeout "floods queries without reading answers" "yes mazeWidth"
 fault 3 mms_garbage "prints an endless line" "cat /dev/zero"
 fault 3 mms_failed "crashes mid-run" "$A/wallfollow.py & sleep 0.2; kill -9 \$!; exit 9"
+# mmsim itself killed (SIGTERM): the algorithm's process group goes too
+"$S" --maze mazes/gen-5x5-s1.txt --mms "sleep 31.4157" --mms-timeout-ms 60000 >"$T/out" 2>"$T/err" & mp=$!
+for _ in $(seq 50); do pgrep -f "sleep 31.4157" >/dev/null && break; sleep 0.1; done
+kill -TERM $mp; wait $mp; rc=$?
+[ $rc -eq 143 ] && ok "mmsim killed: dies of the signal" || bad "mmsim killed: exit $rc"
 sleep 0.2
-if pgrep -f "sleep 31.415[89]" >/dev/null; then bad "no processes left behind"; pgrep -fa "sleep 31.415"; else ok "no processes left behind"; fi
+if pgrep -f "sleep 31.415[789]" >/dev/null; then bad "no processes left behind"; pgrep -fa "sleep 31.415"; else ok "no processes left behind"; fi
 
 # bad flags
 ONE_ERROR_LINE=1
