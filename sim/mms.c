@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <jansson.h>
 #include <limits.h>
+#include <stdarg.h>
 #include <math.h>
 #include <poll.h>
 #include <signal.h>
@@ -442,10 +443,17 @@ int mms_start(mms_t *m, const mms_opts_t *o, const maze_t *truth, char *err, siz
     return 0;
 }
 
-static int end_run(mms_t *m, const char *reason, const char *fmt, const char *a, long b)
+/* End the run with this reason and one message line (fmt NULL: none). */
+static int end_run(mms_t *m, const char *reason, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+static int end_run(mms_t *m, const char *reason, const char *fmt, ...)
 {
     m->reason = reason;
-    if (fmt) snprintf(m->message, sizeof m->message, fmt, a, b);
+    if (fmt) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(m->message, sizeof m->message, fmt, ap);
+        va_end(ap);
+    }
     return MMS_END;
 }
 
@@ -473,13 +481,13 @@ static int child_gone(mms_t *m)
     if (m->pid && !reap(m, m->o.timeout_ms / 1000.0)) {
         kill(-m->pid, SIGKILL);
         reap(m, 5.0);
-        return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' closed its output but did not exit%.0ld", m->o.command, 0);
+        return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' closed its output but did not exit", m->o.command);
     }
     int st = m->exit_status;
-    if (st >= 0 && WIFEXITED(st) && WEXITSTATUS(st) == 0) return end_run(m, "mms_exited", NULL, NULL, 0);
+    if (st >= 0 && WIFEXITED(st) && WEXITSTATUS(st) == 0) return end_run(m, "mms_exited", NULL);
     if (st >= 0 && WIFSIGNALED(st))
-        return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' was killed by signal %ld", m->o.command, WTERMSIG(st));
-    return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' exited with status %ld", m->o.command,
+        return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' was killed by signal %d", m->o.command, WTERMSIG(st));
+    return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' exited with status %d", m->o.command,
                    st >= 0 && WIFEXITED(st) ? WEXITSTATUS(st) : -1);
 }
 
@@ -525,16 +533,16 @@ static int read_line(mms_t *m, char *line)
             return MMS_STEP;
         }
         if (m->len >= MMS_LINE_MAX)
-            return end_run(m, "mms_garbage", "mmsim: mms: the algorithm '%s' printed a line longer than %ld bytes",
+            return end_run(m, "mms_garbage", "mmsim: mms: the algorithm '%s' printed a line longer than %d bytes",
                            m->o.command, MMS_LINE_MAX);
         double left_ms = m->o.timeout_ms - (now_s() - t0) * 1000.0;
         if (left_ms <= 0)
-            return end_run(m, "mms_timeout", "mmsim: mms: the algorithm '%s' sent no command for %ld ms",
+            return end_run(m, "mms_timeout", "mmsim: mms: the algorithm '%s' sent no command for %d ms",
                            m->o.command, m->o.timeout_ms);
         struct pollfd p = { m->from_child, POLLIN, 0 };
         int r = poll(&p, 1, (int)ceil(left_ms));
         if (r < 0 && errno != EINTR)
-            return end_run(m, "mms_failed", "mmsim: mms: poll on the algorithm '%s' failed (%ld)", m->o.command, errno);
+            return end_run(m, "mms_failed", "mmsim: mms: poll on the algorithm '%s' failed: %s", m->o.command, strerror(errno));
         if (r <= 0) continue;
         ssize_t k = read(m->from_child, m->buf + m->len, MMS_LINE_MAX - m->len);
         if (k == 0) {
@@ -545,7 +553,7 @@ static int read_line(mms_t *m, char *line)
             return child_gone(m);
         }
         if (k < 0 && errno != EAGAIN && errno != EINTR)
-            return end_run(m, "mms_failed", "mmsim: mms: reading from the algorithm '%s' failed (%ld)", m->o.command, errno);
+            return end_run(m, "mms_failed", "mmsim: mms: reading from the algorithm '%s' failed: %s", m->o.command, strerror(errno));
         if (k > 0) m->len += (size_t)k;
     }
 }
@@ -582,8 +590,8 @@ int mms_service(mms_t *m, struct sim_s *s)
             if (st == MOUSE_CMD_CRASHED) {
                 if (was != MOVE_SENSE) send_line(m, "crash");
                 m->crashes++;
-                return end_run(m, "crash_stop", "mmsim: mms: the robot is stuck (motion stall) during a %s: run ended%.0ld",
-                               was == MOVE_FORWARD ? "forward move" : was == MOVE_TURN ? "turn" : "reset", 0);
+                return end_run(m, "crash_stop", "mmsim: mms: the robot is stuck (motion stall) during a %s: run ended",
+                               was == MOVE_FORWARD ? "forward move" : was == MOVE_TURN ? "turn" : "reset");
             }
             if (m->o.reset_at_s >= 0 && sim_time_s(s) >= m->o.reset_at_s) {
                 m->was_reset = 1; /* the Reset button, pressed once */
@@ -612,7 +620,7 @@ int mms_service(mms_t *m, struct sim_s *s)
             if (!strcmp(resp, "crash")) m->crashes++;
             int w = send_line(m, resp);
             if (w == -2)
-                return end_run(m, "mms_timeout", "mmsim: mms: the algorithm '%s' does not read its input (%ld ms)",
+                return end_run(m, "mms_timeout", "mmsim: mms: the algorithm '%s' does not read its input (%d ms)",
                                m->o.command, m->o.timeout_ms);
             if (w != 0) return child_gone(m);
         }
