@@ -416,8 +416,19 @@ int mms_start(mms_t *m, const mms_opts_t *o, const maze_t *truth, char *err, siz
     }
     fflush(stdout);
     fflush(stderr);
+    /* a SIGINT/SIGTERM between fork and child_group = pid waits (blocked)
+     * and then ends the child too */
+    sigset_t block, prev;
+    sigemptyset(&block);
+    sigaddset(&block, SIGINT);
+    sigaddset(&block, SIGTERM);
+    sigaddset(&block, SIGHUP);
+    sigprocmask(SIG_BLOCK, &block, &prev);
+    guard_signals(1);
     pid_t pid = fork();
     if (pid < 0) {
+        guard_signals(0);
+        sigprocmask(SIG_SETMASK, &prev, NULL);
         snprintf(err, len, "mms: fork: %s", strerror(errno));
         close(in[0]); close(in[1]); close(out[0]); close(out[1]);
         return -1;
@@ -425,13 +436,15 @@ int mms_start(mms_t *m, const mms_opts_t *o, const maze_t *truth, char *err, siz
     if (pid == 0) {
         setpgid(0, 0); /* its own group: the end kills every process it started */
         signal(SIGPIPE, SIG_DFL);
+        guard_signals(0);
+        sigprocmask(SIG_SETMASK, &prev, NULL);
         if (dup2(in[0], STDIN_FILENO) < 0 || dup2(out[1], STDOUT_FILENO) < 0) _exit(127);
         execl("/bin/sh", "sh", "-c", o->command, (char *)NULL);
         _exit(127);
     }
     setpgid(pid, pid); /* also here: no race with the kill at the end */
     child_group = pid;
-    guard_signals(1);
+    sigprocmask(SIG_SETMASK, &prev, NULL);
     close(in[0]);
     close(out[1]);
     m->pid = pid;
