@@ -460,6 +460,8 @@ static void run_step(int to_goal)
     run_plan(to_goal);
 }
 
+static void cmd_step(void);
+
 void fw_loop(void)
 {
     switch (st.mode) {
@@ -492,6 +494,9 @@ void fw_loop(void)
     case MOUSE_CRASHED:
         motion_stop(&mo);
         break;
+    case MOUSE_COMMAND:
+        cmd_step();
+        break;
     default:
         break;
     }
@@ -500,3 +505,156 @@ void fw_loop(void)
 const maze_t *mouse_map(void) { return &ex.map; }
 uint16_t mouse_proven_at_step(void) { return ex.proven_at_step; }
 const struct motion_s *mouse_motion(void) { return &mo; }
+
+/* ---- External command mode (mmsim --mms): the caller orders each move ----
+ * The moves reuse the search's primitives: a straight senses the walls of
+ * every cell it enters at RC_SENSE_BEFORE_MM before that cell's centre
+ * (read_walls, into the map), centres on the side walls, aligns on a wall
+ * ahead and ends with a front fix; turns are start_turn's in-place turns
+ * about the cell's centre. The mouse stands at a cell centre between
+ * commands. */
+enum { CMD_NONE = 0, CMD_SENSE, CMD_FORWARD, CMD_TURN };
+static uint8_t cmd_kind;      /* CMD_*: the command under way */
+static uint8_t cmd_result;    /* MOUSE_CMD_* of the last command */
+static uint8_t cmd_left;      /* cells of the forward move still to enter */
+static uint8_t cmd_moved;     /* cells entered by the last forward move */
+static uint8_t cmd_blocked;   /* a wall sensed ahead ended the move early */
+
+void mouse_cmd_mode(void)
+{
+    st.mode = MOUSE_COMMAND;
+    waiting = WAIT_NONE;
+    cmd_kind = CMD_SENSE; /* the start cell's walls first */
+    cmd_result = MOUSE_CMD_BUSY;
+    mark_readings();
+}
+
+uint8_t mouse_cmd_status(void)
+{
+    if (st.mode == MOUSE_CRASHED) return MOUSE_CMD_CRASHED;
+    return cmd_kind != CMD_NONE ? MOUSE_CMD_BUSY : cmd_result;
+}
+
+uint8_t mouse_cmd_moved(void) { return cmd_moved; }
+
+int mouse_cmd_forward(uint8_t cells)
+{
+    if (st.mode != MOUSE_COMMAND || cmd_kind != CMD_NONE || cells == 0) return -1;
+    /* the map shows a wall on the way: refuse, nothing moves */
+    maze_cell_t c = ex.cell;
+    for (uint8_t i = 0; i < cells; i++) {
+        if (!maze_passable(&ex.map, c, st.heading, 1)) return -1;
+        c = maze_step(&ex.map, c, st.heading);
+    }
+    cmd_left = cells;
+    cmd_moved = 0;
+    cmd_blocked = 0;
+    cmd_kind = CMD_FORWARD;
+    start_forward(RC_CELL_MM, RC_SEARCH_MM_S, RC_SEARCH_MM_S, RC_ACCEL_MM_S2);
+    return 0;
+}
+
+int mouse_cmd_turn(int8_t q)
+{
+    if (st.mode != MOUSE_COMMAND || cmd_kind != CMD_NONE || (q != 1 && q != -1)) return -1;
+    cmd_kind = CMD_TURN;
+    st.heading = maze_turn(st.heading, q);
+    ex.heading = st.heading;
+    start_turn(q);
+    return 0;
+}
+
+void mouse_cmd_reset(void)
+{
+    motion_init(&mo);
+    ex.cell = ex.map.start;
+    ex.heading = ex.map.start_heading;
+    st.cell = ex.cell;
+    st.heading = ex.heading;
+    st.mode = MOUSE_COMMAND;
+    waiting = WAIT_NONE;
+    uturn_stage = 0;
+    fix_stage = 0;
+    turn_pending = 0;
+    last_lateral_ok = 0;
+    cmd_kind = CMD_SENSE;
+    cmd_result = MOUSE_CMD_BUSY;
+    mark_readings();
+}
+
+static void cmd_finish(uint8_t result)
+{
+    cmd_kind = CMD_NONE;
+    cmd_result = result;
+    waiting = WAIT_NONE;
+    st.cell = ex.cell;
+    hal_belief(&ex.map, ex.cell, st.heading, st.mode);
+}
+
+static void cmd_forward_step(void)
+{
+    centring();
+    float left = profile_remaining(&mo.fwd);
+    if (!sensed && left <= RC_SENSE_BEFORE_MM && (fresh() || left <= RC_SENSE_LATEST_MM)) {
+        sensed = 1;
+        uint8_t walls = read_walls();
+        explore_moved(&ex, st.heading); /* committed to the cell ahead */
+        explore_sense(&ex, walls);
+        st.cell = ex.cell;
+        hal_belief(&ex.map, ex.cell, st.heading, st.mode);
+        cmd_moved++;
+        cmd_left--;
+        wall_ahead = (walls & EXPLORE_WALL_FRONT) != 0;
+        if (cmd_left > 0 && maze_passable(&ex.map, ex.cell, st.heading, 1)) {
+            profile_set_remaining(&mo.fwd, left + RC_CELL_MM);
+            sensed = 0;
+            return;
+        }
+        cmd_blocked = cmd_left > 0;
+        mo.fwd.v_end = 0; /* stop in the cell ahead */
+        return;
+    }
+    if (sensed && wall_ahead && mo.fwd.active) align_to_front_wall(0);
+    if (sensed && !motion_busy(&mo)) {
+        no_centring();
+        if (wall_ahead && !front_fix()) return;
+        cmd_finish(cmd_blocked ? MOUSE_CMD_BLOCKED : MOUSE_CMD_DONE);
+    }
+}
+
+static void cmd_step(void)
+{
+    switch (cmd_kind) {
+    case CMD_SENSE: /* standing still: wait for a reading taken now */
+        if (motion_busy(&mo) || !fresh()) return;
+        {
+            hal_distance_t f = hal_distance(HAL_TOF_FRONT);
+            uint8_t w = 0;
+            if (!f.timeout && f.mm < RC_FRONT_AT_CENTRE_MM + 60) w |= EXPLORE_WALL_FRONT;
+            /* the diagonal sensors look past a cell's end when standing at
+             * its centre: the sides come from the rules (start cell) or
+             * from when the cell was entered */
+            if (ex.cell == ex.map.start && ex.heading == ex.map.start_heading)
+                w |= EXPLORE_WALL_LEFT | EXPLORE_WALL_RIGHT;
+            else {
+                if (!maze_passable(&ex.map, ex.cell, maze_turn(ex.heading, -1), 0)) w |= EXPLORE_WALL_LEFT;
+                if (!maze_passable(&ex.map, ex.cell, maze_turn(ex.heading, 1), 0)) w |= EXPLORE_WALL_RIGHT;
+            }
+            explore_sense(&ex, w);
+        }
+        cmd_finish(MOUSE_CMD_DONE);
+        break;
+    case CMD_FORWARD:
+        cmd_forward_step();
+        break;
+    case CMD_TURN:
+        if (!turn_done()) return;
+        /* facing a wall: put the robot back on the cell's centre (as the
+         * U-turn's middle step), so that the next turn sweeps clear */
+        if (maze_wall(&ex.map, ex.cell, st.heading) == MAZE_WALL_CLOSED && !front_fix()) return;
+        cmd_finish(MOUSE_CMD_DONE);
+        break;
+    default:
+        break;
+    }
+}

@@ -38,4 +38,31 @@ struct motion_s;
 /* The motion layer's state (odometry, profiles), for telemetry and tests. */
 const struct motion_s *mouse_motion(void);
 
+
+/* ---- External command mode (mmsim --mms) ----
+ * After fw_setup, mouse_cmd_mode() hands the moves to the caller: the mouse
+ * first senses the start cell (busy), then waits at a cell centre for
+ * mouse_cmd_forward / mouse_cmd_turn, runs each on the motion layer (fw_tick
+ * and fw_loop as usual) and maps the walls it senses on the way
+ * (mouse_map()). mouse_cmd_status() says when a command is over. */
+enum { MOUSE_COMMAND = MOUSE_CRASHED + 1 }; /* st.mode in command mode */
+enum {
+    MOUSE_CMD_DONE = 0, /* the last command is complete */
+    MOUSE_CMD_BUSY,     /* a command is under way */
+    MOUSE_CMD_BLOCKED,  /* a forward move stopped early: a wall sensed ahead */
+    MOUSE_CMD_CRASHED   /* stuck (motion stall): motors off for good */
+};
+void mouse_cmd_mode(void);
+uint8_t mouse_cmd_status(void);
+/* Drive `cells` cells ahead; -1 (nothing moves) if the map shows a wall on
+ * the way, cells is 0 or a command is under way. */
+int mouse_cmd_forward(uint8_t cells);
+/* Cells entered by the last forward move (less than asked if blocked). */
+uint8_t mouse_cmd_moved(void);
+/* In-place quarter turn: +1 right, -1 left; -1 if refused. */
+int mouse_cmd_turn(int8_t q);
+/* The robot was put back at the start (mms ackReset): pose and odometry
+ * restart, the map is kept, the start cell is sensed again (busy). */
+void mouse_cmd_reset(void);
+
 #endif

@@ -13,7 +13,7 @@
 #define CHAR_PX (FONT_ADVANCE * HUD_TEXT_SCALE)
 
 static const char *const labels[HUD_BTN_COUNT] = {
-    "1 Bird", "2 Follow", "3 Top", "Overlay", "-", "Pause", "Step", "+", "Toggle post", "Connect",
+    "1 Bird", "2 Follow", "3 Top", "Overlay", "-", "Pause", "Step", "+", "Toggle post", "Connect", "Reset",
 };
 
 static int btn_w(const char *label) { return (int)strlen(label) * CHAR_PX + 2 * PAD; }
@@ -45,6 +45,9 @@ void hud_layout(int W, int H, hud_button_t b[HUD_BTN_COUNT])
     /* lower right: toggle post; above it if the row is full */
     b[HUD_BTN_POST].x = W - PAD - b[HUD_BTN_POST].w;
     if (b[HUD_BTN_POST].x < x + PAD) b[HUD_BTN_POST].y -= BTN_H + PAD;
+    /* mms Reset: above Toggle post */
+    b[HUD_BTN_RESET].x = W - PAD - b[HUD_BTN_RESET].w;
+    b[HUD_BTN_RESET].y = b[HUD_BTN_POST].y - BTN_H - PAD;
     /* upper right: connect, under the port and baud fields */
     b[HUD_BTN_CONNECT].x = W - PAD - b[HUD_BTN_CONNECT].w;
     b[HUD_BTN_CONNECT].y = PAD + 2 * (FONT_LINE * HUD_TEXT_SCALE + PAD);
@@ -213,6 +216,7 @@ void hud_draw(const sim_t *s, const hud_info_t *in, int W, int H)
     hud_button_t b[HUD_BTN_COUNT];
     hud_layout(W, H, b);
     for (int i = 0; i < HUD_BTN_COUNT; i++) {
+        if (i == HUD_BTN_RESET && !in->mms) continue;
         int on = (i <= HUD_BTN_TOP && in->camera == i + 1) || (i == HUD_BTN_OVERLAY && in->overlay) ||
                  (i == HUD_BTN_PAUSE && in->paused) || (i == HUD_BTN_POST && world_has_centre_post(s->world));
         rect(b[i].x, b[i].y, b[i].w, b[i].h, on ? 0x3070D0u : 0x404040u, 0.85f);

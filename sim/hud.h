@@ -15,6 +15,7 @@ enum {
     HUD_BTN_BIRD, HUD_BTN_FOLLOW, HUD_BTN_TOP, HUD_BTN_OVERLAY,
     HUD_BTN_SLOWER, HUD_BTN_PAUSE, HUD_BTN_STEP, HUD_BTN_FASTER,
     HUD_BTN_POST, HUD_BTN_CONNECT,
+    HUD_BTN_RESET, /* mms runs only: the Reset button (wasReset) */
     HUD_BTN_COUNT
 };
 
@@ -37,6 +38,7 @@ typedef struct {
     double replay_s, replay_end_s; /* its time and length, s */
     int editing;          /* the field being typed in (HUD_FIELD_*), -1 none */
     const char *baud_text; /* the baud field's text, or NULL: baud */
+    int mms;              /* an mms algorithm drives: show Reset */
 } hud_info_t;
 
 enum { HUD_FIELD_PORT = 0, HUD_FIELD_BAUD = 1, HUD_FIELDS = 2 };

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "font.h"
+#include "mms.h"
 #include "image.h"
 #include "outfile.h"
 #include "solve.h"
@@ -26,6 +27,8 @@ struct report {
     size_t n, cap;
     double vmax;    /* highest |speed| seen, m/s */
     uint8_t visited[MAZE_MAX_CELLS];
+    char colour[MAZE_MAX_CELLS]; /* report_set_cells: mms colour letters */
+    char text[MAZE_MAX_CELLS][12];
 };
 
 report_t *report_new(const sim_t *s)
@@ -45,6 +48,14 @@ void report_free(report_t *r)
     if (!r) return;
     free(r->s);
     free(r);
+}
+
+void report_set_cells(report_t *r, const char *colours, const char *texts, size_t text_stride)
+{
+    for (uint16_t k = 0; k < maze_cells(r->maze); k++) {
+        r->colour[k] = colours[k];
+        snprintf(r->text[k], sizeof r->text[k], "%s", texts + k * text_stride);
+    }
 }
 
 void report_step(report_t *r, const sim_t *s)
@@ -136,16 +147,19 @@ static void c_polyline(canvas_t *c, const double *p, size_t n, double w, uint32_
 #define TEXT_SCALE 2
 #define LINE_PX (FONT_LINE * TEXT_SCALE)
 
-static void c_text(canvas_t *c, double x, double y, uint32_t rgb, const char *s)
+static void c_text_at(canvas_t *c, double x, double y, int scale, uint32_t rgb, const char *s);
+static void c_text(canvas_t *c, double x, double y, uint32_t rgb, const char *s) { c_text_at(c, x, y, TEXT_SCALE, rgb, s); }
+
+static void c_text_at(canvas_t *c, double x, double y, int scale, uint32_t rgb, const char *s)
 {
-    if (c->im) image_text(c->im, (int)x, (int)y, TEXT_SCALE, rgb, s);
+    if (c->im) image_text(c->im, (int)x, (int)y, scale, rgb, s);
     if (c->svg) {
         char col[8];
         svg_colour(col, rgb);
         fprintf(c->svg,
                 "<text x=\"%.1f\" y=\"%.1f\" fill=\"%s\" font-family=\"monospace\" font-size=\"%d\" "
                 "xml:space=\"preserve\">",
-                x, y + FONT_H * TEXT_SCALE, col, (FONT_H + 3) * TEXT_SCALE);
+                x, y + FONT_H * scale, col, (FONT_H + 3) * scale);
         for (const char *p = s; *p; p++) {
             if (*p == '<') fputs("&lt;", c->svg);
             else if (*p == '>') fputs("&gt;", c->svg);
@@ -209,6 +223,7 @@ static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_t 
         for (uint8_t x = 0; x < m->width; x++) {
             maze_cell_t k = maze_cell(m, x, y);
             uint32_t col = k == m->start ? C_START : maze_is_goal(m, k) ? C_GOAL : r->visited[k] ? C_VISITED : C_CELL;
+            if (r->colour[k]) col = mms_colour_rgb(r->colour[k]);
             c_rect(c, px_x(L, x), px_y(L, y + 1), px_x(L, x + 1), px_y(L, y), col);
         }
 
@@ -249,6 +264,17 @@ static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_t 
                 c_line(c, px_x(L, x0), px_y(L, y0), px_x(L, x1), px_y(L, y1), wall_px, col);
             }
         }
+    /* the algorithm's cell texts (mms setText), as much as fits */
+    for (uint16_t k = 0; k < maze_cells(m); k++) {
+        char t[12];
+        int fit = (int)((cp - wall_px - 2) / (FONT_W + 1));
+        if (!r->text[k][0] || fit < 1) continue;
+        snprintf(t, sizeof t, "%.*s", fit < 11 ? fit : 11, r->text[k]);
+        uint32_t bg = r->colour[k] ? mms_colour_rgb(r->colour[k]) : C_CELL;
+        int dark = ((bg >> 16) & 255) + ((bg >> 8) & 255) + (bg & 255) < 300;
+        c_text_at(c, px_x(L, maze_x(m, k)) + wall_px / 2 + 1, px_y(L, maze_y(m, k) + 1) + wall_px / 2 + 1, 1,
+                  dark ? 0xFFFFFFu : C_TEXT, t);
+    }
     for (int y = 0; y <= m->height; y++)
         for (int x = 0; x <= m->width; x++)
             c_rect(c, px_x(L, x) - wall_px / 2, px_y(L, y) - wall_px / 2, px_x(L, x) + wall_px / 2,

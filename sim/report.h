@@ -23,6 +23,11 @@ void report_free(report_t *r);
 /* Call after every sim_step. */
 void report_step(report_t *r, const sim_t *s);
 
+/* Cell colours and texts to draw (an mms algorithm's setColor/setText):
+ * colours[k] is an mms colour letter (kbacgorwyBCAGRY, 0 = none) and
+ * texts + k * text_stride a NUL-terminated text, for every cell k; copied. */
+void report_set_cells(report_t *r, const char *colours, const char *texts, size_t text_stride);
+
 /* Write png_path, and beside it the same name with .svg and .json
  * (a trailing .png is replaced). learned = the mouse's map, or NULL when
  * the driver does not map (then the final path is the true maze's best).

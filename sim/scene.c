@@ -1,6 +1,9 @@
 /* scene.c - 3D scene in legacy OpenGL (see scene.h). */
 #include "scene.h"
 
+#include "font.h"
+#include "mms.h"
+
 #include <GL/gl.h>
 #include <math.h>
 #include <string.h>
@@ -296,5 +299,42 @@ void scene_draw(sim_t *s, int cam, const scene_orbit_t *orbit, const scene_belie
     rays(s);
     if (show_overlay && b && b->map) overlay(s, b);
     glDisable(GL_LIGHTING);
+    glDisable(GL_DEPTH_TEST);
+}
+
+void scene_draw_cells(const sim_t *s, const char *colours, const char *texts, size_t stride)
+{
+    const maze_t *m = s->maze;
+    double cell = s->cfg.cell_m;
+    glEnable(GL_DEPTH_TEST);
+    glBegin(GL_QUADS);
+    for (uint16_t k = 0; k < maze_cells(m); k++) {
+        if (!colours[k]) continue;
+        double x0 = maze_x(m, (maze_cell_t)k) * cell + 0.012, y0 = maze_y(m, (maze_cell_t)k) * cell + 0.012,
+               x1 = x0 + cell - 0.024, y1 = y0 + cell - 0.024, z = 0.0008; /* over the start and goal tiles */
+        colour(mms_colour_rgb(colours[k]), 1);
+        glVertex3d(x0, y0, z), glVertex3d(x1, y0, z), glVertex3d(x1, y1, z), glVertex3d(x0, y1, z);
+    }
+    /* texts: the 5x7 font on the floor, 10 characters across the cell,
+     * from its north-west corner (north is up in the bird's view) */
+    double px = (cell - 0.03) / (10 * FONT_ADVANCE), z = 0.0011;
+    for (uint16_t k = 0; texts && k < maze_cells(m); k++) {
+        const char *t = texts + k * stride;
+        if (!t[0]) continue;
+        uint32_t bg = colours[k] ? mms_colour_rgb(colours[k]) : SCENE_FLOOR;
+        colour(((bg >> 16) & 255) + ((bg >> 8) & 255) + (bg & 255) < 300 ? 0xFFFFFFu : 0x000000u, 1);
+        double x = maze_x(m, (maze_cell_t)k) * cell + 0.015, y = (maze_y(m, (maze_cell_t)k) + 1) * cell - 0.02;
+        for (int i = 0; t[i] && i < 10; i++, x += FONT_ADVANCE * px)
+            for (int row = 0; row < FONT_H; row++) {
+                int bits = font_row(t[i], row);
+                for (int c = 0; c < FONT_W; c++)
+                    if (bits & (1 << (FONT_W - 1 - c))) {
+                        double qx = x + c * px, qy = y - row * px;
+                        glVertex3d(qx, qy - px, z), glVertex3d(qx + px, qy - px, z), glVertex3d(qx + px, qy, z),
+                            glVertex3d(qx, qy, z);
+                    }
+            }
+    }
+    glEnd();
     glDisable(GL_DEPTH_TEST);
 }

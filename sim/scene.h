@@ -40,4 +40,10 @@ void scene_camera(const sim_t *s, int cam, const scene_orbit_t *orbit, double ey
  * overlay: draw b's walls and planned path (b may be NULL). */
 void scene_draw(sim_t *s, int cam, const scene_orbit_t *orbit, const scene_belief_t *b, int overlay, int w, int h);
 
+/* After scene_draw, in the same frame: tint the floor of every cell with
+ * its mms colour letter (colours[cell], 0 = none; mms.h mms_colour_rgb) and
+ * paint its text (texts + cell * stride, NUL-terminated; texts may be NULL)
+ * on the floor, under the robot (depth-tested). */
+void scene_draw_cells(const sim_t *s, const char *colours, const char *texts, size_t stride);
+
 #endif

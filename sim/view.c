@@ -38,6 +38,10 @@ struct view {
     char port[256], baud[24]; /* the HUD's fields, as typed */
     int editing;             /* HUD_FIELD_* being typed in, -1 none */
     int connect_req;         /* Connect pressed with a valid port and baud */
+    const char *mms_colours; /* view_set_mms: cell colours, or NULL */
+    const char *mms_texts;   /* and texts, mms_stride bytes per cell */
+    size_t mms_stride;
+    int *mms_reset;          /* set to 1 by the Reset button, or NULL */
 };
 
 static int glfw_users;
@@ -139,6 +143,12 @@ void view_button(view_t *v, sim_t *s, int button)
             snprintf(v->status, sizeof v->status, "centre post %s", world_has_centre_post(s->world) ? "on" : "off");
         }
         break;
+    case HUD_BTN_RESET:
+        if (v->mms_reset) {
+            *v->mms_reset = 1;
+            snprintf(v->status, sizeof v->status, "reset pressed: waiting for the algorithm's ackReset");
+        }
+        break;
     case HUD_BTN_CONNECT: {
         char *end;
         long b = strtol(v->baud, &end, 10);
@@ -238,6 +248,7 @@ void view_key(view_t *v, sim_t *s, int key)
     case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD: view_button(v, s, HUD_BTN_FASTER); break;
     case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: view_button(v, s, HUD_BTN_SLOWER); break;
     case GLFW_KEY_P: view_button(v, s, HUD_BTN_POST); break;
+    case GLFW_KEY_X: view_button(v, s, HUD_BTN_RESET); break;
     case GLFW_KEY_R: orbit_reset(&v->orbit[v->camera]); break;
     case GLFW_KEY_ESCAPE: case GLFW_KEY_Q: v->closed = 1; break;
     default: break;
@@ -368,9 +379,11 @@ static void draw(view_t *v, sim_t *s)
         b.heading = hb->heading;
     }
     scene_draw(s, v->camera, &v->orbit[v->camera], &b, v->overlay, fw, fh);
+    if (v->mms_colours) scene_draw_cells(s, v->mms_colours, v->mms_texts, v->mms_stride);
     const char *status = v->status[0] ? v->status : v->overlay && !b.map ? "no mouse map to overlay yet" : NULL;
     hud_info_t in = { v->camera, v->overlay, v->paused, v->speed, v->port, v->o.baud, status, v->rp != NULL,
-                      v->rp_t, v->rp ? replay_end_s(v->rp) : 0, v->editing, v->baud };
+                      v->rp_t, v->rp ? replay_end_s(v->rp) : 0, v->editing, v->baud,
+                      v->mms_reset != NULL };
     hud_draw(s, &in, v->o.width, v->o.height);
 }
 
@@ -481,4 +494,12 @@ int view_screenshot(view_t *v, sim_t *s, const char *path, char *err, size_t err
     if (rc != 0 && !err[0]) snprintf(err, errlen, "%s: cannot read the frame back from OpenGL", path);
     free(px);
     return rc;
+}
+
+void view_set_mms(view_t *v, const char *colours, const char *texts, size_t text_stride, int *reset)
+{
+    v->mms_colours = colours;
+    v->mms_texts = texts;
+    v->mms_stride = text_stride;
+    v->mms_reset = reset;
 }

@@ -12,6 +12,7 @@
  *   + / -                  speed x2 / /2 (x1 .. x64)
  *   O                      discovered walls and planned path overlay
  *   P or "Toggle post"     add/remove the centre post in the physics world
+ *   X or "Reset"           mms runs: press mms's Reset button (wasReset)
  *   Esc or Q               close
  *   click Port / Baud      type a serial port and baud (Tab: the other
  *                          field, Backspace, Esc: done); Connect or Enter
@@ -86,6 +87,11 @@ void view_char(view_t *v, unsigned codepoint);                 /* a typed charac
 void view_drag(view_t *v, double x);                           /* mouse moved to x (slider drag) */
 void view_release(view_t *v);                                  /* mouse button up */
 void view_key(view_t *v, sim_t *s, int key);                   /* GLFW_KEY_* */
+/* An mms run: the floor shows the algorithm's cell colours (mms letters per
+ * cell, 0 none) and texts (text_stride bytes per cell; the arrays must
+ * outlive the view), and the Reset button (or
+ * the X key) sets *reset to 1 (mms wasReset). */
+void view_set_mms(view_t *v, const char *colours, const char *texts, size_t text_stride, int *reset);
 int view_camera(const view_t *v);
 double view_speed(const view_t *v);
 int view_paused(const view_t *v);

@@ -350,7 +350,8 @@ void world_place(world_t *w, double x_m, double y_m, double heading_rad, const d
 {
     const simcfg_t *c = &w->cfg;
     dMatrix3 rot, r2, r3, spin, r4;
-    double com_w[3];
+    double com_w[3], keep[2] = { world_wheel_angle(w, 0), world_wheel_angle(w, 1) };
+    if (!wheel_rad) wheel_rad = keep;
     frame_point(x_m, y_m, heading_rad, w->com, com_w);
     dRFromAxisAndAngle(rot, 0, 0, 1, heading_rad - M_PI / 2);
     dBodySetPosition(w->chassis, com_w[0], com_w[1], com_w[2]);
@@ -363,7 +364,7 @@ void world_place(world_t *w, double x_m, double y_m, double heading_rad, const d
         /* as built (cylinder z along the robot's x), then turned about that axis */
         dRFromAxisAndAngle(r2, 0, 1, 0, M_PI / 2);
         dMultiply0(r3, rot, r2, 3, 3, 3);
-        dRFromAxisAndAngle(spin, 0, 0, 1, wheel_rad ? -wheel_rad[s] : 0.0); /* hinge angles count the other way */
+        dRFromAxisAndAngle(spin, 0, 0, 1, -wheel_rad[s]); /* hinge angles count the other way */
         dMultiply0(r4, r3, spin, 3, 3, 3);
         dBodySetPosition(w->wheel[s], ww[0], ww[1], ww[2]);
         dBodySetRotation(w->wheel[s], r4);

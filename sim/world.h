@@ -52,7 +52,9 @@ double world_ray(world_t *w, double x_m, double y_m, double z_m, double dir_rad,
 
 /* Put the robot, at rest and level, with its body centre over (x_m, y_m)
  * facing heading_rad and its wheels at these hinge angles (rad, positive =
- * forward; NULL = 0): for replaying a logged pose (mmview), not physics. */
+ * forward; NULL = keep the current ones, so the encoders do not jump):
+ * a logged pose replayed (mmview), the robot carried back to the start
+ * (mms ackReset). */
 void world_place(world_t *w, double x_m, double y_m, double heading_rad, const double wheel_rad[2]);
 
 /* Robot-wall contact: are robot and any wall or post touching after the

@@ -172,6 +172,28 @@ static void test_connect_fields(void **state)
     view_key(view, &sim, GLFW_KEY_1);
 }
 
+/* mms runs: the Reset button (and X) set the algorithm's wasReset flag;
+ * it sits clear of every other button */
+static void test_mms_reset_button(void **state)
+{
+    (void)state;
+    int reset = 0;
+    char colours[MAZE_MAX_CELLS] = { 0 };
+    view_key(view, &sim, GLFW_KEY_X); /* no mms run: nothing to press */
+    view_set_mms(view, colours, NULL, 0, &reset);
+    click_button(HUD_BTN_RESET);
+    assert_int_equal(reset, 1);
+    reset = 0;
+    view_key(view, &sim, GLFW_KEY_X);
+    assert_int_equal(reset, 1);
+    hud_button_t bt[HUD_BTN_COUNT];
+    hud_layout(opts.width, opts.height, bt);
+    for (int i = 0; i < HUD_BTN_RESET; i++)
+        assert_true(bt[i].x + bt[i].w <= bt[HUD_BTN_RESET].x || bt[HUD_BTN_RESET].x + bt[HUD_BTN_RESET].w <= bt[i].x ||
+                    bt[i].y + bt[i].h <= bt[HUD_BTN_RESET].y || bt[HUD_BTN_RESET].y + bt[HUD_BTN_RESET].h <= bt[i].y);
+    view_set_mms(view, NULL, NULL, 0, NULL);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -180,6 +202,7 @@ int main(void)
         cmocka_unit_test(test_speed_pause_step),
         cmocka_unit_test(test_hud_timers),
         cmocka_unit_test(test_connect_fields),
+        cmocka_unit_test(test_mms_reset_button),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

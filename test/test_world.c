@@ -174,6 +174,41 @@ static void test_deterministic(void **state)
     assert_int_equal(a.collisions, b.collisions);
 }
 
+/* world_place puts the robot where it is told, at rest; with NULL wheels
+ * the hinge angles (what the encoders count) do not jump (mms ackReset),
+ * with given wheels they are those angles (mmview replay). */
+static void test_place(void **state)
+{
+    (void)state;
+    maze_t m;
+    maze_init(&m, 4, 4);
+    maze_close_unknown(&m);
+    maze_set_wall(&m, maze_cell(&m, 0, 0), MAZE_NORTH, MAZE_WALL_OPEN);
+    world_t *w = world_create(&cfg, &m, 0.09, 0.09, M_PI / 2);
+    motor_t ml, mr;
+    motor_init(&ml, &cfg);
+    motor_init(&mr, &cfg);
+    for (int i = 0; i < 300; i++) /* drive off north, turning a little */
+        world_step(w, motor_step(&ml, 600, world_wheel_rate(w, WORLD_LEFT), cfg.step_s),
+                   motor_step(&mr, 500, world_wheel_rate(w, WORLD_RIGHT), cfg.step_s));
+    double a0 = world_wheel_angle(w, WORLD_LEFT), a1 = world_wheel_angle(w, WORLD_RIGHT), x, y, h, v, om;
+    assert_true(fabs(a0) > 0.5 && fabs(a0 - a1) > 0.05);
+    world_place(w, 0.09, 0.09, M_PI / 2, NULL);
+    world_pose(w, &x, &y, &h);
+    world_velocity(w, &v, &om);
+    assert_true(fabs(x - 0.09) < 1e-9 && fabs(y - 0.09) < 1e-9 && fabs(h - M_PI / 2) < 1e-9 && v == 0 && om == 0);
+    assert_true(fabs(world_wheel_angle(w, WORLD_LEFT) - a0) < 1e-9 && fabs(world_wheel_angle(w, WORLD_RIGHT) - a1) < 1e-9);
+    const double wheels[2] = { 0.25, -1.5 };
+    world_place(w, 0.27, 0.09, 0.0, wheels);
+    world_pose(w, &x, &y, &h);
+    assert_true(fabs(x - 0.27) < 1e-9 && fabs(y - 0.09) < 1e-9 && fabs(h) < 1e-9);
+    assert_true(fabs(world_wheel_angle(w, WORLD_LEFT) - 0.25) < 1e-9 && fabs(world_wheel_angle(w, WORLD_RIGHT) + 1.5) < 1e-9);
+    for (int i = 0; i < 200; i++) world_step(w, 0, 0); /* it settles where it was put */
+    world_pose(w, &x, &y, &h);
+    assert_true(fabs(x - 0.27) < 0.002 && fabs(y - 0.09) < 0.002 && world_collisions(w) == 0);
+    world_destroy(w);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -183,6 +218,7 @@ int main(void)
         cmocka_unit_test(test_no_tunnelling),
         cmocka_unit_test(test_stays_on_floor),
         cmocka_unit_test(test_deterministic),
+        cmocka_unit_test(test_place),
     };
     return cmocka_run_group_tests_name("world", tests, setup, NULL);
 }

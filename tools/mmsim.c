@@ -26,6 +26,7 @@
 #include "solve.h"
 #include "mazedir.h"
 #include "mazefile.h"
+#include "mms.h"
 #include "sim.h"
 #include "telem.h"
 #include "outfile.h"
@@ -55,6 +56,7 @@ typedef struct {
     link_opts_t link;
     const char *avr_elf, *avr_mcu; /* --avr ELF: processor in the loop (simavr), --mcu */
     uint32_t avr_f_cpu;            /* --f-cpu, Hz (0 = from the ELF or 16 MHz) */
+    mms_opts_t mms;                /* --mms COMMAND (NULL: none), --mms-ideal-walls, --mms-timeout-ms, --mms-reset-at */
 } opts_t;
 
 static double wall_now(void)
@@ -91,6 +93,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     static sim_t sim;
     static driver_t drv;
     static telem_t tel;
+    static mms_t mms;
     int tel_on = o->telem.url || o->telem.log_path;
     simcfg_t cfg;
     char err[MAZEFILE_ERR_LEN], hash[65];
@@ -132,6 +135,20 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         }
     } else if (o->scripted) {
         driver_init(&drv, &maze, &cfg, o->runs);
+    } else if (o->mms.command) {
+        drv.done = 0;
+        drv.reachable = 1;
+        hal_sim_attach(&sim);
+        hal_sim_set_log(o->verbose ? stderr : NULL);
+        fw_set_maze(&maze);
+        fw_setup();
+        mouse_cmd_mode();
+        if (mms_start(&mms, &o->mms, &maze, err, sizeof err) != 0) {
+            fprintf(stderr, "mmsim: %s\n", err);
+            hal_sim_attach(NULL);
+            sim_free(&sim);
+            return EXIT_EXTERNAL;
+        }
     } else {
         drv.done = 0;
         drv.reachable = 1;
@@ -159,6 +176,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
             vo.baud = (long)lnk.o.baud;
         }
         view = view_new(&vo);
+        if (view && o->mms.command) view_set_mms(view, mms.color, &mms.text[0][0], sizeof mms.text[0], &mms.was_reset);
         if (!view || view_open(view, o->gui, verr, sizeof verr) != 0) {
             fprintf(stderr, "mmsim: %s\n", verr);
             view_free(view);
@@ -192,6 +210,15 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
                 reason = "time_limit";
                 break;
             }
+        } else if (o->mms.command) { /* sim time stands still while the algorithm thinks */
+            if (mms_service(&mms, &sim) != MMS_STEP) {
+                reason = mms.reason;
+                break;
+            }
+            sim_step(&sim);
+            if (tel_on) telem_step(&tel, &sim);
+            fw_tick();
+            fw_loop();
         } else if (o->scripted) {
             driver_update(&drv, &sim);
             sim_step(&sim);
@@ -248,7 +275,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
             reason = "time_limit";
             break;
         }
-        if (sim.step % 100 == 0 && !hil) { /* a HIL robot may wait for its MCU */
+        if (sim.step % 100 == 0 && !hil && !o->mms.command) { /* a HIL robot may wait for its MCU; mms: the firmware's own stall check */
             world_pose(sim.world, &x, &y, &h);
             if (hypot(x - last_x, y - last_y) > 0.01) {
                 last_x = x;
@@ -267,6 +294,10 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
                 nanosleep(&ts, NULL);
             }
         }
+    }
+    if (o->mms.command) {
+        mms_stop(&mms);
+        if (mms.message[0]) fprintf(stderr, "%s\n", mms.message);
     }
     int tel_rc = 0;
     if (tel_on) {
@@ -305,7 +336,12 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
                                                         round(y * 1e6) / 1e6, "heading_rad", round(h * 1e6) / 1e6));
     json_object_set_new(o_json, "exit_reason", json_string(reason));
     json_object_set_new(o_json, "config_hash", json_string(hash));
-    const char *driver_name = o->serial ? "serial" : o->scripted ? "scripted" : "firmware";
+    const char *driver_name = o->serial ? "serial" : o->scripted ? "scripted" : o->mms.command ? "mms" : "firmware";
+    if (o->mms.command) {
+        json_t *mj = mms_json(&mms);
+        json_object_set_new(mj, "wall_contacts", json_integer(world_collisions(sim.world))); /* = collisions */
+        json_object_set_new(o_json, "mms", mj);
+    }
     json_object_set_new(o_json, "driver", json_string(driver_name));
     if (hil) {
         json_object_set_new(o_json, "link", link_json(&lnk));
@@ -328,6 +364,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         char title[300], rerr[600];
         snprintf(title, sizeof title, "%s  %ux%u  seed %llu  %s driver  exit: %s", maze_path, maze.width, maze.height,
                  (unsigned long long)o->seed, driver_name, reason);
+        if (o->mms.command) report_set_cells(rep, mms.color, &mms.text[0][0], sizeof mms.text[0]);
         if (report_write(rep, &sim, o->scripted || o->serial ? NULL : mouse_map(), o->report, title, rerr, sizeof rerr) != 0) {
             fprintf(stderr, "%s\n", rerr);
             report_failed = 1;
@@ -339,9 +376,11 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         static solve_path_t truth, known;
         int ok_truth = solve_best(&maze, 0, &truth) == 0, ok_known = solve_best(mouse_map(), 0, &known) == 0;
         uint16_t proven = mouse_proven_at_step();
-        json_object_set_new(o_json, "proven_at_step", proven == 0xFFFFu ? json_null() : json_integer(proven));
-        json_object_set_new(o_json, "final_path_optimal", json_boolean(ok_truth && ok_known && proven != 0xFFFFu &&
-                                                                       known.cost == truth.cost));
+        if (!o->mms.command) { /* the firmware's own search (an mms algorithm searches by itself) */
+            json_object_set_new(o_json, "proven_at_step", proven == 0xFFFFu ? json_null() : json_integer(proven));
+            json_object_set_new(o_json, "final_path_optimal", json_boolean(ok_truth && ok_known && proven != 0xFFFFu &&
+                                                                           known.cost == truth.cost));
+        }
         hal_sim_attach(NULL);
     }
 
@@ -355,6 +394,10 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
                    link_util_rx(&lnk) * 100, (unsigned long long)lnk.st.tx_dropped,
                    (unsigned)wire_stats_errors(o->link.protocol == LINK_COMPAT ? &lnk.crx.stats : &lnk.dec.stats),
                    (unsigned)lnk.st.silences, (unsigned)lnk.st.disconnects);
+        else if (o->mms.command)
+            printf("%s: %ux%u, seed %llu, mms algorithm '%s' (%s walls), score %g\n", maze_path, maze.width, maze.height,
+                   (unsigned long long)o->seed, o->mms.command, o->mms.ideal_walls ? "ideal" : "sensed",
+                   (double)mms_stats_score(&mms.stats));
         else if (o->scripted)
             printf("%s: %ux%u, seed %llu, scripted driver, %d run%s\n", maze_path, maze.width, maze.height,
                    (unsigned long long)o->seed, o->runs, o->runs == 1 ? "" : "s");
@@ -370,6 +413,10 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     if (report_failed || view_failed) return EXIT_EXTERNAL;
     if (o->shot) return EXIT_OK; /* the picture was the point */
     if (!strcmp(reason, "avr_stopped")) return EXIT_EXTERNAL;
+    if (o->mms.command) { /* the algorithm's failure is an external one; else: was the goal reached */
+        if (mms_failed(&mms)) return EXIT_EXTERNAL;
+        return r->nlaps > 0 && (!strcmp(reason, "mms_exited") || !strcmp(reason, "time_limit")) ? EXIT_OK : EXIT_NOT_REACHED;
+    }
     return r->nlaps > 0 && (!strcmp(reason, "done") || !strcmp(reason, "mcu_stopped")) ? EXIT_OK : EXIT_NOT_REACHED;
 }
 
@@ -464,6 +511,8 @@ static void usage(FILE *out)
           "             in real time; --pty creates a pseudo-terminal and prints its path; docs/PROTOCOL.md)\n"
           "       mmsim --maze FILE --avr ELF [--mcu NAME] [--f-cpu HZ] [--baud N] [--protocol P]\n"
           "             (processor in the loop: the AVR image runs in simavr, in lockstep)\n"
+          "       mmsim --maze FILE --mms COMMAND [--mms-ideal-walls] [--mms-timeout-ms N] [--mms-reset-at S]\n"
+          "             (an mms algorithm drives the robot through the mms text API, docs/MMS.md)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
           "       mmsim --print-config [--config FILE]\n"
           "Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure.\n",
@@ -513,13 +562,19 @@ int main(int argc, char **argv)
         { "protocol", required_argument, 0, 2002 }, { "silence-ms", required_argument, 0, 2003 },
         { "avr", required_argument, 0, 2004 },   { "mcu", required_argument, 0, 2005 },
         { "f-cpu", required_argument, 0, 2006 },
+        { "mms", required_argument, 0, 3001 },   { "mms-ideal-walls", no_argument, 0, 3002 },
+        { "mms-timeout-ms", required_argument, 0, 3003 }, { "mms-reset-at", required_argument, 0, 3004 },
         { 0, 0, 0, 0 },
     };
-    opts_t o = { NULL, 1, 0, 0, 0, 3, -1, 0, 0, 1, 0, 1, { NULL, NULL, 0, NULL, NULL }, NULL, 0, NULL, 0, { 1024, 720, 1, 1, "", 115200 },
-                 0, { NULL, 0, 0, LINK_FRAMED, 0 }, NULL, NULL, 0 }; /* scripted by default: it honours --runs */
+    opts_t o = { /* scripted by default: it honours --runs */
+        .seed = 1, .runs = 3, .centre_post = -1, .scripted = 1, .jobs = 1,
+        .view = { .width = 1024, .height = 720, .speed = 1, .camera = 1, .port = "", .baud = 115200 },
+        .link = { .protocol = LINK_FRAMED },
+        .mms = { .timeout_ms = 5000, .reset_at_s = -1 },
+    };
     const char *maze = NULL, *batch = NULL;
     double v;
-    int c, link_flags = 0;
+    int c, link_flags = 0, mms_flags = 0, driver_given = 0;
     opterr = 0;
     while ((c = getopt_long(argc, argv, "", opts, NULL)) != -1) {
         switch (c) {
@@ -554,6 +609,7 @@ int main(int argc, char **argv)
             if (strcmp(optarg, "scripted") && strcmp(optarg, "firmware"))
                 return bad("--driver: expected firmware or scripted, got '%s'", optarg);
             o.scripted = !strcmp(optarg, "scripted");
+            driver_given = 1;
             break;
         case 'v': o.verbose = 1; break;
         case 'L':
@@ -615,6 +671,20 @@ int main(int argc, char **argv)
             if (num("--f-cpu", optarg, 1000, 100e6, &v)) return EXIT_BAD_INPUT;
             o.avr_f_cpu = (uint32_t)v;
             break;
+        case 3001:
+            if (!*optarg) return bad("%s", "--mms: expected a command, e.g. --mms 'python3 main.py'");
+            o.mms.command = optarg;
+            break;
+        case 3002: o.mms.ideal_walls = 1; mms_flags++; break;
+        case 3003:
+            if (num("--mms-timeout-ms", optarg, 1, 3600000, &v)) return EXIT_BAD_INPUT;
+            o.mms.timeout_ms = (int)v;
+            mms_flags++;
+            break;
+        case 3004:
+            if (num("--mms-reset-at", optarg, 0, 86400, &o.mms.reset_at_s)) return EXIT_BAD_INPUT;
+            mms_flags++;
+            break;
         case 'j': o.json = 1; break;
         case 'r': o.realtime = 1; break;
         case 'P': o.print_config = 1; break;
@@ -628,6 +698,11 @@ int main(int argc, char **argv)
     if (!!o.link.device + o.link.pty + !!o.avr_elf > 1) return bad("%s", "--serial/--port, --pty and --avr exclude each other");
     if (!o.serial && link_flags) return bad("%s", "--protocol and --silence-ms need --serial DEV, --pty or --avr ELF");
     if (!o.avr_elf && (o.avr_mcu || o.avr_f_cpu)) return bad("%s", "--mcu and --f-cpu need --avr ELF");
+    if (!o.mms.command && mms_flags) return bad("%s", "--mms-ideal-walls, --mms-timeout-ms and --mms-reset-at need --mms COMMAND");
+    if (o.mms.command && o.verbose) o.mms.trace = stderr; /* --verbose: the mms dialogue too */
+    if (o.mms.command && !driver_given) o.scripted = 0; /* the firmware's motion layer runs the moves */
+    if (o.mms.command && (o.serial || o.scripted || batch))
+        return bad("%s", "--mms drives the firmware of one run: not with --serial/--pty/--avr, --driver scripted or --batch");
     if (o.serial && batch) return bad("%s", "--serial/--pty/--avr run one maze, not --batch");
     if (o.serial && !o.avr_elf) o.realtime = 1; /* a real MCU runs in real time; simavr in lockstep */
     if (o.print_config) {

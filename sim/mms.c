@@ -1,0 +1,694 @@
+/* mms.c - the mms text API served to a child process (mms.h). */
+#include "mms.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <jansson.h>
+#include <limits.h>
+#include <stdarg.h>
+#include <math.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "mouse.h"
+#include "sim.h"
+#include "world.h"
+
+enum { MOVE_NONE = 0, MOVE_SENSE, MOVE_FORWARD, MOVE_TURN, MOVE_RESET };
+
+/* ---- stats (mms Stats.cpp semantics) ---- */
+
+void mms_stats_init(mms_stats_t *s) { memset(s, 0, sizeof *s); }
+
+void mms_stats_start_run(mms_stats_t *s)
+{
+    s->cur_distance = s->cur_turns = 0;
+    s->cur_eff = s->penalty;
+    s->total_eff += s->penalty;
+    s->penalty = 0;
+    s->in_run = 1;
+}
+
+void mms_stats_distance(mms_stats_t *s, int cells)
+{
+    float eff = cells > 2 ? cells / 2.0f + 1.0f : (float)cells;
+    s->total_distance += cells;
+    s->total_eff += eff;
+    if (s->in_run) {
+        s->cur_distance += cells;
+        s->cur_eff += eff;
+    }
+}
+
+void mms_stats_turn(mms_stats_t *s)
+{
+    s->total_turns++;
+    if (s->in_run) s->cur_turns++;
+}
+
+void mms_stats_finish_run(mms_stats_t *s)
+{
+    s->in_run = 0;
+    s->solved = 1;
+    float cur = s->cur_turns + s->cur_eff, best = s->best_turns + s->best_eff;
+    if (!s->has_best || cur < best) {
+        s->has_best = 1;
+        s->best_turns = s->cur_turns;
+        s->best_distance = s->cur_distance;
+        s->best_eff = s->cur_eff;
+    }
+}
+
+void mms_stats_end_unfinished(mms_stats_t *s) { s->in_run = 0; }
+void mms_stats_reset_penalty(mms_stats_t *s) { s->penalty = 15.0f; }
+
+float mms_stats_score(const mms_stats_t *s)
+{
+    if (!s->solved) return 2000.0f;
+    return s->best_eff + s->best_turns + 0.1f * (s->total_eff + s->total_turns);
+}
+
+int mms_stats_get(const mms_stats_t *s, const char *name, char *out, size_t len)
+{
+    static const char *const names[] = { "total-distance", "total-turns", "best-run-distance", "best-run-turns",
+                                         "current-run-distance", "current-run-turns", "total-effective-distance",
+                                         "best-run-effective-distance", "current-run-effective-distance", "score" };
+    int k = -1;
+    for (int i = 0; i < 10; i++)
+        if (!strcmp(name, names[i])) k = i;
+    if (k < 0) return -1;
+    int best = k == 2 || k == 3 || k == 7;
+    if (best && !s->has_best) {
+        snprintf(out, len, "-1");
+        return 0;
+    }
+    switch (k) {
+    case 0: snprintf(out, len, "%d", s->total_distance); break;
+    case 1: snprintf(out, len, "%d", s->total_turns); break;
+    case 2: snprintf(out, len, "%d", s->best_distance); break;
+    case 3: snprintf(out, len, "%d", s->best_turns); break;
+    case 4: snprintf(out, len, "%d", s->cur_distance); break;
+    case 5: snprintf(out, len, "%d", s->cur_turns); break;
+    case 6: snprintf(out, len, "%g", (double)s->total_eff); break;
+    case 7: snprintf(out, len, "%g", (double)s->best_eff); break;
+    case 8: snprintf(out, len, "%g", (double)s->cur_eff); break;
+    default: snprintf(out, len, "%g", (double)mms_stats_score(s)); break;
+    }
+    return 0;
+}
+
+uint32_t mms_colour_rgb(char letter)
+{
+    static const char letters[] = "kbacgorwyBCAGRY";
+    static const uint32_t rgb[] = { 0x000000, 0x0000FF, 0xA0A0A4, 0x00FFFF, 0x00FF00, 0xFFA500, 0xFF0000, 0xFFFFFF,
+                                    0xFFFF00, 0x000080, 0x008080, 0x808080, 0x008000, 0x800000, 0x808000 };
+    const char *p = letter ? strchr(letters, letter) : NULL;
+    return p ? rgb[p - letters] : 0;
+}
+
+/* ---- commands ---- */
+
+void mms_init(mms_t *m, const mms_opts_t *o, const maze_t *truth)
+{
+    memset(m, 0, sizeof *m);
+    m->o = *o;
+    m->truth = truth;
+    m->to_child = m->from_child = -1;
+    m->exit_status = -1;
+    m->reason = "running";
+    mms_stats_init(&m->stats);
+}
+
+/* Qt's QString::toInt as mms uses it: the whole token a base-10 integer,
+ * else 0 with ok = 0. */
+static int to_int(const char *t, int *ok)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(t, &end, 10);
+    if (errno || end == t || *end || v < INT_MIN || v > INT_MAX) {
+        *ok = 0;
+        return 0;
+    }
+    return (int)v;
+}
+
+static int dir_of(const char *t)
+{
+    if (strlen(t) != 1) return -1;
+    switch (t[0]) {
+    case 'n': case 'N': return MAZE_NORTH;
+    case 'e': case 'E': return MAZE_EAST;
+    case 's': case 'S': return MAZE_SOUTH;
+    case 'w': case 'W': return MAZE_WEST;
+    default: return -1;
+    }
+}
+
+static int in_maze(const mms_t *m, int x, int y)
+{
+    return x >= 0 && y >= 0 && x < m->truth->width && y < m->truth->height;
+}
+
+/* Is there a wall on side d of cell c: the maze file or the robot's map
+ * (unknown = no wall: mms assumes none until seen). */
+static int wall_at(const mms_t *m, maze_cell_t c, uint8_t d)
+{
+    if (m->o.ideal_walls) return !maze_passable(m->truth, c, d, 0);
+    return maze_wall(mouse_map(), c, d) == MAZE_WALL_CLOSED;
+}
+
+/* mms's isWall(pos, dir, halfStepsAhead) from a cell centre: the half-step
+ * positions 0..ahead are the centres (even) and edges (odd, facing into
+ * the next cell: never a wall) along dir. */
+static int wall_query(const mms_t *m, int rel, int half_steps_away)
+{
+    const mouse_status_t *st = mouse_status();
+    uint8_t d = maze_turn(st->heading, (int8_t)rel);
+    int ahead = half_steps_away - 1;
+    maze_cell_t c = st->cell;
+    for (int i = 0; i <= (ahead < 0 ? 0 : ahead / 2); i++) {
+        if (wall_at(m, c, d)) return 1;
+        c = maze_step(m->truth, c, d);
+    }
+    return 0;
+}
+
+static void place_at_start(const mms_t *m, struct sim_s *s)
+{
+    const maze_t *t = m->truth;
+    double cell = s->cfg.cell_m;
+    world_place(s->world, (maze_x(t, t->start) + 0.5) * cell, (maze_y(t, t->start) + 0.5) * cell,
+                M_PI / 2 - t->start_heading * (M_PI / 2), NULL);
+}
+
+/* Split on spaces (empty parts skipped) into at most n tokens; returns the
+ * count, n + 1 if there were more. */
+static int split(char *line, char **tok, int n)
+{
+    int k = 0;
+    for (char *p = strtok(line, " "); p; p = strtok(NULL, " ")) {
+        if (k == n) return n + 1;
+        tok[k++] = p;
+    }
+    return k;
+}
+
+static int start_forward(mms_t *m, int cells, char *resp, size_t len)
+{
+    const mouse_status_t *st = mouse_status();
+    if (cells < 1) {
+        snprintf(resp, len, "crash");
+        return 0;
+    }
+    if (cells > 255) cells = 255;
+    if (m->o.ideal_walls) { /* the maze file says whether the way is clear */
+        maze_cell_t c = st->cell;
+        for (int i = 0; i < cells; i++) {
+            if (!maze_passable(m->truth, c, st->heading, 0)) {
+                snprintf(resp, len, "crash");
+                return 0;
+            }
+            c = maze_step(m->truth, c, st->heading);
+        }
+    }
+    maze_cell_t from = st->cell;
+    if (mouse_cmd_forward((uint8_t)cells) != 0) {
+        snprintf(resp, len, "crash");
+        return 0;
+    }
+    if (from == m->truth->start) mms_stats_start_run(&m->stats);
+    m->pending = MOVE_FORWARD;
+    return 1;
+}
+
+int mms_execute(mms_t *m, struct sim_s *s, const char *line_in, char *resp, size_t len)
+{
+    char line[MMS_LINE_MAX + 1], *tok[5];
+    resp[0] = '\0';
+    snprintf(line, sizeof line, "%s", line_in);
+    m->commands++;
+    m->since_move++;
+
+    if (!strncmp(line, "setText ", 8)) { /* the text may hold spaces: X, Y, then the rest */
+        char *p = line + 8, *sp1 = strchr(p, ' ');
+        if (!sp1) goto invalid;
+        *sp1 = '\0';
+        char *q = sp1 + 1, *sp2 = strchr(q, ' ');
+        const char *text = "";
+        if (sp2) {
+            *sp2 = '\0';
+            text = sp2 + 1;
+        }
+        int ok = 1, x = to_int(p, &ok), y = to_int(q, &ok);
+        if (!ok || !in_maze(m, x, y)) goto invalid;
+        char *dst = m->text[maze_cell(m->truth, (uint8_t)x, (uint8_t)y)];
+        size_t i = 0;
+        for (; text[i] && i < MMS_TEXT_MAX; i++) dst[i] = text[i] >= 32 && text[i] < 127 ? text[i] : '?';
+        dst[i] = '\0';
+        return 0;
+    }
+    int n = split(line, tok, 4);
+    if (n < 1 || n > 4) goto invalid;
+    const char *f = tok[0];
+    int ok = 1;
+    if (!strcmp(f, "setWall") || !strcmp(f, "clearWall")) {
+        if (n != 4) goto invalid;
+        int x = to_int(tok[1], &ok), y = to_int(tok[2], &ok), d = dir_of(tok[3]);
+        if (!ok || d < 0 || !in_maze(m, x, y)) goto invalid;
+        maze_cell_t c = maze_cell(m->truth, (uint8_t)x, (uint8_t)y), nb;
+        int set = f[0] == 's';
+        if (set) m->drawn_walls[c] |= (uint8_t)(1u << d);
+        else m->drawn_walls[c] &= (uint8_t)~(1u << d);
+        if (maze_neighbour(m->truth, c, (uint8_t)d, &nb)) {
+            uint8_t bit = (uint8_t)(1u << ((d + 2) & 3));
+            if (set) m->drawn_walls[nb] |= bit;
+            else m->drawn_walls[nb] &= (uint8_t)~bit;
+        }
+        return 0;
+    }
+    if (!strcmp(f, "setColor")) {
+        if (n != 4) goto invalid;
+        int x = to_int(tok[1], &ok), y = to_int(tok[2], &ok);
+        if (!ok || strlen(tok[3]) != 1 || !strchr("kbacgorwyBCAGRY", tok[3][0]) || !in_maze(m, x, y)) goto invalid;
+        m->color[maze_cell(m->truth, (uint8_t)x, (uint8_t)y)] = tok[3][0];
+        return 0;
+    }
+    if (!strcmp(f, "clearColor") || !strcmp(f, "clearText")) {
+        if (n != 3) goto invalid;
+        int x = to_int(tok[1], &ok), y = to_int(tok[2], &ok);
+        if (!ok || !in_maze(m, x, y)) goto invalid;
+        maze_cell_t c = maze_cell(m->truth, (uint8_t)x, (uint8_t)y);
+        if (f[5] == 'C') m->color[c] = 0;
+        else m->text[c][0] = '\0';
+        return 0;
+    }
+    if (!strcmp(f, "clearAllColor") || !strcmp(f, "clearAllText")) {
+        if (n != 1) goto invalid;
+        if (f[8] == 'C') memset(m->color, 0, sizeof m->color);
+        else memset(m->text, 0, sizeof m->text);
+        return 0;
+    }
+    /* the commands with an answer: one token, or two for these */
+    if (n > 2) goto invalid;
+    static const char *const walls[] = { "wallFront", "wallRight", "wallBack", "wallLeft" };
+    static const char *const diag[] = { "wallFrontLeft", "wallFrontRight", "wallBackLeft", "wallBackRight" };
+    int arg = 1, is_wall = -1, is_diag = 0;
+    for (int i = 0; i < 4; i++) {
+        if (!strcmp(f, walls[i])) is_wall = i;
+        if (!strcmp(f, diag[i])) is_diag = 1;
+    }
+    int two_ok = is_wall >= 0 || is_diag || !strcmp(f, "getStat") || !strcmp(f, "moveForward") ||
+                 !strcmp(f, "moveForwardHalf");
+    if (n == 2 && !two_ok) goto invalid;
+    if (n == 2 && strcmp(f, "getStat")) arg = to_int(tok[1], &ok); /* mms: not a number = 0 */
+
+    if (!strcmp(f, "mazeWidth")) snprintf(resp, len, "%d", m->truth->width);
+    else if (!strcmp(f, "mazeHeight")) snprintf(resp, len, "%d", m->truth->height);
+    else if (is_wall >= 0) snprintf(resp, len, "%s", wall_query(m, is_wall, arg) ? "true" : "false");
+    else if (is_diag) snprintf(resp, len, "true"); /* from a cell centre a diagonal aims at a post */
+    else if (!strcmp(f, "moveForward")) return start_forward(m, arg, resp, len);
+    else if (!strcmp(f, "moveForwardHalf")) {
+        /* the motion layer stops only at cell centres: an odd number of
+         * half steps is refused */
+        if (arg < 1 || arg % 2) snprintf(resp, len, "crash");
+        else return start_forward(m, arg / 2, resp, len);
+    } else if (!strcmp(f, "turnRight") || !strcmp(f, "turnRight90") || !strcmp(f, "turnLeft") ||
+               !strcmp(f, "turnLeft90")) {
+        if (mouse_cmd_turn(f[4] == 'R' ? 1 : -1) != 0) {
+            snprintf(resp, len, "crash");
+            return 0;
+        }
+        mms_stats_turn(&m->stats);
+        m->pending = MOVE_TURN;
+        return 1;
+    } else if (!strcmp(f, "turnRight45") || !strcmp(f, "turnLeft45")) {
+        snprintf(resp, len, "crash"); /* no diagonal moves in the motion layer */
+    } else if (!strcmp(f, "wasReset")) {
+        snprintf(resp, len, "%s", m->was_reset ? "true" : "false");
+    } else if (!strcmp(f, "ackReset")) {
+        m->was_reset = 0;
+        m->resets++;
+        mms_stats_reset_penalty(&m->stats);
+        mms_stats_end_unfinished(&m->stats);
+        if (!s) {
+            snprintf(resp, len, "ack");
+            return 0;
+        }
+        place_at_start(m, s);
+        mouse_cmd_reset();
+        m->pending = MOVE_RESET;
+        return 1;
+    } else if (!strcmp(f, "getStat")) {
+        if (n != 2 || mms_stats_get(&m->stats, tok[1], resp, len) != 0) goto invalid;
+    } else {
+        goto invalid;
+    }
+    return 0;
+invalid:
+    resp[0] = '\0';
+    m->invalid++;
+    return 0;
+}
+
+/* ---- the child process ---- */
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+/* mmsim interrupted (Ctrl-C, kill): the algorithm's group is not in the
+ * terminal's foreground group, so end it here, then die of the signal. */
+static volatile pid_t child_group;
+
+static void on_fatal_signal(int sig)
+{
+    if (child_group > 0) kill(-child_group, SIGKILL);
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+static void guard_signals(int on)
+{
+    static const int sigs[3] = { SIGINT, SIGTERM, SIGHUP };
+    static void (*old[3])(int);
+    for (int i = 0; i < 3; i++) {
+        if (on) {
+            old[i] = signal(sigs[i], on_fatal_signal);
+            if (old[i] == SIG_IGN) signal(sigs[i], SIG_IGN); /* ignored stays ignored (nohup) */
+        } else {
+            signal(sigs[i], old[i] == SIG_ERR ? SIG_DFL : old[i]);
+        }
+    }
+}
+
+static int pipe_cloexec(int fd[2])
+{
+    if (pipe(fd) != 0) return -1;
+    fcntl(fd[0], F_SETFD, FD_CLOEXEC);
+    fcntl(fd[1], F_SETFD, FD_CLOEXEC);
+    return 0;
+}
+
+int mms_start(mms_t *m, const mms_opts_t *o, const maze_t *truth, char *err, size_t len)
+{
+    int in[2], out[2];
+    mms_init(m, o, truth);
+    signal(SIGPIPE, SIG_IGN); /* a closed pipe is an error return, never a signal */
+    if (pipe_cloexec(in) != 0) {
+        snprintf(err, len, "mms: pipe: %s", strerror(errno));
+        return -1;
+    }
+    if (pipe_cloexec(out) != 0) {
+        snprintf(err, len, "mms: pipe: %s", strerror(errno));
+        close(in[0]);
+        close(in[1]);
+        return -1;
+    }
+    fflush(stdout);
+    fflush(stderr);
+    /* a SIGINT/SIGTERM between fork and child_group = pid waits (blocked)
+     * and then ends the child too */
+    sigset_t block, prev;
+    sigemptyset(&block);
+    sigaddset(&block, SIGINT);
+    sigaddset(&block, SIGTERM);
+    sigaddset(&block, SIGHUP);
+    sigprocmask(SIG_BLOCK, &block, &prev);
+    guard_signals(1);
+    pid_t pid = fork();
+    if (pid < 0) {
+        guard_signals(0);
+        sigprocmask(SIG_SETMASK, &prev, NULL);
+        snprintf(err, len, "mms: fork: %s", strerror(errno));
+        close(in[0]); close(in[1]); close(out[0]); close(out[1]);
+        return -1;
+    }
+    if (pid == 0) {
+        setpgid(0, 0); /* its own group: the end kills every process it started */
+        signal(SIGPIPE, SIG_DFL);
+        guard_signals(0);
+        sigprocmask(SIG_SETMASK, &prev, NULL);
+        if (dup2(in[0], STDIN_FILENO) < 0 || dup2(out[1], STDOUT_FILENO) < 0) _exit(127);
+        execl("/bin/sh", "sh", "-c", o->command, (char *)NULL);
+        _exit(127);
+    }
+    setpgid(pid, pid); /* also here: no race with the kill at the end */
+    child_group = pid;
+    sigprocmask(SIG_SETMASK, &prev, NULL);
+    close(in[0]);
+    close(out[1]);
+    m->pid = pid;
+    m->to_child = in[1];
+    m->from_child = out[0];
+    fcntl(m->to_child, F_SETFL, fcntl(m->to_child, F_GETFL) | O_NONBLOCK);
+    fcntl(m->from_child, F_SETFL, fcntl(m->from_child, F_GETFL) | O_NONBLOCK);
+    m->pending = MOVE_SENSE; /* the firmware senses the start cell first */
+    return 0;
+}
+
+/* End the run with this reason and one message line (fmt NULL: none). */
+static int end_run(mms_t *m, const char *reason, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+static int end_run(mms_t *m, const char *reason, const char *fmt, ...)
+{
+    m->reason = reason;
+    if (fmt) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(m->message, sizeof m->message, fmt, ap);
+        va_end(ap);
+    }
+    return MMS_END;
+}
+
+/* Reap the child if it has exited, waiting up to wait_s. */
+static int reap(mms_t *m, double wait_s)
+{
+    double t0 = now_s();
+    for (;;) {
+        int status;
+        pid_t r = waitpid(m->pid, &status, WNOHANG);
+        if (r == m->pid || (r < 0 && errno == ECHILD)) {
+            m->exit_status = r == m->pid ? status : -1;
+            m->pid = 0;
+            return 1;
+        }
+        if (now_s() - t0 >= wait_s) return 0;
+        struct timespec ts = { 0, 2000000 };
+        nanosleep(&ts, NULL);
+    }
+}
+
+/* The child closed its output: it has ended (or is about to). */
+static int child_gone(mms_t *m)
+{
+    if (m->pid && !reap(m, m->o.timeout_ms / 1000.0)) {
+        kill(-m->pid, SIGKILL);
+        reap(m, 5.0);
+        return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' closed its output but did not exit", m->o.command);
+    }
+    int st = m->exit_status;
+    if (st >= 0 && WIFEXITED(st) && WEXITSTATUS(st) == 0) return end_run(m, "mms_exited", NULL);
+    if (st >= 0 && WIFSIGNALED(st))
+        return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' was killed by signal %d", m->o.command, WTERMSIG(st));
+    return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' exited with status %d", m->o.command,
+                   st >= 0 && WIFEXITED(st) ? WEXITSTATUS(st) : -1);
+}
+
+static void trace(const mms_t *m, const struct sim_s *s, const char *dir, const char *text)
+{
+    if (m->o.trace) fprintf(m->o.trace, "mms %9.3f %s %s\n", s ? sim_time_s(s) : 0.0, dir, text);
+}
+
+static int send_line(mms_t *m, const char *resp)
+{
+    char out[64];
+    int n = snprintf(out, sizeof out, "%s\n", resp), off = 0;
+    double t0 = now_s();
+    while (off < n) {
+        ssize_t k = write(m->to_child, out + off, (size_t)(n - off));
+        if (k > 0) {
+            off += (int)k;
+            continue;
+        }
+        if (k < 0 && errno != EAGAIN && errno != EINTR) return -1;
+        double left_ms = m->o.timeout_ms - (now_s() - t0) * 1000.0;
+        if (left_ms <= 0) return -2;
+        struct pollfd p = { m->to_child, POLLOUT, 0 };
+        poll(&p, 1, (int)ceil(left_ms));
+    }
+    return 0;
+}
+
+/* The next command line into line; MMS_STEP when there is one, else
+ * MMS_END with the reason set. */
+static int read_line(mms_t *m, char *line)
+{
+    double t0 = now_s();
+    for (;;) {
+        char *nl = memchr(m->buf, '\n', m->len);
+        if (nl) {
+            size_t k = (size_t)(nl - m->buf);
+            memcpy(line, m->buf, k);
+            line[k] = '\0';
+            if (k && line[k - 1] == '\r') line[k - 1] = '\0'; /* mms drops \r */
+            memmove(m->buf, nl + 1, m->len - k - 1);
+            m->len -= k + 1;
+            return MMS_STEP;
+        }
+        if (m->len >= MMS_LINE_MAX)
+            return end_run(m, "mms_garbage", "mmsim: mms: the algorithm '%s' printed a line longer than %d bytes",
+                           m->o.command, MMS_LINE_MAX);
+        double left_ms = m->o.timeout_ms - (now_s() - t0) * 1000.0;
+        if (left_ms <= 0)
+            return end_run(m, "mms_timeout", "mmsim: mms: the algorithm '%s' sent no command for %d ms",
+                           m->o.command, m->o.timeout_ms);
+        struct pollfd p = { m->from_child, POLLIN, 0 };
+        int r = poll(&p, 1, (int)ceil(left_ms));
+        if (r < 0 && errno != EINTR)
+            return end_run(m, "mms_failed", "mmsim: mms: poll on the algorithm '%s' failed: %s", m->o.command, strerror(errno));
+        if (r <= 0) continue;
+        ssize_t k = read(m->from_child, m->buf + m->len, MMS_LINE_MAX - m->len);
+        if (k == 0) {
+            if (m->len) { /* a last line without a newline is still a line */
+                m->buf[m->len++] = '\n';
+                continue;
+            }
+            return child_gone(m);
+        }
+        if (k < 0 && errno != EAGAIN && errno != EINTR)
+            return end_run(m, "mms_failed", "mmsim: mms: reading from the algorithm '%s' failed: %s", m->o.command, strerror(errno));
+        if (k > 0) m->len += (size_t)k;
+    }
+}
+
+int mms_service(mms_t *m, struct sim_s *s)
+{
+    char line[MMS_LINE_MAX + 1], resp[64];
+    for (;;) {
+        if (m->pending) {
+            uint8_t st = mouse_cmd_status();
+            if (st == MOUSE_CMD_BUSY && sim_time_s(s) - m->move_start_s > MMS_MOVE_MAX_S) {
+                m->crashes++;
+                send_line(m, "crash");
+                snprintf(m->message, sizeof m->message,
+                         "mmsim: mms: the robot did not finish a move in %.0f s of simulation time: stuck", MMS_MOVE_MAX_S);
+                m->reason = "crash_stop";
+                return MMS_END;
+            }
+            if (st == MOUSE_CMD_BUSY) return MMS_STEP;
+            int was = m->pending;
+            m->pending = MOVE_NONE;
+            if (was == MOVE_FORWARD) {
+                mms_stats_distance(&m->stats, mouse_cmd_moved());
+                maze_cell_t c = mouse_status()->cell;
+                if (maze_is_goal(m->truth, c)) mms_stats_finish_run(&m->stats);
+                else if (c == m->truth->start) mms_stats_end_unfinished(&m->stats);
+                m->moves++;
+                m->since_move = 0;
+            }
+            if (was == MOVE_TURN) {
+                m->moves++;
+                m->since_move = 0;
+            }
+            if (st == MOUSE_CMD_CRASHED) {
+                if (was != MOVE_SENSE) send_line(m, "crash");
+                m->crashes++;
+                return end_run(m, "crash_stop", "mmsim: mms: the robot is stuck (motion stall) during a %s: run ended",
+                               was == MOVE_FORWARD ? "forward move" : was == MOVE_TURN ? "turn" : "reset");
+            }
+            if (m->o.reset_at_s >= 0 && sim_time_s(s) >= m->o.reset_at_s) {
+                m->was_reset = 1; /* the Reset button, pressed once */
+                m->o.reset_at_s = -1;
+            }
+            if (was != MOVE_SENSE) {
+                const char *r = st == MOUSE_CMD_BLOCKED ? "crash" : "ack";
+                trace(m, s, "<", r);
+                if (st == MOUSE_CMD_BLOCKED) m->crashes++;
+                if (send_line(m, r) != 0) return child_gone(m);
+            }
+        }
+        if (m->since_move >= MMS_FLOOD_LIMIT)
+            return end_run(m, "mms_flood", "mmsim: mms: the algorithm '%s' sent %ld commands without a move",
+                           m->o.command, MMS_FLOOD_LIMIT);
+        if (read_line(m, line) != MMS_STEP) return MMS_END;
+        long inv = m->invalid;
+        int move = mms_execute(m, s, line, resp, sizeof resp);
+        trace(m, s, m->invalid != inv ? "> (ignored)" : ">", line);
+        if (resp[0]) trace(m, s, "<", resp);
+        if (move) { /* a move: answered when done */
+            m->move_start_s = sim_time_s(s);
+            continue;
+        }
+        if (resp[0]) {
+            if (!strcmp(resp, "crash")) m->crashes++;
+            int w = send_line(m, resp);
+            if (w == -2)
+                return end_run(m, "mms_timeout", "mmsim: mms: the algorithm '%s' does not read its input (%d ms)",
+                               m->o.command, m->o.timeout_ms);
+            if (w != 0) return child_gone(m);
+        }
+    }
+}
+
+void mms_stop(mms_t *m)
+{
+    if (m->to_child >= 0) close(m->to_child);
+    if (m->from_child >= 0) close(m->from_child);
+    m->to_child = m->from_child = -1;
+    if (child_group) {
+        guard_signals(0);
+        child_group = 0;
+    }
+    if (m->pid) {
+        if (!reap(m, 0)) {
+            kill(-m->pid, SIGKILL);
+            kill(m->pid, SIGKILL);
+            reap(m, 10.0);
+        }
+    }
+}
+
+int mms_failed(const mms_t *m)
+{
+    return !strcmp(m->reason, "mms_failed") || !strcmp(m->reason, "mms_timeout") ||
+           !strcmp(m->reason, "mms_garbage") || !strcmp(m->reason, "mms_flood");
+}
+
+void *mms_json(const mms_t *m)
+{
+    const mms_stats_t *s = &m->stats;
+    json_t *st = json_pack("{s:i, s:i, s:f, s:i, s:i, s:f, s:f}", "total_distance", s->total_distance, "total_turns",
+                           s->total_turns, "total_effective_distance", (double)s->total_eff, "current_run_distance",
+                           s->cur_distance, "current_run_turns", s->cur_turns, "current_run_effective_distance",
+                           (double)s->cur_eff, "score", round(mms_stats_score(s) * 1000.0) / 1000.0);
+    json_object_set_new(st, "best_run_distance", s->has_best ? json_integer(s->best_distance) : json_null());
+    json_object_set_new(st, "best_run_turns", s->has_best ? json_integer(s->best_turns) : json_null());
+    json_object_set_new(st, "best_run_effective_distance", s->has_best ? json_real(s->best_eff) : json_null());
+    json_t *j = json_pack("{s:s, s:b, s:i, s:I, s:I, s:I, s:I, s:I, s:o}", "command", m->o.command, "ideal_walls",
+                          m->o.ideal_walls, "timeout_ms", m->o.timeout_ms, "commands", (json_int_t)m->commands,
+                          "invalid_commands", (json_int_t)m->invalid, "moves", (json_int_t)m->moves, "crashes",
+                          (json_int_t)m->crashes, "resets", (json_int_t)m->resets, "stats", st);
+    json_t *colors = json_object(), *texts = json_object();
+    for (uint16_t c = 0; c < maze_cells(m->truth); c++) {
+        char key[16];
+        snprintf(key, sizeof key, "%u,%u", maze_x(m->truth, c), maze_y(m->truth, c));
+        if (m->color[c]) json_object_set_new(colors, key, json_stringn(&m->color[c], 1));
+        if (m->text[c][0]) json_object_set_new(texts, key, json_string(m->text[c]));
+    }
+    json_object_set_new(j, "colors", colors);
+    json_object_set_new(j, "texts", texts);
+    int es = m->exit_status;
+    json_object_set_new(j, "exit_status", es >= 0 && WIFEXITED(es) ? json_integer(WEXITSTATUS(es)) : json_null());
+    json_object_set_new(j, "exit_signal", es >= 0 && WIFSIGNALED(es) ? json_integer(WTERMSIG(es)) : json_null());
+    return j;
+}

@@ -1,0 +1,118 @@
+/* mms.h - run an mms maze algorithm (any program speaking the text API of
+ * mackorone/mms, README at commit 3054142 = the v1.2 API: moveForward [N],
+ * moveForwardHalf, turn*45, getStat; wallBack and the half-step argument of
+ * the wall queries as mms's Window.cpp at 9ec759a) on the simulated robot.
+ *
+ * The algorithm runs as a child process (/bin/sh -c COMMAND, in its own
+ * process group) with its stdin and stdout on pipes; its stderr is ours.
+ * Each line it prints is one command. Queries are answered at once from the
+ * firmware's map (walls it sensed itself) or, with ideal walls, from the
+ * maze file; moves are handed to the firmware's command mode (mouse.h
+ * mouse_cmd_*) and answered when the robot has physically finished them.
+ * Simulation time only advances while a move runs: the same algorithm gives
+ * the same run however long it thinks. Invalid commands are ignored.
+ *
+ * The run ends when the algorithm exits, fails (non-zero exit, signal), is
+ * silent for longer than the per-command timeout, prints a line longer than
+ * MMS_LINE_MAX or MMS_FLOOD_LIMIT commands without a move, or the robot is
+ * stuck; the child is then killed (SIGKILL to its group) and reaped. */
+#ifndef MMS_H
+#define MMS_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <sys/types.h>
+
+#include "maze.h"
+
+struct sim_s;
+
+#define MMS_LINE_MAX 1024         /* bytes per command line */
+#define MMS_FLOOD_LIMIT 1000000L  /* commands in a row without a move */
+#define MMS_TEXT_MAX 10           /* characters of cell text (mms) */
+#define MMS_MOVE_MAX_S 30.0       /* sim seconds a move may take: longer = stuck (a 32-cell straight takes ~12 s) */
+
+/* mms's Stats tab (Stats.cpp): distances in cells, effective distance
+ * counts every cell of a moveForward N after the second as 0.5. */
+typedef struct {
+    int total_distance, total_turns;
+    int cur_distance, cur_turns;
+    int best_distance, best_turns;
+    float total_eff, cur_eff, best_eff;
+    int has_best;   /* a start-to-goal run was completed */
+    int in_run;     /* a run started (a move from the start cell) */
+    int solved;     /* the goal was reached */
+    float penalty;  /* added to the next run (ackReset: 15) */
+} mms_stats_t;
+
+void mms_stats_init(mms_stats_t *s);
+void mms_stats_start_run(mms_stats_t *s);
+void mms_stats_distance(mms_stats_t *s, int cells);
+void mms_stats_turn(mms_stats_t *s);
+void mms_stats_finish_run(mms_stats_t *s);
+void mms_stats_end_unfinished(mms_stats_t *s);
+void mms_stats_reset_penalty(mms_stats_t *s);
+/* best run turns + best run effective distance + 0.1 * (total turns +
+ * total effective distance); 2000 if the goal was never reached. */
+float mms_stats_score(const mms_stats_t *s);
+/* getStat's answer for the stat named `name` into out ("-1" if it has no
+ * value yet); -1 if the name is not a stat. */
+int mms_stats_get(const mms_stats_t *s, const char *name, char *out, size_t len);
+
+enum { MMS_STEP = 0, MMS_END = 1 };
+
+typedef struct {
+    const char *command;  /* the shell command */
+    int ideal_walls;      /* answer wall queries from the maze file */
+    int timeout_ms;       /* per command */
+    double reset_at_s;    /* wasReset turns true at this sim time; < 0 never */
+    FILE *trace;          /* every command and answer, with sim time (NULL: none) */
+} mms_opts_t;
+
+typedef struct mms_s {
+    mms_opts_t o;
+    const maze_t *truth;
+    pid_t pid;             /* 0 when reaped */
+    int to_child, from_child;
+    char buf[MMS_LINE_MAX + 1];
+    size_t len;
+    int pending;           /* a move is under way (MMS_MOVE_*) */
+    double move_start_s;   /* sim time the move under way began */
+    int was_reset;
+    int exit_status;       /* waitpid status when reaped, -1 before */
+    const char *reason;    /* exit_reason for the JSON */
+    char message[300];     /* one line for stderr, "" = none */
+    long commands, invalid, since_move, moves, crashes, resets;
+    mms_stats_t stats;
+    /* what the algorithm drew: colour letter (0 = none), text, walls it set */
+    char color[MAZE_MAX_CELLS];
+    char text[MAZE_MAX_CELLS][MMS_TEXT_MAX + 1];
+    uint8_t drawn_walls[MAZE_MAX_CELLS]; /* bit d = setWall on side d */
+} mms_t;
+
+/* RGB (0xRRGGBB) of an mms colour letter (kbacgorwyBCAGRY: Qt's named
+ * colours, orange #ffa500); 0 for anything else. */
+uint32_t mms_colour_rgb(char letter);
+
+/* Set up the state without a child (mms_start does it; unit tests). */
+void mms_init(mms_t *m, const mms_opts_t *o, const maze_t *truth);
+/* Start the algorithm; the firmware must be set up (fw_setup) first. 0, or
+ * -1 with one line in err. */
+int mms_start(mms_t *m, const mms_opts_t *o, const maze_t *truth, char *err, size_t len);
+/* Serve commands until a move needs the simulation to step (MMS_STEP: step
+ * once, fw_tick, fw_loop, call again) or the run is over (MMS_END: m->reason,
+ * m->message). s is the running simulation (struct sim_s). */
+int mms_service(mms_t *m, struct sim_s *s);
+/* End the child (SIGKILL to its group if it is still running) and reap it. */
+void mms_stop(mms_t *m);
+/* Execute one command line; the answer (without newline) into resp, "" for
+ * none. Returns 1 if a move was started (the answer comes later). Exposed
+ * for the unit tests; needs the firmware in command mode only for moves. */
+int mms_execute(mms_t *m, struct sim_s *s, const char *line, char *resp, size_t len);
+/* The JSON object of the run's mms part (a json_t *, jansson). */
+void *mms_json(const mms_t *m);
+/* 1 if the algorithm failed (the run's exit code is then 3). */
+int mms_failed(const mms_t *m);
+
+#endif

@@ -1,0 +1,100 @@
+#!/usr/bin/env bash
+# cli_mms.sh - mmsim --mms: mms algorithms (test/mms/*.py, written for these
+# tests) drive the physically simulated robot through the mms text API;
+# protocol conformance; the algorithm's faults end the run cleanly.
+set -u
+S=${MMSIM:-build/mmsim}
+T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
+. "$(dirname "$0")/lib.sh"
+py() { python3 -c "import json,sys; d=json.loads(open('$T/out').read().splitlines()[-1]); print($1)"; }
+command -v python3 >/dev/null || { echo "SKIP cli_mms: python3 missing"; exit 77; }
+A="python3 test/mms"
+
+# algorithms reach the goal on the robot's own sensing
+for m in gen-5x5-s1 gen-6x6-s1 gen-8x8-s1; do
+  want_rc 0 "floodfill $m" "$S" --maze mazes/$m.txt --mms "$A/floodfill.py 2" --json
+  [ "$(py "(d['driver'], d['reached_goal'], d['exit_reason'], len(d['laps']), d['collisions'], d['mms']['crashes'], d['mms']['stats']['best_run_distance'] > 0, d['mms']['stats']['score'] < 2000)")" = "('mms', True, 'mms_exited', 2, 0, 0, True, True)" ] \
+    && ok "floodfill $m: two runs to the goal, no crash, no contact" || bad "floodfill $m: $(cat "$T/out")"
+done
+[ "$(py "sorted(d.keys()) + sorted(d['mms'].keys()) + sorted(d['mms']['stats'].keys())")" = "['best_run_s', 'collisions', 'config_hash', 'driver', 'exit_reason', 'final_pose', 'first_run_s', 'laps', 'maze', 'mms', 'reached_goal', 'real_time_factor', 'seed', 'sim_time_s', 'wall_time_s', 'colors', 'command', 'commands', 'crashes', 'exit_signal', 'exit_status', 'ideal_walls', 'invalid_commands', 'moves', 'resets', 'stats', 'texts', 'timeout_ms', 'wall_contacts', 'best_run_distance', 'best_run_effective_distance', 'best_run_turns', 'current_run_distance', 'current_run_effective_distance', 'current_run_turns', 'score', 'total_distance', 'total_effective_distance', 'total_turns']" ] \
+  && ok "json keys" || bad "json keys: $(cat "$T/out")"
+for m in gen-5x5-s1 gen-8x8-s1; do
+  want_rc 0 "wall follower $m" "$S" --maze mazes/$m.txt --mms "$A/wallfollow.py" --json
+  [ "$(py "(d['reached_goal'], d['exit_reason'], d['mms']['exit_status'])")" = "(True, 'mms_exited', 0)" ] && ok "wall follower $m reached the goal" || bad "wall follower $m: $(cat "$T/out")"
+done
+# a wall follower loops forever on 6x6-s1: goal not reached, its own exit 1 is a failure (3)
+want_rc 3 "wall follower fails on a looped maze" "$S" --maze mazes/gen-6x6-s1.txt --mms "$A/wallfollow.py" --json
+[ "$(py "(d['reached_goal'], d['exit_reason'], d['mms']['stats']['score'])")" = "(False, 'mms_failed', 2000.0)" ] && ok "score 2000 without the goal" || bad "looped maze: $(cat "$T/out")"
+
+# --verbose: the dialogue on stderr with the simulation time
+want_rc 0 "verbose trace" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/wallfollow.py" --verbose
+grep -q '^mms *0\.[0-9]* > moveForward$' "$T/err" && grep -q '^mms *[0-9.]* < ack$' "$T/err" && grep -q '^mms *[0-9.]* > setColor 0 1 g$' "$T/err" \
+  && ok "verbose trace" || bad "verbose trace: $(head -5 "$T/err")"
+
+# determinism, and sensed walls = the maze file's on a noise-free robot
+"$S" --maze mazes/gen-8x8-s1.txt --mms "$A/floodfill.py 2" --json >"$T/a"; "$S" --maze mazes/gen-8x8-s1.txt --mms "$A/floodfill.py 2" --json >"$T/b"
+[ "$(strip "$T/a")" = "$(strip "$T/b")" ] && ok "mms run deterministic" || bad "mms run deterministic"
+"$S" --print-config | sed 's/^tof_cv *=.*/tof_cv = 0/' >"$T/quiet.ini"
+grep -q '^tof_cv = 0$' "$T/quiet.ini" || bad "noise-free config: no tof_cv line"
+for m in gen-8x8-s1 gen-16x16-s2; do
+  "$S" --maze mazes/$m.txt --config "$T/quiet.ini" --mms "$A/floodfill.py 2" --json >"$T/sensed"
+  "$S" --maze mazes/$m.txt --config "$T/quiet.ini" --mms "$A/floodfill.py 2" --mms-ideal-walls --json >"$T/ideal"
+  same=$(python3 -c "
+import json
+a, b = (json.loads(open('$T/' + f).read().splitlines()[-1]) for f in ('sensed', 'ideal'))
+keys = ('laps', 'sim_time_s', 'reached_goal', 'collisions', 'final_pose')
+print(a['reached_goal'] and all(a[k] == b[k] for k in keys) and a['mms']['stats'] == b['mms']['stats'] and a['mms']['moves'] == b['mms']['moves'] and b['mms']['ideal_walls'])")
+  [ "$same" = True ] && ok "$m: ideal walls and sensed walls give the same run" || bad "$m ideal vs sensed: $(cat "$T/sensed") $(cat "$T/ideal")"
+done
+
+# protocol conformance: every command, valid and invalid (test/mms/conform.py)
+want_rc 1 "conformance client (goal not its aim)" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/conform.py" --mms-reset-at 0.1 --json
+grep -q '^conform: [0-9]* checks ok$' "$T/err" && ok "conformance: $(grep -o '[0-9]* checks' "$T/err")" || bad "conformance: $(cat "$T/err")"
+[ "$(py "(d['exit_reason'], d['mms']['resets'], d['mms']['colors'], sorted(d['mms']['texts'].items()))")" = "('mms_exited', 1, {'3,3': 'G'}, [('0,1', 'ok'), ('1,1', 'hello worl'), ('2,2', 'a?b?'), ('3,4', 'two  space'), ('4,4', 'abc')])" ] \
+  && ok "colours and texts (10 printable characters, others '?')" || bad "colours/texts: $(cat "$T/out")"
+
+# the run report draws the algorithm's colours (floodfill: cyan on its path) and texts
+want_rc 0 "report of an mms run" "$S" --maze mazes/gen-8x8-s1.txt --mms "$A/floodfill.py 2" --report "$T/r.png"
+cyan=$(python3 test/pngcheck.py "$T/r.png" near:00ffff:8)
+[ "${cyan:-0}" -gt 2000 ] && ok "report: cell colours drawn ($cyan cyan pixels)" || bad "report: cyan pixels: $cyan"
+grep -q '>6</text>' "$T/r.svg" && ok "report: cell texts drawn" || bad "report: no cell text in the SVG"
+
+# a robot too weak to move (0.5 V battery): the firmware's stall stop answers crash and ends the run
+printf '[motor]\nbattery_v = 0.5\n' >"$T/weak.ini"
+want_rc 1 "stuck robot" "$S" --maze mazes/gen-5x5-s1.txt --config "$T/weak.ini" --mms "$A/floodfill.py" --json
+[ "$(py "(d['exit_reason'], d['mms']['crashes'], d['reached_goal'])")" = "('crash_stop', 1, False)" ] && grep -q "^mmsim: mms: the robot is stuck (motion stall) during a forward move: run ended$" "$T/err" \
+  && ok "stuck robot: crash_stop, one message" || bad "stuck robot: $(cat "$T/out" "$T/err")"
+
+# faults: the run ends with one message, the JSON summary, the child reaped
+fault() { local rc=$1 reason=$2 desc=$3; shift 3
+  want_rc "$rc" "fault: $desc" "$S" --maze mazes/gen-5x5-s1.txt --json --mms-timeout-ms 300 --mms "$@"
+  [ "$(py "d['exit_reason']")" = "$reason" ] && ok "fault: $desc -> $reason" || bad "fault: $desc: $(cat "$T/out")"
+  if [ "$rc" = 3 ]; then [ "$(wc -l <"$T/err")" -ge 1 ] && grep -q "^mmsim: mms: " "$T/err" && ok "fault: $desc: message" || bad "fault: $desc: no message"; fi
+  [ "$(py "d['mms']['exit_status'] is not None or d['mms']['exit_signal'] is not None")" = True ] && ok "fault: $desc: child reaped" || bad "fault: $desc: not reaped"
+}
+fault 1 mms_exited "exits at once" "exit 0"
+fault 3 mms_failed "exits with status 7" "exit 7"
+fault 3 mms_failed "command not found" "$T/no-such-algorithm"
+fault 3 mms_failed "killed by a signal" 'kill -9 $$'
+fault 3 mms_timeout "hangs" "sleep 31.4159"
+fault 3 mms_failed "closes its output and hangs" "exec >&-; sleep 31.4158"
+fault 3 mms_flood "floods stdout with invalid lines" "yes"
+fault 3 mms_timeout "floods queries without reading answers" "yes mazeWidth"
+fault 3 mms_garbage "prints an endless line" "cat /dev/zero"
+fault 3 mms_failed "crashes mid-run" "$A/wallfollow.py & sleep 0.2; kill -9 \$!; exit 9"
+# mmsim itself killed (SIGTERM): the algorithm's process group goes too
+"$S" --maze mazes/gen-5x5-s1.txt --mms "sleep 31.4157" --mms-timeout-ms 60000 >"$T/out" 2>"$T/err" & mp=$!
+for _ in $(seq 50); do pgrep -f "sleep 31.4157" >/dev/null && break; sleep 0.1; done
+kill -TERM $mp; wait $mp; rc=$?
+[ $rc -eq 143 ] && ok "mmsim killed: dies of the signal" || bad "mmsim killed: exit $rc"
+sleep 0.2
+if pgrep -f "sleep 31.415[789]" >/dev/null; then bad "no processes left behind"; pgrep -fa "sleep 31.415"; else ok "no processes left behind"; fi
+
+# bad flags
+ONE_ERROR_LINE=1
+want_rc 2 "--mms-ideal-walls needs --mms" "$S" --maze mazes/gen-5x5-s1.txt --mms-ideal-walls
+want_rc 2 "--mms with --driver scripted" "$S" --maze mazes/gen-5x5-s1.txt --mms true --driver scripted
+want_rc 2 "--mms-timeout-ms 0" "$S" --maze mazes/gen-5x5-s1.txt --mms true --mms-timeout-ms 0
+want_rc 2 "--mms ''" "$S" --maze mazes/gen-5x5-s1.txt --mms ''
+want_rc 2 "--mms with --batch" "$S" --batch mazes --mms true
+[ $fails -eq 0 ]

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# cli_mms_view.sh - the viewer in an mms run (under an Xvfb the test
+# starts): the floor shows the algorithm's cell colours. Skips if no X
+# server can be started.
+set -u
+S=${MMSIM:-build/mmsim}
+T=$(mktemp -d)
+XPID=
+cleanup() { [ -n "$XPID" ] && kill "$XPID" 2>/dev/null; rm -rf "$T"; }
+trap cleanup EXIT
+. "$(dirname "$0")/lib.sh"
+
+command -v Xvfb >/dev/null || { echo "SKIP cli_mms_view.sh: Xvfb not installed"; exit 77; }
+Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$T/dpy" 2>"$T/xvfb.err" &
+XPID=$!
+for _ in $(seq 50); do [ -s "$T/dpy" ] && break; sleep 0.1; done
+[ -s "$T/dpy" ] || { echo "SKIP cli_mms_view.sh: Xvfb did not start: $(head -1 "$T/xvfb.err")"; exit 77; }
+export DISPLAY=:$(head -1 "$T/dpy")
+SIM=("$S")
+if ldd "$S" | grep -q libasan; then # as cli_view.sh: keep Mesa's frames named for the suppressions
+  asan=$(ldd "$S" | awk '/libasan/ {print $3}')
+  dri=$(ls /usr/lib/*/dri/swrast_dri.so 2>/dev/null | head -1)
+  pre=; [ -n "$dri" ] && pre="$asan $dri"
+  SIM=(env "LD_PRELOAD=$pre" "LSAN_OPTIONS=suppressions=$PWD/test/lsan-gl.supp" "$S")
+fi
+
+for a in "floodfill.py 2" "wallfollow.py"; do # both colour the cells they visit: cyan / green
+  col=00ffff; [ "$a" = wallfollow.py ] && col=00ff00
+  "${SIM[@]}" --maze mazes/gen-8x8-s1.txt --mms "python3 test/mms/$a" --screenshot "$T/s.png" --at 4 --camera 1 --size 320x240 >"$T/out" 2>"$T/err" \
+    || { bad "$a: screenshot failed"; head -5 "$T/err"; continue; }
+  n=$(python3 test/pngcheck.py "$T/s.png" near:$col:40)
+  [ "${n:-0}" -gt 100 ] && ok "$a: cell colours on the floor ($n pixels)" || bad "$a: $col pixels: $n"
+done
+# without an mms algorithm there is no such colour
+"${SIM[@]}" --maze mazes/gen-8x8-s1.txt --screenshot "$T/f.png" --at 4 --camera 1 --size 320x240 >"$T/out" 2>"$T/err" || bad "firmware screenshot"
+n=$(python3 test/pngcheck.py "$T/f.png" near:00ffff:40)
+[ "${n:-1}" -eq 0 ] && ok "no cell colours without mms" || bad "cyan without mms: $n"
+[ $fails -eq 0 ]
