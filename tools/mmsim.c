@@ -170,6 +170,10 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     world_pose(sim.world, &last_x, &last_y, &h);
     double hard_stop_s = cfg.time_limit_s + 60.0; /* a lap under way may finish over time, flagged */
     if (!drv.reachable) reason = "unreachable";
+    /* a build with -DHAL_TICK_HZ=250 ticks every 4th step, as on the AVR */
+    long steps_per_tick = lround(1.0 / (HAL_TICK_HZ * cfg.step_s));
+    if (steps_per_tick < 1) steps_per_tick = 1;
+    long tick_steps = steps_per_tick - 1; /* the first step ticks */
     while (!drv.done) {
         if (o->serial) { /* HIL: the contest lasts the time limit */
             sim_step(&sim);
@@ -195,7 +199,10 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         } else {
             sim_step(&sim);
             if (tel_on) telem_step(&tel, &sim);
-            fw_tick(); /* control tick every physics step (1 kHz) */
+            if (++tick_steps >= steps_per_tick) { /* control tick at HAL_TICK_HZ (1 kHz: every step) */
+                tick_steps = 0;
+                fw_tick();
+            }
             fw_loop();
             uint8_t mode = mouse_status()->mode;
             if (mode == MOUSE_DONE) break;
