@@ -59,7 +59,7 @@ void fw_set_maze(const struct maze_s *m)
 
 const mouse_status_t *mouse_status(void) { return &st; }
 
-static void log_line(const char *fmt, unsigned a, unsigned b)
+static void log_line(const char *fmt, unsigned a, unsigned b) /* fmt: HAL_STR("...") */
 {
     char line[HAL_LOG_MAX + 1];
     hal_snprintf(line, sizeof line, fmt, a, b); /* fmt: a HAL_STR */
@@ -389,7 +389,7 @@ static int path_dir(int to_goal, maze_cell_t c, uint8_t h)
  * robot is run_offset_mm past the centre of st.cell, facing st.heading. */
 static void run_plan(int to_goal)
 {
-    float dist0 = mo.odom.dist_mm; /* planning takes ~10 ms per cell on an AVR: the robot rolls on */
+    float dist0 = mo.odom.dist_mm; /* the flood below takes 10-40 ms on an AVR: the robot rolls on */
     int d = path_dir(to_goal, st.cell, st.heading);
     if (d < 0) {
         waiting = WAIT_NONE;
