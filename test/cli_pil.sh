@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # cli_pil.sh - processor in the loop: AVR images built by `make arduino`
 # run in simavr inside mmsim (--avr), in lockstep with the physics.
-#  - the whole mouse firmware (Mega 2560 image, framed, 1 Mbaud) drives the
+#  - the whole mouse firmware (Mega 2560 image, 5x5, framed, 1 Mbaud) drives the
 #    robot from the start to the goal of a 5x5 maze; same run twice = same JSON;
 #    the whole contest ends by the runner's RUN stop (exit 0), no tick overran;
 #  - the whole mouse on the Uno (ATmega328P, 2 KB SRAM), 16x16: static RAM
