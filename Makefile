@@ -131,8 +131,13 @@ ARD_DIR      := /usr/share/arduino/hardware/arduino/avr
 ARD_CORE     := $(ARD_DIR)/cores/arduino
 ARD_BOARDS   := uno mega2560
 ARD_EXAMPLES := Mouse DriveToWall
+# SRAM for the Uno (hal/arduino/README.md), on every board so they behave alike:
+# the link's decoder holds the sim's messages only (20 B, not 86: no LOG),
+# the core's serial transmit buffer is 32 B (the receive buffer stays 64: up
+# to ~60 B of sensor frames arrive per 4 ms tick)
+ARD_RAM      := -DWIRE_RX_LOG_MAX=14 -DSERIAL_TX_BUFFER_SIZE=32
 ARD_COMMON   := -DF_CPU=16000000L -DARDUINO=10819 -DARDUINO_ARCH_AVR -Os -ffunction-sections -fdata-sections \
-	-DMAZE_MAX_SIZE=16 -I$(ARD_CORE) -Ihal -Ihal/wire -Ihal/arduino/src -Ifirmware
+	-DMAZE_MAX_SIZE=16 $(ARD_RAM) -I$(ARD_CORE) -Ihal -Ihal/wire -Ihal/arduino/src -Ifirmware
 ARD_CXX      := -std=gnu++11 -fno-exceptions -fno-threadsafe-statics -fpermissive -DDECIMAL_DIG=__DECIMAL_DIG__
 ARD_uno      := -mmcu=atmega328p -DARDUINO_AVR_UNO -I$(ARD_DIR)/variants/standard
 ARD_mega2560 := -mmcu=atmega2560 -DARDUINO_AVR_MEGA2560 -I$(ARD_DIR)/variants/mega
@@ -140,22 +145,28 @@ ARD_LIB_SRC  := $(wildcard hal/arduino/src/*.cpp) hal/wire/wire.c $(FW_SRC)
 ARD_CORE_SRC := $(wildcard $(ARD_CORE)/*.c $(ARD_CORE)/*.cpp) $(ARD_CORE)/wiring_pulse.S
 ARD_HDRS     := $(wildcard hal/arduino/src/*.h firmware/*.h) hal/hal.h hal/wire/wire.h
 
+# the flags in a file rewritten when they change: the core and library rebuild
+# (SERIAL_TX_BUFFER_SIZE and WIRE_RX_LOG_MAX size structs that every object shares)
+ARD_STAMP := $(B)/arduino/.flags
+$(ARD_STAMP): FORCE
+	@mkdir -p $(dir $@); echo '$(ARD_COMMON) $(ARD_CXX)' | cmp -s - $@ || echo '$(ARD_COMMON) $(ARD_CXX)' >$@
+.PHONY: FORCE
 define ARD_BOARD_RULES
-$(B)/arduino/$(1)/core/%.c.o: $(ARD_CORE)/%.c | deps
+$(B)/arduino/$(1)/core/%.c.o: $(ARD_CORE)/%.c $(ARD_STAMP) | deps
 	@mkdir -p $$(dir $$@)
 	@avr-gcc $(ARD_$(1)) $(ARD_COMMON) -std=gnu11 -c $$< -o $$@
-$(B)/arduino/$(1)/core/%.cpp.o: $(ARD_CORE)/%.cpp | deps
+$(B)/arduino/$(1)/core/%.cpp.o: $(ARD_CORE)/%.cpp $(ARD_STAMP) | deps
 	@mkdir -p $$(dir $$@)
 	@avr-g++ $(ARD_$(1)) $(ARD_COMMON) $(ARD_CXX) -c $$< -o $$@
-$(B)/arduino/$(1)/core/%.S.o: $(ARD_CORE)/%.S | deps
+$(B)/arduino/$(1)/core/%.S.o: $(ARD_CORE)/%.S $(ARD_STAMP) | deps
 	@mkdir -p $$(dir $$@)
 	@avr-gcc $(ARD_$(1)) $(ARD_COMMON) -x assembler-with-cpp -c $$< -o $$@
 $(B)/arduino/$(1)/core.a: $(patsubst $(ARD_CORE)/%,$(B)/arduino/$(1)/core/%.o,$(ARD_CORE_SRC))
 	@rm -f $$@; avr-gcc-ar rcs $$@ $$^
-$(B)/arduino/$(1)/lib/%.c.o: %.c $(ARD_HDRS) | deps
+$(B)/arduino/$(1)/lib/%.c.o: %.c $(ARD_HDRS) $(ARD_STAMP) | deps
 	@mkdir -p $$(dir $$@)
 	avr-gcc $(ARD_$(1)) $(ARD_COMMON) -std=c99 -Wall -Wextra -c $$< -o $$@
-$(B)/arduino/$(1)/lib/%.cpp.o: %.cpp $(ARD_HDRS) | deps
+$(B)/arduino/$(1)/lib/%.cpp.o: %.cpp $(ARD_HDRS) $(ARD_STAMP) | deps
 	@mkdir -p $$(dir $$@)
 	avr-g++ $(ARD_$(1)) $(ARD_COMMON) $(ARD_CXX) -Wall -Wextra -c $$< -o $$@
 $(B)/arduino/$(1)/libmicromouse.a: $(patsubst %,$(B)/arduino/$(1)/lib/%.o,$(ARD_LIB_SRC))
@@ -216,7 +227,7 @@ view: $(B)/mmview
 bench: deps
 	@$(MAKE) --no-print-directory bench-run
 bench-run: $(B)/mmmaze $(B)/mmsim $(B)/bench_flood $(B)/simavr_cycles $(B)/avr/flood0.elf $(B)/avr/flood10.elf \
-	$(B)/avr/tick0.elf $(B)/avr/tick100.elf
+	$(B)/avr/tick0.elf $(B)/avr/tick100.elf arduino
 	bash bench/run.sh
 $(B)/simavr_cycles: bench/simavr_cycles.c | deps
 	$(CC) -O2 $< $$(pkg-config --cflags --libs simavr) -o $@

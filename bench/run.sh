@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # run.sh - `make bench`: flood timing, exploration over the database,
-# firmware size. Record the output in docs/BENCHMARKS.md with date and machine.
+# firmware size, processor-in-the-loop contests. Record the output in docs/BENCHMARKS.md with date and machine.
 set -u
 B=build
 SHARED=${SHARED:-../shared}
@@ -81,3 +81,21 @@ else
   echo "SKIP telemetry instruction counts: no valgrind"
 fi
 make -s firmware-size
+# Processor in the loop: the whole mouse (make arduino) in simavr, a full
+# 16x16 contest each on the Uno and the Mega 2560 image: real-time factor
+# (goal >= 2x), laps, contacts, the stack's high-water mark (SRAM painted)
+# and the runner's worst control tick (Timer1: link poll + fw_tick + sends)
+for img in uno/Mouse.elf mega2560/Mouse.elf; do
+  mcu=atmega328p; [ "${img%%/*}" = mega2560 ] && mcu=atmega2560
+  static=$(avr-size -A "$B/arduino/$img" | awk '$1 == ".data" || $1 == ".bss" { s += $2 } END { print s }')
+  $B/mmsim --maze mazes/gen-16x16-s1.txt --avr "$B/arduino/$img" --mcu $mcu --time-limit 300 --json --verbose \
+    2>"$B/pil-bench.err" | tail -1 | python3 -c '
+import json, re, sys
+d = json.loads(sys.stdin.read()); a = d["avr"]; err = open(sys.argv[3]).read()
+m = re.search(r"runner: (\d+) Hz tick, (\d+) overruns, worst (\d+) us", err)
+tick = "%s Hz, %s overruns, worst tick %s us = %d cycles" % (m[1], m[2], m[3], int(m[3]) * 16) if m else "no runner report"
+print("PIL %s gen-16x16-s1: %s, sim %.1f s, wall %.1f s, real-time factor %.1fx, laps %s, contact steps %d; static RAM %s B, stack %d B, gap %d B; %s" % (
+    sys.argv[1], d["exit_reason"], d["sim_time_s"], d["wall_time_s"], d["real_time_factor"], [l["run_s"] for l in d["laps"]],
+    d["collisions"], sys.argv[2], a["stack_max_bytes"], a["sram_free_min_bytes"], tick))' "$img" "$static" "$B/pil-bench.err"
+done
+rm -f "$B/pil-bench.err"

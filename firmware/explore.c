@@ -15,6 +15,7 @@ void explore_init(explore_t *e, const maze_t *blank)
     e->goal_at_step = EXPLORE_NEVER;
     e->run_cost = FLOOD_UNREACHABLE;
     e->plan_us_max = 0;
+    e->path_cost = FLOOD_UNREACHABLE;
 }
 
 void explore_sense(explore_t *e, uint8_t walls)
@@ -53,7 +54,7 @@ static int check_proven(explore_t *e)
     char line[HAL_LOG_MAX + 1];
     e->proven_at_step = e->steps;
     e->run_cost = known;
-    snprintf(line, sizeof line, "explore: run path proven at step %u, cost %u",
+    hal_snprintf(line, sizeof line, HAL_STR("explore: run path proven at step %u, cost %u"),
              (unsigned)e->steps, (unsigned)known);
     hal_log(line);
     return 1;
@@ -114,7 +115,7 @@ static int decide(explore_t *e)
                 int d = step_to_targets(e);
                 if (d >= 0) return d;
             }
-            hal_log("explore: goal unreachable");
+            HAL_LOG_STR("explore: goal unreachable");
             e->phase = EXPLORE_NO_GOAL;
             return -1;
         case EXPLORE_PROVE:
@@ -124,7 +125,7 @@ static int decide(explore_t *e)
             }
             if (mark_unknown_on_path(e) == 0) {
                 /* Cannot happen while known != open; stop rather than loop. */
-                hal_log("explore: no unknown wall left to explore");
+                HAL_LOG_STR("explore: no unknown wall left to explore");
                 e->phase = EXPLORE_NO_GOAL;
                 return -1;
             }
@@ -132,7 +133,7 @@ static int decide(explore_t *e)
                 int d = step_to_targets(e);
                 if (d >= 0) return d;
             }
-            hal_log("explore: exploration target unreachable");
+            HAL_LOG_STR("explore: exploration target unreachable");
             e->phase = EXPLORE_NO_GOAL;
             return -1;
         case EXPLORE_RETURN:
@@ -166,7 +167,7 @@ int explore_next(explore_t *e)
 int explore_run_dir(explore_t *e, maze_cell_t c, uint8_t h)
 {
     flood_target_goal(&e->flood, &e->map);
-    uint16_t k = flood_run(&e->flood, &e->map, c, h, 0);
+    uint16_t k = e->path_cost = flood_run(&e->flood, &e->map, c, h, 0);
     return flood_next_dir(&e->flood, &e->map, c, h, k, 0);
 }
 
@@ -174,6 +175,13 @@ int explore_home_dir(explore_t *e, maze_cell_t c, uint8_t h)
 {
     flood_target_clear(&e->flood);
     flood_target_add(&e->flood, e->map.start);
-    uint16_t k = flood_run(&e->flood, &e->map, c, h, 0);
+    uint16_t k = e->path_cost = flood_run(&e->flood, &e->map, c, h, 0);
     return flood_next_dir(&e->flood, &e->map, c, h, k, 0);
+}
+
+int explore_dir_ahead(const explore_t *e, maze_cell_t c, uint8_t h, uint8_t cells)
+{
+    /* a straight move costs 1: the field holds every configuration cheaper than the first */
+    if (e->path_cost == FLOOD_UNREACHABLE || e->path_cost < cells) return -1;
+    return flood_next_dir(&e->flood, &e->map, c, h, (uint16_t)(e->path_cost - cells), 0);
 }

@@ -46,6 +46,7 @@ typedef struct {
     uint16_t goal_at_step;   /* step when the goal was first entered, or EXPLORE_NEVER */
     uint16_t run_cost;       /* cost of the proven run path */
     uint32_t plan_us_max;    /* longest explore_next so far, hal_micros us */
+    uint16_t path_cost;      /* cost from where the last explore_run/home_dir asked */
 } explore_t;
 
 /* Start exploring with a map holding size, start and goal (walls ignored:
@@ -65,5 +66,10 @@ void explore_moved(explore_t *e, uint8_t d);
 int explore_run_dir(explore_t *e, maze_cell_t c, uint8_t h);
 /* The same towards the start cell (for the way back after a speed run). */
 int explore_home_dir(explore_t *e, maze_cell_t c, uint8_t h);
+/* After explore_run_dir or explore_home_dir from (c0, h): the heading to
+ * leave cell c in, c being `cells` straight moves on from c0 facing h.
+ * No new flood: it walks the last one's cost field (a flood per cell of a
+ * straight takes 10-40 ms on a 16 MHz AVR while the robot rolls on). */
+int explore_dir_ahead(const explore_t *e, maze_cell_t c, uint8_t h, uint8_t cells);
 
 #endif

@@ -103,8 +103,8 @@ void maze_close_unknown(maze_t *m)
 
 void maze_forget(maze_t *dst, const maze_t *src)
 {
-    maze_init(dst, src->width, src->height);
-    memcpy(dst->goal, src->goal, sizeof dst->goal);
+    maze_init(dst, src->width, src->height); /* dst may be src: then a blank maze of its size */
+    memmove(dst->goal, src->goal, sizeof dst->goal);
     dst->start = src->start;
     dst->start_heading = src->start_heading;
 }

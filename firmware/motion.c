@@ -147,7 +147,7 @@ void motion_tick(motion_t *m, float dt_s)
         if (m->stall_ms > RC_STALL_MS) {
             m->crashed = 1;
             m->cmd[0] = m->cmd[1] = 0;
-            hal_log("motion: stuck, motors off");
+            HAL_LOG_STR("motion: stuck, motors off");
         }
     } else {
         m->stall_ms = 0;

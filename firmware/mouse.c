@@ -59,19 +59,18 @@ void fw_set_maze(const struct maze_s *m)
 
 const mouse_status_t *mouse_status(void) { return &st; }
 
-static void log_line(const char *fmt, unsigned a, unsigned b)
+static void log_line(const char *fmt, unsigned a, unsigned b) /* fmt: HAL_STR("...") */
 {
     char line[HAL_LOG_MAX + 1];
-    snprintf(line, sizeof line, fmt, a, b);
+    hal_snprintf(line, sizeof line, fmt, a, b); /* fmt: a HAL_STR */
     hal_log(line);
 }
 
 void fw_setup(void)
 {
-    if (!configured) { /* a classic contest by default */
-        maze_t classic;
-        maze_init(&classic, 16, 16);
-        explore_init(&ex, &classic);
+    if (!configured) { /* a classic contest by default, the map built in place (not 292 B of stack) */
+        maze_init(&ex.map, 16, 16);
+        explore_init(&ex, &ex.map);
     }
     configured = 0; /* the next fw_setup without fw_set_maze is a classic contest */
     motion_init(&mo);
@@ -337,11 +336,18 @@ static void search_step(void)
         uint8_t walls = read_walls();
         explore_moved(&ex, st.heading); /* committed to the cell ahead */
         explore_sense(&ex, walls);
-        log_line("sensed cell %u walls %u", ex.cell, walls);
+        log_line(HAL_STR("sensed cell %u walls %u"), ex.cell, walls);
         hal_belief(&ex.map, ex.cell, st.heading, st.mode);
+        /* planning takes 30-200 ms on a 16 MHz AVR (no time in the
+         * simulator): meanwhile the move brakes into the cell ahead (from
+         * 42 mm before it at search speed) instead of running on */
+        float v_end = mo.fwd.v_end;
+        mo.fwd.v_end = 0;
         int d = explore_next(&ex);
+        left = profile_remaining(&mo.fwd); /* where the robot is now */
         wall_ahead = (walls & EXPLORE_WALL_FRONT) != 0;
-        if (d >= 0 && (uint8_t)d == st.heading) {
+        if (d >= 0 && (uint8_t)d == st.heading && mo.fwd.active) {
+            mo.fwd.v_end = v_end;
             profile_set_remaining(&mo.fwd, left + RC_CELL_MM);
             sensed = 0;
             return;
@@ -349,14 +355,14 @@ static void search_step(void)
         int8_t q = d >= 0 ? quarter(st.heading, (uint8_t)d) : 0;
         if ((q == 1 || q == -1) && left >= smooth_offset_mm + 1.0f) {
             /* go on to the turn's start, turn there without stopping */
+            mo.fwd.v_end = v_end;
             profile_set_remaining(&mo.fwd, left - smooth_offset_mm);
             move_shift_mm = smooth_offset_mm;
             turn_pending = q;
             st.heading = (uint8_t)d;
             return;
         }
-        mo.fwd.v_end = 0; /* stop in the cell ahead */
-        next_dir = (int8_t)d;
+        next_dir = (int8_t)d; /* stop in the cell ahead */
         return;
     }
     if (sensed && wall_ahead && mo.fwd.active) align_to_front_wall(0);
@@ -383,12 +389,13 @@ static int path_dir(int to_goal, maze_cell_t c, uint8_t h)
  * robot is run_offset_mm past the centre of st.cell, facing st.heading. */
 static void run_plan(int to_goal)
 {
+    float dist0 = mo.odom.dist_mm; /* the flood below takes 10-40 ms on an AVR: the robot rolls on */
     int d = path_dir(to_goal, st.cell, st.heading);
     if (d < 0) {
         waiting = WAIT_NONE;
         if (to_goal) {
             st.runs++;
-            log_line("run %u reached the goal at %u ms", st.runs, (unsigned)((hal_micros() - start_us) / 1000u));
+            log_line(HAL_STR("run %u reached the goal at %u ms"), st.runs, (unsigned)((hal_micros() - start_us) / 1000u));
             st.mode = MOUSE_RETURN;
         } else {
             st.mode = MOUSE_TO_RUN;
@@ -410,12 +417,12 @@ static void run_plan(int to_goal)
         if (!maze_neighbour(&ex.map, c, st.heading, &nx)) return; /* cannot happen on a known path */
         c = nx;
         n++;
-        dd = path_dir(to_goal, c, st.heading);
+        dd = explore_dir_ahead(&ex, c, st.heading, n); /* on path_dir's flood */
         if (dd != st.heading) break;
     }
     float v_max = to_goal ? RC_RUN_MM_S : RC_SEARCH_MM_S;
     float accel = to_goal ? RC_RUN_ACCEL_MM_S2 : RC_ACCEL_MM_S2;
-    float mm = n * RC_CELL_MM - run_offset_mm;
+    float mm = n * RC_CELL_MM - run_offset_mm - (mo.odom.dist_mm - dist0);
     int8_t qq = dd >= 0 ? quarter(st.heading, (uint8_t)dd) : 0;
     st.cell = c;
     if ((qq == 1 || qq == -1) && mm >= smooth_offset_mm) {
@@ -469,7 +476,7 @@ void fw_loop(void)
         search_step();
         st.cell = ex.cell;
         if (st.mode == MOUSE_TO_RUN) {
-            log_line("search done in %u steps, path proven at step %u", ex.steps, ex.proven_at_step);
+            log_line(HAL_STR("search done in %u steps, path proven at step %u"), ex.steps, ex.proven_at_step);
             waiting = WAIT_NONE;
         }
         break;
@@ -478,7 +485,7 @@ void fw_loop(void)
         if ((hal_micros() - start_us) / 1000000u >= MOUSE_RUN_DEADLINE_S || st.runs >= MOUSE_SPEED_RUNS) {
             st.mode = MOUSE_DONE;
             motion_stop(&mo);
-            hal_log("contest done");
+            HAL_LOG_STR("contest done");
             break;
         }
         st.mode = MOUSE_RUN;

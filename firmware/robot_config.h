@@ -78,9 +78,19 @@
 /* Plant: one command step accelerates the robot by ~22 mm/s^2, and the
  * motor's back-EMF damps it with a 54 ms time constant, so the loop needs
  * a stiff P and no D (a 1 ms encoder difference is 280 mm/s per count). */
+#ifdef __AVR__
+/* On an Arduino over the serial link (HIL, and PIL in simavr) the loop runs
+ * at 250 Hz and lags 5-9 ms (encoder frames up to 4 ms old, ~1.8 ms of
+ * tick, the motor frame on the wire; in process: one 4 ms tick). At 30 the
+ * robot's heading swung +-3 degrees at rest and in-place turns ended up to
+ * 11 degrees off (japan2018 in simavr); 20 holds (docs/BENCHMARKS.md). */
+#define RC_KP_FWD 20.0f    /* command per mm of forward position error */
+#define RC_KP_ROT 20.0f    /* command per mm of wheel-arc rotation error */
+#else
 #define RC_KP_FWD 30.0f    /* command per mm of forward position error */
-#define RC_KD_FWD 0.0f     /* command per mm/s of forward speed error */
 #define RC_KP_ROT 30.0f    /* command per mm of wheel-arc rotation error */
+#endif
+#define RC_KD_FWD 0.0f     /* command per mm/s of forward speed error */
 #define RC_KD_ROT 0.0f     /* command per mm/s of wheel-arc rotation rate error */
 /* Wall centring: heading offset per mm off the centre line (P: 10 mm ->
  * 5.7 degrees; with the heading loop's 0.1 s lag the lateral loop is

@@ -47,6 +47,22 @@ extern "C" {
 #endif
 #endif
 
+/* Log text constants. An ATmega328P has 2 KB of SRAM, and avr-gcc copies
+ * every string literal into it at reset; these keep them in flash there
+ * and are plain strings elsewhere:
+ *   HAL_LOG_STR("text")   logs a constant line (hal_log_P on AVR)
+ *   HAL_STR("fmt")        a format for hal_snprintf (snprintf_P on AVR) */
+#ifdef __AVR__
+#include <avr/pgmspace.h>
+#define HAL_STR(s) PSTR(s)
+#define hal_snprintf snprintf_P
+#define HAL_LOG_STR(s) hal_log_P(PSTR(s))
+#else
+#define HAL_STR(s) (s)
+#define hal_snprintf snprintf
+#define HAL_LOG_STR(s) hal_log(s)
+#endif
+
 enum { HAL_LEFT = 0, HAL_RIGHT = 1 };
 enum { HAL_TOF_LEFT = 0, HAL_TOF_FRONT = 1, HAL_TOF_RIGHT = 2, HAL_TOF_COUNT = 3 };
 
@@ -64,6 +80,9 @@ int32_t hal_encoder(uint8_t side);
 void hal_encoder_reset(void);
 hal_distance_t hal_distance(uint8_t sensor);
 void hal_log(const char *line);
+#ifdef __AVR__
+void hal_log_P(const char *line_in_flash); /* hal_log of a PSTR() line */
+#endif
 void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_t state);
 
 /* The firmware's entry points, called by the backend. */

@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # cli_pil.sh - processor in the loop: AVR images built by `make arduino`
 # run in simavr inside mmsim (--avr), in lockstep with the physics.
-#  - the whole mouse firmware (Mega 2560 image, framed, 1 Mbaud) drives the
+#  - the whole mouse firmware (Mega 2560 image, 5x5, framed, 1 Mbaud) drives the
 #    robot from the start to the goal of a 5x5 maze; same run twice = same JSON;
 #    the whole contest ends by the runner's RUN stop (exit 0), no tick overran;
+#  - the whole mouse on the Uno (ATmega328P, 2 KB SRAM), 16x16: static RAM
+#    within 1,536 B, the stack measured in simavr clear of .bss, a whole
+#    contest (search, proof, 3 speed runs) ended by RUN stop, no tick overran;
 #  - the paper-API sketch DriveToWall (Uno image, compat, 115200) reads the
 #    front sensor and stops at the wall;
 #  - bad images and flags: exit 3 / 2.
@@ -15,7 +18,8 @@ ONE_ERROR_LINE=1; . "$(dirname "$0")/lib.sh"
 M=mazes/gen-5x5-s1.txt
 MOUSE=$B/arduino/mega2560/Mouse-5x5.elf
 WALL=$B/arduino/uno/DriveToWall.elf
-for f in "$MOUSE" "$WALL"; do
+UNO=$B/arduino/uno/Mouse.elf
+for f in "$MOUSE" "$WALL" "$UNO"; do
   [ -f "$f" ] || { echo "SKIP cli_pil: $f not built (make arduino)"; exit 77; }
 done
 
@@ -44,6 +48,21 @@ print(d['exit_reason'], len(d['laps']) >= 2, d['sim_time_s'] < 60)" "$T/out" 2>&
 [ "$got" = "mcu_stopped True True" ] && ok "whole contest ends by RUN stop" || bad "whole contest: $got"
 grep -q "^mcu: contest done" "$T/err" && grep -q "^mcu: runner: 250 Hz tick, 0 overruns" "$T/err" \
   && ok "runner report: no tick overran" || bad "runner report: $(grep -v 'sensed cell' "$T/err" | tail -5)"
+
+# the Uno: avr-size's data + bss within the issue's 1,536 B; in simavr (SRAM
+# painted at load) the stack's deepest point stays above .bss, with >= 64 B
+# to spare; a whole 16x16 contest (~118 s of sim time, ~20 s here)
+static=$(avr-size -A "$UNO" | awk '$1 == ".data" || $1 == ".bss" { s += $2 } END { print s }')
+[ -n "$static" ] && [ "$static" -le 1536 ] && ok "Uno static RAM $static B <= 1536" || bad "Uno static RAM: $static B"
+want_rc 0 "Uno mouse, whole 16x16 contest" "$S" --maze mazes/gen-16x16-s1.txt --avr "$UNO" --time-limit 200 --json --verbose
+got=$(python3 -c "
+import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1]); a=d['avr']
+print(d['exit_reason'], a['mcu'], len(d['laps']), d['first_run_s'] < 20, d['best_run_s'] < 6,
+      a['sram_free_min_bytes'] >= 64, a['stack_max_bytes'] + int(sys.argv[2]) <= 2048)" "$T/out" "$static" 2>&1)
+[ "$got" = "mcu_stopped atmega328p 4 True True True True" ] && ok "Uno mouse: 16x16 contest, stack fits" \
+  || bad "Uno 16x16: $got $(tail -c 600 "$T/out")"
+grep -q "^mcu: runner: 250 Hz tick, 0 overruns" "$T/err" && ok "Uno runner: no tick overran" \
+  || bad "Uno runner report: $(grep -v 'sensed cell' "$T/err" | tail -5)"
 
 # the paper's API in compat mode: drive until the front sensor sees the wall
 want_rc 1 "DriveToWall, 2 s" "$S" --maze $M --avr "$WALL" --protocol compat --time-limit 2 --json

@@ -185,12 +185,52 @@ static void test_planning_time_from_hal_micros(void **state)
     time_mocked = 0;
 }
 
+/* explore_dir_ahead walks the last flood's field down a straight: at every
+ * cell it gives what a fresh flood from that cell gives, towards the goal
+ * and towards the start, from every configuration that starts a straight. */
+static void test_dir_ahead_matches_fresh_floods(void **state)
+{
+    (void)state;
+    static maze_t t;
+    static uint8_t mv[1024];
+    char err[MAZEFILE_ERR_LEN];
+    assert_int_equal(mazefile_load(&t, "mazes/gen-16x16-s1.txt", NULL, err, sizeof err), 0);
+    drive(&t, mv, (int)sizeof mv);
+    assert_int_equal(mouse.phase, EXPLORE_DONE);
+    int checked = 0;
+    for (int home = 0; home < 2; home++) {
+        for (maze_cell_t c = 0; c < 256; c++) {
+            for (uint8_t h = 0; h < 4; h++) {
+                int d = home ? explore_home_dir(&mouse, c, h) : explore_run_dir(&mouse, c, h);
+                if (d != h) continue;
+                int ahead[16];
+                maze_cell_t cells[16], cc = c;
+                int n = 0;
+                while (n < 16 && maze_neighbour(&mouse.map, cc, h, &cc)) {
+                    cells[n] = cc;
+                    ahead[n] = explore_dir_ahead(&mouse, cc, h, (uint8_t)(n + 1));
+                    if (ahead[n++] != h) break;
+                }
+                for (int i = 0; i < n; i++) {
+                    int fresh = home ? explore_home_dir(&mouse, cells[i], h) : explore_run_dir(&mouse, cells[i], h);
+                    assert_int_equal(ahead[i], fresh);
+                    checked++;
+                }
+            }
+        }
+    }
+    assert_int_equal(checked, 402); /* cells on straights of the known map, both ways */
+    mouse.path_cost = FLOOD_UNREACHABLE; /* no flood asked: no direction */
+    assert_int_equal(explore_dir_ahead(&mouse, 0, MAZE_NORTH, 1), -1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_l_route_proven_and_logged),
         cmocka_unit_test(test_unreachable_goal_ends),
         cmocka_unit_test(test_planning_time_from_hal_micros),
+        cmocka_unit_test(test_dir_ahead_matches_fresh_floods),
         cmocka_unit_test(test_generated_mazes_end_optimal),
         cmocka_unit_test(test_database_classic_all_optimal),
     };

@@ -86,6 +86,17 @@ static int load_config(const opts_t *o, simcfg_t *c)
     return 0;
 }
 
+/* The in-process firmware after a physics step: its control tick at
+ * HAL_TICK_HZ (1 kHz: every step), then its background loop. */
+static void firmware_step(long *tick_steps, long steps_per_tick)
+{
+    if (++*tick_steps >= steps_per_tick) {
+        *tick_steps = 0;
+        fw_tick();
+    }
+    fw_loop();
+}
+
 /* Run one contest; fills *out (a JSON object) and returns the exit code. */
 static int run_one(const opts_t *o, const char *maze_path, json_t **out, int print_text)
 {
@@ -192,6 +203,10 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
     double hard_stop_s = cfg.time_limit_s + 60.0; /* a lap under way may finish over time, flagged */
     if (!drv.reachable) reason = "unreachable";
     int hil = o->serial; /* an MCU drives: from the start, or since the HUD's Connect */
+    /* a build with -DHAL_TICK_HZ=250 ticks every 4th step, as on the AVR */
+    long steps_per_tick = lround(1.0 / (HAL_TICK_HZ * cfg.step_s));
+    if (steps_per_tick < 1) steps_per_tick = 1;
+    long tick_steps = steps_per_tick - 1; /* the first step ticks */
     while (!drv.done) {
         if (hil) { /* HIL: the contest lasts the time limit */
             sim_step(&sim);
@@ -217,8 +232,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
             }
             sim_step(&sim);
             if (tel_on) telem_step(&tel, &sim);
-            fw_tick();
-            fw_loop();
+            firmware_step(&tick_steps, steps_per_tick);
         } else if (o->scripted) {
             driver_update(&drv, &sim);
             sim_step(&sim);
@@ -226,8 +240,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         } else {
             sim_step(&sim);
             if (tel_on) telem_step(&tel, &sim);
-            fw_tick(); /* control tick every physics step (1 kHz) */
-            fw_loop();
+            firmware_step(&tick_steps, steps_per_tick);
             uint8_t mode = mouse_status()->mode;
             if (mode == MOUSE_DONE) break;
             if (mode == MOUSE_NO_GOAL) {

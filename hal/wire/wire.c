@@ -333,7 +333,7 @@ int wire_compat_decode_byte(wire_compat_rx_t *r, uint8_t b, wire_msg_t *out)
     }
     if (r->id == WIRE_C_LOGGER) {
         if (b != 0) {
-            if (r->n >= WIRE_LOG_MAX) { /* overlong: counted, dropped, next byte is an ID again */
+            if (r->n >= WIRE_RX_LOG_MAX) { /* overlong: counted, dropped, next byte is an ID again */
                 r->stats.overflow++;
                 r->id = 0xFF;
                 return 0;

@@ -27,6 +27,15 @@ extern "C" {
 #define WIRE_LOG_MAX 80         /* bytes of text in a LOG message (= HAL_LOG_MAX) */
 #define WIRE_RAW_MAX (1 + WIRE_LOG_MAX + 2)      /* type + longest payload + CRC, bytes */
 #define WIRE_FRAME_MAX (WIRE_RAW_MAX + 2 + 1)    /* + COBS overhead + delimiter, bytes */
+/* The longest LOG text a decoder takes, bytes: WIRE_LOG_MAX by default.
+ * An MCU never receives LOG (the sim's longest message, ENCODER, is 16
+ * bytes before the delimiter) and may build ALL its files with
+ * -DWIRE_RX_LOG_MAX=14 (it sizes both decoders' buffers: 66 B less SRAM);
+ * a longer frame or compat log line is then counted as overflow. */
+#ifndef WIRE_RX_LOG_MAX
+#define WIRE_RX_LOG_MAX WIRE_LOG_MAX
+#endif
+#define WIRE_RX_MAX (WIRE_RX_LOG_MAX + 6) /* framed decoder's buffer: WIRE_FRAME_MAX by default */
 #define WIRE_MOTOR_MAX 1023     /* motor command limit, +-1023 = +-100 % battery */
 #define WIRE_COMPAT_RANGE_MM 1200u /* ToF range of the paper's robot, mm */
 
@@ -104,7 +113,7 @@ uint16_t wire_crc16(const uint8_t *p, size_t n);
 size_t wire_encode(const wire_msg_t *m, uint8_t *out, size_t cap);
 
 typedef struct {
-    uint8_t buf[WIRE_FRAME_MAX];
+    uint8_t buf[WIRE_RX_MAX];
     uint8_t len;
     uint8_t skipping;   /* overflowed: ignore bytes until the next delimiter */
     wire_stats_t stats;
@@ -143,7 +152,7 @@ typedef struct {
     uint8_t id;            /* message being received, 0xFF = waiting for an ID */
     uint8_t need;          /* payload bytes still expected */
     uint8_t n;
-    uint8_t buf[WIRE_LOG_MAX + 1];
+    uint8_t buf[WIRE_RX_LOG_MAX + 1];
     uint8_t log_overflow;  /* skipping the rest of an overlong log line */
     int32_t enc[2];        /* receiver: counts accumulated from deltas */
     int16_t motor[2];      /* receiver: last command per side */

@@ -1,7 +1,8 @@
 /* MMMouse.h - runs the mouse firmware (firmware/, through hal/hal.h) on an
  * Arduino against the simulator: the HAL is served from mmLink, fw_tick
- * runs from a Timer1 interrupt at HAL_TICK_HZ (500 Hz on AVR: the float
- * control tick takes 0.98 ms at 16 MHz), fw_loop from loop().
+ * runs from a Timer1 interrupt at HAL_TICK_HZ (250 Hz on AVR: the float
+ * control tick takes ~1.3 ms at 16 MHz, the link ~0.4 ms more), fw_loop
+ * from loop().
  *
  * Interrupt discipline: the tick interrupt re-enables interrupts (so the
  * UART keeps receiving at 1 Mbaud) and is the only code that touches the

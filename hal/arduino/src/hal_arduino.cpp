@@ -11,7 +11,10 @@ extern "C" { /* the firmware's headers are plain C */
 
 static volatile int16_t cmd[2];          /* latest motor command */
 static volatile int32_t enc_zero[2];
-static char log_line[HAL_LOG_MAX + 1];
+/* Log lines are cut to MM_LOG_TEXT_MAX characters on the MCU (the
+ * firmware's longest is 49): 24 B less SRAM and stack than HAL_LOG_MAX */
+#define MM_LOG_TEXT_MAX 56
+static char log_line[MM_LOG_TEXT_MAX + 1];
 static volatile uint8_t log_state;       /* 0 free, 1 being filled, 2 waits to be sent */
 static volatile uint16_t log_dropped, overruns;
 static volatile uint8_t busy;
@@ -64,7 +67,9 @@ hal_distance_t hal_distance(uint8_t sensor)
     return d;
 }
 
-void hal_log(const char *line)
+/* Queue one line (text in SRAM, or in flash with from_flash): one line
+ * waits at a time, the next tick sends it. */
+static void queue_log(const char *line, uint8_t from_flash)
 {
     uint8_t mine = 0;
     ATOMIC_BLOCK(ATOMIC_RESTORESTATE) /* fw_loop and fw_tick may both log */
@@ -77,10 +82,14 @@ void hal_log(const char *line)
         }
     }
     if (!mine) return;
-    strncpy(log_line, line, HAL_LOG_MAX);
-    log_line[HAL_LOG_MAX] = '\0';
+    if (from_flash) strncpy_P(log_line, line, MM_LOG_TEXT_MAX);
+    else strncpy(log_line, line, MM_LOG_TEXT_MAX);
+    log_line[MM_LOG_TEXT_MAX] = '\0';
     log_state = 2;
 }
+
+void hal_log(const char *line) { queue_log(line, 0); }
+void hal_log_P(const char *line) { queue_log(line, 1); }
 
 void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_t state)
 {
@@ -110,7 +119,7 @@ static void tick()
      * queue so the mouse's last lines arrive first */
     if (mouse_status()->mode >= MOUSE_DONE && done_ticks < 25) done_ticks++;
     if (done_ticks == 25 && log_state == 0) { /* the runner's own report, once */
-        snprintf(log_line, sizeof log_line, "runner: %u Hz tick, %u overruns, worst tick %u us, %u log lines dropped",
+        snprintf_P(log_line, sizeof log_line, PSTR("runner: %u Hz tick, %u overruns, worst %u us, %u lost"),
                  (unsigned)HAL_TICK_HZ, (unsigned)overruns, (unsigned)(worst_tick_half_us / 2u), (unsigned)log_dropped);
         log_state = 2;
         done_ticks = 26;
