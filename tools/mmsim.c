@@ -29,6 +29,7 @@
 #include "mms.h"
 #include "sim.h"
 #include "telem.h"
+#include "cli.h"
 #include "outfile.h"
 #include "report.h"
 #include "view.h"
@@ -532,25 +533,10 @@ static void usage(FILE *out)
           out);
 }
 
-static int bad(const char *fmt, const char *arg)
-{
-    fprintf(stderr, "mmsim: ");
-    fprintf(stderr, fmt, arg);
-    fprintf(stderr, " (try 'mmsim --help')\n");
-    return EXIT_BAD_INPUT;
-}
-
+static int bad(const char *fmt, const char *arg) { return cli_bad("mmsim", fmt, arg); }
 static int num(const char *opt, const char *s, double lo, double hi, double *out)
 {
-    char *end;
-    errno = 0;
-    double v = strtod(s, &end);
-    if (errno || end == s || *end || !(v >= lo && v <= hi)) {
-        fprintf(stderr, "mmsim: %s: expected a number from %g to %g, got '%s'\n", opt, lo, hi, s);
-        return -1;
-    }
-    *out = v;
-    return 0;
+    return cli_number("mmsim", opt, s, lo, hi, out);
 }
 
 int main(int argc, char **argv)
@@ -643,21 +629,14 @@ int main(int argc, char **argv)
             if (num("--at", optarg, 0, 86400, &o.shot_at_s)) return EXIT_BAD_INPUT;
             break;
         case 'C':
-            if (strlen(optarg) != 1 || optarg[0] < '1' || optarg[0] > '3')
-                return bad("--camera: expected 1, 2 or 3, got '%s'", optarg);
-            o.view.camera = optarg[0] - '0';
+            if (cli_view_option("mmsim", "camera", optarg, &o.view)) return EXIT_BAD_INPUT;
             break;
         case 'X':
-            if (num("--speed", optarg, 1, VIEW_SPEED_MAX, &o.view.speed)) return EXIT_BAD_INPUT;
+            if (cli_view_option("mmsim", "speed", optarg, &o.view)) return EXIT_BAD_INPUT;
             break;
-        case 'Z': {
-            int w, h, n = 0;
-            if (sscanf(optarg, "%dx%d%n", &w, &h, &n) != 2 || optarg[n] || w < 64 || h < 64 || w > 8192 || h > 8192)
-                return bad("--size: expected WxH, 64 to 8192 pixels each, got '%s'", optarg);
-            o.view.width = w;
-            o.view.height = h;
+        case 'Z':
+            if (cli_view_option("mmsim", "size", optarg, &o.view)) return EXIT_BAD_INPUT;
             break;
-        }
         case 'T': /* --serial DEV or --port DEV (the viewer shows it) */
             o.link.device = optarg;
             o.view.port = optarg;

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli.h"
 #include "outfile.h"
 #include "replay.h"
 #include "view.h"
@@ -30,25 +31,10 @@ static void usage(FILE *out)
           out);
 }
 
-static int bad(const char *fmt, const char *arg)
-{
-    fprintf(stderr, "mmview: ");
-    fprintf(stderr, fmt, arg);
-    fprintf(stderr, " (try 'mmview --help')\n");
-    return EXIT_BAD_INPUT;
-}
-
+static int bad(const char *fmt, const char *arg) { return cli_bad("mmview", fmt, arg); }
 static int num(const char *opt, const char *s, double lo, double hi, double *out)
 {
-    char *end;
-    errno = 0;
-    double v = strtod(s, &end);
-    if (errno || end == s || *end || !(v >= lo && v <= hi)) {
-        fprintf(stderr, "mmview: %s: expected a number from %g to %g, got '%s'\n", opt, lo, hi, s);
-        return -1;
-    }
-    *out = v;
-    return 0;
+    return cli_number("mmview", opt, s, lo, hi, out);
 }
 
 int main(int argc, char **argv)
@@ -71,21 +57,14 @@ int main(int argc, char **argv)
             if (num("--at", optarg, 0, 86400, &at_s)) return EXIT_BAD_INPUT;
             break;
         case 'C':
-            if (strlen(optarg) != 1 || optarg[0] < '1' || optarg[0] > '3')
-                return bad("--camera: expected 1, 2 or 3, got '%s'", optarg);
-            vo.camera = optarg[0] - '0';
+            if (cli_view_option("mmview", "camera", optarg, &vo)) return EXIT_BAD_INPUT;
             break;
         case 'X':
-            if (num("--speed", optarg, 1, VIEW_SPEED_MAX, &vo.speed)) return EXIT_BAD_INPUT;
+            if (cli_view_option("mmview", "speed", optarg, &vo)) return EXIT_BAD_INPUT;
             break;
-        case 'Z': {
-            int w, h, n = 0;
-            if (sscanf(optarg, "%dx%d%n", &w, &h, &n) != 2 || optarg[n] || w < 64 || h < 64 || w > 8192 || h > 8192)
-                return bad("--size: expected WxH, 64 to 8192 pixels each, got '%s'", optarg);
-            vo.width = w;
-            vo.height = h;
+        case 'Z':
+            if (cli_view_option("mmview", "size", optarg, &vo)) return EXIT_BAD_INPUT;
             break;
-        }
         case 'h': usage(stdout); return EXIT_OK;
         default: return bad("unknown option or missing value: '%s'", argv[optind - 1]);
         }
