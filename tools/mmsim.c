@@ -147,27 +147,22 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         }
     } else if (o->scripted) {
         driver_init(&drv, &maze, &cfg, o->runs);
-    } else if (o->mms.command) {
+    } else { /* the firmware in-process: its own contest, or an mms algorithm's commands */
         drv.done = 0;
         drv.reachable = 1;
         hal_sim_attach(&sim);
         hal_sim_set_log(o->verbose ? stderr : NULL);
         fw_set_maze(&maze);
         fw_setup();
-        mouse_cmd_mode();
-        if (mms_start(&mms, &o->mms, &maze, err, sizeof err) != 0) {
-            fprintf(stderr, "mmsim: %s\n", err);
-            hal_sim_attach(NULL);
-            sim_free(&sim);
-            return EXIT_EXTERNAL;
+        if (o->mms.command) {
+            mouse_cmd_mode();
+            if (mms_start(&mms, &o->mms, &maze, err, sizeof err) != 0) {
+                fprintf(stderr, "mmsim: %s\n", err);
+                hal_sim_attach(NULL);
+                sim_free(&sim);
+                return EXIT_EXTERNAL;
+            }
         }
-    } else {
-        drv.done = 0;
-        drv.reachable = 1;
-        hal_sim_attach(&sim);
-        hal_sim_set_log(o->verbose ? stderr : NULL);
-        fw_set_maze(&maze);
-        fw_setup();
     }
     telem_opts_t topts = o->telem;
     if (o->serial) topts.link = &lnk; /* MM_LINK in HIL/PIL runs */
