@@ -54,6 +54,11 @@ void motion_turn_smooth(motion_t *m, float degrees);
  * *offset_mm past it; *length_mm is its path length. From the same
  * discrete profile the control tick runs. */
 void motion_smooth_geometry(float v_mm_s, float *offset_mm, float *length_mm);
+/* Standing before a flat wall that both diagonal rays hit (at a cell
+ * centre, the rays meet the wall ahead 10 mm from its ends): how far the
+ * robot is turned counter-clockwise from the wall's normal, rad, from the
+ * two readings (mm along each ray). Exact for any angle and distance. */
+float motion_wall_angle(float left_mm, float right_mm);
 int motion_busy(const motion_t *m);
 void motion_stop(motion_t *m);
 /* One control tick of dt_s: odometry, profiles, controller, motors. */

@@ -22,7 +22,7 @@ void odom_update(odom_t *o, int32_t left, int32_t right, float dt_s)
     o->last_l = left;
     o->last_r = right;
     o->ds_mm = 0.5f * (dl + dr);
-    o->dtheta_rad = (dr - dl) / RC_TRACK_MM;
+    o->dtheta_rad = (dr - dl) / RC_ODOM_TRACK_MM;
     float mid = o->theta_rad + 0.5f * o->dtheta_rad; /* midpoint heading */
     o->x_mm -= o->ds_mm * sinf(mid);
     o->y_mm += o->ds_mm * cosf(mid);

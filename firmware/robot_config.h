@@ -10,6 +10,11 @@
 #define RC_WALL_MM 12.0f             /* wall thickness */
 #define RC_WHEEL_DIAMETER_MM 32.0f   /* paper Table 1 */
 #define RC_TRACK_MM 96.0f            /* wheel centre planes at +-48 mm */
+/* Odometry's track: in-place quarter turns came out 0.2 degrees short of
+ * what 96 mm reported (250 turns, japan2018/2019 in mmsim: the tyres'
+ * 8 mm contact patches scrub); 96.2 halves that, and of 96.0, 96.2, 96.3
+ * and 96.4 it gave the fewest wall contacts over 60 japan seeds. */
+#define RC_ODOM_TRACK_MM 96.2f
 #define RC_COUNTS_PER_REV 358.32f    /* 12 PPR on the motor x 29.86 gear */
 #define RC_MM_PER_COUNT (3.14159265f * RC_WHEEL_DIAMETER_MM / RC_COUNTS_PER_REV) /* 0.2806 mm */
 
@@ -31,6 +36,14 @@
  * wall one cell further out (~310 mm) or to a post. */
 #define RC_SIDE_WALL_MM 62.0f
 #define RC_SIDE_THRESHOLD_MM 110.0f  /* nearer = wall present */
+/* Centring uses a diagonal reading only below this: 20 mm off the centre
+ * line. Between it and RC_SIDE_THRESHOLD_MM the ray has met a post or a
+ * wall through a gap (a 107 mm reading put a U-turn's pivot 8 mm off on
+ * japan2019 seed 6 and its corner into the wall). */
+#define RC_CENTRING_MAX_MM 90.0f
+/* and only while moving faster than this: a creep of more than 4 mm back
+ * from a wall ahead took readings of that wall for side walls */
+#define RC_CENTRING_MIN_MM_S 100.0f
 /* The diagonal rays meet the side wall 94 mm ahead of the body centre: from
  * 48 mm before a cell centre to 4 mm past it they can reach the post row
  * at the cell's end first (a wall ahead, or the neighbour's end wall where
@@ -53,17 +66,26 @@
  * leaves 84 mm: 7 mm off the centre line touches a wall. Off-centre stops
  * turn about the cell's centre instead (up to this far from the robot's). */
 #define RC_PIVOT_MAX_MM 8.0f
+/* The offset for that is a running average of the straight's centring
+ * estimates (each new reading moves it by this share): a single one has
+ * ~2 mm of noise, and a pivot set from a wrong one moves the robot off
+ * the centre instead. */
+#define RC_PIVOT_AVG 0.3f
 /* Smooth 90-degree turns while moving at RC_SMOOTH_MM_S: the rotation
- * profile ramps to 8 rad/s at 160 rad/s^2 (peak 0.41 g sideways; outer
- * wheel 884 mm/s of the motor's ~1210). The turn starts ~75 mm before the
- * turn cell's centre and ends ~75 mm past it on the new heading (computed
+ * profile ramps to 8 rad/s at 120 rad/s^2 (peak 0.41 g sideways; outer
+ * wheel 884 mm/s of the motor's ~1210). The turn starts ~80 mm before the
+ * turn cell's centre and ends ~80 mm past it on the new heading (computed
  * at start-up, motion_smooth_geometry); its body keeps >= 17 mm from the
  * cell's walls and 32 mm from the inner post (checked numerically for the
- * 96 x 120 mm body). A shorter offset leaves the 30 ms ToF sensors time to
+ * 96 x 120 mm body at 160 rad/s^2; 120 moves both by under 1 mm). At
+ * 160 rad/s^2 each turn pair of a staircase (no straight, no side wall
+ * between turns) added ~0.5 degrees of heading error (wheel slip in the
+ * 7.7 m/s^2 wheel acceleration of turn entry and exit): 18 to 22 mm off
+ * the centre line after 6 turns on japan2019's run path, then a contact. A shorter offset leaves the 30 ms ToF sensors time to
  * deliver a fresh reading of the next cell before its own turn must start. */
 #define RC_SMOOTH_MM_S 500.0f
 #define RC_SMOOTH_DEG_S 458.4f       /* 8 rad/s */
-#define RC_SMOOTH_ACCEL_DEG_S2 9167.3f /* 160 rad/s^2 */
+#define RC_SMOOTH_ACCEL_DEG_S2 6875.5f /* 120 rad/s^2 */
 /* sense the next cell's walls this far before its centre: the diagonal
  * rays then hit it 74 mm past its entry boundary, clear of the posts */
 #define RC_SENSE_BEFORE_MM 110.0f
@@ -73,6 +95,18 @@
 /* front-wall alignment works in the last part of a move towards a wall */
 #define RC_ALIGN_FROM_MM 90.0f
 #define RC_ALIGN_GAIN 0.35f /* share of the sensor's correction taken per reading */
+/* Heading from the wall ahead, standing at a cell centre (mouse.c
+ * wall_heading): the diagonal rays meet it ~48 mm out, 10 mm from the side
+ * walls; one pair of readings (5 % noise each) gives the angle to ~0.9
+ * degrees. */
+/* readings per stop, one per 35 ms: over 160 japan contests 1, 2 and 3
+ * gave contacts in 8, 3 and 2; each costs ~0.5 s of japan2018's first run */
+#define RC_WALL_HEADING_READS 3
+#define RC_WALL_HEADING_PRIOR 1.0f   /* weight of the held heading, in readings */
+/* only this near the centre (front reading, mm): 10 mm short of it the rays
+ * reach the side walls first */
+#define RC_WALL_HEADING_NEAR_MM 6.0f
+#define RC_WALL_HEADING_MAX_RAD 0.09f /* 5 degrees: more is a post or a missing wall, not drift */
 
 /* ---- controller gains (tuned in mmsim on japan2018) ---- */
 /* Plant: one command step accelerates the robot by ~22 mm/s^2, and the

@@ -56,6 +56,16 @@ for m in gen-5x5-s1 gen-8x8-s1 gen-16x16-s1 gen-16x16-s2; do
 done
 "$S" --maze mazes/gen-5x5-s1.txt --driver firmware --json >"$T/f1"; "$S" --maze mazes/gen-5x5-s1.txt --driver firmware --json >"$T/f2"
 [ "$(strip "$T/f1")" = "$(strip "$T/f2")" ] && ok "firmware run deterministic" || bad "firmware run deterministic"
+# a full-size contest: japan2019 seed 4 touched a wall (a staircase of smooth
+# turns with no side walls in the first speed run; in-place U-turns) before
+# the heading fix from the wall ahead at stops and the gentler turn entry
+DB=${SHARED:-../shared}/mazes/classic
+if [ -f "$DB/japan2019.txt" ]; then
+  want_rc 0 "firmware contest japan2019 seed 4" "$S" --maze "$DB/japan2019.txt" --driver firmware --seed 4 --json
+  [ "$(py "(d['reached_goal'], d['final_path_optimal'], d['exit_reason'], len(d['laps']) >= 2, d['collisions'])")" = "(True, True, 'done', True, 0)" ] && ok "firmware japan2019 seed 4 proven and raced, no wall touched" || bad "firmware japan2019 seed 4: $(cat "$T/out")"
+else
+  echo "SKIP cli_mmsim japan2019 firmware contest: $DB/japan2019.txt not found"
+fi
 want_rc 1 "firmware, goal unreachable" "$S" --maze "$T/closed.txt" --driver firmware --json
 [ "$(py "d['exit_reason']")" = "unreachable" ] && ok "firmware reports unreachable" || bad "firmware unreachable: $(cat "$T/out")"
 [ $fails -eq 0 ]

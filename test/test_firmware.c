@@ -58,7 +58,7 @@ static void test_odometry(void **state)
     near(o.theta_rad, 0, 1e-6);
     near(o.y_mm, 1000 * RC_MM_PER_COUNT, 1e-3);
     /* on the spot, left back and right forward: counter-clockwise */
-    int32_t n = (int32_t)lroundf(0.25f * 3.14159265f * RC_TRACK_MM / RC_MM_PER_COUNT); /* a quarter turn */
+    int32_t n = (int32_t)lroundf(0.25f * 3.14159265f * RC_ODOM_TRACK_MM / RC_MM_PER_COUNT); /* a quarter turn */
     odom_update(&o, 1100 - n, 1100 + n, 0.5f);
     near(o.theta_rad, 3.14159265 / 2, 0.005);
     near(o.dist_mm, 1000 * RC_MM_PER_COUNT, 1e-3); /* no distance */
@@ -181,6 +181,38 @@ static void test_turn_about(void **state)
     assert_true(m.fwd.target < 0);
 }
 
+/* The diagonal rays' lengths to a flat wall dist_mm ahead of the body
+ * centre (along the wall's normal), the robot turned delta_rad
+ * counter-clockwise from that normal: each sensor sits at (-+X, Y) and
+ * looks 45 degrees out. */
+static float ray_to_wall(int right, float delta_rad, float dist_mm)
+{
+    float sx = right ? RC_TOF_SIDE_X_MM : -RC_TOF_SIDE_X_MM, dx = right ? 0.70710678f : -0.70710678f;
+    float sy = sx * sinf(delta_rad) + RC_TOF_SIDE_Y_MM * cosf(delta_rad); /* in the wall's frame */
+    float dy = dx * sinf(delta_rad) + 0.70710678f * cosf(delta_rad);
+    return (dist_mm - sy) / dy;
+}
+
+/* Heading from two diagonal readings of one wall: exact for any angle and
+ * distance; turned left, the left ray is the longer one. */
+static void test_wall_angle(void **state)
+{
+    (void)state;
+    const float deg[] = { -4.0f, -1.0f, 0.0f, 0.3f, 2.5f };
+    const float dist[] = { 78.0f, 84.0f, 90.0f }; /* 84: the wall ahead of a cell centre */
+    for (unsigned i = 0; i < sizeof deg / sizeof deg[0]; i++)
+        for (unsigned j = 0; j < sizeof dist / sizeof dist[0]; j++) {
+            float d = deg[i] * 0.017453293f;
+            float l = ray_to_wall(0, d, dist[j]), r = ray_to_wall(1, d, dist[j]);
+            near(motion_wall_angle(l, r), d, 1e-4);
+        }
+    /* centred and square: both rays 48 mm, no angle */
+    near(ray_to_wall(0, 0, 84.0f), 48.08, 0.01);
+    near(motion_wall_angle(48.0f, 48.0f), 0, 1e-6);
+    /* 1 mm between the readings is ~0.27 degrees */
+    assert_true(motion_wall_angle(49.0f, 48.0f) > 0.004f && motion_wall_angle(49.0f, 48.0f) < 0.0055f);
+}
+
 /* The start cell boxed in: the mouse reports it and stops. */
 static void test_mouse_no_goal(void **state)
 {
@@ -238,6 +270,7 @@ int main(void)
         cmocka_unit_test(test_motion_tracks_straight),
         cmocka_unit_test(test_smooth_geometry),
         cmocka_unit_test(test_turn_about),
+        cmocka_unit_test(test_wall_angle),
         cmocka_unit_test(test_mouse_no_goal),
         cmocka_unit_test(test_mouse_sets_off),
     };
