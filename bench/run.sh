@@ -98,4 +98,13 @@ print("PIL %s gen-16x16-s1: %s, sim %.1f s, wall %.1f s, real-time factor %.1fx,
     sys.argv[1], d["exit_reason"], d["sim_time_s"], d["wall_time_s"], d["real_time_factor"], [l["run_s"] for l in d["laps"]],
     d["collisions"], sys.argv[2], a["stack_max_bytes"], a["sram_free_min_bytes"], tick))' "$img" "$static" "$B/pil-bench.err"
 done
+# The Uno's whole japan2019 contest (search, proof, back, 3 speed runs; ~50 s
+# of wall time): its staircases and long straights broke the AVR's speed runs
+# before each run flooded once and ran at 900 mm/s (docs/BENCHMARKS.md)
+$B/mmsim --maze "$DB/classic/japan2019.txt" --avr "$B/arduino/uno/Mouse.elf" --json 2>/dev/null | tail -1 | python3 -c '
+import json, sys
+d = json.loads(sys.stdin.read())
+print("PIL uno/Mouse.elf classic/japan2019: %s, sim %.1f s, wall %.1f s, real-time factor %.1fx, laps %s, contact steps %d" % (
+    d["exit_reason"], d["sim_time_s"], d["wall_time_s"], d["real_time_factor"], [l["run_s"] for l in d["laps"]], d["collisions"]))' \
+  || echo "SKIP PIL japan2019: no $DB/classic/japan2019.txt"
 rm -f "$B/pil-bench.err"

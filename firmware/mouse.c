@@ -440,7 +440,12 @@ static int path_dir(int to_goal, maze_cell_t c, uint8_t h)
 static void run_plan(int to_goal)
 {
     float dist0 = mo.odom.dist_mm; /* the flood below takes 10-40 ms on an AVR: the robot rolls on */
-    int d = path_dir(to_goal, st.cell, st.heading);
+    /* one flood per run, at its start: the map no longer changes, so the
+     * field stays valid along the path and ex.path_cost follows the robot
+     * (cells + quarter turns made). On the AVR a flood after every smooth
+     * turn let the robot roll past the next turn's start (japan2019's
+     * staircases became stops and turns on the spot, into the walls). */
+    int d = waiting == WAIT_NONE ? path_dir(to_goal, st.cell, st.heading) : explore_dir_ahead(&ex, st.cell, st.heading, 0);
     if (d < 0) {
         waiting = WAIT_NONE;
         if (to_goal) {
@@ -454,6 +459,7 @@ static void run_plan(int to_goal)
     }
     int8_t q = quarter(st.heading, (uint8_t)d);
     if (q) { /* standing at a centre: turn on the spot */
+        ex.path_cost = (uint16_t)(ex.path_cost - (q == 2 ? 2u : 1u));
         st.heading = (uint8_t)d;
         start_turn(q);
         return;
@@ -475,7 +481,9 @@ static void run_plan(int to_goal)
     float mm = n * RC_CELL_MM - run_offset_mm - (mo.odom.dist_mm - dist0);
     int8_t qq = dd >= 0 ? quarter(st.heading, (uint8_t)dd) : 0;
     st.cell = c;
+    ex.path_cost = (uint16_t)(ex.path_cost - n);
     if ((qq == 1 || qq == -1) && mm >= smooth_offset_mm) {
+        ex.path_cost--; /* the smooth turn's quarter */
         start_forward(mm - smooth_offset_mm, v_max, RC_SMOOTH_MM_S, accel);
         move_shift_mm = smooth_offset_mm;
         turn_pending = qq;

@@ -224,6 +224,56 @@ static void test_dir_ahead_matches_fresh_floods(void **state)
     assert_int_equal(explore_dir_ahead(&mouse, 0, MAZE_NORTH, 1), -1);
 }
 
+/* A speed run floods once, at its start (mouse.c run_plan): walking that
+ * field with path_cost lowered by the cells and quarter turns made gives the
+ * same headings as a fresh flood at every configuration of the path, to the
+ * goal and back home. */
+static void test_one_flood_per_run(void **state)
+{
+    (void)state;
+    static maze_t t;
+    static uint8_t mv[1024];
+    char err[MAZEFILE_ERR_LEN];
+    assert_int_equal(mazefile_load(&t, "mazes/gen-16x16-s1.txt", NULL, err, sizeof err), 0);
+    drive(&t, mv, (int)sizeof mv);
+    assert_int_equal(mouse.phase, EXPLORE_DONE);
+    maze_cell_t from = mouse.map.start;
+    uint8_t from_h = mouse.map.start_heading;
+    for (int home = 0; home < 2; home++) {
+        static int8_t ref[512];
+        int n = 0, turns = 0;
+        maze_cell_t c = from;
+        uint8_t h = from_h;
+        for (;;) { /* fresh floods */
+            int d = home ? explore_home_dir(&mouse, c, h) : explore_run_dir(&mouse, c, h);
+            assert_true(n < 512);
+            ref[n++] = (int8_t)d;
+            if (d < 0) break;
+            if (d == h) assert_true(maze_neighbour(&mouse.map, c, h, &c));
+            else h = (uint8_t)d, turns++;
+        }
+        c = from;
+        h = from_h;
+        int d = home ? explore_home_dir(&mouse, c, h) : explore_run_dir(&mouse, c, h);
+        for (int i = 0; i < n; i++) { /* the first flood only */
+            if (i) d = explore_dir_ahead(&mouse, c, h, 0);
+            assert_int_equal(d, ref[i]);
+            if (d < 0) break;
+            if (d == h) {
+                assert_true(maze_neighbour(&mouse.map, c, h, &c));
+                mouse.path_cost--;
+            } else {
+                mouse.path_cost = (uint16_t)(mouse.path_cost - (((d - h) & 3) == 2 ? 2u : 1u));
+                h = (uint8_t)d;
+            }
+        }
+        assert_int_equal(mouse.path_cost, 0);
+        assert_true(turns >= 10 && n > 30); /* a real path (34 steps, 13 turns to the goal) */
+        from = c; /* back home from the goal, facing the way the run ended */
+        from_h = h;
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -231,6 +281,7 @@ int main(void)
         cmocka_unit_test(test_unreachable_goal_ends),
         cmocka_unit_test(test_planning_time_from_hal_micros),
         cmocka_unit_test(test_dir_ahead_matches_fresh_floods),
+        cmocka_unit_test(test_one_flood_per_run),
         cmocka_unit_test(test_generated_mazes_end_optimal),
         cmocka_unit_test(test_database_classic_all_optimal),
     };
