@@ -16,21 +16,10 @@ cleanup() { for p in $SPID $MPID $XPID; do kill "$p" 2>/dev/null; done; rm -rf "
 trap cleanup EXIT
 . "$(dirname "$0")/lib.sh"
 
-command -v Xvfb >/dev/null || { echo "SKIP cli_connect.sh: Xvfb not installed"; exit 77; }
-[ -x "$X" ] || { echo "SKIP cli_connect.sh: $X not built (libXtst.so.6 or X11 headers missing)"; exit 77; }
-Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$T/dpy" 2>"$T/xvfb.err" &
-XPID=$!
-for _ in $(seq 50); do [ -s "$T/dpy" ] && break; sleep 0.1; done
-[ -s "$T/dpy" ] || { echo "SKIP cli_connect.sh: Xvfb did not start: $(head -1 "$T/xvfb.err")"; exit 77; }
-export DISPLAY=:$(head -1 "$T/dpy")
+[ -x "$X" ] || { echo "SKIP cli_connect.sh: $X not built (libxtst-dev or X11 headers missing)"; exit 77; }
+start_xvfb cli_connect.sh
 
-SIM=("$S")
-if ldd "$S" | grep -q libasan; then
-  asan=$(ldd "$S" | awk '/libasan/ {print $3}')
-  dri=$(ls /usr/lib/*/dri/swrast_dri.so 2>/dev/null | head -1)
-  pre=; [ -n "$dri" ] && pre="$asan $dri"
-  SIM=(env "LD_PRELOAD=$pre" "LSAN_OPTIONS=suppressions=$PWD/test/lsan-gl.supp" "$S")
-fi
+gl_cmd "$S"; SIM=("${GL[@]}")
 
 # A pseudo-terminal pair: the simulator opens the slave by name, this end
 # counts what arrives on the master (the MCU's side) for 20 s at most.

@@ -15,22 +15,10 @@ cleanup() { [ -n "$XPID" ] && kill "$XPID" 2>/dev/null; rm -rf "$T"; }
 trap cleanup EXIT
 . "$(dirname "$0")/lib.sh"
 
-command -v Xvfb >/dev/null || { echo "SKIP cli_mmview.sh: Xvfb not installed"; exit 77; }
-Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$T/dpy" 2>"$T/xvfb.err" &
-XPID=$!
-for _ in $(seq 50); do [ -s "$T/dpy" ] && break; sleep 0.1; done
-[ -s "$T/dpy" ] || { echo "SKIP cli_mmview.sh: Xvfb did not start: $(head -1 "$T/xvfb.err")"; exit 77; }
-export DISPLAY=:$(head -1 "$T/dpy")
+start_xvfb cli_mmview.sh
 
 # sanitized build: keep Mesa's frames named for the suppressions (as cli_view.sh)
-run() { local b=$1; shift
-  if ldd "$b" | grep -q libasan; then
-    local asan dri pre=
-    asan=$(ldd "$b" | awk '/libasan/ {print $3}')
-    dri=$(ls /usr/lib/*/dri/swrast_dri.so 2>/dev/null | head -1)
-    [ -n "$dri" ] && pre="$asan $dri"
-    env "LD_PRELOAD=$pre" "LSAN_OPTIONS=suppressions=$PWD/test/lsan-gl.supp" "$b" "$@"
-  else "$b" "$@"; fi; }
+run() { local b=$1; shift; gl_cmd "$b"; "${GL[@]}" "$@"; }
 
 M=mazes/gen-5x5-s1.txt
 want_rc 0 "firmware contest logged" "$S" --maze $M --driver firmware --lcm-log "$T/run.lcmlog"

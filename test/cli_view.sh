@@ -13,22 +13,11 @@ cleanup() { [ -n "$XPID" ] && kill "$XPID" 2>/dev/null; rm -rf "$T"; }
 trap cleanup EXIT
 . "$(dirname "$0")/lib.sh"
 
-command -v Xvfb >/dev/null || { echo "SKIP cli_view.sh: Xvfb not installed"; exit 77; }
-Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$T/dpy" 2>"$T/xvfb.err" &
-XPID=$!
-for _ in $(seq 50); do [ -s "$T/dpy" ] && break; sleep 0.1; done
-[ -s "$T/dpy" ] || { echo "SKIP cli_view.sh: Xvfb did not start: $(head -1 "$T/xvfb.err")"; exit 77; }
-export DISPLAY=:$(head -1 "$T/dpy")
+start_xvfb cli_view.sh
 
 # sanitized build: Mesa's driver is unloaded at exit, leaving nameless
 # frames; preloading it keeps them named for the suppressions
-SIM=("$S")
-if ldd "$S" | grep -q libasan; then
-  asan=$(ldd "$S" | awk '/libasan/ {print $3}')
-  dri=$(ls /usr/lib/*/dri/swrast_dri.so 2>/dev/null | head -1)
-  pre=; [ -n "$dri" ] && pre="$asan $dri"
-  SIM=(env "LD_PRELOAD=$pre" "LSAN_OPTIONS=suppressions=$PWD/test/lsan-gl.supp" "$S")
-fi
+gl_cmd "$S"; SIM=("${GL[@]}")
 
 M=mazes/gen-5x5-s1.txt
 for c in 1 2 3; do

@@ -15,3 +15,23 @@ want_rc() { local want=$1 desc=$2; shift 2
 # The last JSON line of a file without the wall-clock fields, keys sorted:
 # two runs of the same inputs must print the same.
 strip() { python3 -c "import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1]); d.pop('wall_time_s'); d.pop('real_time_factor'); print(json.dumps(d, sort_keys=True))" "$1"; }
+# Start an Xvfb for this test: XPID (the caller's cleanup kills it) and
+# DISPLAY; without Xvfb, or if it does not start, a SKIP line and exit 77.
+start_xvfb() { local name=$1
+  command -v Xvfb >/dev/null || { echo "SKIP $name: Xvfb not installed"; exit 77; }
+  Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$T/dpy" 2>"$T/xvfb.err" &
+  XPID=$!
+  for _ in $(seq 50); do [ -s "$T/dpy" ] && break; sleep 0.1; done
+  [ -s "$T/dpy" ] || { echo "SKIP $name: Xvfb did not start: $(head -1 "$T/xvfb.err")"; exit 77; }
+  export DISPLAY=:$(head -1 "$T/dpy"); }
+# GL=(the command that runs the viewer binary $1): for a sanitized build,
+# Mesa's driver preloaded (it is unloaded at exit, leaving nameless frames;
+# preloaded they stay named for the GL-only leak suppressions).
+gl_cmd() { GL=("$1")
+  if ldd "$1" | grep -q libasan; then
+    local asan dri pre=
+    asan=$(ldd "$1" | awk '/libasan/ {print $3}')
+    dri=$(ls /usr/lib/*/dri/swrast_dri.so 2>/dev/null | head -1)
+    [ -n "$dri" ] && pre="$asan $dri"
+    GL=(env "LD_PRELOAD=$pre" "LSAN_OPTIONS=suppressions=$PWD/test/lsan-gl.supp" "$1")
+  fi; }
