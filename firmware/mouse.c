@@ -258,6 +258,25 @@ static int fresh(void)
     return 1;
 }
 
+/* A move reached the point where the walls of the cell ahead are read:
+ * within RC_SENSE_BEFORE_MM of the move's end with a reading taken since
+ * the move began, or RC_SENSE_LATEST_MM at the latest; once per move. */
+static int sense_point(float left_mm)
+{
+    return !sensed && left_mm <= RC_SENSE_BEFORE_MM && (fresh() || left_mm <= RC_SENSE_LATEST_MM);
+}
+
+/* Read the walls of the cell ahead into the map, committed to entering it
+ * (search and command mode). Returns the walls (EXPLORE_WALL_*). */
+static uint8_t sense_cell_ahead(void)
+{
+    sensed = 1;
+    uint8_t walls = read_walls();
+    explore_moved(&ex, st.heading); /* committed to the cell ahead */
+    explore_sense(&ex, walls);
+    return walls;
+}
+
 static void start_forward(float mm, float speed, float v_end, float accel)
 {
     motion_forward_accel(&mo, mm, speed, v_end, accel);
@@ -381,11 +400,8 @@ static void search_step(void)
         return;
     }
     float left = profile_remaining(&mo.fwd);
-    if (!sensed && left <= RC_SENSE_BEFORE_MM && (fresh() || left <= RC_SENSE_LATEST_MM)) {
-        sensed = 1;
-        uint8_t walls = read_walls();
-        explore_moved(&ex, st.heading); /* committed to the cell ahead */
-        explore_sense(&ex, walls);
+    if (sense_point(left)) {
+        uint8_t walls = sense_cell_ahead();
         log_line(HAL_STR("sensed cell %u walls %u"), ex.cell, walls);
         hal_belief(&ex.map, ex.cell, st.heading, st.mode);
         /* planning takes 30-200 ms on a 16 MHz AVR (no time in the
@@ -660,11 +676,8 @@ static void cmd_forward_step(void)
 {
     centring();
     float left = profile_remaining(&mo.fwd);
-    if (!sensed && left <= RC_SENSE_BEFORE_MM && (fresh() || left <= RC_SENSE_LATEST_MM)) {
-        sensed = 1;
-        uint8_t walls = read_walls();
-        explore_moved(&ex, st.heading); /* committed to the cell ahead */
-        explore_sense(&ex, walls);
+    if (sense_point(left)) {
+        uint8_t walls = sense_cell_ahead();
         st.cell = ex.cell;
         hal_belief(&ex.map, ex.cell, st.heading, st.mode);
         cmd_moved++;
