@@ -3,7 +3,7 @@
 # recorded by lcm-logger, inside a private network namespace this test
 # creates (multicast never leaves it). The live log must hold every message
 # of the run's own --lcm-log, and so must a replay of that log with
-# lcm-logplayer (what `make replay` runs). Skipped (exit 77) if no namespace can be made.
+# `make replay` (lcm-logplayer). Skipped (exit 77) if no namespace can be made.
 set -u
 S=$(realpath "${MMSIM:-build/mmsim}")
 L=$(realpath "${MMLOG:-build/mmlog}")
@@ -25,8 +25,8 @@ fi
 
 # Inside the namespace: only lo, with a multicast route. The run is paced at
 # real time (--realtime), 4.5 s of contest, so udpm does not drop bursts.
-unshare -n bash -s "$S" "$L" "$T" "$PWD/mazes/gen-5x5-s1.txt" <<'EOF'
-S=$1 L=$2 T=$3 M=$4
+unshare -n bash -s "$S" "$L" "$T" "$PWD/mazes/gen-5x5-s1.txt" "$PWD" <<'EOF'
+S=$1 L=$2 T=$3 M=$4 R=$5
 ip link set lo up && ip link set lo multicast on && ip route add 224.0.0.0/4 dev lo || exit 77
 URL='udpm://239.255.76.67:7667?ttl=0'
 lcm-logger --lcm-url="$URL&recv_buf_size=4194304" -f "$T/live.lcmlog" >"$T/logger.out" 2>&1 &
@@ -37,12 +37,12 @@ sleep 0.5 # subscribed
 sleep 0.5 # the last datagrams reach the logger
 kill -INT $logger; wait $logger
 [ $rc -eq 0 ] || exit $rc
-# the replay that `make replay` runs, at twice the speed, recorded again
+# `make replay` itself, at twice the speed, recorded again
 lcm-logger --lcm-url="$URL&recv_buf_size=4194304" -f "$T/replay.lcmlog" >"$T/logger2.out" 2>&1 &
 logger=$!
 for i in $(seq 50); do [ -e "$T/replay.lcmlog" ] && break; sleep 0.1; done
 sleep 0.5
-lcm-logplayer --speed=2 --lcm-url="$URL" "$T/file.lcmlog" >/dev/null || exit 5
+make -s --no-print-directory -C "$R" replay LOG="$T/file.lcmlog" SPEED=2 LCM_URL="$URL" >/dev/null || exit 5
 sleep 0.5
 kill -INT $logger; wait $logger
 exit 0
