@@ -18,7 +18,11 @@
 
 #define FRAME_S (1.0 / 60)   /* wall time between drawn frames */
 #define MAX_LAG_S 0.25       /* sim time behind the wall clock before the backlog is dropped */
-#define DRAG_RAD_PER_PX 0.008
+#define DRAG_RAD_PER_PX 0.008 /* orbit per pixel dragged, rad */
+#define DPITCH_MAX_RAD 1.6    /* orbit pitch limit either way, rad (just past vertical) */
+#define ZOOM_PER_NOTCH 0.9    /* camera distance factor per scroll notch (towards the target) */
+#define ZOOM_MIN 0.1          /* camera distance factor limits */
+#define ZOOM_MAX 10.0
 
 struct view {
     view_opts_t o;
@@ -180,16 +184,44 @@ int view_click(view_t *v, sim_t *s, double x, double y)
     }
     v->editing = -1;
     int b = hud_hit(v->o.width, v->o.height, x, y);
-    if (b >= 0) view_button(v, s, b);
+    if (b >= 0) {
+        view_button(v, s, b);
+    } else { /* on the scene: a drag from here orbits the current camera */
+        v->dragging = 1;
+        v->drag_x = x;
+        v->drag_y = y;
+    }
     return b;
 }
 
-void view_drag(view_t *v, double x)
+void view_drag(view_t *v, double x, double y)
 {
     if (v->rp && v->rp_drag) view_seek(v, hud_slider_time(v->o.width, v->o.height, x, replay_end_s(v->rp)));
+    if (!v->dragging) return;
+    scene_orbit_t *o = &v->orbit[v->camera];
+    o->dyaw_rad -= (x - v->drag_x) * DRAG_RAD_PER_PX;
+    o->dpitch_rad += (y - v->drag_y) * DRAG_RAD_PER_PX;
+    if (o->dpitch_rad > DPITCH_MAX_RAD) o->dpitch_rad = DPITCH_MAX_RAD;
+    if (o->dpitch_rad < -DPITCH_MAX_RAD) o->dpitch_rad = -DPITCH_MAX_RAD;
+    v->drag_x = x;
+    v->drag_y = y;
 }
 
-void view_release(view_t *v) { v->rp_drag = 0; }
+void view_release(view_t *v)
+{
+    v->rp_drag = 0;
+    v->dragging = 0;
+}
+
+void view_scroll(view_t *v, double dy)
+{
+    scene_orbit_t *o = &v->orbit[v->camera];
+    o->zoom *= pow(ZOOM_PER_NOTCH, dy);
+    if (o->zoom < ZOOM_MIN) o->zoom = ZOOM_MIN;
+    if (o->zoom > ZOOM_MAX) o->zoom = ZOOM_MAX;
+}
+
+const scene_orbit_t *view_orbit(const view_t *v) { return &v->orbit[v->camera]; }
 
 void view_char(view_t *v, unsigned codepoint)
 {
@@ -276,40 +308,21 @@ static void on_button(GLFWwindow *w, int button, int action, int mods)
     if (button != GLFW_MOUSE_BUTTON_LEFT) return;
     double x, y;
     glfwGetCursorPos(w, &x, &y);
-    if (action == GLFW_PRESS) {
-        if (view_click(v, v->sim, x, y) == -1) {
-            v->dragging = 1;
-            v->drag_x = x;
-            v->drag_y = y;
-        }
-    } else {
-        v->dragging = 0;
+    if (action == GLFW_PRESS)
+        view_click(v, v->sim, x, y);
+    else
         view_release(v);
-    }
 }
 
 static void on_cursor(GLFWwindow *w, double x, double y)
 {
-    view_t *v = glfwGetWindowUserPointer(w);
-    if (v->rp_drag) view_drag(v, x);
-    if (!v->dragging) return;
-    scene_orbit_t *o = &v->orbit[v->camera];
-    o->dyaw_rad -= (x - v->drag_x) * DRAG_RAD_PER_PX;
-    o->dpitch_rad += (y - v->drag_y) * DRAG_RAD_PER_PX;
-    if (o->dpitch_rad > 1.6) o->dpitch_rad = 1.6;
-    if (o->dpitch_rad < -1.6) o->dpitch_rad = -1.6;
-    v->drag_x = x;
-    v->drag_y = y;
+    view_drag(glfwGetWindowUserPointer(w), x, y);
 }
 
 static void on_scroll(GLFWwindow *w, double dx, double dy)
 {
     (void)dx;
-    view_t *v = glfwGetWindowUserPointer(w);
-    scene_orbit_t *o = &v->orbit[v->camera];
-    o->zoom *= pow(0.9, dy);
-    if (o->zoom < 0.1) o->zoom = 0.1;
-    if (o->zoom > 10) o->zoom = 10;
+    view_scroll(glfwGetWindowUserPointer(w), dy);
 }
 
 static void on_size(GLFWwindow *w, int width, int height)

@@ -32,6 +32,7 @@
 #include <stddef.h>
 
 #include "replay.h"
+#include "scene.h"
 #include "sim.h"
 
 #define VIEW_SPEED_MAX 64.0
@@ -84,8 +85,10 @@ double view_time(const view_t *v);
 void view_button(view_t *v, sim_t *s, int button);             /* HUD_BTN_* */
 int view_click(view_t *v, sim_t *s, double x, double y);       /* the button hit, VIEW_SLIDER, VIEW_FIELD + f, or -1 */
 void view_char(view_t *v, unsigned codepoint);                 /* a typed character (into the field being edited) */
-void view_drag(view_t *v, double x);                           /* mouse moved to x (slider drag) */
+void view_drag(view_t *v, double x, double y);                 /* mouse moved (slider drag, or orbit after a click on the scene) */
 void view_release(view_t *v);                                  /* mouse button up */
+void view_scroll(view_t *v, double dy);                        /* scroll notches: zoom the current camera */
+const scene_orbit_t *view_orbit(const view_t *v);              /* the current camera's orbit */
 void view_key(view_t *v, sim_t *s, int key);                   /* GLFW_KEY_* */
 /* An mms run: the floor shows the algorithm's cell colours (mms letters per
  * cell, 0 none) and texts (text_stride bytes per cell; the arrays must

@@ -168,12 +168,12 @@ static void test_slider_and_keys(void **state)
     assert_int_equal(view_click(v, &s, sl.x + sl.w * 0.25, sl.y + sl.h / 2.0), VIEW_SLIDER);
     assert_true(fabs(view_time(v) - 0.25 * end_s) < 1e-6);
     assert_true(fabs(sim_time_s(&s) - 0.25 * end_s) < s.cfg.step_s);
-    view_drag(v, sl.x + sl.w * 0.5);
+    view_drag(v, sl.x + sl.w * 0.5, sl.y + sl.h / 2.0);
     assert_true(fabs(view_time(v) - 0.5 * end_s) < 1e-6);
-    view_drag(v, sl.x - 100.0); /* past the left end: the start */
+    view_drag(v, sl.x - 100.0, sl.y + sl.h / 2.0); /* past the left end: the start */
     assert_true(view_time(v) == 0);
     view_release(v);
-    view_drag(v, sl.x + sl.w * 0.9); /* no longer dragging */
+    view_drag(v, sl.x + sl.w * 0.9, sl.y + sl.h / 2.0); /* no longer dragging */
     assert_true(view_time(v) == 0);
     /* keys: a second forward and back, one logged pose (10 ms) forward and back, the ends */
     view_key(v, &s, GLFW_KEY_RIGHT);

@@ -94,6 +94,59 @@ static void test_cameras(void **state)
     assert_int_equal(view_overlay(view), !on);
 }
 
+#define assert_near(a, b, eps) assert_true(fabs((double)(a) - (double)(b)) <= (eps))
+
+static double dist3(const double a[3], const double b[3])
+{
+    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+/* Drag on the scene orbits the current camera about its target, scroll
+ * zooms it, R resets it; the other cameras keep their own orbits. */
+static void test_orbit_zoom(void **state)
+{
+    (void)state;
+    double eye0[3], eye[3], tgt0[3], tgt[3], up[3];
+    view_key(view, &sim, GLFW_KEY_1);
+    scene_camera(&sim, 1, view_orbit(view), eye0, tgt0, up);
+    double d0 = dist3(eye0, tgt0);
+    /* a drag of 100 px to the right and 20 px down, starting on the scene */
+    assert_int_equal(view_click(view, &sim, opts.width / 2.0, opts.height / 2.0), -1);
+    view_drag(view, opts.width / 2.0 + 50, opts.height / 2.0 + 10);
+    view_drag(view, opts.width / 2.0 + 100, opts.height / 2.0 + 20);
+    view_release(view);
+    assert_near(view_orbit(view)->dyaw_rad, -0.8, 1e-9);
+    assert_near(view_orbit(view)->dpitch_rad, 0.16, 1e-9);
+    scene_camera(&sim, 1, view_orbit(view), eye, tgt, up);
+    assert_near(dist3(tgt, tgt0), 0, 1e-9);       /* orbit about the same target */
+    assert_near(dist3(eye, tgt), d0, 1e-6 * d0);   /* at the same distance */
+    assert_true(dist3(eye, eye0) > 0.1 * d0);              /* from elsewhere */
+    view_drag(view, 0, 0); /* released: moving the mouse does nothing */
+    assert_near(view_orbit(view)->dyaw_rad, -0.8, 1e-9);
+    /* three notches in: 0.9^3 of the distance; the limit holds */
+    view_scroll(view, 3);
+    scene_camera(&sim, 1, view_orbit(view), eye, tgt, up);
+    assert_near(dist3(eye, tgt), d0 * 0.729, 1e-6 * d0);
+    view_scroll(view, -1000);
+    assert_near(view_orbit(view)->zoom, 10.0, 1e-9);
+    /* a drag that starts on a button does not orbit */
+    click_button(HUD_BTN_OVERLAY);
+    view_drag(view, 0, 0);
+    view_release(view);
+    view_key(view, &sim, GLFW_KEY_O); /* the overlay back as it was */
+    assert_near(view_orbit(view)->dyaw_rad, -0.8, 1e-9);
+    /* camera 2 has its own orbit; R resets only the current one */
+    view_key(view, &sim, GLFW_KEY_2);
+    assert_near(view_orbit(view)->zoom, 1.0, 0);
+    assert_near(view_orbit(view)->dyaw_rad, 0, 0);
+    view_key(view, &sim, GLFW_KEY_1);
+    view_key(view, &sim, GLFW_KEY_R);
+    assert_near(view_orbit(view)->zoom, 1.0, 0);
+    assert_near(view_orbit(view)->dyaw_rad, 0, 0);
+    scene_camera(&sim, 1, view_orbit(view), eye, tgt, up);
+    assert_near(dist3(eye, eye0), 0, 1e-9);
+}
+
 static void test_speed_pause_step(void **state)
 {
     (void)state;
@@ -199,6 +252,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_toggle_post_button),
         cmocka_unit_test(test_cameras),
+        cmocka_unit_test(test_orbit_zoom),
         cmocka_unit_test(test_speed_pause_step),
         cmocka_unit_test(test_hud_timers),
         cmocka_unit_test(test_connect_fields),
