@@ -40,7 +40,7 @@ WRAP_test_firmware := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros -Wl,--wrap=hal_mo
 # Extra sources a test links (shared test vectors).
 EXTRA_test_wire := test/wire_vectors.c
 
-.PHONY: all deps test test-run sim sim-run bench bench-run fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay view
+.PHONY: all deps test test-run sim sim-run bench bench-run fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay view docs-img
 all: tools
 
 deps:
@@ -222,6 +222,17 @@ replay:
 view: $(B)/mmview
 	@[ -n "$(LOG)" ] || { echo "make view: LOG=FILE is required" >&2; exit 2; }
 	$(B)/mmview $(LOG) --speed $(SPEED)
+
+# make docs-img: the README's three pictures, with the README's commands
+# (after a firmware change they go stale). Without a display: under xvfb-run.
+X_RUN = $(if $(DISPLAY),,xvfb-run -a -s '-screen 0 1024x768x24 -nolisten tcp')
+docs-img: $(B)/mmsim $(B)/mmview
+	@tmp=$$(mktemp -d); trap 'rm -rf "$$tmp"' EXIT; \
+	$(X_RUN) $(B)/mmsim --maze mazes/gen-16x16-s1.txt --driver firmware --screenshot docs/img/viewer.png --at 40 --size 800x600 >/dev/null && \
+	$(B)/mmsim --maze mazes/gen-16x16-s1.txt --driver firmware --report "$$tmp/report.png" >/dev/null && mv "$$tmp/report.png" docs/img/report.png && \
+	$(B)/mmsim --maze mazes/gen-16x16-s1.txt --driver firmware --lcm-log "$$tmp/run.lcmlog" >/dev/null && \
+	$(X_RUN) $(B)/mmview "$$tmp/run.lcmlog" --screenshot docs/img/mmview.png --at 30 --camera 2 --size 800x600 && \
+	echo "docs/img: viewer.png report.png mmview.png"
 
 # ---- benchmarks ----
 bench: deps
