@@ -24,6 +24,7 @@
 static explore_t ex;
 static motion_t mo;
 static uint8_t configured;    /* fw_set_maze was called */
+static uint8_t speed_runs = MOUSE_SPEED_RUNS; /* fw_set_speed_runs */
 static mouse_status_t st;
 
 /* what the loop is waiting for */
@@ -56,6 +57,8 @@ void fw_set_maze(const struct maze_s *m)
     explore_init(&ex, m);
     configured = 1;
 }
+
+void fw_set_speed_runs(uint8_t runs) { speed_runs = runs ? runs : 1; }
 
 const mouse_status_t *mouse_status(void) { return &st; }
 
@@ -556,7 +559,7 @@ void fw_loop(void)
         break;
     case MOUSE_TO_RUN:
         if (motion_busy(&mo)) break;
-        if ((hal_micros() - start_us) / 1000000u >= MOUSE_RUN_DEADLINE_S || st.runs >= MOUSE_SPEED_RUNS) {
+        if ((hal_micros() - start_us) / 1000000u >= MOUSE_RUN_DEADLINE_S || st.runs >= speed_runs) {
             st.mode = MOUSE_DONE;
             motion_stop(&mo);
             HAL_LOG_STR("contest done");

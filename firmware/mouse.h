@@ -7,7 +7,7 @@
 
 #include "maze.h"
 
-#define MOUSE_SPEED_RUNS 3        /* speed runs after the search */
+#define MOUSE_SPEED_RUNS 3        /* speed runs after the search, unless fw_set_speed_runs */
 #define MOUSE_RUN_DEADLINE_S 540u /* no new run after 9 of the 10 minutes */
 
 enum {
@@ -30,6 +30,9 @@ typedef struct {
 /* Before fw_setup: the maze's size, start and goal (walls are ignored).
  * Without it the mouse expects a classic 16x16 with the centre goal. */
 void fw_set_maze(const struct maze_s *m);
+/* How many speed runs to make after the search (1..255; default
+ * MOUSE_SPEED_RUNS); kept across fw_setup. */
+void fw_set_speed_runs(uint8_t runs);
 const mouse_status_t *mouse_status(void);
 /* The mouse's map (for reports and tests). */
 const maze_t *mouse_map(void);

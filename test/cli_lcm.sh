@@ -79,7 +79,7 @@ want_rc 0 "same contest without telemetry" "$S" --maze $M --driver firmware --js
 cmp -s "$T/run.lcmlog" "$T/again.lcmlog" && ok "same log bytes (with a live memq:// URL too)" || bad "logs differ"
 
 # --lcm-rate: the high-rate channels follow it (scripted driver, 250 Hz = every 4 steps).
-want_rc 0 "scripted run at 250 Hz" "$S" --maze $M --runs 1 --json --lcm-rate 250 --lcm-log "$T/r.lcmlog"
+want_rc 0 "scripted run at 250 Hz" "$S" --maze $M --driver scripted --runs 1 --json --lcm-rate 250 --lcm-log "$T/r.lcmlog"
 python3 - "$T/out" <(${L} --json "$T/r.lcmlog") <<'EOF' && ok "counts at --lcm-rate 250" || bad "counts at --lcm-rate 250"
 import json, sys
 run = json.loads(open(sys.argv[1]).read().splitlines()[-1]); s = json.loads(open(sys.argv[2]).read())

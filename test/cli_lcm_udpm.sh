@@ -33,7 +33,7 @@ lcm-logger --lcm-url="$URL&recv_buf_size=4194304" -f "$T/live.lcmlog" >"$T/logge
 logger=$!
 for i in $(seq 50); do [ -e "$T/live.lcmlog" ] && break; sleep 0.1; done
 sleep 0.5 # subscribed
-"$S" --maze "$M" --runs 1 --json --realtime --lcm="$URL" --lcm-log "$T/file.lcmlog" >"$T/run.json"; rc=$?
+"$S" --maze "$M" --driver scripted --runs 1 --json --realtime --lcm="$URL" --lcm-log "$T/file.lcmlog" >"$T/run.json"; rc=$?
 sleep 0.5 # the last datagrams reach the logger
 kill -INT $logger; wait $logger
 [ $rc -eq 0 ] || exit $rc

@@ -7,15 +7,21 @@ T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
 . "$(dirname "$0")/lib.sh"
 py() { python3 -c "import json,sys; d=json.loads(open('$T/out').read().splitlines()[-1]); print($1)"; }
 
-want_rc 0 "run 8x8 json" "$S" --maze mazes/gen-8x8-s1.txt --runs 2 --json --seed 5
+want_rc 0 "run 8x8 json" "$S" --maze mazes/gen-8x8-s1.txt --driver scripted --runs 2 --json --seed 5
 [ "$(py "sorted(d.keys())")" = "['best_run_s', 'collisions', 'config_hash', 'driver', 'exit_reason', 'final_pose', 'first_run_s', 'laps', 'maze', 'reached_goal', 'real_time_factor', 'seed', 'sim_time_s', 'wall_time_s']" ] && ok "json keys" || bad "json keys: $(cat "$T/out")"
 [ "$(py "(d['reached_goal'], d['collisions'], len(d['laps']), d['exit_reason'], d['seed'])")" = "(True, 0, 2, 'done', 5)" ] && ok "two laps, no contact" || bad "laps: $(cat "$T/out")"
 [ "$(py "all(abs(l['run_s'] - (l['end_s'] - l['start_s'])) < 0.0015 for l in d['laps']) and d['best_run_s'] == min(l['run_s'] for l in d['laps'])")" = True ] && ok "lap arithmetic" || bad "lap arithmetic"
-cp "$T/out" "$T/a"; "$S" --maze mazes/gen-8x8-s1.txt --runs 2 --json --seed 5 >"$T/b"
+cp "$T/out" "$T/a"; "$S" --maze mazes/gen-8x8-s1.txt --driver scripted --runs 2 --json --seed 5 >"$T/b"
 [ "$(strip "$T/a")" = "$(strip "$T/b")" ] && ok "deterministic" || bad "deterministic"
 
-want_rc 0 "text lap table" "$S" --maze mazes/gen-6x6-s1.txt --runs 1
+want_rc 0 "text lap table" "$S" --maze mazes/gen-6x6-s1.txt --driver scripted --runs 1
 grep -q '^Lap   Start time  End time    Run time' "$T/out" && grep -q '^1     0:00.000' "$T/out" && ok "lap table" || bad "lap table: $(cat "$T/out")"
+
+# the default driver is the mouse's firmware; --runs N: N speed runs after the search
+want_rc 0 "default driver, one speed run" "$S" --maze mazes/gen-8x8-s1.txt --runs 1 --json
+[ "$(py "(d['driver'], len(d['laps']), d['final_path_optimal'], d['exit_reason'])")" = "('firmware', 2, True, 'done')" ] && ok "firmware by default, --runs 1: search + 1 speed run" || bad "default driver: $(cat "$T/out")"
+want_rc 0 "firmware, five speed runs" "$S" --maze mazes/gen-5x5-s1.txt --runs 5 --json
+[ "$(py "len(d['laps'])")" = 6 ] && ok "--runs 5: search + 5 speed runs" || bad "--runs 5: $(cat "$T/out")"
 
 # config: print -> load gives the same hash; errors with FILE:LINE
 "$S" --print-config >"$T/cfg.ini"
@@ -40,7 +46,7 @@ want_rc 2 "bad profile" "$S" --maze mazes/gen-5x5-s1.txt --profile ice
 want_rc 2 "bad centre post" "$S" --maze mazes/gen-5x5-s1.txt --centre-post maybe
 want_rc 2 "bad time limit" "$S" --maze mazes/gen-5x5-s1.txt --time-limit 0
 printf 'o---o---o---o\n| S |   |   |\no---o---o---o\n' >"$T/closed.txt"
-want_rc 1 "unreachable goal" "$S" --maze "$T/closed.txt" --json
+want_rc 1 "unreachable goal" "$S" --maze "$T/closed.txt" --driver scripted --json
 [ "$(py "(d['reached_goal'], d['exit_reason'])")" = "(False, 'unreachable')" ] && ok "unreachable reported" || bad "unreachable reported"
 want_rc 1 "time limit" "$S" --maze mazes/gen-16x16-s1.txt --time-limit 5 --json
 [ "$(py "d['exit_reason']")" = "time_limit" ] && ok "time_limit reason" || bad "time_limit reason: $(cat "$T/out")"

@@ -1,7 +1,9 @@
 /* mmsim - the headless simulator: one contest on one maze, or a batch.
  *
- * Until the firmware's motion layer lands, the robot is driven by the
- * built-in scripted driver (sim/driver.h) on its true pose.
+ * The robot is driven by the mouse's own firmware in-process (hal/sim) by
+ * default; `--driver scripted` drives it with a stand-in on the true pose
+ * and maze (sim/driver.h), and --serial/--pty/--avr and --mms hand the
+ * driving to an MCU or an mms algorithm.
  * Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure;
  * a batch returns the worst. */
 #include <errno.h>
@@ -153,6 +155,7 @@ static int run_one(const opts_t *o, const char *maze_path, json_t **out, int pri
         hal_sim_attach(&sim);
         hal_sim_set_log(o->verbose ? stderr : NULL);
         fw_set_maze(&maze);
+        fw_set_speed_runs((uint8_t)o->runs);
         fw_setup();
         if (o->mms.command) {
             mouse_cmd_mode();
@@ -512,6 +515,7 @@ static void usage(FILE *out)
     fputs("usage: mmsim --maze FILE [--config FILE] [--seed N] [--time-limit S] [--runs N]\n"
           "             [--centre-post on|off] [--profile default|paper] [--driver firmware|scripted]\n"
           "             [--json] [--realtime] [--verbose] [--report FILE.png]\n"
+          "             (--runs: speed runs after the search, default 3; scripted: runs to the goal)\n"
           "             [--lcm[=URL]] [--lcm-log FILE] [--lcm-rate HZ]   (LCM telemetry, sim/telem.h)\n"
           "             [--gui [--speed 1..64]] [--screenshot FILE.png [--at SECONDS]]\n"
           "             [--camera 1|2|3] [--size WxH]   (viewer)\n"
@@ -560,8 +564,8 @@ int main(int argc, char **argv)
         { "mms-timeout-ms", required_argument, 0, 3003 }, { "mms-reset-at", required_argument, 0, 3004 },
         { 0, 0, 0, 0 },
     };
-    opts_t o = { /* scripted by default: it honours --runs */
-        .seed = 1, .runs = 3, .centre_post = -1, .scripted = 1, .jobs = 1,
+    opts_t o = { /* the mouse's own firmware by default, 3 speed runs after the search */
+        .seed = 1, .runs = 3, .centre_post = -1, .scripted = 0, .jobs = 1,
         .view = { .width = 1024, .height = 720, .speed = 1, .camera = 1, .port = "", .baud = 115200 },
         .link = { .protocol = LINK_FRAMED },
         .mms = { .timeout_ms = 5000, .reset_at_s = -1 },
