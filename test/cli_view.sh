@@ -34,6 +34,14 @@ for c in 2 3; do
   [ "${n:-0}" -gt 200 ] && ok "robot at the centre of camera $c ($n px)" || bad "robot pixels in camera $c: $n"
 done
 
+# HUD timers (upper left) turn red (0xFF3030) after the contest limit: a 1 s
+# limit ends the run and the screenshot shows that last frame
+printf '[sim]\ntime_limit_s = 1\n' >"$T/limit.ini"
+"${SIM[@]}" --maze $M --driver scripted --config "$T/limit.ini" --screenshot "$T/over.png" --at 2 --size 320x240 >"$T/out" 2>"$T/err" \
+  || { bad "over-time screenshot"; head -5 "$T/err"; }
+a=$($P "$T/over.png" near:ff3030:40:0:0:0.5:0.15); b=$($P "$T/cam1.png" near:ff3030:40:0:0:0.5:0.15)
+[ "${a:-0}" -gt 100 ] && [ "${b:-1}" -eq 0 ] && ok "timers red after the limit ($a px), not before" || bad "red timer pixels: over $a, in time $b"
+
 # the centre post shows or not (6x6: the post at the maze's centre)
 for p in on off; do
   "${SIM[@]}" --maze mazes/gen-6x6-s1.txt --driver scripted --centre-post $p --screenshot "$T/post$p.png" --camera 1 --size 320x240 >"$T/out" 2>"$T/err" \
