@@ -55,6 +55,12 @@ want_rc 1 "time limit" "$S" --maze mazes/gen-16x16-s1.txt --time-limit 5 --json
 mkdir "$T/batch"; cp mazes/gen-5x5-s1.txt "$T/batch/a.txt"; cp "$T/closed.txt" "$T/batch/b.txt"; cp mazes/gen-6x6-s1.txt "$T/batch/c.txt"
 want_rc 1 "batch worst code" "$S" --batch "$T/batch" --jobs 2 --runs 1
 [ "$(python3 -c "import json; print([json.loads(l)['maze'].split('/')[-1] for l in open('$T/out')])")" = "['a.txt', 'b.txt', 'c.txt']" ] && ok "batch order" || bad "batch order: $(cat "$T/out")"
+# a bad maze in a batch still has its line (no_result, its exit code), in order
+mkdir "$T/b9"; for i in 1 2 3 4 6 7 8 9; do cp mazes/gen-5x5-s1.txt "$T/b9/m$i.txt"; done
+printf 'o---o\n| x |\n' >"$T/b9/m5.txt"
+want_rc 2 "batch with a bad maze" "$S" --batch "$T/b9" --jobs 2 --runs 1
+[ "$(python3 -c "import json; print([(json.loads(l)['maze'][-6:], json.loads(l)['exit_reason'], json.loads(l).get('exit_code')) for l in open('$T/out')])")" = "[('m1.txt', 'done', None), ('m2.txt', 'done', None), ('m3.txt', 'done', None), ('m4.txt', 'done', None), ('m5.txt', 'no_result', 2), ('m6.txt', 'done', None), ('m7.txt', 'done', None), ('m8.txt', 'done', None), ('m9.txt', 'done', None)]" ] && ok "batch: one line per maze in order, the bad one too" || bad "batch with a bad maze: $(cat "$T/out")"
+grep -q "m5.txt:2:3: stray character 'x'" "$T/err" && ok "batch: the bad maze's error line" || bad "batch error line: $(cat "$T/err")"
 # the firmware in the loop: search, prove, speed runs on small mazes
 for m in gen-5x5-s1 gen-8x8-s1 gen-16x16-s1 gen-16x16-s2; do
   want_rc 0 "firmware contest $m" "$S" --maze mazes/$m.txt --driver firmware --json

@@ -10,6 +10,7 @@
 #include <getopt.h>
 #include <jansson.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -442,8 +443,50 @@ static int print_json_line(json_t *j)
     return 0;
 }
 
+/* All a child wrote to its pipe, until end of file (NUL-terminated). */
+static char *read_all(int fd)
+{
+    size_t len = 0, cap = 4096;
+    char *buf = malloc(cap);
+    for (;;) {
+        if (!buf) return NULL;
+        if (len + 1 >= cap) {
+            char *b = realloc(buf, cap *= 2);
+            if (!b) { free(buf); return NULL; }
+            buf = b;
+        }
+        ssize_t k = read(fd, buf + len, cap - 1 - len);
+        if (k < 0 && errno == EINTR) continue;
+        if (k <= 0) break;
+        len += (size_t)k;
+    }
+    buf[len] = '\0';
+    return buf;
+}
+
+/* The line of a maze whose child printed no JSON (it died, or the maze
+ * file was bad: its error line is on stderr): one line per maze all the same. */
+static char *failed_line(const char *maze, int status)
+{
+    json_t *j = json_object();
+    json_object_set_new(j, "maze", json_string(maze));
+    json_object_set_new(j, "exit_reason", json_string("no_result"));
+    if (WIFSIGNALED(status)) json_object_set_new(j, "signal", json_integer(WTERMSIG(status)));
+    else json_object_set_new(j, "exit_code", json_integer(WIFEXITED(status) ? WEXITSTATUS(status) : -1));
+    char *s = json_dumps(j, JSON_COMPACT | JSON_ENSURE_ASCII);
+    json_decref(j);
+    if (!s) return NULL;
+    char *line = malloc(strlen(s) + 2);
+    if (line) sprintf(line, "%s\n", s);
+    free(s);
+    return line;
+}
+
 /* Every *.txt in dir, one child process per maze, `jobs` at a time; one JSON
- * line per maze on stdout in input order; returns the worst exit code. */
+ * line per maze on stdout in input order; returns the worst exit code.
+ * A reaped child is matched among the running jobs only: process ids are
+ * reused (pid_max 32768 here; a 481-maze batch beside a busy machine wraps
+ * it, and matching an earlier, finished job lost two lines). */
 static int run_batch(const opts_t *o, const char *dir)
 {
     char **names;
@@ -452,19 +495,36 @@ static int run_batch(const opts_t *o, const char *dir)
     size_t n = (size_t)nn;
     int worst = EXIT_OK;
     size_t next = 0, done = 0, printed = 0;
-    pid_t *pid = calloc(n, sizeof *pid);
-    int *fd = calloc(n, sizeof *fd), *code = calloc(n, sizeof *code);
+    pid_t *pid = calloc(n, sizeof *pid);     /* 0: not started, or reaped */
+    int *fd = calloc(n, sizeof *fd);
     char **text = calloc(n, sizeof *text);
     int running = 0;
+    if (!pid || !fd || !text) {
+        fprintf(stderr, "mmsim: out of memory\n");
+        worst = EXIT_EXTERNAL;
+        goto out;
+    }
     while (done < n) {
         while (running < o->jobs && next < n) {
             int p[2];
-            if (pipe(p) != 0) return EXIT_EXTERNAL;
+            if (pipe(p) != 0) {
+                fprintf(stderr, "mmsim: pipe: %s\n", strerror(errno));
+                worst = EXIT_EXTERNAL;
+                goto out;
+            }
             fflush(stdout);
             pid_t c = fork();
-            if (c < 0) return EXIT_EXTERNAL;
+            if (c < 0) {
+                fprintf(stderr, "mmsim: fork: %s\n", strerror(errno));
+                close(p[0]);
+                close(p[1]);
+                worst = EXIT_EXTERNAL;
+                goto out;
+            }
             if (c == 0) {
                 close(p[0]);
+                for (size_t i = 0; i < next; i++) /* the other jobs' pipes are not this child's */
+                    if (pid[i]) close(fd[i]);
                 if (dup2(p[1], STDOUT_FILENO) < 0) _exit(EXIT_EXTERNAL);
                 json_t *j;
                 int rc = run_one(o, names[next], &j, 0);
@@ -478,35 +538,52 @@ static int run_batch(const opts_t *o, const char *dir)
             next++;
             running++;
         }
-        int status;
+        /* any job that ended; matched among the running ones only. Its
+         * output (one JSON line, far below the pipe's 64 KB, so a child
+         * never blocks on it) is read to the end after it is reaped. */
+        int status = 0;
         pid_t c = wait(&status);
-        if (c < 0) break;
-        for (size_t i = 0; i < next; i++) {
-            if (pid[i] != c) continue;
-            char buf[8192];
-            ssize_t k = read(fd[i], buf, sizeof buf - 1);
-            close(fd[i]);
-            buf[k > 0 ? k : 0] = '\0';
-            text[i] = strdup(buf);
-            code[i] = WIFEXITED(status) ? WEXITSTATUS(status) : EXIT_EXTERNAL;
-            if (code[i] > worst) worst = code[i];
-            done++;
-            running--;
-            fprintf(stderr, "\r[%zu/%zu] %-60.60s", done, n, names[i]);
+        if (c < 0) {
+            if (errno == EINTR) continue;
+            fprintf(stderr, "mmsim: wait: %s\n", strerror(errno));
+            worst = EXIT_EXTERNAL;
+            goto out;
         }
+        size_t i = 0;
+        while (i < next && pid[i] != c) i++;
+        if (i == next) continue; /* not one of the running jobs */
+        char *out = read_all(fd[i]);
+        close(fd[i]);
+        pid[i] = 0;
+        running--;
+        done++;
+        int code = WIFEXITED(status) ? WEXITSTATUS(status) : EXIT_EXTERNAL;
+        if (code > worst) worst = code;
+        if (!out || !strchr(out, '{')) { /* no JSON from the child */
+            free(out);
+            out = failed_line(names[i], status);
+        }
+        text[i] = out ? out : strdup("");
+        fprintf(stderr, "\r[%zu/%zu] %-60.60s", done, n, names[i]);
         while (printed < n && text[printed]) { /* results in input order */
             fputs(text[printed], stdout);
             printed++;
         }
     }
     fputc('\n', stderr);
+out:
     fflush(stdout);
-    for (size_t i = 0; i < n; i++) free(text[i]);
+    for (size_t i = 0; pid && fd && i < next; i++)
+        if (pid[i]) { /* only after a failure above: end the jobs still running */
+            kill(pid[i], SIGKILL);
+            close(fd[i]);
+            waitpid(pid[i], NULL, 0);
+        }
+    for (size_t i = 0; text && i < n; i++) free(text[i]);
     mazedir_free(names, nn);
     free(text);
     free(pid);
     free(fd);
-    free(code);
     return worst;
 }
 
