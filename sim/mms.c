@@ -120,7 +120,7 @@ void mms_init(mms_t *m, const mms_opts_t *o, const maze_t *truth)
     m->o = *o;
     m->truth = truth;
     m->to_child = m->from_child = -1;
-    m->exit_status = -1;
+    m->exit_code = -1;
     m->reason = "running";
     mms_stats_init(&m->stats);
 }
@@ -447,7 +447,7 @@ int mms_start(mms_t *m, const mms_opts_t *o, const maze_t *truth, char *err, siz
     sigprocmask(SIG_SETMASK, &prev, NULL);
     close(in[0]);
     close(out[1]);
-    m->pid = pid;
+    m->pid = m->pgid = pid;
     m->to_child = in[1];
     m->from_child = out[0];
     fcntl(m->to_child, F_SETFL, fcntl(m->to_child, F_GETFL) | O_NONBLOCK);
@@ -470,38 +470,51 @@ static int end_run(mms_t *m, const char *reason, const char *fmt, ...)
     return MMS_END;
 }
 
-/* Reap the child if it has exited, waiting up to wait_s. */
-static int reap(mms_t *m, double wait_s)
+/* Has the shell exited? Waits up to wait_s. Its status goes into
+ * exit_code / exit_signal, but it stays a zombie (WNOWAIT): its pid, and
+ * so its process group's id, cannot be reused before mms_stop has killed
+ * the group and reaped it. */
+static int shell_exited(mms_t *m, double wait_s)
 {
     double t0 = now_s();
-    for (;;) {
-        int status;
-        pid_t r = waitpid(m->pid, &status, WNOHANG);
-        if (r == m->pid || (r < 0 && errno == ECHILD)) {
-            m->exit_status = r == m->pid ? status : -1;
+    while (m->pid && !m->exited) {
+        siginfo_t info;
+        memset(&info, 0, sizeof info);
+        int r = waitid(P_PID, (id_t)m->pid, &info, WEXITED | WNOHANG | WNOWAIT);
+        if (r < 0 && errno == ECHILD) { /* reaped elsewhere: nothing to learn */
             m->pid = 0;
-            return 1;
+            break;
+        }
+        if (r == 0 && info.si_pid == m->pid) {
+            if (info.si_code == CLD_EXITED) m->exit_code = info.si_status;
+            else m->exit_signal = info.si_status;
+            m->exited = 1;
+            break;
         }
         if (now_s() - t0 >= wait_s) return 0;
         struct timespec ts = { 0, 2000000 };
         nanosleep(&ts, NULL);
     }
+    return 1;
 }
 
-/* The child closed its output: it has ended (or is about to). */
+/* "exited with status N" or "was killed by signal N" */
+static const char *how_it_ended(const mms_t *m, char *buf, size_t len)
+{
+    if (m->exit_signal) snprintf(buf, len, "was killed by signal %d", m->exit_signal);
+    else snprintf(buf, len, "exited with status %d", m->exit_code);
+    return buf;
+}
+
+/* The child closed its output: it has ended (or is about to). Whatever
+ * is left of its group is killed by mms_stop. */
 static int child_gone(mms_t *m)
 {
-    if (m->pid && !reap(m, m->o.timeout_ms / 1000.0)) {
-        kill(-m->pid, SIGKILL);
-        reap(m, 5.0);
+    char how[64];
+    if (!shell_exited(m, m->o.timeout_ms / 1000.0))
         return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' closed its output but did not exit", m->o.command);
-    }
-    int st = m->exit_status;
-    if (st >= 0 && WIFEXITED(st) && WEXITSTATUS(st) == 0) return end_run(m, "mms_exited", NULL);
-    if (st >= 0 && WIFSIGNALED(st))
-        return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' was killed by signal %d", m->o.command, WTERMSIG(st));
-    return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' exited with status %d", m->o.command,
-                   st >= 0 && WIFEXITED(st) ? WEXITSTATUS(st) : -1);
+    if (m->exit_code == 0) return end_run(m, "mms_exited", NULL);
+    return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' %s", m->o.command, how_it_ended(m, how, sizeof how));
 }
 
 static void trace(const mms_t *m, const struct sim_s *s, const char *dir, const char *text)
@@ -549,9 +562,16 @@ static int read_line(mms_t *m, char *line)
             return end_run(m, "mms_garbage", "mmsim: mms: the algorithm '%s' printed a line longer than %d bytes",
                            m->o.command, MMS_LINE_MAX);
         double left_ms = m->o.timeout_ms - (now_s() - t0) * 1000.0;
-        if (left_ms <= 0)
+        if (left_ms <= 0) {
+            char how[64];
+            if (shell_exited(m, 0)) /* e.g. 'algo & exit 0': a process it started holds the pipe */
+                return end_run(m, "mms_timeout",
+                               "mmsim: mms: the algorithm '%s' %s, but a process it started keeps its output open "
+                               "and sent no command for %d ms", m->o.command, how_it_ended(m, how, sizeof how),
+                               m->o.timeout_ms);
             return end_run(m, "mms_timeout", "mmsim: mms: the algorithm '%s' sent no command for %d ms",
                            m->o.command, m->o.timeout_ms);
+        }
         struct pollfd p = { m->from_child, POLLIN, 0 };
         int r = poll(&p, 1, (int)ceil(left_ms));
         if (r < 0 && errno != EINTR)
@@ -645,17 +665,22 @@ void mms_stop(mms_t *m)
     if (m->to_child >= 0) close(m->to_child);
     if (m->from_child >= 0) close(m->from_child);
     m->to_child = m->from_child = -1;
+    shell_exited(m, 0); /* its own status if it has ended, before the kill */
+    /* the whole group, always: a background process of a shell that has
+     * exited is still in it. The shell is not reaped yet, so the group's id
+     * is still ours. */
+    if (m->pgid > 0) kill(-m->pgid, SIGKILL);
+    m->pgid = 0;
     if (child_group) {
         guard_signals(0);
         child_group = 0;
     }
-    if (m->pid) {
-        if (!reap(m, 0)) {
-            kill(-m->pid, SIGKILL);
-            kill(m->pid, SIGKILL);
-            reap(m, 10.0);
-        }
+    if (m->pid && !shell_exited(m, 10.0)) kill(m->pid, SIGKILL); /* left its group: the shell itself */
+    if (m->pid && shell_exited(m, 10.0)) {
+        int status;
+        waitpid(m->pid, &status, 0);
     }
+    m->pid = 0;
 }
 
 int mms_failed(const mms_t *m)
@@ -687,8 +712,7 @@ void *mms_json(const mms_t *m)
     }
     json_object_set_new(j, "colors", colors);
     json_object_set_new(j, "texts", texts);
-    int es = m->exit_status;
-    json_object_set_new(j, "exit_status", es >= 0 && WIFEXITED(es) ? json_integer(WEXITSTATUS(es)) : json_null());
-    json_object_set_new(j, "exit_signal", es >= 0 && WIFSIGNALED(es) ? json_integer(WTERMSIG(es)) : json_null());
+    json_object_set_new(j, "exit_status", m->exit_code >= 0 ? json_integer(m->exit_code) : json_null());
+    json_object_set_new(j, "exit_signal", m->exit_signal ? json_integer(m->exit_signal) : json_null());
     return j;
 }

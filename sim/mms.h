@@ -73,14 +73,18 @@ typedef struct {
 typedef struct mms_s {
     mms_opts_t o;
     const maze_t *truth;
-    pid_t pid;             /* 0 when reaped */
+    pid_t pid;             /* the shell; 0 when reaped */
+    pid_t pgid;            /* its process group (= pid), killed whole by mms_stop; 0 after */
+    int exited;            /* the shell has exited: status below, not reaped yet (the
+                            * zombie keeps the group id ours until the group is killed) */
     int to_child, from_child;
     char buf[MMS_LINE_MAX + 1];
     size_t len;
     int pending;           /* a move is under way (MMS_MOVE_*) */
     double move_start_s;   /* sim time the move under way began */
     int was_reset;
-    int exit_status;       /* waitpid status when reaped, -1 before */
+    int exit_code;         /* the shell's exit status, -1 if none (yet, or killed) */
+    int exit_signal;       /* the signal that killed it, 0 if none */
     const char *reason;    /* exit_reason for the JSON */
     char message[300];     /* one line for stderr, "" = none */
     long commands, invalid, since_move, moves, crashes, resets;
@@ -104,7 +108,9 @@ int mms_start(mms_t *m, const mms_opts_t *o, const maze_t *truth, char *err, siz
  * once, fw_tick, fw_loop, call again) or the run is over (MMS_END: m->reason,
  * m->message). s is the running simulation (struct sim_s). */
 int mms_service(mms_t *m, struct sim_s *s);
-/* End the child (SIGKILL to its group if it is still running) and reap it. */
+/* End the algorithm: SIGKILL to its whole process group (whatever is left
+ * of it, also background processes of a shell that has exited), then reap
+ * the shell. */
 void mms_stop(mms_t *m);
 /* Execute one command line; the answer (without newline) into resp, "" for
  * none. Returns 1 if a move was started (the answer comes later). Exposed

@@ -82,6 +82,14 @@ fault 3 mms_flood "floods stdout with invalid lines" "yes"
 fault 3 mms_timeout "floods queries without reading answers" "yes mazeWidth"
 fault 3 mms_garbage "prints an endless line" "cat /dev/zero"
 fault 3 mms_failed "crashes mid-run" "$A/wallfollow.py & sleep 0.2; kill -9 \$!; exit 9"
+# the shell exits but leaves a process behind (its group is killed all the same)
+left() { sleep 0.2; if pgrep -f "sleep $1" >/dev/null; then bad "$2: a process left running"; else ok "$2: nothing left running"; fi; }
+fault 1 mms_exited "exits, a background process without its pipes" "sleep 31.4103 >/dev/null </dev/null & exit 0"
+left 31.4103 "background process without pipes"
+fault 3 mms_timeout "exits, a background process holds its output" "sleep 31.4101 & exit 0"
+grep -q "^mmsim: mms: the algorithm 'sleep 31.4101 & exit 0' exited with status 0, but a process it started keeps its output open and sent no command for 300 ms$" "$T/err" \
+  && ok "background process holds the output: message" || bad "background process holds the output: $(cat "$T/err")"
+left 31.4101 "background process holding the output"
 # mmsim itself killed (SIGTERM): the algorithm's process group goes too
 "$S" --maze mazes/gen-5x5-s1.txt --mms "sleep 31.4157" --mms-timeout-ms 60000 >"$T/out" 2>"$T/err" & mp=$!
 for _ in $(seq 50); do pgrep -f "sleep 31.4157" >/dev/null && break; sleep 0.1; done
