@@ -33,12 +33,13 @@ struct sim_s;
 #define MMS_TEXT_MAX 10           /* characters of cell text (mms) */
 #define MMS_MOVE_MAX_S 30.0       /* sim seconds a move may take: longer = stuck (a 32-cell straight takes ~12 s) */
 
-/* mms's Stats tab (Stats.cpp): distances in cells, effective distance
- * counts every cell of a moveForward N after the second as 0.5. */
+/* mms's Stats tab (Stats.cpp, README): distances in cells (kept in half
+ * cells: a half step counts half a cell), effective distance counts every
+ * cell of a move after the second as 0.5. */
 typedef struct {
-    int total_distance, total_turns;
-    int cur_distance, cur_turns;
-    int best_distance, best_turns;
+    int total_halves, total_turns;
+    int cur_halves, cur_turns;
+    int best_halves, best_turns;
     float total_eff, cur_eff, best_eff;
     int has_best;   /* a start-to-goal run was completed */
     int in_run;     /* a run started (a move from the start cell) */
@@ -48,7 +49,8 @@ typedef struct {
 
 void mms_stats_init(mms_stats_t *s);
 void mms_stats_start_run(mms_stats_t *s);
-void mms_stats_distance(mms_stats_t *s, int cells);
+/* A move of `halves` half cells (moveForward N: 2N). */
+void mms_stats_distance(mms_stats_t *s, int halves);
 void mms_stats_turn(mms_stats_t *s);
 void mms_stats_finish_run(mms_stats_t *s);
 void mms_stats_end_unfinished(mms_stats_t *s);
@@ -57,7 +59,8 @@ void mms_stats_reset_penalty(mms_stats_t *s);
  * total effective distance); 2000 if the goal was never reached. */
 float mms_stats_score(const mms_stats_t *s);
 /* getStat's answer for the stat named `name` into out ("-1" if it has no
- * value yet); -1 if the name is not a stat. */
+ * value yet; distances in whole cells, a half rounded down: mms's are
+ * integers); -1 if the name is not a stat. */
 int mms_stats_get(const mms_stats_t *s, const char *name, char *out, size_t len);
 
 enum { MMS_STEP = 0, MMS_END = 1 };
