@@ -251,6 +251,17 @@ static void place_at_start(const mms_t *m, struct sim_s *s)
                 M_PI / 2 - t->start_heading * (M_PI / 2), NULL);
 }
 
+/* Bytes of the UTF-8 character at t (mms reads its input as UTF-8 and
+ * puts one '?' per character it cannot draw); 1 for a byte that starts no
+ * valid sequence. */
+static size_t utf8_length(const unsigned char *t)
+{
+    size_t n = *t >= 0xF0 && *t <= 0xF4 ? 4 : *t >= 0xE0 && *t <= 0xEF ? 3 : *t >= 0xC2 && *t <= 0xDF ? 2 : 1;
+    for (size_t i = 1; i < n; i++)
+        if ((t[i] & 0xC0) != 0x80) return 1;
+    return n;
+}
+
 /* Split on spaces (empty parts skipped) into at most n tokens; returns the
  * count, n + 1 if there were more. */
 static int split(char *line, char **tok, int n)
@@ -303,9 +314,12 @@ int mms_execute(mms_t *m, struct sim_s *s, const char *line_in, char *resp, size
         int ok = 1, x = to_int(p, &ok), y = to_int(q, &ok);
         if (!ok || !in_maze(m, x, y)) goto invalid;
         char *dst = m->text[maze_cell(m->truth, (uint8_t)x, (uint8_t)y)];
-        size_t i = 0;
-        for (; text[i] && i < MMS_TEXT_MAX; i++) dst[i] = text[i] >= 32 && text[i] < 127 ? text[i] : '?';
-        dst[i] = '\0';
+        size_t k = 0;
+        for (const unsigned char *t = (const unsigned char *)text; *t && k < MMS_TEXT_MAX; k++) {
+            dst[k] = *t >= 32 && *t < 127 ? (char)*t : '?';
+            t += utf8_length(t);
+        }
+        dst[k] = '\0';
         return 0;
     }
     int n = split(line, tok, 4);

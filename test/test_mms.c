@@ -123,6 +123,11 @@ static void test_drawing(void **state)
     assert_string_equal(mm.text[maze_cell(&truth, 2, 1)], "0123456789");
     run("setText 0 0 a b\x01");
     assert_string_equal(mm.text[0], "a b?");
+    /* UTF-8: one '?' per character (2, 3 and 4 bytes), a stray byte alone; 10 characters */
+    run("setText 1 0 \xc3\xa9t\xc3\xa9 \xe2\x82\xac\xf0\x9f\x90\xadx\x80y\xc3z");
+    assert_string_equal(mm.text[maze_cell(&truth, 1, 0)], "?t? ??x?y?");
+    run("setText 1 0 \xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9");
+    assert_string_equal(mm.text[maze_cell(&truth, 1, 0)], "??????????");
     run("clearAllText");
     assert_string_equal(mm.text[0], "");
     run("setWall 1 1 e");
