@@ -1,7 +1,8 @@
 /* mms.h - run an mms maze algorithm (any program speaking the text API of
- * mackorone/mms, README at commit 3054142 = the v1.2 API: moveForward [N],
- * moveForwardHalf, turn*45, getStat; wallBack and the half-step argument of
- * the wall queries as mms's Window.cpp at 9ec759a) on the simulated robot.
+ * mackorone/mms release v1.2.0, README at commit 3054142: moveForward [N],
+ * moveForwardHalf, turn*45, getStat; wallBack, the half-step argument of
+ * the wall queries and the cell boundaries as mms's Window.cpp at 9ec759a)
+ * on the simulated robot.
  *
  * The algorithm runs as a child process (/bin/sh -c COMMAND, in its own
  * process group) with its stdin and stdout on pipes; its stderr is ours.
