@@ -78,6 +78,13 @@ for mv in "moveForward 2" "moveForwardHalf 3"; do
     && ok "wall sensed mid-move: $mv: crash at the centre of the last free cell" || bad "wall sensed mid-move: $mv: $(cat "$T/err" "$T/out")"
 done
 
+# turned round on a boundary: back into the cell it came from (queries facing back, a refused
+# move through the start's south wall, mms's run rules: back at the start ends the run)
+want_rc 1 "turned round on a boundary" "$S" --maze mazes/gen-5x5-s1.txt --json \
+  --mms "$A/script.py 'moveForwardHalf=ack' 'turnLeft=ack' 'turnLeft=ack' 'wallFront=false' 'wallFront 2=true' 'wallLeft=true' 'wallFrontLeft=true' 'wallFrontRight=true' 'moveForwardHalf 3=crash' 'moveForwardHalf=ack' 'wallFront=true' 'turnLeft=ack' 'turnLeft=ack' 'moveForwardHalf 3=crash' 'moveForwardHalf 2=ack' 'wallFront=true' 'wallLeft=true' 'wallRight=false' 'getStat total-distance=2' 'getStat total-effective-distance=2' 'getStat current-run-distance=1'"
+grep -q '^script: 21 checks ok$' "$T/err" && [ "$(py "(d['collisions'], abs(d['final_pose']['y_m'] - 0.27) < 0.01)")" = "(0, True)" ] \
+  && ok "turned round on a boundary: answers, stats, at (0,1)" || bad "turned round on a boundary: $(cat "$T/err" "$T/out")"
+
 # a robot longer than the firmware thinks (150 mm, not 120): its turns sweep 89 mm and touch the walls
 printf '[robot]\nbody_l_m = 0.15\n' >"$T/long.ini"
 want_rc 0 "a robot too long for its turns" "$S" --maze mazes/gen-5x5-s1.txt --config "$T/long.ini" --mms "$A/wallfollow.py" --json
