@@ -105,12 +105,12 @@ static int8_t quarter(uint8_t h, uint8_t d)
     return q == 3 ? -1 : q;
 }
 
-/* Walls of the cell ahead, read from the sensors (EXPLORE_WALL_* bits). */
-static uint8_t read_walls(void)
+/* Walls of the cell ahead, read from the sensors (EXPLORE_WALL_* bits);
+ * to_centre: mm from the robot to that cell's centre. */
+static uint8_t read_walls(float to_centre)
 {
     uint8_t w = 0;
     hal_distance_t l = hal_distance(HAL_TOF_LEFT), f = hal_distance(HAL_TOF_FRONT), r = hal_distance(HAL_TOF_RIGHT);
-    float to_centre = profile_remaining(&mo.fwd);
     /* the far wall of the cell ahead is RC_FRONT_AT_CENTRE_MM beyond its centre */
     if (!f.timeout && f.mm < to_centre + RC_FRONT_AT_CENTRE_MM + RC_CELL_MM / 2) w |= EXPLORE_WALL_FRONT;
     if (!l.timeout && l.mm < RC_SIDE_THRESHOLD_MM) w |= EXPLORE_WALL_LEFT;
@@ -269,12 +269,13 @@ static int sense_point(float left_mm)
     return !sensed && left_mm <= RC_SENSE_BEFORE_MM && (fresh() || left_mm <= RC_SENSE_LATEST_MM);
 }
 
-/* Read the walls of the cell ahead into the map, committed to entering it
- * (search and command mode). Returns the walls (EXPLORE_WALL_*). */
-static uint8_t sense_cell_ahead(void)
+/* Read the walls of the cell ahead (its centre to_centre mm away) into the
+ * map, committed to entering it (search and command mode). Returns the
+ * walls (EXPLORE_WALL_*). */
+static uint8_t sense_cell_ahead(float to_centre)
 {
     sensed = 1;
-    uint8_t walls = read_walls();
+    uint8_t walls = read_walls(to_centre);
     explore_moved(&ex, st.heading); /* committed to the cell ahead */
     explore_sense(&ex, walls);
     return walls;
@@ -404,7 +405,7 @@ static void search_step(void)
     }
     float left = profile_remaining(&mo.fwd);
     if (sense_point(left)) {
-        uint8_t walls = sense_cell_ahead();
+        uint8_t walls = sense_cell_ahead(left);
         log_line(HAL_STR("sensed cell %u walls %u"), ex.cell, walls);
         hal_belief(&ex.map, ex.cell, st.heading, st.mode);
         /* planning takes 30-200 ms on a 16 MHz AVR (no time in the
@@ -594,15 +595,27 @@ const struct motion_s *mouse_motion(void) { return &mo; }
  * The moves reuse the search's primitives: a straight senses the walls of
  * every cell it enters at RC_SENSE_BEFORE_MM before that cell's centre
  * (read_walls, into the map), centres on the side walls, aligns on a wall
- * ahead and ends with a front fix; turns are start_turn's in-place turns
- * about the cell's centre. The mouse stands at a cell centre between
- * commands. */
+ * ahead and ends with a front fix; turns are start_turn's in-place turns.
+ * Between commands the mouse stands at a cell centre or, after an odd
+ * number of half steps, on the boundary between two cells (RC_CELL_MM / 2
+ * before the centre of ex.cell, the cell it was entering: sensed on the
+ * way in, as in a full step). It may turn there (the body sweeps the same
+ * circle as at a centre: the boundary's posts are as far as the walls);
+ * facing along the boundary it faces a post and cannot move. */
 enum { CMD_NONE = 0, CMD_SENSE, CMD_FORWARD, CMD_TURN };
 static uint8_t cmd_kind;      /* CMD_*: the command under way */
 static uint8_t cmd_result;    /* MOUSE_CMD_* of the last command */
 static uint8_t cmd_left;      /* cells of the forward move still to enter */
-static uint8_t cmd_moved;     /* cells entered by the last forward move */
-static uint8_t cmd_blocked;   /* a wall sensed ahead ended the move early */
+static uint8_t cmd_entered;   /* cells entered by the last forward move */
+/* cmd_flags: one byte (the Uno has 2 bytes of its 1,536 B budget left) */
+#define CF_BLOCKED 0x01u      /* a wall sensed ahead ended the forward move early */
+#define CF_HALF 0x02u         /* standing on a boundary (see above), not at a centre */
+#define CF_START_HALF 0x04u   /* the last forward move began on a boundary */
+#define CF_END_HALF 0x08u     /* and was to end on one */
+#define CF_EDGE_SHIFT 4       /* bits 4-5: the heading from that boundary into ex.cell */
+static uint8_t cmd_flags;
+
+static uint8_t edge_dir(void) { return (uint8_t)((cmd_flags >> CF_EDGE_SHIFT) & 3u); }
 
 void mouse_cmd_mode(void)
 {
@@ -610,6 +623,7 @@ void mouse_cmd_mode(void)
     waiting = WAIT_NONE;
     cmd_kind = CMD_SENSE; /* the start cell's walls first */
     cmd_result = MOUSE_CMD_BUSY;
+    cmd_flags = 0;
     mark_readings();
 }
 
@@ -619,22 +633,49 @@ uint8_t mouse_cmd_status(void)
     return cmd_kind != CMD_NONE ? MOUSE_CMD_BUSY : cmd_result;
 }
 
-uint8_t mouse_cmd_moved(void) { return cmd_moved; }
-
-int mouse_cmd_forward(uint8_t cells)
+/* blocked: stopped at the centre of the last cell entered; else as asked */
+uint16_t mouse_cmd_moved(void)
 {
-    if (st.mode != MOUSE_COMMAND || cmd_kind != CMD_NONE || cells == 0) return -1;
-    /* the map shows a wall on the way: refuse, nothing moves */
-    maze_cell_t c = ex.cell;
-    for (uint8_t i = 0; i < cells; i++) {
+    uint16_t moved = (uint16_t)(2u * cmd_entered + ((cmd_flags & CF_START_HALF) ? 1u : 0u));
+    return (cmd_flags & (CF_END_HALF | CF_BLOCKED)) == CF_END_HALF ? (uint16_t)(moved - 1u) : moved;
+}
+
+uint8_t mouse_cmd_edge(void) { return (cmd_flags & CF_HALF) ? (uint8_t)(1u + ((edge_dir() + 2u) & 3u)) : 0u; }
+
+int mouse_cmd_forward(uint16_t halves)
+{
+    if (st.mode != MOUSE_COMMAND || cmd_kind != CMD_NONE || halves == 0 || halves > 2u * 255u) return -1;
+    uint8_t half = (cmd_flags & CF_HALF) ? 1u : 0u;
+    maze_cell_t here = ex.cell;
+    if (half && st.heading != edge_dir()) {
+        /* along the boundary: a post ahead */
+        if (st.heading != (uint8_t)((edge_dir() + 2u) & 3u) || !maze_neighbour(&ex.map, ex.cell, st.heading, &here))
+            return -1;
+        /* turned round on the boundary: entering the cell it came from */
+    }
+    /* the map shows a wall at a cell centre passed before the end: refuse,
+     * nothing moves (from a boundary the first centre is one half step on) */
+    maze_cell_t c = here;
+    for (uint16_t k = 0; k < (halves + 1u - half) / 2u; k++) {
         if (!maze_passable(&ex.map, c, st.heading, 1)) return -1;
         c = maze_step(&ex.map, c, st.heading);
     }
-    cmd_left = cells;
-    cmd_moved = 0;
-    cmd_blocked = 0;
+    ex.cell = here;
+    uint16_t end = halves - half; /* half steps past ex.cell's centre */
+    cmd_left = (uint8_t)((end + 1u) / 2u);
+    cmd_flags = (uint8_t)((half ? CF_START_HALF : 0u) | ((end & 1u) ? CF_END_HALF : 0u));
+    cmd_entered = 0;
     cmd_kind = CMD_FORWARD;
-    start_forward(RC_CELL_MM, RC_SEARCH_MM_S, RC_SEARCH_MM_S, RC_ACCEL_MM_S2);
+    if (cmd_left == 0) { /* from the boundary to ex.cell's centre: nothing new to sense */
+        start_forward(RC_CELL_MM / 2, RC_SEARCH_MM_S, 0, RC_ACCEL_MM_S2);
+        sensed = 1;
+        wall_ahead = maze_wall(&ex.map, ex.cell, st.heading) == MAZE_WALL_CLOSED;
+    } else if (cmd_left == 1 && (end & 1u)) { /* to the next boundary */
+        start_forward(half ? RC_CELL_MM : RC_CELL_MM / 2, RC_SEARCH_MM_S, 0, RC_ACCEL_MM_S2);
+        move_shift_mm = RC_CELL_MM / 2;
+    } else { /* to the next centre, extended at each sensing point */
+        start_forward(half ? RC_CELL_MM * 1.5f : RC_CELL_MM, RC_SEARCH_MM_S, RC_SEARCH_MM_S, RC_ACCEL_MM_S2);
+    }
     return 0;
 }
 
@@ -661,6 +702,8 @@ void mouse_cmd_reset(void)
     fix_stage = 0;
     turn_pending = 0;
     last_lateral_ok = 0;
+    move_shift_mm = 0;
+    cmd_flags = 0;
     cmd_kind = CMD_SENSE;
     cmd_result = MOUSE_CMD_BUSY;
     mark_readings();
@@ -679,27 +722,38 @@ static void cmd_forward_step(void)
 {
     centring();
     float left = profile_remaining(&mo.fwd);
-    if (sense_point(left)) {
-        uint8_t walls = sense_cell_ahead();
+    float to_centre = left + move_shift_mm; /* the centre of the cell ahead */
+    /* a move ending on a boundary may stop before a fresh reading: sense
+     * with the last one then */
+    if (cmd_left > 0 && (sense_point(to_centre) || (!sensed && !mo.fwd.active))) {
+        uint8_t walls = sense_cell_ahead(to_centre);
         st.cell = ex.cell;
         hal_belief(&ex.map, ex.cell, st.heading, st.mode);
-        cmd_moved++;
+        cmd_entered++;
         cmd_left--;
         wall_ahead = (walls & EXPLORE_WALL_FRONT) != 0;
         if (cmd_left > 0 && maze_passable(&ex.map, ex.cell, st.heading, 1)) {
-            profile_set_remaining(&mo.fwd, left + RC_CELL_MM);
+            if (cmd_left == 1 && (cmd_flags & CF_END_HALF)) { /* the last half step: stop on the boundary */
+                profile_set_remaining(&mo.fwd, left + RC_CELL_MM / 2);
+                mo.fwd.v_end = 0;
+                move_shift_mm = RC_CELL_MM / 2;
+            } else {
+                profile_set_remaining(&mo.fwd, left + RC_CELL_MM);
+            }
             sensed = 0;
             return;
         }
-        cmd_blocked = cmd_left > 0;
-        mo.fwd.v_end = 0; /* stop in the cell ahead */
+        if (cmd_left > 0) cmd_flags |= CF_BLOCKED;
+        mo.fwd.v_end = 0; /* stop in the cell ahead (or on its boundary) */
         return;
     }
-    if (sensed && wall_ahead && mo.fwd.active) align_to_front_wall(0);
+    if (sensed && wall_ahead && mo.fwd.active) align_to_front_wall(move_shift_mm);
     if (sensed && !motion_busy(&mo)) {
         no_centring();
-        if (wall_ahead && !front_fix()) return;
-        cmd_finish(cmd_blocked ? MOUSE_CMD_BLOCKED : MOUSE_CMD_DONE);
+        uint8_t on_edge = (cmd_flags & (CF_END_HALF | CF_BLOCKED)) == CF_END_HALF;
+        if (!on_edge && wall_ahead && !front_fix()) return;
+        if (on_edge) cmd_flags |= (uint8_t)(CF_HALF | (st.heading << CF_EDGE_SHIFT));
+        cmd_finish((cmd_flags & CF_BLOCKED) ? MOUSE_CMD_BLOCKED : MOUSE_CMD_DONE);
     }
 }
 
@@ -731,8 +785,9 @@ static void cmd_step(void)
     case CMD_TURN:
         if (!turn_done()) return;
         /* facing a wall: put the robot back on the cell's centre (as the
-         * U-turn's middle step), so that the next turn sweeps clear */
-        if (maze_wall(&ex.map, ex.cell, st.heading) == MAZE_WALL_CLOSED && !front_fix()) return;
+         * U-turn's middle step), so that the next turn sweeps clear; not on
+         * a boundary (a post or a far wall ahead) */
+        if (!(cmd_flags & CF_HALF) && maze_wall(&ex.map, ex.cell, st.heading) == MAZE_WALL_CLOSED && !front_fix()) return;
         cmd_finish(MOUSE_CMD_DONE);
         break;
     default:

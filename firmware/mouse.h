@@ -44,9 +44,10 @@ const struct motion_s *mouse_motion(void);
 
 /* ---- External command mode (mmsim --mms) ----
  * After fw_setup, mouse_cmd_mode() hands the moves to the caller: the mouse
- * first senses the start cell (busy), then waits at a cell centre for
- * mouse_cmd_forward / mouse_cmd_turn, runs each on the motion layer (fw_tick
- * and fw_loop as usual) and maps the walls it senses on the way
+ * first senses the start cell (busy), then waits for mouse_cmd_forward /
+ * mouse_cmd_turn at a cell centre or, after an odd number of half steps,
+ * on the boundary between two cells; runs each on the motion layer
+ * (fw_tick and fw_loop as usual) and maps the walls it senses on the way
  * (mouse_map()). mouse_cmd_status() says when a command is over. */
 enum { MOUSE_COMMAND = MOUSE_CRASHED + 1 }; /* st.mode in command mode */
 enum {
@@ -57,11 +58,18 @@ enum {
 };
 void mouse_cmd_mode(void);
 uint8_t mouse_cmd_status(void);
-/* Drive `cells` cells ahead; -1 (nothing moves) if the map shows a wall on
- * the way, cells is 0 or a command is under way. */
-int mouse_cmd_forward(uint8_t cells);
-/* Cells entered by the last forward move (less than asked if blocked). */
-uint8_t mouse_cmd_moved(void);
+/* Drive `halves` half cells ahead (1..510); -1 (nothing moves) if the map
+ * shows a wall at a cell centre passed before the end, a post ahead (facing
+ * along a boundary), halves is out of range or a command is under way. A
+ * move ending on a boundary stops there; the cell beyond it is sensed on
+ * the way in, as in a full step. */
+int mouse_cmd_forward(uint16_t halves);
+/* Half cells driven by the last forward move (less than asked if blocked:
+ * it then stops at the centre of the last free cell). */
+uint16_t mouse_cmd_moved(void);
+/* Where the mouse stands: 0 at the centre of mouse_status()->cell, else
+ * 1 + the side (MAZE_NORTH..) of that cell whose boundary it stands on. */
+uint8_t mouse_cmd_edge(void);
 /* In-place quarter turn: +1 right, -1 left; -1 if refused. */
 int mouse_cmd_turn(int8_t q);
 /* The robot was put back at the start (mms ackReset): pose and odometry

@@ -28,20 +28,21 @@ void mms_stats_init(mms_stats_t *s) { memset(s, 0, sizeof *s); }
 
 void mms_stats_start_run(mms_stats_t *s)
 {
-    s->cur_distance = s->cur_turns = 0;
+    s->cur_halves = s->cur_turns = 0;
     s->cur_eff = s->penalty;
     s->total_eff += s->penalty;
     s->penalty = 0;
     s->in_run = 1;
 }
 
-void mms_stats_distance(mms_stats_t *s, int cells)
+void mms_stats_distance(mms_stats_t *s, int halves)
 {
-    float eff = cells > 2 ? cells / 2.0f + 1.0f : (float)cells;
-    s->total_distance += cells;
+    float cells = halves / 2.0f;
+    float eff = cells > 2 ? cells / 2.0f + 1.0f : cells;
+    s->total_halves += halves;
     s->total_eff += eff;
     if (s->in_run) {
-        s->cur_distance += cells;
+        s->cur_halves += halves;
         s->cur_eff += eff;
     }
 }
@@ -60,7 +61,7 @@ void mms_stats_finish_run(mms_stats_t *s)
     if (!s->has_best || cur < best) {
         s->has_best = 1;
         s->best_turns = s->cur_turns;
-        s->best_distance = s->cur_distance;
+        s->best_halves = s->cur_halves;
         s->best_eff = s->cur_eff;
     }
 }
@@ -89,11 +90,11 @@ int mms_stats_get(const mms_stats_t *s, const char *name, char *out, size_t len)
         return 0;
     }
     switch (k) {
-    case 0: snprintf(out, len, "%d", s->total_distance); break;
+    case 0: snprintf(out, len, "%d", s->total_halves / 2); break;
     case 1: snprintf(out, len, "%d", s->total_turns); break;
-    case 2: snprintf(out, len, "%d", s->best_distance); break;
+    case 2: snprintf(out, len, "%d", s->best_halves / 2); break;
     case 3: snprintf(out, len, "%d", s->best_turns); break;
-    case 4: snprintf(out, len, "%d", s->cur_distance); break;
+    case 4: snprintf(out, len, "%d", s->cur_halves / 2); break;
     case 5: snprintf(out, len, "%d", s->cur_turns); break;
     case 6: snprintf(out, len, "%g", (double)s->total_eff); break;
     case 7: snprintf(out, len, "%g", (double)s->best_eff); break;
@@ -120,7 +121,7 @@ void mms_init(mms_t *m, const mms_opts_t *o, const maze_t *truth)
     m->o = *o;
     m->truth = truth;
     m->to_child = m->from_child = -1;
-    m->exit_status = -1;
+    m->exit_code = -1;
     m->reason = "running";
     mms_stats_init(&m->stats);
 }
@@ -156,28 +157,90 @@ static int in_maze(const mms_t *m, int x, int y)
     return x >= 0 && y >= 0 && x < m->truth->width && y < m->truth->height;
 }
 
-/* Is there a wall on side d of cell c: the maze file or the robot's map
- * (unknown = no wall: mms assumes none until seen). */
-static int wall_at(const mms_t *m, maze_cell_t c, uint8_t d)
+/* Is there a wall on side d of cell (x, y): the maze file or the robot's
+ * map (unknown = no wall: mms assumes none until seen). */
+static int wall_at(const mms_t *m, int x, int y, uint8_t d)
 {
+    maze_cell_t c = maze_cell(m->truth, (uint8_t)x, (uint8_t)y);
     if (m->o.ideal_walls) return !maze_passable(m->truth, c, d, 0);
     return maze_wall(mouse_map(), c, d) == MAZE_WALL_CLOSED;
 }
 
-/* mms's isWall(pos, dir, halfStepsAhead) from a cell centre: the half-step
- * positions 0..ahead are the centres (even) and edges (odd, facing into
- * the next cell: never a wall) along dir. */
-static int wall_query(const mms_t *m, int rel, int half_steps_away)
+/* Positions and directions as mms's SemiPosition/SemiDirection: a cell's
+ * centre is (2x+1, 2y+1), the boundary on its east side (2x+2, 2y+1);
+ * directions in eighths of a turn clockwise from north (N = 0, NE = 1). */
+enum { S_N = 0, S_NE, S_E, S_SE, S_S, S_SW, S_W, S_NW };
+
+/* Where the robot stands: a cell centre or, after an odd number of half
+ * steps, a boundary (mouse_cmd_edge). */
+static void semi_pos(const mms_t *m, int *sx, int *sy)
 {
+    static const int dx[4] = { 0, 1, 0, -1 }, dy[4] = { 1, 0, -1, 0 };
     const mouse_status_t *st = mouse_status();
-    uint8_t d = maze_turn(st->heading, (int8_t)rel);
-    int ahead = half_steps_away - 1;
-    maze_cell_t c = st->cell;
-    for (int i = 0; i <= (ahead < 0 ? 0 : ahead / 2); i++) {
-        if (wall_at(m, c, d)) return 1;
-        c = maze_step(m->truth, c, d);
+    uint8_t e = mouse_cmd_edge();
+    *sx = 2 * maze_x(m->truth, st->cell) + 1 + (e ? dx[e - 1] : 0);
+    *sy = 2 * maze_y(m->truth, st->cell) + 1 + (e ? dy[e - 1] : 0);
+}
+
+/* The cell mms counts a position in (toMazeLocation: x / 2, y / 2; on a
+ * boundary that is the cell north or east of it). */
+static maze_cell_t semi_cell(const mms_t *m, int sx, int sy)
+{
+    return maze_cell(m->truth, (uint8_t)(sx / 2), (uint8_t)(sy / 2));
+}
+
+/* mms's isWall(position, direction): from a centre, the cell's wall (a
+ * diagonal aims at a post); on a boundary, along it a post, across it
+ * the open middle of a cell, diagonally the wall of the neighbouring cell
+ * it aims at (none outside the maze). */
+static int semi_wall(const mms_t *m, int x, int y, int d8)
+{
+    int w2 = 2 * m->truth->width, h2 = 2 * m->truth->height;
+    if (x < 0 || y < 0 || x > w2 || y > h2) return 1; /* outside (mms asserts): a wall */
+    int cx = x / 2, cy = y / 2;
+    if (x % 2 && y % 2) return d8 % 2 ? 1 : wall_at(m, cx, cy, (uint8_t)(d8 / 2));
+    if (x % 2 == 0 && y % 2 == 0) return 1; /* a post (never reached) */
+    if (x % 2 == 0) { /* on a boundary between west and east */
+        switch (d8) {
+        case S_N: case S_S: return 1;
+        case S_E: case S_W: return 0;
+        case S_NE: return x == w2 ? 0 : wall_at(m, cx, cy, MAZE_NORTH);
+        case S_SE: return x == w2 ? 0 : wall_at(m, cx, cy, MAZE_SOUTH);
+        case S_NW: return x == 0 ? 0 : wall_at(m, cx - 1, cy, MAZE_NORTH);
+        default: return x == 0 ? 0 : wall_at(m, cx - 1, cy, MAZE_SOUTH);
+        }
+    }
+    switch (d8) { /* on a boundary between south and north */
+    case S_E: case S_W: return 1;
+    case S_N: case S_S: return 0;
+    case S_NE: return y == h2 ? 0 : wall_at(m, cx, cy, MAZE_EAST);
+    case S_NW: return y == h2 ? 0 : wall_at(m, cx, cy, MAZE_WEST);
+    case S_SE: return y == 0 ? 0 : wall_at(m, cx, cy - 1, MAZE_EAST);
+    default: return y == 0 ? 0 : wall_at(m, cx, cy - 1, MAZE_WEST);
+    }
+}
+
+/* mms's isWall(position, direction, halfStepsAhead): a wall at this
+ * position or at any of the next `ahead` half steps along d8. */
+static int semi_wall_ahead(const mms_t *m, int x, int y, int d8, long ahead)
+{
+    static const int dx[8] = { 0, 1, 1, 1, 0, -1, -1, -1 }, dy[8] = { 1, 1, 0, -1, -1, -1, 0, 1 };
+    if (semi_wall(m, x, y, d8)) return 1;
+    for (long i = 1; i <= ahead; i++) { /* ends at the latest outside the maze */
+        x += dx[d8];
+        y += dy[d8];
+        if (semi_wall(m, x, y, d8)) return 1;
     }
     return 0;
+}
+
+/* wallFront & co: rel in eighths of a turn clockwise from the heading,
+ * `away` half steps (mms: 1 = the wall right there). */
+static int wall_query(const mms_t *m, int rel, int away)
+{
+    int x, y;
+    semi_pos(m, &x, &y);
+    return semi_wall_ahead(m, x, y, (2 * mouse_status()->heading + rel) & 7, (long)away - 1);
 }
 
 static void place_at_start(const mms_t *m, struct sim_s *s)
@@ -186,6 +249,17 @@ static void place_at_start(const mms_t *m, struct sim_s *s)
     double cell = s->cfg.cell_m;
     world_place(s->world, (maze_x(t, t->start) + 0.5) * cell, (maze_y(t, t->start) + 0.5) * cell,
                 M_PI / 2 - t->start_heading * (M_PI / 2), NULL);
+}
+
+/* Bytes of the UTF-8 character at t (mms reads its input as UTF-8 and
+ * puts one '?' per character it cannot draw); 1 for a byte that starts no
+ * valid sequence. */
+static size_t utf8_length(const unsigned char *t)
+{
+    size_t n = *t >= 0xF0 && *t <= 0xF4 ? 4 : *t >= 0xE0 && *t <= 0xEF ? 3 : *t >= 0xC2 && *t <= 0xDF ? 2 : 1;
+    for (size_t i = 1; i < n; i++)
+        if ((t[i] & 0xC0) != 0x80) return 1;
+    return n;
 }
 
 /* Split on spaces (empty parts skipped) into at most n tokens; returns the
@@ -200,30 +274,21 @@ static int split(char *line, char **tok, int n)
     return k;
 }
 
-static int start_forward(mms_t *m, int cells, char *resp, size_t len)
+/* A forward move of `halves` half cells (moveForward N: 2N; mms's
+ * moveForward(numHalfSteps)): refused with crash, nothing moving, if N < 1
+ * or a wall (the robot's map or, ideal, the maze file) is on the way as
+ * mms's wallFront N would see it. */
+static int start_forward(mms_t *m, long halves, char *resp, size_t len)
 {
-    const mouse_status_t *st = mouse_status();
-    if (cells < 1) {
+    int x, y;
+    semi_pos(m, &x, &y);
+    if (halves > 510) halves = 510; /* 255 cells: more than any maze */
+    if (halves < 1 || semi_wall_ahead(m, x, y, 2 * mouse_status()->heading, halves - 1) ||
+        mouse_cmd_forward((uint16_t)halves) != 0) {
         snprintf(resp, len, "crash");
         return 0;
     }
-    if (cells > 255) cells = 255;
-    if (m->o.ideal_walls) { /* the maze file says whether the way is clear */
-        maze_cell_t c = st->cell;
-        for (int i = 0; i < cells; i++) {
-            if (!maze_passable(m->truth, c, st->heading, 0)) {
-                snprintf(resp, len, "crash");
-                return 0;
-            }
-            c = maze_step(m->truth, c, st->heading);
-        }
-    }
-    maze_cell_t from = st->cell;
-    if (mouse_cmd_forward((uint8_t)cells) != 0) {
-        snprintf(resp, len, "crash");
-        return 0;
-    }
-    if (from == m->truth->start) mms_stats_start_run(&m->stats);
+    if (semi_cell(m, x, y) == m->truth->start) mms_stats_start_run(&m->stats);
     m->pending = MOVE_FORWARD;
     return 1;
 }
@@ -249,9 +314,12 @@ int mms_execute(mms_t *m, struct sim_s *s, const char *line_in, char *resp, size
         int ok = 1, x = to_int(p, &ok), y = to_int(q, &ok);
         if (!ok || !in_maze(m, x, y)) goto invalid;
         char *dst = m->text[maze_cell(m->truth, (uint8_t)x, (uint8_t)y)];
-        size_t i = 0;
-        for (; text[i] && i < MMS_TEXT_MAX; i++) dst[i] = text[i] >= 32 && text[i] < 127 ? text[i] : '?';
-        dst[i] = '\0';
+        size_t k = 0;
+        for (const unsigned char *t = (const unsigned char *)text; *t && k < MMS_TEXT_MAX; k++) {
+            dst[k] = *t >= 32 && *t < 127 ? (char)*t : '?';
+            t += utf8_length(t);
+        }
+        dst[k] = '\0';
         return 0;
     }
     int n = split(line, tok, 4);
@@ -299,27 +367,24 @@ int mms_execute(mms_t *m, struct sim_s *s, const char *line_in, char *resp, size
     if (n > 2) goto invalid;
     static const char *const walls[] = { "wallFront", "wallRight", "wallBack", "wallLeft" };
     static const char *const diag[] = { "wallFrontLeft", "wallFrontRight", "wallBackLeft", "wallBackRight" };
-    int arg = 1, is_wall = -1, is_diag = 0;
+    static const int diag_rel[] = { -1, 1, -3, 3 }; /* eighths of a turn clockwise */
+    int arg = 1, is_wall = -1, is_diag = -1;
     for (int i = 0; i < 4; i++) {
         if (!strcmp(f, walls[i])) is_wall = i;
-        if (!strcmp(f, diag[i])) is_diag = 1;
+        if (!strcmp(f, diag[i])) is_diag = i;
     }
-    int two_ok = is_wall >= 0 || is_diag || !strcmp(f, "getStat") || !strcmp(f, "moveForward") ||
+    int two_ok = is_wall >= 0 || is_diag >= 0 || !strcmp(f, "getStat") || !strcmp(f, "moveForward") ||
                  !strcmp(f, "moveForwardHalf");
     if (n == 2 && !two_ok) goto invalid;
     if (n == 2 && strcmp(f, "getStat")) arg = to_int(tok[1], &ok); /* mms: not a number = 0 */
 
     if (!strcmp(f, "mazeWidth")) snprintf(resp, len, "%d", m->truth->width);
     else if (!strcmp(f, "mazeHeight")) snprintf(resp, len, "%d", m->truth->height);
-    else if (is_wall >= 0) snprintf(resp, len, "%s", wall_query(m, is_wall, arg) ? "true" : "false");
-    else if (is_diag) snprintf(resp, len, "true"); /* from a cell centre a diagonal aims at a post */
-    else if (!strcmp(f, "moveForward")) return start_forward(m, arg, resp, len);
-    else if (!strcmp(f, "moveForwardHalf")) {
-        /* the motion layer stops only at cell centres: an odd number of
-         * half steps is refused */
-        if (arg < 1 || arg % 2) snprintf(resp, len, "crash");
-        else return start_forward(m, arg / 2, resp, len);
-    } else if (!strcmp(f, "turnRight") || !strcmp(f, "turnRight90") || !strcmp(f, "turnLeft") ||
+    else if (is_wall >= 0) snprintf(resp, len, "%s", wall_query(m, 2 * is_wall, arg) ? "true" : "false");
+    else if (is_diag >= 0) snprintf(resp, len, "%s", wall_query(m, diag_rel[is_diag], arg) ? "true" : "false");
+    else if (!strcmp(f, "moveForward")) return start_forward(m, arg > 255 ? 510 : 2L * arg, resp, len);
+    else if (!strcmp(f, "moveForwardHalf")) return start_forward(m, arg, resp, len);
+    else if (!strcmp(f, "turnRight") || !strcmp(f, "turnRight90") || !strcmp(f, "turnLeft") ||
                !strcmp(f, "turnLeft90")) {
         if (mouse_cmd_turn(f[4] == 'R' ? 1 : -1) != 0) {
             snprintf(resp, len, "crash");
@@ -447,7 +512,7 @@ int mms_start(mms_t *m, const mms_opts_t *o, const maze_t *truth, char *err, siz
     sigprocmask(SIG_SETMASK, &prev, NULL);
     close(in[0]);
     close(out[1]);
-    m->pid = pid;
+    m->pid = m->pgid = pid;
     m->to_child = in[1];
     m->from_child = out[0];
     fcntl(m->to_child, F_SETFL, fcntl(m->to_child, F_GETFL) | O_NONBLOCK);
@@ -470,38 +535,51 @@ static int end_run(mms_t *m, const char *reason, const char *fmt, ...)
     return MMS_END;
 }
 
-/* Reap the child if it has exited, waiting up to wait_s. */
-static int reap(mms_t *m, double wait_s)
+/* Has the shell exited? Waits up to wait_s. Its status goes into
+ * exit_code / exit_signal, but it stays a zombie (WNOWAIT): its pid, and
+ * so its process group's id, cannot be reused before mms_stop has killed
+ * the group and reaped it. */
+static int shell_exited(mms_t *m, double wait_s)
 {
     double t0 = now_s();
-    for (;;) {
-        int status;
-        pid_t r = waitpid(m->pid, &status, WNOHANG);
-        if (r == m->pid || (r < 0 && errno == ECHILD)) {
-            m->exit_status = r == m->pid ? status : -1;
+    while (m->pid && !m->exited) {
+        siginfo_t info;
+        memset(&info, 0, sizeof info);
+        int r = waitid(P_PID, (id_t)m->pid, &info, WEXITED | WNOHANG | WNOWAIT);
+        if (r < 0 && errno == ECHILD) { /* reaped elsewhere: nothing to learn */
             m->pid = 0;
-            return 1;
+            break;
+        }
+        if (r == 0 && info.si_pid == m->pid) {
+            if (info.si_code == CLD_EXITED) m->exit_code = info.si_status;
+            else m->exit_signal = info.si_status;
+            m->exited = 1;
+            break;
         }
         if (now_s() - t0 >= wait_s) return 0;
         struct timespec ts = { 0, 2000000 };
         nanosleep(&ts, NULL);
     }
+    return 1;
 }
 
-/* The child closed its output: it has ended (or is about to). */
+/* "exited with status N" or "was killed by signal N" */
+static const char *how_it_ended(const mms_t *m, char *buf, size_t len)
+{
+    if (m->exit_signal) snprintf(buf, len, "was killed by signal %d", m->exit_signal);
+    else snprintf(buf, len, "exited with status %d", m->exit_code);
+    return buf;
+}
+
+/* The child closed its output: it has ended (or is about to). Whatever
+ * is left of its group is killed by mms_stop. */
 static int child_gone(mms_t *m)
 {
-    if (m->pid && !reap(m, m->o.timeout_ms / 1000.0)) {
-        kill(-m->pid, SIGKILL);
-        reap(m, 5.0);
+    char how[64];
+    if (!shell_exited(m, m->o.timeout_ms / 1000.0))
         return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' closed its output but did not exit", m->o.command);
-    }
-    int st = m->exit_status;
-    if (st >= 0 && WIFEXITED(st) && WEXITSTATUS(st) == 0) return end_run(m, "mms_exited", NULL);
-    if (st >= 0 && WIFSIGNALED(st))
-        return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' was killed by signal %d", m->o.command, WTERMSIG(st));
-    return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' exited with status %d", m->o.command,
-                   st >= 0 && WIFEXITED(st) ? WEXITSTATUS(st) : -1);
+    if (m->exit_code == 0) return end_run(m, "mms_exited", NULL);
+    return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' %s", m->o.command, how_it_ended(m, how, sizeof how));
 }
 
 static void trace(const mms_t *m, const struct sim_s *s, const char *dir, const char *text)
@@ -549,9 +627,16 @@ static int read_line(mms_t *m, char *line)
             return end_run(m, "mms_garbage", "mmsim: mms: the algorithm '%s' printed a line longer than %d bytes",
                            m->o.command, MMS_LINE_MAX);
         double left_ms = m->o.timeout_ms - (now_s() - t0) * 1000.0;
-        if (left_ms <= 0)
+        if (left_ms <= 0) {
+            char how[64];
+            if (shell_exited(m, 0)) /* e.g. 'algo & exit 0': a process it started holds the pipe */
+                return end_run(m, "mms_timeout",
+                               "mmsim: mms: the algorithm '%s' %s, but a process it started keeps its output open "
+                               "and sent no command for %d ms", m->o.command, how_it_ended(m, how, sizeof how),
+                               m->o.timeout_ms);
             return end_run(m, "mms_timeout", "mmsim: mms: the algorithm '%s' sent no command for %d ms",
                            m->o.command, m->o.timeout_ms);
+        }
         struct pollfd p = { m->from_child, POLLIN, 0 };
         int r = poll(&p, 1, (int)ceil(left_ms));
         if (r < 0 && errno != EINTR)
@@ -590,7 +675,9 @@ int mms_service(mms_t *m, struct sim_s *s)
             m->pending = MOVE_NONE;
             if (was == MOVE_FORWARD) {
                 mms_stats_distance(&m->stats, mouse_cmd_moved());
-                maze_cell_t c = mouse_status()->cell;
+                int x, y;
+                semi_pos(m, &x, &y);
+                maze_cell_t c = semi_cell(m, x, y);
                 if (maze_is_goal(m->truth, c)) mms_stats_finish_run(&m->stats);
                 else if (c == m->truth->start) mms_stats_end_unfinished(&m->stats);
                 m->moves++;
@@ -645,17 +732,22 @@ void mms_stop(mms_t *m)
     if (m->to_child >= 0) close(m->to_child);
     if (m->from_child >= 0) close(m->from_child);
     m->to_child = m->from_child = -1;
+    shell_exited(m, 0); /* its own status if it has ended, before the kill */
+    /* the whole group, always: a background process of a shell that has
+     * exited is still in it. The shell is not reaped yet, so the group's id
+     * is still ours. */
+    if (m->pgid > 0) kill(-m->pgid, SIGKILL);
+    m->pgid = 0;
     if (child_group) {
         guard_signals(0);
         child_group = 0;
     }
-    if (m->pid) {
-        if (!reap(m, 0)) {
-            kill(-m->pid, SIGKILL);
-            kill(m->pid, SIGKILL);
-            reap(m, 10.0);
-        }
+    if (m->pid && !shell_exited(m, 10.0)) kill(m->pid, SIGKILL); /* left its group: the shell itself */
+    if (m->pid && shell_exited(m, 10.0)) {
+        int status;
+        waitpid(m->pid, &status, 0);
     }
+    m->pid = 0;
 }
 
 int mms_failed(const mms_t *m)
@@ -664,14 +756,21 @@ int mms_failed(const mms_t *m)
            !strcmp(m->reason, "mms_garbage") || !strcmp(m->reason, "mms_flood");
 }
 
+/* A distance in cells: an integer, or x.5 after an odd number of half steps. */
+static json_t *cells_json(int halves)
+{
+    return halves % 2 ? json_real(halves / 2.0) : json_integer(halves / 2);
+}
+
 void *mms_json(const mms_t *m)
 {
     const mms_stats_t *s = &m->stats;
-    json_t *st = json_pack("{s:i, s:i, s:f, s:i, s:i, s:f, s:f}", "total_distance", s->total_distance, "total_turns",
-                           s->total_turns, "total_effective_distance", (double)s->total_eff, "current_run_distance",
-                           s->cur_distance, "current_run_turns", s->cur_turns, "current_run_effective_distance",
-                           (double)s->cur_eff, "score", round(mms_stats_score(s) * 1000.0) / 1000.0);
-    json_object_set_new(st, "best_run_distance", s->has_best ? json_integer(s->best_distance) : json_null());
+    json_t *st = json_pack("{s:o, s:i, s:f, s:o, s:i, s:f, s:f}", "total_distance", cells_json(s->total_halves),
+                           "total_turns", s->total_turns, "total_effective_distance", (double)s->total_eff,
+                           "current_run_distance", cells_json(s->cur_halves), "current_run_turns", s->cur_turns,
+                           "current_run_effective_distance", (double)s->cur_eff, "score",
+                           round(mms_stats_score(s) * 1000.0) / 1000.0);
+    json_object_set_new(st, "best_run_distance", s->has_best ? cells_json(s->best_halves) : json_null());
     json_object_set_new(st, "best_run_turns", s->has_best ? json_integer(s->best_turns) : json_null());
     json_object_set_new(st, "best_run_effective_distance", s->has_best ? json_real(s->best_eff) : json_null());
     json_t *j = json_pack("{s:s, s:b, s:i, s:I, s:I, s:I, s:I, s:I, s:o}", "command", m->o.command, "ideal_walls",
@@ -687,8 +786,7 @@ void *mms_json(const mms_t *m)
     }
     json_object_set_new(j, "colors", colors);
     json_object_set_new(j, "texts", texts);
-    int es = m->exit_status;
-    json_object_set_new(j, "exit_status", es >= 0 && WIFEXITED(es) ? json_integer(WEXITSTATUS(es)) : json_null());
-    json_object_set_new(j, "exit_signal", es >= 0 && WIFSIGNALED(es) ? json_integer(WTERMSIG(es)) : json_null());
+    json_object_set_new(j, "exit_status", m->exit_code >= 0 ? json_integer(m->exit_code) : json_null());
+    json_object_set_new(j, "exit_signal", m->exit_signal ? json_integer(m->exit_signal) : json_null());
     return j;
 }

@@ -1,7 +1,8 @@
 /* mms.h - run an mms maze algorithm (any program speaking the text API of
- * mackorone/mms, README at commit 3054142 = the v1.2 API: moveForward [N],
- * moveForwardHalf, turn*45, getStat; wallBack and the half-step argument of
- * the wall queries as mms's Window.cpp at 9ec759a) on the simulated robot.
+ * mackorone/mms release v1.2.0, README at commit 3054142: moveForward [N],
+ * moveForwardHalf, turn*45, getStat; wallBack, the half-step argument of
+ * the wall queries and the cell boundaries as mms's Window.cpp at 9ec759a)
+ * on the simulated robot.
  *
  * The algorithm runs as a child process (/bin/sh -c COMMAND, in its own
  * process group) with its stdin and stdout on pipes; its stderr is ours.
@@ -33,12 +34,13 @@ struct sim_s;
 #define MMS_TEXT_MAX 10           /* characters of cell text (mms) */
 #define MMS_MOVE_MAX_S 30.0       /* sim seconds a move may take: longer = stuck (a 32-cell straight takes ~12 s) */
 
-/* mms's Stats tab (Stats.cpp): distances in cells, effective distance
- * counts every cell of a moveForward N after the second as 0.5. */
+/* mms's Stats tab (Stats.cpp, README): distances in cells (kept in half
+ * cells: a half step counts half a cell), effective distance counts every
+ * cell of a move after the second as 0.5. */
 typedef struct {
-    int total_distance, total_turns;
-    int cur_distance, cur_turns;
-    int best_distance, best_turns;
+    int total_halves, total_turns;
+    int cur_halves, cur_turns;
+    int best_halves, best_turns;
     float total_eff, cur_eff, best_eff;
     int has_best;   /* a start-to-goal run was completed */
     int in_run;     /* a run started (a move from the start cell) */
@@ -48,7 +50,8 @@ typedef struct {
 
 void mms_stats_init(mms_stats_t *s);
 void mms_stats_start_run(mms_stats_t *s);
-void mms_stats_distance(mms_stats_t *s, int cells);
+/* A move of `halves` half cells (moveForward N: 2N). */
+void mms_stats_distance(mms_stats_t *s, int halves);
 void mms_stats_turn(mms_stats_t *s);
 void mms_stats_finish_run(mms_stats_t *s);
 void mms_stats_end_unfinished(mms_stats_t *s);
@@ -57,7 +60,8 @@ void mms_stats_reset_penalty(mms_stats_t *s);
  * total effective distance); 2000 if the goal was never reached. */
 float mms_stats_score(const mms_stats_t *s);
 /* getStat's answer for the stat named `name` into out ("-1" if it has no
- * value yet); -1 if the name is not a stat. */
+ * value yet; distances in whole cells, a half rounded down: mms's are
+ * integers); -1 if the name is not a stat. */
 int mms_stats_get(const mms_stats_t *s, const char *name, char *out, size_t len);
 
 enum { MMS_STEP = 0, MMS_END = 1 };
@@ -73,14 +77,18 @@ typedef struct {
 typedef struct mms_s {
     mms_opts_t o;
     const maze_t *truth;
-    pid_t pid;             /* 0 when reaped */
+    pid_t pid;             /* the shell; 0 when reaped */
+    pid_t pgid;            /* its process group (= pid), killed whole by mms_stop; 0 after */
+    int exited;            /* the shell has exited: status below, not reaped yet (the
+                            * zombie keeps the group id ours until the group is killed) */
     int to_child, from_child;
     char buf[MMS_LINE_MAX + 1];
     size_t len;
     int pending;           /* a move is under way (MMS_MOVE_*) */
     double move_start_s;   /* sim time the move under way began */
     int was_reset;
-    int exit_status;       /* waitpid status when reaped, -1 before */
+    int exit_code;         /* the shell's exit status, -1 if none (yet, or killed) */
+    int exit_signal;       /* the signal that killed it, 0 if none */
     const char *reason;    /* exit_reason for the JSON */
     char message[300];     /* one line for stderr, "" = none */
     long commands, invalid, since_move, moves, crashes, resets;
@@ -104,7 +112,9 @@ int mms_start(mms_t *m, const mms_opts_t *o, const maze_t *truth, char *err, siz
  * once, fw_tick, fw_loop, call again) or the run is over (MMS_END: m->reason,
  * m->message). s is the running simulation (struct sim_s). */
 int mms_service(mms_t *m, struct sim_s *s);
-/* End the child (SIGKILL to its group if it is still running) and reap it. */
+/* End the algorithm: SIGKILL to its whole process group (whatever is left
+ * of it, also background processes of a shell that has exited), then reap
+ * the shell. */
 void mms_stop(mms_t *m);
 /* Execute one command line; the answer (without newline) into resp, "" for
  * none. Returns 1 if a move was started (the answer comes later). Exposed

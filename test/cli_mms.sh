@@ -26,6 +26,15 @@ done
 want_rc 3 "wall follower fails on a looped maze" "$S" --maze mazes/gen-6x6-s1.txt --mms "$A/wallfollow.py" --json
 [ "$(py "(d['reached_goal'], d['exit_reason'], d['mms']['stats']['score'])")" = "(False, 'mms_failed', 2000.0)" ] && ok "score 2000 without the goal" || bad "looped maze: $(cat "$T/out")"
 
+# half steps: every move starts with moveForwardHalf 1 onto the boundary, then 2K-1 half steps
+for m in gen-8x8-s1 gen-16x16-s2; do
+  want_rc 0 "floodfill in half steps $m" "$S" --maze mazes/$m.txt --mms "$A/floodfill.py 2 half" --json
+  [ "$(py "(d['reached_goal'], d['exit_reason'], len(d['laps']), d['collisions'], d['mms']['crashes'], d['mms']['stats']['score'] < 2000)")" = "(True, 'mms_exited', 2, 0, 0, True)" ] \
+    && ok "floodfill in half steps $m: two runs, no crash, no contact" || bad "floodfill in half steps $m: $(cat "$T/out")"
+done
+[ "$(py "(d['mms']['stats']['total_distance'], d['mms']['stats']['best_run_distance'], d['mms']['stats']['best_run_effective_distance'])")" = "(51, 16.5, 15.75)" ] \
+  && ok "half steps: distances in half cells (best run 16.5 cells, effective 15.75)" || bad "half-step stats: $(cat "$T/out")"
+
 # --verbose: the dialogue on stderr with the simulation time
 want_rc 0 "verbose trace" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/wallfollow.py" --verbose
 grep -q '^mms *0\.[0-9]* > moveForward$' "$T/err" && grep -q '^mms *[0-9.]* < ack$' "$T/err" && grep -q '^mms *[0-9.]* > setColor 0 1 g$' "$T/err" \
@@ -36,28 +45,51 @@ grep -q '^mms *0\.[0-9]* > moveForward$' "$T/err" && grep -q '^mms *[0-9.]* < ac
 [ "$(strip "$T/a")" = "$(strip "$T/b")" ] && ok "mms run deterministic" || bad "mms run deterministic"
 "$S" --print-config | sed 's/^tof_cv *=.*/tof_cv = 0/' >"$T/quiet.ini"
 grep -q '^tof_cv = 0$' "$T/quiet.ini" || bad "noise-free config: no tof_cv line"
-for m in gen-8x8-s1 gen-16x16-s2; do
-  "$S" --maze mazes/$m.txt --config "$T/quiet.ini" --mms "$A/floodfill.py 2" --json >"$T/sensed"
-  "$S" --maze mazes/$m.txt --config "$T/quiet.ini" --mms "$A/floodfill.py 2" --mms-ideal-walls --json >"$T/ideal"
+for run in "gen-8x8-s1 2" "gen-16x16-s2 2" "gen-8x8-s1 2 half"; do
+  set -- $run; m=$1; shift
+  "$S" --maze mazes/$m.txt --config "$T/quiet.ini" --mms "$A/floodfill.py $*" --json >"$T/sensed"
+  "$S" --maze mazes/$m.txt --config "$T/quiet.ini" --mms "$A/floodfill.py $*" --mms-ideal-walls --json >"$T/ideal"
   same=$(python3 -c "
 import json
 a, b = (json.loads(open('$T/' + f).read().splitlines()[-1]) for f in ('sensed', 'ideal'))
 keys = ('laps', 'sim_time_s', 'reached_goal', 'collisions', 'final_pose')
 print(a['reached_goal'] and all(a[k] == b[k] for k in keys) and a['mms']['stats'] == b['mms']['stats'] and a['mms']['moves'] == b['mms']['moves'] and b['mms']['ideal_walls'])")
-  [ "$same" = True ] && ok "$m: ideal walls and sensed walls give the same run" || bad "$m ideal vs sensed: $(cat "$T/sensed") $(cat "$T/ideal")"
+  [ "$same" = True ] && ok "$m ($*): ideal walls and sensed walls give the same run" || bad "$m ($*) ideal vs sensed: $(cat "$T/sensed") $(cat "$T/ideal")"
 done
 
 # protocol conformance: every command, valid and invalid (test/mms/conform.py)
-want_rc 1 "conformance client (goal not its aim)" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/conform.py" --mms-reset-at 0.1 --json
+want_rc 0 "conformance client" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/conform.py" --mms-reset-at 0.1 --json
 grep -q '^conform: [0-9]* checks ok$' "$T/err" && ok "conformance: $(grep -o '[0-9]* checks' "$T/err")" || bad "conformance: $(cat "$T/err")"
-[ "$(py "(d['exit_reason'], d['mms']['resets'], d['mms']['colors'], sorted(d['mms']['texts'].items()))")" = "('mms_exited', 1, {'3,3': 'G'}, [('0,1', 'ok'), ('1,1', 'hello worl'), ('2,2', 'a?b?'), ('3,4', 'two  space'), ('4,4', 'abc')])" ] \
-  && ok "colours and texts (10 printable characters, others '?')" || bad "colours/texts: $(cat "$T/out")"
+[ "$(py "(d['exit_reason'], d['reached_goal'], d['collisions'], d['mms']['resets'], d['mms']['stats']['best_run_distance'], d['mms']['colors'], sorted(d['mms']['texts'].items()))")" = "('mms_exited', True, 0, 1, 9.5, {'3,3': 'G'}, [('0,1', 'ok'), ('1,1', 'hello worl'), ('2,2', 'a?b?'), ('3,4', 'two  space'), ('4,4', 'abc')])" ] \
+  && ok "conformance: goal by half steps (9.5 cells), colours and texts (10 printable characters, others '?')" || bad "conformance JSON: $(cat "$T/out")"
 
 # the run report draws the algorithm's colours (floodfill: cyan on its path) and texts
 want_rc 0 "report of an mms run" "$S" --maze mazes/gen-8x8-s1.txt --mms "$A/floodfill.py 2" --report "$T/r.png"
 cyan=$(python3 test/pngcheck.py "$T/r.png" near:00ffff:8)
 [ "${cyan:-0}" -gt 2000 ] && ok "report: cell colours drawn ($cyan cyan pixels)" || bad "report: cyan pixels: $cyan"
 grep -q '>6</text>' "$T/r.svg" && ok "report: cell texts drawn" || bad "report: no cell text in the SVG"
+
+# a wall first sensed during a move of several cells (the north wall of (0,1), unknown at the
+# start): the robot stops at the centre of (0,1) and answers crash; one cell driven
+for mv in "moveForward 2" "moveForwardHalf 3"; do
+  want_rc 1 "wall sensed mid-move: $mv" "$S" --maze mazes/gen-5x5-s1.txt --json \
+    --mms "$A/script.py 'wallFront=false' '$mv=crash' 'getStat total-distance=1' 'getStat total-effective-distance=1' 'wallFront=true' 'wallBack=false'"
+  grep -q '^script: 6 checks ok$' "$T/err" && [ "$(py "(d['mms']['crashes'], d['mms']['moves'], abs(d['final_pose']['y_m'] - 0.27) < 0.01, abs(d['final_pose']['x_m'] - 0.09) < 0.01)")" = "(1, 1, True, True)" ] \
+    && ok "wall sensed mid-move: $mv: crash at the centre of the last free cell" || bad "wall sensed mid-move: $mv: $(cat "$T/err" "$T/out")"
+done
+
+# turned round on a boundary: back into the cell it came from (queries facing back, a refused
+# move through the start's south wall, mms's run rules: back at the start ends the run)
+want_rc 1 "turned round on a boundary" "$S" --maze mazes/gen-5x5-s1.txt --json \
+  --mms "$A/script.py 'moveForwardHalf=ack' 'turnLeft=ack' 'turnLeft=ack' 'wallFront=false' 'wallFront 2=true' 'wallLeft=true' 'wallFrontLeft=true' 'wallFrontRight=true' 'moveForwardHalf 3=crash' 'moveForwardHalf=ack' 'wallFront=true' 'turnLeft=ack' 'turnLeft=ack' 'moveForwardHalf 3=crash' 'moveForwardHalf 2=ack' 'wallFront=true' 'wallLeft=true' 'wallRight=false' 'getStat total-distance=2' 'getStat total-effective-distance=2' 'getStat current-run-distance=1'"
+grep -q '^script: 21 checks ok$' "$T/err" && [ "$(py "(d['collisions'], abs(d['final_pose']['y_m'] - 0.27) < 0.01)")" = "(0, True)" ] \
+  && ok "turned round on a boundary: answers, stats, at (0,1)" || bad "turned round on a boundary: $(cat "$T/err" "$T/out")"
+
+# a robot longer than the firmware thinks (150 mm, not 120): its turns sweep 89 mm and touch the walls
+printf '[robot]\nbody_l_m = 0.15\n' >"$T/long.ini"
+want_rc 0 "a robot too long for its turns" "$S" --maze mazes/gen-5x5-s1.txt --config "$T/long.ini" --mms "$A/wallfollow.py" --json
+[ "$(py "(d['reached_goal'], d['collisions'] > 0, d['mms']['wall_contacts'] == d['collisions'])")" = "(True, True, True)" ] \
+  && ok "physical wall contacts in the JSON ($(py "d['collisions']"))" || bad "wall contacts: $(cat "$T/out")"
 
 # a robot too weak to move (0.5 V battery): the firmware's stall stop answers crash and ends the run
 printf '[motor]\nbattery_v = 0.5\n' >"$T/weak.ini"
@@ -82,6 +114,14 @@ fault 3 mms_flood "floods stdout with invalid lines" "yes"
 fault 3 mms_timeout "floods queries without reading answers" "yes mazeWidth"
 fault 3 mms_garbage "prints an endless line" "cat /dev/zero"
 fault 3 mms_failed "crashes mid-run" "$A/wallfollow.py & sleep 0.2; kill -9 \$!; exit 9"
+# the shell exits but leaves a process behind (its group is killed all the same)
+left() { sleep 0.2; if pgrep -f "sleep $1" >/dev/null; then bad "$2: a process left running"; else ok "$2: nothing left running"; fi; }
+fault 1 mms_exited "exits, a background process without its pipes" "sleep 31.4103 >/dev/null </dev/null & exit 0"
+left 31.4103 "background process without pipes"
+fault 3 mms_timeout "exits, a background process holds its output" "sleep 31.4101 & exit 0"
+grep -q "^mmsim: mms: the algorithm 'sleep 31.4101 & exit 0' exited with status 0, but a process it started keeps its output open and sent no command for 300 ms$" "$T/err" \
+  && ok "background process holds the output: message" || bad "background process holds the output: $(cat "$T/err")"
+left 31.4101 "background process holding the output"
 # mmsim itself killed (SIGTERM): the algorithm's process group goes too
 "$S" --maze mazes/gen-5x5-s1.txt --mms "sleep 31.4157" --mms-timeout-ms 60000 >"$T/out" 2>"$T/err" & mp=$!
 for _ in $(seq 50); do pgrep -f "sleep 31.4157" >/dev/null && break; sleep 0.1; done

@@ -34,10 +34,10 @@ static void test_stats(void **state)
     stat_is(&s, "total-distance", "0");
     assert_int_equal(mms_stats_get(&s, "nope", out, sizeof out), -1);
     mms_stats_start_run(&s);
-    mms_stats_distance(&s, 5); /* README: moveForward(5) = distance 5, effective 3.5 */
+    mms_stats_distance(&s, 10); /* README: moveForward(5) = distance 5, effective 3.5 */
     stat_is(&s, "total-distance", "5");
     stat_is(&s, "current-run-effective-distance", "3.5");
-    mms_stats_distance(&s, 2); /* two cells count fully */
+    mms_stats_distance(&s, 4); /* two cells count fully */
     mms_stats_turn(&s);
     stat_is(&s, "current-run-effective-distance", "5.5");
     mms_stats_finish_run(&s);
@@ -48,14 +48,21 @@ static void test_stats(void **state)
     /* a reset: 15 points on the next run's effective distance */
     mms_stats_reset_penalty(&s);
     mms_stats_end_unfinished(&s);
-    mms_stats_distance(&s, 1); /* not in a run: totals only */
+    mms_stats_distance(&s, 2); /* not in a run: totals only */
     stat_is(&s, "current-run-effective-distance", "5.5");
     mms_stats_start_run(&s);
     stat_is(&s, "current-run-effective-distance", "15");
-    mms_stats_distance(&s, 1);
+    mms_stats_distance(&s, 2);
     mms_stats_finish_run(&s); /* 16 > 6.5: not the best */
     stat_is(&s, "best-run-effective-distance", "5.5");
     stat_is(&s, "total-effective-distance", "22.5");
+    /* half steps: half a cell each; whole cells in getStat (rounded down) */
+    mms_stats_distance(&s, 1);
+    stat_is(&s, "total-distance", "9");
+    stat_is(&s, "total-effective-distance", "23");
+    mms_stats_distance(&s, 5); /* 2.5 cells: 0.5 after the second */
+    stat_is(&s, "total-distance", "12");
+    stat_is(&s, "total-effective-distance", "25.25");
 }
 
 static void setup_maze(void)
@@ -116,6 +123,11 @@ static void test_drawing(void **state)
     assert_string_equal(mm.text[maze_cell(&truth, 2, 1)], "0123456789");
     run("setText 0 0 a b\x01");
     assert_string_equal(mm.text[0], "a b?");
+    /* UTF-8: one '?' per character (2, 3 and 4 bytes), a stray byte alone; 10 characters */
+    run("setText 1 0 \xc3\xa9t\xc3\xa9 \xe2\x82\xac\xf0\x9f\x90\xadx\x80y\xc3z");
+    assert_string_equal(mm.text[maze_cell(&truth, 1, 0)], "?t? ??x?y?");
+    run("setText 1 0 \xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9");
+    assert_string_equal(mm.text[maze_cell(&truth, 1, 0)], "??????????");
     run("clearAllText");
     assert_string_equal(mm.text[0], "");
     run("setWall 1 1 e");

@@ -2,10 +2,14 @@
 """mms test algorithm: floodfill to the centre goal, sensing with
 wallFront/wallLeft/wallRight, drawing walls, colours and distances. With an
 argument N: N runs (back to the start between runs, straights driven as
-moveForward K). Exits 0 at the goal of the last run."""
+moveForward K). With a second argument 'half': every move of K cells is
+driven as moveForwardHalf 1 (onto the boundary, where the posts are checked
+with wallLeft/wallRight/wallBack) then moveForwardHalf 2K-1. Exits 0 at the
+goal of the last run."""
 import sys
 
 runs = int(sys.argv[1]) if len(sys.argv) > 1 else 1
+half = len(sys.argv) > 2 and sys.argv[2] == "half"
 
 
 def cmd(line, answer=True):
@@ -84,7 +88,13 @@ def go(targets, fast):
             while (cx, cy) in seen and (cx, cy, hd) not in wall and (cx, cy) not in targets and \
                     dist.get((cx + step[hd][0], cy + step[hd][1]), 10**9) == dist[(cx, cy)] - 1:
                 cx, cy, n = cx + step[hd][0], cy + step[hd][1], n + 1
-        r = cmd("moveForward" if n == 1 else "moveForward %d" % n)
+        if half:
+            # on a boundary: posts left and right, the open cell behind
+            if cmd("moveForwardHalf") != "ack" or (cmd("wallLeft"), cmd("wallRight"), cmd("wallBack")) != ("true", "true", "false"):
+                sys.exit(3)
+            r = cmd("moveForwardHalf %d" % (2 * n - 1))
+        else:
+            r = cmd("moveForward" if n == 1 else "moveForward %d" % n)
         if r != "ack":
             sys.exit(3)  # walls are sensed before each move: a crash is a fault
         x, y = x + step[hd][0] * n, y + step[hd][1] * n
