@@ -333,14 +333,15 @@ int wire_compat_decode_byte(wire_compat_rx_t *r, uint8_t b, wire_msg_t *out)
     }
     if (r->id == WIRE_C_LOGGER) {
         if (b != 0) {
-            if (r->n >= WIRE_RX_LOG_MAX) { /* overlong: counted, dropped, next byte is an ID again */
+            if (r->n < WIRE_RX_LOG_MAX) r->buf[r->n++] = b;
+            else if (!r->log_overflow) { /* overlong: counted once; the rest up to the NUL is skipped */
+                r->log_overflow = 1;
                 r->stats.overflow++;
-                r->id = 0xFF;
-                return 0;
             }
-            r->buf[r->n++] = b;
             return 0;
         }
+        /* the NUL ends the line (cut to WIRE_RX_LOG_MAX bytes if it overflowed): the next byte is an ID */
+        r->log_overflow = 0;
         memset(out, 0, sizeof *out);
         out->type = WIRE_LOG;
         out->u.log.len = r->n;
