@@ -42,8 +42,9 @@ static void on_connect(link_t *l)
     wire_compat_tx_init(&l->ctx, l->tof_range_mm);
     l->ctx.enc_sent[0] = l->ctx.enc_sent[1] = INT32_MIN; /* set from the first reading sent */
     l->motor[0] = l->motor[1] = 0;
-    l->running = 1;
-    l->sensors_on = l->o.protocol != LINK_COMPAT; /* compat: nothing until requestEnableSensors, as in the paper */
+    l->running = 1; /* motors stay 0 until the MCU's first command on this connection */
+    /* sensors_on is kept: a board that is not reset when the port opens
+     * does not ask again (init_common sets the state at open) */
     l->hello_ok = l->o.protocol == LINK_COMPAT; /* compat has no handshake */
     l->silent = 0;
     l->enc_every = 1;
@@ -80,7 +81,7 @@ static void init_common(link_t *l, const link_opts_t *o, double step_s, uint16_t
     l->tof_range_mm = range_mm;
     l->counts_per_rev_x100 = cpr_x100;
     l->report = report;
-    l->sensors_on = 1;
+    l->sensors_on = o->protocol != LINK_COMPAT; /* compat: nothing until requestEnableSensors, as in the paper */
     l->credit_step = (uint64_t)l->o.baud * (uint64_t)llround(step_s * 1e6);
     l->credit_cap = l->credit_step + BYTE_COST;
     uint64_t cap = 4 * l->credit_step / BYTE_COST;
@@ -159,6 +160,10 @@ static void handle(link_t *l, const wire_msg_t *m)
     }
     switch (m->type) {
     case WIRE_MOTOR:
+        if (!l->running && l->o.protocol == LINK_COMPAT) { /* stopped: ignored, not kept for start */
+            l->crx.motor[0] = l->crx.motor[1] = 0;
+            break;
+        }
         l->motor[0] = m->u.motor.left;
         l->motor[1] = m->u.motor.right;
         break;
@@ -187,7 +192,15 @@ static void handle(link_t *l, const wire_msg_t *m)
     case WIRE_SENSORS: l->sensors_on = m->u.flag.on; break;
     case WIRE_RUN:
         l->running = m->u.flag.on;
-        if (!m->u.flag.on) {
+        if (m->u.flag.on) break;
+        if (l->o.protocol == LINK_COMPAT) { /* the paper's stop: the robot, not the simulator */
+            /* both sides' last commands forgotten: after start, a side not
+             * commanded again stays at 0 */
+            l->motor[0] = l->motor[1] = 0;
+            l->crx.motor[0] = l->crx.motor[1] = 0;
+            l->st.halts++;
+            say(l, "MCU stopped the robot: motors off until start");
+        } else {
             l->st.stops++;
             say(l, "MCU stopped the run");
         }
@@ -376,5 +389,7 @@ json_t *link_json(const link_t *l)
                           "disconnects", (int)l->st.disconnects, "connects", (int)l->st.connects, "mcu_log_lines",
                           (int)l->st.logs, "decoder", dec);
     json_object_set_new(j, "handshake", json_boolean(l->hello_ok));
+    json_object_set_new(j, "mcu_stops", json_integer(l->st.stops + l->st.halts));
+    json_object_set_new(j, "sensors_on", json_boolean(l->sensors_on));
     return j;
 }

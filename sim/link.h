@@ -37,7 +37,8 @@ typedef struct {
     uint64_t tx_blocked_bytes;           /* bytes the budget allowed but the OS did not take */
     uint64_t steps;                      /* physics steps seen */
     uint32_t silences, disconnects, connects, logs;
-    uint32_t stops;                      /* RUN stop received (mmsim ends the run) */
+    uint32_t stops;                      /* framed RUN stop received (mmsim ends the run) */
+    uint32_t halts;                      /* compat ID 7 value 0 (stop): motors held at 0 until start */
 } link_stats_t;
 
 /* What the link reads from and writes to each step (sim-independent, so the
@@ -66,8 +67,9 @@ typedef struct link_s {
     wire_compat_rx_t crx;
     wire_compat_tx_t ctx;
     int16_t motor[2];         /* latest command received */
-    int running;              /* RUN start (default) / stop */
-    int sensors_on;           /* SENSORS enable (default) / disable */
+    int running;              /* RUN start (default, and at each connection) / stop */
+    int sensors_on;           /* SENSORS enable / disable: the MCU's last request, kept over
+                                 reconnects; at open on in framed, off in compat */
     int hello_ok;             /* framed: MCU HELLO with our version seen */
     int silent;
     uint32_t enc_every;       /* framed: ENCODER every this many steps (the MCU's tick, from its HELLO) */

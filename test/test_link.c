@@ -1,7 +1,8 @@
 /* test_link.c - the simulator's link end over a socketpair (the other end
  * plays the MCU): byte budget per step at the baud, queue drops, handshake,
- * silence timeout, compat manager messages, receive pacing, garbage,
- * disconnect. No physics: link_step_io with made-up readings. */
+ * silence timeout, compat manager messages (stop stops the robot, not the
+ * run), receive pacing, garbage, disconnect; over a pty: compat's sensor
+ * request kept over a reconnect. No physics: link_step_io with made-up readings. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -10,6 +11,7 @@
 #include <signal.h>
 #include <sys/socket.h>
 #include <fcntl.h>
+#include <termios.h>
 #include <unistd.h>
 #include <cmocka.h>
 
@@ -197,11 +199,12 @@ static void test_handshake_and_motor(void **state)
     step(0, mo);
     assert_int_equal(mo[0], 77);
     assert_int_equal(wire_stats_errors(&lk.dec.stats), 3);
-    /* run stop / start */
+    /* run stop / start (framed stop: mmsim ends the run) */
     wire_msg_t run = { .type = WIRE_RUN, .u.flag = { 0 } };
     send_msg(&run);
     step(0, mo);
     assert_int_equal(mo[0], 0);
+    assert_int_equal(lk.st.stops, 1);
     run.u.flag.on = 1;
     send_msg(&run);
     step(0, mo);
@@ -228,6 +231,26 @@ static void test_compat_manager_and_pacing(void **state)
     step(0, mo);
     assert_int_equal(mo[0], 100);
     assert_int_equal(mo[1], -100);
+    /* ID 7 value 0 (stop) stops the robot, not the run: motors 0 while
+     * commands arrive, until start; then a side drives from its next command */
+    static const uint8_t stop[] = { 7, 0 }, start[] = { 7, 1 }, left[] = { 5, 0x32, 0x00 };
+    assert_int_equal(write(peer, stop, 2), 2);
+    step(0, mo);
+    assert_int_equal(mo[0], 0);
+    assert_int_equal(write(peer, motor, 6), 6);
+    step(0, mo);
+    assert_int_equal(mo[0], 0);
+    assert_int_equal(mo[1], 0);
+    assert_int_equal(lk.st.halts, 1);
+    assert_int_equal(lk.st.stops, 0); /* mmsim ends the run on stops only */
+    assert_int_equal(write(peer, start, 2), 2);
+    assert_int_equal(write(peer, left, 3), 3);
+    step(0, mo);
+    assert_int_equal(mo[0], 50);
+    assert_int_equal(mo[1], 0); /* the right side's 100 before the stop is forgotten */
+    assert_int_equal(write(peer, motor, 6), 6);
+    step(0, mo);
+    assert_int_equal(mo[1], -100);
     /* 1,200 bytes at once: read at the baud, not faster */
     for (size_t i = 0; i < sizeof b; i += 2) { b[i] = 7; b[i + 1] = 2; }
     assert_int_equal(write(peer, b, sizeof b), (ssize_t)sizeof b);
@@ -235,7 +258,7 @@ static void test_compat_manager_and_pacing(void **state)
     step(0, mo);
     assert_true(lk.st.rx_bytes - before <= 12);
     for (int s = 0; s < 200; s++) step(0, mo);
-    assert_int_equal(lk.st.rx_bytes, 10 + sizeof b);
+    assert_int_equal(lk.st.rx_bytes, 29 + sizeof b);
     /* the MCU unplugged: motors off, reported */
     close(peer);
     peer = -1;
@@ -304,6 +327,58 @@ static void test_faults_through_link(void **state)
     close_pair();
 }
 
+/* the MCU's end of a --pty link: opens the slave, raw */
+static int open_slave(void)
+{
+    int fd = open(lk.path, O_RDWR | O_NOCTTY | O_NONBLOCK);
+    assert_true(fd >= 0);
+    struct termios t;
+    assert_int_equal(tcgetattr(fd, &t), 0);
+    cfmakeraw(&t);
+    assert_int_equal(tcsetattr(fd, TCSANOW, &t), 0);
+    return fd;
+}
+
+/* Compat over a pty, the MCU unplugs and plugs back without asking for the
+ * sensors again (a board not reset when the port opens): the link keeps its
+ * last request, so readings flow again; a disable is kept as well. */
+static void test_compat_reconnect_keeps_sensors(void **state)
+{
+    uint8_t buf[4096];
+    int16_t mo[2];
+    char err[300];
+    link_opts_t o = { NULL, 1, 115200, LINK_COMPAT, 10.0 };
+    if (link_open(&lk, &o, 0.001, 1200, 35832, NULL, err, sizeof err) != 0) skip(); /* no pseudo-terminals here */
+    step(0, mo);
+    assert_int_equal(lk.connected, 0); /* nobody has the terminal open */
+    int fd = open_slave();
+    static const uint8_t enable[] = { 7, 2 }, disable[] = { 7, 3 };
+    assert_int_equal(write(fd, enable, 2), 2);
+    for (int s = 0; s < 50; s++) step(s, mo);
+    assert_int_equal(lk.sensors_on, 1);
+    assert_true(read(fd, buf, sizeof buf) > 100);
+    close(fd); /* unplug */
+    for (int s = 0; s < 5; s++) step(s, mo);
+    assert_int_equal(lk.connected, 0);
+    fd = open_slave(); /* plug back, no enable */
+    for (int s = 0; s < 50; s++) step(s, mo);
+    assert_int_equal(lk.st.connects, 2);
+    assert_int_equal(step(0, mo), 1);
+    assert_true(read(fd, buf, sizeof buf) > 100);
+    assert_int_equal(write(fd, disable, 2), 2);
+    for (int s = 0; s < 5; s++) step(s, mo);
+    read(fd, buf, sizeof buf); /* what was sent before the disable arrived (a pty keeps it over a reopen) */
+    close(fd);
+    for (int s = 0; s < 5; s++) step(s, mo);
+    fd = open_slave();
+    for (int s = 0; s < 50; s++) step(s, mo);
+    assert_int_equal(lk.st.connects, 3);
+    assert_int_equal(step(0, mo), 0);
+    assert_true(read(fd, buf, sizeof buf) <= 0); /* still disabled: nothing sent */
+    close(fd);
+    link_close(&lk);
+}
+
 int main(void)
 {
     signal(SIGPIPE, SIG_IGN); /* a socket peer gone: EPIPE, as a tty gives EIO */
@@ -313,6 +388,7 @@ int main(void)
         cmocka_unit_test(test_handshake_and_motor),
         cmocka_unit_test(test_compat_manager_and_pacing),
         cmocka_unit_test(test_faults_through_link),
+        cmocka_unit_test(test_compat_reconnect_keeps_sensors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
