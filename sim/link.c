@@ -278,6 +278,10 @@ int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2])
         m.u.distance.sensor = i;
         m.u.distance.timeout = in->tof_timeout[i] ? 1 : 0;
         m.u.distance.mm = in->tof_mm[i];
+        if (l->o.protocol == LINK_COMPAT && in->tof_m[i] > 0 && l->tof_range_mm) { /* from metres, not mm */
+            double v = round(in->tof_m[i] * 1000.0 / l->tof_range_mm * 65535.0);
+            m.u.distance.compat = (uint16_t)(v > 65534.0 ? 65534.0 : v); /* 0 (under 9 um) scales mm: 0 too */
+        }
         enqueue(l, &m);
     }
 
@@ -362,6 +366,7 @@ void link_step(link_t *l, struct sim_s *s)
         if (l->tof_seen[i] != UINT64_MAX && s->tof_count[i] != l->tof_seen[i]) {
             io.tof_new[i] = 1;
             io.tof_mm[i] = (uint16_t)lround(s->tof_last[i].dist_m * 1000.0);
+            io.tof_m[i] = s->tof_last[i].dist_m;
             io.tof_timeout[i] = (uint8_t)s->tof_last[i].timeout;
         }
         l->tof_seen[i] = (uint64_t)s->tof_count[i];

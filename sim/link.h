@@ -48,6 +48,8 @@ typedef struct {
     int32_t encoder[2];         /* accumulated counts */
     uint8_t tof_new[3];         /* 1 = this sensor took a reading this step (HAL order) */
     uint16_t tof_mm[3];
+    double tof_m[3];            /* the same reading unrounded, m (compat scales it: 18 um a count
+                                   at 1.2 m); 0 = use tof_mm */
     uint8_t tof_timeout[3];
 } link_io_t;
 

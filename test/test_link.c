@@ -11,6 +11,7 @@
 #include <signal.h>
 #include <sys/socket.h>
 #include <fcntl.h>
+#include <math.h>
 #include <termios.h>
 #include <unistd.h>
 #include <cmocka.h>
@@ -327,6 +328,50 @@ static void test_faults_through_link(void **state)
     close_pair();
 }
 
+/* Compat distances are scaled from the true metres, not from whole mm:
+ * round(d / 1.2 m * 65535) exactly (one count = 18 um), a real reading at
+ * or past the range 65534, a timeout 65535; the MCU's decoder gives both
+ * the u16 and mm. */
+static void test_compat_distance_from_metres(void **state)
+{
+    static const double d_m[] = { 0.123456, 0.0004, 0.05, 0.0907, 0.18, 0.6, 1.19999, 1.2, 1.5, -1 /* timeout */ };
+    uint8_t buf[256];
+    int16_t mo[2];
+    wire_compat_rx_t rx;
+    wire_msg_t m;
+    open_pair(LINK_COMPAT, 115200, 10.0);
+    static const uint8_t enable[] = { 7, 2 };
+    assert_int_equal(write(peer, enable, 2), 2);
+    step(0, mo);
+    drain(buf, sizeof buf);
+    wire_compat_rx_init(&rx, 1200);
+    for (size_t k = 0; k < sizeof d_m / sizeof d_m[0]; k++) {
+        link_io_t io;
+        memset(&io, 0, sizeof io);
+        io.tof_new[WIRE_SENSOR_FRONT] = 1;
+        io.tof_timeout[WIRE_SENSOR_FRONT] = d_m[k] < 0;
+        io.tof_m[WIRE_SENSOR_FRONT] = d_m[k] < 0 ? 1.2 : d_m[k];
+        io.tof_mm[WIRE_SENSOR_FRONT] = (uint16_t)lround(io.tof_m[WIRE_SENSOR_FRONT] * 1000.0);
+        link_step_io(&lk, &io, mo);
+        size_t n = drain(buf, sizeof buf);
+        long want = d_m[k] < 0 ? 65535 : lround(d_m[k] / 1.2 * 65535.0);
+        if (want > 65534 && d_m[k] >= 0) want = 65534;
+        int seen = 0;
+        for (size_t i = 0; i < n; i++)
+            if (wire_compat_decode_byte(&rx, buf[i], &m) && m.type == WIRE_DISTANCE) {
+                seen++;
+                assert_int_equal(m.u.distance.compat, want);
+                assert_int_equal(m.u.distance.timeout, d_m[k] < 0);
+                assert_int_equal(m.u.distance.mm, d_m[k] < 0 ? 1200 : lround(want * 1200.0 / 65535.0));
+            }
+        assert_int_equal(seen, 1);
+    }
+    /* 0.123456 m from whole mm was 6717 (123 mm), 25 counts short of 6742 */
+    assert_int_equal(lround(0.123456 / 1.2 * 65535.0), 6742);
+    assert_int_equal(wire_stats_errors(&rx.stats), 0);
+    close_pair();
+}
+
 /* the MCU's end of a --pty link: opens the slave, raw */
 static int open_slave(void)
 {
@@ -389,6 +434,7 @@ int main(void)
         cmocka_unit_test(test_compat_manager_and_pacing),
         cmocka_unit_test(test_faults_through_link),
         cmocka_unit_test(test_compat_reconnect_keeps_sensors),
+        cmocka_unit_test(test_compat_distance_from_metres),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -348,6 +348,14 @@ static void test_compat_details(void **state)
     m = (wire_msg_t){ .type = WIRE_DISTANCE, .u.distance = { 0, WIRE_SENSOR_LEFT, 0, 5000 } };
     assert_int_equal(wire_compat_encode(&tx, &m, b, sizeof b), 3);
     assert_int_equal(b[1] | b[2] << 8, 65534);
+    /* the sender's own scaling (finer than mm) goes as is, never as 65535 */
+    m.u.distance.mm = 123;
+    m.u.distance.compat = 6742; /* 0.123456 m of 1.2 */
+    wire_compat_encode(&tx, &m, b, sizeof b);
+    assert_int_equal(b[1] | b[2] << 8, 6742);
+    m.u.distance.compat = 65535;
+    wire_compat_encode(&tx, &m, b, sizeof b);
+    assert_int_equal(b[1] | b[2] << 8, 65534);
     /* motor clamping on receive (the paper clamps to +-1023) */
     static const uint8_t big[] = { 5, 0x10, 0x27, 6, 0xF0, 0xD8 }; /* +10000, -10000 */
     k = 0;

@@ -76,6 +76,10 @@ typedef struct {
             uint8_t sensor;         /* WIRE_SENSOR_* */
             uint8_t timeout;        /* 1 = nothing within range */
             uint16_t mm;            /* distance, mm */
+            uint16_t compat;        /* compat's u16, round(d / range * 65535), 65535 = timeout:
+                                       the decoder fills it; the encoder sends it for a
+                                       reading when non-zero (finer than mm), else scales mm.
+                                       Not in framed frames. */
         } distance;
         struct {
             uint8_t on;             /* 1 enable, 0 disable (SENSORS); 1 start, 0 stop (RUN) */
