@@ -46,6 +46,7 @@ static void on_connect(link_t *l)
     /* sensors_on is kept: a board that is not reset when the port opens
      * does not ask again (init_common sets the state at open) */
     l->hello_ok = l->o.protocol == LINK_COMPAT; /* compat has no handshake */
+    l->hello_reply = 0;
     l->silent = 0;
     l->enc_every = 1;
     l->last_rx_step = l->step;
@@ -183,6 +184,7 @@ static void handle(link_t *l, const wire_msg_t *m)
                      m->u.hello.tof_range_mm != l->tof_range_mm || m->u.hello.counts_per_rev_x100 != l->counts_per_rev_x100
                          ? " (MISMATCH with the simulator's robot)" : "");
             say(l, line);
+            l->hello_reply = 1; /* an MCU that missed our first HELLO (still booting) gets one now */
         }
         l->hello_ok = 1;
         /* no point sending encoders faster than the MCU's control tick */
@@ -250,7 +252,8 @@ int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2])
         l->ctx.enc_sent[0] = in->encoder[0];
         l->ctx.enc_sent[1] = in->encoder[1];
     }
-    if (!l->hello_ok && l->o.protocol == LINK_FRAMED && l->step >= l->next_hello_step) {
+    if (l->o.protocol == LINK_FRAMED && ((!l->hello_ok && l->step >= l->next_hello_step) || l->hello_reply)) {
+        l->hello_reply = 0;
         memset(&m, 0, sizeof m);
         m.type = WIRE_HELLO;
         m.u.hello.version = WIRE_VERSION;

@@ -73,6 +73,7 @@ typedef struct link_s {
     int sensors_on;           /* SENSORS enable / disable: the MCU's last request, kept over
                                  reconnects; at open on in framed, off in compat */
     int hello_ok;             /* framed: MCU HELLO with our version seen */
+    int hello_reply;          /* framed: send our HELLO once more (the MCU's first arrived) */
     int silent;
     uint32_t enc_every;       /* framed: ENCODER every this many steps (the MCU's tick, from its HELLO) */
     uint64_t step, last_rx_step, next_hello_step, next_retry_step;

@@ -4,6 +4,7 @@
 #  - the whole mouse firmware (Mega 2560 image, 5x5, framed, 1 Mbaud) drives the
 #    robot from the start to the goal of a 5x5 maze; same run twice = same JSON;
 #    the whole contest ends by the runner's RUN stop (exit 0), no tick overran;
+#    the MCU logs a sim HELLO that differs from its build (ToF range);
 #  - the whole mouse on the Uno (ATmega328P, 2 KB SRAM), 16x16: static RAM
 #    within 1,536 B, the stack measured in simavr clear of .bss, a whole
 #    contest (search, proof, 3 speed runs) ended by RUN stop, no tick overran;
@@ -49,6 +50,15 @@ print(d['exit_reason'], len(d['laps']) >= 2, d['sim_time_s'] < 60)" "$T/out" 2>&
 [ "$got" = "mcu_stopped True True" ] && ok "whole contest ends by RUN stop" || bad "whole contest: $got"
 grep -q "^mcu: contest done" "$T/err" && grep -q "^mcu: runner: 250 Hz tick, 0 overruns" "$T/err" \
   && ok "runner report: no tick overran" || bad "runner report: $(grep -v 'sensed cell' "$T/err" | tail -5)"
+grep -q "hello differs\|MISMATCH" "$T/err" && bad "a hello mismatch reported: $(grep 'hello' "$T/err")" || ok "no hello mismatch"
+
+# the MCU checks the simulator's HELLO: a sim whose ToF range is 1.0 m (the
+# paper's Arduino side) gets one log line from it (the sim answers the MCU's
+# HELLO with its own, so an MCU that missed the first, still booting, learns it)
+"$S" --print-config | sed 's/^tof_range_m *=.*/tof_range_m = 1.0/' >"$T/r1.ini"
+want_rc 1 "AVR mouse, sim ToF range 1.0 m" "$S" --maze $M --config "$T/r1.ini" --avr "$MOUSE" --mcu atmega2560 --time-limit 1 --verbose
+[ "$(grep -c '^mcu: sim hello differs: protocol 1, ToF 1000 mm (MCU: 1, 1200 mm)$' "$T/err")" = 1 ] \
+  && ok "MCU logs the sim's ToF range mismatch once" || bad "MCU hello check: $(grep -v 'sensed cell' "$T/err" | head -5)"
 
 # the Uno: avr-size's data + bss within the issue's 1,536 B; in simavr (SRAM
 # painted at load) the stack's deepest point stays above .bss, with >= 64 B
