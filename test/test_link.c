@@ -11,6 +11,7 @@
 #include <signal.h>
 #include <sys/socket.h>
 #include <fcntl.h>
+#include <poll.h>
 #include <math.h>
 #include <termios.h>
 #include <unistd.h>
@@ -384,42 +385,92 @@ static int open_slave(void)
     return fd;
 }
 
+/* A pty moves bytes through the kernel's tty buffers asynchronously: the
+ * helpers below step the link until a condition holds, 1 ms apart, giving up
+ * after PTY_TRIES (a bound for a loaded machine, not a timing check). */
+enum { PTY_TRIES = 5000 };
+static int16_t pty_mo[2];
+
+/* step until lk's sensor request is on (1) / off (0); whether it got there */
+static int step_until_sensors(int on)
+{
+    for (int i = 0; i < PTY_TRIES && lk.sensors_on != on; i++) {
+        step(0, pty_mo);
+        usleep(1000);
+    }
+    return lk.sensors_on == on;
+}
+
+/* step until the link is connected (1) / not (0) */
+static int step_until_connected(int on)
+{
+    for (int i = 0; i < PTY_TRIES && lk.connected != on; i++) {
+        step(0, pty_mo);
+        usleep(1000);
+    }
+    return lk.connected == on;
+}
+
+/* step and read fd until want bytes arrived; the bytes read */
+static size_t step_read(int fd, size_t want)
+{
+    uint8_t buf[4096];
+    size_t got = 0;
+    for (int i = 0; i < PTY_TRIES && got < want; i++) {
+        step(0, pty_mo);
+        ssize_t k = read(fd, buf, sizeof buf);
+        if (k > 0) got += (size_t)k;
+        else usleep(1000);
+    }
+    return got;
+}
+
+/* read fd until nothing arrives for 50 ms; the bytes read */
+static size_t drain_quiet(int fd)
+{
+    uint8_t buf[4096];
+    size_t got = 0;
+    struct pollfd p = { fd, POLLIN, 0 };
+    while (poll(&p, 1, 50) > 0) {
+        ssize_t k = read(fd, buf, sizeof buf);
+        if (k <= 0) break;
+        got += (size_t)k;
+    }
+    return got;
+}
+
 /* Compat over a pty, the MCU unplugs and plugs back without asking for the
  * sensors again (a board not reset when the port opens): the link keeps its
  * last request, so readings flow again; a disable is kept as well. */
 static void test_compat_reconnect_keeps_sensors(void **state)
 {
-    uint8_t buf[4096];
-    int16_t mo[2];
     char err[300];
     link_opts_t o = { NULL, 1, 115200, LINK_COMPAT, 10.0 };
     if (link_open(&lk, &o, 0.001, 1200, 35832, NULL, err, sizeof err) != 0) skip(); /* no pseudo-terminals here */
-    step(0, mo);
+    step(0, pty_mo);
     assert_int_equal(lk.connected, 0); /* nobody has the terminal open */
     int fd = open_slave();
     static const uint8_t enable[] = { 7, 2 }, disable[] = { 7, 3 };
     assert_int_equal(write(fd, enable, 2), 2);
-    for (int s = 0; s < 50; s++) step(s, mo);
-    assert_int_equal(lk.sensors_on, 1);
-    assert_true(read(fd, buf, sizeof buf) > 100);
+    assert_true(step_until_sensors(1));
+    assert_true(step_read(fd, 100) >= 100);
     close(fd); /* unplug */
-    for (int s = 0; s < 5; s++) step(s, mo);
-    assert_int_equal(lk.connected, 0);
+    assert_true(step_until_connected(0));
+    assert_int_equal(lk.sensors_on, 1);
     fd = open_slave(); /* plug back, no enable */
-    for (int s = 0; s < 50; s++) step(s, mo);
+    assert_true(step_until_connected(1));
     assert_int_equal(lk.st.connects, 2);
-    assert_int_equal(step(0, mo), 1);
-    assert_true(read(fd, buf, sizeof buf) > 100);
+    assert_true(step_read(fd, 100) >= 100); /* readings without a new request */
     assert_int_equal(write(fd, disable, 2), 2);
-    for (int s = 0; s < 5; s++) step(s, mo);
-    read(fd, buf, sizeof buf); /* what was sent before the disable arrived (a pty keeps it over a reopen) */
+    assert_true(step_until_sensors(0));
+    drain_quiet(fd); /* what was sent before the disable arrived (a pty keeps it over a reopen) */
     close(fd);
-    for (int s = 0; s < 5; s++) step(s, mo);
+    assert_true(step_until_connected(0));
     fd = open_slave();
-    for (int s = 0; s < 50; s++) step(s, mo);
+    assert_true(step_until_connected(1));
     assert_int_equal(lk.st.connects, 3);
-    assert_int_equal(step(0, mo), 0);
-    assert_true(read(fd, buf, sizeof buf) <= 0); /* still disabled: nothing sent */
+    for (int s = 0; s < 50; s++) assert_int_equal(step(0, pty_mo), 0);
+    assert_int_equal(drain_quiet(fd), 0); /* still disabled: nothing sent */
     close(fd);
     link_close(&lk);
 }
