@@ -39,6 +39,13 @@ WRAP_test_firmware := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros -Wl,--wrap=hal_mo
 	-Wl,--wrap=hal_encoder -Wl,--wrap=hal_distance
 # Extra sources a test links (shared test vectors).
 EXTRA_test_wire := test/wire_vectors.c
+# The MCU's decoder buffers (see ARD_RAM): a build for an MCU takes no LOG.
+MCU_RX_FLAGS := -DWIRE_RX_LOG_MAX=14
+# test_wire again with the MCU's decoder buffers, so its fault runs check the
+# decoder as shipped: its own wire.c with the flag (libmm_san's has the host's).
+TESTS += $(B)/test/test_wire_rx14
+SRC_test_wire_rx14 := test/test_wire.c
+EXTRA_test_wire_rx14 := $(EXTRA_test_wire) hal/wire/wire.c $(MCU_RX_FLAGS)
 
 .PHONY: all deps test test-run sim sim-run bench bench-run fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay view docs-img
 all: tools
@@ -84,6 +91,10 @@ $(B)/libmm_san.a: $(patsubst %.c,$(B)/san/%.o,$(LIB_SRC))
 $(B)/test/%: test/%.c $(B)/libmm_san.a test/wire_vectors.c
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(EXTRA_$*) $(WRAP_$*) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
+# a test built from another test's source (SRC_name) with its own EXTRA_name
+$(B)/test/test_wire_rx14: $(SRC_test_wire_rx14) $(B)/libmm_san.a test/wire_vectors.c hal/wire/wire.c hal/wire/wire.h
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $(SRC_$(@F)) $(EXTRA_$(@F)) $(WRAP_$(@F)) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
 $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
@@ -121,7 +132,7 @@ firmware: firmware-size arduino
 # The wire codec's shared vectors on the ATmega328P, run in simavr by test/cli_hil.sh.
 $(B)/avr/wire_selftest.elf: test/avr_wire.c test/wire_vectors.c hal/wire/wire.c hal/wire/wire.h | deps
 	@mkdir -p $(dir $@)
-	$(AVR_CC) -mmcu=atmega328p -DF_CPU=16000000L -Os -std=c99 -Wall -Wextra -ffunction-sections -fdata-sections \
+	$(AVR_CC) -mmcu=atmega328p -DF_CPU=16000000L -Os -std=c99 -Wall -Wextra -ffunction-sections -fdata-sections $(MCU_RX_FLAGS) \
 	  -Ihal/wire -Itest -Wl,--gc-sections test/avr_wire.c test/wire_vectors.c hal/wire/wire.c -o $@
 
 # ---- Arduino builds: hal/arduino + firmware/ + Debian's arduino-core-avr, for the
@@ -135,7 +146,7 @@ ARD_EXAMPLES := Mouse DriveToWall
 # the link's decoder holds the sim's messages only (20 B, not 86: no LOG),
 # the core's serial transmit buffer is 32 B (the receive buffer stays 64: up
 # to ~60 B of sensor frames arrive per 4 ms tick)
-ARD_RAM      := -DWIRE_RX_LOG_MAX=14 -DSERIAL_TX_BUFFER_SIZE=32
+ARD_RAM      := $(MCU_RX_FLAGS) -DSERIAL_TX_BUFFER_SIZE=32
 ARD_COMMON   := -DF_CPU=16000000L -DARDUINO=10819 -DARDUINO_ARCH_AVR -Os -ffunction-sections -fdata-sections \
 	-DMAZE_MAX_SIZE=16 $(ARD_RAM) -I$(ARD_CORE) -Ihal -Ihal/wire -Ihal/arduino/src -Ifirmware
 ARD_CXX      := -std=gnu++11 -fno-exceptions -fno-threadsafe-statics -fpermissive -DDECIMAL_DIG=__DECIMAL_DIG__

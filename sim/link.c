@@ -42,9 +42,11 @@ static void on_connect(link_t *l)
     wire_compat_tx_init(&l->ctx, l->tof_range_mm);
     l->ctx.enc_sent[0] = l->ctx.enc_sent[1] = INT32_MIN; /* set from the first reading sent */
     l->motor[0] = l->motor[1] = 0;
-    l->running = 1;
-    l->sensors_on = l->o.protocol != LINK_COMPAT; /* compat: nothing until requestEnableSensors, as in the paper */
+    l->running = 1; /* motors stay 0 until the MCU's first command on this connection */
+    /* sensors_on is kept: a board that is not reset when the port opens
+     * does not ask again (init_common sets the state at open) */
     l->hello_ok = l->o.protocol == LINK_COMPAT; /* compat has no handshake */
+    l->hello_reply = 0;
     l->silent = 0;
     l->enc_every = 1;
     l->last_rx_step = l->step;
@@ -80,7 +82,7 @@ static void init_common(link_t *l, const link_opts_t *o, double step_s, uint16_t
     l->tof_range_mm = range_mm;
     l->counts_per_rev_x100 = cpr_x100;
     l->report = report;
-    l->sensors_on = 1;
+    l->sensors_on = o->protocol != LINK_COMPAT; /* compat: nothing until requestEnableSensors, as in the paper */
     l->credit_step = (uint64_t)l->o.baud * (uint64_t)llround(step_s * 1e6);
     l->credit_cap = l->credit_step + BYTE_COST;
     uint64_t cap = 4 * l->credit_step / BYTE_COST;
@@ -159,6 +161,10 @@ static void handle(link_t *l, const wire_msg_t *m)
     }
     switch (m->type) {
     case WIRE_MOTOR:
+        if (!l->running && l->o.protocol == LINK_COMPAT) { /* stopped: ignored, not kept for start */
+            l->crx.motor[0] = l->crx.motor[1] = 0;
+            break;
+        }
         l->motor[0] = m->u.motor.left;
         l->motor[1] = m->u.motor.right;
         break;
@@ -178,6 +184,7 @@ static void handle(link_t *l, const wire_msg_t *m)
                      m->u.hello.tof_range_mm != l->tof_range_mm || m->u.hello.counts_per_rev_x100 != l->counts_per_rev_x100
                          ? " (MISMATCH with the simulator's robot)" : "");
             say(l, line);
+            l->hello_reply = 1; /* an MCU that missed our first HELLO (still booting) gets one now */
         }
         l->hello_ok = 1;
         /* no point sending encoders faster than the MCU's control tick */
@@ -187,7 +194,15 @@ static void handle(link_t *l, const wire_msg_t *m)
     case WIRE_SENSORS: l->sensors_on = m->u.flag.on; break;
     case WIRE_RUN:
         l->running = m->u.flag.on;
-        if (!m->u.flag.on) {
+        if (m->u.flag.on) break;
+        if (l->o.protocol == LINK_COMPAT) { /* the paper's stop: the robot, not the simulator */
+            /* both sides' last commands forgotten: after start, a side not
+             * commanded again stays at 0 */
+            l->motor[0] = l->motor[1] = 0;
+            l->crx.motor[0] = l->crx.motor[1] = 0;
+            l->st.halts++;
+            say(l, "MCU stopped the robot: motors off until start");
+        } else {
             l->st.stops++;
             say(l, "MCU stopped the run");
         }
@@ -237,7 +252,8 @@ int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2])
         l->ctx.enc_sent[0] = in->encoder[0];
         l->ctx.enc_sent[1] = in->encoder[1];
     }
-    if (!l->hello_ok && l->o.protocol == LINK_FRAMED && l->step >= l->next_hello_step) {
+    if (l->o.protocol == LINK_FRAMED && ((!l->hello_ok && l->step >= l->next_hello_step) || l->hello_reply)) {
+        l->hello_reply = 0;
         memset(&m, 0, sizeof m);
         m.type = WIRE_HELLO;
         m.u.hello.version = WIRE_VERSION;
@@ -265,6 +281,10 @@ int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2])
         m.u.distance.sensor = i;
         m.u.distance.timeout = in->tof_timeout[i] ? 1 : 0;
         m.u.distance.mm = in->tof_mm[i];
+        if (l->o.protocol == LINK_COMPAT && in->tof_m[i] > 0 && l->tof_range_mm) { /* from metres, not mm */
+            double v = round(in->tof_m[i] * 1000.0 / l->tof_range_mm * 65535.0);
+            m.u.distance.compat = (uint16_t)(v > 65534.0 ? 65534.0 : v); /* 0 (under 9 um) scales mm: 0 too */
+        }
         enqueue(l, &m);
     }
 
@@ -349,6 +369,7 @@ void link_step(link_t *l, struct sim_s *s)
         if (l->tof_seen[i] != UINT64_MAX && s->tof_count[i] != l->tof_seen[i]) {
             io.tof_new[i] = 1;
             io.tof_mm[i] = (uint16_t)lround(s->tof_last[i].dist_m * 1000.0);
+            io.tof_m[i] = s->tof_last[i].dist_m;
             io.tof_timeout[i] = (uint8_t)s->tof_last[i].timeout;
         }
         l->tof_seen[i] = (uint64_t)s->tof_count[i];
@@ -376,5 +397,7 @@ json_t *link_json(const link_t *l)
                           "disconnects", (int)l->st.disconnects, "connects", (int)l->st.connects, "mcu_log_lines",
                           (int)l->st.logs, "decoder", dec);
     json_object_set_new(j, "handshake", json_boolean(l->hello_ok));
+    json_object_set_new(j, "mcu_stops", json_integer(l->st.stops + l->st.halts));
+    json_object_set_new(j, "sensors_on", json_boolean(l->sensors_on));
     return j;
 }

@@ -37,7 +37,8 @@ typedef struct {
     uint64_t tx_blocked_bytes;           /* bytes the budget allowed but the OS did not take */
     uint64_t steps;                      /* physics steps seen */
     uint32_t silences, disconnects, connects, logs;
-    uint32_t stops;                      /* RUN stop received (mmsim ends the run) */
+    uint32_t stops;                      /* framed RUN stop received (mmsim ends the run) */
+    uint32_t halts;                      /* compat ID 7 value 0 (stop): motors held at 0 until start */
 } link_stats_t;
 
 /* What the link reads from and writes to each step (sim-independent, so the
@@ -47,6 +48,8 @@ typedef struct {
     int32_t encoder[2];         /* accumulated counts */
     uint8_t tof_new[3];         /* 1 = this sensor took a reading this step (HAL order) */
     uint16_t tof_mm[3];
+    double tof_m[3];            /* the same reading unrounded, m (compat scales it: 18 um a count
+                                   at 1.2 m); 0 = use tof_mm */
     uint8_t tof_timeout[3];
 } link_io_t;
 
@@ -66,9 +69,11 @@ typedef struct link_s {
     wire_compat_rx_t crx;
     wire_compat_tx_t ctx;
     int16_t motor[2];         /* latest command received */
-    int running;              /* RUN start (default) / stop */
-    int sensors_on;           /* SENSORS enable (default) / disable */
+    int running;              /* RUN start (default, and at each connection) / stop */
+    int sensors_on;           /* SENSORS enable / disable: the MCU's last request, kept over
+                                 reconnects; at open on in framed, off in compat */
     int hello_ok;             /* framed: MCU HELLO with our version seen */
+    int hello_reply;          /* framed: send our HELLO once more (the MCU's first arrived) */
     int silent;
     uint32_t enc_every;       /* framed: ENCODER every this many steps (the MCU's tick, from its HELLO) */
     uint64_t step, last_rx_step, next_hello_step, next_retry_step;

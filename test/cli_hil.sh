@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # cli_hil.sh - hardware in the loop: the wire codec's shared vectors on an
-# AVR in simavr; mmsim --pty with this script playing the MCU (compat and
-# framed); flag and device errors.
+# AVR in simavr; mmsim --pty with hil_mcu.py playing the MCU (compat and
+# framed); a device unplugged and plugged back; the simulator stopped and
+# started again while the MCU stays up; flag and device errors.
 set -u
 S=${MMSIM:-build/mmsim}
 B=${BUILD:-build}
@@ -62,10 +63,12 @@ hil() { local proto=$1
   local got
   got=$(python3 -c "
 import json,sys; d=json.load(open(sys.argv[1])); l=d['link']; e=l['decoder']
-print(d['driver'], l['protocol'], l['connects'] >= 2, l['disconnects'] >= 1, l['silences'] >= 1,
+print(d['driver'], l['protocol'], l['baud'], l['connects'] >= 2, l['disconnects'] >= 1, l['silences'] >= 1,
       sum(e[k] for k in ('crc','cobs','overflow','unknown','length','value')), l['mcu_log_lines'] >= 1,
       d['final_pose']['y_m'] > 0.09 + 0.03, l['tx_dropped'], l['handshake'])" "$T/$proto.json" 2>&1)
-  [ "$got" = "serial $proto True True True 1 True True 0 True" ] && ok "$proto: link report (one garbage chunk counted)" || bad "$proto: link report: $got $(cat "$T/$proto.json")"
+  # no --baud: the protocol's default, 115200 compat, 1,000,000 framed
+  local baud=115200; [ "$proto" = framed ] && baud=1000000
+  [ "$got" = "serial $proto $baud True True True 1 True True 0 True" ] && ok "$proto: link report (default baud $baud, one garbage chunk counted)" || bad "$proto: link report: $got $(cat "$T/$proto.json")"
   # MM_LINK telemetry (10 Hz): the same counters as the JSON; connected goes
   # 1 (MCU open), 0 (unplugged), 1 (back), 0 (the test MCU ended)
   "${MMLOG:-build/mmlog}" --dump MM_LINK "$T/$proto.lcmlog" >"$T/$proto.link" 2>&1
@@ -96,6 +99,31 @@ print(l['baud'], l['connects'] >= 2, l['disconnects'] >= 1, l['decoder']['unknow
   [ "$got" = "250000 True True 0" ] && ok "replug: reconnected" || bad "replug: $got $(cat "$T/rp.err")"
   grep -q "disconnected, motors off" "$T/rp.err" && [ "$(grep -c ': connected at' "$T/rp.err")" -ge 2 ] \
     && ok "replug: states reported" || bad "replug states: $(cat "$T/rp.err")"
+fi
+
+# the simulator stops and starts again while the MCU stays up (a board that
+# does not reset when the port opens): hil_mcu.py owns the device and keeps
+# running through two mmsim runs. Each run handshakes again (the MCU answers
+# the new HELLO) and the MCU drives the robot off the start; run 1 at
+# 115200 baud (frames cross step boundaries there, so its exit likely cuts
+# one: the MCU's decoder must count exactly that one bad chunk), run 2 at
+# the framed default, 1,000,000 baud.
+if command -v python3 >/dev/null; then
+  python3 test/hil_mcu.py framed "$T/dev" 30 --own 2 >"$T/own.mcu" 2>&1 &
+  OWN=$!
+  for i in $(seq 100); do [ -e "$T/dev" ] && break; sleep 0.05; done
+  for run in 1 2; do
+    "$S" --maze $M --serial "$T/dev" $([ $run = 1 ] && echo --baud 115200) --time-limit 1.5 --json >"$T/own$run.json" 2>"$T/own$run.err"; rc=$?
+    [ $rc -eq 1 ] && ok "sim restart $run: mmsim exit 1" || bad "sim restart $run: mmsim exit $rc: $(cat "$T/own$run.err")"
+    got=$(python3 -c "
+import json,sys; d=json.load(open(sys.argv[1])); l=d['link']
+print(l['baud'], l['handshake'], l['connects'], l['disconnects'], sum(v for k,v in l['decoder'].items() if k not in ('bytes','frames_ok')),
+      l['decoder']['frames_ok'] > 200, d['final_pose']['y_m'] > 0.09 + 0.03)" "$T/own$run.json" 2>&1)
+    want="$([ $run = 1 ] && echo 115200 || echo 1000000) True 1 0 0 True True"
+    [ "$got" = "$want" ] && ok "sim restart $run: handshake, the MCU drives, no errors (baud $(echo $want | cut -d' ' -f1))" \
+      || bad "sim restart $run: $got (want $want) $(cat "$T/own$run.err")"
+  done
+  wait $OWN && ok "sim restart: MCU side: $(cat "$T/own.mcu")" || bad "sim restart: MCU side: $(cat "$T/own.mcu")"
 fi
 
 [ $fails -eq 0 ] || exit 1

@@ -4,11 +4,13 @@
 #  - the whole mouse firmware (Mega 2560 image, 5x5, framed, 1 Mbaud) drives the
 #    robot from the start to the goal of a 5x5 maze; same run twice = same JSON;
 #    the whole contest ends by the runner's RUN stop (exit 0), no tick overran;
+#    the MCU logs a sim HELLO that differs from its build (ToF range);
 #  - the whole mouse on the Uno (ATmega328P, 2 KB SRAM), 16x16: static RAM
 #    within 1,536 B, the stack measured in simavr clear of .bss, a whole
 #    contest (search, proof, 3 speed runs) ended by RUN stop, no tick overran;
 #  - the paper-API sketch DriveToWall (Uno image, compat, 115200) reads the
-#    front sensor and stops at the wall;
+#    front sensor and stops at the wall; its encoder counts there match the
+#    distance driven;
 #  - bad images and flags: exit 3 / 2.
 set -u
 S=${MMSIM:-build/mmsim}
@@ -48,6 +50,15 @@ print(d['exit_reason'], len(d['laps']) >= 2, d['sim_time_s'] < 60)" "$T/out" 2>&
 [ "$got" = "mcu_stopped True True" ] && ok "whole contest ends by RUN stop" || bad "whole contest: $got"
 grep -q "^mcu: contest done" "$T/err" && grep -q "^mcu: runner: 250 Hz tick, 0 overruns" "$T/err" \
   && ok "runner report: no tick overran" || bad "runner report: $(grep -v 'sensed cell' "$T/err" | tail -5)"
+grep -q "hello differs\|MISMATCH" "$T/err" && bad "a hello mismatch reported: $(grep 'hello' "$T/err")" || ok "no hello mismatch"
+
+# the MCU checks the simulator's HELLO: a sim whose ToF range is 1.0 m (the
+# paper's Arduino side) gets one log line from it (the sim answers the MCU's
+# HELLO with its own, so an MCU that missed the first, still booting, learns it)
+"$S" --print-config | sed 's/^tof_range_m *=.*/tof_range_m = 1.0/' >"$T/r1.ini"
+want_rc 1 "AVR mouse, sim ToF range 1.0 m" "$S" --maze $M --config "$T/r1.ini" --avr "$MOUSE" --mcu atmega2560 --time-limit 1 --verbose
+[ "$(grep -c '^mcu: sim hello differs: protocol 1, ToF 1000 mm (MCU: 1, 1200 mm)$' "$T/err")" = 1 ] \
+  && ok "MCU logs the sim's ToF range mismatch once" || bad "MCU hello check: $(grep -v 'sensed cell' "$T/err" | head -5)"
 
 # the Uno: avr-size's data + bss within the issue's 1,536 B; in simavr (SRAM
 # painted at load) the stack's deepest point stays above .bss, with >= 64 B
@@ -65,12 +76,29 @@ grep -q "^mcu: runner: 250 Hz tick, 0 overruns" "$T/err" && ok "Uno runner: no t
   || bad "Uno runner report: $(grep -v 'sensed cell' "$T/err" | tail -5)"
 
 # the paper's API in compat mode: drive until the front sensor sees the wall
-want_rc 1 "DriveToWall, 2 s" "$S" --maze $M --avr "$WALL" --protocol compat --time-limit 2 --json
+want_rc 1 "DriveToWall, 2 s" "$S" --maze $M --avr "$WALL" --protocol compat --time-limit 2 --json --verbose
+cp "$T/out" "$T/wall.json"; cp "$T/err" "$T/wall.err"
 got=$(python3 -c "
 import json,sys; d=json.load(open(sys.argv[1])); l=d['link']; p=d['final_pose']
 # start centre y 0.09 m; the wall north of cell (0,1) is at y 0.36 m
 print(l['protocol'], l['baud'], l['mcu_log_lines'], d['collisions'], 0.15 < p['y_m'] < 0.30, l['rx_msgs'] > 300)" "$T/out" 2>&1)
 [ "$got" = "compat 115200 2 0 True True" ] && ok "DriveToWall stopped before the wall" || bad "DriveToWall: $got $(cat "$T/out")"
+# its encoder counts at the wall (the compat deltas summed by Encoder::getCounts)
+# against the distance driven: counts / (ppr x gear) x pi x wheel diameter
+# (from --print-config) is at most the final travel (+1 mm) and at least it
+# less the coast after the motors stopped (measured 22 mm; 30 allowed);
+# both wheels alike (straight)
+"$S" --print-config >"$T/cfg" 2>&1
+got=$(python3 -c "
+import json,math,re,sys
+cfg={m.group(1): float(m.group(2)) for m in re.finditer(r'^(\w+) = ([-0-9.e]+)', open(sys.argv[1]).read(), re.M)}
+d=json.load(open(sys.argv[2])); travel=d['final_pose']['y_m'] - 0.09
+l, r = map(int, re.search(r'^mcu: DriveToWall: wall, counts (-?\d+) (-?\d+)$', open(sys.argv[3]).read(), re.M).groups())
+m_per_count = math.pi * cfg['wheel_d_m'] / (cfg['encoder_ppr'] * cfg['gear_ratio'])
+print(travel - 0.030 <= l * m_per_count <= travel + 0.001, travel - 0.030 <= r * m_per_count <= travel + 0.001, abs(l - r) <= 0.02 * l)
+" "$T/cfg" "$T/wall.json" "$T/wall.err" 2>&1)
+[ "$got" = "True True True" ] && ok "DriveToWall: encoder counts at the wall match the distance driven: $(grep -o 'counts.*' "$T/wall.err")" \
+  || bad "DriveToWall encoders: $got $(grep '^mcu:' "$T/wall.err") $(grep -o '"final_pose":{[^}]*}' "$T/wall.json")"
 
 # bad images and flags
 want_rc 3 "missing ELF" "$S" --maze $M --avr "$T/none.elf"

@@ -8,10 +8,23 @@ usage: hil_mcu.py compat|framed PTY SECONDS
 Drives forward at 250/1023 until the front ToF reads under 150 mm, then
 stops; at 20 % it sends one garbage chunk, at 40 % it goes quiet for 0.3 s,
 at 60 % it unplugs for 0.3 s (reconnects).
-Prints one line of what it saw; exit 0 if sensors and encoders arrived."""
+Prints one line of what it saw; exit 0 if sensors and encoders arrived.
+
+usage: hil_mcu.py framed LINK SECONDS --own SESSIONS
+A board that stays up while the simulator is stopped and started again
+(mmsim --serial LINK, run SESSIONS times): it owns the device (a pty whose
+slave LINK points to) and never reopens it. It drives as above, answers every
+HELLO of the simulator with its own, and keeps going while no simulator has
+the device open, as a UART would (its bytes are lost). Exit 0 if every
+session sent sensors and a HELLO that it answered, and its decoder counted
+exactly the errors the sessions' ends caused: a frame cut off by a
+simulator's exit is completed by the next simulator's first bytes, one bad
+chunk; a simulator that ended between frames costs nothing. Ends after
+SESSIONS sessions, or after SECONDS."""
 import os, select, struct, sys, time, tty
 
 mode, path, seconds = sys.argv[1], sys.argv[2], float(sys.argv[3])
+own = int(sys.argv[5]) if len(sys.argv) > 5 and sys.argv[4] == '--own' else 0
 RANGE_MM = 1200
 
 def crc16(b):
@@ -54,8 +67,20 @@ class Mcu:
         self.fd = os.open(path, os.O_RDWR | os.O_NOCTTY)
         tty.setraw(self.fd)
         self.buf = bytearray()
+    def own(self):
+        """the device itself: a pty, LINK -> its slave (closed here)"""
+        self.fd, s = os.openpty()
+        tty.setraw(self.fd)
+        os.set_blocking(self.fd, False)
+        name = os.ttyname(s)
+        os.close(s)
+        if os.path.lexists(path): os.unlink(path)
+        os.symlink(name, path)
     def send(self, b):
-        os.write(self.fd, b)
+        try:
+            os.write(self.fd, b)
+        except BlockingIOError:
+            if not own: raise  # the owned device: a full buffer loses bytes, as a UART
     def motor(self, l, r):
         if mode == 'compat':
             self.send(bytes([5]) + struct.pack('<h', l) + bytes([6]) + struct.pack('<h', r))
@@ -73,7 +98,11 @@ class Mcu:
     def poll(self, timeout):
         r, _, _ = select.select([self.fd], [], [], timeout)
         if not r: return
-        self.buf += os.read(self.fd, 4096)
+        try:
+            data = os.read(self.fd, 4096)
+        except BlockingIOError:
+            return
+        self.buf += data
         if mode == 'compat': self.parse_compat()
         else: self.parse_framed()
     def parse_compat(self):
@@ -109,6 +138,34 @@ class Mcu:
                 self.bad += 1
 
 m = Mcu()
+if own:
+    m.own()
+    sessions, hello_sessions, enc_sessions, expect_bad = 0, set(), set(), 0
+    present = False
+    h0, e0 = 0, 0  # hellos and encoder frames before this session
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
+        try:
+            m.poll(0.002)
+        except OSError:  # EIO: no simulator has the device open
+            if present:  # it just went: a frame it cut off makes one bad chunk with the next one's bytes
+                present = False
+                expect_bad += 1 if m.buf else 0
+                h0, e0 = m.hellos, m.encs
+                if sessions == own: break
+            time.sleep(0.01)
+            continue
+        if not present:  # a simulator opened the device
+            present = True
+            sessions += 1
+        if m.hellos > h0: hello_sessions.add(sessions)
+        if m.encs > e0 + 100: enc_sessions.add(sessions)
+        near = m.front is not None and m.front < 150
+        m.motor(0, 0) if near else m.motor(250, 250)
+    print("mcu: sessions %d answered hellos in %d, encoders in %d, hellos %d bad %d expected %d" %
+          (sessions, len(hello_sessions), len(enc_sessions), m.hellos, m.bad, expect_bad))
+    sys.exit(0 if sessions == own and len(hello_sessions) == own and len(enc_sessions) == own
+             and m.bad == expect_bad else 1)
 m.open()
 if mode == 'framed': m.hello()
 m.sensors(True)

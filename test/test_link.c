@@ -1,7 +1,8 @@
 /* test_link.c - the simulator's link end over a socketpair (the other end
  * plays the MCU): byte budget per step at the baud, queue drops, handshake,
- * silence timeout, compat manager messages, receive pacing, garbage,
- * disconnect. No physics: link_step_io with made-up readings. */
+ * silence timeout, compat manager messages (stop stops the robot, not the
+ * run), receive pacing, garbage, disconnect; over a pty: compat's sensor
+ * request kept over a reconnect. No physics: link_step_io with made-up readings. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -10,6 +11,9 @@
 #include <signal.h>
 #include <sys/socket.h>
 #include <fcntl.h>
+#include <poll.h>
+#include <math.h>
+#include <termios.h>
 #include <unistd.h>
 #include <cmocka.h>
 
@@ -197,11 +201,12 @@ static void test_handshake_and_motor(void **state)
     step(0, mo);
     assert_int_equal(mo[0], 77);
     assert_int_equal(wire_stats_errors(&lk.dec.stats), 3);
-    /* run stop / start */
+    /* run stop / start (framed stop: mmsim ends the run) */
     wire_msg_t run = { .type = WIRE_RUN, .u.flag = { 0 } };
     send_msg(&run);
     step(0, mo);
     assert_int_equal(mo[0], 0);
+    assert_int_equal(lk.st.stops, 1);
     run.u.flag.on = 1;
     send_msg(&run);
     step(0, mo);
@@ -228,6 +233,26 @@ static void test_compat_manager_and_pacing(void **state)
     step(0, mo);
     assert_int_equal(mo[0], 100);
     assert_int_equal(mo[1], -100);
+    /* ID 7 value 0 (stop) stops the robot, not the run: motors 0 while
+     * commands arrive, until start; then a side drives from its next command */
+    static const uint8_t stop[] = { 7, 0 }, start[] = { 7, 1 }, left[] = { 5, 0x32, 0x00 };
+    assert_int_equal(write(peer, stop, 2), 2);
+    step(0, mo);
+    assert_int_equal(mo[0], 0);
+    assert_int_equal(write(peer, motor, 6), 6);
+    step(0, mo);
+    assert_int_equal(mo[0], 0);
+    assert_int_equal(mo[1], 0);
+    assert_int_equal(lk.st.halts, 1);
+    assert_int_equal(lk.st.stops, 0); /* mmsim ends the run on stops only */
+    assert_int_equal(write(peer, start, 2), 2);
+    assert_int_equal(write(peer, left, 3), 3);
+    step(0, mo);
+    assert_int_equal(mo[0], 50);
+    assert_int_equal(mo[1], 0); /* the right side's 100 before the stop is forgotten */
+    assert_int_equal(write(peer, motor, 6), 6);
+    step(0, mo);
+    assert_int_equal(mo[1], -100);
     /* 1,200 bytes at once: read at the baud, not faster */
     for (size_t i = 0; i < sizeof b; i += 2) { b[i] = 7; b[i + 1] = 2; }
     assert_int_equal(write(peer, b, sizeof b), (ssize_t)sizeof b);
@@ -235,7 +260,7 @@ static void test_compat_manager_and_pacing(void **state)
     step(0, mo);
     assert_true(lk.st.rx_bytes - before <= 12);
     for (int s = 0; s < 200; s++) step(0, mo);
-    assert_int_equal(lk.st.rx_bytes, 10 + sizeof b);
+    assert_int_equal(lk.st.rx_bytes, 29 + sizeof b);
     /* the MCU unplugged: motors off, reported */
     close(peer);
     peer = -1;
@@ -304,6 +329,152 @@ static void test_faults_through_link(void **state)
     close_pair();
 }
 
+/* Compat distances are scaled from the true metres, not from whole mm:
+ * round(d / 1.2 m * 65535) exactly (one count = 18 um), a real reading at
+ * or past the range 65534, a timeout 65535; the MCU's decoder gives both
+ * the u16 and mm. */
+static void test_compat_distance_from_metres(void **state)
+{
+    static const double d_m[] = { 0.123456, 0.0004, 0.05, 0.0907, 0.18, 0.6, 1.19999, 1.2, 1.5, -1 /* timeout */ };
+    uint8_t buf[256];
+    int16_t mo[2];
+    wire_compat_rx_t rx;
+    wire_msg_t m;
+    open_pair(LINK_COMPAT, 115200, 10.0);
+    static const uint8_t enable[] = { 7, 2 };
+    assert_int_equal(write(peer, enable, 2), 2);
+    step(0, mo);
+    drain(buf, sizeof buf);
+    wire_compat_rx_init(&rx, 1200);
+    for (size_t k = 0; k < sizeof d_m / sizeof d_m[0]; k++) {
+        link_io_t io;
+        memset(&io, 0, sizeof io);
+        io.tof_new[WIRE_SENSOR_FRONT] = 1;
+        io.tof_timeout[WIRE_SENSOR_FRONT] = d_m[k] < 0;
+        io.tof_m[WIRE_SENSOR_FRONT] = d_m[k] < 0 ? 1.2 : d_m[k];
+        io.tof_mm[WIRE_SENSOR_FRONT] = (uint16_t)lround(io.tof_m[WIRE_SENSOR_FRONT] * 1000.0);
+        link_step_io(&lk, &io, mo);
+        size_t n = drain(buf, sizeof buf);
+        long want = d_m[k] < 0 ? 65535 : lround(d_m[k] / 1.2 * 65535.0);
+        if (want > 65534 && d_m[k] >= 0) want = 65534;
+        int seen = 0;
+        for (size_t i = 0; i < n; i++)
+            if (wire_compat_decode_byte(&rx, buf[i], &m) && m.type == WIRE_DISTANCE) {
+                seen++;
+                assert_int_equal(m.u.distance.compat, want);
+                assert_int_equal(m.u.distance.timeout, d_m[k] < 0);
+                assert_int_equal(m.u.distance.mm, d_m[k] < 0 ? 1200 : lround(want * 1200.0 / 65535.0));
+            }
+        assert_int_equal(seen, 1);
+    }
+    /* 0.123456 m from whole mm was 6717 (123 mm), 25 counts short of 6742 */
+    assert_int_equal(lround(0.123456 / 1.2 * 65535.0), 6742);
+    assert_int_equal(wire_stats_errors(&rx.stats), 0);
+    close_pair();
+}
+
+/* the MCU's end of a --pty link: opens the slave, raw */
+static int open_slave(void)
+{
+    int fd = open(lk.path, O_RDWR | O_NOCTTY | O_NONBLOCK);
+    assert_true(fd >= 0);
+    struct termios t;
+    assert_int_equal(tcgetattr(fd, &t), 0);
+    cfmakeraw(&t);
+    assert_int_equal(tcsetattr(fd, TCSANOW, &t), 0);
+    return fd;
+}
+
+/* A pty moves bytes through the kernel's tty buffers asynchronously: the
+ * helpers below step the link until a condition holds, 1 ms apart, giving up
+ * after PTY_TRIES (a bound for a loaded machine, not a timing check). */
+enum { PTY_TRIES = 5000 };
+static int16_t pty_mo[2];
+
+/* step until lk's sensor request is on (1) / off (0); whether it got there */
+static int step_until_sensors(int on)
+{
+    for (int i = 0; i < PTY_TRIES && lk.sensors_on != on; i++) {
+        step(0, pty_mo);
+        usleep(1000);
+    }
+    return lk.sensors_on == on;
+}
+
+/* step until the link is connected (1) / not (0) */
+static int step_until_connected(int on)
+{
+    for (int i = 0; i < PTY_TRIES && lk.connected != on; i++) {
+        step(0, pty_mo);
+        usleep(1000);
+    }
+    return lk.connected == on;
+}
+
+/* step and read fd until want bytes arrived; the bytes read */
+static size_t step_read(int fd, size_t want)
+{
+    uint8_t buf[4096];
+    size_t got = 0;
+    for (int i = 0; i < PTY_TRIES && got < want; i++) {
+        step(0, pty_mo);
+        ssize_t k = read(fd, buf, sizeof buf);
+        if (k > 0) got += (size_t)k;
+        else usleep(1000);
+    }
+    return got;
+}
+
+/* read fd until nothing arrives for 50 ms; the bytes read */
+static size_t drain_quiet(int fd)
+{
+    uint8_t buf[4096];
+    size_t got = 0;
+    struct pollfd p = { fd, POLLIN, 0 };
+    while (poll(&p, 1, 50) > 0) {
+        ssize_t k = read(fd, buf, sizeof buf);
+        if (k <= 0) break;
+        got += (size_t)k;
+    }
+    return got;
+}
+
+/* Compat over a pty, the MCU unplugs and plugs back without asking for the
+ * sensors again (a board not reset when the port opens): the link keeps its
+ * last request, so readings flow again; a disable is kept as well. */
+static void test_compat_reconnect_keeps_sensors(void **state)
+{
+    char err[300];
+    link_opts_t o = { NULL, 1, 115200, LINK_COMPAT, 10.0 };
+    if (link_open(&lk, &o, 0.001, 1200, 35832, NULL, err, sizeof err) != 0) skip(); /* no pseudo-terminals here */
+    step(0, pty_mo);
+    assert_int_equal(lk.connected, 0); /* nobody has the terminal open */
+    int fd = open_slave();
+    static const uint8_t enable[] = { 7, 2 }, disable[] = { 7, 3 };
+    assert_int_equal(write(fd, enable, 2), 2);
+    assert_true(step_until_sensors(1));
+    assert_true(step_read(fd, 100) >= 100);
+    close(fd); /* unplug */
+    assert_true(step_until_connected(0));
+    assert_int_equal(lk.sensors_on, 1);
+    fd = open_slave(); /* plug back, no enable */
+    assert_true(step_until_connected(1));
+    assert_int_equal(lk.st.connects, 2);
+    assert_true(step_read(fd, 100) >= 100); /* readings without a new request */
+    assert_int_equal(write(fd, disable, 2), 2);
+    assert_true(step_until_sensors(0));
+    drain_quiet(fd); /* what was sent before the disable arrived (a pty keeps it over a reopen) */
+    close(fd);
+    assert_true(step_until_connected(0));
+    fd = open_slave();
+    assert_true(step_until_connected(1));
+    assert_int_equal(lk.st.connects, 3);
+    for (int s = 0; s < 50; s++) assert_int_equal(step(0, pty_mo), 0);
+    assert_int_equal(drain_quiet(fd), 0); /* still disabled: nothing sent */
+    close(fd);
+    link_close(&lk);
+}
+
 int main(void)
 {
     signal(SIGPIPE, SIG_IGN); /* a socket peer gone: EPIPE, as a tty gives EIO */
@@ -313,6 +484,8 @@ int main(void)
         cmocka_unit_test(test_handshake_and_motor),
         cmocka_unit_test(test_compat_manager_and_pacing),
         cmocka_unit_test(test_faults_through_link),
+        cmocka_unit_test(test_compat_reconnect_keeps_sensors),
+        cmocka_unit_test(test_compat_distance_from_metres),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

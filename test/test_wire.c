@@ -1,6 +1,8 @@
 /* test_wire.c - the wire codec: shared vectors, round trips, malformed
  * frames, and fault injection (drops, bit flips, garbage) with the error
- * counters checked against what the injected faults must produce. */
+ * counters checked against what the injected faults must produce. Built
+ * twice: with the host's decoder buffers (test_wire) and with an MCU's
+ * (test_wire_rx14: -DWIRE_RX_LOG_MAX=14, as make arduino builds the library). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -83,6 +85,16 @@ static void assert_same(const wire_msg_t *a, const wire_msg_t *b)
     assert_memory_equal(ex, ey, nx);
 }
 
+/* whether the framed decoder takes m's frame whole: all of it before the
+ * delimiter fits its buffer (WIRE_RX_MAX; less than the longest frame when
+ * built for an MCU with -DWIRE_RX_LOG_MAX=14), else it counts an overflow */
+static int fits(const wire_msg_t *m)
+{
+    uint8_t f[WIRE_FRAME_MAX];
+    size_t n = wire_encode(m, f, sizeof f);
+    return n > 0 && n - 1 <= WIRE_RX_MAX;
+}
+
 static void test_vectors(void **state)
 {
     const char *first;
@@ -108,11 +120,17 @@ static void test_round_trip_stream(void **state)
     wire_decoder_t d;
     wire_decoder_init(&d);
     wire_msg_t m;
-    int got = 0;
+    int got = 0, too_long = 0;
     for (size_t i = 0; i < len; i++)
-        if (wire_decode_byte(&d, stream[i], &m)) assert_same(&m, &sent[got++]);
+        if (wire_decode_byte(&d, stream[i], &m)) {
+            for (; !fits(&sent[got]); got++) too_long++; /* an MCU's decoder drops long LOG frames, counted */
+            assert_same(&m, &sent[got++]);
+        }
+    for (; got < N && !fits(&sent[got]); got++) too_long++;
     assert_int_equal(got, N);
-    assert_int_equal(wire_stats_errors(&d.stats), 0);
+    assert_int_equal(wire_stats_errors(&d.stats), too_long);
+    assert_int_equal(d.stats.overflow, too_long);
+    assert_int_equal(too_long > 0, WIRE_RX_LOG_MAX < WIRE_LOG_MAX);
     assert_int_equal(d.stats.bytes, len);
 }
 
@@ -220,8 +238,8 @@ static void test_malformed_frames(void **state)
 
 /* Fault injection: a stream of random frames hit by drops, bit flips and
  * garbage bursts. Whatever happens, decoding must see exactly the chunks
- * between delimiters: an untouched frame decodes, every other non-empty
- * chunk is one counted error. */
+ * between delimiters: an untouched frame decodes (if it fits the decoder's
+ * buffer), every other non-empty chunk is one counted error. */
 static void fault_run(uint64_t seed, int n_frames, int per_mille)
 {
     enum { MAXN = 3000 };
@@ -260,8 +278,8 @@ static void fault_run(uint64_t seed, int n_frames, int per_mille)
             int found = -1;
             for (int f = 0; f < n_frames && found < 0; f++) /* a clean frame is unique: it carries random data */
                 if (start[f + 1] - start[f] == clen && !memcmp(clean + start[f], bad + cs, clen)) found = f;
-            if (found >= 0) expect[exp_ok++] = sent[found];
-            else exp_err++;
+            if (found >= 0 && clen - 1 <= WIRE_RX_MAX) expect[exp_ok++] = sent[found];
+            else exp_err++; /* corrupt, or a whole frame too long for the decoder (overflow) */
         }
         cs = i + 1;
     }
@@ -330,6 +348,14 @@ static void test_compat_details(void **state)
     m = (wire_msg_t){ .type = WIRE_DISTANCE, .u.distance = { 0, WIRE_SENSOR_LEFT, 0, 5000 } };
     assert_int_equal(wire_compat_encode(&tx, &m, b, sizeof b), 3);
     assert_int_equal(b[1] | b[2] << 8, 65534);
+    /* the sender's own scaling (finer than mm) goes as is, never as 65535 */
+    m.u.distance.mm = 123;
+    m.u.distance.compat = 6742; /* 0.123456 m of 1.2 */
+    wire_compat_encode(&tx, &m, b, sizeof b);
+    assert_int_equal(b[1] | b[2] << 8, 6742);
+    m.u.distance.compat = 65535;
+    wire_compat_encode(&tx, &m, b, sizeof b);
+    assert_int_equal(b[1] | b[2] << 8, 65534);
     /* motor clamping on receive (the paper clamps to +-1023) */
     static const uint8_t big[] = { 5, 0x10, 0x27, 6, 0xF0, 0xD8 }; /* +10000, -10000 */
     k = 0;
@@ -345,14 +371,8 @@ static void test_compat_details(void **state)
     assert_int_equal(out.type, WIRE_RUN);
     assert_int_equal(rx.stats.unknown, 2);
     assert_int_equal(rx.stats.value, 1);
-    /* an overlong log line is counted and dropped */
-    b[0] = 8;
-    memset(b + 1, 'a', 100);
-    k = 0;
-    for (size_t i = 0; i < 1 + WIRE_LOG_MAX + 1; i++) k += wire_compat_decode_byte(&rx, b[i], &out);
-    assert_int_equal(k, 0);
-    assert_int_equal(rx.stats.overflow, 1);
-    /* the longest log line passes */
+    /* the longest log line the encoder sends: whole with the decoder's
+     * default buffer, cut and counted with an MCU's (-DWIRE_RX_LOG_MAX=14) */
     char zs[WIRE_LOG_MAX];
     memset(zs, 'z', sizeof zs);
     m = (wire_msg_t){ .type = WIRE_LOG, .u.log = { WIRE_LOG_MAX, zs } };
@@ -362,11 +382,60 @@ static void test_compat_details(void **state)
     k = 0;
     for (size_t i = 0; i < n; i++) k += wire_compat_decode_byte(&rx, b[i], &out);
     assert_int_equal(k, 1);
-    assert_int_equal(out.u.log.len, WIRE_LOG_MAX);
-    assert_int_equal(strlen(out.u.log.text), WIRE_LOG_MAX);
+    assert_int_equal(out.u.log.len, WIRE_LOG_MAX < WIRE_RX_LOG_MAX ? WIRE_LOG_MAX : WIRE_RX_LOG_MAX);
+    assert_int_equal(strlen(out.u.log.text), out.u.log.len);
+    assert_int_equal(rx.stats.overflow, WIRE_LOG_MAX > WIRE_RX_LOG_MAX);
     /* hello has no compat form */
     m = (wire_msg_t){ .type = WIRE_HELLO };
     assert_int_equal(wire_compat_encode(&tx, &m, b, sizeof b), 0);
+}
+
+/* A compat log line longer than the decoder's buffer, then a motor command:
+ * the rest of the line up to its NUL is skipped (counted once, the line
+ * delivered cut), and the motor command after it decodes intact. Lengths
+ * around the buffer (WIRE_RX_LOG_MAX: 80, or 14 in the MCU's build) and far
+ * past it; the line holds bytes that are valid IDs (5, 7, 8) and a motor
+ * ID + payload, which a decoder that lost its place would take for messages. */
+static void test_compat_log_overflow(void **state)
+{
+    static const size_t lens[] = { WIRE_RX_LOG_MAX - 1, WIRE_RX_LOG_MAX, WIRE_RX_LOG_MAX + 1, 30, 100, 255, 1000 };
+    for (size_t li = 0; li < sizeof lens / sizeof lens[0]; li++) {
+        static uint8_t b[1100];
+        size_t len = lens[li], n = 0;
+        b[n++] = WIRE_C_LOGGER;
+        for (size_t i = 0; i < len; i++) {
+            static const uint8_t pattern[] = { 'a', 5, 0x10, 0x27, 7, 2, 8, 'b' };
+            b[n++] = pattern[i % sizeof pattern];
+        }
+        b[n++] = 0;
+        static const uint8_t motor[] = { 5, 0x2C, 0x01, 6, 0x9C, 0xFE }; /* +300, -356 */
+        memcpy(b + n, motor, sizeof motor);
+        n += sizeof motor;
+        wire_compat_rx_t rx;
+        wire_msg_t out;
+        wire_compat_rx_init(&rx, 1200);
+        int logs = 0, motors = 0;
+        for (size_t i = 0; i < n; i++) {
+            if (!wire_compat_decode_byte(&rx, b[i], &out)) continue;
+            if (out.type == WIRE_LOG) {
+                logs++;
+                size_t want = len < WIRE_RX_LOG_MAX ? len : WIRE_RX_LOG_MAX;
+                assert_int_equal(out.u.log.len, want);
+                assert_int_equal(strlen(out.u.log.text), want);
+                assert_memory_equal(out.u.log.text, b + 1, want);
+            } else {
+                assert_int_equal(out.type, WIRE_MOTOR);
+                motors++;
+            }
+        }
+        assert_int_equal(logs, 1);
+        assert_int_equal(motors, 2);
+        assert_int_equal(out.u.motor.left, 300);
+        assert_int_equal(out.u.motor.right, -356);
+        assert_int_equal(rx.stats.overflow, len > WIRE_RX_LOG_MAX);
+        assert_int_equal(wire_stats_errors(&rx.stats), len > WIRE_RX_LOG_MAX);
+        assert_int_equal(rx.stats.frames_ok, 3);
+    }
 }
 
 int main(void)
@@ -380,6 +449,7 @@ int main(void)
         cmocka_unit_test(test_faults_heavy),
         cmocka_unit_test(test_pure_garbage),
         cmocka_unit_test(test_compat_details),
+        cmocka_unit_test(test_compat_log_overflow),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -276,8 +276,11 @@ size_t wire_compat_encode(wire_compat_tx_t *t, const wire_msg_t *m, uint8_t *out
         if (cap < 3 || m->u.distance.sensor >= WIRE_SENSOR_COUNT) return 0;
         uint16_t v = 65535u;
         if (!m->u.distance.timeout) {
-            uint32_t mm = m->u.distance.mm < t->range_mm ? m->u.distance.mm : t->range_mm;
-            uint32_t s = (mm * 65535u + t->range_mm / 2u) / t->range_mm;
+            uint32_t s = m->u.distance.compat; /* scaled by the sender from the true distance */
+            if (s == 0) {
+                uint32_t mm = m->u.distance.mm < t->range_mm ? m->u.distance.mm : t->range_mm;
+                s = (mm * 65535u + t->range_mm / 2u) / t->range_mm;
+            }
             v = (uint16_t)(s > 65534u ? 65534u : s); /* 65535 means timeout */
         }
         return put_id16(out, id[m->u.distance.sensor], v);
@@ -333,14 +336,15 @@ int wire_compat_decode_byte(wire_compat_rx_t *r, uint8_t b, wire_msg_t *out)
     }
     if (r->id == WIRE_C_LOGGER) {
         if (b != 0) {
-            if (r->n >= WIRE_RX_LOG_MAX) { /* overlong: counted, dropped, next byte is an ID again */
+            if (r->n < WIRE_RX_LOG_MAX) r->buf[r->n++] = b;
+            else if (!r->log_overflow) { /* overlong: counted once; the rest up to the NUL is skipped */
+                r->log_overflow = 1;
                 r->stats.overflow++;
-                r->id = 0xFF;
-                return 0;
             }
-            r->buf[r->n++] = b;
             return 0;
         }
+        /* the NUL ends the line (cut to WIRE_RX_LOG_MAX bytes if it overflowed): the next byte is an ID */
+        r->log_overflow = 0;
         memset(out, 0, sizeof *out);
         out->type = WIRE_LOG;
         out->u.log.len = r->n;
@@ -364,6 +368,7 @@ int wire_compat_decode_byte(wire_compat_rx_t *r, uint8_t b, wire_msg_t *out)
         out->u.distance.sensor = id == WIRE_C_TOF_LEFT ? WIRE_SENSOR_LEFT
                                : id == WIRE_C_TOF_RIGHT ? WIRE_SENSOR_RIGHT : WIRE_SENSOR_FRONT;
         out->u.distance.timeout = v == 65535u;
+        out->u.distance.compat = v;
         out->u.distance.mm = v == 65535u ? r->range_mm
                                          : (uint16_t)(((uint32_t)v * r->range_mm + 32767u) / 65535u);
         break;

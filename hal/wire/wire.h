@@ -31,7 +31,8 @@ extern "C" {
  * An MCU never receives LOG (the sim's longest message, ENCODER, is 16
  * bytes before the delimiter) and may build ALL its files with
  * -DWIRE_RX_LOG_MAX=14 (it sizes both decoders' buffers: 66 B less SRAM);
- * a longer frame or compat log line is then counted as overflow. */
+ * a longer frame is then counted as overflow (and dropped), a longer compat
+ * log line counted as overflow and delivered cut to WIRE_RX_LOG_MAX bytes. */
 #ifndef WIRE_RX_LOG_MAX
 #define WIRE_RX_LOG_MAX WIRE_LOG_MAX
 #endif
@@ -75,6 +76,10 @@ typedef struct {
             uint8_t sensor;         /* WIRE_SENSOR_* */
             uint8_t timeout;        /* 1 = nothing within range */
             uint16_t mm;            /* distance, mm */
+            uint16_t compat;        /* compat's u16, round(d / range * 65535), 65535 = timeout:
+                                       the decoder fills it; the encoder sends it for a
+                                       reading when non-zero (finer than mm), else scales mm.
+                                       Not in framed frames. */
         } distance;
         struct {
             uint8_t on;             /* 1 enable, 0 disable (SENSORS); 1 start, 0 stop (RUN) */
@@ -164,7 +169,9 @@ void wire_compat_rx_init(wire_compat_rx_t *r, uint16_t range_mm);
 /* Feed one byte; returns 1 and fills *out on a complete message: ENCODER
  * (both sides' accumulated counts), DISTANCE (mm from the scaled value,
  * 65535 = timeout), MOTOR (both sides' latest commands), SENSORS, RUN, LOG.
- * An unknown ID is counted and skipped (one byte). */
+ * An unknown ID is counted and skipped (one byte). A log line longer than
+ * WIRE_RX_LOG_MAX is counted (overflow) once, skipped up to its NUL and
+ * delivered cut, so the byte after the NUL is read as an ID again. */
 int wire_compat_decode_byte(wire_compat_rx_t *r, uint8_t b, wire_msg_t *out);
 
 #ifdef __cplusplus

@@ -32,6 +32,8 @@ private:
 
 class ActuatorManager {
 public:
+    /* Compat: stop holds the robot's motors at 0 until start (the
+     * simulator runs on); framed: stop ends the simulator's run. */
     void requestStart();
     void requestStop();
     /* One line to the simulator's log (at most 80 bytes are sent). */

@@ -1,6 +1,8 @@
 /* MMLink.cpp - see MMLink.h. */
 #include "MMLink.h"
 
+#include <stdio.h>
+
 MMLink mmLink;
 
 void MMLink::begin(Stream &stream, uint8_t protocol, uint16_t tick, uint16_t range)
@@ -35,6 +37,23 @@ void MMLink::sendHello()
     m.u.hello.tof_range_mm = range_mm;
     m.u.hello.counts_per_rev_x100 = 35832u; /* 12 PPR x 29.86 gear, the default robot */
     m.u.hello.tick_hz = tick_hz;
+    send(m);
+}
+
+/* One log line for a sim whose HELLO differs from this build (the sim keeps
+ * the motors off on a version mismatch; a ToF range mismatch scales every
+ * distance wrong). Not inlined: its buffer is on the stack only then. */
+void __attribute__((noinline)) MMLink::logMismatch(const wire_msg_t &hello)
+{
+    char line[64];
+    wire_msg_t m;
+    memset(&m, 0, sizeof m);
+    m.type = WIRE_LOG;
+    m.u.log.len = (uint8_t)snprintf_P(line, sizeof line, PSTR("sim hello differs: protocol %u, ToF %u mm (MCU: %u, %u mm)"),
+                                      (unsigned)hello.u.hello.version, (unsigned)hello.u.hello.tof_range_mm,
+                                      (unsigned)WIRE_VERSION, (unsigned)range_mm);
+    if (m.u.log.len >= sizeof line) m.u.log.len = sizeof line - 1;
+    m.u.log.text = line;
     send(m);
 }
 
@@ -77,6 +96,7 @@ void MMLink::poll()
             break;
         case WIRE_HELLO:
             if (m.u.hello.role == WIRE_ROLE_SIM) {
+                if (m.u.hello.version != WIRE_VERSION || m.u.hello.tof_range_mm != range_mm) logMismatch(m);
                 hello_seen = 1;
                 sendHello();
             }

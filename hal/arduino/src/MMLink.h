@@ -16,7 +16,8 @@ class MMLink {
 public:
     /* tick_hz goes in HELLO (framed); range_mm scales compat distances */
     void begin(Stream &s, uint8_t protocol, uint16_t tick_hz, uint16_t range_mm = WIRE_COMPAT_RANGE_MM);
-    /* Decode every byte waiting in the Stream; answers the sim's HELLO. */
+    /* Decode every byte waiting in the Stream; answers the sim's HELLO (and
+     * logs one line if its protocol version or ToF range differs). */
     void poll();
     /* Encode and write one message (blocks while the Stream's buffer is full). */
     void send(const wire_msg_t &m);
@@ -34,6 +35,7 @@ public:
     const wire_stats_t &stats() const;
 
 private:
+    void logMismatch(const wire_msg_t &hello);
     Stream *s = nullptr;
     uint8_t proto = MM_FRAMED;
     uint16_t tick_hz = 0, range_mm = WIRE_COMPAT_RANGE_MM;

@@ -9,7 +9,8 @@
  * link: it reads the sensors in, runs fw_tick, then sends the motor
  * command and any queued log line. hal_* called from fw_loop only read
  * copies or queue. When the mouse is done (or gives up) the runner sends
- * RUN stop once, which ends the simulator's run. */
+ * RUN stop once, which ends the simulator's run (framed; in compat mode it
+ * only stops the robot). */
 #ifndef MM_MOUSE_H
 #define MM_MOUSE_H
 

@@ -1,13 +1,15 @@
 // DriveToWall - the smallest useful sketch with the paper's API: enable the
 // sensors, drive forward, stop when the front sensor sees a wall nearer than
-// 100 mm. Compat protocol at 115200 baud, as the paper's Unity simulator:
+// 100 mm and log the encoder counts driven. Compat protocol at 115200 baud,
+// as the paper's Unity simulator:
 // `mmsim --maze MAZE --serial /dev/ttyACM0 --protocol compat`.
 #include <Micromouse.h>
+#include <stdio.h>
 
 SensorManager sensors(Serial, MM_COMPAT);
 ActuatorManager actuators;
 Motor leftMotor(MM_LEFT), rightMotor(MM_RIGHT);
-Encoder leftEncoder(MM_LEFT);
+Encoder leftEncoder(MM_LEFT), rightEncoder(MM_RIGHT);
 DistanceSensor front(MM_TOF_FRONT);
 
 static unsigned long next_us;
@@ -31,7 +33,10 @@ void loop()
     bool wall = !r.timeout && r.distance_mm < 100;
     if (wall && !stopped) {
         stopped = true;
-        actuators.log("DriveToWall: wall");
+        char line[48];
+        snprintf(line, sizeof line, "DriveToWall: wall, counts %ld %ld", (long)leftEncoder.getCounts(),
+                 (long)rightEncoder.getCounts());
+        actuators.log(line);
     }
     int16_t v = stopped ? 0 : 300;
     leftMotor.setVoltage(v);
