@@ -13,10 +13,14 @@
  * a forward move by -1..+5, because turning round, stepping back and turning
  * round again costs 5), so a configuration stores its cost modulo 15 in a
  * nibble and the absolute value is recovered next to a known one
- * (flood_cost). Nibble 15 = not reached. The BFS keeps no FIFO of
- * configurations: the open set (levels k and k+1 of the BFS) is a bitset,
- * and a level is the set bits whose nibble equals k mod 15. Visited = nibble
- * != 15. For 16x16: cost field 512 B + open set 128 B + target set 32 B.
+ * (flood_cost). Nibble 15 = not reached; visited = nibble != 15.
+ *
+ * The BFS keeps no FIFO: its frontier is two bitsets of cells, the cells
+ * holding a configuration of the level k being expanded and those of level
+ * k+1. Each maze row starts a new byte, so the cells north and south of a
+ * cell are the same bit one row of bytes away. A cell is expanded with all
+ * of its headings at once. For 16x16: cost field 512 B + frontier 64 B +
+ * target set 32 B.
  */
 #ifndef FLOOD_H
 #define FLOOD_H
@@ -26,6 +30,8 @@
 
 #define FLOOD_UNREACHABLE 0xFFFFu
 #define FLOOD_CONFIGS (MAZE_MAX_CELLS * 4)
+#define FLOOD_ROW_BYTES ((MAZE_MAX_W + 7) / 8) /* frontier bytes per maze row */
+#define FLOOD_FRONT_BYTES (MAZE_MAX_H * FLOOD_ROW_BYTES) /* 1 bit per cell */
 
 /* flags for flood_run / flood_cells */
 #define FLOOD_UNKNOWN_OPEN 1u /* unknown walls count as open (searching) */
@@ -34,7 +40,7 @@
 
 typedef struct {
     uint8_t cost[FLOOD_CONFIGS / 2];        /* nibble per (cell, heading) */
-    uint8_t open[FLOOD_CONFIGS / 8];        /* BFS open set, 1 bit each */
+    uint8_t front[2 * FLOOD_FRONT_BYTES];   /* BFS frontiers, levels k, k+1 */
     uint8_t target[(MAZE_MAX_CELLS + 7) / 8]; /* target cells, 1 bit each */
 } flood_t;
 
