@@ -71,48 +71,54 @@ static uint8_t open_sides(uint8_t w, uint8_t unknown)
     return (uint8_t)((known & (uint8_t)~w) | (unknown & (uint8_t)~known));
 }
 
-/* Put the cell east / west of the one at frontier byte fc, bit, in the
- * next frontier. */
-static void mark_east(uint8_t *fc, uint8_t bit)
+/* Put a cell in the next frontier: bit of frontier byte *t, whose index is
+ * idx; a byte that was empty joins the list ln of non-zero bytes. Returns
+ * the list's new end. */
+static uint8_t *mark(uint8_t *t, uint8_t bit, uint8_t idx, uint8_t *ln)
 {
-    if (bit == 0x80u) fc[FRONT + 1] |= 1u;
-    else fc[FRONT] |= (uint8_t)(bit << 1);
+    if (!*t) *ln++ = idx;
+    *t |= bit;
+    return ln;
 }
 
-static void mark_west(uint8_t *fc, uint8_t bit)
+/* The cell east / west of the one at bit of current frontier byte fc,
+ * index i. */
+static uint8_t *mark_east(uint8_t *fc, uint8_t bit, uint8_t i, uint8_t *ln)
 {
-    if (bit == 1u) fc[FRONT - 1] |= 0x80u;
-    else fc[FRONT] |= (uint8_t)(bit >> 1);
+    if (bit == 0x80u) return mark(fc + FRONT + 1, 1u, (uint8_t)(i + 1u), ln);
+    return mark(fc + FRONT, (uint8_t)(bit << 1), i, ln);
 }
 
-/* One level: the current frontier (cleared as it is read), k mod 15, and
- * x = 15 ^ ((k+1) mod 15), which XORed into an unseen nibble makes it k+1.
- * Returns 0 if the frontier was empty. */
-typedef struct {
-    uint8_t *cost;       /* 2 bytes per cell: headings N | E << 4, S | W << 4 */
-    const uint8_t *wall; /* m->cell */
-    uint8_t *front;
-    uint16_t up;         /* cost bytes from a cell to the cell north of it */
-    uint8_t width, rows;
-    uint8_t unknown;     /* 0x0F if unknown walls count as open, else 0 */
-} bfs_t;
-
-/* Heading-aware level: each frontier cell's configurations of cost k, all
- * four headings at once. */
-static uint8_t level_configs(const bfs_t *b, uint8_t now, uint8_t x)
+static uint8_t *mark_west(uint8_t *fc, uint8_t bit, uint8_t i, uint8_t *ln)
 {
-    uint8_t *fc = b->front, found = 0;
-    const uint16_t up = b->up;
-    const uint8_t now2 = (uint8_t)(now * 0x11u), xh = (uint8_t)(x << 4);
-    for (uint8_t i = 0; i < (uint8_t)(b->rows * ROW); i++, fc++) {
+    if (bit == 1u) return mark(fc + FRONT - 1, 0x80u, (uint8_t)(i - 1u), ln);
+    return mark(fc + FRONT, (uint8_t)(bit >> 1), i, ln);
+}
+
+/* The first cell of frontier byte i. */
+static maze_cell_t first_cell(uint8_t width, uint8_t i)
+{
+    return (maze_cell_t)((maze_cell_t)(i / ROW) * width + (i % ROW) * 8u);
+}
+
+/* Heading-aware level: expand the configurations of cost k (k mod 15 =
+ * now) of every cell of the current frontier (listed in f->list[cur],
+ * count bytes), all four headings of a cell at once. Lists the next
+ * frontier's bytes in f->list[cur ^ 1]; returns their count. */
+static uint8_t level_configs(flood_t *f, const maze_t *m, uint8_t cur, uint8_t count, uint8_t now, uint8_t unknown)
+{
+    uint8_t *ln = f->list[cur ^ 1u];
+    const uint16_t up = (uint16_t)(2u * m->width);
+    const uint8_t next = (uint8_t)(now == MOD - 1u ? 0u : now + 1u);
+    const uint8_t now2 = (uint8_t)(now * 0x11u), x = (uint8_t)(UNSEEN ^ next), xh = (uint8_t)(x << 4);
+    for (uint8_t n = 0; n < count; n++) {
+        uint8_t i = f->list[cur][n];
+        uint8_t *fc = f->front + i;
         uint8_t bits = *fc;
-        if (!bits) continue;
-        *fc = 0;
-        found = 1;
-        maze_cell_t c = (maze_cell_t)((maze_cell_t)(i / ROW) * b->width + (i % ROW) * 8u);
+        maze_cell_t c = first_cell(m->width, i);
         for (uint8_t bit = 1; bits; bit = (uint8_t)(bit << 1), bits >>= 1, c++) {
             if (!(bits & 1u)) continue;
-            uint8_t *p = b->cost + 2u * c;
+            uint8_t *p = f->cost + 2u * c;
             uint8_t lo = p[0], hi = p[1], at = 0;
             /* at: heading bits (1 north .. 8 west) of cost k; a nibble
              * equals k where lo/hi XOR k in both nibbles has a 0 nibble */
@@ -134,77 +140,78 @@ static uint8_t level_configs(const bfs_t *b, uint8_t now, uint8_t x)
             if (lo != p[0] || hi != p[1]) {
                 p[0] = lo;
                 p[1] = hi;
-                fc[FRONT] |= bit;
+                ln = mark(fc + FRONT, bit, i, ln);
             }
             /* a forward move in heading h, from the cell behind (side h+2) */
-            uint8_t open = open_sides(b->wall[c], b->unknown);
+            uint8_t open = open_sides(m->cell[c], unknown);
             if ((at & 1u) && (open & (1u << MAZE_SOUTH))) {
                 uint8_t *q = p - up;
                 if ((*q & 0x0Fu) == UNSEEN) {
                     *q ^= x;
-                    fc[FRONT - ROW] |= bit;
+                    ln = mark(fc + FRONT - ROW, bit, (uint8_t)(i - ROW), ln);
                 }
             }
             if ((at & 2u) && (open & (1u << MAZE_WEST))) {
                 uint8_t *q = p - 2;
                 if (*q >= (UNSEEN << 4)) {
                     *q ^= xh;
-                    mark_west(fc, bit);
+                    ln = mark_west(fc, bit, i, ln);
                 }
             }
             if ((at & 4u) && (open & (1u << MAZE_NORTH))) {
                 uint8_t *q = p + up + 1;
                 if ((*q & 0x0Fu) == UNSEEN) {
                     *q ^= x;
-                    fc[FRONT + ROW] |= bit;
+                    ln = mark(fc + FRONT + ROW, bit, (uint8_t)(i + ROW), ln);
                 }
             }
             if ((at & 8u) && (open & (1u << MAZE_EAST))) {
                 uint8_t *q = p + 3;
                 if (*q >= (UNSEEN << 4)) {
                     *q ^= xh;
-                    mark_east(fc, bit);
+                    ln = mark_east(fc, bit, i, ln);
                 }
             }
         }
     }
-    return found;
+    return (uint8_t)(ln - f->list[cur ^ 1u]);
 }
 
 /* Classic level: each frontier cell (its nibble is k) reaches its open
- * neighbours. */
-static uint8_t level_cells(const bfs_t *b, uint8_t x)
+ * neighbours. As level_configs. */
+static uint8_t level_cells(flood_t *f, const maze_t *m, uint8_t cur, uint8_t count, uint8_t now, uint8_t unknown)
 {
-    uint8_t *fc = b->front, found = 0;
-    for (uint8_t i = 0; i < (uint8_t)(b->rows * ROW); i++, fc++) {
+    uint8_t *ln = f->list[cur ^ 1u];
+    const uint16_t up = (uint16_t)(2u * m->width);
+    const uint8_t x = (uint8_t)(UNSEEN ^ (now == MOD - 1u ? 0u : now + 1u));
+    for (uint8_t n = 0; n < count; n++) {
+        uint8_t i = f->list[cur][n];
+        uint8_t *fc = f->front + i;
         uint8_t bits = *fc;
-        if (!bits) continue;
-        *fc = 0;
-        found = 1;
-        maze_cell_t c = (maze_cell_t)((maze_cell_t)(i / ROW) * b->width + (i % ROW) * 8u);
+        maze_cell_t c = first_cell(m->width, i);
         for (uint8_t bit = 1; bits; bit = (uint8_t)(bit << 1), bits >>= 1, c++) {
             if (!(bits & 1u)) continue;
-            uint8_t *p = b->cost + 2u * c;
-            uint8_t open = open_sides(b->wall[c], b->unknown);
-            if ((open & (1u << MAZE_NORTH)) && (p[b->up] & 0x0Fu) == UNSEEN) {
-                p[b->up] ^= x;
-                fc[FRONT + ROW] |= bit;
+            uint8_t *p = f->cost + 2u * c;
+            uint8_t open = open_sides(m->cell[c], unknown);
+            if ((open & (1u << MAZE_NORTH)) && (p[up] & 0x0Fu) == UNSEEN) {
+                p[up] ^= x;
+                ln = mark(fc + FRONT + ROW, bit, (uint8_t)(i + ROW), ln);
             }
             if ((open & (1u << MAZE_EAST)) && (p[2] & 0x0Fu) == UNSEEN) {
                 p[2] ^= x;
-                mark_east(fc, bit);
+                ln = mark_east(fc, bit, i, ln);
             }
-            if ((open & (1u << MAZE_SOUTH)) && (*(p - b->up) & 0x0Fu) == UNSEEN) {
-                *(p - b->up) ^= x;
-                fc[FRONT - ROW] |= bit;
+            if ((open & (1u << MAZE_SOUTH)) && (*(p - up) & 0x0Fu) == UNSEEN) {
+                *(p - up) ^= x;
+                ln = mark(fc + FRONT - ROW, bit, (uint8_t)(i - ROW), ln);
             }
             if ((open & (1u << MAZE_WEST)) && (*(p - 2) & 0x0Fu) == UNSEEN) {
                 *(p - 2) ^= x;
-                mark_west(fc, bit);
+                ln = mark_west(fc, bit, i, ln);
             }
         }
     }
-    return found;
+    return (uint8_t)(ln - f->list[cur ^ 1u]);
 }
 
 /* Heading-aware (headings 4) or classic (headings 1) flood; src_i is the
@@ -212,28 +219,23 @@ static uint8_t level_cells(const bfs_t *b, uint8_t x)
 static uint16_t bfs(flood_t *f, const maze_t *m, uint16_t src_i, uint8_t flags, uint8_t headings)
 {
     const uint16_t cells = maze_cells(m);
-    bfs_t b;
+    const uint8_t unknown = (flags & FLOOD_UNKNOWN_OPEN) ? 0x0Fu : 0u;
     uint16_t level = 0, src_cost = FLOOD_UNREACHABLE;
-    uint8_t now = 0;
+    uint8_t now = 0, cur = 0, count = 0;
 
-    b.cost = f->cost;
-    b.wall = m->cell;
-    b.front = f->front;
-    b.width = m->width;
-    b.rows = m->height;
-    b.up = (uint16_t)(2u * b.width);
-    b.unknown = (flags & FLOOD_UNKNOWN_OPEN) ? 0x0Fu : 0u;
     memset(f->cost, 0xFF, sizeof f->cost);
     memset(f->front, 0, sizeof f->front);
     /* targets: cost 0, in the first frontier (few cells: one division each) */
-    for (uint16_t i = 0; i < (cells + 7u) / 8u; i++) {
-        if (!f->target[i]) continue;
+    for (uint16_t t = 0; t < (cells + 7u) / 8u; t++) {
+        if (!f->target[t]) continue;
         for (uint8_t j = 0; j < 8; j++) {
-            maze_cell_t c = (maze_cell_t)(i * 8u + j);
+            maze_cell_t c = (maze_cell_t)(t * 8u + j);
             if (c >= cells || !flood_is_target(f, c)) continue;
             f->cost[2u * c] = headings == 4 ? 0x00u : 0xF0u;
             if (headings == 4) f->cost[2u * c + 1u] = 0x00u;
-            f->front[(c / b.width) * ROW + (c % b.width) / 8u] |= (uint8_t)(1u << ((c % b.width) & 7u));
+            uint8_t i = (uint8_t)((c / m->width) * ROW + (c % m->width) / 8u);
+            if (!f->front[i]) f->list[0][count++] = i;
+            f->front[i] |= (uint8_t)(1u << ((c % m->width) & 7u));
         }
     }
     if (nib_get(f, src_i) == 0) {
@@ -241,17 +243,23 @@ static uint16_t bfs(flood_t *f, const maze_t *m, uint16_t src_i, uint8_t flags, 
         if (!(flags & FLOOD_FULL)) return 0;
     }
 
-    for (;;) {
-        uint8_t next = (uint8_t)(now == MOD - 1u ? 0u : now + 1u), x = (uint8_t)(UNSEEN ^ next);
-        if (!(headings == 4 ? level_configs(&b, now, x) : level_cells(&b, x))) break;
+    while (count) {
+        count = headings == 4 ? level_configs(f, m, cur, count, now, unknown)
+                              : level_cells(f, m, cur, count, now, unknown);
         if (src_cost == FLOOD_UNREACHABLE && nib_get(f, src_i) != UNSEEN) {
             src_cost = (uint16_t)(level + 1u);
             if (!(flags & FLOOD_FULL)) break;
         }
-        memcpy(f->front, f->front + FRONT, FRONT); /* level k+1 becomes current */
-        memset(f->front + FRONT, 0, FRONT);
+        /* level k+1 becomes current: its bytes move down (the bytes of
+         * level k are not cleared: only listed bytes are read) */
+        cur ^= 1u;
+        for (uint8_t n = 0; n < count; n++) {
+            uint8_t i = f->list[cur][n];
+            f->front[i] = f->front[FRONT + i];
+            f->front[FRONT + i] = 0;
+        }
         level++;
-        now = next;
+        now = (uint8_t)(now == MOD - 1u ? 0u : now + 1u);
     }
     return src_cost;
 }

@@ -32,6 +32,9 @@
 #define FLOOD_CONFIGS (MAZE_MAX_CELLS * 4)
 #define FLOOD_ROW_BYTES ((MAZE_MAX_W + 7) / 8) /* frontier bytes per maze row */
 #define FLOOD_FRONT_BYTES (MAZE_MAX_H * FLOOD_ROW_BYTES) /* 1 bit per cell */
+#if FLOOD_FRONT_BYTES + FLOOD_ROW_BYTES > 256
+#error "flood: frontier byte indices are uint8_t (at most 32x63 cells)"
+#endif
 
 /* flags for flood_run / flood_cells */
 #define FLOOD_UNKNOWN_OPEN 1u /* unknown walls count as open (searching) */
@@ -41,6 +44,7 @@
 typedef struct {
     uint8_t cost[FLOOD_CONFIGS / 2];        /* nibble per (cell, heading) */
     uint8_t front[2 * FLOOD_FRONT_BYTES];   /* BFS frontiers, levels k, k+1 */
+    uint8_t list[2][FLOOD_FRONT_BYTES];     /* their non-zero bytes, by index */
     uint8_t target[(MAZE_MAX_CELLS + 7) / 8]; /* target cells, 1 bit each */
 } flood_t;
 
