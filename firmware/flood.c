@@ -95,30 +95,49 @@ static uint8_t *mark_west(uint8_t *fc, uint8_t bit, uint8_t i, uint8_t *ln)
     return mark(fc + FRONT, (uint8_t)(bit >> 1), i, ln);
 }
 
+/* The state of a flood between levels. */
+typedef struct {
+    uint8_t *cost;       /* 2 bytes per cell: headings N | E << 4, S | W << 4 */
+    const uint8_t *wall; /* m->cell */
+    uint8_t *front;      /* current frontier; the next one is FRONT bytes on */
+    uint8_t *list;       /* indices of the current frontier's non-zero bytes */
+    uint8_t *next_list;  /* the same for the next frontier, being built */
+    uint8_t count;       /* entries in list */
+    uint8_t width;       /* cells */
+    uint16_t up;         /* cost bytes from a cell to the cell north of it */
+    uint8_t unknown;     /* 0x0F if unknown walls count as open, else 0 */
+} bfs_t;
+
 /* The first cell of frontier byte i. */
-static maze_cell_t first_cell(uint8_t width, uint8_t i)
+static maze_cell_t first_cell(const bfs_t *b, uint8_t i)
 {
-    return (maze_cell_t)((maze_cell_t)(i / ROW) * width + (i % ROW) * 8u);
+    return (maze_cell_t)((maze_cell_t)(i / ROW) * b->width + (i % ROW) * 8u);
 }
 
 /* Heading-aware level: expand the configurations of cost k (k mod 15 =
- * now) of every cell of the current frontier (listed in f->list[cur],
- * count bytes), all four headings of a cell at once. Lists the next
- * frontier's bytes in f->list[cur ^ 1]; returns their count. */
-static uint8_t level_configs(flood_t *f, const maze_t *m, uint8_t cur, uint8_t count, uint8_t now, uint8_t unknown)
+ * now) of every cell of the current frontier, all four headings of a cell
+ * at once; x = 15 ^ ((k+1) mod 15) XORed into an unseen nibble makes it
+ * k+1. Clears the current frontier; returns the next one's list length. */
+static uint8_t level_configs(const bfs_t *b, uint8_t now, uint8_t x)
 {
-    uint8_t *ln = f->list[cur ^ 1u];
-    const uint16_t up = (uint16_t)(2u * m->width);
-    const uint8_t next = (uint8_t)(now == MOD - 1u ? 0u : now + 1u);
-    const uint8_t now2 = (uint8_t)(now * 0x11u), x = (uint8_t)(UNSEEN ^ next), xh = (uint8_t)(x << 4);
-    for (uint8_t n = 0; n < count; n++) {
-        uint8_t i = f->list[cur][n];
-        uint8_t *fc = f->front + i;
+    uint8_t *ln = b->next_list;
+    const uint16_t up = b->up;
+    const uint8_t now2 = (uint8_t)(now * 0x11u), xh = (uint8_t)(x << 4);
+    for (uint8_t n = 0; n < b->count; n++) {
+        uint8_t i = b->list[n];
+        uint8_t *fc = b->front + i;
         uint8_t bits = *fc;
-        maze_cell_t c = first_cell(m->width, i);
-        for (uint8_t bit = 1; bits; bit = (uint8_t)(bit << 1), bits >>= 1, c++) {
+        *fc = 0;
+        maze_cell_t c = first_cell(b, i);
+        uint8_t bit = 1;
+        if (!(bits & 0x0Fu)) { /* skip an empty half */
+            bits >>= 4;
+            bit = 0x10;
+            c = (maze_cell_t)(c + 4u);
+        }
+        for (; bits; bit = (uint8_t)(bit << 1), bits >>= 1, c++) {
             if (!(bits & 1u)) continue;
-            uint8_t *p = f->cost + 2u * c;
+            uint8_t *p = b->cost + 2u * c;
             uint8_t lo = p[0], hi = p[1], at = 0;
             /* at: heading bits (1 north .. 8 west) of cost k; a nibble
              * equals k where lo/hi XOR k in both nibbles has a 0 nibble */
@@ -143,7 +162,7 @@ static uint8_t level_configs(flood_t *f, const maze_t *m, uint8_t cur, uint8_t c
                 ln = mark(fc + FRONT, bit, i, ln);
             }
             /* a forward move in heading h, from the cell behind (side h+2) */
-            uint8_t open = open_sides(m->cell[c], unknown);
+            uint8_t open = open_sides(b->wall[c], b->unknown);
             if ((at & 1u) && (open & (1u << MAZE_SOUTH))) {
                 uint8_t *q = p - up;
                 if ((*q & 0x0Fu) == UNSEEN) {
@@ -174,35 +193,33 @@ static uint8_t level_configs(flood_t *f, const maze_t *m, uint8_t cur, uint8_t c
             }
         }
     }
-    return (uint8_t)(ln - f->list[cur ^ 1u]);
+    return (uint8_t)(ln - b->next_list);
 }
 
 /* Classic level: each frontier cell (its nibble is k) reaches its open
  * neighbours. As level_configs. */
-static uint8_t level_cells(flood_t *f, const maze_t *m, uint8_t cur, uint8_t count, uint8_t now, uint8_t unknown)
+static uint8_t level_cells(const bfs_t *b, uint8_t x)
 {
-    uint8_t *ln = f->list[cur ^ 1u];
-    const uint16_t up = (uint16_t)(2u * m->width);
-    const uint8_t x = (uint8_t)(UNSEEN ^ (now == MOD - 1u ? 0u : now + 1u));
-    for (uint8_t n = 0; n < count; n++) {
-        uint8_t i = f->list[cur][n];
-        uint8_t *fc = f->front + i;
+    uint8_t *ln = b->next_list;
+    for (uint8_t n = 0; n < b->count; n++) {
+        uint8_t i = b->list[n];
+        uint8_t *fc = b->front + i;
         uint8_t bits = *fc;
-        maze_cell_t c = first_cell(m->width, i);
+        maze_cell_t c = first_cell(b, i);
         for (uint8_t bit = 1; bits; bit = (uint8_t)(bit << 1), bits >>= 1, c++) {
             if (!(bits & 1u)) continue;
-            uint8_t *p = f->cost + 2u * c;
-            uint8_t open = open_sides(m->cell[c], unknown);
-            if ((open & (1u << MAZE_NORTH)) && (p[up] & 0x0Fu) == UNSEEN) {
-                p[up] ^= x;
+            uint8_t *p = b->cost + 2u * c;
+            uint8_t open = open_sides(b->wall[c], b->unknown);
+            if ((open & (1u << MAZE_NORTH)) && (p[b->up] & 0x0Fu) == UNSEEN) {
+                p[b->up] ^= x;
                 ln = mark(fc + FRONT + ROW, bit, (uint8_t)(i + ROW), ln);
             }
             if ((open & (1u << MAZE_EAST)) && (p[2] & 0x0Fu) == UNSEEN) {
                 p[2] ^= x;
                 ln = mark_east(fc, bit, i, ln);
             }
-            if ((open & (1u << MAZE_SOUTH)) && (*(p - up) & 0x0Fu) == UNSEEN) {
-                *(p - up) ^= x;
+            if ((open & (1u << MAZE_SOUTH)) && (*(p - b->up) & 0x0Fu) == UNSEEN) {
+                *(p - b->up) ^= x;
                 ln = mark(fc + FRONT - ROW, bit, (uint8_t)(i - ROW), ln);
             }
             if ((open & (1u << MAZE_WEST)) && (*(p - 2) & 0x0Fu) == UNSEEN) {
@@ -211,7 +228,7 @@ static uint8_t level_cells(flood_t *f, const maze_t *m, uint8_t cur, uint8_t cou
             }
         }
     }
-    return (uint8_t)(ln - f->list[cur ^ 1u]);
+    return (uint8_t)(ln - b->next_list);
 }
 
 /* Heading-aware (headings 4) or classic (headings 1) flood; src_i is the
@@ -219,10 +236,19 @@ static uint8_t level_cells(flood_t *f, const maze_t *m, uint8_t cur, uint8_t cou
 static uint16_t bfs(flood_t *f, const maze_t *m, uint16_t src_i, uint8_t flags, uint8_t headings)
 {
     const uint16_t cells = maze_cells(m);
-    const uint8_t unknown = (flags & FLOOD_UNKNOWN_OPEN) ? 0x0Fu : 0u;
+    bfs_t b;
     uint16_t level = 0, src_cost = FLOOD_UNREACHABLE;
-    uint8_t now = 0, cur = 0, count = 0;
+    uint8_t now = 0;
 
+    b.cost = f->cost;
+    b.wall = m->cell;
+    b.front = f->front;
+    b.list = f->list[0];
+    b.next_list = f->list[1];
+    b.count = 0;
+    b.width = m->width;
+    b.up = (uint16_t)(2u * b.width);
+    b.unknown = (flags & FLOOD_UNKNOWN_OPEN) ? 0x0Fu : 0u;
     memset(f->cost, 0xFF, sizeof f->cost);
     memset(f->front, 0, sizeof f->front);
     /* targets: cost 0, in the first frontier (few cells: one division each) */
@@ -233,9 +259,9 @@ static uint16_t bfs(flood_t *f, const maze_t *m, uint16_t src_i, uint8_t flags, 
             if (c >= cells || !flood_is_target(f, c)) continue;
             f->cost[2u * c] = headings == 4 ? 0x00u : 0xF0u;
             if (headings == 4) f->cost[2u * c + 1u] = 0x00u;
-            uint8_t i = (uint8_t)((c / m->width) * ROW + (c % m->width) / 8u);
-            if (!f->front[i]) f->list[0][count++] = i;
-            f->front[i] |= (uint8_t)(1u << ((c % m->width) & 7u));
+            uint8_t i = (uint8_t)((c / b.width) * ROW + (c % b.width) / 8u);
+            if (!f->front[i]) b.list[b.count++] = i;
+            f->front[i] |= (uint8_t)(1u << ((c % b.width) & 7u));
         }
     }
     if (nib_get(f, src_i) == 0) {
@@ -243,23 +269,25 @@ static uint16_t bfs(flood_t *f, const maze_t *m, uint16_t src_i, uint8_t flags, 
         if (!(flags & FLOOD_FULL)) return 0;
     }
 
-    while (count) {
-        count = headings == 4 ? level_configs(f, m, cur, count, now, unknown)
-                              : level_cells(f, m, cur, count, now, unknown);
+    while (b.count) {
+        uint8_t next = (uint8_t)(now == MOD - 1u ? 0u : now + 1u), x = (uint8_t)(UNSEEN ^ next);
+        uint8_t count = headings == 4 ? level_configs(&b, now, x) : level_cells(&b, x);
         if (src_cost == FLOOD_UNREACHABLE && nib_get(f, src_i) != UNSEEN) {
             src_cost = (uint16_t)(level + 1u);
             if (!(flags & FLOOD_FULL)) break;
         }
-        /* level k+1 becomes current: its bytes move down (the bytes of
-         * level k are not cleared: only listed bytes are read) */
-        cur ^= 1u;
+        /* level k+1 becomes current: its bytes move down, the lists swap */
+        uint8_t *t = b.list;
+        b.list = b.next_list;
+        b.next_list = t;
+        b.count = count;
         for (uint8_t n = 0; n < count; n++) {
-            uint8_t i = f->list[cur][n];
+            uint8_t i = b.list[n];
             f->front[i] = f->front[FRONT + i];
             f->front[FRONT + i] = 0;
         }
         level++;
-        now = (uint8_t)(now == MOD - 1u ? 0u : now + 1u);
+        now = next;
     }
     return src_cost;
 }
