@@ -6,7 +6,7 @@
  * half of its walls forgotten; targets the goal and the start cell; unknown
  * walls open and closed; full floods and floods stopping at a source.
  * Checked: the returned cost, the cost of every configuration the flood
- * reached, that every configuration cheaper than the source was reached,
+ * reached, which configurations a flood stopping at its source reached,
  * and the direction flood_next_dir / flood_next_cell_dir picks at every
  * step of the path walked down the one field (as a speed run does). */
 #include <stdarg.h>
@@ -105,9 +105,9 @@ static int ref_next(const maze_t *m, maze_cell_t c, uint8_t h, uint16_t k, uint8
 }
 
 /* Every configuration (heading) or cell (!heading) against the reference,
- * after a flood that returned k for source s; full: the flood had
- * FLOOD_FULL. A stopped flood holds at least every configuration cheaper
- * than the source, and nothing dearer than it. */
+ * after a flood that returned k; full: the flood had FLOOD_FULL. A flood
+ * that stopped at its source holds every configuration up to the source's
+ * cost and none dearer (flood.h). */
 static void check_field(const maze_t *m, int heading, int full, uint16_t k)
 {
     uint16_t n = heading ? (uint16_t)(maze_cells(m) * 4u) : maze_cells(m);
@@ -121,7 +121,7 @@ static void check_field(const maze_t *m, int heading, int full, uint16_t k)
             assert_int_equal(flood_cost(&f, c, h, ref[i]), ref[i]);
             if (!full && k != NONE) assert_true(ref[i] <= k);
         } else if (ref[i] != NONE) {
-            assert_true(!full && k != NONE && ref[i] >= k);
+            assert_true(!full && k != NONE && ref[i] > k);
         }
     }
 }
