@@ -31,7 +31,7 @@ HOST_SRC := $(wildcard sim/*.c) hal/sim/hal_sim.c hal/wire/wire.c $(LCM_C)
 LIB_SRC  := $(FW_SRC) $(HOST_SRC)
 TOOLS    := mmmaze mmsim mmlog mmview
 TEST_SRC := $(wildcard test/test_*.c)
-TESTS    := $(patsubst test/%.c,$(B)/test/%,$(TEST_SRC))
+TESTS    := $(patsubst test/%.c,$(B)/test/%,$(TEST_SRC)) $(B)/test/test_flood_ref16
 
 # Link-time mocks: a test that wraps HAL calls names them here.
 WRAP_test_explore := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros
@@ -84,6 +84,12 @@ $(B)/libmm_san.a: $(patsubst %.c,$(B)/san/%.o,$(LIB_SRC))
 $(B)/test/%: test/%.c $(B)/libmm_san.a test/wire_vectors.c
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(EXTRA_$*) $(WRAP_$*) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
+# The flood against its reference again with the AVR's 16x16 maximum, where
+# maze_cell_t is uint8_t (the host library is built for 32x32)
+FLOOD16_SRC := test/test_flood_ref.c firmware/flood.c firmware/maze.c sim/mazefile.c
+$(B)/test/test_flood_ref16: $(FLOOD16_SRC) $(wildcard firmware/*.h) sim/mazefile.h | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) -Ifirmware -Isim -O1 -g $(SAN) -DMAZE_MAX_SIZE=16 $(FLOOD16_SRC) -lcmocka -o $@
 $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
