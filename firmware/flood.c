@@ -66,9 +66,10 @@ uint16_t flood_cell_dist(const flood_t *f, maze_cell_t c, uint16_t near)
  *
  * Measured on the AVR (avr-gcc 5.4 -Os, simavr; docs/BENCHMARKS.md): the
  * old BFS over configurations took 586,511 cycles for a blank 16x16 map
- * (a call through a function pointer, two nibble accesses and a bitset
- * scan of 128 bytes per level per configuration). Expanding a cell's four
- * headings at once, reading its wall byte once, and the list: 138,416. The
+ * (per configuration a call through a function pointer and nibble reads
+ * and writes, per level a scan of all 128 bytes of its open set).
+ * Expanding a cell's four headings at once, reading its wall byte once,
+ * and the lists: 138,418. The
  * code's shape matters to avr-gcc's register allocation: the same steps
  * written as separate functions, or with pointers stepped per cell instead
  * of the cell index, spill to the stack and cost 5-25 % more. */
@@ -129,7 +130,8 @@ static maze_cell_t first_cell(const bfs_t *b, uint8_t i)
 /* Heading-aware level: expand the configurations of cost k (k mod 15 =
  * now) of every cell of the current frontier, all four headings of a cell
  * at once; x = 15 ^ ((k+1) mod 15) XORed into an unseen nibble makes it
- * k+1. Clears the current frontier; returns the next one's list length. */
+ * k+1. Clears the current frontier's bytes it reads; returns the next
+ * frontier's list length. */
 static uint8_t level_configs(const bfs_t *b, uint8_t now, uint8_t x)
 {
     uint8_t *ln = b->next_list;
@@ -217,6 +219,7 @@ static uint8_t level_cells(const bfs_t *b, uint8_t x)
         uint8_t i = b->list[n];
         uint8_t *fc = b->front + i;
         uint8_t bits = *fc;
+        *fc = 0;
         maze_cell_t c = first_cell(b, i);
         for (uint8_t bit = 1; bits; bit = (uint8_t)(bit << 1), bits >>= 1, c++) {
             if (!(bits & 1u)) continue;

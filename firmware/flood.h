@@ -21,7 +21,7 @@
  * the list of its non-zero bytes, so a level touches only the bytes that
  * hold cells. For 16x16: cost field 512 B + frontiers 64 B + lists 64 B +
  * target set 32 B. On a 16 MHz ATmega328P a full heading-aware flood takes
- * 138,416 cycles (8.7 ms) on a blank map, 178,931 (11.2 ms) on japan2018's
+ * 138,418 cycles (8.7 ms) on a blank map, 178,933 (11.2 ms) on japan2018's
  * true map (docs/BENCHMARKS.md).
  */
 #ifndef FLOOD_H
