@@ -31,7 +31,7 @@ HOST_SRC := $(wildcard sim/*.c) hal/sim/hal_sim.c hal/wire/wire.c $(LCM_C)
 LIB_SRC  := $(FW_SRC) $(HOST_SRC)
 TOOLS    := mmmaze mmsim mmlog mmview
 TEST_SRC := $(wildcard test/test_*.c)
-TESTS    := $(patsubst test/%.c,$(B)/test/%,$(TEST_SRC))
+TESTS    := $(patsubst test/%.c,$(B)/test/%,$(TEST_SRC)) $(B)/test/test_flood_ref16
 
 # Link-time mocks: a test that wraps HAL calls names them here.
 WRAP_test_explore := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros
@@ -95,6 +95,12 @@ $(B)/test/%: test/%.c $(B)/libmm_san.a test/wire_vectors.c
 $(B)/test/test_wire_rx14: $(SRC_test_wire_rx14) $(B)/libmm_san.a test/wire_vectors.c hal/wire/wire.c hal/wire/wire.h
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $(SRC_$(@F)) $(EXTRA_$(@F)) $(WRAP_$(@F)) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
+# The flood against its reference again with the AVR's 16x16 maximum, where
+# maze_cell_t is uint8_t (the host library is built for 32x32)
+FLOOD16_SRC := test/test_flood_ref.c firmware/flood.c firmware/maze.c sim/mazefile.c
+$(B)/test/test_flood_ref16: $(FLOOD16_SRC) $(wildcard firmware/*.h) sim/mazefile.h | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) -Ifirmware -Isim -O1 -g $(SAN) -DMAZE_MAX_SIZE=16 $(FLOOD16_SRC) -lcmocka -o $@
 $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
@@ -248,14 +254,23 @@ docs-img: $(B)/mmsim $(B)/mmview
 # ---- benchmarks ----
 bench: deps
 	@$(MAKE) --no-print-directory bench-run
-bench-run: $(B)/mmmaze $(B)/mmsim $(B)/bench_flood $(B)/simavr_cycles $(B)/avr/flood0.elf $(B)/avr/flood10.elf \
+bench-run: $(B)/mmmaze $(B)/mmsim $(B)/bench_flood $(B)/simavr_cycles $(B)/avr/flood.elf \
 	$(B)/avr/tick0.elf $(B)/avr/tick100.elf arduino
-	bash bench/run.sh
+	BENCH_MAZE=$(BENCH_MAZE) bash bench/run.sh
 $(B)/simavr_cycles: bench/simavr_cycles.c | deps
 	$(CC) -O2 $< $$(pkg-config --cflags --libs simavr) -o $@
-$(B)/avr/flood%.elf: bench/avr_flood.c $(FW_SRC) | deps
+# The AVR flood benchmark's true map: japan2018 from the database, else a
+# generated 16x16 from mazes/ (bench/avr_flood.c)
+SHARED     ?= ../shared
+BENCH_MAZE ?= $(firstword $(wildcard $(SHARED)/mazes/classic/japan2018.txt) mazes/gen-16x16-s1.txt)
+$(B)/maze_header: bench/maze_header.c $(B)/libmm.a
+	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(B)/libmm.a $(LIBS) -o $@
+$(B)/avr/bench_maze.h: $(B)/maze_header $(BENCH_MAZE)
 	@mkdir -p $(dir $@)
-	$(AVR_CC) $(AVR_FLAGS) -DREPS=$* -Wl,--gc-sections bench/avr_flood.c firmware/flood.c firmware/maze.c -o $@
+	$(B)/maze_header $(BENCH_MAZE) > $@.tmp && mv $@.tmp $@
+$(B)/avr/flood.elf: bench/avr_flood.c $(B)/avr/bench_maze.h $(FW_SRC) | deps
+	$(AVR_CC) $(AVR_FLAGS) -I$(B)/avr -Wl,--gc-sections -Wl,--wrap=flood_run bench/avr_flood.c \
+	  firmware/explore.c firmware/flood.c firmware/maze.c -o $@
 $(B)/avr/tick%.elf: bench/avr_tick.c $(FW_SRC) | deps
 	@mkdir -p $(dir $@)
 	$(AVR_CC) $(AVR_FLAGS) -DREPS=$* -Wl,--gc-sections bench/avr_tick.c firmware/motion.c firmware/odom.c \

@@ -28,8 +28,13 @@ else
   echo "SKIP database benchmarks: $DB not found"
   $B/bench_flood mazes/*.txt
 fi
-base=$($B/simavr_cycles $B/avr/flood0.elf 2>/dev/null | tail -1); ten=$($B/simavr_cycles $B/avr/flood10.elf 2>/dev/null | tail -1)
-awk -v a="$base" -v b="$ten" 'BEGIN { c = (b - a) / 10; printf "AVR (ATmega328P 16 MHz, simavr): full heading-aware flood of a blank 16x16 map: %d cycles = %.1f ms\n", c, c / 16000 }'
+# AVR floods (bench/avr_flood.c: marks 1-6, the true map is $BENCH_MAZE)
+$B/simavr_cycles $B/avr/flood.elf 2>/dev/null | awk -v maze="$(basename "${BENCH_MAZE:-true map}" .txt)" '
+  BEGIN { what[1] = "full heading-aware flood, blank 16x16 map"; what[2] = "blank map, from the start, stopping there"
+          what[3] = "full heading-aware flood, true map " maze; what[4] = "true map " maze ", from the start, stopping there"
+          what[5] = "every flood of a grid-mode search of " maze; what[6] = "every search decision (explore_next) of " maze }
+  /^mark/ { n = $2 + 0; printf "AVR (ATmega328P 16 MHz, simavr): %s: %s calls, mean %d cycles = %.1f ms, max %d = %.1f ms\n",
+            what[n], $3, $6, $6 / 16000, $8, $8 / 16000 }'
 base=$($B/simavr_cycles $B/avr/tick0.elf 2>/dev/null | tail -1); hundred=$($B/simavr_cycles $B/avr/tick100.elf 2>/dev/null | tail -1)
 awk -v a="$base" -v b="$hundred" 'BEGIN { c = (b - a) / 100; printf "AVR (ATmega328P 16 MHz, simavr): one control tick (motion_tick, float): %d cycles = %.3f ms\n", c, c / 16000 }'
 # LCM telemetry overhead: the firmware contest on mazes/gen-16x16-s1.txt, best

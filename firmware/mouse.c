@@ -459,7 +459,7 @@ static int path_dir(int to_goal, maze_cell_t c, uint8_t h)
  * robot is run_offset_mm past the centre of st.cell, facing st.heading. */
 static void run_plan(int to_goal)
 {
-    float dist0 = mo.odom.dist_mm; /* the flood below takes 10-40 ms on an AVR: the robot rolls on */
+    float dist0 = mo.odom.dist_mm; /* the flood below takes up to ~11 ms on an AVR: the robot rolls on */
     /* one flood per run, at its start: the map no longer changes, so the
      * field stays valid along the path and ex.path_cost follows the robot
      * (cells + quarter turns made). On the AVR a flood after every smooth
