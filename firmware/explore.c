@@ -46,11 +46,14 @@ static uint16_t start_cost(explore_t *e, uint8_t flags)
     return flood_run(&e->flood, &e->map, e->map.start, e->map.start_heading, flags);
 }
 
-static int check_proven(explore_t *e)
+/* Proven when the start-to-goal cost over known-open walls equals the cost
+ * with unknown walls open. *open gets the latter; the flood field is left
+ * as that (optimistic) flood made it, which mark_unknown_on_path walks. */
+static int check_proven(explore_t *e, uint16_t *open)
 {
     uint16_t known = start_cost(e, 0);
-    uint16_t open = start_cost(e, FLOOD_UNKNOWN_OPEN);
-    if (known == FLOOD_UNREACHABLE || known != open) return 0;
+    *open = start_cost(e, FLOOD_UNKNOWN_OPEN);
+    if (known == FLOOD_UNREACHABLE || known != *open) return 0;
     char line[HAL_LOG_MAX + 1];
     e->proven_at_step = e->steps;
     e->run_cost = known;
@@ -67,13 +70,16 @@ static int check_proven(explore_t *e)
  * needs 256 and 271.7, because the mouse, starting at the goal, then sweeps
  * back towards the start instead of ending far from it. Ties on the walk
  * go to known-open walls, so the path checked is the most known one.
- * Returns how many unknown walls the path crosses. The target set is not
- * read by the walk, so it is rebuilt on the field the start flood left. */
-static uint16_t mark_unknown_on_path(explore_t *e)
+ * Returns how many unknown walls the path crosses. k is the optimistic
+ * start cost and the field the one check_proven's optimistic flood left (the
+ * same flood again would give the same field: one flood less per cell while
+ * proving, 3 instead of 4). The target set is not read by the walk, so it
+ * is rebuilt on that field. */
+static uint16_t mark_unknown_on_path(explore_t *e, uint16_t k)
 {
     maze_cell_t c = e->map.start;
     uint8_t h = e->map.start_heading;
-    uint16_t k = start_cost(e, FLOOD_UNKNOWN_OPEN), unknown = 0;
+    uint16_t unknown = 0;
 
     flood_target_clear(&e->flood);
     while (k != 0 && k != FLOOD_UNREACHABLE) {
@@ -118,12 +124,13 @@ static int decide(explore_t *e)
             HAL_LOG_STR("explore: goal unreachable");
             e->phase = EXPLORE_NO_GOAL;
             return -1;
-        case EXPLORE_PROVE:
-            if (check_proven(e)) {
+        case EXPLORE_PROVE: {
+            uint16_t open;
+            if (check_proven(e, &open)) {
                 e->phase = EXPLORE_RETURN;
                 continue;
             }
-            if (mark_unknown_on_path(e) == 0) {
+            if (mark_unknown_on_path(e, open) == 0) {
                 /* Cannot happen while known != open; stop rather than loop. */
                 HAL_LOG_STR("explore: no unknown wall left to explore");
                 e->phase = EXPLORE_NO_GOAL;
@@ -136,6 +143,7 @@ static int decide(explore_t *e)
             HAL_LOG_STR("explore: exploration target unreachable");
             e->phase = EXPLORE_NO_GOAL;
             return -1;
+        }
         case EXPLORE_RETURN:
             if (e->cell == e->map.start) {
                 e->phase = EXPLORE_DONE;
