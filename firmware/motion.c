@@ -128,6 +128,9 @@ void motion_tick(motion_t *m, float dt_s)
         if (m->lateral_valid) {
             m->heading_rad += RC_KI_LATERAL * m->lateral_mm * dt_s;
             offset_rad = RC_KP_LATERAL * m->lateral_mm;
+#ifdef RC_LATERAL_REF_MM_S
+            if (m->fwd.speed > RC_LATERAL_REF_MM_S) offset_rad *= RC_LATERAL_REF_MM_S / m->fwd.speed;
+#endif
             if (offset_rad > RC_LATERAL_MAX_RAD) offset_rad = RC_LATERAL_MAX_RAD;
             if (offset_rad < -RC_LATERAL_MAX_RAD) offset_rad = -RC_LATERAL_MAX_RAD;
         }

@@ -60,8 +60,12 @@
 #ifdef __AVR__
 /* over the link the wheel loop lags 5-9 ms: at 1100 mm/s (feed-forward ~930
  * of 1023) the outer wheel saturated and the heading weaved +-10 degrees on
- * japan2019's long straight; 900 leaves ~260 of headroom (docs/BENCHMARKS.md) */
-#define RC_RUN_MM_S 900.0f
+ * japan2019's long straight. At 900 the braking into a smooth turn still
+ * swung the heading +-4 degrees: the first turn of japan2019's staircase
+ * began 2 degrees off, the nine turns after it drifted 5 mm a step and the
+ * robot hit the wall at (0.61, 1.40) m. At 700 the staircase stays within
+ * 5 mm of the centre lines (docs/BENCHMARKS.md). */
+#define RC_RUN_MM_S 700.0f
 #else
 #define RC_RUN_MM_S 1100.0f          /* speed runs (motor no-load ~1210 mm/s at 6 V) */
 #endif
@@ -140,6 +144,14 @@
 #define RC_KP_LATERAL 0.01f   /* rad per mm */
 #define RC_KI_LATERAL 0.01f  /* rad/s per mm */
 #define RC_LATERAL_MAX_RAD 0.15f /* at most 8.6 degrees off the held heading */
+#ifdef __AVR__
+/* Over the link the heading loop lags more, and the lateral loop's
+ * damping falls with speed (its stiffness is v * RC_KP_LATERAL): at 900
+ * mm/s the robot weaved +-6 degrees at ~1.7 Hz on japan2019's straights and
+ * entered turns up to 10 degrees off. Above this speed the centring P is
+ * scaled by RC_LATERAL_REF_MM_S / v, which keeps the loop as at 500 mm/s. */
+#define RC_LATERAL_REF_MM_S 500.0f
+#endif
 #define RC_KP_HEADING 10.0f /* rad/s of steering per rad of heading error */
 
 /* a move is over when the robot is within this of its setpoint, this slow */
