@@ -44,8 +44,6 @@ MCU_RX_FLAGS := -DWIRE_RX_LOG_MAX=14
 # test_wire again with the MCU's decoder buffers, so its fault runs check the
 # decoder as shipped: its own wire.c with the flag (libmm_san's has the host's).
 TESTS += $(B)/test/test_wire_rx14
-SRC_test_wire_rx14 := test/test_wire.c
-EXTRA_test_wire_rx14 := $(EXTRA_test_wire) hal/wire/wire.c $(MCU_RX_FLAGS)
 
 .PHONY: all deps test test-run sim sim-run bench bench-run fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay view docs-img
 all: tools
@@ -91,10 +89,10 @@ $(B)/libmm_san.a: $(patsubst %.c,$(B)/san/%.o,$(LIB_SRC))
 $(B)/test/%: test/%.c $(B)/libmm_san.a test/wire_vectors.c
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(EXTRA_$*) $(WRAP_$*) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
-# a test built from another test's source (SRC_name) with its own EXTRA_name
-$(B)/test/test_wire_rx14: $(SRC_test_wire_rx14) $(B)/libmm_san.a test/wire_vectors.c hal/wire/wire.c hal/wire/wire.h
+$(B)/test/test_wire_rx14: test/test_wire.c $(B)/libmm_san.a test/wire_vectors.c hal/wire/wire.c hal/wire/wire.h
 	@mkdir -p $(dir $@)
-	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $(SRC_$(@F)) $(EXTRA_$(@F)) $(WRAP_$(@F)) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $(MCU_RX_FLAGS) test/test_wire.c $(EXTRA_test_wire) hal/wire/wire.c \
+	  $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
 # The flood against its reference again with the AVR's 16x16 maximum, where
 # maze_cell_t is uint8_t (the host library is built for 32x32)
 FLOOD16_SRC := test/test_flood_ref.c firmware/flood.c firmware/maze.c sim/mazefile.c
