@@ -6,7 +6,7 @@
 #include <time.h>
 
 #include "flood.h"
-#include "mazefile.h"
+#include "maze/mazefile.h"
 
 static double now_s(void)
 {

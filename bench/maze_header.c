@@ -4,7 +4,7 @@
  * image has no file system and no maze parser. */
 #include <stdio.h>
 
-#include "mazefile.h"
+#include "maze/mazefile.h"
 
 #define AVR_MAX_SIDE 16 /* cells: the AVR build's MAZE_MAX_SIZE */
 

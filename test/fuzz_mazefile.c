@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mazefile.h"
+#include "maze/mazefile.h"
 
 static maze_t first, second;
 static char text[1 << 16], again[1 << 16];

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "config.h"
+#include "world/config.h"
 
 static simcfg_t c;
 static char err[300];

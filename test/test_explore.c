@@ -12,11 +12,11 @@
 #include <string.h>
 
 #include "explore.h"
-#include "grid.h"
+#include "maze/grid.h"
 #include "hal.h"
-#include "mazefile.h"
-#include "mazegen.h"
-#include "solve.h"
+#include "maze/mazefile.h"
+#include "maze/mazegen.h"
+#include "maze/solve.h"
 
 static int log_checked; /* while set, every hal_log line must be expected */
 

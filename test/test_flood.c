@@ -6,7 +6,7 @@
 #include <cmocka.h>
 
 #include "flood.h"
-#include "solve.h"
+#include "maze/solve.h"
 
 static flood_t f;
 

@@ -22,7 +22,7 @@
 #include <string.h>
 
 #include "flood.h"
-#include "mazefile.h"
+#include "maze/mazefile.h"
 
 #define NONE 0xFFFFu
 #define SOURCES 12 /* non-full floods per map, flag set and target set */

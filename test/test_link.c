@@ -17,7 +17,7 @@
 #include <unistd.h>
 #include <cmocka.h>
 
-#include "link.h"
+#include "link/link.h"
 #include "wire.h"
 
 static link_t lk;

@@ -17,7 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mazefile.h"
+#include "maze/mazefile.h"
 
 static maze_t a, b;
 static char err[MAZEFILE_ERR_LEN];

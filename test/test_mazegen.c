@@ -7,8 +7,8 @@
 
 #include <string.h>
 
-#include "mazegen.h"
-#include "solve.h"
+#include "maze/mazegen.h"
+#include "maze/solve.h"
 
 static maze_t m, m2;
 static solve_path_t best;

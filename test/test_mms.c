@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mms.h"
+#include "mms/mms.h"
 
 static maze_t truth;
 static mms_t mm;

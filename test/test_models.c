@@ -7,10 +7,10 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "config.h"
-#include "encoder.h"
-#include "motor.h"
-#include "tof.h"
+#include "world/config.h"
+#include "world/encoder.h"
+#include "world/motor.h"
+#include "world/sensors/tof.h"
 
 static simcfg_t cfg;
 

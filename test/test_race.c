@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "race.h"
+#include "world/race.h"
 
 static maze_t m;
 static race_t r;

@@ -18,15 +18,15 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "config.h"
-#include "driver.h"
+#include "world/config.h"
+#include "contest/driver.h"
 #include "hal.h"
 #include "hal_sim.h"
-#include "hud.h"
-#include "mazegen.h"
-#include "replay.h"
-#include "telem.h"
-#include "view.h"
+#include "view/hud.h"
+#include "maze/mazegen.h"
+#include "view/replay.h"
+#include "telemetry/telem.h"
+#include "view/view.h"
 
 #define CHECK_AT 3 /* live states kept, at CHECK_S[i] */
 static const double CHECK_S[CHECK_AT] = { 0.5, 1.52, 2.5 };

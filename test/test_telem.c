@@ -13,7 +13,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "config.h"
+#include "world/config.h"
 #include "hal.h"
 #include "hal_sim.h"
 #include "mmlcm_belief_t.h"
@@ -22,8 +22,8 @@
 #include "mmlcm_race_event_t.h"
 #include "mmlcm_race_t.h"
 #include "mmlcm_sensors_t.h"
-#include "sim.h"
-#include "telem.h"
+#include "world/sim.h"
+#include "telemetry/telem.h"
 
 /* What the subscribers saw. */
 static struct {

@@ -12,10 +12,10 @@
 #include <GLFW/glfw3.h>
 #include <math.h>
 
-#include "config.h"
-#include "hud.h"
-#include "sim.h"
-#include "view.h"
+#include "world/config.h"
+#include "view/hud.h"
+#include "world/sim.h"
+#include "view/view.h"
 
 static maze_t maze;
 static sim_t sim;

@@ -9,9 +9,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "config.h"
-#include "motor.h"
-#include "world.h"
+#include "world/config.h"
+#include "world/motor.h"
+#include "world/world.h"
 
 static simcfg_t cfg;
 

@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "lcmlog.h"
+#include "telemetry/lcmlog.h"
 #include "mmlcm_belief_t.h"
 #include "mmlcm_link_t.h"
 #include "mmlcm_maze_t.h"

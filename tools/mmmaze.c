@@ -9,13 +9,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "grid.h"
+#include "maze/grid.h"
 #include "hal_sim.h"
 #include "maze.h"
-#include "mazedir.h"
-#include "mazefile.h"
-#include "mazegen.h"
-#include "solve.h"
+#include "maze/mazedir.h"
+#include "maze/mazefile.h"
+#include "maze/mazegen.h"
+#include "maze/solve.h"
 
 enum { EXIT_OK = 0, EXIT_NOT_REACHED = 1, EXIT_BAD_INPUT = 2, EXIT_EXTERNAL = 3 };
 

@@ -18,24 +18,24 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "config.h"
-#include "driver.h"
+#include "world/config.h"
+#include "contest/driver.h"
 #include "hal.h"
 #include "hal_sim.h"
-#include "link.h"
-#include "pil.h"
-#include "serial.h"
+#include "link/link.h"
+#include "board/pil.h"
+#include "link/serial.h"
 #include "mouse.h"
-#include "solve.h"
-#include "mazedir.h"
-#include "mazefile.h"
-#include "mms.h"
-#include "sim.h"
-#include "telem.h"
+#include "maze/solve.h"
+#include "maze/mazedir.h"
+#include "maze/mazefile.h"
+#include "mms/mms.h"
+#include "world/sim.h"
+#include "telemetry/telem.h"
 #include "cli.h"
-#include "outfile.h"
-#include "report.h"
-#include "view.h"
+#include "io/outfile.h"
+#include "view/report.h"
+#include "view/view.h"
 
 enum { EXIT_OK = 0, EXIT_NOT_REACHED = 1, EXIT_BAD_INPUT = 2, EXIT_EXTERNAL = 3 };
 

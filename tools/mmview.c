@@ -15,9 +15,9 @@
 #include <string.h>
 
 #include "cli.h"
-#include "outfile.h"
-#include "replay.h"
-#include "view.h"
+#include "io/outfile.h"
+#include "view/replay.h"
+#include "view/view.h"
 
 enum { EXIT_OK = 0, EXIT_BAD_INPUT = 2, EXIT_EXTERNAL = 3 };
 

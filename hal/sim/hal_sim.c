@@ -5,7 +5,7 @@
 
 #include <math.h>
 
-#include "sim.h"
+#include "world/sim.h"
 
 static sim_t *sim;
 static uint64_t sim_time_us;

@@ -17,8 +17,8 @@
 #include <unistd.h>
 
 #include "mouse.h"
-#include "sim.h"
-#include "world.h"
+#include "world/sim.h"
+#include "world/world.h"
 
 enum { MOVE_NONE = 0, MOVE_SENSE, MOVE_FORWARD, MOVE_TURN, MOVE_RESET };
 

@@ -14,7 +14,7 @@
 #include "image.h"
 #include "replay.h"
 #include "scene.h"
-#include "serial.h"
+#include "link/serial.h"
 
 #define FRAME_S (1.0 / 60)   /* wall time between drawn frames */
 #define MAX_LAG_S 0.25       /* sim time behind the wall clock before the backlog is dropped */

@@ -12,7 +12,7 @@
 #include "maze.h"
 #include "motor.h"
 #include "race.h"
-#include "tof.h"
+#include "world/sensors/tof.h"
 #include "world.h"
 
 typedef struct sim_s {

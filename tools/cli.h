@@ -3,7 +3,7 @@
 #ifndef CLI_H
 #define CLI_H
 
-#include "view.h"
+#include "view/view.h"
 
 enum { CLI_BAD_INPUT = 2 }; /* the exit code of a bad flag */
 

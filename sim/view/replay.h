@@ -18,7 +18,7 @@
 #include "mmlcm_race_t.h"
 #include "mmlcm_sensors_t.h"
 #include "scene.h"
-#include "sim.h"
+#include "world/sim.h"
 
 typedef struct {
     int64_t utime;

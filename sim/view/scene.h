@@ -10,7 +10,7 @@
 #ifndef SCENE_H
 #define SCENE_H
 
-#include "sim.h"
+#include "world/sim.h"
 
 enum { SCENE_BIRD = 1, SCENE_FOLLOW = 2, SCENE_TOP = 3, SCENE_CAMERAS = 3 };
 

@@ -2,13 +2,13 @@
 #include "scene.h"
 
 #include "font.h"
-#include "mms.h"
+#include "mms/mms.h"
 
 #include <GL/gl.h>
 #include <math.h>
 #include <string.h>
 
-#include "solve.h"
+#include "maze/solve.h"
 
 #define FOV_DEG 45.0  /* vertical field of view */
 #define NEAR_M 0.01

@@ -11,7 +11,7 @@
 
 #include <stddef.h>
 
-#include "sim.h"
+#include "world/sim.h"
 
 #define REPORT_SAMPLE_S 0.005 /* trajectory sample period, s of sim time */
 

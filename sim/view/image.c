@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "font.h"
-#include "outfile.h"
+#include "io/outfile.h"
 
 int image_init(image_t *im, int w, int h, uint32_t rgb)
 {

@@ -9,7 +9,7 @@
 #include <unistd.h>
 
 #include "serial.h"
-#include "sim.h"
+#include "world/sim.h"
 
 #define BYTE_COST 10000000ull /* one 8N1 byte = 10 bits = 10e6 bit-us */
 

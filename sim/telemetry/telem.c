@@ -12,7 +12,7 @@
 #include <unistd.h>
 
 #include "hal_sim.h"
-#include "link.h"
+#include "link/link.h"
 #include "mmlcm_belief_t.h"
 #include "mmlcm_link_t.h"
 #include "mmlcm_maze_t.h"
@@ -21,7 +21,7 @@
 #include "mmlcm_race_event_t.h"
 #include "mmlcm_race_t.h"
 #include "mmlcm_sensors_t.h"
-#include "solve.h"
+#include "maze/solve.h"
 
 #define NONE UINT64_MAX
 

@@ -10,7 +10,7 @@
 #define TOF_H
 
 #include <stdint.h>
-#include "config.h"
+#include "world/config.h"
 
 typedef struct {
     double range_m, blind_m, cv;

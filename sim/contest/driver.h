@@ -7,8 +7,8 @@
 #ifndef DRIVER_H
 #define DRIVER_H
 
-#include "sim.h"
-#include "solve.h"
+#include "world/sim.h"
+#include "maze/solve.h"
 
 typedef struct {
     double wx[MAZE_MAX_CELLS + 1], wy[MAZE_MAX_CELLS + 1]; /* corner waypoints, m */

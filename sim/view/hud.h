@@ -9,7 +9,7 @@
 #ifndef HUD_H
 #define HUD_H
 
-#include "sim.h"
+#include "world/sim.h"
 
 enum {
     HUD_BTN_BIRD, HUD_BTN_FOLLOW, HUD_BTN_TOP, HUD_BTN_OVERLAY,

@@ -27,7 +27,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "sim.h"
+#include "world/sim.h"
 
 #define TELEM_RATE_HZ 100.0 /* default rate of the high-rate channels, Hz */
 #define TELEM_RACE_HZ 10.0  /* rate of MM_RACE, Hz */

@@ -9,10 +9,10 @@
 #include <string.h>
 
 #include "font.h"
-#include "mms.h"
+#include "mms/mms.h"
 #include "image.h"
-#include "outfile.h"
-#include "solve.h"
+#include "io/outfile.h"
+#include "maze/solve.h"
 
 typedef struct {
     float x, y, v; /* body centre, m; speed along the heading, m/s */

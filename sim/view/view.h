@@ -33,7 +33,7 @@
 
 #include "replay.h"
 #include "scene.h"
-#include "sim.h"
+#include "world/sim.h"
 
 #define VIEW_SPEED_MAX 64.0
 #define VIEW_SLIDER 100 /* view_click's answer for the replay slider */
