@@ -2,6 +2,8 @@
 #include "cli.h"
 
 #include <errno.h>
+#include <getopt.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -44,5 +46,66 @@ int cli_view_option(const char *prog, const char *name, const char *arg, view_op
     } else {
         return cli_bad(prog, "%s: not a viewer option", name);
     }
+    return 0;
+}
+
+static int cli_store(const char *prog, const cli_opt_t *t, const char *arg, void *opts)
+{
+    char *field = (char *)opts + t->off, opt[80];
+    double v;
+    snprintf(opt, sizeof opt, "--%s", t->name);
+    switch (t->kind) {
+    case CLI_SET: *(int *)field = 1; return 0;
+    case CLI_STR: *(const char **)field = arg; return 0;
+    case CLI_NUM: return cli_number(prog, opt, arg, t->lo, t->hi, (double *)field) ? CLI_BAD_INPUT : 0;
+    case CLI_INT:
+        if (cli_number(prog, opt, arg, t->lo, t->hi, &v)) return CLI_BAD_INPUT;
+        if (v != floor(v)) {
+            fprintf(stderr, "%s: %s: expected a whole number from %g to %g, got '%s'\n", prog, opt, t->lo, t->hi, arg);
+            return CLI_BAD_INPUT;
+        }
+        *(int *)field = (int)v;
+        return 0;
+    case CLI_FN: return t->fn(prog, opts, arg);
+    }
+    return CLI_BAD_INPUT;
+}
+
+int cli_parse(const char *prog, const cli_opt_t *table, int argc, char **argv, void *opts, int *seen, int *first)
+{
+    size_t n = 0;
+    while (table[n].name) n++;
+    struct option *lo = calloc(n + 1, sizeof *lo);
+    if (!lo) {
+        fprintf(stderr, "%s: out of memory\n", prog);
+        return CLI_BAD_INPUT;
+    }
+    for (size_t i = 0; i < n; i++) {
+        cli_kind_t k = table[i].kind;
+        lo[i].name = table[i].name;
+        int has = k == CLI_SET ? 0 : k == CLI_FN ? table[i].has_arg : 1;
+        lo[i].has_arg = has == 0 ? no_argument : has == 2 ? optional_argument : required_argument;
+        lo[i].val = 1000 + (int)i;
+    }
+    int c, rc = 0;
+    opterr = 0;
+    optind = 1;
+    while (!rc && (c = getopt_long(argc, argv, "", lo, NULL)) != -1) {
+        if (c < 1000 || c >= 1000 + (int)n) {
+            rc = cli_bad(prog, "unknown option or missing value: '%s'", argv[optind - 1]);
+            break;
+        }
+        if (seen) seen[c - 1000]++;
+        rc = cli_store(prog, &table[c - 1000], optarg, opts);
+    }
+    free(lo);
+    *first = optind;
+    return rc;
+}
+
+int cli_seen(const cli_opt_t *table, const int *seen, const char *name)
+{
+    for (size_t i = 0; table[i].name; i++)
+        if (!strcmp(table[i].name, name)) return seen[i];
     return 0;
 }

@@ -40,94 +40,139 @@ static json_t *iarr16(const int16_t *v, int n)
     return a;
 }
 
+static int dec_pose(const void *data, int len, int64_t *ut, json_t **j)
+{
+    mmlcm_pose_t m;
+    if (mmlcm_pose_t_decode(data, 0, len, &m) != len) return -1;
+    *ut = m.utime;
+    if (j) *j = json_pack("{s:I, s:f, s:f, s:f, s:f, s:f}", "utime", (json_int_t)m.utime, "x_m", m.x_m, "y_m", m.y_m,
+                         "heading_rad", m.heading_rad, "v_m_s", m.v_m_s, "omega_rad_s", m.omega_rad_s);
+    return 0;
+}
+
+static int dec_motors(const void *data, int len, int64_t *ut, json_t **j)
+{
+    mmlcm_motors_t m;
+    if (mmlcm_motors_t_decode(data, 0, len, &m) != len) return -1;
+    *ut = m.utime;
+    if (j) *j = json_pack("{s:I, s:o, s:o, s:o, s:o, s:o}", "utime", (json_int_t)m.utime, "command",
+                         iarr16(m.command, 2), "voltage_v", darr(m.voltage_v, 2), "current_a", darr(m.current_a, 2),
+                         "wheel_rad_s", darr(m.wheel_rad_s, 2), "torque_nm", darr(m.torque_nm, 2));
+    return 0;
+}
+
+static int dec_sensors(const void *data, int len, int64_t *ut, json_t **j)
+{
+    mmlcm_sensors_t m;
+    if (mmlcm_sensors_t_decode(data, 0, len, &m) != len) return -1;
+    *ut = m.utime;
+    if (j) {
+        json_t *to = json_array();
+        for (int i = 0; i < 3; i++) json_array_append_new(to, json_boolean(m.tof_timeout[i]));
+        *j = json_pack("{s:I, s:[i,i], s:o, s:o, s:o}", "utime", (json_int_t)m.utime, "encoder", (int)m.encoder[0],
+                      (int)m.encoder[1], "tof_mm", iarr16(m.tof_mm, 3), "tof_timeout", to, "tof_true_m",
+                      darr(m.tof_true_m, 3));
+    }
+    return 0;
+}
+
+static int dec_race(const void *data, int len, int64_t *ut, json_t **j)
+{
+    mmlcm_race_t m;
+    if (mmlcm_race_t_decode(data, 0, len, &m) != len) return -1;
+    *ut = m.utime;
+    if (j) *j = json_pack("{s:I, s:b, s:f, s:b, s:f, s:b, s:i, s:i, s:f}", "utime", (json_int_t)m.utime, "started",
+                         m.started, "global_s", m.global_s, "in_run", m.in_run, "lap_s", m.lap_s, "over_time",
+                         m.over_time, "laps", (int)m.laps, "best_lap", (int)m.best_lap, "best_run_s", m.best_run_s);
+    return 0;
+}
+
+static int dec_race_event(const void *data, int len, int64_t *ut, json_t **j)
+{
+    mmlcm_race_event_t m;
+    if (mmlcm_race_event_t_decode(data, 0, len, &m) != len) return -1;
+    *ut = m.utime;
+    if (j) *j = json_pack("{s:I, s:s, s:i, s:f, s:f, s:f, s:b, s:b}", "utime", (json_int_t)m.utime, "kind",
+                         m.kind == MMLCM_RACE_EVENT_T_LAP_START ? "lap_start"
+                         : m.kind == MMLCM_RACE_EVENT_T_LAP_END ? "lap_end" : "unknown",
+                         "lap", (int)m.lap, "start_s", m.start_s, "end_s", m.end_s, "run_s", m.run_s, "over_time",
+                         m.over_time, "best", m.best);
+    return 0;
+}
+
+static int dec_belief(const void *data, int len, int64_t *ut, json_t **j)
+{
+    mmlcm_belief_t m;
+    if (mmlcm_belief_t_decode(data, 0, len, &m) != len) return -1;
+    *ut = m.utime;
+    if (j) {
+        json_t *w = json_array();
+        for (int i = 0; i < m.ncells; i++) json_array_append_new(w, json_integer((uint8_t)m.walls[i]));
+        *j = json_pack("{s:I, s:i, s:i, s:o, s:o, s:i, s:i, s:i, s:o}", "utime", (json_int_t)m.utime, "width",
+                      (int)(uint8_t)m.width, "height", (int)(uint8_t)m.height, "walls", w, "cost",
+                      iarr16(m.cost, m.ncells), "cell", (int)m.cell, "heading", (int)m.heading, "state",
+                      (int)m.state, "path", iarr16(m.path, m.path_len));
+    }
+    mmlcm_belief_t_decode_cleanup(&m);
+    return 0;
+}
+
+static int dec_link(const void *data, int len, int64_t *ut, json_t **j)
+{
+    mmlcm_link_t m;
+    if (mmlcm_link_t_decode(data, 0, len, &m) != len) return -1;
+    *ut = m.utime;
+    if (j)
+        *j = json_pack("{s:I, s:I, s:I, s:f, s:f, s:i, s:I, s:i, s:b, s:b}", "utime", (json_int_t)m.utime,
+                      "bytes_to_mcu", (json_int_t)m.bytes_to_mcu, "bytes_from_mcu", (json_int_t)m.bytes_from_mcu,
+                      "util_to_mcu", m.util_to_mcu, "util_from_mcu", m.util_from_mcu, "frame_errors",
+                      (int)m.frame_errors, "dropped_to_mcu", (json_int_t)m.dropped_to_mcu, "baud", (int)m.baud,
+                      "connected", (int)m.connected, "handshake", (int)m.handshake);
+    return 0;
+}
+
+static int dec_maze(const void *data, int len, int64_t *ut, json_t **j)
+{
+    mmlcm_maze_t m;
+    if (mmlcm_maze_t_decode(data, 0, len, &m) != len) return -1;
+    *ut = m.utime;
+    if (j) {
+        json_t *w = json_array();
+        for (int i = 0; i < m.ncells; i++) json_array_append_new(w, json_integer((uint8_t)m.walls[i]));
+        *j = json_pack("{s:I, s:s, s:i, s:i, s:o, s:i, s:i, s:o, s:b, s:I, s:s}", "utime", (json_int_t)m.utime,
+                      "path", m.path, "width", (int)(uint8_t)m.width, "height", (int)(uint8_t)m.height, "walls", w,
+                      "start", (int)m.start, "start_heading", (int)m.start_heading, "goals",
+                      iarr16(m.goals, m.ngoals), "centre_post", m.centre_post, "seed", (json_int_t)m.seed, "config",
+                      m.config);
+    }
+    mmlcm_maze_t_decode_cleanup(&m);
+    return 0;
+}
+
+typedef struct {
+    const char *channel;
+    int (*decode)(const void *data, int len, int64_t *ut, json_t **j);
+} decoder_t;
+
+static const decoder_t decoders[] = {
+    { "MM_POSE", dec_pose },
+    { "MM_MOTORS", dec_motors },
+    { "MM_SENSORS", dec_sensors },
+    { "MM_RACE", dec_race },
+    { "MM_RACE_EVENT", dec_race_event },
+    { "MM_BELIEF", dec_belief },
+    { "MM_LINK", dec_link },
+    { "MM_MAZE", dec_maze },
+};
+
 /* Decode one message of a known channel: its utime in *ut and, if j is not
  * NULL, the message as JSON. Returns 0, -1 if it does not decode, 1 if the
  * channel is not an mmlcm one. */
 static int decode(const char *ch, const void *data, int len, int64_t *ut, json_t **j)
 {
-    json_t *o = NULL;
-    if (!strcmp(ch, "MM_POSE")) {
-        mmlcm_pose_t m;
-        if (mmlcm_pose_t_decode(data, 0, len, &m) != len) return -1;
-        *ut = m.utime;
-        if (j) o = json_pack("{s:I, s:f, s:f, s:f, s:f, s:f}", "utime", (json_int_t)m.utime, "x_m", m.x_m, "y_m", m.y_m,
-                             "heading_rad", m.heading_rad, "v_m_s", m.v_m_s, "omega_rad_s", m.omega_rad_s);
-    } else if (!strcmp(ch, "MM_MOTORS")) {
-        mmlcm_motors_t m;
-        if (mmlcm_motors_t_decode(data, 0, len, &m) != len) return -1;
-        *ut = m.utime;
-        if (j) o = json_pack("{s:I, s:o, s:o, s:o, s:o, s:o}", "utime", (json_int_t)m.utime, "command",
-                             iarr16(m.command, 2), "voltage_v", darr(m.voltage_v, 2), "current_a", darr(m.current_a, 2),
-                             "wheel_rad_s", darr(m.wheel_rad_s, 2), "torque_nm", darr(m.torque_nm, 2));
-    } else if (!strcmp(ch, "MM_SENSORS")) {
-        mmlcm_sensors_t m;
-        if (mmlcm_sensors_t_decode(data, 0, len, &m) != len) return -1;
-        *ut = m.utime;
-        if (j) {
-            json_t *to = json_array();
-            for (int i = 0; i < 3; i++) json_array_append_new(to, json_boolean(m.tof_timeout[i]));
-            o = json_pack("{s:I, s:[i,i], s:o, s:o, s:o}", "utime", (json_int_t)m.utime, "encoder", (int)m.encoder[0],
-                          (int)m.encoder[1], "tof_mm", iarr16(m.tof_mm, 3), "tof_timeout", to, "tof_true_m",
-                          darr(m.tof_true_m, 3));
-        }
-    } else if (!strcmp(ch, "MM_RACE")) {
-        mmlcm_race_t m;
-        if (mmlcm_race_t_decode(data, 0, len, &m) != len) return -1;
-        *ut = m.utime;
-        if (j) o = json_pack("{s:I, s:b, s:f, s:b, s:f, s:b, s:i, s:i, s:f}", "utime", (json_int_t)m.utime, "started",
-                             m.started, "global_s", m.global_s, "in_run", m.in_run, "lap_s", m.lap_s, "over_time",
-                             m.over_time, "laps", (int)m.laps, "best_lap", (int)m.best_lap, "best_run_s", m.best_run_s);
-    } else if (!strcmp(ch, "MM_RACE_EVENT")) {
-        mmlcm_race_event_t m;
-        if (mmlcm_race_event_t_decode(data, 0, len, &m) != len) return -1;
-        *ut = m.utime;
-        if (j) o = json_pack("{s:I, s:s, s:i, s:f, s:f, s:f, s:b, s:b}", "utime", (json_int_t)m.utime, "kind",
-                             m.kind == MMLCM_RACE_EVENT_T_LAP_START ? "lap_start"
-                             : m.kind == MMLCM_RACE_EVENT_T_LAP_END ? "lap_end" : "unknown",
-                             "lap", (int)m.lap, "start_s", m.start_s, "end_s", m.end_s, "run_s", m.run_s, "over_time",
-                             m.over_time, "best", m.best);
-    } else if (!strcmp(ch, "MM_BELIEF")) {
-        mmlcm_belief_t m;
-        if (mmlcm_belief_t_decode(data, 0, len, &m) != len) return -1;
-        *ut = m.utime;
-        if (j) {
-            json_t *w = json_array();
-            for (int i = 0; i < m.ncells; i++) json_array_append_new(w, json_integer((uint8_t)m.walls[i]));
-            o = json_pack("{s:I, s:i, s:i, s:o, s:o, s:i, s:i, s:i, s:o}", "utime", (json_int_t)m.utime, "width",
-                          (int)(uint8_t)m.width, "height", (int)(uint8_t)m.height, "walls", w, "cost",
-                          iarr16(m.cost, m.ncells), "cell", (int)m.cell, "heading", (int)m.heading, "state",
-                          (int)m.state, "path", iarr16(m.path, m.path_len));
-        }
-        mmlcm_belief_t_decode_cleanup(&m);
-    } else if (!strcmp(ch, "MM_LINK")) {
-        mmlcm_link_t m;
-        if (mmlcm_link_t_decode(data, 0, len, &m) != len) return -1;
-        *ut = m.utime;
-        if (j)
-            o = json_pack("{s:I, s:I, s:I, s:f, s:f, s:i, s:I, s:i, s:b, s:b}", "utime", (json_int_t)m.utime,
-                          "bytes_to_mcu", (json_int_t)m.bytes_to_mcu, "bytes_from_mcu", (json_int_t)m.bytes_from_mcu,
-                          "util_to_mcu", m.util_to_mcu, "util_from_mcu", m.util_from_mcu, "frame_errors",
-                          (int)m.frame_errors, "dropped_to_mcu", (json_int_t)m.dropped_to_mcu, "baud", (int)m.baud,
-                          "connected", (int)m.connected, "handshake", (int)m.handshake);
-    } else if (!strcmp(ch, "MM_MAZE")) {
-        mmlcm_maze_t m;
-        if (mmlcm_maze_t_decode(data, 0, len, &m) != len) return -1;
-        *ut = m.utime;
-        if (j) {
-            json_t *w = json_array();
-            for (int i = 0; i < m.ncells; i++) json_array_append_new(w, json_integer((uint8_t)m.walls[i]));
-            o = json_pack("{s:I, s:s, s:i, s:i, s:o, s:i, s:i, s:o, s:b, s:I, s:s}", "utime", (json_int_t)m.utime,
-                          "path", m.path, "width", (int)(uint8_t)m.width, "height", (int)(uint8_t)m.height, "walls", w,
-                          "start", (int)m.start, "start_heading", (int)m.start_heading, "goals",
-                          iarr16(m.goals, m.ngoals), "centre_post", m.centre_post, "seed", (json_int_t)m.seed, "config",
-                          m.config);
-        }
-        mmlcm_maze_t_decode_cleanup(&m);
-    } else {
-        return 1;
-    }
-    if (j) *j = o;
-    return 0;
+    for (size_t i = 0; i < sizeof decoders / sizeof decoders[0]; i++)
+        if (!strcmp(ch, decoders[i].channel)) return decoders[i].decode(data, len, ut, j);
+    return 1;
 }
 
 typedef struct {

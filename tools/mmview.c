@@ -8,8 +8,7 @@
  * The log alone is enough: its MM_MAZE message carries the maze, the
  * config and the seed. Exit codes: 0 ok, 2 bad input (flags, a missing,
  * corrupt or truncated log), 3 external failure (no display, no OpenGL). */
-#include <errno.h>
-#include <getopt.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -31,88 +30,67 @@ static void usage(FILE *out)
           out);
 }
 
-static int bad(const char *fmt, const char *arg) { return cli_bad("mmview", fmt, arg); }
-static int num(const char *opt, const char *s, double lo, double hi, double *out)
-{
-    return cli_number("mmview", opt, s, lo, hi, out);
-}
+typedef struct {
+    view_opts_t view;
+    const char *shot; /* --screenshot FILE.png */
+    double at_s;      /* --at, s of the log; -1 none */
+    int help;
+} mmview_opts_t;
 
-int main(int argc, char **argv)
+static int bad(const char *fmt, const char *arg) { return cli_bad("mmview", fmt, arg); }
+static view_opts_t *view_of(void *o) { return &((mmview_opts_t *)o)->view; }
+static int f_camera(const char *prog, void *o, const char *arg) { return cli_view_option(prog, "camera", arg, view_of(o)); }
+static int f_speed(const char *prog, void *o, const char *arg) { return cli_view_option(prog, "speed", arg, view_of(o)); }
+static int f_size(const char *prog, void *o, const char *arg) { return cli_view_option(prog, "size", arg, view_of(o)); }
+
+static const cli_opt_t flags[] = {
+    { .name = "screenshot", .kind = CLI_STR, .off = offsetof(mmview_opts_t, shot) },
+    { .name = "at", .kind = CLI_NUM, .off = offsetof(mmview_opts_t, at_s), .lo = 0, .hi = 86400 },
+    { .name = "camera", .kind = CLI_FN, .fn = f_camera, .has_arg = 1 },
+    { .name = "size", .kind = CLI_FN, .fn = f_size, .has_arg = 1 },
+    { .name = "speed", .kind = CLI_FN, .fn = f_speed, .has_arg = 1 },
+    { .name = "help", .kind = CLI_SET, .off = offsetof(mmview_opts_t, help) },
+    { NULL },
+};
+
+/* The flags and the one operand: 0, or EXIT_BAD_INPUT after one error line. */
+static int parse(int argc, char **argv, mmview_opts_t *m, const char **log)
 {
-    static const struct option opts[] = {
-        { "screenshot", required_argument, 0, 'S' }, { "at", required_argument, 0, 'A' },
-        { "camera", required_argument, 0, 'C' },     { "size", required_argument, 0, 'Z' },
-        { "speed", required_argument, 0, 'X' },      { "help", no_argument, 0, 'h' },
-        { 0, 0, 0, 0 },
-    };
-    view_opts_t vo = { 1024, 720, 1, 1, "", 115200 };
-    const char *shot = NULL;
-    double at_s = -1;
-    int c;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, "", opts, NULL)) != -1) {
-        switch (c) {
-        case 'S': shot = optarg; break;
-        case 'A':
-            if (num("--at", optarg, 0, 86400, &at_s)) return EXIT_BAD_INPUT;
-            break;
-        case 'C':
-            if (cli_view_option("mmview", "camera", optarg, &vo)) return EXIT_BAD_INPUT;
-            break;
-        case 'X':
-            if (cli_view_option("mmview", "speed", optarg, &vo)) return EXIT_BAD_INPUT;
-            break;
-        case 'Z':
-            if (cli_view_option("mmview", "size", optarg, &vo)) return EXIT_BAD_INPUT;
-            break;
-        case 'h': usage(stdout); return EXIT_OK;
-        default: return bad("unknown option or missing value: '%s'", argv[optind - 1]);
-        }
-    }
-    if (optind >= argc) return bad("%s", "LOG is required");
-    if (optind + 1 < argc) return bad("unexpected argument '%s'", argv[optind + 1]);
-    const char *log = argv[optind];
-    if (at_s >= 0 && !shot) return bad("%s", "--at needs --screenshot FILE.png");
-    if (shot && at_s < 0) return bad("%s", "--screenshot needs --at SECONDS");
-    if (shot) { /* fail now, before loading the log */
+    int first;
+    if (cli_parse("mmview", flags, argc, argv, m, NULL, &first)) return EXIT_BAD_INPUT;
+    if (m->help) return 0;
+    if (first >= argc) return bad("%s", "LOG is required");
+    if (first + 1 < argc) return bad("unexpected argument '%s'", argv[first + 1]);
+    *log = argv[first];
+    if (m->at_s >= 0 && !m->shot) return bad("%s", "--at needs --screenshot FILE.png");
+    if (m->shot && m->at_s < 0) return bad("%s", "--screenshot needs --at SECONDS");
+    if (m->shot) { /* fail now, before loading the log */
         char perr[600];
         outfile_t probe;
-        if (outfile_open(&probe, shot, perr, sizeof perr) != 0) {
+        if (outfile_open(&probe, m->shot, perr, sizeof perr) != 0) {
             fprintf(stderr, "mmview: --screenshot: %s\n", perr);
             return EXIT_BAD_INPUT;
         }
         outfile_abort(&probe);
     }
+    return 0;
+}
 
-    static replay_t rp;
-    static sim_t sim;
-    char err[4200];
-    if (replay_load(&rp, log, err, sizeof err) != 0) {
-        fprintf(stderr, "mmview: %s\n", err);
-        replay_free(&rp);
-        return EXIT_BAD_INPUT;
-    }
-    if (shot && at_s > replay_end_s(&rp) + 1e-9) {
-        fprintf(stderr, "mmview: --at %g: the log ends at %.3f s\n", at_s, replay_end_s(&rp));
-        replay_free(&rp);
-        return EXIT_BAD_INPUT;
-    }
-    if (replay_sim_init(&rp, &sim) != 0) {
-        fprintf(stderr, "mmview: %s: cannot set up the ODE world\n", log);
-        replay_free(&rp);
-        return EXIT_EXTERNAL;
-    }
+/* The viewer on the replayed log: played, or one frame to a file. */
+static int show(const mmview_opts_t *m, replay_t *rp, sim_t *sim)
+{
+    char err[600];
     int rc = EXIT_OK;
-    view_t *v = view_new(&vo);
+    view_t *v = view_new(&m->view);
     snprintf(err, sizeof err, "out of memory");
-    if (!v || view_open(v, shot == NULL, err, sizeof err) != 0) {
+    if (!v || view_open(v, m->shot == NULL, err, sizeof err) != 0) {
         fprintf(stderr, "mmview: %s\n", err);
         rc = EXIT_EXTERNAL;
     } else {
-        view_set_replay(v, &rp, &sim);
-        if (shot) {
-            view_seek(v, at_s);
-            if (view_screenshot(v, &sim, shot, err, sizeof err) != 0) {
+        view_set_replay(v, rp, sim);
+        if (m->shot) {
+            view_seek(v, m->at_s);
+            if (view_screenshot(v, sim, m->shot, err, sizeof err) != 0) {
                 fprintf(stderr, "mmview: %s\n", err);
                 rc = EXIT_EXTERNAL;
             }
@@ -121,6 +99,37 @@ int main(int argc, char **argv)
         }
     }
     view_free(v);
+    return rc;
+}
+
+int main(int argc, char **argv)
+{
+    mmview_opts_t m = { .view = { 1024, 720, 1, 1, "", 115200 }, .at_s = -1 };
+    const char *log = NULL;
+    if (parse(argc, argv, &m, &log)) return EXIT_BAD_INPUT;
+    if (m.help) {
+        usage(stdout);
+        return EXIT_OK;
+    }
+    static replay_t rp;
+    static sim_t sim;
+    char err[4200];
+    if (replay_load(&rp, log, err, sizeof err) != 0) {
+        fprintf(stderr, "mmview: %s\n", err);
+        replay_free(&rp);
+        return EXIT_BAD_INPUT;
+    }
+    if (m.shot && m.at_s > replay_end_s(&rp) + 1e-9) {
+        fprintf(stderr, "mmview: --at %g: the log ends at %.3f s\n", m.at_s, replay_end_s(&rp));
+        replay_free(&rp);
+        return EXIT_BAD_INPUT;
+    }
+    if (replay_sim_init(&rp, &sim) != 0) {
+        fprintf(stderr, "mmview: %s: cannot set up the ODE world\n", log);
+        replay_free(&rp);
+        return EXIT_EXTERNAL;
+    }
+    int rc = show(&m, &rp, &sim);
     sim_free(&sim);
     replay_free(&rp);
     return rc;

@@ -9,7 +9,6 @@
 #include <unistd.h>
 
 #include "serial.h"
-#include "world/sim.h"
 
 #define BYTE_COST 10000000ull /* one 8N1 byte = 10 bits = 10e6 bit-us */
 
@@ -356,28 +355,6 @@ double link_util_rx(const link_t *l) { return link_util_over(l, l->st.rx_bytes, 
 const wire_stats_t *link_decoder_stats(const link_t *l)
 {
     return l->o.protocol == LINK_COMPAT ? &l->crx.stats : &l->dec.stats;
-}
-
-void link_step(link_t *l, struct sim_s *s)
-{
-    link_io_t io;
-    memset(&io, 0, sizeof io);
-    io.t_us = (uint32_t)(s->step * (uint64_t)llround(s->cfg.step_s * 1e6));
-    io.encoder[0] = s->encoder[WORLD_LEFT].count;
-    io.encoder[1] = s->encoder[WORLD_RIGHT].count;
-    for (int i = 0; i < 3; i++) { /* a new reading bumped the sensor's count */
-        if (l->tof_seen[i] != UINT64_MAX && s->tof_count[i] != l->tof_seen[i]) {
-            io.tof_new[i] = 1;
-            io.tof_mm[i] = (uint16_t)lround(s->tof_last[i].dist_m * 1000.0);
-            io.tof_m[i] = s->tof_last[i].dist_m;
-            io.tof_timeout[i] = (uint8_t)s->tof_last[i].timeout;
-        }
-        l->tof_seen[i] = (uint64_t)s->tof_count[i];
-    }
-    int16_t mo[2];
-    s->tof_enabled = link_step_io(l, &io, mo);
-    s->cmd[WORLD_LEFT] = mo[0];
-    s->cmd[WORLD_RIGHT] = mo[1];
 }
 
 json_t *link_json(const link_t *l)

@@ -1,6 +1,7 @@
 /* link.h - the simulator's end of the hardware-in-the-loop serial link.
  *
- * After each physics step link_step sends the robot's sensor readings to
+ * After each physics step link_step_io (the contest calls it through
+ * sim/contest/run_link.c) sends the robot's sensor readings to
  * the microcontroller (ENCODER every step, DISTANCE when a ToF sensor took a
  * new reading) and applies the motor commands it received. Bytes cross at
  * the baud rate, 8N1 = 10 bits per byte, never faster; queue, drop,
@@ -107,10 +108,5 @@ const wire_stats_t *link_decoder_stats(const link_t *l);
 void link_close(link_t *l);
 /* The link's settings, traffic, utilisation and decoder error counters. */
 json_t *link_json(const link_t *l);
-
-struct sim_s;
-/* link_step_io on a running simulation: its encoders and new ToF readings
- * out, its motor commands and ToF enable in. */
-void link_step(link_t *l, struct sim_s *s);
 
 #endif

@@ -1,0 +1,167 @@
+/* batch.c - many contests as child processes (see batch.h).
+ * A reaped child is matched among the running jobs only: process ids are
+ * reused (pid_max 32768 here; a 481-maze batch beside a busy machine wraps
+ * it, and matching an earlier, finished job lost two lines). */
+#include "batch.h"
+
+#include <errno.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "maze/mazedir.h"
+
+typedef struct {
+    const run_opts_t *o;
+    char **names;
+    size_t n, next, done, printed;
+    pid_t *pid; /* 0: not started, or reaped */
+    int *fd;    /* the read end of each started job's pipe */
+    char **text; /* each finished job's output */
+    int running, worst;
+} batch_t;
+
+/* All a child wrote to its pipe, until end of file (NUL-terminated). */
+static char *read_all(int fd)
+{
+    size_t len = 0, cap = 4096;
+    char *buf = malloc(cap);
+    for (;;) {
+        if (!buf) return NULL;
+        if (len + 1 >= cap) {
+            char *b = realloc(buf, cap *= 2);
+            if (!b) { free(buf); return NULL; }
+            buf = b;
+        }
+        ssize_t k = read(fd, buf + len, cap - 1 - len);
+        if (k < 0 && errno == EINTR) continue;
+        if (k <= 0) break;
+        len += (size_t)k;
+    }
+    buf[len] = '\0';
+    return buf;
+}
+
+/* The line of a maze whose child printed no JSON (it died, or the maze
+ * file was bad: its error line is on stderr): one line per maze all the same. */
+static char *failed_line(const char *maze, int status)
+{
+    json_t *j = json_object();
+    json_object_set_new(j, "maze", json_string(maze));
+    json_object_set_new(j, "exit_reason", json_string("no_result"));
+    if (WIFSIGNALED(status)) json_object_set_new(j, "signal", json_integer(WTERMSIG(status)));
+    else json_object_set_new(j, "exit_code", json_integer(WIFEXITED(status) ? WEXITSTATUS(status) : -1));
+    char *s = json_dumps(j, JSON_COMPACT | JSON_ENSURE_ASCII);
+    json_decref(j);
+    if (!s) return NULL;
+    char *line = malloc(strlen(s) + 2);
+    if (line) sprintf(line, "%s\n", s);
+    free(s);
+    return line;
+}
+
+static int fail(batch_t *b, const char *what)
+{
+    fprintf(stderr, "mmsim: %s: %s\n", what, strerror(errno));
+    b->worst = RUN_EXTERNAL;
+    return -1;
+}
+
+/* The next maze in a child whose stdout is a pipe: 0, or -1 after an error line. */
+static int start_job(batch_t *b)
+{
+    int p[2];
+    if (pipe(p) != 0) return fail(b, "pipe");
+    fflush(stdout);
+    pid_t c = fork();
+    if (c < 0) {
+        close(p[0]);
+        close(p[1]);
+        return fail(b, "fork");
+    }
+    if (c == 0) {
+        close(p[0]);
+        for (size_t i = 0; i < b->next; i++) /* the other jobs' pipes are not this child's */
+            if (b->pid[i]) close(b->fd[i]);
+        if (dup2(p[1], STDOUT_FILENO) < 0) _exit(RUN_EXTERNAL);
+        json_t *j;
+        int rc = run_one(b->o, b->names[b->next], &j, 0);
+        if (j) run_json_line(j);
+        fflush(stdout);
+        _exit(rc);
+    }
+    close(p[1]);
+    b->pid[b->next] = c;
+    b->fd[b->next] = p[0];
+    b->next++;
+    b->running++;
+    return 0;
+}
+
+/* Any job that ended, its output kept, and what is complete in input order
+ * printed. Its output (one JSON line, far below the pipe's 64 KB, so a child
+ * never blocks on it) is read to the end after it is reaped. 0, or -1. */
+static int reap_job(batch_t *b)
+{
+    int status = 0;
+    pid_t c = wait(&status);
+    if (c < 0) return errno == EINTR ? 0 : fail(b, "wait");
+    size_t i = 0;
+    while (i < b->next && b->pid[i] != c) i++;
+    if (i == b->next) return 0; /* not one of the running jobs */
+    char *out = read_all(b->fd[i]);
+    close(b->fd[i]);
+    b->pid[i] = 0;
+    b->running--;
+    b->done++;
+    int code = WIFEXITED(status) ? WEXITSTATUS(status) : RUN_EXTERNAL;
+    if (code > b->worst) b->worst = code;
+    if (!out || !strchr(out, '{')) { /* no JSON from the child */
+        free(out);
+        out = failed_line(b->names[i], status);
+    }
+    b->text[i] = out ? out : strdup("");
+    fprintf(stderr, "\r[%zu/%zu] %-60.60s", b->done, b->n, b->names[i]);
+    while (b->printed < b->n && b->text[b->printed]) { /* results in input order */
+        fputs(b->text[b->printed], stdout);
+        b->printed++;
+    }
+    return 0;
+}
+
+int batch_run(const run_opts_t *o, const char *dir)
+{
+    batch_t b = { .o = o };
+    long nn = mazedir_list_or_report(dir, &b.names);
+    if (nn < 0) return RUN_BAD_INPUT;
+    b.n = (size_t)nn;
+    b.pid = calloc(b.n, sizeof *b.pid);
+    b.fd = calloc(b.n, sizeof *b.fd);
+    b.text = calloc(b.n, sizeof *b.text);
+    int failed = !b.pid || !b.fd || !b.text;
+    if (failed) {
+        fprintf(stderr, "mmsim: out of memory\n");
+        b.worst = RUN_EXTERNAL;
+    }
+    while (!failed && b.done < b.n) {
+        while (!failed && b.running < o->jobs && b.next < b.n) failed = start_job(&b) != 0;
+        if (!failed) failed = reap_job(&b) != 0;
+    }
+    if (!failed) fputc('\n', stderr);
+    fflush(stdout);
+    for (size_t i = 0; b.pid && b.fd && i < b.next; i++)
+        if (b.pid[i]) { /* only after a failure above: end the jobs still running */
+            kill(b.pid[i], SIGKILL);
+            close(b.fd[i]);
+            waitpid(b.pid[i], NULL, 0);
+        }
+    for (size_t i = 0; b.text && i < b.n; i++) free(b.text[i]);
+    mazedir_free(b.names, nn);
+    free(b.text);
+    free(b.pid);
+    free(b.fd);
+    return b.worst;
+}

@@ -1,0 +1,57 @@
+/* run.h - one contest on one maze, set up for its driver and run to its end:
+ * what `mmsim --maze` does (tools/mmsim.c parses the flags into run_opts_t
+ * and calls run_one; batch.h runs many).
+ *
+ * Drivers (run_driver.h): the mouse's firmware in-process (hal/sim, the
+ * default), the scripted stand-in (driver.h), an MCU over a serial link
+ * (--serial/--pty) or an AVR image in simavr (--avr), an mms algorithm
+ * driving the firmware's motion layer (--mms).
+ * Exit codes: RUN_OK, RUN_NOT_REACHED, RUN_BAD_INPUT, RUN_EXTERNAL. */
+#ifndef RUN_H
+#define RUN_H
+
+#include <jansson.h>
+#include <stdint.h>
+
+#include "link/link.h"
+#include "mms/mms.h"
+#include "telemetry/telem.h"
+#include "view/view.h"
+#include "world/config.h"
+
+enum { RUN_OK = 0, RUN_NOT_REACHED = 1, RUN_BAD_INPUT = 2, RUN_EXTERNAL = 3 };
+
+#define RUN_STALL_S 5.0 /* no progress for this long while driving = crash stop, s */
+
+typedef struct {
+    const char *config_path;
+    uint64_t seed;
+    double time_limit_s; /* <= 0: from the config */
+    int json, realtime, runs, centre_post, print_config;
+    int paper_friction; /* --profile paper */
+    int scripted;       /* --driver scripted */
+    int verbose;        /* --verbose: firmware log lines on stderr */
+    int jobs;           /* --batch: runs at a time */
+    telem_opts_t telem; /* --lcm[=URL], --lcm-log FILE, --lcm-rate HZ */
+    const char *report; /* --report FILE.png, or NULL */
+    int gui;            /* --gui: live viewer */
+    const char *shot;   /* --screenshot FILE.png, or NULL */
+    double shot_at_s;   /* --at: sim time of the screenshot */
+    view_opts_t view;   /* --size, --speed, --camera, --port, --baud */
+    int serial;         /* --serial/--port, --pty or --avr: an MCU drives over a serial link */
+    link_opts_t link;
+    const char *avr_elf, *avr_mcu; /* --avr ELF: processor in the loop (simavr), --mcu */
+    uint32_t avr_f_cpu;            /* --f-cpu, Hz (0 = from the ELF or 16 MHz) */
+    mms_opts_t mms;                /* --mms COMMAND (NULL: none), --mms-ideal-walls, --mms-timeout-ms, --mms-reset-at */
+} run_opts_t;
+
+/* The defaults, then --config's file, then the flags that override keys.
+ * 0, or -1 after one error line. */
+int run_load_config(const run_opts_t *o, simcfg_t *c);
+/* One contest; *out gets the result object (NULL if none); with print_text
+ * the lap table and summary go to stdout. Returns the exit code. */
+int run_one(const run_opts_t *o, const char *maze_path, json_t **out, int print_text);
+/* j as one compact JSON line on stdout; 0, or -1. */
+int run_json_line(json_t *j);
+
+#endif

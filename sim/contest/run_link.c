@@ -1,0 +1,143 @@
+/* run_link.c - an MCU drives over the serial link (sim/link): a device or a
+ * pseudo-terminal (--serial/--pty, in real time) or an AVR image in simavr
+ * (--avr, sim/board, in lockstep); and the HUD's Connect, which hands a
+ * running contest to an MCU. The contest lasts the time limit or until the
+ * MCU sends RUN stop. */
+#include "run_driver.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* The link's view of the robot: after each physics step its encoder counts
+ * and the ToF readings that are new since the last step go to the MCU; the
+ * MCU's motor commands come back. */
+static void link_exchange(link_t *l, sim_t *s)
+{
+    link_io_t io;
+    memset(&io, 0, sizeof io);
+    io.t_us = (uint32_t)(s->step * (uint64_t)llround(s->cfg.step_s * 1e6));
+    io.encoder[0] = s->encoder[WORLD_LEFT].count;
+    io.encoder[1] = s->encoder[WORLD_RIGHT].count;
+    for (int i = 0; i < 3; i++) { /* a new reading bumped the sensor's count */
+        if (l->tof_seen[i] != UINT64_MAX && s->tof_count[i] != l->tof_seen[i]) {
+            io.tof_new[i] = 1;
+            io.tof_mm[i] = (uint16_t)lround(s->tof_last[i].dist_m * 1000.0);
+            io.tof_m[i] = s->tof_last[i].dist_m;
+            io.tof_timeout[i] = (uint8_t)s->tof_last[i].timeout;
+        }
+        l->tof_seen[i] = (uint64_t)s->tof_count[i];
+    }
+    int16_t mo[2];
+    s->tof_enabled = link_step_io(l, &io, mo);
+    s->cmd[WORLD_LEFT] = mo[0];
+    s->cmd[WORLD_RIGHT] = mo[1];
+}
+
+static uint16_t tof_range_mm(const run_t *r) { return (uint16_t)lround(r->cfg.tof_range_m * 1000.0); }
+static uint32_t counts_x100(const run_t *r) { return (uint32_t)lround(r->cfg.encoder_ppr * r->cfg.gear_ratio * 100.0); }
+
+const char *run_link_step(run_t *r)
+{
+    char err[400];
+    sim_step(&r->sim);
+    link_exchange(&r->lnk, &r->sim);
+    if (r->tel_on) telem_step(&r->tel, &r->sim);
+    if (r->o->avr_elf && pil_step(&r->pil, err, sizeof err) != 0) {
+        fprintf(stderr, "mmsim: %s: %s\n", r->o->avr_elf, err);
+        return "avr_stopped";
+    }
+    if (r->lnk.st.stops) return "mcu_stopped"; /* the MCU ended the contest (RUN stop) */
+    if (sim_time_s(&r->sim) >= r->cfg.time_limit_s) return "time_limit";
+    return NULL;
+}
+
+void run_link_connect(run_t *r, const char *port, long baud)
+{
+    char err[400];
+    link_opts_t lo = r->o->link;
+    lo.device = port;
+    lo.pty = 0;
+    lo.baud = (uint32_t)baud;
+    if (r->hil) view_set_status(r->view, "already connected: one link per run");
+    else if (link_open(&r->lnk, &lo, r->cfg.step_s, tof_range_mm(r), counts_x100(r), stderr, err, sizeof err) != 0)
+        view_set_status(r->view, err);
+    else {
+        r->hil = 1;
+        r->sim.cmd[0] = r->sim.cmd[1] = 0;
+        if (r->tel_on) r->tel.link = &r->lnk; /* MM_LINK from now on */
+        view_set_status(r->view, "connected: the MCU drives from now on");
+    }
+}
+
+void run_link_results(run_t *r, json_t *j)
+{
+    json_object_set_new(j, "link", link_json(&r->lnk));
+    link_close(&r->lnk);
+    if (!r->o->avr_elf) return;
+    uint32_t stack_max, free_min;
+    const pil_t *p = &r->pil;
+    pil_stack(p, &stack_max, &free_min);
+    json_object_set_new(j, "avr", json_pack("{s:s, s:s, s:I, s:I, s:I, s:I, s:I, s:I}", "elf", r->o->avr_elf, "mcu",
+                                            p->mcu, "f_cpu_hz", (json_int_t)p->f_cpu, "cycles", (json_int_t)p->cycles,
+                                            "uart_bytes_in", (json_int_t)p->bytes_in, "uart_bytes_out",
+                                            (json_int_t)p->bytes_out, "stack_max_bytes", (json_int_t)stack_max,
+                                            "sram_free_min_bytes", (json_int_t)free_min));
+    pil_close(&r->pil);
+}
+
+static int serial_open(run_t *r)
+{
+    char err[400];
+    if (link_open(&r->lnk, &r->o->link, r->cfg.step_s, tof_range_mm(r), counts_x100(r), stderr, err, sizeof err) != 0) {
+        fprintf(stderr, "mmsim: %s\n", err);
+        return RUN_EXTERNAL;
+    }
+    return 0;
+}
+
+static void serial_undo(run_t *r) { link_close(&r->lnk); }
+
+static int avr_open(run_t *r)
+{
+    char err[400];
+    int fd;
+    if (pil_open(&r->pil, r->o->avr_elf, r->o->avr_mcu, r->o->avr_f_cpu, r->cfg.step_s, &fd, err, sizeof err) != 0) {
+        fprintf(stderr, "mmsim: %s\n", err);
+        return RUN_EXTERNAL;
+    }
+    link_open_fd(&r->lnk, fd, "simavr UART0", &r->o->link, r->cfg.step_s, tof_range_mm(r), counts_x100(r),
+                 r->o->verbose ? stderr : NULL);
+    return 0;
+}
+
+static void avr_undo(run_t *r)
+{
+    link_close(&r->lnk);
+    pil_close(&r->pil);
+}
+
+static void link_headline(const run_t *r)
+{
+    const link_t *l = &r->lnk;
+    int compat = r->o->link.protocol == LINK_COMPAT;
+    printf("%s: %ux%u, seed %llu, MCU over %s (%s, %u baud): sent %llu B (%.0f %%), received %llu B (%.0f %%), "
+           "dropped %llu messages, %u decode errors, %u silences, %u disconnects\n",
+           r->maze_path, r->maze.width, r->maze.height, (unsigned long long)r->o->seed, l->path,
+           compat ? "compat" : "framed", (unsigned)l->o.baud, (unsigned long long)l->st.tx_bytes,
+           link_util_tx(l) * 100, (unsigned long long)l->st.rx_bytes, link_util_rx(l) * 100,
+           (unsigned long long)l->st.tx_dropped, (unsigned)wire_stats_errors(compat ? &l->crx.stats : &l->dec.stats),
+           (unsigned)l->st.silences, (unsigned)l->st.disconnects);
+}
+
+static int link_exit(const run_t *r) { return run_exit_laps(r, "done", "mcu_stopped"); }
+
+const run_driver_t run_serial = {
+    .name = "serial", .open = serial_open, .step = run_link_step, .undo = serial_undo,
+    .headline = link_headline, .exit_code = link_exit,
+};
+
+const run_driver_t run_avr = {
+    .name = "serial", .open = avr_open, .step = run_link_step, .undo = avr_undo,
+    .headline = link_headline, .exit_code = link_exit,
+};
