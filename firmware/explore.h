@@ -1,6 +1,6 @@
 /* explore.h - the search strategy, independent of how the mouse moves.
  *
- * The caller (grid mode in sim/grid.c, the motion layer on the robot) runs:
+ * The caller (grid mode in sim/maze/grid.c, the motion layer on the robot) runs:
  *   explore_init(&e, &blank_map);
  *   loop: explore_sense(&e, walls) with the walls seen from the current cell;
  *         d = explore_next(&e); if (d < 0) stop;

@@ -1,7 +1,7 @@
 /* robot_config.h - every robot-specific number of the firmware, with its
  * unit and where it comes from. Port the firmware to another mouse by
  * changing this file only. Defaults: the paper's robot as simulated by
- * mmsim (sim/config.c holds the simulator's side of the same numbers). */
+ * mmsim (sim/world/config.c holds the simulator's side of the same numbers). */
 #ifndef ROBOT_CONFIG_H
 #define ROBOT_CONFIG_H
 
@@ -27,7 +27,7 @@
 #define RC_CMD_PER_MM_S2 0.045f
 #define RC_CMD_MAX 1023
 
-/* ---- ToF sensors (positions match sim/config.c defaults) ---- */
+/* ---- ToF sensors (positions match sim/world/config.c defaults) ---- */
 #define RC_TOF_FRONT_Y_MM 55.0f      /* front sensor ahead of the body centre */
 #define RC_TOF_SIDE_X_MM 40.0f       /* diagonal sensors' offset from the centre line */
 #define RC_TOF_SIDE_Y_MM 50.0f       /* diagonal sensors ahead of the body centre */

@@ -33,7 +33,7 @@ static void usage(FILE *out)
           "             [--centre-post on|off] [--profile default|paper] [--driver firmware|scripted]\n"
           "             [--json] [--realtime] [--verbose] [--report FILE.png]\n"
           "             (--runs: speed runs after the search, default 3; scripted: runs to the goal)\n"
-          "             [--lcm[=URL]] [--lcm-log FILE] [--lcm-rate HZ]   (LCM telemetry, sim/telem.h)\n"
+          "             [--lcm[=URL]] [--lcm-log FILE] [--lcm-rate HZ]   (LCM telemetry, sim/telemetry/telem.h)\n"
           "             [--gui [--speed 1..64]] [--screenshot FILE.png [--at SECONDS]]\n"
           "             [--camera 1|2|3] [--size WxH]   (viewer)\n"
           "       mmsim --maze FILE --serial DEV|--port DEV|--pty [--baud N] [--protocol framed|compat]\n"

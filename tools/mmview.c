@@ -1,5 +1,5 @@
 /* mmview - replay an LCM log of a run (mmsim --lcm-log) in the 3D viewer:
- * the same scene and HUD as mmsim --gui, driven by the log (sim/replay.h),
+ * the same scene and HUD as mmsim --gui, driven by the log (sim/view/replay.h),
  * with a time slider; or one frame of it to a PNG file.
  *
  *   mmview LOG [--speed 1..64] [--camera 1|2|3] [--size WxH]

@@ -65,7 +65,7 @@ void hal_log(const char *line)
 
 void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_t state)
 {
-    /* a copy for telemetry (sim/telem.c); the simulation never reads it */
+    /* a copy for telemetry (sim/telemetry/telem.c); the simulation never reads it */
     belief.seq++;
     belief.t_us = sim ? sim->step * (uint64_t)llround(sim->cfg.step_s * 1e6) : sim_time_us;
     belief.map = *map;
