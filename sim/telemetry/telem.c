@@ -201,7 +201,7 @@ static void pub_fast(telem_t *t, const sim_t *s)
         m.voltage_v[i] = s->motor[i].v_applied;
         m.current_a[i] = s->motor[i].i_a;
         m.wheel_rad_s[i] = world_wheel_rate(s->world, i);
-        m.torque_nm[i] = s->motor[i].kt_nm_per_a * s->motor[i].i_a; /* as motor_step returns it */
+        m.torque_nm[i] = s->motor[i].torque_nm; /* at the output shaft, friction excluded */
     }
     emit(t, "MM_MOTORS", ut, mmlcm_motors_t_encode(t->buf, 0, TELEM_BUF_BYTES, &m));
 

@@ -14,10 +14,17 @@ typedef struct {
     size_t offset;
     double def, min, max;
     const char *unit, *source;
+    const char *const *choices; /* a word key: its words, the value is the index */
 } cfgkey_t;
 
 #define K(sec, name, def, min, max, unit, source) \
-    { sec, #name, offsetof(simcfg_t, name), def, min, max, unit, source }
+    { sec, #name, offsetof(simcfg_t, name), def, min, max, unit, source, NULL }
+/* a key whose value is one of the words (stored as the word's index) */
+#define W(sec, name, def, words, source) \
+    { sec, #name, offsetof(simcfg_t, name), def, 0, sizeof words / sizeof words[0] - 1, "word", source, words }
+
+static const char *const motor_models[] = { "paper", "datasheet" };
+static const char *const solvers[] = { "quickstep", "exact" };
 
 static const cfgkey_t keys[] = {
     K("world", cell_m, 0.180, 0.05, 0.5, "m", "classic rules: 180 mm cells (half-size: 90 mm)"),
@@ -42,13 +49,21 @@ static const cfgkey_t keys[] = {
     K("robot", tyre_mu, 1.0, 0.01, 3, "1", "silicone tyres on a painted maze floor; the paper's Unity value is 0.35"),
     K("robot", tyre_mu_dynamic, 1.0, 0.01, 3, "1", "equal to tyre_mu by default; the paper's Unity value is 0.25"),
     K("robot", tyre_slip_m_s, 0.005, 0, 1, "m/s", "ours: above 5 mm/s of slip a tyre slides (dynamic friction)"),
-    K("motor", gear_ratio, 29.86, 1, 1000, "1", "Pololu 30:1 LP 6 V micro metal gearmotor (paper)"),
-    K("motor", kt_nm_per_a, 0.079025, 1e-5, 10, "N*m/A", "T_stall/i_stall at the output shaft (paper eq. 4, Pololu 30:1 LP 6 V)"),
-    K("motor", r_ohm, 16.6667, 0.01, 1000, "ohm", "V_rated/i_stall = 6 V / 0.36 A (paper eq. 5)"),
-    K("motor", l_h, 0.001, 1e-7, 1, "H", "paper's shipped value"),
+    /* The Pololu 30:1 LP 6V micro metal gearmotor (item 2202), datasheet
+     * "Micro Metal Gearmotors", Pololu, Rev 2.0 May 2018, p. 1 and 3: no load
+     * 450 rpm, 0.02 A; max efficiency 320 rpm, 0.66 kg*mm, 0.11 A; stall 2.9
+     * kg*mm, 0.36 A; all at 6 V. The motor constants are derived (motor.h). */
+    W("motor", motor_model, 1, motor_models, "datasheet: DC motor with gearbox efficiency, no-load friction and rotor inertia, fitted to the datasheet (README); paper: the paper's eq. 1-5, no losses"),
+    K("motor", rated_v, 6.0, 0.5, 50, "V", "Pololu datasheet: the figures below are at 6 V"),
+    K("motor", no_load_rpm, 450, 1, 100000, "rpm", "Pololu datasheet: output shaft, 6 V"),
+    K("motor", no_load_a, 0.02, 0, 10, "A", "Pololu datasheet: 6 V"),
+    K("motor", stall_torque_nm, 0.028439, 1e-5, 10, "N*m", "Pololu datasheet: 2.9 kg*mm = 0.028439 N*m at the output shaft, 6 V"),
+    K("motor", stall_a, 0.36, 0.001, 100, "A", "Pololu datasheet: 6 V"),
+    K("motor", gear_ratio, 29.86, 1, 1000, "1", "Pololu datasheet: 29.86:1 (the '30:1')"),
+    K("motor", l_h, 0.001, 1e-7, 1, "H", "paper's shipped value (Pololu publishes none)"),
+    K("motor", rotor_inertia_kgm2, 2.0e-8, 0, 1e-3, "kg*m^2", "ours: solid-cylinder estimate of the 3-pole iron armature (about 8 mm across, 2.5 g; Pololu publishes none); reflected as J*N^2 = 1.8e-5 kg*m^2 at the wheel; ignored by motor_model = paper"),
     K("motor", battery_v, 6.0, 0.5, 50, "V", "paper: 6 V rated"),
     K("motor", battery_r_ohm, 0.0, 0, 100, "ohm", "internal resistance (voltage sag); off by default"),
-    K("motor", rotor_inertia_kgm2, 0.0, 0, 1e-3, "kg*m^2", "rotor inertia at the motor shaft; off by default"),
     K("encoder", encoder_ppr, 12, 1, 100000, "pulses/motor rev", "paper: 12 PPR magnetic encoder = 358.32 counts per wheel turn"),
     K("tof", tof_range_m, 1.2, 0.05, 10, "m", "VL53L0X long range, as the paper's simulator (its Arduino side assumed 1.0 m)"),
     K("tof", tof_blind_m, 0.0, 0, 0.5, "m", "paper: no blind spot modelled"),
@@ -58,10 +73,25 @@ static const cfgkey_t keys[] = {
     K("tof", tof_y_m, 0.050, -0.15, 0.15, "m", "side sensors near the front edge"),
     K("tof", tof_front_y_m, 0.055, -0.15, 0.15, "m", "front sensor inside the front edge"),
     K("tof", tof_side_angle_deg, 45, 0, 90, "deg", "paper: corner sensors at 45 degrees"),
+    /* Asymmetries: each 0 by default (a symmetric robot drives straight);
+     * set one to see the veer it alone causes. */
+    K("asymmetry", wheel_d_diff_m, 0, -0.005, 0.005, "m", "right wheel diameter minus left (the mean stays robot.wheel_d_m)"),
+    K("asymmetry", motor_k_diff_pct, 0, -20, 20, "%", "right motor's constant (back-EMF and torque) relative to the left's, in per cent of the mean"),
+    K("asymmetry", tyre_mu_diff, 0, -1, 1, "1", "right tyre's friction minus left's (the mean stays robot.tyre_mu)"),
+    K("asymmetry", com_x_m, 0, -0.02, 0.02, "m", "body's centre of mass to the right of the centre line"),
+    K("asymmetry", com_y_m, 0, -0.02, 0.02, "m", "body's centre of mass ahead of the body's centre"),
+    /* Per-seed variation of the asymmetries (Monte Carlo robustness runs):
+     * each run adds a draw from N(0, sigma^2), from its own stream seeded by
+     * the run's seed; 0 = none. */
+    K("variation", wheel_d_sigma_m, 0, 0, 0.002, "m", "spread of wheel_d_diff_m between robots (tyres differ by ~0.1 mm when trimmed by hand)"),
+    K("variation", motor_k_sigma_pct, 0, 0, 10, "%", "spread of motor_k_diff_pct (motors of one batch differ by a few per cent)"),
+    K("variation", tyre_mu_sigma, 0, 0, 0.5, "1", "spread of tyre_mu_diff"),
+    K("variation", com_sigma_m, 0, 0, 0.01, "m", "spread of com_x_m and com_y_m"),
     K("sim", step_s, 0.001, 1e-5, 0.01, "s", "1 kHz physics"),
-    K("sim", solver_iterations, 10, 1, 200, "1", "ODE quickstep iterations: at 5 the wheel hinges give and a straight run crabs 1.4 degrees (5 mm sideways in the first 200 mm); 10 tracks 20 and 40 within 0.3 mm"),
+    W("sim", solver, 1, solvers, "exact: ODE's LCP solver (dWorldStep), exact contact friction: a robot at rest stays at rest and a symmetric robot drives straight, at the cost of quickstep at 10 iterations (docs/BENCHMARKS.md); quickstep: iterative, slid a resting robot 10 mm a minute"),
+    K("sim", solver_iterations, 10, 1, 200, "1", "solver = quickstep only: at 5 the wheel hinges give and a straight run crabs 1.4 degrees"),
     K("sim", contact_erp, 0.4, 0.01, 1, "1", "ours: contact error reduction; stiff enough that the robot rests within 0.1 mm"),
-    K("sim", contact_cfm, 1e-5, 0, 1, "m/N", "ours: contact softness, keeps quickstep stable at 5 iterations"),
+    K("sim", contact_cfm, 1e-5, 0, 1, "m/N", "ours: contact softness"),
     K("sim", control_hz, 1000, 10, 100000, "Hz", "firmware control tick"),
     K("sim", time_limit_s, 600, 1, 86400, "s", "contest rules: 10 minutes"),
 };
@@ -99,6 +129,18 @@ static int on_key(void *user, const char *section, const char *name, const char 
         snprintf(l->reason, sizeof l->reason, "%s.%s: missing value", section, name);
         return 0;
     }
+    if (k->choices) {
+        for (int i = 0; i <= (int)k->max; i++)
+            if (!strcmp(val, k->choices[i])) {
+                *field(l->cfg, k) = i;
+                l->failed = 0;
+                return 1;
+            }
+        int n = snprintf(l->reason, sizeof l->reason, "%s.%s: '%s' is not one of", section, name, val);
+        for (int i = 0; i <= (int)k->max && n > 0 && (size_t)n < sizeof l->reason; i++)
+            n += snprintf(l->reason + n, sizeof l->reason - (size_t)n, " %s", k->choices[i]);
+        return 0;
+    }
     char *end;
     errno = 0;
     double v = strtod(val, &end);
@@ -125,6 +167,10 @@ static int check(const simcfg_t *c, char *reason, size_t len)
     }
     if (2 * c->wheel_x_m + c->wheel_w_m >= c->cell_m - c->wall_thick_m) {
         snprintf(reason, len, "robot.wheel_x_m: the robot is wider than a corridor");
+        return -1;
+    }
+    if (c->no_load_a >= c->stall_a) {
+        snprintf(reason, len, "motor.no_load_a: %g A is not below stall_a %g A", c->no_load_a, c->stall_a);
         return -1;
     }
     if (c->post_m < c->wall_thick_m) {
@@ -181,7 +227,11 @@ void config_print(const simcfg_t *c, FILE *out)
             section = keys[i].section;
             fprintf(out, "%s[%s]\n", i ? "\n" : "", section);
         }
-        fprintf(out, "%s = %.9g ; %s; %s\n", keys[i].key, value(c, &keys[i]), keys[i].unit, keys[i].source);
+        if (keys[i].choices)
+            fprintf(out, "%s = %s ; %s; %s\n", keys[i].key, keys[i].choices[(int)value(c, &keys[i])], keys[i].unit,
+                    keys[i].source);
+        else
+            fprintf(out, "%s = %.9g ; %s; %s\n", keys[i].key, value(c, &keys[i]), keys[i].unit, keys[i].source);
     }
 }
 

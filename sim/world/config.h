@@ -35,12 +35,13 @@ typedef struct {
     double tyre_mu;         /* Coulomb friction, tyre on floor */
     double tyre_mu_dynamic; /* sliding friction; <= tyre_mu */
     double tyre_slip_m_s;   /* contact slip speed above which tyre_mu_dynamic applies */
-    /* [motor] */
+    /* [motor]: the datasheet's figures; motor.c derives the constants */
+    double motor_model;     /* MOTOR_MODEL_PAPER or MOTOR_MODEL_DATASHEET */
+    double rated_v, no_load_rpm, no_load_a, stall_torque_nm, stall_a;
     double gear_ratio;
-    double kt_nm_per_a;     /* torque constant at the output shaft */
-    double r_ohm, l_h;
-    double battery_v, battery_r_ohm;
+    double l_h;
     double rotor_inertia_kgm2; /* at the motor shaft; 0 = ignored */
+    double battery_v, battery_r_ohm;
     /* [encoder] */
     double encoder_ppr;     /* pulses per motor-shaft revolution */
     /* [tof] */
@@ -48,13 +49,21 @@ typedef struct {
     double tof_x_m, tof_y_m;  /* side sensors' position on the body (x = +-) */
     double tof_front_y_m;     /* front sensor, on the centre line */
     double tof_side_angle_deg; /* side sensors point this far out from ahead */
+    /* [asymmetry]: right minus left, 0 = symmetric */
+    double wheel_d_diff_m, motor_k_diff_pct, tyre_mu_diff, com_x_m, com_y_m;
+    /* [variation]: per-seed spread of the asymmetries */
+    double wheel_d_sigma_m, motor_k_sigma_pct, tyre_mu_sigma, com_sigma_m;
     /* [sim] */
     double step_s;          /* physics step */
+    double solver;          /* SIM_SOLVER_QUICKSTEP or SIM_SOLVER_EXACT */
     double solver_iterations;
     double contact_erp, contact_cfm; /* contact softness (ODE units) */
     double control_hz;      /* firmware control tick */
     double time_limit_s;    /* contest limit */
 } simcfg_t;
+
+enum { MOTOR_MODEL_PAPER = 0, MOTOR_MODEL_DATASHEET = 1 };
+enum { SIM_SOLVER_QUICKSTEP = 0, SIM_SOLVER_EXACT = 1 };
 
 /* The defaults (the paper's robot). */
 void config_defaults(simcfg_t *c);

@@ -1,28 +1,99 @@
-/* motor.c - implicit DC motor model (see motor.h). */
+/* motor.c - DC gearmotor models (see motor.h). */
 #include "motor.h"
 
 #include <math.h>
 
-void motor_init(motor_t *m, const simcfg_t *c)
+#define RPM_TO_RAD_S (2.0 * M_PI / 60.0)
+
+void motor_constants(const simcfg_t *c, double *r_ohm, double *ke_v_s, double *eta)
 {
-    m->kt_nm_per_a = c->kt_nm_per_a;
-    m->r_ohm = c->r_ohm;
+    double r = c->rated_v / c->stall_a;
+    double w_motor = c->no_load_rpm * RPM_TO_RAD_S * c->gear_ratio;
+    double ke = (c->rated_v - r * c->no_load_a) / w_motor;
+    *r_ohm = r;
+    *ke_v_s = ke;
+    *eta = c->stall_torque_nm / (c->gear_ratio * ke * (c->stall_a - c->no_load_a));
+}
+
+double motor_free_speed(const simcfg_t *c, double v_volt)
+{
+    double r, ke, eta;
+    if (c->motor_model == MOTOR_MODEL_PAPER) return v_volt / (c->stall_torque_nm / c->stall_a);
+    motor_constants(c, &r, &ke, &eta);
+    double w = (fabs(v_volt) - r * c->no_load_a) / (ke * c->gear_ratio);
+    return w > 0 ? copysign(w, v_volt) : 0.0;
+}
+
+void motor_init(motor_t *m, const simcfg_t *c, double scale)
+{
+    m->model = (int)c->motor_model;
+    m->n = c->gear_ratio;
     m->l_h = c->l_h;
     m->battery_v = c->battery_v;
     m->battery_r_ohm = c->battery_r_ohm;
+    if (m->model == MOTOR_MODEL_PAPER) { /* eq. 4-5: K and R from the stall figures, at the output shaft */
+        m->r_ohm = c->rated_v / c->stall_a;
+        m->ke_v_s = c->stall_torque_nm / c->stall_a / m->n * scale;
+        m->eta = 1.0;
+        m->i_friction_a = 0.0;
+    } else {
+        motor_constants(c, &m->r_ohm, &m->ke_v_s, &m->eta);
+        m->ke_v_s *= scale;
+        m->i_friction_a = c->no_load_a;
+    }
     m->i_a = 0.0;
     m->v_applied = 0.0;
+    m->torque_nm = 0.0;
+    m->k_mean = 0.0;
+    m->i_start_a = 0.0;
 }
 
-double motor_step(motor_t *m, int cmd, double w_rad_s, double dt_s)
+static double applied_voltage(motor_t *m, int cmd)
 {
     if (cmd > MOTOR_CMD_MAX) cmd = MOTOR_CMD_MAX;
     if (cmd < -MOTOR_CMD_MAX) cmd = -MOTOR_CMD_MAX;
     double duty = (double)cmd / MOTOR_CMD_MAX;
     /* the battery delivers duty * i on average through the H-bridge */
     double v_batt = m->battery_v - m->battery_r_ohm * fabs(duty * m->i_a);
-    double l_dt = m->l_h / dt_s;
-    m->v_applied = duty * v_batt;
-    m->i_a = (m->v_applied - m->kt_nm_per_a * w_rad_s + l_dt * m->i_a) / (m->r_ohm + l_dt);
-    return m->kt_nm_per_a * m->i_a;
+    return duty * v_batt;
+}
+
+motor_drive_t motor_drive(motor_t *m, int cmd, double w_rad_s, double dt_s)
+{
+    motor_drive_t d = { 0, 0, 0 };
+    double kn = m->ke_v_s * m->n; /* at the output shaft */
+    m->v_applied = applied_voltage(m, cmd);
+    if (m->model == MOTOR_MODEL_PAPER) { /* eq. 3: backward difference with this step's start speed */
+        double l_dt = m->l_h / dt_s;
+        m->i_a = (m->v_applied - kn * w_rad_s + l_dt * m->i_a) / (m->r_ohm + l_dt);
+        m->torque_nm = kn * m->i_a;
+        d.t0_nm = m->torque_nm;
+        return d;
+    }
+    double tau = m->l_h / m->r_ohm, x = dt_s / tau;
+    m->k_mean = x > 1e-9 ? (1.0 - exp(-x)) / x : 1.0; /* the start current's weight in the step's mean */
+    m->i_start_a = m->i_a;
+    double g = m->n * m->eta * m->ke_v_s; /* output torque per ampere */
+    /* mean current = (1-k)*(V - kn*w_mean)/R + k*i_start with the step's mean
+     * speed w_mean = (w_start + w_end)/2 (trapezoidal: second order; the
+     * end-speed half is the implicit damper) */
+    double dmp = g * (1.0 - m->k_mean) * kn / m->r_ohm;
+    d.t0_nm = g * ((1.0 - m->k_mean) * m->v_applied / m->r_ohm + m->k_mean * m->i_start_a) - 0.5 * dmp * w_rad_s;
+    d.damping_nm_s = 0.5 * dmp;
+    d.friction_nm = g * m->i_friction_a;
+    return d;
+}
+
+void motor_after(motor_t *m, const motor_drive_t *d, double w_end_rad_s, double dt_s)
+{
+    if (m->model == MOTOR_MODEL_PAPER) return; /* motor_drive did it all */
+    double kn = m->ke_v_s * m->n, i_ss = (m->v_applied - kn * w_end_rad_s) / m->r_ohm;
+    double decay = exp(-dt_s * m->r_ohm / m->l_h);
+    m->i_a = i_ss + (m->i_start_a - i_ss) * decay;
+    /* the output torque: the drive less the gearbox's friction, which
+     * opposes the motion, or at rest the motion the drive tends to cause */
+    double drive = d->t0_nm - d->damping_nm_s * w_end_rad_s, f = d->friction_nm;
+    double dir = fabs(w_end_rad_s) > 1e-9 ? w_end_rad_s : drive;
+    m->torque_nm = dir > 0 ? drive - f : dir < 0 ? drive + f : drive;
+    if (fabs(w_end_rad_s) <= 1e-9 && fabs(drive) < f) m->torque_nm = 0.0; /* held by stiction */
 }

@@ -1,14 +1,35 @@
-/* motor.h - DC gear motor, the paper's eq. 1-5 with the fixes of our issue.
+/* motor.h - DC gearmotor and its drive, two models (config [motor] motor_model).
  *
- * Electrical model, first-order backward difference (implicit) as the
- * paper's eq. 3, which is stable for any step although L/R = 60 us is far
- * shorter than the 1 ms physics step:
- *   i_t = (V - Kt*w + (L/dt)*i_{t-1}) / (R + L/dt),   T = Kt*i
- * Kt and w are referred to the gearbox output shaft (the wheel). The
- * simulator applies T to the wheel and -T to the chassis (the reaction
- * torque the paper's simulator forgot). Command: -1023..+1023 = -100..+100 %
- * of the battery voltage. Battery internal resistance sags the voltage by
- * the previous step's current (off by default). */
+ * datasheet (default): a DC motor whose constants come from the datasheet's
+ * no-load and stall figures at the rated voltage V, with the gearbox's
+ * efficiency and the no-load current as friction (motor shaft quantities,
+ * N = gear ratio, w = output shaft speed):
+ *   R   = V / i_stall                         armature resistance
+ *   Ke  = (V - R*i_noload) / (N * w_noload)   back-EMF constant, V*s/rad
+ *   Kt  = Ke                                  torque constant, N*m/A (SI)
+ *   eta = T_stall / (N*Kt*(i_stall - i_noload))  gearbox efficiency
+ *   L di/dt = V*duty - R*i - Ke*N*w
+ *   T_out   = N*eta*Kt*i - T_friction,  |T_friction| <= N*eta*Kt*i_noload
+ * For the Pololu 30:1 LP 6V: R 16.67 ohm, Ke 4.03 mV*s/rad, eta 0.70; the
+ * no-load speed and current and the stall torque and current come out
+ * exact (mmsim --validate). The rotor's inertia, reflected through the
+ * gear (J*N^2), is part of the wheel's (world.c).
+ *
+ * Coupling to the 1 ms physics step without bias: the current's time
+ * constant L/R (60 us) is far below the step, so over a step the current is
+ * solved exactly for the step's end speed: with k = (tau/h)(1 - e^(-h/tau)),
+ * the step's mean current is (1-k)*i_ss(w) + k*i_start, affine in w. The
+ * torque on the wheel is then T0 - D*w_end, and the physics applies the
+ * damping part implicitly (a constraint row, world.c): no explicit lag of
+ * the back-EMF behind the wheel. Friction is a stiction constraint.
+ *
+ * paper: the paper's eq. 1-5 as its simulator ran them: T = K*i at the
+ * output shaft with K = T_stall/i_stall, R = V/i_stall, the current by a
+ * backward difference with the previous step's speed, no losses, no
+ * rotor inertia (so its no-load speed is 61 % above the datasheet's).
+ *
+ * Command: -1023..+1023 = -100..+100 % of the battery voltage. The battery's
+ * internal resistance sags the voltage by the previous step's current. */
 #ifndef MOTOR_H
 #define MOTOR_H
 
@@ -18,14 +39,43 @@
 #define MOTOR_CMD_MAX 1023
 
 typedef struct {
-    double kt_nm_per_a, r_ohm, l_h, battery_v, battery_r_ohm;
-    double i_a;     /* armature current, A */
-    double v_applied; /* last applied voltage, V */
+    int model;                 /* MOTOR_MODEL_* */
+    double n;                  /* gear ratio */
+    double r_ohm, l_h;
+    double ke_v_s;             /* back-EMF constant at the motor shaft, V*s/rad (= Kt, N*m/A) */
+    double eta;                /* gearbox efficiency, 1 = lossless */
+    double i_friction_a;       /* no-load current: the friction in amperes of motor current */
+    double battery_v, battery_r_ohm;
+    double i_a;                /* armature current at the end of the last step, A */
+    double v_applied;          /* last applied voltage, V */
+    double torque_nm;          /* output torque of the last step (friction excluded), N*m */
+    /* this step's drive, set by motor_drive */
+    double k_mean;             /* weight of the start current in the step's mean */
+    double i_start_a;
 } motor_t;
 
-void motor_init(motor_t *m, const simcfg_t *c);
-/* Advance by dt_s with command cmd (clamped to +-1023) and output-shaft
- * speed w_rad_s; returns the output-shaft torque in N*m. */
-double motor_step(motor_t *m, int cmd, double w_rad_s, double dt_s);
+/* What the physics applies to a wheel during one step: the torque
+ * t0_nm - damping_nm_s * w_end (w_end = the wheel's speed at the step's end,
+ * rad/s, solved implicitly), and a Coulomb friction up to friction_nm that
+ * holds the wheel at rest. */
+typedef struct {
+    double t0_nm, damping_nm_s, friction_nm;
+} motor_drive_t;
+
+/* scale: this motor's constant relative to the nominal (asymmetry), 1 = nominal */
+void motor_init(motor_t *m, const simcfg_t *c, double scale);
+/* The drive for the next step with command cmd (clamped to +-1023), the
+ * wheel's speed w_rad_s at the step's start and the step dt_s. */
+motor_drive_t motor_drive(motor_t *m, int cmd, double w_rad_s, double dt_s);
+/* After the step: the current at its end from the wheel's end speed. */
+void motor_after(motor_t *m, const motor_drive_t *d, double w_end_rad_s, double dt_s);
+
+/* The output shaft's speed with no load at voltage v_volt, rad/s, of the
+ * configured model (the scripted driver's feed-forward). */
+double motor_free_speed(const simcfg_t *c, double v_volt);
+
+/* The datasheet model's constants from the config (motor shaft): R, Ke and
+ * eta as above. */
+void motor_constants(const simcfg_t *c, double *r_ohm, double *ke_v_s, double *eta);
 
 #endif

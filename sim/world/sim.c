@@ -9,10 +9,28 @@ static double start_heading(uint8_t d)
     return a[d & 3];
 }
 
-int sim_init(sim_t *s, const simcfg_t *c, const maze_t *m, uint64_t seed)
+/* This robot's asymmetries: the configured ones plus the per-seed
+ * variation's draws (config [variation]; one stream, drawn in this order). */
+static void vary(simcfg_t *c, uint64_t seed)
 {
+    rng_t r;
+    rng_init(&r, seed, RNG_STREAM_VARIATION);
+    double g[5];
+    for (int i = 0; i < 5; i++) g[i] = rng_gauss(&r);
+    c->wheel_d_diff_m += c->wheel_d_sigma_m * g[0];
+    c->motor_k_diff_pct += c->motor_k_sigma_pct * g[1];
+    c->tyre_mu_diff += c->tyre_mu_sigma * g[2];
+    c->com_x_m += c->com_sigma_m * g[3];
+    c->com_y_m += c->com_sigma_m * g[4];
+}
+
+int sim_init(sim_t *s, const simcfg_t *cfg, const maze_t *m, uint64_t seed)
+{
+    simcfg_t robot = *cfg;
+    const simcfg_t *c = &robot;
+    vary(&robot, seed);
     double cell = c->cell_m;
-    s->cfg = *c;
+    s->cfg = robot;
     s->maze = m;
     s->seed = seed;
     s->world = world_create(c, m, (maze_x(m, m->start) + 0.5) * cell, (maze_y(m, m->start) + 0.5) * cell,
@@ -22,7 +40,8 @@ int sim_init(sim_t *s, const simcfg_t *c, const maze_t *m, uint64_t seed)
     uint64_t period = (uint64_t)llround(c->tof_period_s / c->step_s);
     if (period == 0) period = 1;
     for (int i = 0; i < 2; i++) {
-        motor_init(&s->motor[i], c);
+        /* right minus left, in per cent of the mean */
+        motor_init(&s->motor[i], c, 1.0 + (i == WORLD_LEFT ? -0.005 : 0.005) * c->motor_k_diff_pct);
         encoder_init(&s->encoder[i], counts_per_rev, world_wheel_angle(s->world, i));
         s->cmd[i] = 0;
     }
@@ -51,9 +70,10 @@ double sim_time_s(const sim_t *s) { return (double)s->step * s->cfg.step_s; }
 void sim_step(sim_t *s)
 {
     double dt = s->cfg.step_s;
-    double tl = motor_step(&s->motor[WORLD_LEFT], s->cmd[WORLD_LEFT], world_wheel_rate(s->world, WORLD_LEFT), dt);
-    double tr = motor_step(&s->motor[WORLD_RIGHT], s->cmd[WORLD_RIGHT], world_wheel_rate(s->world, WORLD_RIGHT), dt);
-    world_step(s->world, tl, tr);
+    motor_drive_t d[2];
+    for (int i = 0; i < 2; i++) d[i] = motor_drive(&s->motor[i], s->cmd[i], world_wheel_rate(s->world, i), dt);
+    world_step(s->world, d);
+    for (int i = 0; i < 2; i++) motor_after(&s->motor[i], &d[i], world_wheel_rate(s->world, i), dt);
     s->step++;
     for (int i = 0; i < 2; i++) encoder_update(&s->encoder[i], world_wheel_angle(s->world, i));
     uint64_t period = (uint64_t)llround(s->cfg.tof_period_s / dt);

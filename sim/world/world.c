@@ -23,6 +23,9 @@ struct world {
     dGeomID floor, centre_post, box, caster, wheel_geom[2], wheel_side[2], ray;
     dBodyID chassis, wheel[2];
     dJointID hinge[2];
+    dJointID friction[2];  /* the gearbox's stiction on each wheel (an angular motor, target speed 0) */
+    dJointID lift, lock[2]; /* world_lift: chassis held above the floor, wheels locked */
+    double tyre_mu[2];     /* each tyre's static friction (asymmetry) */
     double box_offset[3];  /* chassis box centre in the chassis body frame */
     double com[3];         /* chassis centre of mass in the robot frame (world_place) */
     double tof_pos[WORLD_TOF_COUNT][3], tof_dir[WORLD_TOF_COUNT];
@@ -87,7 +90,8 @@ static void build_robot(world_t *w, double x, double y, double heading)
      * body origin, so the body sits at the combined centre of mass and the
      * geoms are offset from it */
     dMassSetBoxTotal(&mb, c->body_mass_kg, c->body_w_m, c->body_l_m, c->body_h_m);
-    dMassTranslate(&mb, box_p[0], box_p[1], box_p[2]);
+    /* the body's mass may sit off its geometric centre (asymmetry) */
+    dMassTranslate(&mb, box_p[0] + c->com_x_m, box_p[1] + c->com_y_m, box_p[2]);
     dMassSetSphereTotal(&mc, c->caster_mass_kg, c->caster_r_m);
     dMassTranslate(&mc, caster_p[0], caster_p[1], caster_p[2]);
     dMassAdd(&mb, &mc);
@@ -110,15 +114,17 @@ static void build_robot(world_t *w, double x, double y, double heading)
     dGeomSetOffsetPosition(w->caster, caster_p[0] - com[0], caster_p[1] - com[1], caster_p[2] - com[2]);
 
     for (int s = 0; s < 2; s++) {
-        double wp[3] = { s == WORLD_LEFT ? -c->wheel_x_m : c->wheel_x_m, c->axle_y_m, rw }, ww[3];
+        /* each wheel's own diameter (asymmetry: right minus left) */
+        double rs = rw + (s == WORLD_LEFT ? -0.25 : 0.25) * c->wheel_d_diff_m;
+        double wp[3] = { s == WORLD_LEFT ? -c->wheel_x_m : c->wheel_x_m, c->axle_y_m, rs }, ww[3];
         dMass m;
         dMatrix3 r2, r3;
         frame_point(x, y, heading, wp, ww);
         w->wheel[s] = dBodyCreate(w->world);
         /* cylinder axis along z: the mass is set in the wheel frame, then
          * the body is turned so that z points along the robot's x */
-        dMassSetCylinderTotal(&m, c->wheel_mass_kg, 3, rw, c->wheel_w_m);
-        if (c->rotor_inertia_kgm2 > 0) /* rotor inertia reflected through the gearbox: J * N^2 */
+        dMassSetCylinderTotal(&m, c->wheel_mass_kg, 3, rs, c->wheel_w_m);
+        if (c->rotor_inertia_kgm2 > 0 && c->motor_model != MOTOR_MODEL_PAPER) /* rotor inertia reflected through the gearbox: J * N^2 */
             m.I[2 * 4 + 2] += c->rotor_inertia_kgm2 * c->gear_ratio * c->gear_ratio;
         dBodySetMass(w->wheel[s], &m);
         dBodySetPosition(w->wheel[s], ww[0], ww[1], ww[2]);
@@ -131,10 +137,10 @@ static void build_robot(world_t *w, double x, double y, double heading)
          * rolls a little, which moved the effective track between 88 and
          * 104 mm and made in-place turns miss by up to 9 degrees. The
          * wheel's mass and inertia stay those of a cylinder. */
-        w->wheel_geom[s] = dCreateSphere(w->robot, rw);
+        w->wheel_geom[s] = dCreateSphere(w->robot, rs);
         dGeomSetBody(w->wheel_geom[s], w->wheel[s]);
         /* ...but against walls and posts the wheel is its real cylinder */
-        w->wheel_side[s] = dCreateCylinder(w->robot, rw, c->wheel_w_m);
+        w->wheel_side[s] = dCreateCylinder(w->robot, rs, c->wheel_w_m);
         dGeomSetBody(w->wheel_side[s], w->wheel[s]);
 
         const dReal *ax = dBodyGetRotation(w->chassis); /* robot x axis in the world: column 0 */
@@ -142,6 +148,15 @@ static void build_robot(world_t *w, double x, double y, double heading)
         dJointAttach(w->hinge[s], w->chassis, w->wheel[s]);
         dJointSetHingeAnchor(w->hinge[s], ww[0], ww[1], ww[2]);
         dJointSetHingeAxis(w->hinge[s], ax[0], ax[4], ax[8]);
+        dJointSetHingeParam(w->hinge[s], dParamFMax, 0); /* the motor row: off until world_step drives it */
+        w->friction[s] = dJointCreateAMotor(w->world, 0);
+        dJointAttach(w->friction[s], w->chassis, w->wheel[s]);
+        dJointSetAMotorNumAxes(w->friction[s], 1);
+        dJointSetAMotorAxis(w->friction[s], 0, 1, 1, 0, 0); /* the axle, in the chassis' frame */
+        dJointSetAMotorParam(w->friction[s], dParamVel, 0);
+        dJointSetAMotorParam(w->friction[s], dParamFMax, 0);
+        w->tyre_mu[s] = c->tyre_mu + (s == WORLD_LEFT ? -0.5 : 0.5) * c->tyre_mu_diff;
+        if (w->tyre_mu[s] < 0.01) w->tyre_mu[s] = 0.01;
     }
     dGeomID parts[2] = { w->box, w->caster };
     for (int k = 0; k < 2; k++) {
@@ -244,7 +259,9 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
             dVector3 v;
             dBodyGetPointVel(dGeomGetBody(a), c[i].geom.pos[0], c[i].geom.pos[1], c[i].geom.pos[2], v);
             double slip = hypot(v[0], v[1]);
-            mu = slip > w->cfg.tyre_slip_m_s ? w->cfg.tyre_mu_dynamic : w->cfg.tyre_mu;
+            int side = a == w->wheel_geom[WORLD_LEFT] ? WORLD_LEFT : WORLD_RIGHT;
+            /* the dynamic friction keeps its ratio to the static one */
+            mu = slip > w->cfg.tyre_slip_m_s ? w->tyre_mu[side] * w->cfg.tyre_mu_dynamic / w->cfg.tyre_mu : w->tyre_mu[side];
         }
         c[i].surface.mode = dContactApprox1 | dContactSoftERP | dContactSoftCFM;
         if (!wall && (a == w->wheel_geom[0] || a == w->wheel_geom[1])) {
@@ -266,18 +283,57 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
     }
 }
 
-void world_step(world_t *w, double torque_left_nm, double torque_right_nm)
+/* A wheel's drive for the step: the constant torque explicitly; the part
+ * that falls with the wheel's speed as the hinge's motor row, a damper
+ * toward t0/D with damping D (ODE solves J*v = vel - cfm*lambda, so
+ * lambda = (vel - v)/cfm: cfm = 1/D), implicit in the end speed; the
+ * gearbox's friction as a motor held at speed 0 with at most that torque. */
+static void drive_wheel(world_t *w, int s, const motor_drive_t *d)
 {
-    /* +T on body1 (chassis), -T on body2 (wheel): the wheel turns forward
-     * and the chassis takes the reaction */
-    dJointAddHingeTorque(w->hinge[WORLD_LEFT], torque_left_nm);
-    dJointAddHingeTorque(w->hinge[WORLD_RIGHT], torque_right_nm);
+    if (d->damping_nm_s > 0) {
+        double vel = d->t0_nm / d->damping_nm_s;
+        dJointSetHingeParam(w->hinge[s], dParamVel, vel);
+        dJointSetHingeParam(w->hinge[s], dParamFMax, 1e3); /* never the limit: the damper's torque is what it is */
+        dJointSetHingeParam(w->hinge[s], dParamCFM, 1.0 / d->damping_nm_s);
+    } else {
+        dJointSetHingeParam(w->hinge[s], dParamFMax, 0);
+        /* +T on body1 (chassis), -T on body2 (wheel): the wheel turns
+         * forward and the chassis takes the reaction */
+        dJointAddHingeTorque(w->hinge[s], d->t0_nm);
+    }
+    dJointSetAMotorParam(w->friction[s], dParamFMax, d->friction_nm);
+}
+
+void world_step(world_t *w, const motor_drive_t drive[2])
+{
+    drive_wheel(w, WORLD_LEFT, &drive[WORLD_LEFT]);
+    drive_wheel(w, WORLD_RIGHT, &drive[WORLD_RIGHT]);
     w->touching = 0;
     dSpaceCollide(w->top, w, near_cb);
-    dWorldQuickStep(w->world, w->cfg.step_s);
+    if (w->cfg.solver == SIM_SOLVER_EXACT) dWorldStep(w->world, w->cfg.step_s);
+    else dWorldQuickStep(w->world, w->cfg.step_s);
     dJointGroupEmpty(w->contacts);
     if (w->touching && !w->touched_last) w->collisions++;
     w->touched_last = w->touching;
+}
+
+void world_lift(world_t *w, int lock_wheels)
+{
+    const dReal *p = dBodyGetPosition(w->chassis);
+    double up = 0.05; /* m: the wheels clear the floor */
+    dBodySetPosition(w->chassis, p[0], p[1], p[2] + up);
+    for (int s = 0; s < 2; s++) {
+        const dReal *q = dBodyGetPosition(w->wheel[s]);
+        dBodySetPosition(w->wheel[s], q[0], q[1], q[2] + up);
+    }
+    w->lift = dJointCreateFixed(w->world, 0);
+    dJointAttach(w->lift, w->chassis, 0);
+    dJointSetFixed(w->lift);
+    for (int s = 0; s < 2 && lock_wheels; s++) {
+        w->lock[s] = dJointCreateFixed(w->world, 0);
+        dJointAttach(w->lock[s], w->chassis, w->wheel[s]);
+        dJointSetFixed(w->lock[s]);
+    }
 }
 
 void world_pose(const world_t *w, double *x_m, double *y_m, double *heading_rad)

@@ -16,6 +16,7 @@
 
 #include "config.h"
 #include "maze.h"
+#include "motor.h"
 
 enum { WORLD_LEFT = 0, WORLD_RIGHT = 1 };
 enum { WORLD_TOF_LEFT = 0, WORLD_TOF_FRONT = 1, WORLD_TOF_RIGHT = 2, WORLD_TOF_COUNT = 3 };
@@ -27,9 +28,13 @@ typedef struct world world_t;
 world_t *world_create(const simcfg_t *c, const maze_t *m, double x_m, double y_m, double heading_rad);
 void world_destroy(world_t *w);
 
-/* One physics step of c->step_s with these output-shaft torques (N*m,
- * positive drives forward); the chassis gets the reaction torques. */
-void world_step(world_t *w, double torque_left_nm, double torque_right_nm);
+/* One physics step of c->step_s with each wheel's motor drive (output
+ * shaft, positive drives forward; motor.h): the chassis gets the reaction
+ * torques. The solver is the config's (sim.solver). */
+void world_step(world_t *w, const motor_drive_t drive[2]);
+/* For the validation bench: the chassis held 50 mm above the floor (the
+ * wheels spin free), and with lock_wheels the wheels fixed to it (stall). */
+void world_lift(world_t *w, int lock_wheels);
 
 /* Body centre and heading; speed along the heading (m/s) and yaw rate. */
 void world_pose(const world_t *w, double *x_m, double *y_m, double *heading_rad);

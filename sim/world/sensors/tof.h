@@ -3,20 +3,19 @@
  * true distance d from the ray cast -> clamp to at least the blind spot ->
  * add Gaussian noise, sigma = cv * d -> clamp to [0, range]. Nothing hit
  * within range = timeout, reported as a flag (and the range as distance).
- * Each sensor has its own PRNG stream (splitmix64 seeded from the run seed
- * and the sensor index; Box-Muller for the normal deviate), so adding a
- * sensor or reading one more often never changes another one's noise. */
+ * Each sensor has its own noise stream (world/rng.h, from the run seed and
+ * the sensor index), so adding a sensor or reading one more often never
+ * changes another one's noise. */
 #ifndef TOF_H
 #define TOF_H
 
 #include <stdint.h>
 #include "world/config.h"
+#include "world/rng.h"
 
 typedef struct {
     double range_m, blind_m, cv;
-    uint64_t rng;     /* splitmix64 state */
-    int has_spare;    /* Box-Muller makes two deviates at a time */
-    double spare;
+    rng_t rng;
 } tof_t;
 
 typedef struct {
