@@ -26,57 +26,94 @@ static void assert_near(double got, double want, double rel)
     if (fabs(got - want) > rel * fabs(want)) fail_msg("got %.9g, want %.9g (+-%.3g %%)", got, want, rel * 100);
 }
 
-/* A free wheel (inertia only) at full command settles at V/Kt. */
-static void test_motor_no_load_speed(void **state)
+/* One step of a free wheel of inertia j (no ODE): the drive's torque with
+ * its damping implicit in the end speed, friction against the motion. */
+static double free_step(motor_t *m, int cmd, double w, double j, double dt)
 {
-    (void)state;
-    motor_t m;
-    motor_init(&m, &cfg);
-    double j = 0.5 * cfg.wheel_mass_kg * pow(cfg.wheel_d_m / 2, 2); /* kg*m^2, solid disc */
-    double w = 0, dt = 0.001;
-    for (int i = 0; i < 5000; i++) w += motor_step(&m, MOTOR_CMD_MAX, w, dt) / j * dt;
-    assert_near(w, cfg.battery_v / cfg.kt_nm_per_a, 0.02);
-    /* half command, reverse: half the speed, backwards */
-    for (int i = 0; i < 5000; i++) w += motor_step(&m, -512, w, dt) / j * dt;
-    assert_near(w, -cfg.battery_v * 512 / 1023 / cfg.kt_nm_per_a, 0.02);
+    motor_drive_t d = motor_drive(m, cmd, w, dt);
+    double t0 = d.t0_nm - (w > 0 ? d.friction_nm : w < 0 ? -d.friction_nm : 0);
+    double w1 = (w + dt * t0 / j) / (1 + dt * d.damping_nm_s / j);
+    motor_after(m, &d, w1, dt);
+    return w1;
 }
 
-static void test_motor_stall_torque(void **state)
+static double rpm(double w) { return w * 60 / (2 * M_PI); }
+
+/* The paper's model: a free wheel settles at V/K, K = T_stall/i_stall. */
+static void test_paper_no_load_speed(void **state)
+{
+    (void)state;
+    simcfg_t c = cfg;
+    c.motor_model = MOTOR_MODEL_PAPER;
+    motor_t m;
+    motor_init(&m, &c, 1.0);
+    double k = c.stall_torque_nm / c.stall_a, j = 1e-5, w = 0, dt = 0.001;
+    for (int i = 0; i < 5000; i++) w = free_step(&m, MOTOR_CMD_MAX, w, j, dt);
+    assert_near(w, c.battery_v / k, 0.01);
+    assert_near(rpm(w), 725, 0.01); /* 61 % above the datasheet's 450 rpm */
+    for (int i = 0; i < 5000; i++) w = free_step(&m, -512, w, j, dt);
+    assert_near(w, -c.battery_v * 512 / 1023 / k, 0.01);
+}
+
+/* The paper's eq. 3: a backward difference, V/(R + L/dt) after one step. */
+static void test_paper_first_step(void **state)
+{
+    (void)state;
+    simcfg_t c = cfg;
+    c.motor_model = MOTOR_MODEL_PAPER;
+    motor_t m;
+    motor_init(&m, &c, 1.0);
+    motor_drive(&m, MOTOR_CMD_MAX, 0.0, 0.001);
+    assert_true(m.i_a == c.rated_v / (c.rated_v / c.stall_a + c.l_h / 0.001));
+}
+
+/* The datasheet model's constants for the Pololu 30:1 LP 6V. */
+static void test_datasheet_constants(void **state)
+{
+    (void)state;
+    double r, ke, eta;
+    motor_constants(&cfg, &r, &ke, &eta);
+    assert_near(r, 16.6667, 1e-4);
+    assert_near(ke, 0.00402714, 1e-4);
+    assert_near(eta, 0.695583, 1e-4);
+}
+
+/* A free wheel at full command: the datasheet's no-load speed and current. */
+static void test_datasheet_no_load(void **state)
 {
     (void)state;
     motor_t m;
-    motor_init(&m, &cfg);
-    double t = 0;
-    for (int i = 0; i < 100; i++) t = motor_step(&m, MOTOR_CMD_MAX, 0.0, 0.001);
-    assert_near(t, cfg.kt_nm_per_a * cfg.battery_v / cfg.r_ohm, 0.01);
+    motor_init(&m, &cfg, 1.0);
+    double w = 0, j = 2e-5;
+    for (int i = 0; i < 5000; i++) w = free_step(&m, MOTOR_CMD_MAX, w, j, 0.001);
+    assert_near(rpm(w), cfg.no_load_rpm, 1e-4);
+    assert_near(m.i_a, cfg.no_load_a, 1e-3);
+}
+
+/* Stalled: the datasheet's stall torque (the friction taken off) and
+ * current; after one step the current of L di/dt = V - R i exactly. */
+static void test_datasheet_stall(void **state)
+{
+    (void)state;
+    motor_t m;
+    motor_init(&m, &cfg, 1.0);
+    motor_drive_t d = motor_drive(&m, MOTOR_CMD_MAX, 0.0, 0.001);
+    motor_after(&m, &d, 0.0, 0.001);
+    double r = cfg.rated_v / cfg.stall_a;
+    assert_near(m.i_a, cfg.stall_a * (1 - exp(-0.001 * r / cfg.l_h)), 1e-9);
+    for (int i = 0; i < 100; i++) {
+        d = motor_drive(&m, MOTOR_CMD_MAX, 0.0, 0.001);
+        motor_after(&m, &d, 0.0, 0.001);
+    }
+    assert_near(m.torque_nm, cfg.stall_torque_nm, 1e-6);
+    assert_near(m.i_a, cfg.stall_a, 1e-6);
     /* commands beyond 11 bits are clamped */
-    motor_init(&m, &cfg);
-    double t1 = motor_step(&m, 5000, 0.0, 0.001);
-    motor_init(&m, &cfg);
-    assert_true(t1 == motor_step(&m, 1023, 0.0, 0.001));
-}
-
-/* Backward difference: exactly V/(R + L/dt) after one step from rest. */
-static void test_motor_first_step_exact(void **state)
-{
-    (void)state;
-    motor_t m;
-    motor_init(&m, &cfg);
-    motor_step(&m, MOTOR_CMD_MAX, 0.0, 0.001);
-    assert_true(m.i_a == cfg.battery_v / (cfg.r_ohm + cfg.l_h / 0.001));
-}
-
-/* Sub-stepped at 2 us, the current reaches 63.2 % of its final value at
- * t = L/R (60 us for the default motor). */
-static void test_motor_time_constant(void **state)
-{
-    (void)state;
-    motor_t m;
-    motor_init(&m, &cfg);
-    double tau = cfg.l_h / cfg.r_ohm, dt = 2e-6;
-    int n = (int)lround(tau / dt);
-    for (int i = 0; i < n; i++) motor_step(&m, MOTOR_CMD_MAX, 0.0, dt);
-    assert_near(m.i_a, 0.632 * cfg.battery_v / cfg.r_ohm, 0.02);
+    motor_drive_t d1 = motor_drive(&m, 5000, 0.0, 0.001), d2 = motor_drive(&m, 1023, 0.0, 0.001);
+    assert_true(d1.t0_nm == d2.t0_nm);
+    /* a drive weaker than the friction leaves a wheel at rest at rest */
+    motor_init(&m, &cfg, 1.0);
+    d = motor_drive(&m, 20, 0.0, 0.001);
+    assert_true(d.t0_nm < d.friction_nm);
 }
 
 /* Battery sag lowers the applied voltage under load. */
@@ -86,10 +123,23 @@ static void test_motor_battery_sag(void **state)
     simcfg_t c = cfg;
     c.battery_r_ohm = 2.0;
     motor_t m;
-    motor_init(&m, &c);
-    for (int i = 0; i < 100; i++) motor_step(&m, MOTOR_CMD_MAX, 0.0, 0.001);
+    motor_init(&m, &c, 1.0);
+    for (int i = 0; i < 100; i++) {
+        motor_drive_t d = motor_drive(&m, MOTOR_CMD_MAX, 0.0, 0.001);
+        motor_after(&m, &d, 0.0, 0.001);
+    }
     assert_true(m.v_applied < c.battery_v - 0.5);
-    assert_near(m.i_a, c.battery_v / (c.r_ohm + c.battery_r_ohm), 0.01);
+    assert_near(m.i_a, c.battery_v / (c.rated_v / c.stall_a + c.battery_r_ohm), 0.01);
+}
+
+/* The asymmetry's scale multiplies the motor's constant. */
+static void test_motor_scale(void **state)
+{
+    (void)state;
+    motor_t a, b;
+    motor_init(&a, &cfg, 1.0);
+    motor_init(&b, &cfg, 1.02);
+    assert_near(b.ke_v_s, 1.02 * a.ke_v_s, 1e-12);
 }
 
 static void test_encoder_one_revolution(void **state)
@@ -176,11 +226,13 @@ static void test_tof_streams(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_motor_no_load_speed),
-        cmocka_unit_test(test_motor_stall_torque),
-        cmocka_unit_test(test_motor_first_step_exact),
-        cmocka_unit_test(test_motor_time_constant),
+        cmocka_unit_test(test_paper_no_load_speed),
+        cmocka_unit_test(test_paper_first_step),
+        cmocka_unit_test(test_datasheet_constants),
+        cmocka_unit_test(test_datasheet_no_load),
+        cmocka_unit_test(test_datasheet_stall),
         cmocka_unit_test(test_motor_battery_sag),
+        cmocka_unit_test(test_motor_scale),
         cmocka_unit_test(test_encoder_one_revolution),
         cmocka_unit_test(test_encoder_no_drift),
         cmocka_unit_test(test_tof_noise_statistics),
