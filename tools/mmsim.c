@@ -18,11 +18,12 @@
 #include "contest/run.h"
 #include "io/outfile.h"
 #include "link/serial.h"
+#include "validate/validate.h"
 
 typedef struct {
     run_opts_t run;
     const char *maze, *batch;
-    int help;
+    int help, validate;
 } mmsim_opts_t;
 
 #define RUN(field) offsetof(mmsim_opts_t, run.field)
@@ -45,6 +46,7 @@ static void usage(FILE *out)
           "             (an mms algorithm drives the robot through the mms text API, docs/MMS.md)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
           "       mmsim --print-config [--config FILE]\n"
+          "       mmsim --validate [--config FILE] [--json]   (every model figure against its source; 0 iff all pass)\n"
           "Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure.\n",
           out);
 }
@@ -159,6 +161,7 @@ static const cli_opt_t flags[] = {
     { .name = "maze", .kind = CLI_STR, .off = offsetof(mmsim_opts_t, maze) },
     { .name = "batch", .kind = CLI_STR, .off = offsetof(mmsim_opts_t, batch) },
     { .name = "help", .kind = CLI_SET, .off = offsetof(mmsim_opts_t, help) },
+    { .name = "validate", .kind = CLI_SET, .off = offsetof(mmsim_opts_t, validate) },
     { .name = "config", .kind = CLI_STR, .off = RUN(config_path) },
     { .name = "seed", .kind = CLI_FN, .fn = f_seed, .has_arg = 1 },
     { .name = "time-limit", .kind = CLI_NUM, .off = RUN(time_limit_s), .lo = 1, .hi = 86400 },
@@ -215,7 +218,7 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
         return bad("%s", "--mms drives the firmware of one run: not with --serial/--pty/--avr, --driver scripted or --batch");
     if (o->serial && m->batch) return bad("%s", "--serial/--pty/--avr run one maze, not --batch");
     if (o->serial && !o->avr_elf) o->realtime = 1; /* a real MCU runs in real time; simavr in lockstep */
-    if (o->print_config) return 0;
+    if (o->print_config || m->validate) return 0;
     if (m->batch && (o->telem.url || o->telem.log_path)) return bad("%s", "--lcm and --lcm-log work on one maze, not with --batch");
     if (m->batch && (o->report || o->gui || o->shot)) return bad("%s", "--report, --gui and --screenshot need --maze (one run), not --batch");
     if (o->gui && o->shot) return bad("%s", "--gui and --screenshot: one at a time");
@@ -240,6 +243,26 @@ static int probe_outputs(const run_opts_t *o)
     return 0;
 }
 
+/* --validate: every model check (sim/validate) with this config; 0 iff all pass. */
+static int validate(const run_opts_t *o)
+{
+    simcfg_t cfg;
+    validate_check_t checks[VALIDATE_MAX_CHECKS];
+    if (run_load_config(o, &cfg) != 0) return RUN_BAD_INPUT;
+    int n = validate_run(&cfg, checks), failed = 0;
+    for (int i = 0; i < n; i++) failed += !checks[i].pass;
+    if (o->json) {
+        json_t *j = validate_json(checks, n);
+        int rc = run_json_line(j);
+        json_decref(j);
+        if (rc) return RUN_EXTERNAL;
+    } else {
+        validate_print(checks, n, stdout);
+        printf("%d of %d checks pass\n", n - failed, n);
+    }
+    return failed ? RUN_NOT_REACHED : RUN_OK;
+}
+
 int main(int argc, char **argv)
 {
     mmsim_opts_t m = { .run = { /* the mouse's own firmware by default, 3 speed runs after the search */
@@ -256,6 +279,7 @@ int main(int argc, char **argv)
     }
     if (first != argc) return bad("unexpected argument '%s'", argv[first]);
     if (check_combinations(&m, seen)) return RUN_BAD_INPUT;
+    if (m.validate) return validate(&m.run);
     if (m.run.print_config) {
         simcfg_t cfg;
         if (run_load_config(&m.run, &cfg) != 0) return RUN_BAD_INPUT;

@@ -328,6 +328,27 @@ void world_step(world_t *w, const motor_drive_t drive[2])
     w->touched_last = w->touching;
 }
 
+void world_brake(world_t *w, double load_nm)
+{
+    for (int s = 0; s < 2; s++) {
+        double rate = dJointGetHingeAngleRate(w->hinge[s]);
+        if (rate != 0) dJointAddHingeTorque(w->hinge[s], rate > 0 ? -load_nm : load_nm); /* +T turns the wheel forward */
+    }
+}
+
+void world_dyno(world_t *w, double rate_rad_s)
+{
+    for (int s = 0; s < 2; s++) {
+        dJointID j = dJointCreateAMotor(w->world, 0);
+        dJointAttach(j, w->chassis, w->wheel[s]);
+        dJointSetAMotorNumAxes(j, 1);
+        dJointSetAMotorAxis(j, 0, 1, 1, 0, 0);
+        /* its row holds (w_chassis - w_wheel) . axis = vel, as the hinge's rate */
+        dJointSetAMotorParam(j, dParamVel, rate_rad_s);
+        dJointSetAMotorParam(j, dParamFMax, dInfinity);
+    }
+}
+
 void world_lift(world_t *w, int lock_wheels)
 {
     const dReal *p = dBodyGetPosition(w->chassis);

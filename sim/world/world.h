@@ -35,6 +35,11 @@ void world_step(world_t *w, const motor_drive_t drive[2]);
 /* For the validation bench: the chassis held 50 mm above the floor (the
  * wheels spin free), and with lock_wheels the wheels fixed to it (stall). */
 void world_lift(world_t *w, int lock_wheels);
+/* For the bench: a brake of load_nm against each wheel's motion, this step. */
+void world_brake(world_t *w, double load_nm);
+/* For the bench: a dynamometer that holds each wheel at rate_rad_s
+ * (positive = forward) from now on. */
+void world_dyno(world_t *w, double rate_rad_s);
 
 /* Body centre and heading; speed along the heading (m/s) and yaw rate. */
 void world_pose(const world_t *w, double *x_m, double *y_m, double *heading_rad);

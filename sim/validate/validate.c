@@ -1,0 +1,391 @@
+/* validate.c - the validation scenarios (see validate.h). Each builds its
+ * bench, runs the simulator's own step (sim_step: motors, ODE, encoders,
+ * sensors) and measures what a lab would. */
+#include "validate.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "world/motor.h"
+#include "world/sim.h"
+
+#define RPM_PER_RAD_S (60.0 / (2.0 * M_PI))
+#define KGMM_PER_NM (1.0 / 9.80665e-3)
+#define DATASHEET "Pololu micro metal gearmotors datasheet Rev 2.0 (May 2018), 30:1 LP 6V"
+
+typedef struct {
+    maze_t maze;
+    sim_t sim;
+} bench_t;
+
+static bench_t bench; /* one at a time; maze_t and sim_t are large */
+
+/* An open field w x h cells (outer walls only), the robot in cell (sx, 0)
+ * facing north. */
+static void field(maze_t *m, uint8_t w, uint8_t h, uint8_t sx)
+{
+    maze_init(m, w, h);
+    maze_close_unknown(m);
+    for (uint8_t y = 0; y < h; y++)
+        for (uint8_t x = 0; x < w; x++) {
+            maze_cell_t c = maze_cell(m, x, y);
+            if (x + 1 < w) maze_set_wall(m, c, MAZE_EAST, MAZE_WALL_OPEN);
+            if (y + 1 < h) maze_set_wall(m, c, MAZE_NORTH, MAZE_WALL_OPEN);
+        }
+    m->start = maze_cell(m, sx, 0);
+    m->start_heading = MAZE_NORTH;
+}
+
+/* A corridor of n cells running east, the robot in its first facing east. */
+static void corridor(maze_t *m, uint8_t n)
+{
+    maze_init(m, n, 1);
+    maze_close_unknown(m);
+    for (uint8_t x = 0; x + 1 < n; x++) maze_set_wall(m, maze_cell(m, x, 0), MAZE_EAST, MAZE_WALL_OPEN);
+    m->start = maze_cell(m, 0, 0);
+    m->start_heading = MAZE_EAST;
+}
+
+static sim_t *open_bench(const simcfg_t *c, int lift, int lock)
+{
+    if (lift || lock) field(&bench.maze, 3, 3, 1);
+    if (sim_init(&bench.sim, c, &bench.maze, 1) != 0) return NULL;
+    if (lift) world_lift(bench.sim.world, lock);
+    return &bench.sim;
+}
+
+static void run_steps(sim_t *s, long n)
+{
+    for (long i = 0; i < n; i++) sim_step(s);
+}
+
+static long steps(const simcfg_t *c, double seconds) { return lround(seconds / c->step_s); }
+
+/* ---- the motor on the bench (robot lifted) ---- */
+
+typedef struct {
+    double rpm, current_a, torque_nm;
+} operating_t;
+
+/* The lifted robot at full command, each wheel braked by load_nm against
+ * its motion, after settle_s: the left wheel's speed and current. */
+static operating_t loaded(const simcfg_t *c, double load_nm, double settle_s)
+{
+    operating_t op = { 0, 0, 0 };
+    sim_t *s = open_bench(c, 1, 0);
+    if (!s) return op;
+    s->cmd[0] = s->cmd[1] = MOTOR_CMD_MAX;
+    for (long i = 0; i < steps(c, settle_s); i++) {
+        world_brake(s->world, load_nm);
+        sim_step(s);
+    }
+    op.rpm = world_wheel_rate(s->world, WORLD_LEFT) * RPM_PER_RAD_S;
+    op.current_a = s->motor[WORLD_LEFT].i_a;
+    op.torque_nm = load_nm;
+    sim_free(s);
+    return op;
+}
+
+/* The wheels locked to the lifted chassis, full command, for t_s. */
+static operating_t stalled(const simcfg_t *c, double t_s)
+{
+    operating_t op = { 0, 0, 0 };
+    sim_t *s = open_bench(c, 1, 1);
+    if (!s) return op;
+    s->cmd[0] = s->cmd[1] = MOTOR_CMD_MAX;
+    run_steps(s, steps(c, t_s));
+    op.current_a = s->motor[WORLD_LEFT].i_a;
+    op.torque_nm = s->motor[WORLD_LEFT].torque_nm;
+    sim_free(s);
+    return op;
+}
+
+/* The lifted robot at full command, its wheels held at w_rad_s by a
+ * dynamometer, after t_s: the left motor's current. */
+static operating_t dyno(const simcfg_t *c, double w_rad_s, double t_s)
+{
+    operating_t op = { 0, 0, 0 };
+    sim_t *s = open_bench(c, 1, 0);
+    if (!s) return op;
+    world_dyno(s->world, w_rad_s);
+    s->cmd[0] = s->cmd[1] = MOTOR_CMD_MAX;
+    run_steps(s, steps(c, t_s));
+    op.rpm = world_wheel_rate(s->world, WORLD_LEFT) * RPM_PER_RAD_S;
+    op.current_a = s->motor[WORLD_LEFT].i_a;
+    op.torque_nm = s->motor[WORLD_LEFT].torque_nm;
+    sim_free(s);
+    return op;
+}
+
+/* The brake at which the lifted wheel draws current_a (bisection on the
+ * simulator's own response). */
+static operating_t at_current(const simcfg_t *c, double current_a)
+{
+    double lo = 0, hi = c->stall_torque_nm;
+    operating_t op = { 0, 0, 0 };
+    for (int i = 0; i < 30; i++) {
+        op = loaded(c, 0.5 * (lo + hi), 1.0);
+        if (op.current_a < current_a) lo = op.torque_nm;
+        else hi = op.torque_nm;
+    }
+    return op;
+}
+
+/* The continuous equations of the configured motor and wheel (motor.h),
+ * integrated by RK4 at 0.1 us from rest at full command: the wheel's speed
+ * at t_s (rad/s), and the current (A). */
+static double reference_response(const simcfg_t *c, double t_s, double *current_a)
+{
+    double r, ke, eta, n = c->gear_ratio, v = c->battery_v, i0 = c->no_load_a;
+    motor_constants(c, &r, &ke, &eta);
+    double rw = c->wheel_d_m / 2;
+    double j = 0.5 * c->wheel_mass_kg * rw * rw + c->rotor_inertia_kgm2 * n * n; /* the wheel's axle inertia */
+    double i = 0, w = 0, h = 1e-7;
+    long k = lround(t_s / h);
+    for (long s = 0; s < k; s++) {
+        double di[4], dw[4], ii = i, ww = w;
+        for (int q = 0; q < 4; q++) {
+            di[q] = (v - r * ii - ke * n * ww) / c->l_h;
+            double drive = n * eta * ke * (ii - i0);
+            dw[q] = (ww > 0 || drive > 0) ? drive / j : 0; /* stiction holds it until the drive beats the friction */
+            double f = q < 2 ? 0.5 * h : h;
+            if (q < 3) {
+                ii = i + f * di[q];
+                ww = w + f * dw[q];
+            }
+        }
+        i += h / 6 * (di[0] + 2 * di[1] + 2 * di[2] + di[3]);
+        w += h / 6 * (dw[0] + 2 * dw[1] + 2 * dw[2] + dw[3]);
+    }
+    *current_a = i;
+    return w;
+}
+
+static double lifted_speed_at(const simcfg_t *c, double t_s)
+{
+    sim_t *s = open_bench(c, 1, 0);
+    if (!s) return 0;
+    s->cmd[0] = s->cmd[1] = MOTOR_CMD_MAX;
+    run_steps(s, steps(c, t_s));
+    double w = world_wheel_rate(s->world, WORLD_LEFT);
+    sim_free(s);
+    return w;
+}
+
+/* Encoder counts over ten wheel turns of the lifted robot, per turn. */
+static double counts_per_rev(const simcfg_t *c)
+{
+    sim_t *s = open_bench(c, 1, 0);
+    if (!s) return 0;
+    s->cmd[0] = s->cmd[1] = 300;
+    double turned = 0, last = world_wheel_angle(s->world, WORLD_LEFT);
+    int32_t c0 = s->encoder[WORLD_LEFT].count;
+    while (turned < 20 * M_PI && s->step < 1000000) {
+        sim_step(s);
+        double a = world_wheel_angle(s->world, WORLD_LEFT);
+        turned += remainder(a - last, 2 * M_PI);
+        last = a;
+    }
+    double cpr = (s->encoder[WORLD_LEFT].count - c0) / (turned / (2 * M_PI));
+    sim_free(s);
+    return cpr;
+}
+
+/* ---- the robot on the floor ---- */
+
+/* Idle in the start cell for minutes: the body centre's drift, mm/min. */
+static double creep_mm_per_min(const simcfg_t *c, double minutes)
+{
+    field(&bench.maze, 3, 3, 1);
+    sim_t *s = open_bench(c, 0, 0);
+    if (!s) return 1e9;
+    double x0, y0, h, x, y;
+    run_steps(s, steps(c, 1.0)); /* settle on the floor */
+    world_pose(s->world, &x0, &y0, &h);
+    run_steps(s, steps(c, 60.0 * minutes));
+    world_pose(s->world, &x, &y, &h);
+    sim_free(s);
+    return hypot(x - x0, y - y0) * 1000.0 / minutes;
+}
+
+/* Full command straight ahead across an open field for 4 m: how far the
+ * body centre ends up sideways of the start line, mm. */
+static double veer_mm_4m(const simcfg_t *c)
+{
+    field(&bench.maze, 32, 32, 16);
+    sim_t *s = open_bench(c, 0, 0);
+    if (!s) return 1e9;
+    double x0, y0, h, x, y;
+    world_pose(s->world, &x0, &y0, &h);
+    s->cmd[0] = s->cmd[1] = MOTOR_CMD_MAX;
+    do {
+        sim_step(s);
+        world_pose(s->world, &x, &y, &h);
+    } while (y - y0 < 4.0 && s->step < 100000);
+    sim_free(s);
+    return fabs(x - x0) * 1000.0;
+}
+
+/* The robot in a corridor facing its end wall with the front sensor true_m
+ * from it, for seconds: readings' mean and standard deviation (valid ones),
+ * how many, and how many at or beyond the range were not timeouts. */
+typedef struct {
+    double mean, sd;
+    long n, beyond_valid, timeouts;
+} tof_stats_t;
+
+static tof_stats_t tof_facing(const simcfg_t *c, double true_m, double seconds)
+{
+    tof_stats_t st = { 0, 0, 0, 0, 0 };
+    corridor(&bench.maze, 16);
+    sim_t *s = open_bench(c, 0, 0);
+    if (!s) return st;
+    double face = 16 * c->cell_m - c->wall_thick_m / 2;
+    world_place(s->world, face - c->tof_front_y_m - true_m, 0.5 * c->cell_m, 0.0, NULL);
+    double sum = 0, sum2 = 0;
+    uint32_t seen = s->tof_count[WORLD_TOF_FRONT];
+    for (long i = 0; i < steps(c, seconds); i++) {
+        sim_step(s);
+        if (s->tof_count[WORLD_TOF_FRONT] == seen) continue;
+        seen = s->tof_count[WORLD_TOF_FRONT];
+        tof_reading_t r = s->tof_last[WORLD_TOF_FRONT];
+        if (r.timeout) {
+            st.timeouts++;
+            continue;
+        }
+        if (r.dist_m >= c->tof_range_m) st.beyond_valid++;
+        sum += r.dist_m;
+        sum2 += r.dist_m * r.dist_m;
+        st.n++;
+    }
+    if (st.n > 1) {
+        st.mean = sum / st.n;
+        st.sd = sqrt(fmax(0, (sum2 - sum * sum / st.n) / (st.n - 1)));
+    }
+    sim_free(s);
+    return st;
+}
+
+/* Full command into the end wall of a corridor for 3 s: how far the body's
+ * front got past the wall's face at most, mm (0 = never). */
+static double tunnelling_mm(const simcfg_t *c)
+{
+    corridor(&bench.maze, 3);
+    sim_t *s = open_bench(c, 0, 0);
+    if (!s) return 1e9;
+    double face = 3 * c->cell_m - c->wall_thick_m / 2, worst = 0, x, y, h;
+    s->cmd[0] = s->cmd[1] = MOTOR_CMD_MAX;
+    for (long i = 0; i < steps(c, 3.0); i++) {
+        sim_step(s);
+        world_pose(s->world, &x, &y, &h);
+        worst = fmax(worst, x + c->body_l_m / 2 - face);
+    }
+    sim_free(s);
+    return worst * 1000.0;
+}
+
+/* ---- the table ---- */
+
+static void add(validate_check_t *v, int *n, const char *name, double expected, double measured, const char *unit,
+                double tol_pct, int bound, const char *source)
+{
+    validate_check_t *k = &v[(*n)++];
+    k->name = name;
+    k->expected = expected;
+    k->measured = measured;
+    k->unit = unit;
+    k->tolerance_pct = tol_pct;
+    k->bound = bound;
+    k->source = source;
+    if (bound == VALIDATE_NEAR) k->pass = fabs(measured - expected) <= tol_pct / 100.0 * fabs(expected);
+    else if (bound == VALIDATE_MAX) k->pass = measured <= expected;
+    else k->pass = 1;
+}
+
+static int motor_checks(const simcfg_t *c, validate_check_t *v, int n)
+{
+    operating_t nl = loaded(c, 0, 3.0), st = stalled(c, 1.0), first = stalled(c, c->step_s);
+    add(v, &n, "no_load_speed", c->no_load_rpm, nl.rpm, "rpm", 2, VALIDATE_NEAR, DATASHEET ": no load");
+    add(v, &n, "no_load_current", c->no_load_a, nl.current_a, "A", 2, VALIDATE_NEAR, DATASHEET ": no load");
+    add(v, &n, "stall_torque", c->stall_torque_nm, st.torque_nm, "N*m", 2, VALIDATE_NEAR, DATASHEET ": stall 2.9 kg*mm");
+    add(v, &n, "stall_current", c->stall_a, st.current_a, "A", 2, VALIDATE_NEAR, DATASHEET ": stall");
+    double r = c->rated_v / c->stall_a;
+    add(v, &n, "first_step_current", c->battery_v / r * (1 - exp(-c->step_s * r / c->l_h)), first.current_a, "A", 2,
+        VALIDATE_NEAR, "analytic: V/R*(1 - exp(-t*R/L)) one step after stall");
+    /* the datasheet's maximum-efficiency point: 320 rpm, 0.66 kg*mm, 0.11 A */
+    operating_t me = at_current(c, 0.11);
+    add(v, &n, "max_efficiency_speed", 320, me.rpm, "rpm", 8, VALIDATE_NEAR, DATASHEET ": max efficiency, at its 0.11 A");
+    add(v, &n, "max_efficiency_torque", 0.66, me.torque_nm * KGMM_PER_NM, "kg*mm", 0, VALIDATE_REPORT,
+        DATASHEET ": max efficiency, at its 0.11 A; a model linear in current gives ~0.77 (no bar)");
+    operating_t dy = dyno(c, 320 / RPM_PER_RAD_S, 1.0);
+    add(v, &n, "max_efficiency_current", 0.11, dy.current_a, "A", 8, VALIDATE_NEAR,
+        DATASHEET ": max efficiency, the wheel held at its 320 rpm");
+    return n;
+}
+
+static int response_checks(const simcfg_t *c, validate_check_t *v, int n)
+{
+    static const struct {
+        const char *name;
+        double t_s;
+    } at[] = { { "step_response_1ms", 0.001 }, { "step_response_2ms", 0.002 }, { "step_response_5ms", 0.005 } };
+    for (int k = 0; k < 3; k++) {
+        double i_ref, w_ref = reference_response(c, at[k].t_s, &i_ref);
+        add(v, &n, at[k].name, w_ref, lifted_speed_at(c, at[k].t_s), "rad/s", 2, VALIDATE_NEAR,
+            "analytic: the motor's L-R circuit and the wheel's inertia (rotor reflected), RK4 at 0.1 us");
+    }
+    add(v, &n, "encoder_counts_per_rev", c->encoder_ppr * c->gear_ratio, counts_per_rev(c), "counts", 0.5,
+        VALIDATE_NEAR, "encoder PPR x gear ratio (paper: 12 x 29.86 = 358.32)");
+    return n;
+}
+
+static int floor_checks(const simcfg_t *c, validate_check_t *v, int n)
+{
+    add(v, &n, "rest_creep_mm_per_min", 0.1, creep_mm_per_min(c, 10.0), "mm/min", 0, VALIDATE_MAX,
+        "a robot at rest stays at rest: 10 minutes idle in the start cell");
+    add(v, &n, "straight_veer_mm_4m", 2.0, veer_mm_4m(c), "mm", 0, VALIDATE_MAX,
+        "a symmetric robot drives straight: full command, 4 m, sideways drift");
+    tof_stats_t near = tof_facing(c, 0.5, 60.0), edge = tof_facing(c, c->tof_range_m * 0.98, 60.0);
+    add(v, &n, "tof_noise_cv", c->tof_cv, near.mean > 0 ? near.sd / near.mean : 0, "1", 5, VALIDATE_NEAR,
+        "paper: sigma = cv * distance (a wall 0.5 m ahead, 2000 readings)");
+    add(v, &n, "tof_timeout_beyond_range", 0, (double)edge.beyond_valid, "readings", 0, VALIDATE_MAX,
+        "VL53L0X and the paper's Unity simulator: at or beyond the range is a timeout (a wall at 0.98 x range, noise)");
+    add(v, &n, "wall_no_tunnelling", 1.0, tunnelling_mm(c), "mm", 0, VALIDATE_MAX,
+        "full command into a wall: the body stops at its face (contact softness allows < 1 mm)");
+    return n;
+}
+
+int validate_run(const simcfg_t *c, validate_check_t *checks)
+{
+    int n = motor_checks(c, checks, 0);
+    n = response_checks(c, checks, n);
+    return floor_checks(c, checks, n);
+}
+
+static const char *bound_name(int b) { return b == VALIDATE_NEAR ? "near" : b == VALIDATE_MAX ? "max" : "report"; }
+
+void validate_print(const validate_check_t *v, int n, FILE *out)
+{
+    fprintf(out, "%-26s %12s %12s %-8s %9s %-4s %s\n", "check", "expected", "measured", "unit", "tolerance", "pass",
+            "source");
+    for (int i = 0; i < n; i++) {
+        char tol[32];
+        if (v[i].bound == VALIDATE_NEAR) snprintf(tol, sizeof tol, "%g %%", v[i].tolerance_pct);
+        else snprintf(tol, sizeof tol, "%s", v[i].bound == VALIDATE_MAX ? "at most" : "-");
+        fprintf(out, "%-26s %12.6g %12.6g %-8s %9s %-4s %s\n", v[i].name, v[i].expected, v[i].measured, v[i].unit, tol,
+                v[i].pass ? "yes" : "NO", v[i].source);
+    }
+}
+
+json_t *validate_json(const validate_check_t *v, int n)
+{
+    json_t *arr = json_array();
+    for (int i = 0; i < n; i++) {
+        json_t *k = json_pack("{s:s, s:f, s:f, s:s, s:o, s:s, s:b, s:s}", "name", v[i].name, "expected", v[i].expected,
+                              "measured", v[i].measured, "unit", v[i].unit, "tolerance_pct",
+                              v[i].bound == VALIDATE_NEAR ? json_real(v[i].tolerance_pct) : json_null(), "source",
+                              v[i].source, "pass", v[i].pass, "bound", bound_name(v[i].bound));
+        json_array_append_new(arr, k);
+    }
+    return json_pack("{s:o}", "checks", arr);
+}
