@@ -19,7 +19,8 @@ static void test_defaults_are_the_papers_robot(void **state)
     (void)state;
     config_defaults(&c);
     assert_true(c.cell_m == 0.180 && c.body_w_m == 0.096 && c.body_l_m == 0.120 && c.body_mass_kg == 0.127);
-    assert_true(c.wheel_d_m == 0.032 && c.gear_ratio == 29.86 && c.kt_nm_per_a == 0.079025 && c.r_ohm == 16.6667);
+    assert_true(c.wheel_d_m == 0.032 && c.gear_ratio == 29.86 && c.stall_torque_nm == 0.028439 && c.stall_a == 0.36);
+    assert_true(c.motor_model == MOTOR_MODEL_DATASHEET && c.solver == SIM_SOLVER_EXACT);
     assert_true(c.l_h == 0.001 && c.battery_v == 6.0 && c.encoder_ppr == 12 && c.tof_range_m == 1.2);
     assert_true(c.tof_cv == 0.05 && c.tof_period_s == 0.030 && c.step_s == 0.001 && c.time_limit_s == 600);
 }

@@ -11,6 +11,7 @@
 
 #include "world/config.h"
 #include "world/motor.h"
+#include "world/sim.h"
 #include "world/world.h"
 
 static simcfg_t cfg;
@@ -216,6 +217,49 @@ static void test_place(void **state)
     world_destroy(w);
 }
 
+/* Full command for 2 s across an open 8x8 from its middle: the sideways
+ * drift (m) of the robot sim_init builds for this config and seed. */
+static double veer(const simcfg_t *c, uint64_t seed)
+{
+    static maze_t m;
+    static sim_t s;
+    maze_init(&m, 8, 8);
+    maze_close_unknown(&m);
+    for (uint16_t k = 0; k < 64; k++)
+        for (uint8_t d = 0; d < 4; d++) maze_set_wall(&m, (maze_cell_t)k, d, MAZE_WALL_OPEN);
+    m.start = maze_cell(&m, 4, 0);
+    m.start_heading = MAZE_NORTH;
+    assert_int_equal(sim_init(&s, c, &m, seed), 0);
+    double x0, y0, h, x, y;
+    world_pose(s.world, &x0, &y0, &h);
+    s.cmd[0] = s.cmd[1] = MOTOR_CMD_MAX;
+    for (int i = 0; i < 2000; i++) sim_step(&s);
+    world_pose(s.world, &x, &y, &h);
+    sim_free(&s);
+    return x - x0;
+}
+
+/* Veer comes only from the asymmetries: none drives straight; a larger
+ * right wheel turns the robot left; the per-seed variation gives each seed
+ * its own robot, the same every time. */
+static void test_asymmetry_and_variation(void **state)
+{
+    (void)state;
+    simcfg_t c = cfg;
+    assert_true(fabs(veer(&c, 1)) < 1e-4);
+    c.wheel_d_diff_m = 0.0002;
+    double left = veer(&c, 1);
+    if (!(left < -0.002)) fail_msg("right wheel 0.2 mm larger: %.4f m sideways, want left", left);
+    c = cfg;
+    c.motor_k_diff_pct = 2; /* a right motor with a 2 % larger constant tops out 2 % slower: right */
+    double right = veer(&c, 1);
+    if (!(right > 0.002)) fail_msg("right motor constant +2 %%: %.4f m sideways, want right", right);
+    c = cfg;
+    c.wheel_d_sigma_m = 0.0002;
+    double a = veer(&c, 1), b = veer(&c, 2), a2 = veer(&c, 1);
+    assert_true(a == a2 && a != b && fabs(a) > 1e-4);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -226,6 +270,7 @@ int main(void)
         cmocka_unit_test(test_stays_on_floor),
         cmocka_unit_test(test_deterministic),
         cmocka_unit_test(test_place),
+        cmocka_unit_test(test_asymmetry_and_variation),
     };
     return cmocka_run_group_tests_name("world", tests, setup, NULL);
 }
