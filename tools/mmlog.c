@@ -8,12 +8,14 @@
  * the log's event timestamp for any other channel. A message of an mmlcm
  * channel that does not decode is counted as bad.
  * Exit codes: 0 ok, 2 bad input (unreadable, not an LCM log, bad messages,
- * a truncated or corrupt event: what came before it is still summed up). */
+ * a truncated or corrupt event: what came before it is still summed up),
+ * 3 stdout could not be written. */
 #include <jansson.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "io/stdstream.h"
 #include "telemetry/lcmlog.h"
 #include "mmlcm_belief_t.h"
 #include "mmlcm_link_t.h"
@@ -231,7 +233,7 @@ static int usage(void)
     return 2;
 }
 
-int main(int argc, char **argv)
+static int run(int argc, char **argv)
 {
     int as_json = 0;
     const char *dump = NULL, *path = NULL;
@@ -285,4 +287,11 @@ int main(int argc, char **argv)
     }
     json_decref(out);
     return rc;
+}
+
+int main(int argc, char **argv)
+{
+    io_stdout_open();
+    int rc = run(argc, argv);
+    return io_stdout_close("mmlog") != 0 ? 3 : rc;
 }

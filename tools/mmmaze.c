@@ -11,6 +11,7 @@
 
 #include "maze/grid.h"
 #include "hal_sim.h"
+#include "io/stdstream.h"
 #include "maze.h"
 #include "maze/mazedir.h"
 #include "maze/mazefile.h"
@@ -342,7 +343,7 @@ static int cmd_explore(int argc, char **argv)
     return done && r.final_path_optimal ? EXIT_OK : EXIT_NOT_REACHED;
 }
 
-int main(int argc, char **argv)
+static int run_command(int argc, char **argv)
 {
     if (argc < 2) {
         usage(stderr);
@@ -364,4 +365,11 @@ int main(int argc, char **argv)
     if (!strcmp(cmd, "explore")) return cmd_explore(argc, argv);
     fprintf(stderr, "mmmaze: unknown command '%s' (try 'mmmaze --help')\n", cmd);
     return EXIT_BAD_INPUT;
+}
+
+int main(int argc, char **argv)
+{
+    io_stdout_open();
+    int rc = run_command(argc, argv);
+    return io_stdout_close("mmmaze") != 0 ? EXIT_EXTERNAL : rc;
 }

@@ -17,6 +17,7 @@
 #include "contest/batch.h"
 #include "contest/run.h"
 #include "io/outfile.h"
+#include "io/stdstream.h"
 #include "link/serial.h"
 
 typedef struct {
@@ -240,7 +241,7 @@ static int probe_outputs(const run_opts_t *o)
     return 0;
 }
 
-int main(int argc, char **argv)
+static int run(int argc, char **argv)
 {
     mmsim_opts_t m = { .run = { /* the mouse's own firmware by default, 3 speed runs after the search */
         .seed = 1, .runs = 3, .centre_post = -1, .scripted = 0, .jobs = 1,
@@ -269,4 +270,11 @@ int main(int argc, char **argv)
     if (j && m.run.json && run_json_line(j) != 0) rc = RUN_EXTERNAL;
     json_decref(j);
     return rc;
+}
+
+int main(int argc, char **argv)
+{
+    io_stdout_open();
+    int rc = run(argc, argv);
+    return io_stdout_close("mmsim") != 0 ? RUN_EXTERNAL : rc;
 }

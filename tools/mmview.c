@@ -15,6 +15,7 @@
 
 #include "cli.h"
 #include "io/outfile.h"
+#include "io/stdstream.h"
 #include "view/replay.h"
 #include "view/view.h"
 
@@ -102,7 +103,7 @@ static int show(const mmview_opts_t *m, replay_t *rp, sim_t *sim)
     return rc;
 }
 
-int main(int argc, char **argv)
+static int run(int argc, char **argv)
 {
     mmview_opts_t m = { .view = { 1024, 720, 1, 1, "", 115200 }, .at_s = -1 };
     const char *log = NULL;
@@ -133,4 +134,11 @@ int main(int argc, char **argv)
     sim_free(&sim);
     replay_free(&rp);
     return rc;
+}
+
+int main(int argc, char **argv)
+{
+    io_stdout_open();
+    int rc = run(argc, argv);
+    return io_stdout_close("mmview") != 0 ? EXIT_EXTERNAL : rc;
 }

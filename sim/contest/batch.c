@@ -149,8 +149,12 @@ int batch_run(const run_opts_t *o, const char *dir)
     while (!failed && b.done < b.n) {
         while (!failed && b.running < o->jobs && b.next < b.n) failed = start_job(&b) != 0;
         if (!failed) failed = reap_job(&b) != 0;
+        if (!failed && ferror(stdout)) { /* the results cannot be written: stop (mmsim's end says why) */
+            failed = 1;
+            b.worst = RUN_EXTERNAL;
+        }
     }
-    if (!failed) fputc('\n', stderr);
+    if (b.done) fputc('\n', stderr); /* the end of the progress line */
     fflush(stdout);
     for (size_t i = 0; b.pid && b.fd && i < b.next; i++)
         if (b.pid[i]) { /* only after a failure above: end the jobs still running */
