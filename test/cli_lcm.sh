@@ -138,4 +138,7 @@ head -c $(( $(stat -c %s "$T/r.lcmlog") - 7 )) "$T/r.lcmlog" >"$T/cut.lcmlog"
 want_rc 2 "mmlog on a truncated log" "$L" "$T/cut.lcmlog"
 one_line "mmlog on a truncated log"; grep -q '^MM_POSE ' "$T/out" && ok "summary before the cut" || bad "summary before the cut"
 want_rc 2 "mmlog bad flag" "$L" --warp "$T/r.lcmlog"
+want_rc 2 "mmlog --dump of an unknown channel" "$L" --dump NOPE "$T/r.lcmlog"
+one_line "mmlog --dump NOPE"; [ ! -s "$T/out" ] && grep -q "^mmlog: --dump NOPE: not a channel mmlog decodes; the channels are MM_POSE, MM_MOTORS, .*, MM_MAZE$" "$T/err" \
+  && ok "unknown channel: the known ones listed" || bad "unknown channel: $(cat "$T/err")"
 [ $fails -eq 0 ]

@@ -177,6 +177,13 @@ static int decode(const char *ch, const void *data, int len, int64_t *ut, json_t
     return 1;
 }
 
+static int known_channel(const char *ch)
+{
+    for (size_t i = 0; i < sizeof decoders / sizeof decoders[0]; i++)
+        if (!strcmp(ch, decoders[i].channel)) return 1;
+    return 0;
+}
+
 typedef struct {
     char *name;
     long count, bad;
@@ -247,6 +254,13 @@ static int run(int argc, char **argv)
         } else path = argv[i];
     }
     if (!path) return usage();
+    if (dump && !known_channel(dump)) {
+        fprintf(stderr, "mmlog: --dump %s: not a channel mmlog decodes; the channels are", dump);
+        for (size_t i = 0; i < sizeof decoders / sizeof decoders[0]; i++)
+            fprintf(stderr, "%s %s", i ? "," : "", decoders[i].channel);
+        fputc('\n', stderr);
+        return 2;
+    }
     static chan_t ch[MAX_CHANNELS];
     read_t rd = { ch, 0, dump, path };
     char err[4200];

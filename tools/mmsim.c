@@ -216,6 +216,7 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
         return bad("%s", "--mms drives the firmware of one run: not with --serial/--pty/--avr, --driver scripted or --batch");
     if (o->serial && m->batch) return bad("%s", "--serial/--pty/--avr run one maze, not --batch");
     if (o->serial && !o->avr_elf) o->realtime = 1; /* a real MCU runs in real time; simavr in lockstep */
+    if (m->batch && m->maze) return bad("%s", "--maze and --batch: one at a time (a batch runs every maze in DIR)");
     if (o->print_config) return 0;
     if (m->batch && (o->telem.url || o->telem.log_path)) return bad("%s", "--lcm and --lcm-log work on one maze, not with --batch");
     if (m->batch && (o->report || o->gui || o->shot)) return bad("%s", "--report, --gui and --screenshot need --maze (one run), not --batch");
