@@ -19,6 +19,7 @@
 #include "io/outfile.h"
 #include "io/stdstream.h"
 #include "link/serial.h"
+#include "view/report.h"
 
 typedef struct {
     run_opts_t run;
@@ -225,20 +226,27 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     return 0;
 }
 
-/* --report and --screenshot fail now, not after a ten-minute contest. */
+/* --report (its PNG, SVG and JSON) and --screenshot fail now, not after a
+ * ten-minute contest: an empty name, a folder, a path that cannot be written. */
 static int probe_outputs(const run_opts_t *o)
 {
-    const char *outs[2][2] = { { "--report", o->report }, { "--screenshot", o->shot } };
-    for (int i = 0; i < 2; i++) {
-        char perr[600];
-        outfile_t probe;
-        if (!outs[i][1]) continue;
-        if (outfile_open(&probe, outs[i][1], perr, sizeof perr) != 0) {
-            fprintf(stderr, "mmsim: %s: %s\n", outs[i][0], perr);
+    char paths[4][4096], perr[600];
+    const char *flag[4] = { "--report", "--report", "--report", "--screenshot" };
+    int n = 0;
+    if (o->report) {
+        snprintf(paths[n++], sizeof paths[0], "%s", o->report);
+        report_sibling(o->report, ".svg", paths[n++], sizeof paths[0]);
+        report_sibling(o->report, ".json", paths[n++], sizeof paths[0]);
+    }
+    if (o->shot) {
+        flag[n] = "--screenshot";
+        snprintf(paths[n++], sizeof paths[0], "%s", o->shot);
+    }
+    for (int i = 0; i < n; i++)
+        if (outfile_probe(paths[i], perr, sizeof perr) != 0) {
+            fprintf(stderr, "mmsim: %s: %s\n", flag[i], perr);
             return RUN_BAD_INPUT;
         }
-        outfile_abort(&probe);
-    }
     return 0;
 }
 

@@ -67,12 +67,10 @@ static int parse(int argc, char **argv, mmview_opts_t *m, const char **log)
     if (m->shot && m->at_s < 0) return bad("%s", "--screenshot needs --at SECONDS");
     if (m->shot) { /* fail now, before loading the log */
         char perr[600];
-        outfile_t probe;
-        if (outfile_open(&probe, m->shot, perr, sizeof perr) != 0) {
+        if (outfile_probe(m->shot, perr, sizeof perr) != 0) {
             fprintf(stderr, "mmview: --screenshot: %s\n", perr);
             return EXIT_BAD_INPUT;
         }
-        outfile_abort(&probe);
     }
     return 0;
 }
