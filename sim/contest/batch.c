@@ -80,7 +80,7 @@ static void on_stop(int sig)
 }
 
 /* Install (on) or restore the handlers; *blocked gets the three signals. */
-static void guard_stop(int on, sigset_t *blocked)
+static void batch_signals(int on, sigset_t *blocked)
 {
     static struct sigaction old[3];
     sigemptyset(blocked);
@@ -200,7 +200,7 @@ int batch_run(const run_opts_t *o, const char *dir)
         b.worst = RUN_EXTERNAL;
     }
     sigset_t blocked, prev;
-    guard_stop(1, &blocked);
+    batch_signals(1, &blocked);
     sigprocmask(SIG_BLOCK, &blocked, &prev);
     live = &b;
     while (!failed && !stop_sig && b.done < b.n) {
@@ -221,7 +221,7 @@ int batch_run(const run_opts_t *o, const char *dir)
             b.pid[i] = 0;
         }
     live = NULL;
-    guard_stop(0, &blocked);
+    batch_signals(0, &blocked);
     sigprocmask(SIG_SETMASK, &prev, NULL);
     if (stop_sig) { /* the jobs are gone: die of the signal, as without a batch */
         sigset_t one;
