@@ -40,6 +40,20 @@ learned=$($P "$T/fw" near:202020:0)
 "$S" --maze mazes/gen-5x5-s1.txt --report "$T/no/such/dir/x.png" >"$T/out" 2>"$T/err"; rc=$?
 [ $rc -eq 2 ] && [ "$(wc -l <"$T/err")" -eq 1 ] && grep -q "^mmsim: --report: $T/no/such/dir/x.png: cannot write" "$T/err" \
   && ok "unwritable report path" || bad "unwritable report path: exit $rc $(cat "$T/err")"
+mkdir "$T/dir" "$T/sib.svg"
+for r in "" "$T/dir" "$T/dir/" "$T/sib.png"; do
+  "$S" --maze mazes/gen-5x5-s1.txt --driver scripted --runs 1 --report "$r" >"$T/out" 2>"$T/err"; rc=$?
+  [ $rc -eq 2 ] && [ "$(wc -l <"$T/err")" -eq 1 ] && [ ! -s "$T/out" ] && grep -q "^mmsim: --report: " "$T/err" \
+    && ok "--report '$r': exit 2 before the run" || bad "--report '$r': exit $rc $(cat "$T/err")"
+done
+[ ! -e "$T/sib.png" ] && [ ! -e "$T/sib.json" ] && [ -z "$(ls "$T" "$T/dir" | grep '\.tmp\.')" ] && ok "nothing written for a refused --report" || bad "files left: $(ls "$T" "$T/dir")"
+# all three files or none: the SVG (55 KB) fails under a 20 KB file size limit after the PNG
+# (8 KB) was written; the old report stays whole
+for e in png svg json; do echo "old $e" >"$T/old.$e"; done
+( ulimit -f 20; trap '' XFSZ; exec "$S" --maze mazes/gen-5x5-s1.txt --driver scripted --runs 1 --report "$T/old.png" ) >"$T/out" 2>"$T/err"; rc=$?
+[ $rc -eq 3 ] && [ "$(cat "$T/err")" = "$T/old.svg: cannot write: File too large" ] && ok "report write fails: exit 3, one line" || bad "report write fails: exit $rc $(cat "$T/err")"
+[ "$(cat "$T/old.png" "$T/old.svg" "$T/old.json")" = "$(printf 'old png\nold svg\nold json')" ] && [ -z "$(ls "$T" | grep '\.tmp\.')" ] \
+  && ok "report write fails: none of the three replaced, no temporaries" || bad "report write fails: $(ls -l "$T"/old.*)"
 "$S" --batch mazes --report "$T/b.png" >"$T/out" 2>"$T/err"; rc=$?
 [ $rc -eq 2 ] && [ ! -e "$T/b.png" ] && ok "--report with --batch refused" || bad "--report with --batch: exit $rc"
 

@@ -17,7 +17,9 @@
 #include "contest/batch.h"
 #include "contest/run.h"
 #include "io/outfile.h"
+#include "io/stdstream.h"
 #include "link/serial.h"
+#include "view/report.h"
 
 typedef struct {
     run_opts_t run;
@@ -215,6 +217,7 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
         return bad("%s", "--mms drives the firmware of one run: not with --serial/--pty/--avr, --driver scripted or --batch");
     if (o->serial && m->batch) return bad("%s", "--serial/--pty/--avr run one maze, not --batch");
     if (o->serial && !o->avr_elf) o->realtime = 1; /* a real MCU runs in real time; simavr in lockstep */
+    if (m->batch && m->maze) return bad("%s", "--maze and --batch: one at a time (a batch runs every maze in DIR)");
     if (o->print_config) return 0;
     if (m->batch && (o->telem.url || o->telem.log_path)) return bad("%s", "--lcm and --lcm-log work on one maze, not with --batch");
     if (m->batch && (o->report || o->gui || o->shot)) return bad("%s", "--report, --gui and --screenshot need --maze (one run), not --batch");
@@ -223,24 +226,31 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     return 0;
 }
 
-/* --report and --screenshot fail now, not after a ten-minute contest. */
+/* --report (its PNG, SVG and JSON) and --screenshot fail now, not after a
+ * ten-minute contest: an empty name, a folder, a path that cannot be written. */
 static int probe_outputs(const run_opts_t *o)
 {
-    const char *outs[2][2] = { { "--report", o->report }, { "--screenshot", o->shot } };
-    for (int i = 0; i < 2; i++) {
-        char perr[600];
-        outfile_t probe;
-        if (!outs[i][1]) continue;
-        if (outfile_open(&probe, outs[i][1], perr, sizeof perr) != 0) {
-            fprintf(stderr, "mmsim: %s: %s\n", outs[i][0], perr);
+    char paths[4][4096], perr[600];
+    const char *flag[4] = { "--report", "--report", "--report", "--screenshot" };
+    int n = 0;
+    if (o->report) {
+        snprintf(paths[n++], sizeof paths[0], "%s", o->report);
+        report_sibling(o->report, ".svg", paths[n++], sizeof paths[0]);
+        report_sibling(o->report, ".json", paths[n++], sizeof paths[0]);
+    }
+    if (o->shot) {
+        flag[n] = "--screenshot";
+        snprintf(paths[n++], sizeof paths[0], "%s", o->shot);
+    }
+    for (int i = 0; i < n; i++)
+        if (outfile_probe(paths[i], perr, sizeof perr) != 0) {
+            fprintf(stderr, "mmsim: %s: %s\n", flag[i], perr);
             return RUN_BAD_INPUT;
         }
-        outfile_abort(&probe);
-    }
     return 0;
 }
 
-int main(int argc, char **argv)
+static int run(int argc, char **argv)
 {
     mmsim_opts_t m = { .run = { /* the mouse's own firmware by default, 3 speed runs after the search */
         .seed = 1, .runs = 3, .centre_post = -1, .scripted = 0, .jobs = 1,
@@ -269,4 +279,11 @@ int main(int argc, char **argv)
     if (j && m.run.json && run_json_line(j) != 0) rc = RUN_EXTERNAL;
     json_decref(j);
     return rc;
+}
+
+int main(int argc, char **argv)
+{
+    io_stdout_open();
+    int rc = run(argc, argv);
+    return io_stdout_close("mmsim") != 0 ? RUN_EXTERNAL : rc;
 }

@@ -8,6 +8,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "io/escape.h"
 #include "serial.h"
 
 #define BYTE_COST 10000000ull /* one 8N1 byte = 10 bits = 10e6 bit-us */
@@ -208,7 +209,11 @@ static void handle(link_t *l, const wire_msg_t *m)
         break;
     case WIRE_LOG:
         l->st.logs++;
-        if (l->report) fprintf(l->report, "mcu: %s\n", m->u.log.text);
+        if (l->report) { /* the MCU's text cannot forge or hide a line of ours */
+            char text[IO_ESCAPE_MAX(WIRE_LOG_MAX)];
+            io_escape(text, sizeof text, m->u.log.text, m->u.log.len);
+            fprintf(l->report, "mcu: %s\n", text);
+        }
         break;
     default: break;
     }

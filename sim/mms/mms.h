@@ -4,8 +4,10 @@
  * the wall queries and the cell boundaries as mms's Window.cpp at 9ec759a)
  * on the simulated robot.
  *
- * The algorithm runs as a child process (/bin/sh -c COMMAND, in its own
- * process group) with its stdin and stdout on pipes; its stderr is ours.
+ * The algorithm runs as /bin/sh -c COMMAND in its own process group, under
+ * a guardian process (guard.h), with its stdin, stdout and stderr on pipes;
+ * its stderr comes out on ours a line at a time as "algo: LINE", control
+ * bytes escaped (sim/io/escape.h), as does the --verbose trace.
  * Each line it prints is one command. Queries are answered at once from the
  * firmware's map (walls it sensed itself) or, with ideal walls, from the
  * maze file; moves are handed to the firmware's command mode (mouse.h
@@ -16,7 +18,8 @@
  * The run ends when the algorithm exits, fails (non-zero exit, signal), is
  * silent for longer than the per-command timeout, prints a line longer than
  * MMS_LINE_MAX or MMS_FLOOD_LIMIT commands without a move, or the robot is
- * stuck; the child is then killed (SIGKILL to its group) and reaped. */
+ * stuck; then everything the algorithm started is killed (SIGKILL) and
+ * reaped, also what it started in a new session or left orphaned. */
 #ifndef MMS_H
 #define MMS_H
 
@@ -26,6 +29,7 @@
 #include <sys/types.h>
 
 #include "maze.h"
+#include "guard.h"
 
 struct sim_s;
 
@@ -77,11 +81,12 @@ typedef struct {
 typedef struct mms_s {
     mms_opts_t o;
     const maze_t *truth;
-    pid_t pid;             /* the shell; 0 when reaped */
-    pid_t pgid;            /* its process group (= pid), killed whole by mms_stop; 0 after */
-    int exited;            /* the shell has exited: status below, not reaped yet (the
-                            * zombie keeps the group id ours until the group is killed) */
+    guard_t guard;         /* the algorithm's process tree (guard.h) */
+    int exited;            /* the shell has exited: status below */
     int to_child, from_child;
+    int err_fd;            /* the algorithm's stderr (read end), -1 none */
+    char errbuf[MMS_LINE_MAX]; /* its stderr line so far */
+    size_t errlen;
     char buf[MMS_LINE_MAX + 1];
     size_t len;
     int pending;           /* a move is under way (MMS_MOVE_*) */
@@ -112,9 +117,10 @@ int mms_start(mms_t *m, const mms_opts_t *o, const maze_t *truth, char *err, siz
  * once, fw_tick, fw_loop, call again) or the run is over (MMS_END: m->reason,
  * m->message). s is the running simulation (struct sim_s). */
 int mms_service(mms_t *m, struct sim_s *s);
-/* End the algorithm: SIGKILL to its whole process group (whatever is left
- * of it, also background processes of a shell that has exited), then reap
- * the shell. */
+/* End the algorithm: its guardian kills (SIGKILL) and reaps every process
+ * the algorithm started (its group, and whatever left it: background
+ * processes of a shell that has exited, new sessions, orphans); the rest of
+ * its stderr is printed. */
 void mms_stop(mms_t *m);
 /* Execute one command line; the answer (without newline) into resp, "" for
  * none. Returns 1 if a move was started (the answer comes later). Exposed
