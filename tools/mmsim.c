@@ -37,9 +37,10 @@ static void usage(FILE *out)
           "             [--gui [--speed 1..64]] [--screenshot FILE.png [--at SECONDS]]\n"
           "             [--camera 1|2|3] [--size WxH]   (viewer)\n"
           "       mmsim --maze FILE --serial DEV|--port DEV|--pty [--baud N] [--protocol framed|compat]\n"
-          "             [--silence-ms N]   (hardware in the loop: an MCU drives over a serial link,\n"
-          "             in real time; --pty creates a pseudo-terminal and prints its path; docs/PROTOCOL.md)\n"
-          "       mmsim --maze FILE --avr ELF [--mcu NAME] [--f-cpu HZ] [--baud N] [--protocol P]\n"
+          "             [--silence-ms 0..60000]   (hardware in the loop: an MCU drives over a serial link,\n"
+          "             in real time; --pty creates a pseudo-terminal and prints its path; docs/PROTOCOL.md;\n"
+          "             motors off after N ms without a message: framed 100 by default, compat never; 0 never)\n"
+          "       mmsim --maze FILE --avr ELF [--mcu NAME] [--f-cpu HZ] [--baud N] [--protocol P] [--silence-ms N]\n"
           "             (processor in the loop: the AVR image runs in simavr, in lockstep)\n"
           "       mmsim --maze FILE --mms COMMAND [--mms-ideal-walls] [--mms-timeout-ms N] [--mms-reset-at S]\n"
           "             (an mms algorithm drives the robot through the mms text API, docs/MMS.md)\n"
@@ -135,7 +136,7 @@ static int f_protocol(const char *prog, void *o, const char *arg)
 static int f_silence(const char *prog, void *o, const char *arg)
 {
     double v;
-    if (cli_number(prog, "--silence-ms", arg, 1, 60000, &v)) return CLI_BAD_INPUT;
+    if (cli_number(prog, "--silence-ms", arg, 0, 60000, &v)) return CLI_BAD_INPUT; /* 0 = no watchdog */
     run_of(o)->link.silence_s = v / 1000.0;
     return 0;
 }
@@ -245,7 +246,7 @@ int main(int argc, char **argv)
     mmsim_opts_t m = { .run = { /* the mouse's own firmware by default, 3 speed runs after the search */
         .seed = 1, .runs = 3, .centre_post = -1, .scripted = 0, .jobs = 1,
         .view = { .width = 1024, .height = 720, .speed = 1, .camera = 1, .port = "", .baud = 115200 },
-        .link = { .protocol = LINK_FRAMED },
+        .link = { .protocol = LINK_FRAMED, .silence_s = -1 }, /* silence: the protocol's default */
         .mms = { .timeout_ms = 5000, .reset_at_s = -1 },
     } };
     int seen[sizeof flags / sizeof flags[0]] = { 0 }, first;
