@@ -42,7 +42,7 @@ static void usage(FILE *out)
           "             motors off after N ms without a message: framed 100 by default, compat never; 0 never)\n"
           "       mmsim --maze FILE --avr ELF [--mcu NAME] [--f-cpu HZ] [--baud N] [--protocol P] [--silence-ms N]\n"
           "             (processor in the loop: the AVR image runs in simavr, in lockstep)\n"
-          "       mmsim --maze FILE --mms COMMAND [--mms-ideal-walls] [--mms-timeout-ms N] [--mms-reset-at S]\n"
+          "       mmsim --maze FILE --mms COMMAND [--mms-ideal-walls] [--mms-timeout-ms N] [--mms-reset-at S|idle]\n"
           "             (an mms algorithm drives the robot through the mms text API, docs/MMS.md)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
           "       mmsim --print-config [--config FILE]\n"
@@ -156,6 +156,21 @@ static int f_mms(const char *prog, void *o, const char *arg)
     return 0;
 }
 
+/* --mms-reset-at S (sim time, s) or idle (each time the algorithm waits for Reset) */
+static int f_mms_reset_at(const char *prog, void *o, const char *arg)
+{
+    if (!strcmp(arg, "idle")) {
+        run_of(o)->mms.reset_on_idle = 1;
+        return 0;
+    }
+    char *end;
+    double v = strtod(arg, &end);
+    if (!*arg || *end || !(v >= 0 && v <= 86400))
+        return bad("--mms-reset-at: expected seconds of simulation time from 0 to 86400, or idle, got '%s'", arg);
+    run_of(o)->mms.reset_at_s = v;
+    return 0;
+}
+
 static const cli_opt_t flags[] = {
     { .name = "maze", .kind = CLI_STR, .off = offsetof(mmsim_opts_t, maze) },
     { .name = "batch", .kind = CLI_STR, .off = offsetof(mmsim_opts_t, batch) },
@@ -194,7 +209,7 @@ static const cli_opt_t flags[] = {
     { .name = "mms", .kind = CLI_FN, .fn = f_mms, .has_arg = 1 },
     { .name = "mms-ideal-walls", .kind = CLI_SET, .off = RUN(mms.ideal_walls) },
     { .name = "mms-timeout-ms", .kind = CLI_INT, .off = RUN(mms.timeout_ms), .lo = 1, .hi = 3600000 },
-    { .name = "mms-reset-at", .kind = CLI_NUM, .off = RUN(mms.reset_at_s), .lo = 0, .hi = 86400 },
+    { .name = "mms-reset-at", .kind = CLI_FN, .fn = f_mms_reset_at, .has_arg = 1 },
     { NULL },
 };
 
@@ -211,6 +226,7 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (!o->avr_elf && (o->avr_mcu || o->avr_f_cpu)) return bad("%s", "--mcu and --f-cpu need --avr ELF");
     if (!o->mms.command && mms_flags) return bad("%s", "--mms-ideal-walls, --mms-timeout-ms and --mms-reset-at need --mms COMMAND");
     if (o->mms.command && o->verbose) o->mms.trace = stderr; /* --verbose: the mms dialogue too */
+    if (o->mms.command && o->gui) o->mms.idle_wait = 1; /* an idle algorithm waits for the viewer's Reset button */
     if (o->mms.command && !cli_seen(flags, seen, "driver")) o->scripted = 0; /* the firmware's motion layer runs the moves */
     if (o->mms.command && (o->serial || o->scripted || m->batch))
         return bad("%s", "--mms drives the firmware of one run: not with --serial/--pty/--avr, --driver scripted or --batch");
