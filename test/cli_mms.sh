@@ -57,6 +57,35 @@ print(a['reached_goal'] and all(a[k] == b[k] for k in keys) and a['mms']['stats'
   [ "$same" = True ] && ok "$m ($*): ideal walls and sensed walls give the same run" || bad "$m ($*) ideal vs sensed: $(cat "$T/sensed") $(cat "$T/ideal")"
 done
 
+# algorithms that wait for Reset (issue 15): after the goal resetwait.py polls
+# wasReset until it is true, then ackReset and a second run. Simulation time
+# stands still while an algorithm thinks, so a reset time was never reached
+# (the run ended after 10^6 commands, mms_flood). Now an algorithm that asks
+# 10 times without a move idles: --mms-reset-at S lets the contest clock run
+# to S (the robot at rest), --mms-reset-at idle presses Reset at once; with
+# neither the run ends (mms_idle, exit 1)
+want_rc 0 "waits for Reset, --mms-reset-at 30" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/resetwait.py 2" --mms-reset-at 30 --json
+[ "$(py "(d['exit_reason'], len(d['laps']), d['laps'][0]['end_s'] < 5, 30 <= d['laps'][1]['start_s'] < 31, d['mms']['resets'], d['collisions'])")" = "('mms_exited', 2, True, True, 1, 0)" ] \
+  && ok "the clock ran to the reset time at 30 s, then a second run" || bad "reset at 30: $(cat "$T/out" "$T/err")"
+cp "$T/out" "$T/r30"
+want_rc 0 "waits for Reset, --mms-reset-at idle" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/resetwait.py 3" --mms-reset-at idle --json
+[ "$(py "(d['exit_reason'], len(d['laps']), d['laps'][2]['start_s'] < 15, d['mms']['resets'], d['collisions'])")" = "('mms_exited', 3, True, 2, 0)" ] \
+  && ok "Reset pressed each time the algorithm idles: three runs" || bad "reset on idle: $(cat "$T/out" "$T/err")"
+cp "$T/out" "$T/ridle"
+"$S" --maze mazes/gen-5x5-s1.txt --mms "$A/resetwait.py 3" --mms-reset-at idle --json >"$T/ridle2" 2>/dev/null
+[ "$(strip "$T/ridle")" = "$(strip "$T/ridle2")" ] && ok "reset on idle deterministic" || bad "reset on idle not deterministic"
+want_rc 1 "waits for a Reset that never comes" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/resetwait.py 1 forever" --json
+[ "$(py "(d['exit_reason'], d['reached_goal'], d['mms']['commands'] < 100)")" = "('mms_idle', True, True)" ] \
+  && grep -q "^mmsim: mms: the algorithm '$A/resetwait.py 1 forever' waits for Reset (wasReset 10 times without a move) and none is coming" "$T/err" \
+  && ok "no Reset coming: mms_idle, exit 1, one line" || bad "idle for ever: $(cat "$T/out" "$T/err")"
+want_rc 0 "reset time after the contest's end" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/resetwait.py 1 forever" --mms-reset-at 15 --time-limit 10 --json
+[ "$(py "(d['exit_reason'], len(d['laps']), d['sim_time_s'] < 11)")" = "('time_limit', 1, True)" ] \
+  && ok "the clock runs to the contest's end: time_limit" || bad "reset after the end: $(cat "$T/out")"
+want_rc 2 "--mms-reset-at soon" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/resetwait.py" --mms-reset-at soon
+grep -q "^mmsim: --mms-reset-at: expected seconds of simulation time from 0 to 86400, or idle, got 'soon'" "$T/err" && [ "$(wc -l <"$T/err")" = 1 ] \
+  && ok "--mms-reset-at error line" || bad "--mms-reset-at error: $(cat "$T/err")"
+want_rc 2 "--mms-reset-at -1" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/resetwait.py" --mms-reset-at -1
+
 # protocol conformance: every command, valid and invalid (test/mms/conform.py)
 want_rc 0 "conformance client" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/conform.py" --mms-reset-at 0.1 --json
 grep -q '^algo: conform: [0-9]* checks ok$' "$T/err" && ok "conformance: $(grep -o '[0-9]* checks' "$T/err")" || bad "conformance: $(cat "$T/err")"

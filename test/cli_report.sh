@@ -30,6 +30,12 @@ rc=$?; [ $rc -eq 0 ] && ok "firmware run with report" || { bad "firmware run: ex
 [ -s "$T/fw" ] && [ -s "$T/fw.svg" ] && [ -s "$T/fw.json" ] && ok "name without .png: siblings appended" || bad "files: $(ls "$T")"
 learned=$($P "$T/fw" near:202020:0)
 [ "${learned:-0}" -gt 1000 ] && ok "learned walls drawn" || bad "learned wall pixels: $learned"
+# the final path is drawn for runs that have one: the firmware (best path on
+# its map), the scripted driver (it drives the true best path); an MCU run
+# has none (test/cli_pil.sh)
+got=$(python3 -c "import json,sys; print(*(json.load(open(f))['final_path_cells'] for f in sys.argv[1:]))" "$T/run.json" "$T/fw.json" 2>&1)
+[ "$got" = "5 5" ] && [ "$($P "$T/fw" near:d9b8f0:0)" -gt 500 ] && [ "$($P "$T/run.png" near:d9b8f0:0)" -gt 500 ] \
+  && ok "final path drawn for the firmware and the scripted driver" || bad "final path: $got"
 
 # recording changes nothing in the run
 "$S" --maze mazes/gen-5x5-s1.txt --driver firmware --json >"$T/a" 2>/dev/null

@@ -39,11 +39,12 @@ static void usage(FILE *out)
           "             [--gui [--speed 1..64]] [--screenshot FILE.png [--at SECONDS]]\n"
           "             [--camera 1|2|3] [--size WxH]   (viewer)\n"
           "       mmsim --maze FILE --serial DEV|--port DEV|--pty [--baud N] [--protocol framed|compat]\n"
-          "             [--silence-ms N]   (hardware in the loop: an MCU drives over a serial link,\n"
-          "             in real time; --pty creates a pseudo-terminal and prints its path; docs/PROTOCOL.md)\n"
-          "       mmsim --maze FILE --avr ELF [--mcu NAME] [--f-cpu HZ] [--baud N] [--protocol P]\n"
+          "             [--silence-ms 0..60000]   (hardware in the loop: an MCU drives over a serial link,\n"
+          "             in real time; --pty creates a pseudo-terminal and prints its path; docs/PROTOCOL.md;\n"
+          "             motors off after N ms without a message: framed 100 by default, compat never; 0 never)\n"
+          "       mmsim --maze FILE --avr ELF [--mcu NAME] [--f-cpu HZ] [--baud N] [--protocol P] [--silence-ms N]\n"
           "             (processor in the loop: the AVR image runs in simavr, in lockstep)\n"
-          "       mmsim --maze FILE --mms COMMAND [--mms-ideal-walls] [--mms-timeout-ms N] [--mms-reset-at S]\n"
+          "       mmsim --maze FILE --mms COMMAND [--mms-ideal-walls] [--mms-timeout-ms N] [--mms-reset-at S|idle]\n"
           "             (an mms algorithm drives the robot through the mms text API, docs/MMS.md)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
           "       mmsim --print-config [--config FILE]\n"
@@ -137,7 +138,7 @@ static int f_protocol(const char *prog, void *o, const char *arg)
 static int f_silence(const char *prog, void *o, const char *arg)
 {
     double v;
-    if (cli_number(prog, "--silence-ms", arg, 1, 60000, &v)) return CLI_BAD_INPUT;
+    if (cli_number(prog, "--silence-ms", arg, 0, 60000, &v)) return CLI_BAD_INPUT; /* 0 = no watchdog */
     run_of(o)->link.silence_s = v / 1000.0;
     return 0;
 }
@@ -154,6 +155,21 @@ static int f_mms(const char *prog, void *o, const char *arg)
 {
     if (!*arg) return bad("%s", "--mms: expected a command, e.g. --mms 'python3 main.py'");
     run_of(o)->mms.command = arg;
+    return 0;
+}
+
+/* --mms-reset-at S (sim time, s) or idle (each time the algorithm waits for Reset) */
+static int f_mms_reset_at(const char *prog, void *o, const char *arg)
+{
+    if (!strcmp(arg, "idle")) {
+        run_of(o)->mms.reset_on_idle = 1;
+        return 0;
+    }
+    char *end;
+    double v = strtod(arg, &end);
+    if (!*arg || *end || !(v >= 0 && v <= 86400))
+        return bad("--mms-reset-at: expected seconds of simulation time from 0 to 86400, or idle, got '%s'", arg);
+    run_of(o)->mms.reset_at_s = v;
     return 0;
 }
 
@@ -195,7 +211,7 @@ static const cli_opt_t flags[] = {
     { .name = "mms", .kind = CLI_FN, .fn = f_mms, .has_arg = 1 },
     { .name = "mms-ideal-walls", .kind = CLI_SET, .off = RUN(mms.ideal_walls) },
     { .name = "mms-timeout-ms", .kind = CLI_INT, .off = RUN(mms.timeout_ms), .lo = 1, .hi = 3600000 },
-    { .name = "mms-reset-at", .kind = CLI_NUM, .off = RUN(mms.reset_at_s), .lo = 0, .hi = 86400 },
+    { .name = "mms-reset-at", .kind = CLI_FN, .fn = f_mms_reset_at, .has_arg = 1 },
     { NULL },
 };
 
@@ -212,6 +228,7 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (!o->avr_elf && (o->avr_mcu || o->avr_f_cpu)) return bad("%s", "--mcu and --f-cpu need --avr ELF");
     if (!o->mms.command && mms_flags) return bad("%s", "--mms-ideal-walls, --mms-timeout-ms and --mms-reset-at need --mms COMMAND");
     if (o->mms.command && o->verbose) o->mms.trace = stderr; /* --verbose: the mms dialogue too */
+    if (o->mms.command && o->gui) o->mms.idle_wait = 1; /* an idle algorithm waits for the viewer's Reset button */
     if (o->mms.command && !cli_seen(flags, seen, "driver")) o->scripted = 0; /* the firmware's motion layer runs the moves */
     if (o->mms.command && (o->serial || o->scripted || m->batch))
         return bad("%s", "--mms drives the firmware of one run: not with --serial/--pty/--avr, --driver scripted or --batch");
@@ -255,7 +272,7 @@ static int run(int argc, char **argv)
     mmsim_opts_t m = { .run = { /* the mouse's own firmware by default, 3 speed runs after the search */
         .seed = 1, .runs = 3, .centre_post = -1, .scripted = 0, .jobs = 1,
         .view = { .width = 1024, .height = 720, .speed = 1, .camera = 1, .port = "", .baud = 115200 },
-        .link = { .protocol = LINK_FRAMED },
+        .link = { .protocol = LINK_FRAMED, .silence_s = -1 }, /* silence: the protocol's default */
         .mms = { .timeout_ms = 5000, .reset_at_s = -1 },
     } };
     int seen[sizeof flags / sizeof flags[0]] = { 0 }, first;

@@ -20,7 +20,8 @@
 #include "world/sim.h"
 #include "world/world.h"
 
-enum { MOVE_NONE = 0, MOVE_SENSE, MOVE_FORWARD, MOVE_TURN, MOVE_RESET };
+/* what the simulation steps for; MOVE_WAIT: an idle algorithm's wasReset, answered when Reset is pressed */
+enum { MOVE_NONE = 0, MOVE_SENSE, MOVE_FORWARD, MOVE_TURN, MOVE_RESET, MOVE_WAIT };
 
 /* ---- stats (mms Stats.cpp semantics) ---- */
 
@@ -125,6 +126,29 @@ void mms_init(mms_t *m, const mms_opts_t *o, const maze_t *truth)
     m->exit_code = -1;
     m->reason = "running";
     mms_stats_init(&m->stats);
+}
+
+/* wasReset: true once Reset was pressed, until ackReset. An algorithm that
+ * asks MMS_IDLE_POLLS times without a move idles (it waits for Reset): then
+ * Reset is pressed now (reset_on_idle), or the answer waits while the clock
+ * runs (MOVE_WAIT: to the reset time, or the viewer's button), or nobody
+ * will press it and the run ends (m->idle). Returns 1 when the answer waits. */
+static int answer_was_reset(mms_t *m, struct sim_s *s, char *resp, size_t len)
+{
+    if (!m->was_reset && ++m->idle_polls >= MMS_IDLE_POLLS) {
+        if (m->o.reset_on_idle) {
+            m->was_reset = 1;
+        } else if (s && (m->o.reset_at_s >= 0 || m->o.idle_wait)) {
+            m->pending = MOVE_WAIT;
+            return 1;
+        } else if (s) {
+            m->idle = 1;
+            resp[0] = '\0';
+            return 0;
+        }
+    }
+    snprintf(resp, len, "%s", m->was_reset ? "true" : "false");
+    return 0;
 }
 
 /* Qt's QString::toInt as mms uses it: the whole token a base-10 integer,
@@ -397,9 +421,10 @@ int mms_execute(mms_t *m, struct sim_s *s, const char *line_in, char *resp, size
     } else if (!strcmp(f, "turnRight45") || !strcmp(f, "turnLeft45")) {
         snprintf(resp, len, "crash"); /* no diagonal moves in the motion layer */
     } else if (!strcmp(f, "wasReset")) {
-        snprintf(resp, len, "%s", m->was_reset ? "true" : "false");
+        return answer_was_reset(m, s, resp, len);
     } else if (!strcmp(f, "ackReset")) {
         m->was_reset = 0;
+        m->idle_polls = 0;
         m->resets++;
         mms_stats_reset_penalty(&m->stats);
         mms_stats_end_unfinished(&m->stats);
@@ -627,6 +652,17 @@ int mms_service(mms_t *m, struct sim_s *s)
     char line[MMS_LINE_MAX + 1], resp[64];
     forward_stderr(m);
     for (;;) {
+        if (m->pending == MOVE_WAIT) { /* an idle algorithm: the clock runs, the robot at rest, until Reset */
+            if (m->o.reset_at_s >= 0 && sim_time_s(s) >= m->o.reset_at_s) {
+                m->was_reset = 1; /* the Reset button, pressed once */
+                m->o.reset_at_s = -1;
+            }
+            if (!m->was_reset) return MMS_STEP; /* (or the viewer's Reset button sets was_reset) */
+            m->pending = MOVE_NONE;
+            trace(m, s, "<", "true");
+            if (send_line(m, "true") != 0) return child_gone(m);
+            continue;
+        }
         if (m->pending) {
             uint8_t st = mouse_cmd_status();
             if (st == MOUSE_CMD_BUSY && sim_time_s(s) - m->move_start_s > MMS_MOVE_MAX_S) {
@@ -648,12 +684,13 @@ int mms_service(mms_t *m, struct sim_s *s)
                 if (maze_is_goal(m->truth, c)) mms_stats_finish_run(&m->stats);
                 else if (c == m->truth->start) mms_stats_end_unfinished(&m->stats);
                 m->moves++;
-                m->since_move = 0;
+                m->since_move = m->idle_polls = 0;
             }
             if (was == MOVE_TURN) {
                 m->moves++;
-                m->since_move = 0;
+                m->since_move = m->idle_polls = 0;
             }
+            if (was == MOVE_RESET) m->since_move = 0; /* a reset is not a flood */
             if (st == MOUSE_CMD_CRASHED) {
                 if (was != MOVE_SENSE) send_line(m, "crash");
                 m->crashes++;
@@ -679,6 +716,11 @@ int mms_service(mms_t *m, struct sim_s *s)
         int move = mms_execute(m, s, line, resp, sizeof resp);
         trace(m, s, m->invalid != inv ? "> (ignored)" : ">", line);
         if (resp[0]) trace(m, s, "<", resp);
+        if (m->idle)
+            return end_run(m, "mms_idle",
+                           "mmsim: mms: the algorithm '%s' waits for Reset (wasReset %d times without a move) and "
+                           "none is coming: run ended (--mms-reset-at S or idle presses it)",
+                           m->o.command, MMS_IDLE_POLLS);
         if (move) { /* a move: answered when done */
             m->move_start_s = sim_time_s(s);
             continue;

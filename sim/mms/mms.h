@@ -15,11 +15,18 @@
  * Simulation time only advances while a move runs: the same algorithm gives
  * the same run however long it thinks. Invalid commands are ignored.
  *
+ * An algorithm that polls wasReset MMS_IDLE_POLLS times without a move
+ * idles, waiting for the Reset button (a common mms idiom after the goal):
+ * then Reset is pressed at once (reset_on_idle), or the contest clock runs,
+ * the robot at rest, until the reset time (reset_at_s) or until the viewer's
+ * Reset button (idle_wait); with none of these the run ends (mms_idle).
+ *
  * The run ends when the algorithm exits, fails (non-zero exit, signal), is
  * silent for longer than the per-command timeout, prints a line longer than
- * MMS_LINE_MAX or MMS_FLOOD_LIMIT commands without a move, or the robot is
- * stuck; then everything the algorithm started is killed (SIGKILL) and
- * reaped, also what it started in a new session or left orphaned. */
+ * MMS_LINE_MAX or MMS_FLOOD_LIMIT commands without a move, idles with no
+ * Reset coming, or the robot is stuck; then everything the algorithm
+ * started is killed (SIGKILL) and reaped, also what it started in a new
+ * session or left orphaned. */
 #ifndef MMS_H
 #define MMS_H
 
@@ -35,6 +42,8 @@ struct sim_s;
 
 #define MMS_LINE_MAX 1024         /* bytes per command line */
 #define MMS_FLOOD_LIMIT 1000000L  /* commands in a row without a move */
+#define MMS_IDLE_POLLS 10         /* wasReset answered false this often without a move = idle, waiting for
+                                     Reset (ours: an algorithm that checks it once per move never gets there) */
 #define MMS_TEXT_MAX 10           /* characters of cell text (mms) */
 #define MMS_MOVE_MAX_S 30.0       /* sim seconds a move may take: longer = stuck (a 32-cell straight takes ~12 s) */
 
@@ -74,8 +83,12 @@ typedef struct {
     const char *command;  /* the shell command */
     int ideal_walls;      /* answer wall queries from the maze file */
     int timeout_ms;       /* per command */
-    double reset_at_s;    /* wasReset turns true at this sim time; < 0 never */
+    double reset_at_s;    /* wasReset turns true at this sim time (an idle algorithm: the clock runs
+                             to it); < 0 never */
     FILE *trace;          /* every command and answer, with sim time (NULL: none) */
+    int reset_on_idle;    /* Reset pressed each time the algorithm idles (--mms-reset-at idle) */
+    int idle_wait;        /* an idle algorithm with no reset due: the clock runs until the Reset button
+                             (the viewer) or the contest's end, instead of ending the run */
 } mms_opts_t;
 
 typedef struct mms_s {
@@ -97,6 +110,8 @@ typedef struct mms_s {
     const char *reason;    /* exit_reason for the JSON */
     char message[300];     /* one line for stderr, "" = none */
     long commands, invalid, since_move, moves, crashes, resets;
+    long idle_polls;       /* wasReset answered false since the last move */
+    int idle;              /* it idles and no Reset is coming: the run ends (mms_idle) */
     mms_stats_t stats;
     /* what the algorithm drew: colour letter (0 = none), text, walls it set */
     char color[MAZE_MAX_CELLS];
@@ -123,8 +138,9 @@ int mms_service(mms_t *m, struct sim_s *s);
  * its stderr is printed. */
 void mms_stop(mms_t *m);
 /* Execute one command line; the answer (without newline) into resp, "" for
- * none. Returns 1 if a move was started (the answer comes later). Exposed
- * for the unit tests; needs the firmware in command mode only for moves. */
+ * none. Returns 1 if a move was started or an idle wasReset waits for the
+ * reset time (the answer comes later). Exposed for the unit tests; needs the
+ * firmware in command mode only for moves. */
 int mms_execute(mms_t *m, struct sim_s *s, const char *line, char *resp, size_t len);
 /* The JSON object of the run's mms part (a json_t *, jansson). */
 void *mms_json(const mms_t *m);

@@ -58,6 +58,10 @@ static const cfgkey_t keys[] = {
     K("tof", tof_y_m, 0.050, -0.15, 0.15, "m", "side sensors near the front edge"),
     K("tof", tof_front_y_m, 0.055, -0.15, 0.15, "m", "front sensor inside the front edge"),
     K("tof", tof_side_angle_deg, 45, 0, 90, "deg", "paper: corner sensors at 45 degrees"),
+    /* the u16 65535 of compat distances stands for this; a reading at or beyond it goes as a timeout
+     * (inih reads lines of at most 200 characters: the printed line must fit) */
+    K("link", compat_range_m, 1.0, 0.05, 10, "m",
+      "paper's Unity simulator: its TimeOfFlight asset has range 1.0 m, its Arduino library converts with 1.0 m"),
     K("sim", step_s, 0.001, 1e-5, 0.01, "s", "1 kHz physics"),
     K("sim", solver_iterations, 10, 1, 200, "1", "ODE quickstep iterations: at 5 the wheel hinges give and a straight run crabs 1.4 degrees (5 mm sideways in the first 200 mm); 10 tracks 20 and 40 within 0.3 mm"),
     K("sim", contact_erp, 0.4, 0.01, 1, "1", "ours: contact error reduction; stiff enough that the robot rests within 0.1 mm"),
