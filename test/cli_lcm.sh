@@ -124,6 +124,48 @@ want_rc 3 "unwritable log" "$S" --maze $M --lcm-log "$T/no/such/dir/x.lcmlog"
 one_line "unwritable log"; grep -q "cannot write the LCM log" "$T/err" || bad "unwritable log message: $(cat "$T/err")"
 want_rc 3 "unknown LCM provider" "$S" --maze $M --lcm=warp://x --lcm-log "$T/half.lcmlog"
 one_line "unknown LCM provider"; [ ! -e "$T/half.lcmlog" ] && ok "no log left after a failed open" || bad "log left behind"
+# the log is written to a temporary and renamed at the end: a write that fails (a file size
+# limit: EFBIG) or a kill leaves an existing good log as it was, byte for byte
+cp "$T/r.lcmlog" "$T/good.lcmlog"; cp "$T/r.lcmlog" "$T/keep.lcmlog"
+( ulimit -f 20; trap '' XFSZ; exec "$S" --maze $M --driver firmware --json --lcm-log "$T/keep.lcmlog" ) >"$T/out" 2>"$T/err"; rc=$?
+[ $rc -eq 3 ] && one_line "log write fails" && grep -q "^mmsim: $T/keep.lcmlog: writing the LCM log failed: File too large (the file there is unchanged)$" "$T/err" \
+  && ok "log write fails: exit 3, the reason" || bad "log write fails: exit $rc $(cat "$T/err")"
+cmp -s "$T/keep.lcmlog" "$T/good.lcmlog" && [ -z "$(ls "$T" | grep '\.tmp\.')" ] && ok "log write fails: the old log kept, no temporary left" || bad "log write fails: old log changed or temporary left: $(ls "$T")"
+"$S" --maze mazes/gen-16x16-s1.txt --driver firmware --realtime --lcm-log "$T/keep.lcmlog" >/dev/null 2>&1 & kp=$!
+sleep 1; kill -KILL $kp; wait $kp 2>/dev/null
+cmp -s "$T/keep.lcmlog" "$T/good.lcmlog" && ok "mmsim killed mid-run: the old log kept" || bad "mmsim killed mid-run: the old log changed"
+rm -f "$T"/keep.lcmlog.tmp.*
+want_rc 3 "log on /dev/full" "$S" --maze $M --driver scripted --runs 1 --lcm-log /dev/full
+one_line "log on /dev/full"; grep -q "^mmsim: /dev/full: writing the LCM log failed: No space left on device$" "$T/err" || bad "log on /dev/full: $(cat "$T/err")"
+mkdir "$T/dir.lcmlog"
+want_rc 3 "log path is a folder" "$S" --maze $M --driver scripted --runs 1 --lcm-log "$T/dir.lcmlog"
+one_line "log path is a folder"; [ ! -s "$T/out" ] && grep -q "^mmsim: $T/dir.lcmlog: cannot write the LCM log: Is a directory$" "$T/err" \
+  && ok "log path is a folder: refused before the run" || bad "log path is a folder: $(cat "$T/err" "$T/out")"
+# tcpq without its hub (nothing listens on loopback port 1): one error, exit 3, before the run
+timeout 60 "$S" --maze $M --driver scripted --runs 1 --lcm=tcpq://127.0.0.1:1 >"$T/out" 2>"$T/err"; rc=$?
+[ $rc -eq 3 ] && one_line "tcpq without a hub" && [ ! -s "$T/out" ] && grep -q "^mmsim: tcpq://127.0.0.1:1: cannot open the LCM URL: cannot connect to its hub: Connection refused$" "$T/err" \
+  && ok "tcpq without a hub: one error, exit 3" || bad "tcpq without a hub: exit $rc, $(wc -l <"$T/err") lines: $(head -3 "$T/err")"
+# a hub (a stand-in on loopback) that goes away after 5,000 bytes: liblcm's reconnection
+# attempts silenced, one error at the end, exit 3
+python3 - "$T/port" <<'EOF2' &
+import socket, struct, sys
+s = socket.socket(); s.bind(("127.0.0.1", 0)); s.listen(1); s.settimeout(60)
+open(sys.argv[1] + ".tmp", "w").write(str(s.getsockname()[1])); __import__("os").rename(sys.argv[1] + ".tmp", sys.argv[1])
+c, _ = s.accept(); c.settimeout(60)
+c.recv(8); c.sendall(struct.pack(">II", 0x287617fa, 0x0100))  # the hub's magic and version
+got = 0
+while got < 5000:
+    d = c.recv(65536)
+    if not d: break
+    got += len(d)
+c.close(); s.close()
+EOF2
+hp=$!
+for _ in $(seq 50); do [ -s "$T/port" ] && break; sleep 0.1; done
+timeout 60 "$S" --maze $M --driver scripted --runs 1 --realtime --lcm=tcpq://127.0.0.1:$(cat "$T/port") >"$T/out" 2>"$T/err"; rc=$?
+wait $hp
+[ $rc -eq 3 ] && one_line "tcpq hub lost" && grep -q "^mmsim: tcpq://127.0.0.1:[0-9]*: the connection to the LCM hub was lost at [0-9.]* s (.*): live telemetry stopped there$" "$T/err" \
+  && ok "tcpq hub lost mid-run: one error, exit 3" || bad "tcpq hub lost: exit $rc, $(wc -l <"$T/err") lines: $(head -3 "$T/err")"
 want_rc 2 "URL without a provider" "$S" --maze $M --lcm=nonsense
 one_line "URL without a provider"
 want_rc 2 "bad rate" "$S" --maze $M --lcm-log "$T/x.lcmlog" --lcm-rate 0
@@ -138,4 +180,7 @@ head -c $(( $(stat -c %s "$T/r.lcmlog") - 7 )) "$T/r.lcmlog" >"$T/cut.lcmlog"
 want_rc 2 "mmlog on a truncated log" "$L" "$T/cut.lcmlog"
 one_line "mmlog on a truncated log"; grep -q '^MM_POSE ' "$T/out" && ok "summary before the cut" || bad "summary before the cut"
 want_rc 2 "mmlog bad flag" "$L" --warp "$T/r.lcmlog"
+want_rc 2 "mmlog --dump of an unknown channel" "$L" --dump NOPE "$T/r.lcmlog"
+one_line "mmlog --dump NOPE"; [ ! -s "$T/out" ] && grep -q "^mmlog: --dump NOPE: not a channel mmlog decodes; the channels are MM_POSE, MM_MOTORS, .*, MM_MAZE$" "$T/err" \
+  && ok "unknown channel: the known ones listed" || bad "unknown channel: $(cat "$T/err")"
 [ $fails -eq 0 ]

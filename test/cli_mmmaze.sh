@@ -18,8 +18,10 @@ want_rc 0 "gen 5x9" "$M" gen --width 5 --height 9 --seed 1
 [ "$(wc -l <"$T/out")" -eq 19 ] && ok "5x9 has 19 lines" || bad "5x9 lines"
 
 # bad flags: exit 2, one line on stderr, nothing on stdout
-for args in "gen --size 3" "gen --size 33" "gen --size x" "gen --size 8 --seed -1" "gen" "frobnicate" "solve" "explore --bogus f"; do
-  want_rc 2 "bad args: $args" "$M" $args
+for args in "gen --size 3" "gen --size 33" "gen --size x" "gen --size 8 --seed -1" "gen" "frobnicate" "solve" "explore --bogus f" \
+  "gen --size 0x10" "gen --size +8" "gen --size ' 8'" "gen --width 8 --height 0x8" "gen --size 8 --seed ' 1'" "gen --size 8 --seed 0x1"; do
+  eval "set -- $args"
+  want_rc 2 "bad args: $args" "$M" "$@"
   [ "$(wc -l <"$T/err")" -eq 1 ] && ok "one error line: $args" || bad "one error line: $args: $(cat "$T/err")"
   [ -s "$T/out" ] && bad "stdout empty: $args" || ok "stdout empty: $args"
 done

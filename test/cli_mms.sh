@@ -57,9 +57,38 @@ print(a['reached_goal'] and all(a[k] == b[k] for k in keys) and a['mms']['stats'
   [ "$same" = True ] && ok "$m ($*): ideal walls and sensed walls give the same run" || bad "$m ($*) ideal vs sensed: $(cat "$T/sensed") $(cat "$T/ideal")"
 done
 
+# algorithms that wait for Reset (issue 15): after the goal resetwait.py polls
+# wasReset until it is true, then ackReset and a second run. Simulation time
+# stands still while an algorithm thinks, so a reset time was never reached
+# (the run ended after 10^6 commands, mms_flood). Now an algorithm that asks
+# 10 times without a move idles: --mms-reset-at S lets the contest clock run
+# to S (the robot at rest), --mms-reset-at idle presses Reset at once; with
+# neither the run ends (mms_idle, exit 1)
+want_rc 0 "waits for Reset, --mms-reset-at 30" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/resetwait.py 2" --mms-reset-at 30 --json
+[ "$(py "(d['exit_reason'], len(d['laps']), d['laps'][0]['end_s'] < 5, 30 <= d['laps'][1]['start_s'] < 31, d['mms']['resets'], d['collisions'])")" = "('mms_exited', 2, True, True, 1, 0)" ] \
+  && ok "the clock ran to the reset time at 30 s, then a second run" || bad "reset at 30: $(cat "$T/out" "$T/err")"
+cp "$T/out" "$T/r30"
+want_rc 0 "waits for Reset, --mms-reset-at idle" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/resetwait.py 3" --mms-reset-at idle --json
+[ "$(py "(d['exit_reason'], len(d['laps']), d['laps'][2]['start_s'] < 15, d['mms']['resets'], d['collisions'])")" = "('mms_exited', 3, True, 2, 0)" ] \
+  && ok "Reset pressed each time the algorithm idles: three runs" || bad "reset on idle: $(cat "$T/out" "$T/err")"
+cp "$T/out" "$T/ridle"
+"$S" --maze mazes/gen-5x5-s1.txt --mms "$A/resetwait.py 3" --mms-reset-at idle --json >"$T/ridle2" 2>/dev/null
+[ "$(strip "$T/ridle")" = "$(strip "$T/ridle2")" ] && ok "reset on idle deterministic" || bad "reset on idle not deterministic"
+want_rc 1 "waits for a Reset that never comes" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/resetwait.py 1 forever" --json
+[ "$(py "(d['exit_reason'], d['reached_goal'], d['mms']['commands'] < 100)")" = "('mms_idle', True, True)" ] \
+  && grep -q "^mmsim: mms: the algorithm '$A/resetwait.py 1 forever' waits for Reset (wasReset 10 times without a move) and none is coming" "$T/err" \
+  && ok "no Reset coming: mms_idle, exit 1, one line" || bad "idle for ever: $(cat "$T/out" "$T/err")"
+want_rc 0 "reset time after the contest's end" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/resetwait.py 1 forever" --mms-reset-at 15 --time-limit 10 --json
+[ "$(py "(d['exit_reason'], len(d['laps']), d['sim_time_s'] < 11)")" = "('time_limit', 1, True)" ] \
+  && ok "the clock runs to the contest's end: time_limit" || bad "reset after the end: $(cat "$T/out")"
+want_rc 2 "--mms-reset-at soon" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/resetwait.py" --mms-reset-at soon
+grep -q "^mmsim: --mms-reset-at: expected seconds of simulation time from 0 to 86400, or idle, got 'soon'" "$T/err" && [ "$(wc -l <"$T/err")" = 1 ] \
+  && ok "--mms-reset-at error line" || bad "--mms-reset-at error: $(cat "$T/err")"
+want_rc 2 "--mms-reset-at -1" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/resetwait.py" --mms-reset-at -1
+
 # protocol conformance: every command, valid and invalid (test/mms/conform.py)
 want_rc 0 "conformance client" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/conform.py" --mms-reset-at 0.1 --json
-grep -q '^conform: [0-9]* checks ok$' "$T/err" && ok "conformance: $(grep -o '[0-9]* checks' "$T/err")" || bad "conformance: $(cat "$T/err")"
+grep -q '^algo: conform: [0-9]* checks ok$' "$T/err" && ok "conformance: $(grep -o '[0-9]* checks' "$T/err")" || bad "conformance: $(cat "$T/err")"
 [ "$(py "(d['exit_reason'], d['reached_goal'], d['collisions'], d['mms']['resets'], d['mms']['stats']['best_run_distance'], d['mms']['colors'], sorted(d['mms']['texts'].items()))")" = "('mms_exited', True, 0, 1, 9.5, {'3,3': 'G'}, [('0,1', 'ok'), ('1,1', 'hello worl'), ('2,2', 'a?b?'), ('3,4', 'two  space'), ('4,4', 'abc')])" ] \
   && ok "conformance: goal by half steps (9.5 cells), colours and texts (10 printable characters, others '?')" || bad "conformance JSON: $(cat "$T/out")"
 
@@ -74,7 +103,7 @@ grep -q '>6</text>' "$T/r.svg" && ok "report: cell texts drawn" || bad "report: 
 for mv in "moveForward 2" "moveForwardHalf 3"; do
   want_rc 1 "wall sensed mid-move: $mv" "$S" --maze mazes/gen-5x5-s1.txt --json \
     --mms "$A/script.py 'wallFront=false' '$mv=crash' 'getStat total-distance=1' 'getStat total-effective-distance=1' 'wallFront=true' 'wallBack=false'"
-  grep -q '^script: 6 checks ok$' "$T/err" && [ "$(py "(d['mms']['crashes'], d['mms']['moves'], abs(d['final_pose']['y_m'] - 0.27) < 0.01, abs(d['final_pose']['x_m'] - 0.09) < 0.01)")" = "(1, 1, True, True)" ] \
+  grep -q '^algo: script: 6 checks ok$' "$T/err" && [ "$(py "(d['mms']['crashes'], d['mms']['moves'], abs(d['final_pose']['y_m'] - 0.27) < 0.01, abs(d['final_pose']['x_m'] - 0.09) < 0.01)")" = "(1, 1, True, True)" ] \
     && ok "wall sensed mid-move: $mv: crash at the centre of the last free cell" || bad "wall sensed mid-move: $mv: $(cat "$T/err" "$T/out")"
 done
 
@@ -82,7 +111,7 @@ done
 # move through the start's south wall, mms's run rules: back at the start ends the run)
 want_rc 1 "turned round on a boundary" "$S" --maze mazes/gen-5x5-s1.txt --json \
   --mms "$A/script.py 'moveForwardHalf=ack' 'turnLeft=ack' 'turnLeft=ack' 'wallFront=false' 'wallFront 2=true' 'wallLeft=true' 'wallFrontLeft=true' 'wallFrontRight=true' 'moveForwardHalf 3=crash' 'moveForwardHalf=ack' 'wallFront=true' 'turnLeft=ack' 'turnLeft=ack' 'moveForwardHalf 3=crash' 'moveForwardHalf 2=ack' 'wallFront=true' 'wallLeft=true' 'wallRight=false' 'getStat total-distance=2' 'getStat total-effective-distance=2' 'getStat current-run-distance=1'"
-grep -q '^script: 21 checks ok$' "$T/err" && [ "$(py "(d['collisions'], abs(d['final_pose']['y_m'] - 0.27) < 0.01)")" = "(0, True)" ] \
+grep -q '^algo: script: 21 checks ok$' "$T/err" && [ "$(py "(d['collisions'], abs(d['final_pose']['y_m'] - 0.27) < 0.01)")" = "(0, True)" ] \
   && ok "turned round on a boundary: answers, stats, at (0,1)" || bad "turned round on a boundary: $(cat "$T/err" "$T/out")"
 
 # a robot longer than the firmware thinks (150 mm, not 120): its turns sweep 89 mm and touch the walls
@@ -129,6 +158,37 @@ kill -TERM $mp; wait $mp; rc=$?
 [ $rc -eq 143 ] && ok "mmsim killed: dies of the signal" || bad "mmsim killed: exit $rc"
 sleep 0.2
 if pgrep -f "sleep 31.415[789]" >/dev/null; then bad "no processes left behind"; pgrep -fa "sleep 31.415"; else ok "no processes left behind"; fi
+
+# what the algorithm starts in a new session (setsid) or leaves orphaned goes too, checked by
+# pid: after the run's end, and after SIGKILL of mmsim (its guardian ends the tree)
+alive() { [ -r "/proc/$1/stat" ] && ! grep -q '^[0-9]* (.*) Z ' "/proc/$1/stat"; }
+pids_gone() { local desc=$1 f p left=""; shift
+  for f in "$@"; do
+    p=$(cat "$f" 2>/dev/null); [ -n "$p" ] || { bad "$desc: no pid in $f"; continue; }
+    for _ in $(seq 40); do alive "$p" || break; sleep 0.05; done
+    alive "$p" && { left="$left $p"; kill -KILL "$p" 2>/dev/null; }
+  done
+  [ -z "$left" ] && ok "$desc: gone" || bad "$desc: left running:$left"; }
+want_rc 1 "algorithm starts a process in a new session, then exits" "$S" --maze mazes/gen-5x5-s1.txt --json --mms-timeout-ms 2000 \
+  --mms "setsid sh -c 'echo \$\$ >$T/sid1; exec sleep 30.4201' </dev/null >/dev/null 2>&1 & (setsid sh -c 'echo \$\$ >$T/sid2; exec sleep 30.4202' </dev/null >/dev/null 2>&1 &); while [ ! -s $T/sid1 ] || [ ! -s $T/sid2 ]; do sleep 0.05; done; exit 0"
+pids_gone "new session and orphan after the run" "$T/sid1" "$T/sid2"
+rm -f "$T"/sid*
+"$S" --maze mazes/gen-5x5-s1.txt --mms-timeout-ms 60000 \
+  --mms "echo \$\$ >$T/sh; setsid sh -c 'echo \$\$ >$T/sid3; exec sleep 30.4203' </dev/null >/dev/null 2>&1 & sleep 30.4204 & echo \$! >$T/bg; wait" >"$T/out" 2>"$T/err" & mp=$!
+for _ in $(seq 100); do [ -s "$T/sid3" ] && [ -s "$T/bg" ] && break; sleep 0.05; done
+kill -KILL $mp; wait $mp 2>/dev/null
+pids_gone "shell, its child and a new session after SIGKILL of mmsim" "$T/sh" "$T/bg" "$T/sid3"
+
+# the algorithm's stderr: each line as "algo: LINE", control bytes escaped, so it cannot
+# forge or hide a line of ours; the same in the --verbose trace
+want_rc 1 "stderr of the algorithm" "$S" --maze mazes/gen-5x5-s1.txt \
+  --mms "printf 'one\\033[2J\\rmmsim: forged\\nsnow \\342\\230\\203 \\342\\200\\256rtl\\ntab\\there\\\\\\nno newline' >&2; exit 0"
+grep -q '^mmsim: forged' "$T/err" && bad "stderr: a forged line got through: $(cat -v "$T/err")" || ok "stderr: no forged line"
+[ "$(grep '^algo: ' "$T/err")" = "$(printf 'algo: one\\x1B[2J\\x0Dmmsim: forged\nalgo: snow \342\230\203 \\xE2\\x80\\xAErtl\nalgo: tab\\x09here\\\\\nalgo: no newline')" ] \
+  && ok "stderr: escaped lines, printable UTF-8 kept, a last line without a newline" || bad "stderr lines: $(cat -v "$T/err")"
+want_rc 1 "trace of an odd command" "$S" --maze mazes/gen-5x5-s1.txt --verbose --mms "printf 'mazeWidth\\033]0;x\\007\\n'; exit 0"
+grep -q '^mms  *[0-9.]* > (ignored) mazeWidth\\x1B\]0;x\\x07$' "$T/err" && ! grep -q "$(printf '\033')" "$T/err" \
+  && ok "trace: the algorithm's line escaped" || bad "trace: $(cat -v "$T/err")"
 
 # bad flags
 ONE_ERROR_LINE=1

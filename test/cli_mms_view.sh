@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # cli_mms_view.sh - the viewer in an mms run (under an Xvfb the test
-# starts): the floor shows the algorithm's cell colours. Skips if no X
-# server can be started.
+# starts): the floor shows the algorithm's cell colours; an algorithm that
+# waits for Reset after the goal waits with the clock running until the
+# Reset key (X, through XTEST). Skips if no X server can be started.
 set -u
 S=${MMSIM:-build/mmsim}
 T=$(mktemp -d)
-XPID=
-cleanup() { [ -n "$XPID" ] && kill "$XPID" 2>/dev/null; rm -rf "$T"; }
+XPID= SPID=
+cleanup() { [ -n "$SPID" ] && kill "$SPID" 2>/dev/null; [ -n "$XPID" ] && kill "$XPID" 2>/dev/null; rm -rf "$T"; }
 trap cleanup EXIT
 . "$(dirname "$0")/lib.sh"
 
@@ -27,4 +28,27 @@ done
 "${SIM[@]}" --maze mazes/gen-8x8-s1.txt --screenshot "$T/f.png" --at 4 --camera 1 --size 320x240 >"$T/out" 2>"$T/err" || bad "firmware screenshot"
 n=$(python3 test/pngcheck.py "$T/f.png" near:00ffff:40)
 [ "${n:-1}" -eq 0 ] && ok "no cell colours without mms" || bad "cyan without mms: $n"
+
+# an algorithm that waits for Reset (test/mms/resetwait.py: polls wasReset
+# after the goal): in --gui the contest clock runs while it waits, until the
+# user presses Reset (the X key); then it runs again and exits
+X=${XINPUT:-build/test/xinput}
+if [ -x "$X" ]; then
+  "${SIM[@]}" --maze mazes/gen-5x5-s1.txt --mms "python3 test/mms/resetwait.py 2" --mms-timeout-ms 60000 --gui --speed 8 --size 320x240 --json >"$T/r.json" 2>"$T/r.err" &
+  SPID=$!
+  for _ in $(seq 600); do grep -q "^resetwait: run 1 at the goal" "$T/r.err" && break; sleep 0.1; done
+  sleep 1 # waiting: the clock runs (x8)
+  "$X" key x || bad "XTEST key x failed"
+  for _ in $(seq 600); do grep -q "^resetwait: done" "$T/r.err" && break; sleep 0.1; done
+  sleep 0.5
+  "$X" key Escape
+  wait $SPID; SPID=
+  got=$(python3 -c "
+import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1]); l=d['laps']
+print(d['exit_reason'], len(l), d['mms']['resets'], len(l) == 2 and l[1]['start_s'] - l[0]['end_s'] > 2)" "$T/r.json" 2>&1)
+  [ "$got" = "mms_exited 2 1 True" ] && ok "waits for Reset in the viewer: the clock ran, X pressed it, a second run" \
+    || bad "Reset in the viewer: $got $(grep -v '^mms ' "$T/r.err" | head -5)"
+else
+  echo "SKIP cli_mms_view.sh Reset key: $X not built"
+fi
 [ $fails -eq 0 ]

@@ -61,6 +61,31 @@ printf 'o---o\n| x |\n' >"$T/b9/m5.txt"
 want_rc 2 "batch with a bad maze" "$S" --batch "$T/b9" --jobs 2 --runs 1
 [ "$(python3 -c "import json; print([(json.loads(l)['maze'][-6:], json.loads(l)['exit_reason'], json.loads(l).get('exit_code')) for l in open('$T/out')])")" = "[('m1.txt', 'done', None), ('m2.txt', 'done', None), ('m3.txt', 'done', None), ('m4.txt', 'done', None), ('m5.txt', 'no_result', 2), ('m6.txt', 'done', None), ('m7.txt', 'done', None), ('m8.txt', 'done', None), ('m9.txt', 'done', None)]" ] && ok "batch: one line per maze in order, the bad one too" || bad "batch with a bad maze: $(cat "$T/out")"
 grep -q "m5.txt:2:3: stray character 'x'" "$T/err" && ok "batch: the bad maze's error line" || bad "batch error line: $(cat "$T/err")"
+# SIGTERM to a batch: its running jobs end too (checked by pid), then it dies of the signal
+mkdir "$T/slow"; for i in 1 2 3; do cp mazes/gen-16x16-s1.txt "$T/slow/m$i.txt"; done
+"$S" --batch "$T/slow" --jobs 2 --realtime --driver scripted >"$T/out" 2>"$T/err" & bp=$!
+for _ in $(seq 100); do [ "$(pgrep -P $bp | wc -l)" -ge 2 ] && break; sleep 0.1; done
+kids=$(pgrep -P $bp | tr '\n' ' ')
+kill -TERM $bp
+timeout 10 bash -c "while kill -0 $bp 2>/dev/null; do sleep 0.05; done"; wait $bp; rc=$?
+sleep 0.2; left=""
+for k in $kids; do [ -d /proc/$k ] && left="$left $k"; done
+[ $rc -eq 143 ] && [ -n "$kids" ] && [ -z "$left" ] && ok "SIGTERM to a batch: its jobs ($kids) end, it dies of the signal" \
+  || { bad "SIGTERM to a batch: exit $rc, jobs '$kids', left running:$left"; kill -KILL $left 2>/dev/null; }
+
+# bad numbers and combinations: one error line, exit 2
+ONE_ERROR_LINE=1
+for a in "--runs 0" "--runs 65" "--runs 1.5" "--runs x" "--jobs 0" "--jobs 2.5" "--runs 0x10" "--runs ' 2'" "--runs +2" "--runs 1e1" "--time-limit inf" "--seed 0x10" "--lcm-rate ' 100'"; do
+  eval "want_rc 2 \"bad number: $a\" \"\$S\" --maze mazes/gen-5x5-s1.txt $a"
+done
+grep -q "^mmsim: --lcm-rate: expected a number from 1 to 1000, got ' 100'$" "$T/err" && ok "number error line" || bad "number error line: $(cat "$T/err")"
+for a in 4294967360x64 64x4294967360 0x10x64 " 64x64" "64x64 " 64x +64x64; do
+  want_rc 2 "bad --size '$a'" "$S" --maze mazes/gen-5x5-s1.txt --screenshot "$T/s.png" --size "$a"
+done
+want_rc 2 "--maze with --batch" "$S" --batch "$T/batch" --maze mazes/gen-5x5-s1.txt
+grep -q "^mmsim: --maze and --batch: one at a time" "$T/err" && ok "--maze with --batch: error line" || bad "--maze with --batch: $(cat "$T/err")"
+ONE_ERROR_LINE=0
+
 # the firmware in the loop: search, prove, speed runs on small mazes
 for m in gen-5x5-s1 gen-8x8-s1 gen-16x16-s1 gen-16x16-s2; do
   want_rc 0 "firmware contest $m" "$S" --maze mazes/$m.txt --driver firmware --json

@@ -30,6 +30,12 @@ rc=$?; [ $rc -eq 0 ] && ok "firmware run with report" || { bad "firmware run: ex
 [ -s "$T/fw" ] && [ -s "$T/fw.svg" ] && [ -s "$T/fw.json" ] && ok "name without .png: siblings appended" || bad "files: $(ls "$T")"
 learned=$($P "$T/fw" near:202020:0)
 [ "${learned:-0}" -gt 1000 ] && ok "learned walls drawn" || bad "learned wall pixels: $learned"
+# the final path is drawn for runs that have one: the firmware (best path on
+# its map), the scripted driver (it drives the true best path); an MCU run
+# has none (test/cli_pil.sh)
+got=$(python3 -c "import json,sys; print(*(json.load(open(f))['final_path_cells'] for f in sys.argv[1:]))" "$T/run.json" "$T/fw.json" 2>&1)
+[ "$got" = "5 5" ] && [ "$($P "$T/fw" near:d9b8f0:0)" -gt 500 ] && [ "$($P "$T/run.png" near:d9b8f0:0)" -gt 500 ] \
+  && ok "final path drawn for the firmware and the scripted driver" || bad "final path: $got"
 
 # recording changes nothing in the run
 "$S" --maze mazes/gen-5x5-s1.txt --driver firmware --json >"$T/a" 2>/dev/null
@@ -40,6 +46,20 @@ learned=$($P "$T/fw" near:202020:0)
 "$S" --maze mazes/gen-5x5-s1.txt --report "$T/no/such/dir/x.png" >"$T/out" 2>"$T/err"; rc=$?
 [ $rc -eq 2 ] && [ "$(wc -l <"$T/err")" -eq 1 ] && grep -q "^mmsim: --report: $T/no/such/dir/x.png: cannot write" "$T/err" \
   && ok "unwritable report path" || bad "unwritable report path: exit $rc $(cat "$T/err")"
+mkdir "$T/dir" "$T/sib.svg"
+for r in "" "$T/dir" "$T/dir/" "$T/sib.png"; do
+  "$S" --maze mazes/gen-5x5-s1.txt --driver scripted --runs 1 --report "$r" >"$T/out" 2>"$T/err"; rc=$?
+  [ $rc -eq 2 ] && [ "$(wc -l <"$T/err")" -eq 1 ] && [ ! -s "$T/out" ] && grep -q "^mmsim: --report: " "$T/err" \
+    && ok "--report '$r': exit 2 before the run" || bad "--report '$r': exit $rc $(cat "$T/err")"
+done
+[ ! -e "$T/sib.png" ] && [ ! -e "$T/sib.json" ] && [ -z "$(ls "$T" "$T/dir" | grep '\.tmp\.')" ] && ok "nothing written for a refused --report" || bad "files left: $(ls "$T" "$T/dir")"
+# all three files or none: the SVG (55 KB) fails under a 20 KB file size limit after the PNG
+# (8 KB) was written; the old report stays whole
+for e in png svg json; do echo "old $e" >"$T/old.$e"; done
+( ulimit -f 20; trap '' XFSZ; exec "$S" --maze mazes/gen-5x5-s1.txt --driver scripted --runs 1 --report "$T/old.png" ) >"$T/out" 2>"$T/err"; rc=$?
+[ $rc -eq 3 ] && [ "$(cat "$T/err")" = "$T/old.svg: cannot write: File too large" ] && ok "report write fails: exit 3, one line" || bad "report write fails: exit $rc $(cat "$T/err")"
+[ "$(cat "$T/old.png" "$T/old.svg" "$T/old.json")" = "$(printf 'old png\nold svg\nold json')" ] && [ -z "$(ls "$T" | grep '\.tmp\.')" ] \
+  && ok "report write fails: none of the three replaced, no temporaries" || bad "report write fails: $(ls -l "$T"/old.*)"
 "$S" --batch mazes --report "$T/b.png" >"$T/out" 2>"$T/err"; rc=$?
 [ $rc -eq 2 ] && [ ! -e "$T/b.png" ] && ok "--report with --batch refused" || bad "--report with --batch: exit $rc"
 

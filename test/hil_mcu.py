@@ -10,6 +10,13 @@ stops; at 20 % it sends one garbage chunk, at 40 % it goes quiet for 0.3 s,
 at 60 % it unplugs for 0.3 s (reconnects).
 Prints one line of what it saw; exit 0 if sensors and encoders arrived.
 
+usage: hil_mcu.py once PTY SECONDS
+A compat MCU like a sketch of the paper's library, which sends a motor
+command only when the value changes (issue 15): it asks for the sensors,
+averages the first 8 front readings at rest (decoded with the paper's 1.0 m
+scale), sends one motor command (300 on both sides) and then only reads.
+Prints what it saw; exit 0 if readings kept arriving.
+
 usage: hil_mcu.py framed LINK SECONDS --own SESSIONS
 A board that stays up while the simulator is stopped and started again
 (mmsim --serial LINK, run SESSIONS times): it owns the device (a pty whose
@@ -25,7 +32,9 @@ import os, select, struct, sys, time, tty
 
 mode, path, seconds = sys.argv[1], sys.argv[2], float(sys.argv[3])
 own = int(sys.argv[5]) if len(sys.argv) > 5 and sys.argv[4] == '--own' else 0
-RANGE_MM = 1200
+compat = mode in ('compat', 'once')
+RANGE_MM = 1200         # framed: our robot's ToF range, in HELLO (WIRE_TOF_RANGE_MM)
+COMPAT_RANGE_MM = 1000  # compat: 65535 stands for 1.0 m, as the paper's library (WIRE_COMPAT_RANGE_MM)
 
 def crc16(b):
     c = 0xFFFF
@@ -63,6 +72,7 @@ class Mcu:
         self.fd = None
         self.enc = [0, 0]; self.front = None; self.dists = 0; self.encs = 0
         self.hellos = 0; self.bad = 0; self.buf = bytearray(); self.t0 = time.monotonic()
+        self.fronts = []  # compat: every front reading, mm
     def open(self):
         self.fd = os.open(path, os.O_RDWR | os.O_NOCTTY)
         tty.setraw(self.fd)
@@ -82,7 +92,7 @@ class Mcu:
         except BlockingIOError:
             if not own: raise  # the owned device: a full buffer loses bytes, as a UART
     def motor(self, l, r):
-        if mode == 'compat':
+        if compat:
             self.send(bytes([5]) + struct.pack('<h', l) + bytes([6]) + struct.pack('<h', r))
         else:
             us = int((time.monotonic() - self.t0) * 1e6) & 0xFFFFFFFF
@@ -90,10 +100,10 @@ class Mcu:
     def hello(self):
         self.send(frame(1, struct.pack('<BBHIH', 1, 1, RANGE_MM, 35832, 1000)))
     def log(self, text):
-        if mode == 'compat': self.send(bytes([8]) + text.encode() + b'\0')
+        if compat: self.send(bytes([8]) + text.encode() + b'\0')
         else: self.send(frame(7, text.encode()))
     def sensors(self, on):
-        if mode == 'compat': self.send(bytes([7, 2 if on else 3]))
+        if compat: self.send(bytes([7, 2 if on else 3]))
         else: self.send(frame(5, bytes([1 if on else 0])))
     def poll(self, timeout):
         r, _, _ = select.select([self.fd], [], [], timeout)
@@ -103,7 +113,7 @@ class Mcu:
         except BlockingIOError:
             return
         self.buf += data
-        if mode == 'compat': self.parse_compat()
+        if compat: self.parse_compat()
         else: self.parse_framed()
     def parse_compat(self):
         b = self.buf
@@ -114,7 +124,9 @@ class Mcu:
                 self.enc[i - 3] += struct.unpack('<h', b[1:3])[0]; self.encs += 1
             else:
                 self.dists += 1
-                if i == 2: self.front = None if v == 65535 else v * RANGE_MM / 65535
+                if i == 2:
+                    self.front = None if v == 65535 else v * COMPAT_RANGE_MM / 65535
+                    if self.front is not None: self.fronts.append(self.front)
             del b[:3]
     def parse_framed(self):
         while 0 in self.buf:
@@ -167,6 +179,21 @@ if own:
     sys.exit(0 if sessions == own and len(hello_sessions) == own and len(enc_sessions) == own
              and m.bad == expect_bad else 1)
 m.open()
+if mode == 'once':
+    m.sensors(True)
+    end = time.monotonic() + seconds
+    while len(m.fronts) < 8 and time.monotonic() < end: m.poll(0.002)
+    at_rest = sum(m.fronts[:8]) / 8 if len(m.fronts) >= 8 else None
+    m.motor(300, 300)                               # the only command: the paper's Motor sends on change
+    encs0 = m.encs
+    try:
+        while time.monotonic() < end: m.poll(0.002)
+    except OSError:
+        pass                                        # the simulator ended
+    print("mcu: once front_at_rest %s front_last %s encoders %d enc %d %d bad %d" %
+          (None if at_rest is None else round(at_rest), None if m.front is None else round(m.front),
+           m.encs - encs0, m.enc[0], m.enc[1], m.bad))
+    sys.exit(0 if at_rest is not None and m.encs - encs0 > 500 and m.bad == 0 else 1)
 if mode == 'framed': m.hello()
 m.sensors(True)
 m.log('hello from the test MCU')

@@ -22,6 +22,7 @@
 
 static link_t lk;
 static int peer;
+static double pair_compat_range_m; /* open_pair's compat scale, m (0 = the default) */
 
 static void open_pair(int protocol, uint32_t baud, double silence_s)
 {
@@ -29,7 +30,7 @@ static void open_pair(int protocol, uint32_t baud, double silence_s)
     assert_int_equal(socketpair(AF_UNIX, SOCK_STREAM, 0, sv), 0);
     fcntl(sv[0], F_SETFL, O_NONBLOCK);
     fcntl(sv[1], F_SETFL, O_NONBLOCK);
-    link_opts_t o = { NULL, 0, baud, protocol, silence_s };
+    link_opts_t o = { NULL, 0, baud, protocol, silence_s, pair_compat_range_m };
     link_open_fd(&lk, sv[0], "socketpair", &o, 0.001, 1200, 35832, NULL);
     peer = sv[1];
 }
@@ -272,6 +273,48 @@ static void test_compat_manager_and_pacing(void **state)
     close_pair();
 }
 
+/* Silence (issue 15): compat holds the last motor command for ever by
+ * default (the paper's sketches send a command only when it changes; its
+ * Unity simulator has no watchdog); framed's default is 100 ms; 0 turns the
+ * watchdog off in either protocol; a positive value turns it on in compat. */
+static void test_silence_defaults_and_off(void **state)
+{
+    static const uint8_t enable[] = { 7, 2 }, motor[] = { 5, 0x2C, 0x01, 6, 0x2C, 0x01 }; /* 300, 300 */
+    uint8_t sink[4096];
+    int16_t mo[2];
+    open_pair(LINK_COMPAT, 115200, -1); /* the default */
+    assert_true(lk.o.silence_s == 0.0);
+    assert_int_equal(write(peer, enable, 2), 2);
+    assert_int_equal(write(peer, motor, 6), 6);
+    for (int s = 0; s < 60000; s++) { /* a minute of nothing but sensor readings */
+        step(s, mo);
+        drain(sink, sizeof sink);
+        if (s > 0 && (mo[0] != 300 || mo[1] != 300)) fail_msg("compat dropped the held command at step %d", s);
+    }
+    assert_int_equal(lk.st.silences, 0);
+    close_pair();
+    open_pair(LINK_COMPAT, 115200, 0.1); /* asked for: compat has a watchdog too */
+    assert_int_equal(write(peer, motor, 6), 6);
+    for (int s = 0; s < 200; s++) step(0, mo);
+    assert_int_equal(mo[0], 0);
+    assert_int_equal(lk.st.silences, 1);
+    close_pair();
+    for (int off = 0; off < 2; off++) { /* framed: default 100 ms; 0 = never */
+        wire_msg_t cmd = { .type = WIRE_MOTOR, .u.motor = { 0, 300, 300 } };
+        open_pair(LINK_FRAMED, 1000000, off ? 0.0 : -1);
+        assert_true(lk.o.silence_s == (off ? 0.0 : LINK_SILENCE_S));
+        send_hello();
+        send_msg(&cmd);
+        for (int s = 0; s < 5000; s++) {
+            step(0, mo);
+            drain(sink, sizeof sink);
+        }
+        assert_int_equal(mo[0], off ? 300 : 0);
+        assert_int_equal(lk.st.silences, off ? 0 : 1);
+        close_pair();
+    }
+}
+
 /* Faults on the wire MCU -> sim: motor frames hit by drops, bit flips and
  * garbage bursts; the link reads them at the baud and its decoder must count
  * exactly one error per corrupted chunk between delimiters, and apply every
@@ -330,47 +373,56 @@ static void test_faults_through_link(void **state)
 }
 
 /* Compat distances are scaled from the true metres, not from whole mm:
- * round(d / 1.2 m * 65535) exactly (one count = 18 um), a real reading at
- * or past the range 65534, a timeout 65535; the MCU's decoder gives both
- * the u16 and mm. */
+ * round(d / range * 65535) exactly (one count = 15 um at 1.0 m), with the
+ * range the paper's 1.0 m by default (issue 15: its library converts with
+ * 1.0 m; we once scaled by our 1.2 m and it read 1/1.2 of the truth) or the
+ * configured [link] compat_range_m; a reading at or beyond the range and a
+ * timeout go as 65535; the MCU's decoder gives both the u16 and mm. */
 static void test_compat_distance_from_metres(void **state)
 {
-    static const double d_m[] = { 0.123456, 0.0004, 0.05, 0.0907, 0.18, 0.6, 1.19999, 1.2, 1.5, -1 /* timeout */ };
+    static const double d_m[] = { 0.123456, 0.0004, 0.05, 0.0907, 0.18, 0.6, 0.99999, 1.0, 1.1, 1.19999, 1.2, 1.5,
+                                  -1 /* timeout */ };
+    static const double ranges[] = { 0 /* default: 1.0 m */, 1.2 };
     uint8_t buf[256];
     int16_t mo[2];
     wire_compat_rx_t rx;
     wire_msg_t m;
-    open_pair(LINK_COMPAT, 115200, 10.0);
-    static const uint8_t enable[] = { 7, 2 };
-    assert_int_equal(write(peer, enable, 2), 2);
-    step(0, mo);
-    drain(buf, sizeof buf);
-    wire_compat_rx_init(&rx, 1200);
-    for (size_t k = 0; k < sizeof d_m / sizeof d_m[0]; k++) {
-        link_io_t io;
-        memset(&io, 0, sizeof io);
-        io.tof_new[WIRE_SENSOR_FRONT] = 1;
-        io.tof_timeout[WIRE_SENSOR_FRONT] = d_m[k] < 0;
-        io.tof_m[WIRE_SENSOR_FRONT] = d_m[k] < 0 ? 1.2 : d_m[k];
-        io.tof_mm[WIRE_SENSOR_FRONT] = (uint16_t)lround(io.tof_m[WIRE_SENSOR_FRONT] * 1000.0);
-        link_step_io(&lk, &io, mo);
-        size_t n = drain(buf, sizeof buf);
-        long want = d_m[k] < 0 ? 65535 : lround(d_m[k] / 1.2 * 65535.0);
-        if (want > 65534 && d_m[k] >= 0) want = 65534;
-        int seen = 0;
-        for (size_t i = 0; i < n; i++)
-            if (wire_compat_decode_byte(&rx, buf[i], &m) && m.type == WIRE_DISTANCE) {
-                seen++;
-                assert_int_equal(m.u.distance.compat, want);
-                assert_int_equal(m.u.distance.timeout, d_m[k] < 0);
-                assert_int_equal(m.u.distance.mm, d_m[k] < 0 ? 1200 : lround(want * 1200.0 / 65535.0));
-            }
-        assert_int_equal(seen, 1);
+    for (size_t r = 0; r < 2; r++) {
+        double range = ranges[r] > 0 ? ranges[r] : 1.0;
+        long range_mm = lround(range * 1000.0);
+        pair_compat_range_m = ranges[r];
+        open_pair(LINK_COMPAT, 115200, 10.0);
+        pair_compat_range_m = 0;
+        static const uint8_t enable[] = { 7, 2 };
+        assert_int_equal(write(peer, enable, 2), 2);
+        step(0, mo);
+        drain(buf, sizeof buf);
+        wire_compat_rx_init(&rx, (uint16_t)range_mm);
+        for (size_t k = 0; k < sizeof d_m / sizeof d_m[0]; k++) {
+            link_io_t io;
+            memset(&io, 0, sizeof io);
+            io.tof_new[WIRE_SENSOR_FRONT] = 1;
+            io.tof_timeout[WIRE_SENSOR_FRONT] = d_m[k] < 0;
+            io.tof_m[WIRE_SENSOR_FRONT] = d_m[k] < 0 ? 1.2 : d_m[k];
+            io.tof_mm[WIRE_SENSOR_FRONT] = (uint16_t)lround(io.tof_m[WIRE_SENSOR_FRONT] * 1000.0);
+            link_step_io(&lk, &io, mo);
+            size_t n = drain(buf, sizeof buf);
+            int timeout = d_m[k] < 0 || d_m[k] >= range;
+            long want = timeout ? 65535 : lround(d_m[k] / range * 65535.0);
+            if (want > 65534 && !timeout) want = 65534;
+            int seen = 0;
+            for (size_t i = 0; i < n; i++)
+                if (wire_compat_decode_byte(&rx, buf[i], &m) && m.type == WIRE_DISTANCE) {
+                    seen++;
+                    assert_int_equal(m.u.distance.compat, want);
+                    assert_int_equal(m.u.distance.timeout, timeout);
+                    assert_int_equal(m.u.distance.mm, timeout ? range_mm : lround(want * range * 1000.0 / 65535.0));
+                }
+            assert_int_equal(seen, 1);
+        }
+        assert_int_equal(wire_stats_errors(&rx.stats), 0);
+        close_pair();
     }
-    /* 0.123456 m from whole mm was 6717 (123 mm), 25 counts short of 6742 */
-    assert_int_equal(lround(0.123456 / 1.2 * 65535.0), 6742);
-    assert_int_equal(wire_stats_errors(&rx.stats), 0);
-    close_pair();
 }
 
 /* the MCU's end of a --pty link: opens the slave, raw */
@@ -445,7 +497,7 @@ static size_t drain_quiet(int fd)
 static void test_compat_reconnect_keeps_sensors(void **state)
 {
     char err[300];
-    link_opts_t o = { NULL, 1, 115200, LINK_COMPAT, 10.0 };
+    link_opts_t o = { NULL, 1, 115200, LINK_COMPAT, 10.0, 0 };
     if (link_open(&lk, &o, 0.001, 1200, 35832, NULL, err, sizeof err) != 0) skip(); /* no pseudo-terminals here */
     step(0, pty_mo);
     assert_int_equal(lk.connected, 0); /* nobody has the terminal open */
@@ -486,6 +538,7 @@ int main(void)
         cmocka_unit_test(test_faults_through_link),
         cmocka_unit_test(test_compat_reconnect_keeps_sensors),
         cmocka_unit_test(test_compat_distance_from_metres),
+        cmocka_unit_test(test_silence_defaults_and_off),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -72,7 +72,7 @@ static void setup_maze(void)
         for (uint8_t d = 0; d < 4; d++) maze_set_wall(&truth, (maze_cell_t)c, d, MAZE_WALL_OPEN);
     maze_set_wall(&truth, maze_cell(&truth, 0, 1), MAZE_NORTH, MAZE_WALL_CLOSED);
     maze_set_wall(&truth, maze_cell(&truth, 0, 0), MAZE_EAST, MAZE_WALL_CLOSED);
-    mms_opts_t o = { "test", 1, 1000, -1, NULL };
+    mms_opts_t o = { "test", 1, 1000, -1, NULL, 0, 0 };
     mms_init(&mm, &o, &truth);
 }
 
@@ -111,6 +111,26 @@ static void test_queries(void **state)
     assert_int_equal(mm.invalid, inv + (long)(sizeof bad / sizeof bad[0]));
 }
 
+/* An algorithm that asks wasReset MMS_IDLE_POLLS times without a move
+ * idles: with --mms-reset-at idle the Reset button is pressed then (the
+ * 10th answer is true), until ackReset; then it counts afresh. */
+static void test_reset_on_idle(void **state)
+{
+    (void)state;
+    setup_maze();
+    mm.o.reset_on_idle = 1;
+    for (int round = 0; round < 2; round++) {
+        for (int i = 1; i < MMS_IDLE_POLLS; i++) assert_string_equal(run("wasReset"), "false");
+        assert_string_equal(run("wasReset"), "true");
+        assert_string_equal(run("wasReset"), "true"); /* until ackReset */
+        assert_string_equal(run("ackReset"), "ack");
+        assert_string_equal(run("wasReset"), "false");
+        assert_int_equal(mm.resets, round + 1);
+        mm.idle_polls = 0;
+    }
+    assert_int_equal(mm.idle, 0);
+}
+
 static void test_drawing(void **state)
 {
     (void)state;
@@ -143,6 +163,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_stats),
         cmocka_unit_test(test_queries),
+        cmocka_unit_test(test_reset_on_idle),
         cmocka_unit_test(test_drawing),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -199,12 +199,25 @@ static void test_tof_clamps_and_timeout(void **state)
     assert_true(r.timeout && r.dist_m == c.tof_range_m);
     r = tof_measure(&t, 1.3); /* beyond range */
     assert_true(r.timeout);
+    r = tof_measure(&t, c.tof_range_m); /* exactly at the range: a timeout too */
+    assert_true(r.timeout && r.dist_m == c.tof_range_m);
+    r = tof_measure(&t, c.tof_range_m - 1e-6);
+    assert_false(r.timeout);
+    /* noise that pushes a reading to or past the range makes a timeout, never
+     * a reading of the range itself */
     c.tof_cv = 0.5;
     tof_init(&t, &c, 1, 0);
+    int timeouts = 0;
     for (int i = 0; i < 1000; i++) {
         r = tof_measure(&t, 1.15);
-        assert_true(r.dist_m >= 0 && r.dist_m <= c.tof_range_m);
+        if (r.timeout) {
+            timeouts++;
+            assert_true(r.dist_m == c.tof_range_m);
+        } else {
+            assert_true(r.dist_m >= 0 && r.dist_m < c.tof_range_m);
+        }
     }
+    assert_true(timeouts > 300 && timeouts < 700); /* about the half above 1.2 m */
 }
 
 static void test_tof_streams(void **state)

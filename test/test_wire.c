@@ -344,10 +344,18 @@ static void test_compat_details(void **state)
     m.u.encoder.left = 40010;
     assert_int_equal(wire_compat_encode(&tx, &m, b, 5), 0);
     assert_int_equal(tx.enc_sent[0], 40000);
-    /* distance scaling: range and beyond -> 65534, not the timeout code */
+    /* distance scaling: at or beyond the range -> the timeout code (the
+     * paper's Unity simulator sends such a reading as a timeout); just below
+     * it the largest reading */
     m = (wire_msg_t){ .type = WIRE_DISTANCE, .u.distance = { 0, WIRE_SENSOR_LEFT, 0, 5000 } };
     assert_int_equal(wire_compat_encode(&tx, &m, b, sizeof b), 3);
-    assert_int_equal(b[1] | b[2] << 8, 65534);
+    assert_int_equal(b[1] | b[2] << 8, 65535);
+    m.u.distance.mm = 1200;
+    wire_compat_encode(&tx, &m, b, sizeof b);
+    assert_int_equal(b[1] | b[2] << 8, 65535);
+    m.u.distance.mm = 1199;
+    wire_compat_encode(&tx, &m, b, sizeof b);
+    assert_int_equal(b[1] | b[2] << 8, 65480); /* round(1199 / 1200 * 65535) */
     /* the sender's own scaling (finer than mm) goes as is, never as 65535 */
     m.u.distance.mm = 123;
     m.u.distance.compat = 6742; /* 0.123456 m of 1.2 */

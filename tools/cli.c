@@ -1,6 +1,7 @@
 /* cli.c - command-line helpers shared by the tools (see cli.h). */
 #include "cli.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <getopt.h>
 #include <math.h>
@@ -16,17 +17,39 @@ int cli_bad(const char *prog, const char *fmt, const char *arg)
     return CLI_BAD_INPUT;
 }
 
+/* A plain decimal number: an optional '-', digits with an optional '.'
+ * and fraction (no spaces, '+', exponent, hex, inf or nan). */
+static int plain_decimal(const char *s)
+{
+    size_t i = s[0] == '-', digits = 0;
+    while (isdigit((unsigned char)s[i])) i++, digits++;
+    if (s[i] == '.')
+        for (i++; isdigit((unsigned char)s[i]); i++) digits++;
+    return digits > 0 && s[i] == '\0';
+}
+
 int cli_number(const char *prog, const char *opt, const char *s, double lo, double hi, double *out)
 {
     char *end;
     errno = 0;
-    double v = strtod(s, &end);
-    if (errno || end == s || *end || !(v >= lo && v <= hi)) {
+    double v = plain_decimal(s) ? strtod(s, &end) : NAN;
+    if (errno || !(v >= lo && v <= hi)) {
         fprintf(stderr, "%s: %s: expected a number from %g to %g, got '%s'\n", prog, opt, lo, hi, s);
         return -1;
     }
     *out = v;
     return 0;
+}
+
+/* The digits of s up to the character end as a number; -1 if there are
+ * none, anything else comes first, or more than 5 digits (no overflow). */
+static long size_part(const char *s, char end)
+{
+    long v = 0;
+    int n = 0;
+    for (; isdigit((unsigned char)*s); s++, n++) v = v * 10 + (*s - '0');
+    if (n == 0 || n > 5 || *s != end) return -1;
+    return v;
 }
 
 int cli_view_option(const char *prog, const char *name, const char *arg, view_opts_t *vo)
@@ -38,8 +61,8 @@ int cli_view_option(const char *prog, const char *name, const char *arg, view_op
     } else if (!strcmp(name, "speed")) {
         if (cli_number(prog, "--speed", arg, 1, VIEW_SPEED_MAX, &vo->speed)) return CLI_BAD_INPUT;
     } else if (!strcmp(name, "size")) {
-        int w, h, n = 0;
-        if (sscanf(arg, "%dx%d%n", &w, &h, &n) != 2 || arg[n] || w < 64 || h < 64 || w > 8192 || h > 8192)
+        long w = size_part(arg, 'x'), h = w < 0 ? -1 : size_part(strchr(arg, 'x') + 1, '\0');
+        if (w < 64 || h < 64 || w > 8192 || h > 8192)
             return cli_bad(prog, "--size: expected WxH, 64 to 8192 pixels each, got '%s'", arg);
         vo->width = w;
         vo->height = h;

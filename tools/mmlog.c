@@ -8,12 +8,14 @@
  * the log's event timestamp for any other channel. A message of an mmlcm
  * channel that does not decode is counted as bad.
  * Exit codes: 0 ok, 2 bad input (unreadable, not an LCM log, bad messages,
- * a truncated or corrupt event: what came before it is still summed up). */
+ * a truncated or corrupt event: what came before it is still summed up),
+ * 3 stdout could not be written. */
 #include <jansson.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "io/stdstream.h"
 #include "telemetry/lcmlog.h"
 #include "mmlcm_belief_t.h"
 #include "mmlcm_link_t.h"
@@ -175,6 +177,13 @@ static int decode(const char *ch, const void *data, int len, int64_t *ut, json_t
     return 1;
 }
 
+static int known_channel(const char *ch)
+{
+    for (size_t i = 0; i < sizeof decoders / sizeof decoders[0]; i++)
+        if (!strcmp(ch, decoders[i].channel)) return 1;
+    return 0;
+}
+
 typedef struct {
     char *name;
     long count, bad;
@@ -231,7 +240,7 @@ static int usage(void)
     return 2;
 }
 
-int main(int argc, char **argv)
+static int run(int argc, char **argv)
 {
     int as_json = 0;
     const char *dump = NULL, *path = NULL;
@@ -245,6 +254,13 @@ int main(int argc, char **argv)
         } else path = argv[i];
     }
     if (!path) return usage();
+    if (dump && !known_channel(dump)) {
+        fprintf(stderr, "mmlog: --dump %s: not a channel mmlog decodes; the channels are", dump);
+        for (size_t i = 0; i < sizeof decoders / sizeof decoders[0]; i++)
+            fprintf(stderr, "%s %s", i ? "," : "", decoders[i].channel);
+        fputc('\n', stderr);
+        return 2;
+    }
     static chan_t ch[MAX_CHANNELS];
     read_t rd = { ch, 0, dump, path };
     char err[4200];
@@ -285,4 +301,11 @@ int main(int argc, char **argv)
     }
     json_decref(out);
     return rc;
+}
+
+int main(int argc, char **argv)
+{
+    io_stdout_open();
+    int rc = run(argc, argv);
+    return io_stdout_close("mmlog") != 0 ? 3 : rc;
 }

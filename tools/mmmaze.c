@@ -2,6 +2,7 @@
  * and grid-mode exploration with the firmware's search code.
  *
  * Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure. */
+#include <ctype.h>
 #include <errno.h>
 #include <getopt.h>
 #include <jansson.h>
@@ -11,6 +12,7 @@
 
 #include "maze/grid.h"
 #include "hal_sim.h"
+#include "io/stdstream.h"
 #include "maze.h"
 #include "maze/mazedir.h"
 #include "maze/mazefile.h"
@@ -49,13 +51,15 @@ static int bad_option(const char *cmd, char **argv)
     return EXIT_BAD_INPUT;
 }
 
-/* Parse a whole decimal number in [lo, hi]; on error print one line. */
+/* Parse a whole decimal number in [lo, hi] (digits and an optional '-':
+ * no spaces, '+' or hex); on error print one line. */
 static int parse_num(const char *opt, const char *s, long lo, long hi, long *out)
 {
     char *end;
     errno = 0;
-    long v = strtol(s, &end, 10);
-    if (errno || end == s || *end != '\0' || v < lo || v > hi) {
+    int plain = isdigit((unsigned char)s[0]) || (s[0] == '-' && isdigit((unsigned char)s[1]));
+    long v = plain ? strtol(s, &end, 10) : 0;
+    if (!plain || errno || *end != '\0' || v < lo || v > hi) {
         fprintf(stderr, "mmmaze: %s: expected a whole number from %ld to %ld, got '%s'\n", opt, lo, hi, s);
         return -1;
     }
@@ -342,7 +346,7 @@ static int cmd_explore(int argc, char **argv)
     return done && r.final_path_optimal ? EXIT_OK : EXIT_NOT_REACHED;
 }
 
-int main(int argc, char **argv)
+static int run_command(int argc, char **argv)
 {
     if (argc < 2) {
         usage(stderr);
@@ -364,4 +368,11 @@ int main(int argc, char **argv)
     if (!strcmp(cmd, "explore")) return cmd_explore(argc, argv);
     fprintf(stderr, "mmmaze: unknown command '%s' (try 'mmmaze --help')\n", cmd);
     return EXIT_BAD_INPUT;
+}
+
+int main(int argc, char **argv)
+{
+    io_stdout_open();
+    int rc = run_command(argc, argv);
+    return io_stdout_close("mmmaze") != 0 ? EXIT_EXTERNAL : rc;
 }

@@ -17,8 +17,10 @@
 #include "contest/batch.h"
 #include "contest/run.h"
 #include "io/outfile.h"
+#include "io/stdstream.h"
 #include "link/serial.h"
 #include "validate/validate.h"
+#include "view/report.h"
 
 typedef struct {
     run_opts_t run;
@@ -38,11 +40,12 @@ static void usage(FILE *out)
           "             [--gui [--speed 1..64]] [--screenshot FILE.png [--at SECONDS]]\n"
           "             [--camera 1|2|3] [--size WxH]   (viewer)\n"
           "       mmsim --maze FILE --serial DEV|--port DEV|--pty [--baud N] [--protocol framed|compat]\n"
-          "             [--silence-ms N]   (hardware in the loop: an MCU drives over a serial link,\n"
-          "             in real time; --pty creates a pseudo-terminal and prints its path; docs/PROTOCOL.md)\n"
-          "       mmsim --maze FILE --avr ELF [--mcu NAME] [--f-cpu HZ] [--baud N] [--protocol P]\n"
+          "             [--silence-ms 0..60000]   (hardware in the loop: an MCU drives over a serial link,\n"
+          "             in real time; --pty creates a pseudo-terminal and prints its path; docs/PROTOCOL.md;\n"
+          "             motors off after N ms without a message: framed 100 by default, compat never; 0 never)\n"
+          "       mmsim --maze FILE --avr ELF [--mcu NAME] [--f-cpu HZ] [--baud N] [--protocol P] [--silence-ms N]\n"
           "             (processor in the loop: the AVR image runs in simavr, in lockstep)\n"
-          "       mmsim --maze FILE --mms COMMAND [--mms-ideal-walls] [--mms-timeout-ms N] [--mms-reset-at S]\n"
+          "       mmsim --maze FILE --mms COMMAND [--mms-ideal-walls] [--mms-timeout-ms N] [--mms-reset-at S|idle]\n"
           "             (an mms algorithm drives the robot through the mms text API, docs/MMS.md)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
           "       mmsim --print-config [--config FILE]\n"
@@ -137,7 +140,7 @@ static int f_protocol(const char *prog, void *o, const char *arg)
 static int f_silence(const char *prog, void *o, const char *arg)
 {
     double v;
-    if (cli_number(prog, "--silence-ms", arg, 1, 60000, &v)) return CLI_BAD_INPUT;
+    if (cli_number(prog, "--silence-ms", arg, 0, 60000, &v)) return CLI_BAD_INPUT; /* 0 = no watchdog */
     run_of(o)->link.silence_s = v / 1000.0;
     return 0;
 }
@@ -154,6 +157,21 @@ static int f_mms(const char *prog, void *o, const char *arg)
 {
     if (!*arg) return bad("%s", "--mms: expected a command, e.g. --mms 'python3 main.py'");
     run_of(o)->mms.command = arg;
+    return 0;
+}
+
+/* --mms-reset-at S (sim time, s) or idle (each time the algorithm waits for Reset) */
+static int f_mms_reset_at(const char *prog, void *o, const char *arg)
+{
+    if (!strcmp(arg, "idle")) {
+        run_of(o)->mms.reset_on_idle = 1;
+        return 0;
+    }
+    char *end;
+    double v = strtod(arg, &end);
+    if (!*arg || *end || !(v >= 0 && v <= 86400))
+        return bad("--mms-reset-at: expected seconds of simulation time from 0 to 86400, or idle, got '%s'", arg);
+    run_of(o)->mms.reset_at_s = v;
     return 0;
 }
 
@@ -196,7 +214,7 @@ static const cli_opt_t flags[] = {
     { .name = "mms", .kind = CLI_FN, .fn = f_mms, .has_arg = 1 },
     { .name = "mms-ideal-walls", .kind = CLI_SET, .off = RUN(mms.ideal_walls) },
     { .name = "mms-timeout-ms", .kind = CLI_INT, .off = RUN(mms.timeout_ms), .lo = 1, .hi = 3600000 },
-    { .name = "mms-reset-at", .kind = CLI_NUM, .off = RUN(mms.reset_at_s), .lo = 0, .hi = 86400 },
+    { .name = "mms-reset-at", .kind = CLI_FN, .fn = f_mms_reset_at, .has_arg = 1 },
     { NULL },
 };
 
@@ -213,11 +231,13 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (!o->avr_elf && (o->avr_mcu || o->avr_f_cpu)) return bad("%s", "--mcu and --f-cpu need --avr ELF");
     if (!o->mms.command && mms_flags) return bad("%s", "--mms-ideal-walls, --mms-timeout-ms and --mms-reset-at need --mms COMMAND");
     if (o->mms.command && o->verbose) o->mms.trace = stderr; /* --verbose: the mms dialogue too */
+    if (o->mms.command && o->gui) o->mms.idle_wait = 1; /* an idle algorithm waits for the viewer's Reset button */
     if (o->mms.command && !cli_seen(flags, seen, "driver")) o->scripted = 0; /* the firmware's motion layer runs the moves */
     if (o->mms.command && (o->serial || o->scripted || m->batch))
         return bad("%s", "--mms drives the firmware of one run: not with --serial/--pty/--avr, --driver scripted or --batch");
     if (o->serial && m->batch) return bad("%s", "--serial/--pty/--avr run one maze, not --batch");
     if (o->serial && !o->avr_elf) o->realtime = 1; /* a real MCU runs in real time; simavr in lockstep */
+    if (m->batch && m->maze) return bad("%s", "--maze and --batch: one at a time (a batch runs every maze in DIR)");
     if (o->print_config || m->validate) return 0;
     if (m->batch && (o->telem.url || o->telem.log_path)) return bad("%s", "--lcm and --lcm-log work on one maze, not with --batch");
     if (m->batch && (o->report || o->gui || o->shot)) return bad("%s", "--report, --gui and --screenshot need --maze (one run), not --batch");
@@ -226,20 +246,27 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     return 0;
 }
 
-/* --report and --screenshot fail now, not after a ten-minute contest. */
+/* --report (its PNG, SVG and JSON) and --screenshot fail now, not after a
+ * ten-minute contest: an empty name, a folder, a path that cannot be written. */
 static int probe_outputs(const run_opts_t *o)
 {
-    const char *outs[2][2] = { { "--report", o->report }, { "--screenshot", o->shot } };
-    for (int i = 0; i < 2; i++) {
-        char perr[600];
-        outfile_t probe;
-        if (!outs[i][1]) continue;
-        if (outfile_open(&probe, outs[i][1], perr, sizeof perr) != 0) {
-            fprintf(stderr, "mmsim: %s: %s\n", outs[i][0], perr);
+    char paths[4][4096], perr[600];
+    const char *flag[4] = { "--report", "--report", "--report", "--screenshot" };
+    int n = 0;
+    if (o->report) {
+        snprintf(paths[n++], sizeof paths[0], "%s", o->report);
+        report_sibling(o->report, ".svg", paths[n++], sizeof paths[0]);
+        report_sibling(o->report, ".json", paths[n++], sizeof paths[0]);
+    }
+    if (o->shot) {
+        flag[n] = "--screenshot";
+        snprintf(paths[n++], sizeof paths[0], "%s", o->shot);
+    }
+    for (int i = 0; i < n; i++)
+        if (outfile_probe(paths[i], perr, sizeof perr) != 0) {
+            fprintf(stderr, "mmsim: %s: %s\n", flag[i], perr);
             return RUN_BAD_INPUT;
         }
-        outfile_abort(&probe);
-    }
     return 0;
 }
 
@@ -263,12 +290,12 @@ static int validate(const run_opts_t *o)
     return failed ? RUN_NOT_REACHED : RUN_OK;
 }
 
-int main(int argc, char **argv)
+static int run(int argc, char **argv)
 {
     mmsim_opts_t m = { .run = { /* the mouse's own firmware by default, 3 speed runs after the search */
         .seed = 1, .runs = 3, .centre_post = -1, .scripted = 0, .jobs = 1,
         .view = { .width = 1024, .height = 720, .speed = 1, .camera = 1, .port = "", .baud = 115200 },
-        .link = { .protocol = LINK_FRAMED },
+        .link = { .protocol = LINK_FRAMED, .silence_s = -1 }, /* silence: the protocol's default */
         .mms = { .timeout_ms = 5000, .reset_at_s = -1 },
     } };
     int seen[sizeof flags / sizeof flags[0]] = { 0 }, first;
@@ -293,4 +320,11 @@ int main(int argc, char **argv)
     if (j && m.run.json && run_json_line(j) != 0) rc = RUN_EXTERNAL;
     json_decref(j);
     return rc;
+}
+
+int main(int argc, char **argv)
+{
+    io_stdout_open();
+    int rc = run(argc, argv);
+    return io_stdout_close("mmsim") != 0 ? RUN_EXTERNAL : rc;
 }

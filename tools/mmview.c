@@ -15,6 +15,7 @@
 
 #include "cli.h"
 #include "io/outfile.h"
+#include "io/stdstream.h"
 #include "view/replay.h"
 #include "view/view.h"
 
@@ -66,12 +67,10 @@ static int parse(int argc, char **argv, mmview_opts_t *m, const char **log)
     if (m->shot && m->at_s < 0) return bad("%s", "--screenshot needs --at SECONDS");
     if (m->shot) { /* fail now, before loading the log */
         char perr[600];
-        outfile_t probe;
-        if (outfile_open(&probe, m->shot, perr, sizeof perr) != 0) {
+        if (outfile_probe(m->shot, perr, sizeof perr) != 0) {
             fprintf(stderr, "mmview: --screenshot: %s\n", perr);
             return EXIT_BAD_INPUT;
         }
-        outfile_abort(&probe);
     }
     return 0;
 }
@@ -102,7 +101,7 @@ static int show(const mmview_opts_t *m, replay_t *rp, sim_t *sim)
     return rc;
 }
 
-int main(int argc, char **argv)
+static int run(int argc, char **argv)
 {
     mmview_opts_t m = { .view = { 1024, 720, 1, 1, "", 115200 }, .at_s = -1 };
     const char *log = NULL;
@@ -133,4 +132,11 @@ int main(int argc, char **argv)
     sim_free(&sim);
     replay_free(&rp);
     return rc;
+}
+
+int main(int argc, char **argv)
+{
+    io_stdout_open();
+    int rc = run(argc, argv);
+    return io_stdout_close("mmview") != 0 ? EXIT_EXTERNAL : rc;
 }

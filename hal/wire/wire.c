@@ -277,11 +277,10 @@ size_t wire_compat_encode(wire_compat_tx_t *t, const wire_msg_t *m, uint8_t *out
         uint16_t v = 65535u;
         if (!m->u.distance.timeout) {
             uint32_t s = m->u.distance.compat; /* scaled by the sender from the true distance */
-            if (s == 0) {
-                uint32_t mm = m->u.distance.mm < t->range_mm ? m->u.distance.mm : t->range_mm;
-                s = (mm * 65535u + t->range_mm / 2u) / t->range_mm;
-            }
-            v = (uint16_t)(s > 65534u ? 65534u : s); /* 65535 means timeout */
+            if (s == 0 && m->u.distance.mm >= t->range_mm) s = 65535u; /* at or beyond the range: a timeout */
+            else if (s == 0) s = ((uint32_t)m->u.distance.mm * 65535u + t->range_mm / 2u) / t->range_mm;
+            else if (s > 65534u) s = 65534u; /* a reading, never the timeout code */
+            v = (uint16_t)s;
         }
         return put_id16(out, id[m->u.distance.sensor], v);
     }

@@ -38,7 +38,12 @@ extern "C" {
 #endif
 #define WIRE_RX_MAX (WIRE_RX_LOG_MAX + 6) /* framed decoder's buffer: WIRE_FRAME_MAX by default */
 #define WIRE_MOTOR_MAX 1023     /* motor command limit, +-1023 = +-100 % battery */
-#define WIRE_COMPAT_RANGE_MM 1200u /* ToF range of the paper's robot, mm */
+#define WIRE_TOF_RANGE_MM 1200u    /* our robot's ToF range, mm, sent in HELLO: the simulator's [tof]
+                                      tof_range_m default (VL53L0X long range) */
+#define WIRE_COMPAT_RANGE_MM 1000u /* compat's distance scale, mm: u16 65535 stands for this distance. The
+                                      paper's Arduino library converts with 1.0 m and its Unity simulator's
+                                      default ToF (TimeOfFlight asset) has range 1.0 m; the simulator's
+                                      [link] compat_range_m (issue 15) */
 
 enum wire_type {
     WIRE_HELLO = 0x01,    /* both ways: version, role, scaling */
@@ -78,7 +83,8 @@ typedef struct {
             uint16_t mm;            /* distance, mm */
             uint16_t compat;        /* compat's u16, round(d / range * 65535), 65535 = timeout:
                                        the decoder fills it; the encoder sends it for a
-                                       reading when non-zero (finer than mm), else scales mm.
+                                       reading when non-zero (finer than mm), else scales mm
+                                       (mm at or beyond the range: sent as a timeout).
                                        Not in framed frames. */
         } distance;
         struct {

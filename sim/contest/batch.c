@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -63,6 +64,41 @@ static char *failed_line(const char *maze, int status)
     return line;
 }
 
+/* SIGINT, SIGTERM or SIGHUP to the batch: the handler passes it on to
+ * every running job at once; the loop then waits for them and the batch
+ * dies of the signal. The signals are blocked except while waiting, so the
+ * handler never sees the job table half updated. */
+static const int stop_sigs[3] = { SIGINT, SIGTERM, SIGHUP };
+static volatile sig_atomic_t stop_sig;
+static batch_t *live;
+
+static void on_stop(int sig)
+{
+    stop_sig = sig;
+    for (size_t i = 0; live && i < live->next; i++)
+        if (live->pid[i] > 0) kill(live->pid[i], sig);
+}
+
+/* Install (on) or restore the handlers; *blocked gets the three signals. */
+static void batch_signals(int on, sigset_t *blocked)
+{
+    static struct sigaction old[3];
+    sigemptyset(blocked);
+    for (int i = 0; i < 3; i++) {
+        sigaddset(blocked, stop_sigs[i]);
+        if (!on) {
+            sigaction(stop_sigs[i], &old[i], NULL);
+            continue;
+        }
+        struct sigaction sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = on_stop; /* no SA_RESTART: the wait returns */
+        sigfillset(&sa.sa_mask);
+        sigaction(stop_sigs[i], &sa, &old[i]);
+        if (old[i].sa_handler == SIG_IGN) sigaction(stop_sigs[i], &old[i], NULL); /* ignored stays ignored (nohup) */
+    }
+}
+
 static int fail(batch_t *b, const char *what)
 {
     fprintf(stderr, "mmsim: %s: %s\n", what, strerror(errno));
@@ -83,6 +119,10 @@ static int start_job(batch_t *b)
         return fail(b, "fork");
     }
     if (c == 0) {
+        for (int i = 0; i < 3; i++) signal(stop_sigs[i], SIG_DFL); /* a job dies of them */
+        sigset_t none;
+        sigemptyset(&none);
+        sigprocmask(SIG_SETMASK, &none, NULL);
         close(p[0]);
         for (size_t i = 0; i < b->next; i++) /* the other jobs' pipes are not this child's */
             if (b->pid[i]) close(b->fd[i]);
@@ -104,10 +144,12 @@ static int start_job(batch_t *b)
 /* Any job that ended, its output kept, and what is complete in input order
  * printed. Its output (one JSON line, far below the pipe's 64 KB, so a child
  * never blocks on it) is read to the end after it is reaped. 0, or -1. */
-static int reap_job(batch_t *b)
+static int reap_job(batch_t *b, const sigset_t *blocked)
 {
     int status = 0;
+    sigprocmask(SIG_UNBLOCK, blocked, NULL); /* a stop signal may come now */
     pid_t c = wait(&status);
+    sigprocmask(SIG_BLOCK, blocked, NULL);
     if (c < 0) return errno == EINTR ? 0 : fail(b, "wait");
     size_t i = 0;
     while (i < b->next && b->pid[i] != c) i++;
@@ -132,6 +174,17 @@ static int reap_job(batch_t *b)
     return 0;
 }
 
+/* Has job c ended (it got the stop signal) within wait_s? Reaps it if so. */
+static int reaped_within(pid_t c, double wait_s)
+{
+    for (int k = 0; k < (int)(wait_s * 100); k++) {
+        if (waitpid(c, NULL, WNOHANG) == c) return 1;
+        struct timespec ts = { 0, 10000000 };
+        nanosleep(&ts, NULL);
+    }
+    return 0;
+}
+
 int batch_run(const run_opts_t *o, const char *dir)
 {
     batch_t b = { .o = o };
@@ -146,18 +199,38 @@ int batch_run(const run_opts_t *o, const char *dir)
         fprintf(stderr, "mmsim: out of memory\n");
         b.worst = RUN_EXTERNAL;
     }
-    while (!failed && b.done < b.n) {
-        while (!failed && b.running < o->jobs && b.next < b.n) failed = start_job(&b) != 0;
-        if (!failed) failed = reap_job(&b) != 0;
+    sigset_t blocked, prev;
+    batch_signals(1, &blocked);
+    sigprocmask(SIG_BLOCK, &blocked, &prev);
+    live = &b;
+    while (!failed && !stop_sig && b.done < b.n) {
+        while (!failed && !stop_sig && b.running < o->jobs && b.next < b.n) failed = start_job(&b) != 0;
+        if (!failed && !stop_sig) failed = reap_job(&b, &blocked) != 0;
+        if (!failed && ferror(stdout)) { /* the results cannot be written: stop (mmsim's end says why) */
+            failed = 1;
+            b.worst = RUN_EXTERNAL;
+        }
     }
-    if (!failed) fputc('\n', stderr);
+    if (b.done) fputc('\n', stderr); /* the end of the progress line */
     fflush(stdout);
     for (size_t i = 0; b.pid && b.fd && i < b.next; i++)
-        if (b.pid[i]) { /* only after a failure above: end the jobs still running */
-            kill(b.pid[i], SIGKILL);
+        if (b.pid[i]) { /* after a failure or a stop signal: end the jobs still running */
+            if (!stop_sig || !reaped_within(b.pid[i], 5.0)) kill(b.pid[i], SIGKILL);
             close(b.fd[i]);
             waitpid(b.pid[i], NULL, 0);
+            b.pid[i] = 0;
         }
+    live = NULL;
+    batch_signals(0, &blocked);
+    sigprocmask(SIG_SETMASK, &prev, NULL);
+    if (stop_sig) { /* the jobs are gone: die of the signal, as without a batch */
+        sigset_t one;
+        sigemptyset(&one);
+        sigaddset(&one, stop_sig);
+        signal(stop_sig, SIG_DFL);
+        sigprocmask(SIG_UNBLOCK, &one, NULL);
+        raise(stop_sig);
+    }
     for (size_t i = 0; b.text && i < b.n; i++) free(b.text[i]);
     mazedir_free(b.names, nn);
     free(b.text);

@@ -252,8 +252,11 @@ static int write_report(run_t *r)
     snprintf(title, sizeof title, "%s  %ux%u  seed %llu  %s driver  exit: %s", r->maze_path, r->maze.width,
              r->maze.height, (unsigned long long)r->o->seed, r->drv->name, r->reason);
     if (r->drv == &run_mms) report_set_cells(r->rep, r->mms.color, &r->mms.text[0][0], sizeof r->mms.text[0]);
+    /* only what the run has: an MCU over the link keeps its map to itself (no belief, no final path); the
+     * scripted driver has no map and drives the true best path */
     const maze_t *belief = r->drv == &run_firmware || r->drv == &run_mms ? mouse_map() : NULL;
-    if (report_write(r->rep, &r->sim, belief, r->o->report, title, err, sizeof err) != 0) {
+    const maze_t *path_on = belief ? belief : r->drv == &run_scripted ? &r->maze : NULL;
+    if (report_write(r->rep, &r->sim, belief, path_on, r->o->report, title, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         rc = RUN_EXTERNAL;
     }

@@ -35,6 +35,14 @@ static void link_exchange(link_t *l, sim_t *s)
 }
 
 static uint16_t tof_range_mm(const run_t *r) { return (uint16_t)lround(r->cfg.tof_range_m * 1000.0); }
+
+/* the command line's link options with the config's compat distance scale */
+static link_opts_t link_opts(const run_t *r)
+{
+    link_opts_t lo = r->o->link;
+    lo.compat_range_m = r->cfg.compat_range_m;
+    return lo;
+}
 static uint32_t counts_x100(const run_t *r) { return (uint32_t)lround(r->cfg.encoder_ppr * r->cfg.gear_ratio * 100.0); }
 
 const char *run_link_step(run_t *r)
@@ -55,7 +63,7 @@ const char *run_link_step(run_t *r)
 void run_link_connect(run_t *r, const char *port, long baud)
 {
     char err[400];
-    link_opts_t lo = r->o->link;
+    link_opts_t lo = link_opts(r);
     lo.device = port;
     lo.pty = 0;
     lo.baud = (uint32_t)baud;
@@ -89,7 +97,8 @@ void run_link_results(run_t *r, json_t *j)
 static int serial_open(run_t *r)
 {
     char err[400];
-    if (link_open(&r->lnk, &r->o->link, r->cfg.step_s, tof_range_mm(r), counts_x100(r), stderr, err, sizeof err) != 0) {
+    link_opts_t lo = link_opts(r);
+    if (link_open(&r->lnk, &lo, r->cfg.step_s, tof_range_mm(r), counts_x100(r), stderr, err, sizeof err) != 0) {
         fprintf(stderr, "mmsim: %s\n", err);
         return RUN_EXTERNAL;
     }
@@ -106,7 +115,8 @@ static int avr_open(run_t *r)
         fprintf(stderr, "mmsim: %s\n", err);
         return RUN_EXTERNAL;
     }
-    link_open_fd(&r->lnk, fd, "simavr UART0", &r->o->link, r->cfg.step_s, tof_range_mm(r), counts_x100(r),
+    link_opts_t lo = link_opts(r);
+    link_open_fd(&r->lnk, fd, "simavr UART0", &lo, r->cfg.step_s, tof_range_mm(r), counts_x100(r),
                  r->o->verbose ? stderr : NULL);
     return 0;
 }

@@ -1,6 +1,8 @@
 /* outfile.h - atomic output files: write to a temporary file in the same
  * folder, then rename over the target, so a reader never sees a file
- * half written and a failed write leaves nothing behind. */
+ * half written and a failed write leaves nothing behind (an existing file
+ * at the target stays as it was). Several files that belong together are
+ * all written (outfile_finish) before any is renamed (outfile_rename). */
 #ifndef OUTFILE_H
 #define OUTFILE_H
 
@@ -13,12 +15,23 @@ typedef struct {
     char path[4096]; /* the target */
 } outfile_t;
 
+/* Could path be written? An empty name or a folder is refused, then a
+ * temporary is created beside it and removed. 0, or -1 with one line in
+ * err ("PATH: is a directory", "PATH: cannot write: REASON"). For the
+ * checks before a long run. */
+int outfile_probe(const char *path, char *err, size_t errlen);
 /* Open a temporary beside path. Returns 0, or -1 with one line in err. */
 int outfile_open(outfile_t *o, const char *path, char *err, size_t errlen);
-/* Flush, close and rename over the target. Returns 0, or -1 with one line
- * in err (the temporary is removed). */
+/* outfile_finish, then outfile_rename. Returns 0, or -1 with one line in
+ * err (the temporary is removed). */
 int outfile_commit(outfile_t *o, char *err, size_t errlen);
-/* Close and remove the temporary. */
+/* Flush, sync and close the temporary, which stays for outfile_rename.
+ * Returns 0, or -1 with one line in err (the temporary is removed). */
+int outfile_finish(outfile_t *o, char *err, size_t errlen);
+/* Rename the finished temporary over the target. Returns 0, or -1 with
+ * one line in err (the temporary is removed). */
+int outfile_rename(outfile_t *o, char *err, size_t errlen);
+/* Close (if open) and remove the temporary. */
 void outfile_abort(outfile_t *o);
 
 #endif

@@ -8,6 +8,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "io/escape.h"
 #include "serial.h"
 
 #define BYTE_COST 10000000ull /* one 8N1 byte = 10 bits = 10e6 bit-us */
@@ -35,10 +36,11 @@ static void on_connect(link_t *l)
     l->credit_tx = l->credit_rx = 0;
     wire_stats_t keep_d = l->dec.stats, keep_c = l->crx.stats; /* error counts add up over connections */
     wire_decoder_init(&l->dec);
-    wire_compat_rx_init(&l->crx, l->tof_range_mm);
+    uint16_t compat_mm = (uint16_t)lround(l->compat_range_m * 1000.0);
+    wire_compat_rx_init(&l->crx, compat_mm);
     l->dec.stats = keep_d;
     l->crx.stats = keep_c;
-    wire_compat_tx_init(&l->ctx, l->tof_range_mm);
+    wire_compat_tx_init(&l->ctx, compat_mm);
     l->ctx.enc_sent[0] = l->ctx.enc_sent[1] = INT32_MIN; /* set from the first reading sent */
     l->motor[0] = l->motor[1] = 0;
     l->running = 1; /* motors stay 0 until the MCU's first command on this connection */
@@ -76,9 +78,10 @@ static void init_common(link_t *l, const link_opts_t *o, double step_s, uint16_t
     memcpy(l->path, path, sizeof path);
     l->o = *o;
     if (l->o.baud == 0) l->o.baud = o->protocol == LINK_COMPAT ? 115200u : 1000000u;
-    if (l->o.silence_s <= 0) l->o.silence_s = LINK_SILENCE_S;
+    if (l->o.silence_s < 0) l->o.silence_s = o->protocol == LINK_COMPAT ? 0.0 : LINK_SILENCE_S;
     l->step_s = step_s;
     l->tof_range_mm = range_mm;
+    l->compat_range_m = o->compat_range_m > 0 ? o->compat_range_m : WIRE_COMPAT_RANGE_MM / 1000.0;
     l->counts_per_rev_x100 = cpr_x100;
     l->report = report;
     l->sensors_on = o->protocol != LINK_COMPAT; /* compat: nothing until requestEnableSensors, as in the paper */
@@ -208,7 +211,11 @@ static void handle(link_t *l, const wire_msg_t *m)
         break;
     case WIRE_LOG:
         l->st.logs++;
-        if (l->report) fprintf(l->report, "mcu: %s\n", m->u.log.text);
+        if (l->report) { /* the MCU's text cannot forge or hide a line of ours */
+            char text[IO_ESCAPE_MAX(WIRE_LOG_MAX)];
+            io_escape(text, sizeof text, m->u.log.text, m->u.log.len);
+            fprintf(l->report, "mcu: %s\n", text);
+        }
         break;
     default: break;
     }
@@ -280,9 +287,10 @@ int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2])
         m.u.distance.sensor = i;
         m.u.distance.timeout = in->tof_timeout[i] ? 1 : 0;
         m.u.distance.mm = in->tof_mm[i];
-        if (l->o.protocol == LINK_COMPAT && in->tof_m[i] > 0 && l->tof_range_mm) { /* from metres, not mm */
-            double v = round(in->tof_m[i] * 1000.0 / l->tof_range_mm * 65535.0);
-            m.u.distance.compat = (uint16_t)(v > 65534.0 ? 65534.0 : v); /* 0 (under 9 um) scales mm: 0 too */
+        if (l->o.protocol == LINK_COMPAT && in->tof_m[i] > 0) { /* from metres, not mm */
+            double v = round(in->tof_m[i] / l->compat_range_m * 65535.0);
+            if (in->tof_m[i] >= l->compat_range_m) m.u.distance.timeout = 1; /* beyond the compat range */
+            else m.u.distance.compat = (uint16_t)(v > 65534.0 ? 65534.0 : v); /* 0 (under 8 um) scales mm: 0 too */
         }
         enqueue(l, &m);
     }
@@ -333,7 +341,7 @@ move: /* sim -> MCU: at most the credit's whole bytes */
         }
     }
 
-    if (!l->silent && l->step - l->last_rx_step > steps_of(l, l->o.silence_s)) {
+    if (l->o.silence_s > 0 && !l->silent && l->step - l->last_rx_step > steps_of(l, l->o.silence_s)) {
         l->silent = 1;
         l->st.silences++;
         say(l, "MCU silent: motors off");
@@ -373,6 +381,8 @@ json_t *link_json(const link_t *l)
                           "rx_utilisation", round(link_util_rx(l) * 1000) / 1000, "silences", (int)l->st.silences,
                           "disconnects", (int)l->st.disconnects, "connects", (int)l->st.connects, "mcu_log_lines",
                           (int)l->st.logs, "decoder", dec);
+    json_object_set_new(j, "silence_ms", json_integer(llround(l->o.silence_s * 1000.0))); /* 0 = no watchdog */
+    if (l->o.protocol == LINK_COMPAT) json_object_set_new(j, "compat_range_m", json_real(l->compat_range_m));
     json_object_set_new(j, "handshake", json_boolean(l->hello_ok));
     json_object_set_new(j, "mcu_stops", json_integer(l->st.stops + l->st.halts));
     json_object_set_new(j, "sensors_on", json_boolean(l->sensors_on));

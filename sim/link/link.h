@@ -21,14 +21,19 @@ enum { LINK_FRAMED = 0, LINK_COMPAT = 1 };
 
 #define LINK_Q_MAX 4096u          /* sim -> MCU queue limit, bytes */
 #define LINK_RETRY_S 0.5          /* reopen / HELLO interval, s of sim time */
-#define LINK_SILENCE_S 0.1        /* default silence timeout, s */
+#define LINK_SILENCE_S 0.1        /* framed's default silence timeout, s (our library sends MOTOR every tick);
+                                     compat has none by default: the paper's Unity simulator applies a motor
+                                     command until the next one and has no watchdog (issue 15) */
 
 typedef struct {
     const char *device;   /* serial device path, or NULL with pty */
     int pty;              /* create a pseudo-terminal instead */
     uint32_t baud;        /* bits/s; 0 = the protocol's default */
     int protocol;         /* LINK_FRAMED / LINK_COMPAT */
-    double silence_s;     /* no valid message this long -> motors 0 */
+    double silence_s;     /* no valid message this long -> motors 0; 0 = never (no watchdog);
+                             < 0 = the protocol's default (framed LINK_SILENCE_S, compat never) */
+    double compat_range_m; /* compat: the distance u16 65535 stands for, m (config [link] compat_range_m);
+                              0 = WIRE_COMPAT_RANGE_MM. A reading at or beyond it goes as a timeout */
 } link_opts_t;
 
 typedef struct {
@@ -57,7 +62,8 @@ typedef struct {
 typedef struct link_s {
     link_opts_t o;
     double step_s;
-    uint16_t tof_range_mm;
+    uint16_t tof_range_mm;    /* framed: sent in HELLO */
+    double compat_range_m;    /* compat: distance scale, m (65535 = this) */
     uint32_t counts_per_rev_x100;
     int fd;
     int connected;
@@ -94,8 +100,9 @@ int link_open(link_t *l, const link_opts_t *o, double step_s, uint16_t tof_range
 void link_open_fd(link_t *l, int fd, const char *name, const link_opts_t *o, double step_s, uint16_t tof_range_mm,
                   uint32_t counts_per_rev_x100, FILE *report);
 /* One physics step: queue this step's sensor messages, move at most the
- * baud's bytes each way, decode; motor_out gets the commands to apply (0 when
- * silent, stopped, disconnected or before the handshake). Returns whether
+ * baud's bytes each way, decode; motor_out gets the commands to apply: the
+ * last command received, held until the next one (0 when silent, stopped,
+ * disconnected or before the handshake). Returns whether
  * the MCU asked for the ToF sensors on (1) or off (0). */
 int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2]);
 /* Utilisation of each direction so far: bytes moved / bytes the baud allowed. */

@@ -12,15 +12,16 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
+#include "io/escape.h"
 #include "mouse.h"
 #include "world/sim.h"
 #include "world/world.h"
 
-enum { MOVE_NONE = 0, MOVE_SENSE, MOVE_FORWARD, MOVE_TURN, MOVE_RESET };
+/* what the simulation steps for; MOVE_WAIT: an idle algorithm's wasReset, answered when Reset is pressed */
+enum { MOVE_NONE = 0, MOVE_SENSE, MOVE_FORWARD, MOVE_TURN, MOVE_RESET, MOVE_WAIT };
 
 /* ---- stats (mms Stats.cpp semantics) ---- */
 
@@ -120,10 +121,34 @@ void mms_init(mms_t *m, const mms_opts_t *o, const maze_t *truth)
     memset(m, 0, sizeof *m);
     m->o = *o;
     m->truth = truth;
-    m->to_child = m->from_child = -1;
+    m->to_child = m->from_child = m->err_fd = -1;
+    guard_init(&m->guard);
     m->exit_code = -1;
     m->reason = "running";
     mms_stats_init(&m->stats);
+}
+
+/* wasReset: true once Reset was pressed, until ackReset. An algorithm that
+ * asks MMS_IDLE_POLLS times without a move idles (it waits for Reset): then
+ * Reset is pressed now (reset_on_idle), or the answer waits while the clock
+ * runs (MOVE_WAIT: to the reset time, or the viewer's button), or nobody
+ * will press it and the run ends (m->idle). Returns 1 when the answer waits. */
+static int answer_was_reset(mms_t *m, struct sim_s *s, char *resp, size_t len)
+{
+    if (!m->was_reset && ++m->idle_polls >= MMS_IDLE_POLLS) {
+        if (m->o.reset_on_idle) {
+            m->was_reset = 1;
+        } else if (s && (m->o.reset_at_s >= 0 || m->o.idle_wait)) {
+            m->pending = MOVE_WAIT;
+            return 1;
+        } else if (s) {
+            m->idle = 1;
+            resp[0] = '\0';
+            return 0;
+        }
+    }
+    snprintf(resp, len, "%s", m->was_reset ? "true" : "false");
+    return 0;
 }
 
 /* Qt's QString::toInt as mms uses it: the whole token a base-10 integer,
@@ -396,9 +421,10 @@ int mms_execute(mms_t *m, struct sim_s *s, const char *line_in, char *resp, size
     } else if (!strcmp(f, "turnRight45") || !strcmp(f, "turnLeft45")) {
         snprintf(resp, len, "crash"); /* no diagonal moves in the motion layer */
     } else if (!strcmp(f, "wasReset")) {
-        snprintf(resp, len, "%s", m->was_reset ? "true" : "false");
+        return answer_was_reset(m, s, resp, len);
     } else if (!strcmp(f, "ackReset")) {
         m->was_reset = 0;
+        m->idle_polls = 0;
         m->resets++;
         mms_stats_reset_penalty(&m->stats);
         mms_stats_end_unfinished(&m->stats);
@@ -431,31 +457,6 @@ static double now_s(void)
     return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
-/* mmsim interrupted (Ctrl-C, kill): the algorithm's group is not in the
- * terminal's foreground group, so end it here, then die of the signal. */
-static volatile pid_t child_group;
-
-static void on_fatal_signal(int sig)
-{
-    if (child_group > 0) kill(-child_group, SIGKILL);
-    signal(sig, SIG_DFL);
-    raise(sig);
-}
-
-static void guard_signals(int on)
-{
-    static const int sigs[3] = { SIGINT, SIGTERM, SIGHUP };
-    static void (*old[3])(int);
-    for (int i = 0; i < 3; i++) {
-        if (on) {
-            old[i] = signal(sigs[i], on_fatal_signal);
-            if (old[i] == SIG_IGN) signal(sigs[i], SIG_IGN); /* ignored stays ignored (nohup) */
-        } else {
-            signal(sigs[i], old[i] == SIG_ERR ? SIG_DFL : old[i]);
-        }
-    }
-}
-
 static int pipe_cloexec(int fd[2])
 {
     if (pipe(fd) != 0) return -1;
@@ -464,61 +465,64 @@ static int pipe_cloexec(int fd[2])
     return 0;
 }
 
+static void set_nonblock(int fd) { fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK); }
+
 int mms_start(mms_t *m, const mms_opts_t *o, const maze_t *truth, char *err, size_t len)
 {
-    int in[2], out[2];
+    int p[3][2], n = 0; /* the algorithm's stdin, stdout, stderr */
     mms_init(m, o, truth);
     signal(SIGPIPE, SIG_IGN); /* a closed pipe is an error return, never a signal */
-    if (pipe_cloexec(in) != 0) {
-        snprintf(err, len, "mms: pipe: %s", strerror(errno));
-        return -1;
+    while (n < 3 && pipe_cloexec(p[n]) == 0) n++;
+    int rc = n == 3 ? guard_start(&m->guard, o->command, p[0][0], p[1][1], p[2][1], err, len) : -1;
+    if (n < 3) snprintf(err, len, "mms: pipe: %s", strerror(errno));
+    for (int i = 0; i < n; i++) { /* the child's ends are the guardian's now; ours stay if it started */
+        close(i == 0 ? p[i][0] : p[i][1]);
+        if (rc != 0) close(i == 0 ? p[i][1] : p[i][0]);
     }
-    if (pipe_cloexec(out) != 0) {
-        snprintf(err, len, "mms: pipe: %s", strerror(errno));
-        close(in[0]);
-        close(in[1]);
-        return -1;
-    }
-    fflush(stdout);
-    fflush(stderr);
-    /* a SIGINT/SIGTERM between fork and child_group = pid waits (blocked)
-     * and then ends the child too */
-    sigset_t block, prev;
-    sigemptyset(&block);
-    sigaddset(&block, SIGINT);
-    sigaddset(&block, SIGTERM);
-    sigaddset(&block, SIGHUP);
-    sigprocmask(SIG_BLOCK, &block, &prev);
-    guard_signals(1);
-    pid_t pid = fork();
-    if (pid < 0) {
-        guard_signals(0);
-        sigprocmask(SIG_SETMASK, &prev, NULL);
-        snprintf(err, len, "mms: fork: %s", strerror(errno));
-        close(in[0]); close(in[1]); close(out[0]); close(out[1]);
-        return -1;
-    }
-    if (pid == 0) {
-        setpgid(0, 0); /* its own group: the end kills every process it started */
-        signal(SIGPIPE, SIG_DFL);
-        guard_signals(0);
-        sigprocmask(SIG_SETMASK, &prev, NULL);
-        if (dup2(in[0], STDIN_FILENO) < 0 || dup2(out[1], STDOUT_FILENO) < 0) _exit(127);
-        execl("/bin/sh", "sh", "-c", o->command, (char *)NULL);
-        _exit(127);
-    }
-    setpgid(pid, pid); /* also here: no race with the kill at the end */
-    child_group = pid;
-    sigprocmask(SIG_SETMASK, &prev, NULL);
-    close(in[0]);
-    close(out[1]);
-    m->pid = m->pgid = pid;
-    m->to_child = in[1];
-    m->from_child = out[0];
-    fcntl(m->to_child, F_SETFL, fcntl(m->to_child, F_GETFL) | O_NONBLOCK);
-    fcntl(m->from_child, F_SETFL, fcntl(m->from_child, F_GETFL) | O_NONBLOCK);
+    if (rc != 0) return -1;
+    m->to_child = p[0][1];
+    m->from_child = p[1][0];
+    m->err_fd = p[2][0];
+    set_nonblock(m->to_child);
+    set_nonblock(m->from_child);
+    set_nonblock(m->err_fd);
     m->pending = MOVE_SENSE; /* the firmware senses the start cell first */
     return 0;
+}
+
+/* The whole lines in errbuf (all: also the rest; a full buffer counts as
+ * a line) onto our stderr as "algo: LINE", control bytes escaped
+ * (sim/io/escape.h): the algorithm cannot forge or hide a line of ours. */
+static void flush_stderr_lines(mms_t *m, int all)
+{
+    static char esc[IO_ESCAPE_MAX(sizeof m->errbuf)];
+    for (;;) {
+        char *nl = memchr(m->errbuf, '\n', m->errlen);
+        if (!nl && m->errlen < sizeof m->errbuf && !(all && m->errlen)) return;
+        size_t line = nl ? (size_t)(nl - m->errbuf) : m->errlen, used = line + (nl != NULL);
+        io_escape(esc, sizeof esc, m->errbuf, line);
+        fprintf(stderr, "algo: %s\n", esc);
+        memmove(m->errbuf, m->errbuf + used, m->errlen - used);
+        m->errlen -= used;
+    }
+}
+
+/* What the algorithm wrote on its stderr so far (up to 64 reads). */
+static void forward_stderr(mms_t *m)
+{
+    for (int reads = 0; m->err_fd >= 0 && reads < 64; reads++) {
+        ssize_t k = read(m->err_fd, m->errbuf + m->errlen, sizeof m->errbuf - m->errlen);
+        if (k > 0) {
+            m->errlen += (size_t)k;
+            flush_stderr_lines(m, 0);
+            continue;
+        }
+        if (k < 0 && errno == EINTR) continue;
+        if (k < 0 && errno == EAGAIN) return;
+        close(m->err_fd); /* end of file */
+        m->err_fd = -1;
+    }
+    if (m->err_fd < 0) flush_stderr_lines(m, 1);
 }
 
 /* End the run with this reason and one message line (fmt NULL: none). */
@@ -535,32 +539,15 @@ static int end_run(mms_t *m, const char *reason, const char *fmt, ...)
     return MMS_END;
 }
 
-/* Has the shell exited? Waits up to wait_s. Its status goes into
- * exit_code / exit_signal, but it stays a zombie (WNOWAIT): its pid, and
- * so its process group's id, cannot be reused before mms_stop has killed
- * the group and reaped it. */
+/* Has the shell exited? Waits up to wait_s for the guardian's report
+ * (guard.h); its status goes into exit_code / exit_signal. */
 static int shell_exited(mms_t *m, double wait_s)
 {
-    double t0 = now_s();
-    while (m->pid && !m->exited) {
-        siginfo_t info;
-        memset(&info, 0, sizeof info);
-        int r = waitid(P_PID, (id_t)m->pid, &info, WEXITED | WNOHANG | WNOWAIT);
-        if (r < 0 && errno == ECHILD) { /* reaped elsewhere: nothing to learn */
-            m->pid = 0;
-            break;
-        }
-        if (r == 0 && info.si_pid == m->pid) {
-            if (info.si_code == CLD_EXITED) m->exit_code = info.si_status;
-            else m->exit_signal = info.si_status;
-            m->exited = 1;
-            break;
-        }
-        if (now_s() - t0 >= wait_s) return 0;
-        struct timespec ts = { 0, 2000000 };
-        nanosleep(&ts, NULL);
-    }
-    return 1;
+    int r = guard_shell_ended(&m->guard, wait_s);
+    m->exited = m->guard.exited;
+    m->exit_code = m->guard.exit_code;
+    m->exit_signal = m->guard.exit_signal;
+    return r;
 }
 
 /* "exited with status N" or "was killed by signal N" */
@@ -584,7 +571,10 @@ static int child_gone(mms_t *m)
 
 static void trace(const mms_t *m, const struct sim_s *s, const char *dir, const char *text)
 {
-    if (m->o.trace) fprintf(m->o.trace, "mms %9.3f %s %s\n", s ? sim_time_s(s) : 0.0, dir, text);
+    static char esc[IO_ESCAPE_MAX(MMS_LINE_MAX)]; /* the algorithm's line: escaped (sim/io/escape.h) */
+    if (!m->o.trace) return;
+    io_escape(esc, sizeof esc, text, strlen(text));
+    fprintf(m->o.trace, "mms %9.3f %s %s\n", s ? sim_time_s(s) : 0.0, dir, esc);
 }
 
 static int send_line(mms_t *m, const char *resp)
@@ -601,8 +591,8 @@ static int send_line(mms_t *m, const char *resp)
         if (k < 0 && errno != EAGAIN && errno != EINTR) return -1;
         double left_ms = m->o.timeout_ms - (now_s() - t0) * 1000.0;
         if (left_ms <= 0) return -2;
-        struct pollfd p = { m->to_child, POLLOUT, 0 };
-        poll(&p, 1, (int)ceil(left_ms));
+        struct pollfd p[2] = { { m->to_child, POLLOUT, 0 }, { m->err_fd, POLLIN, 0 } };
+        if (poll(p, 2, (int)ceil(left_ms)) > 0 && p[1].revents) forward_stderr(m); /* it may wait on its stderr */
     }
     return 0;
 }
@@ -637,11 +627,12 @@ static int read_line(mms_t *m, char *line)
             return end_run(m, "mms_timeout", "mmsim: mms: the algorithm '%s' sent no command for %d ms",
                            m->o.command, m->o.timeout_ms);
         }
-        struct pollfd p = { m->from_child, POLLIN, 0 };
-        int r = poll(&p, 1, (int)ceil(left_ms));
+        struct pollfd p[2] = { { m->from_child, POLLIN, 0 }, { m->err_fd, POLLIN, 0 } }; /* fd -1: not polled */
+        int r = poll(p, 2, (int)ceil(left_ms));
         if (r < 0 && errno != EINTR)
             return end_run(m, "mms_failed", "mmsim: mms: poll on the algorithm '%s' failed: %s", m->o.command, strerror(errno));
-        if (r <= 0) continue;
+        if (r > 0 && p[1].revents) forward_stderr(m);
+        if (r <= 0 || !p[0].revents) continue;
         ssize_t k = read(m->from_child, m->buf + m->len, MMS_LINE_MAX - m->len);
         if (k == 0) {
             if (m->len) { /* a last line without a newline is still a line */
@@ -659,7 +650,19 @@ static int read_line(mms_t *m, char *line)
 int mms_service(mms_t *m, struct sim_s *s)
 {
     char line[MMS_LINE_MAX + 1], resp[64];
+    forward_stderr(m);
     for (;;) {
+        if (m->pending == MOVE_WAIT) { /* an idle algorithm: the clock runs, the robot at rest, until Reset */
+            if (m->o.reset_at_s >= 0 && sim_time_s(s) >= m->o.reset_at_s) {
+                m->was_reset = 1; /* the Reset button, pressed once */
+                m->o.reset_at_s = -1;
+            }
+            if (!m->was_reset) return MMS_STEP; /* (or the viewer's Reset button sets was_reset) */
+            m->pending = MOVE_NONE;
+            trace(m, s, "<", "true");
+            if (send_line(m, "true") != 0) return child_gone(m);
+            continue;
+        }
         if (m->pending) {
             uint8_t st = mouse_cmd_status();
             if (st == MOUSE_CMD_BUSY && sim_time_s(s) - m->move_start_s > MMS_MOVE_MAX_S) {
@@ -681,12 +684,13 @@ int mms_service(mms_t *m, struct sim_s *s)
                 if (maze_is_goal(m->truth, c)) mms_stats_finish_run(&m->stats);
                 else if (c == m->truth->start) mms_stats_end_unfinished(&m->stats);
                 m->moves++;
-                m->since_move = 0;
+                m->since_move = m->idle_polls = 0;
             }
             if (was == MOVE_TURN) {
                 m->moves++;
-                m->since_move = 0;
+                m->since_move = m->idle_polls = 0;
             }
+            if (was == MOVE_RESET) m->since_move = 0; /* a reset is not a flood */
             if (st == MOUSE_CMD_CRASHED) {
                 if (was != MOVE_SENSE) send_line(m, "crash");
                 m->crashes++;
@@ -712,6 +716,11 @@ int mms_service(mms_t *m, struct sim_s *s)
         int move = mms_execute(m, s, line, resp, sizeof resp);
         trace(m, s, m->invalid != inv ? "> (ignored)" : ">", line);
         if (resp[0]) trace(m, s, "<", resp);
+        if (m->idle)
+            return end_run(m, "mms_idle",
+                           "mmsim: mms: the algorithm '%s' waits for Reset (wasReset %d times without a move) and "
+                           "none is coming: run ended (--mms-reset-at S or idle presses it)",
+                           m->o.command, MMS_IDLE_POLLS);
         if (move) { /* a move: answered when done */
             m->move_start_s = sim_time_s(s);
             continue;
@@ -732,22 +741,14 @@ void mms_stop(mms_t *m)
     if (m->to_child >= 0) close(m->to_child);
     if (m->from_child >= 0) close(m->from_child);
     m->to_child = m->from_child = -1;
-    shell_exited(m, 0); /* its own status if it has ended, before the kill */
-    /* the whole group, always: a background process of a shell that has
-     * exited is still in it. The shell is not reaped yet, so the group's id
-     * is still ours. */
-    if (m->pgid > 0) kill(-m->pgid, SIGKILL);
-    m->pgid = 0;
-    if (child_group) {
-        guard_signals(0);
-        child_group = 0;
-    }
-    if (m->pid && !shell_exited(m, 10.0)) kill(m->pid, SIGKILL); /* left its group: the shell itself */
-    if (m->pid && shell_exited(m, 10.0)) {
-        int status;
-        waitpid(m->pid, &status, 0);
-    }
-    m->pid = 0;
+    /* everything the algorithm started, killed and reaped by its guardian
+     * (guard.h), also what left its process group or session */
+    guard_stop(&m->guard);
+    shell_exited(m, 0);
+    forward_stderr(m); /* its last words, to the end (nothing writes any more) */
+    if (m->err_fd >= 0) close(m->err_fd);
+    m->err_fd = -1;
+    flush_stderr_lines(m, 1);
 }
 
 int mms_failed(const mms_t *m)

@@ -4,8 +4,10 @@
  * the wall queries and the cell boundaries as mms's Window.cpp at 9ec759a)
  * on the simulated robot.
  *
- * The algorithm runs as a child process (/bin/sh -c COMMAND, in its own
- * process group) with its stdin and stdout on pipes; its stderr is ours.
+ * The algorithm runs as /bin/sh -c COMMAND in its own process group, under
+ * a guardian process (guard.h), with its stdin, stdout and stderr on pipes;
+ * its stderr comes out on ours a line at a time as "algo: LINE", control
+ * bytes escaped (sim/io/escape.h), as does the --verbose trace.
  * Each line it prints is one command. Queries are answered at once from the
  * firmware's map (walls it sensed itself) or, with ideal walls, from the
  * maze file; moves are handed to the firmware's command mode (mouse.h
@@ -13,10 +15,18 @@
  * Simulation time only advances while a move runs: the same algorithm gives
  * the same run however long it thinks. Invalid commands are ignored.
  *
+ * An algorithm that polls wasReset MMS_IDLE_POLLS times without a move
+ * idles, waiting for the Reset button (a common mms idiom after the goal):
+ * then Reset is pressed at once (reset_on_idle), or the contest clock runs,
+ * the robot at rest, until the reset time (reset_at_s) or until the viewer's
+ * Reset button (idle_wait); with none of these the run ends (mms_idle).
+ *
  * The run ends when the algorithm exits, fails (non-zero exit, signal), is
  * silent for longer than the per-command timeout, prints a line longer than
- * MMS_LINE_MAX or MMS_FLOOD_LIMIT commands without a move, or the robot is
- * stuck; the child is then killed (SIGKILL to its group) and reaped. */
+ * MMS_LINE_MAX or MMS_FLOOD_LIMIT commands without a move, idles with no
+ * Reset coming, or the robot is stuck; then everything the algorithm
+ * started is killed (SIGKILL) and reaped, also what it started in a new
+ * session or left orphaned. */
 #ifndef MMS_H
 #define MMS_H
 
@@ -26,11 +36,14 @@
 #include <sys/types.h>
 
 #include "maze.h"
+#include "guard.h"
 
 struct sim_s;
 
 #define MMS_LINE_MAX 1024         /* bytes per command line */
 #define MMS_FLOOD_LIMIT 1000000L  /* commands in a row without a move */
+#define MMS_IDLE_POLLS 10         /* wasReset answered false this often without a move = idle, waiting for
+                                     Reset (ours: an algorithm that checks it once per move never gets there) */
 #define MMS_TEXT_MAX 10           /* characters of cell text (mms) */
 #define MMS_MOVE_MAX_S 30.0       /* sim seconds a move may take: longer = stuck (a 32-cell straight takes ~12 s) */
 
@@ -70,18 +83,23 @@ typedef struct {
     const char *command;  /* the shell command */
     int ideal_walls;      /* answer wall queries from the maze file */
     int timeout_ms;       /* per command */
-    double reset_at_s;    /* wasReset turns true at this sim time; < 0 never */
+    double reset_at_s;    /* wasReset turns true at this sim time (an idle algorithm: the clock runs
+                             to it); < 0 never */
     FILE *trace;          /* every command and answer, with sim time (NULL: none) */
+    int reset_on_idle;    /* Reset pressed each time the algorithm idles (--mms-reset-at idle) */
+    int idle_wait;        /* an idle algorithm with no reset due: the clock runs until the Reset button
+                             (the viewer) or the contest's end, instead of ending the run */
 } mms_opts_t;
 
 typedef struct mms_s {
     mms_opts_t o;
     const maze_t *truth;
-    pid_t pid;             /* the shell; 0 when reaped */
-    pid_t pgid;            /* its process group (= pid), killed whole by mms_stop; 0 after */
-    int exited;            /* the shell has exited: status below, not reaped yet (the
-                            * zombie keeps the group id ours until the group is killed) */
+    guard_t guard;         /* the algorithm's process tree (guard.h) */
+    int exited;            /* the shell has exited: status below */
     int to_child, from_child;
+    int err_fd;            /* the algorithm's stderr (read end), -1 none */
+    char errbuf[MMS_LINE_MAX]; /* its stderr line so far */
+    size_t errlen;
     char buf[MMS_LINE_MAX + 1];
     size_t len;
     int pending;           /* a move is under way (MMS_MOVE_*) */
@@ -92,6 +110,8 @@ typedef struct mms_s {
     const char *reason;    /* exit_reason for the JSON */
     char message[300];     /* one line for stderr, "" = none */
     long commands, invalid, since_move, moves, crashes, resets;
+    long idle_polls;       /* wasReset answered false since the last move */
+    int idle;              /* it idles and no Reset is coming: the run ends (mms_idle) */
     mms_stats_t stats;
     /* what the algorithm drew: colour letter (0 = none), text, walls it set */
     char color[MAZE_MAX_CELLS];
@@ -112,13 +132,15 @@ int mms_start(mms_t *m, const mms_opts_t *o, const maze_t *truth, char *err, siz
  * once, fw_tick, fw_loop, call again) or the run is over (MMS_END: m->reason,
  * m->message). s is the running simulation (struct sim_s). */
 int mms_service(mms_t *m, struct sim_s *s);
-/* End the algorithm: SIGKILL to its whole process group (whatever is left
- * of it, also background processes of a shell that has exited), then reap
- * the shell. */
+/* End the algorithm: its guardian kills (SIGKILL) and reaps every process
+ * the algorithm started (its group, and whatever left it: background
+ * processes of a shell that has exited, new sessions, orphans); the rest of
+ * its stderr is printed. */
 void mms_stop(mms_t *m);
 /* Execute one command line; the answer (without newline) into resp, "" for
- * none. Returns 1 if a move was started (the answer comes later). Exposed
- * for the unit tests; needs the firmware in command mode only for moves. */
+ * none. Returns 1 if a move was started or an idle wasReset waits for the
+ * reset time (the answer comes later). Exposed for the unit tests; needs the
+ * firmware in command mode only for moves. */
 int mms_execute(mms_t *m, struct sim_s *s, const char *line, char *resp, size_t len);
 /* The JSON object of the run's mms part (a json_t *, jansson). */
 void *mms_json(const mms_t *m);

@@ -2,6 +2,7 @@
 #include "telem.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <lcm/eventlog.h>
 #include <lcm/lcm.h>
 #include <math.h>
@@ -43,19 +44,31 @@ static lcm_t *create_quiet(const char *url, char *why, size_t whylen)
         dup2(fileno(tmp), STDERR_FILENO);
     }
     lcm_t *l = lcm_create(url);
+    /* tcpq's create succeeds without its hub (and every publish would then
+     * try again, printing three lines): a hub is needed now */
+    int no_hub = l && url && !strncmp(url, "tcpq://", 7) && lcm_get_fileno(l) < 0;
+    if (no_hub) {
+        lcm_destroy(l);
+        l = NULL;
+    }
     if (saved >= 0) {
         fflush(stderr);
         dup2(saved, STDERR_FILENO);
         close(saved);
-        /* LCM's "Error: ..." line if any; its multi-line multicast advice
-         * in one line; else its first line */
+        /* LCM's "Error: ..." line (tcpq: its connect error) if any; its
+         * multi-line multicast advice in one line; else its first line */
         char line[200];
-        int first = 1, have_error = 0;
+        int first = !no_hub, have_error = 0;
+        if (no_hub) snprintf(why, whylen, "cannot connect to its hub");
         rewind(tmp);
         while (fgets(line, sizeof line, tmp)) {
             line[strcspn(line, "\r\n")] = '\0';
             if (!line[0] || have_error) continue;
-            if (!strncmp(line, "Error: ", 7)) {
+            const char *c = no_hub ? strstr(line, "connect: ") : NULL;
+            if (c) {
+                snprintf(why, whylen, "cannot connect to its hub: %s", c + 9);
+                have_error = 1;
+            } else if (!strncmp(line, "Error: ", 7)) {
                 snprintf(why, whylen, "%s", line + 7);
                 have_error = 1;
             } else if (strstr(line, "requires a valid multicast route")) {
@@ -72,6 +85,24 @@ static lcm_t *create_quiet(const char *url, char *why, size_t whylen)
 }
 
 static void emit(telem_t *t, const char *channel, int64_t utime, int len); /* below */
+
+/* lcm_publish; for tcpq with liblcm's stderr lines (two on a lost hub)
+ * silenced: the reason goes into live_errno, for the one line at the end. */
+static int publish_live(telem_t *t, const char *channel, int len)
+{
+    if (!t->tcpq || t->quiet_fd < 0) return lcm_publish(t->lcm, channel, t->buf, (unsigned)len);
+    fflush(stderr);
+    int saved = dup(STDERR_FILENO);
+    if (saved >= 0) dup2(t->quiet_fd, STDERR_FILENO);
+    errno = 0;
+    int r = lcm_publish(t->lcm, channel, t->buf, (unsigned)len), e = errno;
+    if (saved >= 0) {
+        dup2(saved, STDERR_FILENO);
+        close(saved);
+    }
+    if (r != 0 && !t->live_errno) t->live_errno = e;
+    return r;
+}
 
 /* The true maze, the seed and the config, once at the start. */
 static void pub_maze(telem_t *t, const sim_t *s, const char *path)
@@ -112,12 +143,59 @@ static void pub_maze(telem_t *t, const sim_t *s, const char *path)
     free(ini);
 }
 
+static void close_quiet(telem_t *t)
+{
+    if (t->quiet_fd >= 0) close(t->quiet_fd);
+    t->quiet_fd = -1;
+}
+
+/* The log: a temporary beside path, renamed over it at the end, or a
+ * device or a pipe itself. 0, or -1 with one line in err (nothing left). */
+static int open_log(telem_t *t, const char *path, char *err, size_t errlen)
+{
+    struct stat st;
+    char why[700];
+    int exists = stat(path, &st) == 0;
+    t->log_in_place = exists && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
+    t->log_out.f = NULL;
+    t->log_out.tmp[0] = '\0';
+    snprintf(t->log_out.path, sizeof t->log_out.path, "%s", path);
+    if (exists && S_ISDIR(st.st_mode)) {
+        snprintf(err, errlen, "%s: cannot write the LCM log: %s", path, strerror(EISDIR));
+        return -1;
+    }
+    if (!t->log_in_place) {
+        if (outfile_open(&t->log_out, path, why, sizeof why) != 0) {
+            const char *reason = strrchr(why, ':'); /* outfile's "PATH: cannot write: REASON" */
+            snprintf(err, errlen, "%s: cannot write the LCM log: %s", path, reason ? reason + 2 : why);
+            return -1;
+        }
+        fclose(t->log_out.f); /* liblcm opens it by name */
+        t->log_out.f = NULL;
+    }
+    errno = 0;
+    t->log = lcm_eventlog_create(t->log_in_place ? path : t->log_out.tmp, "w");
+    if (!t->log) {
+        snprintf(err, errlen, "%s: cannot write the LCM log: %s", path, errno ? strerror(errno) : "unknown error");
+        outfile_abort(&t->log_out);
+        return -1;
+    }
+    return 0;
+}
+
 int telem_open(telem_t *t, const telem_opts_t *o, const sim_t *s, char *err, size_t errlen)
 {
     double hz = o->rate_hz > 0 ? o->rate_hz : TELEM_RATE_HZ;
     t->lcm = NULL;
     t->log = NULL;
-    t->log_path[0] = '\0';
+    t->log_out.tmp[0] = t->log_out.path[0] = '\0';
+    t->log_errno = 0;
+    t->url = o->url;
+    t->tcpq = o->url && !strncmp(o->url, "tcpq://", 7);
+    t->live_lost = 0;
+    t->live_lost_s = 0;
+    t->live_errno = 0;
+    t->quiet_fd = t->tcpq ? open("/dev/null", O_WRONLY | O_CLOEXEC) : -1;
     t->step_us = (uint64_t)llround(s->cfg.step_s * 1e6);
     t->fast_steps = period_steps(hz, s->cfg.step_s);
     t->race_steps = period_steps(TELEM_RACE_HZ, s->cfg.step_s);
@@ -132,8 +210,9 @@ int telem_open(telem_t *t, const telem_opts_t *o, const sim_t *s, char *err, siz
     t->failed = 0;
     t->live_errors = 0;
     t->published = 0;
-    if (o->log_path && strlen(o->log_path) >= sizeof t->log_path) {
+    if (o->log_path && strlen(o->log_path) + 16 >= sizeof t->log_out.path) {
         snprintf(err, errlen, "%.200s...: log file name too long", o->log_path);
+        close_quiet(t);
         return -1;
     }
     /* the URL first: a bad URL leaves an existing log file untouched */
@@ -142,20 +221,15 @@ int telem_open(telem_t *t, const telem_opts_t *o, const sim_t *s, char *err, siz
         t->lcm = create_quiet(o->url[0] ? o->url : NULL, why, sizeof why);
         if (!t->lcm) {
             snprintf(err, errlen, "%s: cannot open the LCM URL: %s", o->url[0] ? o->url : "LCM's default URL", why);
+            close_quiet(t);
             return -1;
         }
     }
-    if (o->log_path) {
-        errno = 0;
-        t->log = lcm_eventlog_create(o->log_path, "w");
-        if (!t->log) {
-            snprintf(err, errlen, "%s: cannot write the LCM log: %s", o->log_path,
-                     errno ? strerror(errno) : "unknown error");
-            if (t->lcm) lcm_destroy(t->lcm);
-            t->lcm = NULL;
-            return -1;
-        }
-        strcpy(t->log_path, o->log_path);
+    if (o->log_path && open_log(t, o->log_path, err, errlen) != 0) {
+        if (t->lcm) lcm_destroy(t->lcm);
+        t->lcm = NULL;
+        close_quiet(t);
+        return -1;
     }
     pub_maze(t, s, o->maze_path);
     return 0;
@@ -168,8 +242,16 @@ static void emit(telem_t *t, const char *channel, int64_t utime, int len)
         t->failed = 1;
         return;
     }
-    /* a live message lost (udpm buffers full) is counted, not fatal */
-    if (t->lcm && lcm_publish(t->lcm, channel, t->buf, (unsigned)len) != 0) t->live_errors++;
+    /* a live message lost (udpm buffers full) is counted, not fatal; a
+     * tcpq hub lost stops the live output (liblcm would try to reconnect,
+     * printing three lines, on every publish) */
+    if (t->lcm && !t->live_lost && publish_live(t, channel, len) != 0) {
+        t->live_errors++;
+        if (t->tcpq && lcm_get_fileno(t->lcm) < 0) {
+            t->live_lost = 1;
+            t->live_lost_s = (double)utime * 1e-6;
+        }
+    }
     if (t->log) {
         lcm_eventlog_event_t ev;
         ev.eventnum = 0; /* numbered by the log */
@@ -178,7 +260,11 @@ static void emit(telem_t *t, const char *channel, int64_t utime, int len)
         ev.datalen = len;
         ev.channel = (char *)channel;
         ev.data = t->buf;
-        if (lcm_eventlog_write_event(t->log, &ev) != 0) t->failed = 1;
+        errno = 0;
+        if (lcm_eventlog_write_event(t->log, &ev) != 0) {
+            if (!t->failed) t->log_errno = errno;
+            t->failed = 1;
+        }
     }
     t->published++;
 }
@@ -365,25 +451,44 @@ void telem_finish(telem_t *t, const sim_t *s)
     if (t->link && t->last_link != s->step) pub_link(t, s);
 }
 
+/* Flush, sync and close the log, then rename its temporary over the
+ * target: 0, or -1 with one line in err (the temporary removed). */
+static int close_log(telem_t *t, char *err, size_t errlen)
+{
+    FILE *f = ((lcm_eventlog_t *)t->log)->f;
+    errno = 0;
+    if (fflush(f) != 0 || ferror(f) || (!t->log_in_place && fsync(fileno(f)) != 0)) {
+        if (!t->failed) t->log_errno = errno;
+        t->failed = 1;
+    }
+    lcm_eventlog_destroy(t->log);
+    t->log = NULL;
+    if (!t->failed && !t->log_in_place && rename(t->log_out.tmp, t->log_out.path) != 0) {
+        t->log_errno = errno;
+        t->failed = 1;
+    }
+    if (!t->log_in_place && t->failed) unlink(t->log_out.tmp);
+    t->log_out.tmp[0] = '\0';
+    if (!t->failed) return 0;
+    snprintf(err, errlen, "%s: writing the LCM log failed: %s%s", t->log_out.path,
+             t->log_errno ? strerror(t->log_errno) : "write error",
+             t->log_in_place ? "" : " (the file there is unchanged)");
+    return -1;
+}
+
 int telem_close(telem_t *t, char *err, size_t errlen)
 {
     int rc = 0;
-    if (t->log) {
-        FILE *f = ((lcm_eventlog_t *)t->log)->f;
-        if (fflush(f) != 0 || ferror(f)) t->failed = 1;
-        lcm_eventlog_destroy(t->log);
-        t->log = NULL;
-        if (t->failed) {
-            struct stat st;
-            int regular = stat(t->log_path, &st) == 0 && S_ISREG(st.st_mode);
-            snprintf(err, errlen, "%s: writing the LCM log failed%s", t->log_path, regular ? "; removed" : "");
-            if (regular) unlink(t->log_path); /* never a device or a pipe */
+    if (t->log) rc = close_log(t, err, errlen);
+    if (t->lcm) {
+        if (rc == 0 && t->live_lost) {
+            snprintf(err, errlen, "%s: the connection to the LCM hub was lost at %.3f s (%s): live telemetry stopped there",
+                     t->url, t->live_lost_s, t->live_errno ? strerror(t->live_errno) : "send failed");
             rc = -1;
         }
-    }
-    if (t->lcm) {
         lcm_destroy(t->lcm);
         t->lcm = NULL;
     }
+    close_quiet(t);
     return rc;
 }

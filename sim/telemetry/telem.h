@@ -14,11 +14,18 @@
  * period (rate rounded to a whole number of steps), and once more at the end
  * (telem_finish) unless the last step was one of them.
  *
- * Outputs: a live LCM URL (lcm_create; "" = LCM's default, udpm with ttl=0)
- * and/or a log file written with LCM's event-log API (the format of
- * lcm-logger and the file:// provider) whose event timestamps are the
- * simulation time, so a log replays at contest speed whatever the simulation
- * speed and the same run gives the same log bytes.
+ * Outputs: a live LCM URL (lcm_create; "" = LCM's default, udpm with ttl=0;
+ * tcpq:// must reach its hub at the start, and a hub lost later stops the
+ * live output with one error at the end instead of liblcm's reconnection
+ * messages on every publish) and/or a log file written with LCM's
+ * event-log API (the format of lcm-logger and the file:// provider) whose
+ * event timestamps are the simulation time, so a log replays at contest
+ * speed whatever the simulation speed and the same run gives the same log
+ * bytes. The log is written to a temporary beside it and renamed over the
+ * target at telem_close (sim/io/outfile.h): a failed or killed run never
+ * leaves a half log at the path nor spoils an existing one (a killed run
+ * leaves its temporary PATH.tmp.XXXXXX; a device or a pipe as the target
+ * is written directly).
  * Telemetry only reads the simulation: a run is the same with or without it.
  */
 #ifndef TELEM_H
@@ -27,6 +34,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "io/outfile.h"
 #include "world/sim.h"
 
 #define TELEM_RATE_HZ 100.0 /* default rate of the high-rate channels, Hz */
@@ -45,7 +53,15 @@ typedef struct {
 typedef struct {
     void *lcm;            /* lcm_t *, NULL = no live output */
     void *log;            /* lcm_eventlog_t *, NULL = no log */
-    char log_path[4096];
+    outfile_t log_out;    /* the log's temporary (renamed over the target at the end) */
+    int log_in_place;     /* the target is a device or a pipe: written directly */
+    int log_errno;        /* errno of the first failed log write, 0 = unknown */
+    const char *url;      /* the live URL (o->url) */
+    int tcpq;             /* the live URL is tcpq:// (one hub connection) */
+    int live_lost;        /* tcpq: the hub connection was lost: live output stopped */
+    double live_lost_s;   /* sim time it was lost */
+    int live_errno;       /* why (errno of the failed publish), 0 = unknown */
+    int quiet_fd;         /* tcpq: /dev/null, liblcm's stderr during a publish; -1 none */
     uint64_t fast_steps;  /* period of the high-rate channels, physics steps */
     uint64_t race_steps;  /* period of MM_RACE, physics steps */
     uint64_t link_steps;  /* period of MM_LINK, physics steps */
@@ -72,8 +88,9 @@ void telem_step(telem_t *t, const sim_t *s);
 /* At the end of the run: the last state of every periodic channel and any
  * belief not yet sent. */
 void telem_finish(telem_t *t, const sim_t *s);
-/* Close the outputs. Returns 0, or -1 with one line in err if a write
- * failed (the log file is then removed: no half-written log is left). */
+/* Close the outputs; the log's temporary becomes the log. Returns 0, or -1
+ * with one line in err if a log write failed (the temporary is removed, an
+ * older log at the path stays) or a tcpq hub was lost during the run. */
 int telem_close(telem_t *t, char *err, size_t errlen);
 
 /* Classic flood on map m: cell distances to the goal cells through walls

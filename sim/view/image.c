@@ -85,30 +85,27 @@ void image_text(image_t *im, int x, int y, int scale, uint32_t rgb, const char *
         }
 }
 
-int image_write_png_rows(const uint8_t *rgb, int w, int h, int bottom_up, const char *path, char *err, size_t errlen)
+/* The PNG into f (name for err): 0, or -1 with one line in err. */
+static int png_to(const uint8_t *rgb, int w, int h, int bottom_up, FILE *f, const char *name, char *err, size_t errlen)
 {
-    outfile_t o;
-    if (outfile_open(&o, path, err, errlen) != 0) return -1;
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
     png_infop info = png ? png_create_info_struct(png) : NULL;
     png_bytep *rows = malloc((size_t)h * sizeof *rows);
     if (!png || !info || !rows) {
         png_destroy_write_struct(&png, &info);
         free(rows);
-        outfile_abort(&o);
-        snprintf(err, errlen, "%s: out of memory", path);
+        snprintf(err, errlen, "%s: out of memory", name);
         return -1;
     }
     if (setjmp(png_jmpbuf(png))) {
         png_destroy_write_struct(&png, &info);
         free(rows);
-        outfile_abort(&o);
-        snprintf(err, errlen, "%s: cannot write PNG", path);
+        snprintf(err, errlen, "%s: cannot write PNG", name);
         return -1;
     }
     for (int y = 0; y < h; y++)
         rows[y] = (png_bytep)(rgb + (size_t)(bottom_up ? h - 1 - y : y) * (size_t)w * 3);
-    png_init_io(png, o.f);
+    png_init_io(png, f);
     png_set_IHDR(png, info, (png_uint_32)w, (png_uint_32)h, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
@@ -116,7 +113,23 @@ int image_write_png_rows(const uint8_t *rgb, int w, int h, int bottom_up, const 
     png_write_end(png, NULL);
     png_destroy_write_struct(&png, &info);
     free(rows);
+    return 0;
+}
+
+int image_write_png_rows(const uint8_t *rgb, int w, int h, int bottom_up, const char *path, char *err, size_t errlen)
+{
+    outfile_t o;
+    if (outfile_open(&o, path, err, errlen) != 0) return -1;
+    if (png_to(rgb, w, h, bottom_up, o.f, path, err, errlen) != 0) {
+        outfile_abort(&o);
+        return -1;
+    }
     return outfile_commit(&o, err, errlen);
+}
+
+int image_write_png_file(const image_t *im, FILE *f, const char *name, char *err, size_t errlen)
+{
+    return png_to(im->px, im->w, im->h, 0, f, name, err, errlen);
 }
 
 int image_write_png(const image_t *im, const char *path, char *err, size_t errlen)

@@ -6,6 +6,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 typedef struct {
     int w, h;    /* pixels */
@@ -29,5 +30,8 @@ void image_text(image_t *im, int x, int y, int scale, uint32_t rgb, const char *
 int image_write_png(const image_t *im, const char *path, char *err, size_t errlen);
 /* Same for a raw bottom-up RGB buffer (as glReadPixels returns it). */
 int image_write_png_rows(const uint8_t *rgb, int w, int h, int bottom_up, const char *path, char *err, size_t errlen);
+/* The PNG into an open stream f (an outfile's temporary; name for err).
+ * Returns 0, or -1 with one line in err. */
+int image_write_png_file(const image_t *im, FILE *f, const char *name, char *err, size_t errlen);
 
 #endif

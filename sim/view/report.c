@@ -214,7 +214,7 @@ static double px_x(const layout_t *L, double cells) { return L->ox + cells * L->
 static double px_y(const layout_t *L, double cells) { return L->oy - cells * L->cp; }
 
 static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_t *s, const maze_t *learned,
-                 const char *title)
+                 const solve_path_t *path, const char *title)
 {
     const maze_t *m = r->maze;
     double cp = L->cp, cell_m = r->cell_m;
@@ -227,11 +227,10 @@ static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_t 
             c_rect(c, px_x(L, x), px_y(L, y + 1), px_x(L, x + 1), px_y(L, y), col);
         }
 
-    /* final run path: the best path on the learned map (or the truth) */
-    static solve_path_t path;
-    if (solve_best(learned ? learned : m, 0, &path) == 0)
-        for (int i = 0; i + 1 < path.len; i++) {
-            maze_cell_t a = path.path[i], b = path.path[i + 1];
+    /* final run path (NULL: the run has none) */
+    if (path)
+        for (int i = 0; i + 1 < path->len; i++) {
+            maze_cell_t a = path->path[i], b = path->path[i + 1];
             c_line(c, px_x(L, maze_x(m, a) + 0.5), px_y(L, maze_y(m, a) + 0.5), px_x(L, maze_x(m, b) + 0.5),
                    px_y(L, maze_y(m, b) + 0.5), cp * 0.4, C_PATH);
         }
@@ -331,13 +330,14 @@ static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_t 
     ty += LINE_PX / 2;
     c_text(c, MARGIN_PX, ty, C_TEXT, buf);
     ty += LINE_PX + LINE_PX / 2;
-    static const struct { uint32_t col; const char *name; } legend[] = {
-        { C_VISITED, "visited" }, { C_LEARNED, "learned wall" }, { C_TRUE_WALL, "unlearned wall" },
+    const struct { uint32_t col; const char *name; } legend[] = {
+        { C_VISITED, "visited" }, { C_LEARNED, "learned wall" }, { C_TRUE_WALL, learned ? "unlearned wall" : "wall" },
         { C_WRONG, "wrong wall" }, { C_PATH, "final path" },
     };
     int lx = MARGIN_PX;
     for (size_t i = 0; i < sizeof legend / sizeof legend[0]; i++) {
         if (!learned && (legend[i].col == C_LEARNED || legend[i].col == C_WRONG)) continue;
+        if (!path && legend[i].col == C_PATH) continue;
         int item = 20 + font_text_width(legend[i].name, TEXT_SCALE);
         if (lx > MARGIN_PX && lx + item > L->w - MARGIN_PX) { /* wrap */
             lx = MARGIN_PX;
@@ -392,8 +392,9 @@ static int layout_make(layout_t *L, const report_t *r, const sim_t *s, const cha
     return 0;
 }
 
-static int write_json(const report_t *r, const sim_t *s, const char *path, const char *png, const char *svg,
-                      const char *title, char *err, size_t errlen)
+/* The JSON file into f: 0, or -1. */
+static int write_json(const report_t *r, const sim_t *s, const solve_path_t *final, FILE *f, const char *png,
+                      const char *svg, const char *title)
 {
     const race_t *rc = &s->race;
     json_t *laps = json_array();
@@ -406,57 +407,64 @@ static int write_json(const report_t *r, const sim_t *s, const char *path, const
     json_t *j = json_pack("{s:s, s:f, s:o, s:i, s:f, s:s, s:s, s:i}", "title", title, "sim_time_s", sim_time_s(s),
                           "laps", laps, "visited_cells", visited, "top_speed_m_s", r->vmax, "png", png, "svg", svg,
                           "trajectory_samples", (int)r->n);
+    json_object_set_new(j, "final_path_cells", final ? json_integer(final->len) : json_null()); /* null: none drawn */
     json_object_set_new(j, "best_run_s", rc->best >= 0 ? json_real(rc->laps[rc->best].end_s - rc->laps[rc->best].start_s)
                                                        : json_null());
-    outfile_t o;
-    int rcode = -1;
-    if (outfile_open(&o, path, err, errlen) == 0) {
-        if (json_dumpf(j, o.f, JSON_INDENT(2) | JSON_REAL_PRECISION(10)) == 0 && fputc('\n', o.f) != EOF)
-            rcode = outfile_commit(&o, err, errlen);
-        else {
-            outfile_abort(&o);
-            snprintf(err, errlen, "%s: cannot write", path);
-        }
-    }
+    int rcode = j && json_dumpf(j, f, JSON_INDENT(2) | JSON_REAL_PRECISION(10)) == 0 && fputc('\n', f) != EOF ? 0 : -1;
     json_decref(j);
     return rcode;
 }
 
-int report_write(const report_t *r, const sim_t *s, const maze_t *learned, const char *png_path, const char *title,
-                 char *err, size_t errlen)
+/* The three files' temporaries written and closed: 0, or -1 with one line in err. */
+static int write_three(outfile_t *o, const report_t *r, const sim_t *s, const maze_t *learned,
+                       const solve_path_t *path, const char *title, char *err, size_t errlen)
 {
     layout_t L;
-    char svg_path[4096], json_path[4096];
-    report_sibling(png_path, ".svg", svg_path, sizeof svg_path);
-    report_sibling(png_path, ".json", json_path, sizeof json_path);
     if (layout_make(&L, r, s, title) != 0) {
-        snprintf(err, errlen, "%s: out of memory", png_path);
+        snprintf(err, errlen, "%s: out of memory", o[0].path);
         return -1;
     }
-    int rc = -1;
     image_t im;
     if (image_init(&im, L.w, L.h, C_BG) != 0) {
-        snprintf(err, errlen, "%s: out of memory", png_path);
+        snprintf(err, errlen, "%s: out of memory", o[0].path);
         free(L.table);
         return -1;
     }
     canvas_t cv = { &im, NULL };
-    draw(&cv, &L, r, s, learned, title);
-    rc = image_write_png(&im, png_path, err, errlen);
+    draw(&cv, &L, r, s, learned, path, title);
+    int rc = image_write_png_file(&im, o[0].f, o[0].path, err, errlen);
     image_free(&im);
-
-    outfile_t o;
-    if (rc == 0 && outfile_open(&o, svg_path, err, errlen) == 0) {
-        fprintf(o.f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" viewBox=\"0 0 %d %d\">\n",
+    if (rc == 0) {
+        fprintf(o[1].f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" viewBox=\"0 0 %d %d\">\n",
                 L.w, L.h, L.w, L.h);
-        canvas_t sv = { NULL, o.f };
-        draw(&sv, &L, r, s, learned, title);
-        fputs("</svg>\n", o.f);
-        rc = outfile_commit(&o, err, errlen);
-    } else {
-        rc = -1;
+        canvas_t sv = { NULL, o[1].f };
+        draw(&sv, &L, r, s, learned, path, title);
+        fputs("</svg>\n", o[1].f);
+        if (write_json(r, s, path, o[2].f, o[0].path, o[1].path, title) != 0) {
+            snprintf(err, errlen, "%s: cannot write", o[2].path);
+            rc = -1;
+        }
     }
-    if (rc == 0) rc = write_json(r, s, json_path, png_path, svg_path, title, err, errlen);
     free(L.table);
+    for (int i = 0; i < 3 && rc == 0; i++) rc = outfile_finish(&o[i], err, errlen);
+    return rc;
+}
+
+int report_write(const report_t *r, const sim_t *s, const maze_t *learned, const maze_t *path_on, const char *png_path,
+                 const char *title, char *err, size_t errlen)
+{
+    static solve_path_t best;
+    const solve_path_t *path = path_on && solve_best(path_on, 0, &best) == 0 ? &best : NULL;
+    char paths[3][4096];
+    outfile_t o[3];
+    int n = 0;
+    snprintf(paths[0], sizeof paths[0], "%s", png_path);
+    report_sibling(png_path, ".svg", paths[1], sizeof paths[1]);
+    report_sibling(png_path, ".json", paths[2], sizeof paths[2]);
+    while (n < 3 && outfile_open(&o[n], paths[n], err, errlen) == 0) n++;
+    int rc = n == 3 ? write_three(o, r, s, learned, path, title, err, errlen) : -1;
+    /* all three written before any is renamed: all three files, or none */
+    for (int i = 0; i < 3 && rc == 0; i++) rc = outfile_rename(&o[i], err, errlen);
+    for (int i = 0; i < n; i++) outfile_abort(&o[i]); /* what is left after a failure */
     return rc;
 }

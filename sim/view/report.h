@@ -1,6 +1,6 @@
 /* report.h - a picture of every run: a top-down view of the maze with the
  * true walls, the walls the mouse learned, the cells it visited, its
- * trajectory coloured by speed, the final run path and the lap table as
+ * trajectory coloured by speed, the final run path (when the run has one) and the lap table as
  * text. Written as PNG (libpng), SVG beside it (same drawing) and JSON
  * beside it (the lap table), each atomically.
  *
@@ -30,11 +30,15 @@ void report_set_cells(report_t *r, const char *colours, const char *texts, size_
 
 /* Write png_path, and beside it the same name with .svg and .json
  * (a trailing .png is replaced). learned = the mouse's map, or NULL when
- * the driver does not map (then the final path is the true maze's best).
- * title is one line of text (maze, seed, driver). Returns 0, or -1 with one
- * line in err; nothing is left half written. */
-int report_write(const report_t *r, const sim_t *s, const maze_t *learned, const char *png_path, const char *title,
-                 char *err, size_t errlen);
+ * the run has none (an MCU over the link, the scripted driver: true walls
+ * only); path_on = the map the final run path is the best path on (the
+ * mouse's map; the true maze for the scripted driver, which drives it), or
+ * NULL when the run has no final path (an MCU: none is drawn, and the
+ * JSON's final_path_cells is null). title is one line of text (maze, seed,
+ * driver). Returns 0, or -1 with one line in err; nothing is left half
+ * written. */
+int report_write(const report_t *r, const sim_t *s, const maze_t *learned, const maze_t *path_on, const char *png_path,
+                 const char *title, char *err, size_t errlen);
 
 /* The .svg / .json path beside png_path, into out. */
 void report_sibling(const char *png_path, const char *ext, char *out, size_t len);

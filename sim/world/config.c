@@ -73,6 +73,10 @@ static const cfgkey_t keys[] = {
     K("tof", tof_y_m, 0.050, -0.15, 0.15, "m", "side sensors near the front edge"),
     K("tof", tof_front_y_m, 0.055, -0.15, 0.15, "m", "front sensor inside the front edge"),
     K("tof", tof_side_angle_deg, 45, 0, 90, "deg", "paper: corner sensors at 45 degrees"),
+    /* the u16 65535 of compat distances stands for this; a reading at or beyond it goes as a timeout
+     * (inih reads lines of at most 200 characters: the printed line must fit) */
+    K("link", compat_range_m, 1.0, 0.05, 10, "m",
+      "paper's Unity simulator: its TimeOfFlight asset has range 1.0 m, its Arduino library converts with 1.0 m"),
     /* Asymmetries: each 0 by default (a symmetric robot drives straight);
      * set one to see the veer it alone causes. */
     K("asymmetry", wheel_d_diff_m, 0, -0.005, 0.005, "m", "right wheel diameter minus left (the mean stays robot.wheel_d_m)"),

@@ -49,6 +49,8 @@ typedef struct {
     double tof_x_m, tof_y_m;  /* side sensors' position on the body (x = +-) */
     double tof_front_y_m;     /* front sensor, on the centre line */
     double tof_side_angle_deg; /* side sensors point this far out from ahead */
+    /* [link] */
+    double compat_range_m;  /* compat protocol's distance scale: 65535 = this distance (--protocol compat) */
     /* [asymmetry]: right minus left, 0 = symmetric */
     double wheel_d_diff_m, motor_k_diff_pct, tyre_mu_diff, com_x_m, com_y_m;
     /* [variation]: per-seed spread of the asymmetries */

@@ -10,7 +10,7 @@ void MMLink::begin(Stream &stream, uint8_t protocol, uint16_t tick, uint16_t ran
     s = &stream;
     proto = protocol == MM_COMPAT ? MM_COMPAT : MM_FRAMED;
     tick_hz = tick;
-    range_mm = range ? range : WIRE_COMPAT_RANGE_MM;
+    range_mm = range ? range : proto == MM_COMPAT ? WIRE_COMPAT_RANGE_MM : WIRE_TOF_RANGE_MM;
     if (proto == MM_COMPAT) wire_compat_rx_init(&dec.compat, range_mm);
     else wire_decoder_init(&dec.framed);
     wire_compat_tx_init(&ctx, range_mm);

@@ -14,8 +14,11 @@ enum { MM_TOF_LEFT = 0, MM_TOF_FRONT = 1, MM_TOF_RIGHT = 2, MM_TOF_COUNT = 3 };
 
 class MMLink {
 public:
-    /* tick_hz goes in HELLO (framed); range_mm scales compat distances */
-    void begin(Stream &s, uint8_t protocol, uint16_t tick_hz, uint16_t range_mm = WIRE_COMPAT_RANGE_MM);
+    /* tick_hz goes in HELLO (framed). range_mm: framed, the ToF range sent in
+     * HELLO; compat, the distance that 65535 stands for; 0 = the protocol's
+     * default (framed WIRE_TOF_RANGE_MM, compat WIRE_COMPAT_RANGE_MM: the
+     * paper's library's 1.0 m, which the simulator's compat mode follows) */
+    void begin(Stream &s, uint8_t protocol, uint16_t tick_hz, uint16_t range_mm = 0);
     /* Decode every byte waiting in the Stream; answers the sim's HELLO (and
      * logs one line if its protocol version or ToF range differs). */
     void poll();
@@ -38,7 +41,7 @@ private:
     void logMismatch(const wire_msg_t &hello);
     Stream *s = nullptr;
     uint8_t proto = MM_FRAMED;
-    uint16_t tick_hz = 0, range_mm = WIRE_COMPAT_RANGE_MM;
+    uint16_t tick_hz = 0, range_mm = WIRE_TOF_RANGE_MM;
     union { /* one decoder at a time: saves SRAM on the Uno */
         wire_decoder_t framed;
         wire_compat_rx_t compat;

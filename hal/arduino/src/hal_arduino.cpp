@@ -56,7 +56,7 @@ void hal_encoder_reset(void)
 
 hal_distance_t hal_distance(uint8_t sensor)
 {
-    hal_distance_t d = { WIRE_COMPAT_RANGE_MM, 1, 0 };
+    hal_distance_t d = { WIRE_TOF_RANGE_MM, 1, 0 }; /* a bad index reads as a timeout */
     if (sensor >= HAL_TOF_COUNT) return d;
     ATOMIC_BLOCK(ATOMIC_RESTORESTATE)
     {

@@ -16,11 +16,11 @@ double tof_gauss(tof_t *t) { return rng_gauss(&t->rng); }
 tof_reading_t tof_measure(tof_t *t, double true_m)
 {
     tof_reading_t out = { t->range_m, 1 };
-    if (true_m < 0.0 || true_m > t->range_m) return out;
+    if (true_m < 0.0 || true_m >= t->range_m) return out;
     double d = true_m < t->blind_m ? t->blind_m : true_m;
     d += t->cv * d * tof_gauss(t);
     if (d < 0.0) d = 0.0;
-    if (d > t->range_m) d = t->range_m;
+    if (d >= t->range_m) return out; /* at or beyond the range: a timeout, as the paper's Unity sensor */
     out.dist_m = d;
     out.timeout = 0;
     return out;

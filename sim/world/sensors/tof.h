@@ -1,8 +1,11 @@
 /* tof.h - time-of-flight distance sensor model (after the ray cast).
  *
  * true distance d from the ray cast -> clamp to at least the blind spot ->
- * add Gaussian noise, sigma = cv * d -> clamp to [0, range]. Nothing hit
- * within range = timeout, reported as a flag (and the range as distance).
+ * add Gaussian noise, sigma = cv * d -> clamp to at least 0. Nothing hit
+ * within range, or a reading at or beyond the range (before or after the
+ * noise) = timeout, reported as a flag (and the range as distance): a
+ * reading is always below the range (the paper's Unity simulator sends a
+ * reading at or beyond its range as a timeout; issue 15).
  * Each sensor has its own noise stream (world/rng.h, from the run seed and
  * the sensor index), so adding a sensor or reading one more often never
  * changes another one's noise. */
