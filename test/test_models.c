@@ -92,6 +92,46 @@ static void test_motor_battery_sag(void **state)
     assert_near(m.i_a, c.battery_v / (c.r_ohm + c.battery_r_ohm), 0.01);
 }
 
+/* A battery resistance far above the motor's (100 ohm against 16.7):
+ * the current settles at V/(R + R_b) without overshoot. The sag from the
+ * step before overshot by R_b/(R + L/dt) = 5.7 times and grew (issue 15). */
+static void test_motor_battery_sag_stable(void **state)
+{
+    (void)state;
+    simcfg_t c = cfg;
+    c.battery_r_ohm = 100.0;
+    motor_t m;
+    motor_init(&m, &c);
+    double last = 0;
+    for (int i = 0; i < 200; i++) {
+        motor_step(&m, MOTOR_CMD_MAX, 0.0, 0.001);
+        assert_true(m.i_a >= last && m.i_a <= c.battery_v / (c.r_ohm + c.battery_r_ohm) * 1.000001);
+        last = m.i_a;
+    }
+    assert_near(m.i_a, c.battery_v / (c.r_ohm + c.battery_r_ohm), 1e-6);
+    assert_near(m.v_applied, c.battery_v * c.r_ohm / (c.r_ohm + c.battery_r_ohm), 1e-6);
+}
+
+/* motor_damping and motor_free_speed describe motor_step's torque:
+ * T(w) = damping * (free - w), at any command and state. */
+static void test_motor_law(void **state)
+{
+    (void)state;
+    simcfg_t c = cfg;
+    c.battery_r_ohm = 1.5;
+    motor_t m, probe;
+    motor_init(&m, &c);
+    const int cmds[] = { 1023, 300, -700, 0, -1023 };
+    for (int k = 0; k < 5; k++) {
+        double w = 40.0 - 25.0 * k, dt = 0.001;
+        double d = motor_damping(&m, cmds[k], dt), f = motor_free_speed(&m, cmds[k], dt);
+        probe = m;
+        double t = motor_step(&probe, cmds[k], w, dt);
+        assert_near(t, d * (f - w), 1e-9);
+        motor_step(&m, cmds[k], w, dt); /* a state with current for the next command */
+    }
+}
+
 static void test_encoder_one_revolution(void **state)
 {
     (void)state;
@@ -181,6 +221,8 @@ int main(void)
         cmocka_unit_test(test_motor_first_step_exact),
         cmocka_unit_test(test_motor_time_constant),
         cmocka_unit_test(test_motor_battery_sag),
+        cmocka_unit_test(test_motor_battery_sag_stable),
+        cmocka_unit_test(test_motor_law),
         cmocka_unit_test(test_encoder_one_revolution),
         cmocka_unit_test(test_encoder_no_drift),
         cmocka_unit_test(test_tof_noise_statistics),

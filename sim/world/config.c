@@ -68,6 +68,18 @@ static const cfgkey_t keys[] = {
 
 #define NKEYS (sizeof keys / sizeof keys[0])
 
+size_t config_key_count(void) { return NKEYS; }
+
+int config_key_info(size_t i, const char **section, const char **key, double *min, double *max)
+{
+    if (i >= NKEYS) return -1;
+    *section = keys[i].section;
+    *key = keys[i].key;
+    *min = keys[i].min;
+    *max = keys[i].max;
+    return 0;
+}
+
 static double *field(simcfg_t *c, const cfgkey_t *k) { return (double *)((char *)c + k->offset); }
 static double value(const simcfg_t *c, const cfgkey_t *k) { return *(const double *)((const char *)c + k->offset); }
 

@@ -56,6 +56,11 @@ typedef struct {
     double time_limit_s;    /* contest limit */
 } simcfg_t;
 
+/* The key table (what --print-config lists), for tests: how many keys,
+ * and the i-th key's section, name and range. 0, or -1 past the end. */
+size_t config_key_count(void);
+int config_key_info(size_t i, const char **section, const char **key, double *min, double *max);
+
 /* The defaults (the paper's robot). */
 void config_defaults(simcfg_t *c);
 

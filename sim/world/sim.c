@@ -35,6 +35,7 @@ int sim_init(sim_t *s, const simcfg_t *c, const maze_t *m, uint64_t seed)
         s->tof_count[i] = 0;
     }
     s->tof_enabled = 1;
+    s->diverged = 0;
     race_init(&s->race, m, cell, c->time_limit_s);
     s->step = 0;
     return 0;
@@ -48,13 +49,39 @@ void sim_free(sim_t *s)
 
 double sim_time_s(const sim_t *s) { return (double)s->step * s->cfg.step_s; }
 
+/* The motors' torques over one ODE step. motor_step's torque is
+ * damping * (free speed - w), explicit in the wheel speed w of the step
+ * before. Damping up to J/(2*dt) stays explicit, J the inertia the torque
+ * turns (a free wheel then settles without overshoot): all of it for the
+ * default robot. The rest goes to ODE as an implicit damper towards the
+ * free speed, on the speed at the end of the step: stable for any motor. */
+static void step_motors(sim_t *s, double dt)
+{
+    double torque[2], damping[2], free[2];
+    double explicit_max = 0.5 * world_hinge_inertia(s->world) / dt; /* N*m*s/rad */
+    for (int i = 0; i < 2; i++) {
+        double all = motor_damping(&s->motor[i], s->cmd[i], dt);
+        free[i] = motor_free_speed(&s->motor[i], s->cmd[i], dt);
+        torque[i] = motor_step(&s->motor[i], s->cmd[i], world_wheel_rate(s->world, i), dt);
+        damping[i] = fmax(0.0, all - explicit_max);
+        if (damping[i] > 0) torque[i] *= explicit_max / all; /* the explicit share */
+    }
+    world_step_motors(s->world, torque, damping, free);
+    for (int i = 0; i < 2; i++)
+        if (damping[i] > 0)
+            motor_set_torque(&s->motor[i], s->cmd[i], torque[i] + damping[i] * (free[i] - world_wheel_rate(s->world, i)));
+}
+
 void sim_step(sim_t *s)
 {
     double dt = s->cfg.step_s;
-    double tl = motor_step(&s->motor[WORLD_LEFT], s->cmd[WORLD_LEFT], world_wheel_rate(s->world, WORLD_LEFT), dt);
-    double tr = motor_step(&s->motor[WORLD_RIGHT], s->cmd[WORLD_RIGHT], world_wheel_rate(s->world, WORLD_RIGHT), dt);
-    world_step(s->world, tl, tr);
+    if (s->diverged) return;
+    step_motors(s, dt);
     s->step++;
+    if (!world_sane(s->world)) {
+        s->diverged = 1;
+        return;
+    }
     for (int i = 0; i < 2; i++) encoder_update(&s->encoder[i], world_wheel_angle(s->world, i));
     uint64_t period = (uint64_t)llround(s->cfg.tof_period_s / dt);
     if (period == 0) period = 1;

@@ -29,6 +29,7 @@ struct world {
     int touching, touched_last;
     unsigned collisions;
     double ray_best;
+    double hinge_inertia; /* what a hinge torque turns (world_hinge_inertia), kg*m^2 */
 };
 
 static int ode_ready;
@@ -121,6 +122,9 @@ static void build_robot(world_t *w, double x, double y, double heading)
         if (c->rotor_inertia_kgm2 > 0) /* rotor inertia reflected through the gearbox: J * N^2 */
             m.I[2 * 4 + 2] += c->rotor_inertia_kgm2 * c->gear_ratio * c->gear_ratio;
         dBodySetMass(w->wheel[s], &m);
+        /* a hinge torque turns the wheel one way and the chassis (pitch,
+         * about the axle's direction; both wheels at once) the other */
+        w->hinge_inertia = 1.0 / (1.0 / m.I[2 * 4 + 2] + 2.0 / mb.I[0]);
         dBodySetPosition(w->wheel[s], ww[0], ww[1], ww[2]);
         dRFromAxisAndAngle(r2, 0, 1, 0, M_PI / 2);
         dMultiply0(r3, rot, r2, 3, 3, 3);
@@ -266,12 +270,22 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
     }
 }
 
-void world_step(world_t *w, double torque_left_nm, double torque_right_nm)
+void world_step_motors(world_t *w, const double torque_nm[2], const double damping_nm_s[2], const double free_rad_s[2])
 {
-    /* +T on body1 (chassis), -T on body2 (wheel): the wheel turns forward
-     * and the chassis takes the reaction */
-    dJointAddHingeTorque(w->hinge[WORLD_LEFT], torque_left_nm);
-    dJointAddHingeTorque(w->hinge[WORLD_RIGHT], torque_right_nm);
+    for (int s = 0; s < 2; s++) {
+        /* +T on body1 (chassis), -T on body2 (wheel): the wheel turns
+         * forward and the chassis takes the reaction */
+        dJointAddHingeTorque(w->hinge[s], torque_nm[s]);
+        /* the damper as the hinge's motor row driving the rate to
+         * free_rad_s with constraint force mixing 1/damping: ODE solves
+         * J*v = vel - CFM*lambda, i.e. lambda = damping * (free - the
+         * rate at the end of the step), implicitly, with the reaction on
+         * the chassis, no force limit */
+        int on = damping_nm_s[s] > 0;
+        dJointSetHingeParam(w->hinge[s], dParamVel, on ? free_rad_s[s] : 0);
+        dJointSetHingeParam(w->hinge[s], dParamFMax, on ? dInfinity : 0);
+        if (on) dJointSetHingeParam(w->hinge[s], dParamCFM, 1.0 / damping_nm_s[s]);
+    }
     w->touching = 0;
     dSpaceCollide(w->top, w, near_cb);
     dWorldQuickStep(w->world, w->cfg.step_s);
@@ -373,8 +387,28 @@ void world_place(world_t *w, double x_m, double y_m, double heading_rad, const d
     }
 }
 
+void world_step(world_t *w, double torque_left_nm, double torque_right_nm)
+{
+    const double t[2] = { torque_left_nm, torque_right_nm }, none[2] = { 0, 0 };
+    world_step_motors(w, t, none, none);
+}
+
+double world_hinge_inertia(const world_t *w) { return w->hinge_inertia; }
 int world_touching(const world_t *w) { return w->touched_last; }
 unsigned world_collisions(const world_t *w) { return w->collisions; }
+
+static int body_sane(dBodyID b)
+{
+    const dReal *p = dBodyGetPosition(b), *v = dBodyGetLinearVel(b), *a = dBodyGetAngularVel(b);
+    for (int k = 0; k < 3; k++) /* written so that a NaN fails too */
+        if (!(fabs(p[k]) < WORLD_SANE_M && fabs(v[k]) < WORLD_SANE_M_S && fabs(a[k]) < WORLD_SANE_RAD_S)) return 0;
+    return 1;
+}
+
+int world_sane(const world_t *w)
+{
+    return body_sane(w->chassis) && body_sane(w->wheel[0]) && body_sane(w->wheel[1]);
+}
 
 void world_set_centre_post(world_t *w, int on)
 {

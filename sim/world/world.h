@@ -30,6 +30,15 @@ void world_destroy(world_t *w);
 /* One physics step of c->step_s with these output-shaft torques (N*m,
  * positive drives forward); the chassis gets the reaction torques. */
 void world_step(world_t *w, double torque_left_nm, double torque_right_nm);
+/* The same with a damper per wheel on top: output-shaft torque
+ * torque_nm + damping_nm_s * (free_rad_s - w), w the wheel's rate
+ * (world_wheel_rate) at the end of the step, solved implicitly by ODE
+ * (stable for any damping, N*m*s/rad; 0 = none). */
+void world_step_motors(world_t *w, const double torque_nm[2], const double damping_nm_s[2], const double free_rad_s[2]);
+/* The inertia a wheel's motor torque meets, kg*m^2: the wheel about its
+ * axle (with the rotor's) in series with the chassis pitching about the
+ * axle's direction under both wheels' reactions: 1/J = 1/J_wheel + 2/J_chassis. */
+double world_hinge_inertia(const world_t *w);
 
 /* Body centre and heading; speed along the heading (m/s) and yaw rate. */
 void world_pose(const world_t *w, double *x_m, double *y_m, double *heading_rad);
@@ -61,6 +70,14 @@ void world_place(world_t *w, double x_m, double y_m, double heading_rad, const d
  * last step, and how many separate contact episodes so far. */
 int world_touching(const world_t *w);
 unsigned world_collisions(const world_t *w);
+/* 0 once the robot's state has left what any run in the config's ranges
+ * reaches (a position beyond WORLD_SANE_M, a speed beyond
+ * WORLD_SANE_M_S, a spin beyond WORLD_SANE_RAD_S, or not a number): the
+ * integration diverged, and ODE's next steps would abort the process. */
+#define WORLD_SANE_M 1e4       /* m */
+#define WORLD_SANE_M_S 1e5     /* m/s */
+#define WORLD_SANE_RAD_S 1e7   /* rad/s; a free wheel's top speed is at most 5e6 */
+int world_sane(const world_t *w);
 
 /* The post in the middle of the maze (the goal's centre post). */
 void world_set_centre_post(world_t *w, int on);
