@@ -96,8 +96,8 @@ $(B)/test/test_wire_rx14: test/test_wire.c $(B)/libmm_san.a test/wire_vectors.c 
 	  $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
 # The flood against its reference again with the AVR's 16x16 maximum, where
 # maze_cell_t is uint8_t (the host library is built for 32x32)
-FLOOD16_SRC := test/test_flood_ref.c firmware/flood.c firmware/maze.c sim/maze/mazefile.c
-$(B)/test/test_flood_ref16: $(FLOOD16_SRC) $(wildcard firmware/*.h) sim/maze/mazefile.h | deps
+FLOOD16_SRC := test/test_flood_ref.c firmware/flood.c firmware/maze.c sim/maze/mazefile.c sim/io/infile.c
+$(B)/test/test_flood_ref16: $(FLOOD16_SRC) $(wildcard firmware/*.h) sim/maze/mazefile.h sim/io/infile.h | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) -Ifirmware -Isim -O1 -g $(SAN) -DMAZE_MAX_SIZE=16 $(FLOOD16_SRC) -lcmocka -o $@
 $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
@@ -282,7 +282,7 @@ FUZZ_SECONDS ?= 60
 fuzz: | deps
 	@mkdir -p $(B)/fuzz/corpus
 	clang -g -O1 -fsanitize=fuzzer,address,undefined $(INC) -D_POSIX_C_SOURCE=200809L \
-	  test/fuzz_mazefile.c sim/maze/mazefile.c firmware/maze.c -o $(B)/fuzz/fuzz_mazefile
+	  test/fuzz_mazefile.c sim/maze/mazefile.c sim/io/infile.c firmware/maze.c -o $(B)/fuzz/fuzz_mazefile
 	cp -n mazes/*.txt $(B)/fuzz/corpus/ 2>/dev/null || true
 	$(B)/fuzz/fuzz_mazefile -max_total_time=$(FUZZ_SECONDS) -max_len=8192 $(B)/fuzz/corpus
 	@mkdir -p $(B)/fuzz/corpus_wire

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "world/config.h"
 
@@ -51,6 +52,57 @@ static void test_load_and_errors(void **state)
     assert_string_equal(err, "/nonexistent/c.ini: cannot open: No such file or directory");
 }
 
+/* libinih reads lines of up to 197 bytes (plus CR LF) whole and split
+ * longer ones: a comment's tail set a key and later line numbers were off.
+ * A longer line, a NUL byte and a file that is not regular are errors. */
+static void test_long_lines_and_files(void **state)
+{
+    (void)state;
+    char text[700], comment[400];
+    memset(comment, 'x', sizeof comment);
+    for (int len = 196; len <= 199; len++) {
+        /* a comment line of len bytes whose tail reads as a key */
+        int pad = len - 1 - (int)strlen(" battery_v = 7.5");
+        snprintf(text, sizeof text, "[motor]\r\n;%.*s battery_v = 7.5\r\nbogus = 1\n", pad, comment);
+        config_defaults(&c);
+        assert_int_equal(config_load_string(&c, text, "c.ini", err, sizeof err), -1);
+        if (len <= 197) assert_string_equal(err, "c.ini:3: motor.bogus: unknown key");
+        else {
+            char want[80];
+            snprintf(want, sizeof want, "c.ini:2: line too long (%d bytes; at most 197)", len);
+            assert_string_equal(err, want);
+        }
+        assert_true(c.battery_v == 6.0);
+    }
+    /* the same from a file, and a NUL byte (libinih stopped there in silence) */
+    char path[] = "/tmp/test_config_XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    FILE *f = fdopen(fd, "wb");
+    fprintf(f, "[motor]\n;%.*s battery_v = 7.5\n", 250, comment);
+    fclose(f);
+    config_defaults(&c);
+    assert_int_equal(config_load(&c, path, err, sizeof err), -1);
+    char want[120];
+    snprintf(want, sizeof want, "%s:2: line too long (267 bytes; at most 197)", path);
+    assert_string_equal(err, want);
+    f = fopen(path, "wb");
+    fwrite("[motor]\nbattery_v = 7\0\nbogus = 1\n", 1, 33, f);
+    fclose(f);
+    assert_int_equal(config_load(&c, path, err, sizeof err), -1);
+    snprintf(want, sizeof want, "%s:2: NUL byte", path);
+    assert_string_equal(err, want);
+    f = fopen(path, "wb");
+    fputs("[motor]\nbattery_v = 7.5\n", f);
+    fclose(f);
+    assert_int_equal(config_load(&c, path, err, sizeof err), 0);
+    assert_true(c.battery_v == 7.5);
+    remove(path);
+    /* a directory read as an empty file before: nothing was applied, no error */
+    assert_int_equal(config_load(&c, "/tmp", err, sizeof err), -1);
+    assert_string_equal(err, "/tmp: not a regular file (a directory)");
+}
+
 static void test_print_round_trip_and_hash(void **state)
 {
     (void)state;
@@ -82,6 +134,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_defaults_are_the_papers_robot),
         cmocka_unit_test(test_load_and_errors),
+        cmocka_unit_test(test_long_lines_and_files),
         cmocka_unit_test(test_print_round_trip_and_hash),
     };
     return cmocka_run_group_tests_name("config", tests, NULL, NULL);

@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "io/infile.h"
+
 typedef struct {
     const char *section, *key;
     size_t offset;
@@ -148,8 +150,8 @@ static int check(const simcfg_t *c, char *reason, size_t len)
 
 static int finish(load_t *l, int rc, const char *name, char *err, size_t errlen)
 {
-    if (rc < 0) {
-        snprintf(err, errlen, "%s: cannot open: %s", name, strerror(errno ? errno : ENOENT));
+    if (rc < 0) { /* ini_parse_string: out of memory */
+        snprintf(err, errlen, "%s: cannot parse: out of memory", name);
         return -1;
     }
     if (rc > 0) {
@@ -164,25 +166,59 @@ static int finish(load_t *l, int rc, const char *name, char *err, size_t errlen)
     return 0;
 }
 
-int config_load(simcfg_t *c, const char *path, char *err, size_t errlen)
+/* libinih reads each line into a buffer of INI_MAX_LINE bytes (with the
+ * line end and a NUL) and parses the rest of a longer line as a line of
+ * its own, so a long comment could set a key and later line numbers were
+ * off; a NUL would end the text early. Both are errors here. */
+#define CONFIG_MAX_LINE (INI_MAX_LINE - 3) /* bytes of a line without its CR LF */
+
+static int scan_lines(const char *text, size_t len, const char *name, char *err, size_t errlen)
 {
-    simcfg_t work = *c; /* nothing changes unless the whole file is good */
-    load_t l = { &work, "", 0 };
-    errno = 0;
-    int rc = ini_parse(path, on_key, &l);
-    if (finish(&l, rc, path, err, errlen) != 0) return -1;
-    *c = work;
+    size_t line = 1, start = 0;
+    for (size_t i = 0; i <= len; i++) {
+        if (i < len && text[i] == '\0') {
+            snprintf(err, errlen, "%s:%zu: NUL byte", name, line);
+            return -1;
+        }
+        if (i < len && text[i] != '\n') continue;
+        size_t n = i - start;
+        if (n > 0 && text[i - 1] == '\r') n--;
+        if (n > CONFIG_MAX_LINE) {
+            snprintf(err, errlen, "%s:%zu: line too long (%zu bytes; at most %d)", name, line, n, CONFIG_MAX_LINE);
+            return -1;
+        }
+        line++;
+        start = i + 1;
+    }
     return 0;
 }
 
-int config_load_string(simcfg_t *c, const char *text, const char *name, char *err, size_t errlen)
+static int load_text(simcfg_t *c, const char *text, size_t len, const char *name, char *err, size_t errlen)
 {
-    simcfg_t work = *c;
+    simcfg_t work = *c; /* nothing changes unless the whole file is good */
     load_t l = { &work, "", 0 };
+    if (scan_lines(text, len, name, err, errlen) != 0) return -1;
     int rc = ini_parse_string(text, on_key, &l);
     if (finish(&l, rc, name, err, errlen) != 0) return -1;
     *c = work;
     return 0;
+}
+
+int config_load(simcfg_t *c, const char *path, char *err, size_t errlen)
+{
+    size_t len;
+    /* a regular file of a bounded size: a FIFO or /dev/zero hung, a
+     * directory read as an empty file */
+    char *text = infile_read(path, CONFIG_MAX_BYTES, &len, err, errlen);
+    if (!text) return -1;
+    int rc = load_text(c, text, len, path, err, errlen);
+    free(text);
+    return rc;
+}
+
+int config_load_string(simcfg_t *c, const char *text, const char *name, char *err, size_t errlen)
+{
+    return load_text(c, text, strlen(text), name, err, errlen);
 }
 
 void config_print(const simcfg_t *c, FILE *out)

@@ -64,8 +64,13 @@ int config_key_info(size_t i, const char **section, const char **key, double *mi
 /* The defaults (the paper's robot). */
 void config_defaults(simcfg_t *c);
 
+#define CONFIG_MAX_BYTES (1u << 20) /* bytes of a config file; --print-config's is ~3 KB */
+
 /* Apply an INI file over c. Returns 0, or -1 with one line in err:
- * "FILE:LINE: section.key: reason" (or "FILE: cannot open: ..."). */
+ * "FILE:LINE: section.key: reason", "FILE:LINE: line too long (...)" (a
+ * line over 197 bytes, what libinih reads whole), "FILE:LINE: NUL byte",
+ * or "FILE: cannot open: ...", "FILE: not a regular file (...)", "FILE:
+ * too large (...)" (regular files of at most CONFIG_MAX_BYTES only). */
 int config_load(simcfg_t *c, const char *path, char *err, size_t errlen);
 
 /* Same from a NUL-terminated string (name is used in messages). */
