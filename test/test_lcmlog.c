@@ -184,6 +184,62 @@ static void test_liblcm_round_trip(void **state)
     assert_true(s.last_num == 4 && s.last_time == 123456793 && s.last_len == 68000 && s.last_byte == (uint8_t)(67999 * 7));
 }
 
+/* MM_MAZE and MM_BELIEF from a log: lcm-gen's decoders would malloc what
+ * a negative count or a huge string length says, leak when they fail half
+ * way and accept a string without its NUL (then read past it). */
+static void test_messages_with_arrays(void **state)
+{
+    (void)state;
+    int8_t walls[4] = { 1, 2, 3, 4 };
+    int16_t goals[1] = { 3 }, cost[4] = { 0, 1, 2, 3 }, path_cells[2] = { 0, 1 };
+    mmlcm_maze_t mz = { 0, (char *)"m.txt", 2, 2, 4, walls, 0, 0, 1, goals, 1, 9, (char *)"[motor]\nbattery_v = 7\n" };
+    static uint8_t buf[512];
+    int n = mmlcm_maze_t_encode(buf, 0, sizeof buf, &mz);
+    assert_true(n > 0);
+    mmlcm_maze_t out;
+    assert_int_equal(lcmlog_decode_maze(buf, n, &out), 0);
+    assert_string_equal(out.path, "m.txt");
+    assert_string_equal(out.config, "[motor]\nbattery_v = 7\n");
+    assert_true(out.ncells == 4 && out.walls[3] == 4 && out.ngoals == 1 && out.goals[0] == 3 && out.seed == 9);
+    mmlcm_maze_t_decode_cleanup(&out);
+    /* the path's length (bytes 16..19) made huge, negative, 0; its NUL gone;
+     * the config's NUL gone (the last byte); a byte short; a byte more */
+    const uint32_t lens[] = { 0x7FFFFFFF, 0xFFFFFFF0u, 0 };
+    for (int i = 0; i < 3; i++) {
+        uint8_t bad[512];
+        memcpy(bad, buf, (size_t)n);
+        for (int k = 0; k < 4; k++) bad[16 + k] = (uint8_t)(lens[i] >> (24 - 8 * k));
+        assert_int_equal(lcmlog_decode_maze(bad, n, &out), -1);
+        assert_null(out.path);
+    }
+    buf[20 + 5] = 'x'; /* "m.txt" then its NUL at 25 */
+    assert_int_equal(lcmlog_decode_maze(buf, n, &out), -1);
+    buf[25] = 0;
+    buf[n - 1] = 'x';
+    assert_int_equal(lcmlog_decode_maze(buf, n, &out), -1);
+    buf[n - 1] = 0;
+    assert_int_equal(lcmlog_decode_maze(buf, n - 1, &out), -1);
+    assert_int_equal(lcmlog_decode_maze(buf, n + 1, &out), -1);
+    assert_int_equal(lcmlog_decode_maze(buf, n, &out), 0);
+    mmlcm_maze_t_decode_cleanup(&out);
+
+    mmlcm_belief_t b = { 5, 2, 2, 4, walls, cost, 1, 2, 0, 2, path_cells };
+    n = mmlcm_belief_t_encode(buf, 0, sizeof buf, &b);
+    assert_true(n > 0);
+    mmlcm_belief_t bo;
+    assert_int_equal(lcmlog_decode_belief(buf, n, &bo), 0);
+    assert_true(bo.ncells == 4 && bo.cost[3] == 3 && bo.path_len == 2 && bo.path[1] == 1);
+    mmlcm_belief_t_decode_cleanup(&bo);
+    buf[18] = 0xFF; /* ncells (bytes 18, 19) = -1 */
+    buf[19] = 0xFF;
+    assert_int_equal(lcmlog_decode_belief(buf, n, &bo), -1);
+    assert_null(bo.walls);
+    buf[18] = 0;
+    buf[19] = 4;
+    assert_int_equal(lcmlog_decode_belief(buf, n + 2, &bo), -1); /* trailing bytes: it decoded, then was cleaned up */
+    assert_null(bo.walls);
+}
+
 static int setup(void **state)
 {
     (void)state;
@@ -205,6 +261,7 @@ int main(void)
         cmocka_unit_test(test_good_then_bad),
         cmocka_unit_test(test_not_a_log),
         cmocka_unit_test(test_liblcm_round_trip),
+        cmocka_unit_test(test_messages_with_arrays),
     };
     return cmocka_run_group_tests_name("lcmlog", tests, setup, teardown);
 }

@@ -80,19 +80,20 @@ char *infile_read(const char *path, size_t max_bytes, size_t *len, char *err, si
     uint64_t size;
     FILE *f = infile_open(path, max_bytes, &size, err, errlen);
     if (!f) return NULL;
-    char *buf = malloc(max_bytes + 2); /* one byte more tells a file that grew; the NUL */
+    /* the size at open, one byte more to tell a file that grew, the NUL */
+    char *buf = malloc((size_t)size + 2);
     if (!buf) {
         fclose(f);
         snprintf(err, errlen, "%s: out of memory", path);
         return NULL;
     }
     errno = 0;
-    size_t n = fread(buf, 1, max_bytes + 1, f);
+    size_t n = fread(buf, 1, (size_t)size + 1, f);
     int read_errno = ferror(f) ? (errno ? errno : EIO) : 0;
     fclose(f);
-    if (read_errno || n > max_bytes) {
+    if (read_errno || n > size) {
         if (read_errno) snprintf(err, errlen, "%s: cannot read: %s", path, strerror(read_errno));
-        else snprintf(err, errlen, "%s: too large (more than %zu bytes)", path, max_bytes);
+        else snprintf(err, errlen, "%s: cannot read: it grew while read", path);
         free(buf);
         return NULL;
     }

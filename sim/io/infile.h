@@ -23,8 +23,9 @@ int infile_check(const char *path, uint64_t max_bytes, char *err, size_t errlen)
 FILE *infile_open(const char *path, uint64_t max_bytes, uint64_t *size_bytes, char *err, size_t errlen);
 
 /* The whole file in a malloc'd buffer with a NUL after its *len bytes
- * (free it), read through infile_open; a file that grew past max_bytes
- * while read is "too large" too. NULL with one line in err. */
+ * (free it), read through infile_open: at most the size it had when
+ * opened (a file that grew meanwhile is an error). NULL with one line in
+ * err. */
 char *infile_read(const char *path, size_t max_bytes, size_t *len, char *err, size_t errlen);
 
 #endif

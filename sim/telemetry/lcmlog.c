@@ -122,3 +122,85 @@ int lcmlog_each(const char *path, lcmlog_fn fn, void *ctx, long *events, char *e
     if (events) *events = r.n;
     return rc;
 }
+
+/* ---- messages with arrays or strings ----
+ * lcm-gen's decoders malloc what a message's count or string length says
+ * before checking it against the data (a negative count asks for ~2^64
+ * bytes), leave what they allocated when they fail half way, and do not
+ * check that a string ends in its NUL. So the layout of these two types is
+ * checked here first, field by field as lcm/belief_t.lcm and
+ * lcm/maze_t.lcm declare them (keep in step). */
+typedef struct {
+    const unsigned char *d;
+    int64_t len, at;
+    int ok;
+} cursor_t;
+
+static void skip(cursor_t *c, int64_t n)
+{
+    if (n < 0 || n > c->len - c->at) c->ok = 0;
+    else c->at += n;
+}
+
+static int64_t count16(cursor_t *c) /* an int16_t array length, >= 0 */
+{
+    if (c->len - c->at < 2) return c->ok = 0;
+    int16_t v = (int16_t)be(c->d + c->at, 2);
+    c->at += 2;
+    if (v < 0) c->ok = 0;
+    return v < 0 ? 0 : v;
+}
+
+static void string(cursor_t *c) /* int32_t length with its NUL, the bytes */
+{
+    if (c->len - c->at < 4) {
+        c->ok = 0;
+        return;
+    }
+    int32_t n = (int32_t)be(c->d + c->at, 4);
+    c->at += 4;
+    if (n < 1 || n > c->len - c->at || c->d[c->at + n - 1] != 0) c->ok = 0;
+    else c->at += n;
+}
+
+static int belief_layout_ok(const void *data, int len)
+{
+    cursor_t c = { data, len, 0, 1 };
+    skip(&c, 8 + 8 + 1 + 1); /* hash, utime, width, height */
+    int64_t cells = count16(&c);
+    skip(&c, cells * 1 + cells * 2 + 2 + 1 + 1); /* walls, cost, cell, heading, state */
+    skip(&c, count16(&c) * 2);                   /* path */
+    return c.ok && c.at == len;
+}
+
+static int maze_layout_ok(const void *data, int len)
+{
+    cursor_t c = { data, len, 0, 1 };
+    skip(&c, 8 + 8); /* hash, utime */
+    string(&c);      /* path */
+    skip(&c, 1 + 1); /* width, height */
+    skip(&c, count16(&c) + 2 + 1); /* walls, start, start_heading */
+    skip(&c, count16(&c) * 2 + 1 + 8); /* goals, centre_post, seed */
+    string(&c);                        /* config */
+    return c.ok && c.at == len;
+}
+
+int lcmlog_decode_belief(const void *data, int len, mmlcm_belief_t *m)
+{
+    memset(m, 0, sizeof *m);
+    if (!belief_layout_ok(data, len)) return -1;
+    if (mmlcm_belief_t_decode(data, 0, len, m) == len) return 0;
+    mmlcm_belief_t_decode_cleanup(m); /* the fields are zero where it stopped */
+    memset(m, 0, sizeof *m);
+    return -1;
+}
+
+int lcmlog_decode_maze(const void *data, int len, mmlcm_maze_t *m)
+{
+    memset(m, 0, sizeof *m);
+    if (!maze_layout_ok(data, len)) return -1;
+    if (mmlcm_maze_t_decode(data, 0, len, m) == len) return 0;
+    mmlcm_maze_t_decode_cleanup(m);
+    memset(m, 0, sizeof *m);
+    return -1;
+}

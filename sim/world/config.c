@@ -82,6 +82,10 @@ int config_key_info(size_t i, const char **section, const char **key, double *mi
     return 0;
 }
 
+static double value(const simcfg_t *c, const cfgkey_t *k);
+
+double config_key_value(const simcfg_t *c, size_t i) { return i < NKEYS ? value(c, &keys[i]) : 0.0; }
+
 static double *field(simcfg_t *c, const cfgkey_t *k) { return (double *)((char *)c + k->offset); }
 static double value(const simcfg_t *c, const cfgkey_t *k) { return *(const double *)((const char *)c + k->offset); }
 
@@ -119,6 +123,10 @@ static int on_key(void *user, const char *section, const char *name, const char 
     while (*end == ' ' || *end == '\t') end++;
     if (errno || end == val || *end || !isfinite(v)) {
         snprintf(l->reason, sizeof l->reason, "%s.%s: '%s' is not a number", section, name, val);
+        return 0;
+    }
+    if ((!strcmp(name, "solver_iterations") || !strcmp(name, "centre_post")) && v != floor(v)) {
+        snprintf(l->reason, sizeof l->reason, "%s.%s: %g is not a whole number", section, name, v);
         return 0;
     }
     if (v < k->min || v > k->max) {
@@ -221,6 +229,20 @@ int config_load_string(simcfg_t *c, const char *text, const char *name, char *er
     return load_text(c, text, strlen(text), name, err, errlen);
 }
 
+/* v in as few digits as read back the same double, at least 9: the
+ * defaults print as before, and a value given with more digits prints
+ * with them (with 9 only, 0.079999999999 printed as 0.08, which the
+ * corridor check rejected when the printed config, as a log's MM_MAZE,
+ * was loaded again; and two such configs had the same hash). */
+static const char *number(double v, char *buf, size_t len)
+{
+    for (int digits = 9; digits <= 17; digits++) {
+        snprintf(buf, len, "%.*g", digits, v);
+        if (strtod(buf, NULL) == v) break;
+    }
+    return buf;
+}
+
 void config_print(const simcfg_t *c, FILE *out)
 {
     const char *section = "";
@@ -229,7 +251,9 @@ void config_print(const simcfg_t *c, FILE *out)
             section = keys[i].section;
             fprintf(out, "%s[%s]\n", i ? "\n" : "", section);
         }
-        fprintf(out, "%s = %.9g ; %s; %s\n", keys[i].key, value(c, &keys[i]), keys[i].unit, keys[i].source);
+        char num[32];
+        fprintf(out, "%s = %s ; %s; %s\n", keys[i].key, number(value(c, &keys[i]), num, sizeof num), keys[i].unit,
+                keys[i].source);
     }
 }
 

@@ -57,9 +57,11 @@ typedef struct {
 } simcfg_t;
 
 /* The key table (what --print-config lists), for tests: how many keys,
- * and the i-th key's section, name and range. 0, or -1 past the end. */
+ * and the i-th key's section, name and range: 0, or -1 past the end. */
 size_t config_key_count(void);
 int config_key_info(size_t i, const char **section, const char **key, double *min, double *max);
+/* The i-th key's value in c (0 past the end). */
+double config_key_value(const simcfg_t *c, size_t i);
 
 /* The defaults (the paper's robot). */
 void config_defaults(simcfg_t *c);
