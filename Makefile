@@ -98,8 +98,8 @@ $(B)/test/test_wire_rx14: test/test_wire.c $(B)/libmm_san.a test/wire_vectors.c 
 	  $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
 # The flood against its reference again with the AVR's 16x16 maximum, where
 # maze_cell_t is uint8_t (the host library is built for 32x32)
-FLOOD16_SRC := test/test_flood_ref.c firmware/flood.c firmware/maze.c sim/maze/mazefile.c
-$(B)/test/test_flood_ref16: $(FLOOD16_SRC) $(wildcard firmware/*.h) sim/maze/mazefile.h | deps
+FLOOD16_SRC := test/test_flood_ref.c firmware/flood.c firmware/maze.c sim/maze/mazefile.c sim/io/infile.c
+$(B)/test/test_flood_ref16: $(FLOOD16_SRC) $(wildcard firmware/*.h) sim/maze/mazefile.h sim/io/infile.h | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) -Ifirmware -Isim -O1 -g $(SAN) -DMAZE_MAX_SIZE=16 $(FLOOD16_SRC) -lcmocka -o $@
 $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
@@ -285,16 +285,39 @@ $(B)/bench_flood: bench/bench_flood.c $(B)/libmm.a
 	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(B)/libmm.a $(LIBS) -o $@
 
 # ---- fuzzing (clang libFuzzer + ASan; bounded; not in CI) ----
+# make fuzz [FUZZ="mazefile wire lcmlog config"] [FUZZ_SECONDS=60]: each target
+# in turn for FUZZ_SECONDS; corpora in $(B)/fuzz/corpus_NAME, findings
+# (crash-*, leak-*) in $(B)/fuzz.
 FUZZ_SECONDS ?= 60
-fuzz: | deps
-	@mkdir -p $(B)/fuzz/corpus
-	clang -g -O1 -fsanitize=fuzzer,address,undefined $(INC) -D_POSIX_C_SOURCE=200809L \
-	  test/fuzz_mazefile.c sim/maze/mazefile.c firmware/maze.c -o $(B)/fuzz/fuzz_mazefile
-	cp -n mazes/*.txt $(B)/fuzz/corpus/ 2>/dev/null || true
-	$(B)/fuzz/fuzz_mazefile -max_total_time=$(FUZZ_SECONDS) -max_len=8192 $(B)/fuzz/corpus
-	@mkdir -p $(B)/fuzz/corpus_wire
-	clang -g -O1 -fsanitize=fuzzer,address,undefined -Ihal/wire hal/wire/wire.c test/fuzz_wire.c -o $(B)/fuzz/fuzz_wire
-	$(B)/fuzz/fuzz_wire -max_total_time=$(FUZZ_SECONDS) -max_len=512 $(B)/fuzz/corpus_wire
+FUZZ ?= mazefile wire lcmlog config
+FUZZ_CC := clang -g -O1 -fsanitize=fuzzer,address,undefined -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
+FUZZ_SRC_mazefile := sim/maze/mazefile.c sim/io/infile.c firmware/maze.c
+FUZZ_SRC_wire     := hal/wire/wire.c
+FUZZ_SRC_lcmlog   := sim/telemetry/lcmlog.c sim/io/infile.c $(LCM_C)
+FUZZ_SRC_config   := sim/world/config.c sim/io/infile.c
+FUZZ_LIBS_lcmlog  := -llcm
+FUZZ_LIBS_config  := -linih $(shell pkg-config --libs glib-2.0 2>/dev/null)
+FUZZ_LEN_mazefile := 8192
+FUZZ_LEN_wire     := 512
+FUZZ_LEN_lcmlog   := 16384
+FUZZ_LEN_config   := 4096
+$(B)/fuzz/fuzz_%: test/fuzz_%.c $(LCM_STAMP) | deps
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(INC) $< $(FUZZ_SRC_$*) $(FUZZ_LIBS_$*) -o $@
+# seeds: our mazes, a short logged contest, --print-config and a small config
+$(B)/fuzz/seeds: $(B)/mmsim
+	@mkdir -p $(B)/fuzz/corpus_mazefile $(B)/fuzz/corpus_wire $(B)/fuzz/corpus_lcmlog $(B)/fuzz/corpus_config
+	cp -n mazes/*.txt $(B)/fuzz/corpus_mazefile/ 2>/dev/null || true
+	$(B)/mmsim --maze mazes/gen-5x5-s1.txt --driver firmware --time-limit 1 --lcm-rate 10 \
+	  --lcm-log $(B)/fuzz/corpus_lcmlog/seed.lcmlog >/dev/null || [ $$? = 1 ]
+	$(B)/mmsim --print-config >$(B)/fuzz/corpus_config/print-config.ini
+	printf '[motor]\nbattery_v = 7.4 ; V\n[robot]\ntyre_mu = 0.35\ntyre_mu_dynamic = 0.25\n' >$(B)/fuzz/corpus_config/small.ini
+	@touch $@
+fuzz: $(addprefix $(B)/fuzz/fuzz_,$(FUZZ)) $(B)/fuzz/seeds
+	cd $(B)/fuzz && for t in $(FUZZ); do \
+	  ./fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -max_len=$$(case $$t in mazefile) echo $(FUZZ_LEN_mazefile);; \
+	    wire) echo $(FUZZ_LEN_wire);; lcmlog) echo $(FUZZ_LEN_lcmlog);; config) echo $(FUZZ_LEN_config);; esac) \
+	    -malloc_limit_mb=512 corpus_$$t || exit 1; done
 
 mazes:
 	@if [ -d $(B)/mazefiles ]; then echo "$(B)/mazefiles exists"; else \

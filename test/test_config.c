@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "world/config.h"
 
@@ -38,6 +39,7 @@ static void test_load_and_errors(void **state)
         { "[robot]\nthis line has no equals sign\n", "c.ini:2: syntax error" },
         { "[robot]\ntyre_mu = 0.3\n", "c.ini: robot.tyre_mu_dynamic: 1 is above tyre_mu 0.3" },
         { "[nosuch]\nx = 1\n", "c.ini:2: nosuch.x: unknown key" },
+        { "[sim]\nsolver_iterations = 10.5\n", "c.ini:2: sim.solver_iterations: 10.5 is not a whole number" },
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         config_defaults(&c);
@@ -50,6 +52,84 @@ static void test_load_and_errors(void **state)
     assert_true(c.tyre_mu == 0.35 && c.tyre_mu_dynamic == 0.25);
     assert_int_equal(config_load(&c, "/nonexistent/c.ini", err, sizeof err), -1);
     assert_string_equal(err, "/nonexistent/c.ini: cannot open: No such file or directory");
+}
+
+/* libinih reads lines of up to 197 bytes (plus CR LF) whole and split
+ * longer ones: a comment's tail set a key and later line numbers were off.
+ * A longer line, a NUL byte and a file that is not regular are errors. */
+static void test_long_lines_and_files(void **state)
+{
+    (void)state;
+    char text[700], comment[400];
+    memset(comment, 'x', sizeof comment);
+    for (int len = 196; len <= 199; len++) {
+        /* a comment line of len bytes whose tail reads as a key */
+        int pad = len - 1 - (int)strlen(" battery_v = 7.5");
+        snprintf(text, sizeof text, "[motor]\r\n;%.*s battery_v = 7.5\r\nbogus = 1\n", pad, comment);
+        config_defaults(&c);
+        assert_int_equal(config_load_string(&c, text, "c.ini", err, sizeof err), -1);
+        if (len <= 197) assert_string_equal(err, "c.ini:3: motor.bogus: unknown key");
+        else {
+            char want[80];
+            snprintf(want, sizeof want, "c.ini:2: line too long (%d bytes; at most 197)", len);
+            assert_string_equal(err, want);
+        }
+        assert_true(c.battery_v == 6.0);
+    }
+    /* the same from a file, and a NUL byte (libinih stopped there in silence) */
+    char path[] = "/tmp/test_config_XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    FILE *f = fdopen(fd, "wb");
+    fprintf(f, "[motor]\n;%.*s battery_v = 7.5\n", 250, comment);
+    fclose(f);
+    config_defaults(&c);
+    assert_int_equal(config_load(&c, path, err, sizeof err), -1);
+    char want[120];
+    snprintf(want, sizeof want, "%s:2: line too long (267 bytes; at most 197)", path);
+    assert_string_equal(err, want);
+    f = fopen(path, "wb");
+    fwrite("[motor]\nbattery_v = 7\0\nbogus = 1\n", 1, 33, f);
+    fclose(f);
+    assert_int_equal(config_load(&c, path, err, sizeof err), -1);
+    snprintf(want, sizeof want, "%s:2: NUL byte", path);
+    assert_string_equal(err, want);
+    f = fopen(path, "wb");
+    fputs("[motor]\nbattery_v = 7.5\n", f);
+    fclose(f);
+    assert_int_equal(config_load(&c, path, err, sizeof err), 0);
+    assert_true(c.battery_v == 7.5);
+    remove(path);
+    /* a directory read as an empty file before: nothing was applied, no error */
+    assert_int_equal(config_load(&c, "/tmp", err, sizeof err), -1);
+    assert_string_equal(err, "/tmp: not a regular file (a directory)");
+}
+
+/* A value with more than 9 digits prints with them: with %.9g,
+ * wheel_x_m = 0.079999999999 printed as 0.08, which the corridor check
+ * (2 * 0.08 + 0.008 >= 0.18 - 0.012) rejects: a log's MM_MAZE config
+ * of an accepted run did not load in the replay (found by fuzz_config). */
+static void test_print_exact(void **state)
+{
+    (void)state;
+    simcfg_t d;
+    char *text = NULL, h1[65], h2[65];
+    size_t len = 0;
+    config_defaults(&c);
+    assert_int_equal(config_load_string(&c, "[robot]\nwheel_x_m = 0.079999999999\n", "c.ini", err, sizeof err), 0);
+    FILE *mem = open_memstream(&text, &len);
+    config_print(&c, mem);
+    fclose(mem);
+    assert_non_null(strstr(text, "wheel_x_m = 0.079999999999 ; m;"));
+    assert_non_null(strstr(text, "cell_m = 0.18 ; m;")); /* the defaults print as before */
+    config_defaults(&d);
+    if (config_load_string(&d, text, "printed", err, sizeof err) != 0) fail_msg("%s", err);
+    assert_memory_equal(&c, &d, sizeof c);
+    free(text);
+    config_hash(&c, h1);
+    d.wheel_x_m = 0.08;
+    config_hash(&d, h2);
+    assert_string_not_equal(h1, h2);
 }
 
 static void test_print_round_trip_and_hash(void **state)
@@ -83,6 +163,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_defaults_are_the_papers_robot),
         cmocka_unit_test(test_load_and_errors),
+        cmocka_unit_test(test_long_lines_and_files),
+        cmocka_unit_test(test_print_exact),
         cmocka_unit_test(test_print_round_trip_and_hash),
     };
     return cmocka_run_group_tests_name("config", tests, NULL, NULL);

@@ -621,7 +621,7 @@ static void test_load(void **state)
     assert_int_equal(mazefile_load(&a, "/nonexistent/m.txt", NULL, err, sizeof err), -1);
     assert_string_equal(err, "/nonexistent/m.txt: cannot open: No such file or directory");
     assert_int_equal(mazefile_load(&a, "/tmp", NULL, err, sizeof err), -1);
-    assert_string_equal(err, "/tmp: cannot read: Is a directory");
+    assert_string_equal(err, "/tmp: not a regular file (a directory)");
     /* a file, and the same file as standard input ("-") */
     char path[] = "/tmp/test_mazefile_XXXXXX";
     int fd = mkstemp(path);

@@ -105,7 +105,7 @@ static int dec_race_event(const void *data, int len, int64_t *ut, json_t **j)
 static int dec_belief(const void *data, int len, int64_t *ut, json_t **j)
 {
     mmlcm_belief_t m;
-    if (mmlcm_belief_t_decode(data, 0, len, &m) != len) return -1;
+    if (lcmlog_decode_belief(data, len, &m) != 0) return -1;
     *ut = m.utime;
     if (j) {
         json_t *w = json_array();
@@ -136,7 +136,7 @@ static int dec_link(const void *data, int len, int64_t *ut, json_t **j)
 static int dec_maze(const void *data, int len, int64_t *ut, json_t **j)
 {
     mmlcm_maze_t m;
-    if (mmlcm_maze_t_decode(data, 0, len, &m) != len) return -1;
+    if (lcmlog_decode_maze(data, len, &m) != 0) return -1;
     *ut = m.utime;
     if (j) {
         json_t *w = json_array();

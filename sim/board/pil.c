@@ -16,6 +16,8 @@
 #include <simavr/sim_io.h>
 #include <simavr/sim_irq.h>
 
+#include "io/infile.h"
+
 static char last_log[200]; /* simavr's last error message, for ours */
 
 static void quiet_logger(avr_t *avr, const int level, const char *fmt, va_list ap)
@@ -77,7 +79,8 @@ int pil_open(pil_t *p, const char *elf, const char *mcu, uint32_t f_cpu, double 
         return -1;
     }
     uint8_t h[20] = { 0 }; /* ELF magic and e_machine 83 = AVR: simavr prints its own errors otherwise */
-    FILE *f = fopen(elf, "rb");
+    FILE *f = infile_open(elf, PIL_ELF_MAX_BYTES, NULL, err, errn); /* a FIFO would hang the open */
+    if (!f) return -1;
     size_t got = f ? fread(h, 1, sizeof h, f) : 0;
     if (f) fclose(f);
     if (got < sizeof h || memcmp(h, "\x7f" "ELF", 4) != 0 || h[18] != 83 || h[19] != 0) {

@@ -15,6 +15,7 @@ struct avr_irq_t;
 
 #define PIL_IN_MAX 4096u /* bytes waiting for the AVR's receive FIFO */
 #define PIL_PAINT 0xA5   /* SRAM fill before reset: untouched bytes keep it */
+#define PIL_ELF_MAX_BYTES (64u << 20) /* an AVR image with its debug sections; a Mega's flash is 256 KiB */
 
 typedef struct {
     struct avr_t *avr;

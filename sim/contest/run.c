@@ -146,6 +146,11 @@ static const char *after_step(run_t *r, watch_t *w)
     sim_t *s = &r->sim;
     const char *cport;
     long cbaud;
+    if (s->diverged) {
+        fprintf(stderr, "%s: the physics diverged at %.6g s (more than ODE integrates in steps of %g s with this config)\n",
+                r->maze_path, sim_time_s(s), r->cfg.step_s);
+        return "physics_diverged";
+    }
     if (r->rep) report_step(r->rep, s);
     if (o->gui && view_step(r->view, s)) return "window_closed";
     if (o->gui && view_connect_request(r->view, &cport, &cbaud)) run_link_connect(r, cport, cbaud);

@@ -8,6 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "io/infile.h"
+
 static int compare_names(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
 
 long mazedir_list(const char *dir, char ***names)
@@ -46,11 +48,16 @@ void mazedir_free(char **names, long n)
 
 long mazedir_list_or_report(const char *dir, char ***names)
 {
+    char err[600] = "";
     long n = mazedir_list(dir, names);
     if (n < 0) fprintf(stderr, "%s: cannot open: %s\n", dir, strerror(errno));
     else if (n == 0) fprintf(stderr, "%s: no .txt maze files\n", dir);
-    if (n <= 0) {
-        mazedir_free(*names, 0);
+    /* every entry a regular file, before any job starts: a FIFO would hang
+     * its job, a directory fail late */
+    for (long i = 0; i < n && !err[0]; i++)
+        if (infile_check((*names)[i], INFILE_NO_LIMIT, err, sizeof err) != 0) fprintf(stderr, "%s\n", err);
+    if (n <= 0 || err[0]) {
+        mazedir_free(*names, n > 0 ? n : 0);
         *names = NULL;
         return -1;
     }

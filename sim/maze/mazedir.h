@@ -9,8 +9,10 @@
  * Free the list with mazedir_free. */
 long mazedir_list(const char *dir, char ***names);
 void mazedir_free(char **names, long n);
-/* mazedir_list for a command: on no files or an unreadable folder, prints
- * one line "DIR: ..." on stderr and returns -1. */
+/* mazedir_list for a command: on no files, an unreadable folder or a
+ * listed name that is not a regular file (a FIFO, a directory, a dangling
+ * link), prints one line "DIR: ..." or "DIR/NAME.txt: ..." on stderr and
+ * returns -1. */
 long mazedir_list_or_report(const char *dir, char ***names);
 
 #endif

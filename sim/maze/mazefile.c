@@ -18,6 +18,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "io/infile.h"
+
 enum {
     MAX_ROWS = 2 * MAZE_MAX_H + 1, /* text rows of the largest maze */
     MAX_COLS = 4 * MAZE_MAX_W + 1  /* characters in its widest row */
@@ -548,11 +550,10 @@ int mazefile_load(maze_t *m, const char *path, mazefile_info_t *info, char *err,
 {
     int is_stdin = strcmp(path, "-") == 0;
     const char *name = is_stdin ? "<stdin>" : path;
-    FILE *f = is_stdin ? stdin : fopen(path, "rb");
-    if (!f) {
-        snprintf(err, errlen, "%s: cannot open: %s", name, strerror(errno));
-        return -1;
-    }
+    /* a file must be a regular one (a FIFO or a device would hang or
+     * never end); its size is bounded by the read below, as stdin's */
+    FILE *f = is_stdin ? stdin : infile_open(path, INFILE_NO_LIMIT, NULL, err, errlen);
+    if (!f) return -1;
     /* One byte more than allowed: mazefile_parse then reports the size. */
     char *buf = malloc(MAZEFILE_MAX_BYTES + 1);
     if (!buf) {

@@ -284,7 +284,7 @@ static void pub_fast(telem_t *t, const sim_t *s)
     m.utime = ut;
     for (int i = 0; i < 2; i++) {
         m.command[i] = (int16_t)s->cmd[i];
-        m.voltage_v[i] = s->motor[i].v_applied;
+        m.voltage_v[i] = motor_terminal_v(&s->motor[i]);
         m.current_a[i] = s->motor[i].i_a;
         m.wheel_rad_s[i] = world_wheel_rate(s->world, i);
         m.torque_nm[i] = s->motor[i].torque_nm; /* at the output shaft, friction excluded */

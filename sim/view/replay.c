@@ -105,7 +105,7 @@ static int on_event(void *ctx, const lcm_eventlog_event_t *ev)
         ut = m.utime;
     } else if (!strcmp(ch, "MM_BELIEF")) {
         mmlcm_belief_t m;
-        if (mmlcm_belief_t_decode(ev->data, 0, len, &m) != len) return fail(l, "does not decode", ch);
+        if (lcmlog_decode_belief(ev->data, len, &m) != 0) return fail(l, "does not decode", ch);
         int rc = 0;
         size_t n = r->nbelief, cells = (size_t)r->maze.width * r->maze.height;
         if (!r->have_maze) rc = fail(l, "belief before MM_MAZE", ch);
@@ -127,7 +127,7 @@ static int on_event(void *ctx, const lcm_eventlog_event_t *ev)
         if (rc) return rc;
     } else if (!strcmp(ch, "MM_MAZE")) {
         mmlcm_maze_t m;
-        if (mmlcm_maze_t_decode(ev->data, 0, len, &m) != len) return fail(l, "does not decode", ch);
+        if (lcmlog_decode_maze(ev->data, len, &m) != 0) return fail(l, "does not decode", ch);
         int rc = take_maze(l, &m);
         mmlcm_maze_t_decode_cleanup(&m);
         if (rc) return rc;

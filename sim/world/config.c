@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "io/infile.h"
+
 typedef struct {
     const char *section, *key;
     size_t offset;
@@ -102,6 +104,28 @@ static const cfgkey_t keys[] = {
 
 #define NKEYS (sizeof keys / sizeof keys[0])
 
+size_t config_key_count(void) { return NKEYS; }
+
+int config_key_info(size_t i, const char **section, const char **key, double *min, double *max)
+{
+    if (i >= NKEYS) return -1;
+    *section = keys[i].section;
+    *key = keys[i].key;
+    *min = keys[i].min;
+    *max = keys[i].max;
+    return 0;
+}
+
+static double value(const simcfg_t *c, const cfgkey_t *k);
+
+const char *config_key_word(size_t i, double v)
+{
+    if (i >= NKEYS || !keys[i].choices || v < 0 || v > keys[i].max) return NULL;
+    return keys[i].choices[(int)v];
+}
+
+double config_key_value(const simcfg_t *c, size_t i) { return i < NKEYS ? value(c, &keys[i]) : 0.0; }
+
 static double *field(simcfg_t *c, const cfgkey_t *k) { return (double *)((char *)c + k->offset); }
 static double value(const simcfg_t *c, const cfgkey_t *k) { return *(const double *)((const char *)c + k->offset); }
 
@@ -153,6 +177,10 @@ static int on_key(void *user, const char *section, const char *name, const char 
         snprintf(l->reason, sizeof l->reason, "%s.%s: '%s' is not a number", section, name, val);
         return 0;
     }
+    if ((!strcmp(name, "solver_iterations") || !strcmp(name, "centre_post")) && v != floor(v)) {
+        snprintf(l->reason, sizeof l->reason, "%s.%s: %g is not a whole number", section, name, v);
+        return 0;
+    }
     if (v < k->min || v > k->max) {
         snprintf(l->reason, sizeof l->reason, "%s.%s: %g %s is out of range [%g, %g]", section, name, v, k->unit, k->min, k->max);
         return 0;
@@ -186,8 +214,8 @@ static int check(const simcfg_t *c, char *reason, size_t len)
 
 static int finish(load_t *l, int rc, const char *name, char *err, size_t errlen)
 {
-    if (rc < 0) {
-        snprintf(err, errlen, "%s: cannot open: %s", name, strerror(errno ? errno : ENOENT));
+    if (rc < 0) { /* ini_parse_string: out of memory */
+        snprintf(err, errlen, "%s: cannot parse: out of memory", name);
         return -1;
     }
     if (rc > 0) {
@@ -202,25 +230,73 @@ static int finish(load_t *l, int rc, const char *name, char *err, size_t errlen)
     return 0;
 }
 
-int config_load(simcfg_t *c, const char *path, char *err, size_t errlen)
+/* libinih reads each line into a buffer of INI_MAX_LINE bytes (with the
+ * line end and a NUL) and parses the rest of a longer line as a line of
+ * its own, so a long comment could set a key and later line numbers were
+ * off; a NUL would end the text early. Both are errors here. */
+#define CONFIG_MAX_LINE (INI_MAX_LINE - 3) /* bytes of a line without its CR LF */
+
+static int scan_lines(const char *text, size_t len, const char *name, char *err, size_t errlen)
 {
-    simcfg_t work = *c; /* nothing changes unless the whole file is good */
-    load_t l = { &work, "", 0 };
-    errno = 0;
-    int rc = ini_parse(path, on_key, &l);
-    if (finish(&l, rc, path, err, errlen) != 0) return -1;
-    *c = work;
+    size_t line = 1, start = 0;
+    for (size_t i = 0; i <= len; i++) {
+        if (i < len && text[i] == '\0') {
+            snprintf(err, errlen, "%s:%zu: NUL byte", name, line);
+            return -1;
+        }
+        if (i < len && text[i] != '\n') continue;
+        size_t n = i - start;
+        if (n > 0 && text[i - 1] == '\r') n--;
+        if (n > CONFIG_MAX_LINE) {
+            snprintf(err, errlen, "%s:%zu: line too long (%zu bytes; at most %d)", name, line, n, CONFIG_MAX_LINE);
+            return -1;
+        }
+        line++;
+        start = i + 1;
+    }
     return 0;
 }
 
-int config_load_string(simcfg_t *c, const char *text, const char *name, char *err, size_t errlen)
+static int load_text(simcfg_t *c, const char *text, size_t len, const char *name, char *err, size_t errlen)
 {
-    simcfg_t work = *c;
+    simcfg_t work = *c; /* nothing changes unless the whole file is good */
     load_t l = { &work, "", 0 };
+    if (scan_lines(text, len, name, err, errlen) != 0) return -1;
     int rc = ini_parse_string(text, on_key, &l);
     if (finish(&l, rc, name, err, errlen) != 0) return -1;
     *c = work;
     return 0;
+}
+
+int config_load(simcfg_t *c, const char *path, char *err, size_t errlen)
+{
+    size_t len;
+    /* a regular file of a bounded size: a FIFO or /dev/zero hung, a
+     * directory read as an empty file */
+    char *text = infile_read(path, CONFIG_MAX_BYTES, &len, err, errlen);
+    if (!text) return -1;
+    int rc = load_text(c, text, len, path, err, errlen);
+    free(text);
+    return rc;
+}
+
+int config_load_string(simcfg_t *c, const char *text, const char *name, char *err, size_t errlen)
+{
+    return load_text(c, text, strlen(text), name, err, errlen);
+}
+
+/* v in as few digits as read back the same double, at least 9: the
+ * defaults print as before, and a value given with more digits prints
+ * with them (with 9 only, 0.079999999999 printed as 0.08, which the
+ * corridor check rejected when the printed config, as a log's MM_MAZE,
+ * was loaded again; and two such configs had the same hash). */
+static const char *number(double v, char *buf, size_t len)
+{
+    for (int digits = 9; digits <= 17; digits++) {
+        snprintf(buf, len, "%.*g", digits, v);
+        if (strtod(buf, NULL) == v) break;
+    }
+    return buf;
 }
 
 void config_print(const simcfg_t *c, FILE *out)
@@ -231,11 +307,13 @@ void config_print(const simcfg_t *c, FILE *out)
             section = keys[i].section;
             fprintf(out, "%s[%s]\n", i ? "\n" : "", section);
         }
+        char num[32];
         if (keys[i].choices)
             fprintf(out, "%s = %s ; %s; %s\n", keys[i].key, keys[i].choices[(int)value(c, &keys[i])], keys[i].unit,
                     keys[i].source);
         else
-            fprintf(out, "%s = %.9g ; %s; %s\n", keys[i].key, value(c, &keys[i]), keys[i].unit, keys[i].source);
+            fprintf(out, "%s = %s ; %s; %s\n", keys[i].key, number(value(c, &keys[i]), num, sizeof num), keys[i].unit,
+                    keys[i].source);
     }
 }
 

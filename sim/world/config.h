@@ -66,12 +66,26 @@ typedef struct {
 
 enum { MOTOR_MODEL_PAPER = 0, MOTOR_MODEL_DATASHEET = 1 };
 enum { SIM_SOLVER_QUICKSTEP = 0, SIM_SOLVER_EXACT = 1 };
+/* The key table (what --print-config lists), for tests: how many keys,
+ * and the i-th key's section, name and range: 0, or -1 past the end. */
+size_t config_key_count(void);
+int config_key_info(size_t i, const char **section, const char **key, double *min, double *max);
+/* A word key's word for value v (config_key_info's min..max are its
+ * indexes); NULL for a number key or past the end. */
+const char *config_key_word(size_t i, double v);
+/* The i-th key's value in c (0 past the end). */
+double config_key_value(const simcfg_t *c, size_t i);
 
 /* The defaults (the paper's robot). */
 void config_defaults(simcfg_t *c);
 
+#define CONFIG_MAX_BYTES (1u << 20) /* bytes of a config file; --print-config's is ~3 KB */
+
 /* Apply an INI file over c. Returns 0, or -1 with one line in err:
- * "FILE:LINE: section.key: reason" (or "FILE: cannot open: ..."). */
+ * "FILE:LINE: section.key: reason", "FILE:LINE: line too long (...)" (a
+ * line over 197 bytes, what libinih reads whole), "FILE:LINE: NUL byte",
+ * or "FILE: cannot open: ...", "FILE: not a regular file (...)", "FILE:
+ * too large (...)" (regular files of at most CONFIG_MAX_BYTES only). */
 int config_load(simcfg_t *c, const char *path, char *err, size_t errlen);
 
 /* Same from a NUL-terminated string (name is used in messages). */

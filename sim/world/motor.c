@@ -15,6 +15,8 @@ void motor_constants(const simcfg_t *c, double *r_ohm, double *ke_v_s, double *e
     *eta = c->stall_torque_nm / (c->gear_ratio * ke * (c->stall_a - c->no_load_a));
 }
 
+double motor_terminal_v(const motor_t *m) { return m->v_applied - (m->r_circuit_ohm - m->r_ohm) * m->i_a; }
+
 double motor_free_speed(const simcfg_t *c, double v_volt)
 {
     double r, ke, eta;
@@ -43,42 +45,48 @@ void motor_init(motor_t *m, const simcfg_t *c, double scale)
     }
     m->i_a = 0.0;
     m->v_applied = 0.0;
+    m->r_circuit_ohm = m->r_ohm;
     m->torque_nm = 0.0;
     m->k_mean = 0.0;
     m->i_start_a = 0.0;
 }
 
-static double applied_voltage(motor_t *m, int cmd)
+/* The H-bridge at duty d = cmd/1023 puts d*(V_oc - R_b*i_batt) on the motor,
+ * and the battery delivers i_batt = d*i: the motor's circuit sees d*V_oc
+ * through R + d^2*R_b. Both in the current's own step, so a large internal
+ * resistance cannot make the sag oscillate. Sets v_applied to the open
+ * circuit part and returns the circuit's resistance. */
+static double drive_circuit(motor_t *m, int cmd)
 {
     if (cmd > MOTOR_CMD_MAX) cmd = MOTOR_CMD_MAX;
     if (cmd < -MOTOR_CMD_MAX) cmd = -MOTOR_CMD_MAX;
     double duty = (double)cmd / MOTOR_CMD_MAX;
-    /* the battery delivers duty * i on average through the H-bridge */
-    double v_batt = m->battery_v - m->battery_r_ohm * fabs(duty * m->i_a);
-    return duty * v_batt;
+    m->v_applied = duty * m->battery_v;
+    return m->r_ohm + duty * duty * m->battery_r_ohm;
 }
 
 motor_drive_t motor_drive(motor_t *m, int cmd, double w_rad_s, double dt_s)
 {
     motor_drive_t d = { 0, 0, 0 };
     double kn = m->ke_v_s * m->n; /* at the output shaft */
-    m->v_applied = applied_voltage(m, cmd);
+    double r = drive_circuit(m, cmd);
+    m->r_circuit_ohm = r;
     if (m->model == MOTOR_MODEL_PAPER) { /* eq. 3: backward difference with this step's start speed */
         double l_dt = m->l_h / dt_s;
-        m->i_a = (m->v_applied - kn * w_rad_s + l_dt * m->i_a) / (m->r_ohm + l_dt);
+        m->i_a = (m->v_applied - kn * w_rad_s + l_dt * m->i_a) / (r + l_dt);
         m->torque_nm = kn * m->i_a;
         d.t0_nm = m->torque_nm;
         return d;
     }
-    double tau = m->l_h / m->r_ohm, x = dt_s / tau;
+    double tau = m->l_h / r, x = dt_s / tau;
     m->k_mean = x > 1e-9 ? (1.0 - exp(-x)) / x : 1.0; /* the start current's weight in the step's mean */
     m->i_start_a = m->i_a;
     double g = m->n * m->eta * m->ke_v_s; /* output torque per ampere */
     /* mean current = (1-k)*(V - kn*w_mean)/R + k*i_start with the step's mean
      * speed w_mean = (w_start + w_end)/2 (trapezoidal: second order; the
      * end-speed half is the implicit damper) */
-    double dmp = g * (1.0 - m->k_mean) * kn / m->r_ohm;
-    d.t0_nm = g * ((1.0 - m->k_mean) * m->v_applied / m->r_ohm + m->k_mean * m->i_start_a) - 0.5 * dmp * w_rad_s;
+    double dmp = g * (1.0 - m->k_mean) * kn / r;
+    d.t0_nm = g * ((1.0 - m->k_mean) * m->v_applied / r + m->k_mean * m->i_start_a) - 0.5 * dmp * w_rad_s;
     d.damping_nm_s = 0.5 * dmp;
     d.friction_nm = g * m->i_friction_a;
     return d;
@@ -87,8 +95,8 @@ motor_drive_t motor_drive(motor_t *m, int cmd, double w_rad_s, double dt_s)
 void motor_after(motor_t *m, const motor_drive_t *d, double w_end_rad_s, double dt_s)
 {
     if (m->model == MOTOR_MODEL_PAPER) return; /* motor_drive did it all */
-    double kn = m->ke_v_s * m->n, i_ss = (m->v_applied - kn * w_end_rad_s) / m->r_ohm;
-    double decay = exp(-dt_s * m->r_ohm / m->l_h);
+    double r = m->r_circuit_ohm, kn = m->ke_v_s * m->n, i_ss = (m->v_applied - kn * w_end_rad_s) / r;
+    double decay = exp(-dt_s * r / m->l_h);
     m->i_a = i_ss + (m->i_start_a - i_ss) * decay;
     /* the output torque: the drive less the gearbox's friction, which
      * opposes the motion, or at rest the motion the drive tends to cause */

@@ -29,7 +29,8 @@
  * rotor inertia (so its no-load speed is 61 % above the datasheet's).
  *
  * Command: -1023..+1023 = -100..+100 % of the battery voltage. The battery's
- * internal resistance sags the voltage by the previous step's current. */
+ * internal resistance R_b is in the motor's circuit as duty^2*R_b (the
+ * H-bridge draws duty*i from the battery), solved with the current. */
 #ifndef MOTOR_H
 #define MOTOR_H
 
@@ -47,7 +48,8 @@ typedef struct {
     double i_friction_a;       /* no-load current: the friction in amperes of motor current */
     double battery_v, battery_r_ohm;
     double i_a;                /* armature current at the end of the last step, A */
-    double v_applied;          /* last applied voltage, V */
+    double v_applied;          /* last open-circuit drive voltage, duty * battery_v, V */
+    double r_circuit_ohm;      /* the circuit's resistance this step: R + duty^2 * R_b */
     double torque_nm;          /* output torque of the last step (friction excluded), N*m */
     /* this step's drive, set by motor_drive */
     double k_mean;             /* weight of the start current in the step's mean */
@@ -69,6 +71,10 @@ void motor_init(motor_t *m, const simcfg_t *c, double scale);
 motor_drive_t motor_drive(motor_t *m, int cmd, double w_rad_s, double dt_s);
 /* After the step: the current at its end from the wheel's end speed. */
 void motor_after(motor_t *m, const motor_drive_t *d, double w_end_rad_s, double dt_s);
+
+/* The voltage on the motor's terminals after the last step (the battery's
+ * sag taken off), V. */
+double motor_terminal_v(const motor_t *m);
 
 /* The output shaft's speed with no load at voltage v_volt, rad/s, of the
  * configured model (the scripted driver's feed-forward). */

@@ -54,6 +54,7 @@ int sim_init(sim_t *s, const simcfg_t *cfg, const maze_t *m, uint64_t seed)
         s->tof_count[i] = 0;
     }
     s->tof_enabled = 1;
+    s->diverged = 0;
     race_init(&s->race, m, cell, c->time_limit_s);
     s->step = 0;
     return 0;
@@ -70,11 +71,16 @@ double sim_time_s(const sim_t *s) { return (double)s->step * s->cfg.step_s; }
 void sim_step(sim_t *s)
 {
     double dt = s->cfg.step_s;
+    if (s->diverged) return;
     motor_drive_t d[2];
     for (int i = 0; i < 2; i++) d[i] = motor_drive(&s->motor[i], s->cmd[i], world_wheel_rate(s->world, i), dt);
     world_step(s->world, d);
-    for (int i = 0; i < 2; i++) motor_after(&s->motor[i], &d[i], world_wheel_rate(s->world, i), dt);
     s->step++;
+    if (!world_sane(s->world)) {
+        s->diverged = 1;
+        return;
+    }
+    for (int i = 0; i < 2; i++) motor_after(&s->motor[i], &d[i], world_wheel_rate(s->world, i), dt);
     for (int i = 0; i < 2; i++) encoder_update(&s->encoder[i], world_wheel_angle(s->world, i));
     uint64_t period = (uint64_t)llround(s->cfg.tof_period_s / dt);
     if (period == 0) period = 1;

@@ -31,6 +31,7 @@ typedef struct sim_s {
     race_t race;
     uint64_t step;           /* physics steps done */
     int cmd[2];              /* motor commands, -1023..1023 */
+    int diverged;            /* the physics diverged (world_sane): sim_step no longer steps */
 } sim_t;
 
 /* Place the robot in the start cell's centre facing the start heading.
@@ -38,7 +39,9 @@ typedef struct sim_s {
 int sim_init(sim_t *s, const simcfg_t *c, const maze_t *m, uint64_t seed);
 void sim_free(sim_t *s);
 /* One physics step: motor currents from the commands, ODE step, encoders,
- * due ToF readings (staggered by a third of a period each), timers. */
+ * due ToF readings (staggered by a third of a period each), timers.
+ * Once the state is no longer sane (world_sane), it sets diverged and
+ * does nothing more: the caller ends the run. */
 void sim_step(sim_t *s);
 double sim_time_s(const sim_t *s);
 

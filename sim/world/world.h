@@ -71,6 +71,14 @@ void world_place(world_t *w, double x_m, double y_m, double heading_rad, const d
  * last step, and how many separate contact episodes so far. */
 int world_touching(const world_t *w);
 unsigned world_collisions(const world_t *w);
+/* 0 once the robot's state has left what any run in the config's ranges
+ * reaches (a position beyond WORLD_SANE_M, a speed beyond
+ * WORLD_SANE_M_S, a spin beyond WORLD_SANE_RAD_S, or not a number): the
+ * integration diverged, and ODE's next steps would abort the process. */
+#define WORLD_SANE_M 1e4       /* m */
+#define WORLD_SANE_M_S 1e5     /* m/s */
+#define WORLD_SANE_RAD_S 1e7   /* rad/s; a free wheel's top speed is at most 5e6 */
+int world_sane(const world_t *w);
 
 /* The post in the middle of the maze (the goal's centre post). */
 void world_set_centre_post(world_t *w, int on);
