@@ -108,6 +108,16 @@ static int16_t clamp_cmd(float c)
     return (int16_t)lroundf(c);
 }
 
+/* Feed-forward of a wheel's speed setpoint: back-EMF plus the gearbox's
+ * friction, which opposes the motion (ramped in near rest). */
+static float feed_speed(float v_mm_s)
+{
+    float f = v_mm_s * (1.0f / RC_FRICTION_RAMP_MM_S);
+    if (f > 1.0f) f = 1.0f;
+    if (f < -1.0f) f = -1.0f;
+    return v_mm_s / RC_MM_S_PER_CMD + f * RC_CMD_FRICTION;
+}
+
 void motion_tick(motion_t *m, float dt_s)
 {
     odom_update(&m->odom, hal_encoder(HAL_LEFT), hal_encoder(HAL_RIGHT), dt_s);
@@ -148,8 +158,9 @@ void motion_tick(motion_t *m, float dt_s)
 
     float w_arc = w_set * HALF_TRACK_MM; /* wheel speed from rotation, mm/s */
     float a_arc = m->rot.accel_now * DEG_TO_RAD * HALF_TRACK_MM;
-    float ff_l = (v_set - w_arc) / RC_MM_S_PER_CMD + (m->fwd.accel_now - a_arc) * RC_CMD_PER_MM_S2;
-    float ff_r = (v_set + w_arc) / RC_MM_S_PER_CMD + (m->fwd.accel_now + a_arc) * RC_CMD_PER_MM_S2;
+    float a_fwd = m->fwd.accel_now * RC_CMD_PER_MM_S2, a_rot = a_arc * RC_CMD_PER_ARC_MM_S2;
+    float ff_l = feed_speed(v_set - w_arc) + a_fwd - a_rot;
+    float ff_r = feed_speed(v_set + w_arc) + a_fwd + a_rot;
     m->cmd[HAL_LEFT] = clamp_cmd(ff_l + fwd_out - rot_out);
     m->cmd[HAL_RIGHT] = clamp_cmd(ff_r + fwd_out + rot_out);
 

@@ -424,8 +424,9 @@ static void search_step(void)
         }
         int8_t q = d >= 0 ? quarter(st.heading, (uint8_t)d) : 0;
         if ((q == 1 || q == -1) && left >= smooth_offset_mm + 1.0f) {
-            /* go on to the turn's start, turn there without stopping */
-            mo.fwd.v_end = v_end;
+            /* go on to the turn's start, slowing to the turn's speed,
+             * and turn there without stopping */
+            mo.fwd.v_end = v_end < RC_SMOOTH_MM_S ? v_end : RC_SMOOTH_MM_S;
             profile_set_remaining(&mo.fwd, left - smooth_offset_mm);
             move_shift_mm = smooth_offset_mm;
             turn_pending = q;

@@ -19,12 +19,36 @@
 #define RC_MM_PER_COUNT (3.14159265f * RC_WHEEL_DIAMETER_MM / RC_COUNTS_PER_REV) /* 0.2806 mm */
 
 /* ---- motor model, for feed-forward ---- */
-/* no-load wheel speed per command step: 6 V / 1023 / 0.079025 N*m/A * 16 mm */
-#define RC_MM_S_PER_CMD 1.1874f
-/* command per mm/s^2 of acceleration: F = m a over two wheels, T = F r,
- * i = T / Kt, V = i R: 0.157 kg * 0.016 m / 2 / 0.079025 * 16.667 ohm
- * / 6 V * 1023 / 1000 = 0.0447 per mm/s^2 (for rotation the same per wheel) */
-#define RC_CMD_PER_MM_S2 0.045f
+/* The Pololu 30:1 LP 6V gearmotor as mmsim's datasheet model has it
+ * (sim/world/motor.h; datasheet at 6 V: no load 450 rpm and 0.02 A, stall
+ * 0.028439 N*m and 0.36 A, gear N = 29.86): R = 6 V / 0.36 A = 16.67 ohm,
+ * Ke = Kt = (6 V - 0.02 A * R) / (N * 47.12 rad/s) = 4.027 mV*s/rad at the
+ * motor shaft, gearbox efficiency eta = 0.028439 / (N * Kt * 0.34 A) =
+ * 0.696, so N * eta * Kt = 0.0836 N*m/A at the wheel. A command step is
+ * 6 V / 1023 = 5.865 mV. Steady state: V = R * (i0 + i_load) + N * Ke * w. */
+/* no-load wheel speed per command step: the friction's voltage (below)
+ * aside, (6 V - 0.333 V) / 1023 / (N * Ke = 0.12025 V*s/rad) * 16 mm =
+ * 0.7804 mm/s, i.e. 1.2814 command per mm/s; 1023 = 57 + 966 -> 754 mm/s,
+ * the datasheet's 450 rpm with 32 mm wheels */
+#define RC_MM_S_PER_CMD 0.7804f
+/* the gearbox's friction, the no-load current's voltage: i0 * R = 0.02 A *
+ * 16.67 ohm = 0.333 V = 56.8 command steps, added in the direction of each
+ * wheel's setpoint speed (ramped in below RC_FRICTION_RAMP_MM_S so that a
+ * wheel held at rest does not chatter between +-57) */
+#define RC_CMD_FRICTION 56.8f
+#define RC_FRICTION_RAMP_MM_S 20.0f
+/* command per mm/s^2 of acceleration: each wheel pushes half the effective
+ * mass, the robot's 0.157 kg plus each wheel's inertia over r^2 (rotor
+ * 2e-8 kg*m^2 * N^2 = 1.783e-5, the 10 g wheel 1.28e-6: 0.0747 kg per
+ * wheel), 0.1532 kg; T = F * r, i = T / 0.0836 N*m/A, V = i * R:
+ * 0.1532 kg * 0.001 m/s^2 * 0.016 m / 0.08364 * 16.67 ohm * 170.5 / V =
+ * 0.0833 per mm/s^2 (the robot accelerates like 0.306 kg) */
+#define RC_CMD_PER_MM_S2 0.0833f
+/* the same per mm/s^2 of wheel arc in rotation: the chassis' yaw inertia
+ * (127 g box 96 x 120 mm 2.50e-4, caster 10 g at 55 mm 3.0e-5, wheels 10 g
+ * at 48 mm 4.6e-5: 3.26e-4 kg*m^2) over 2 * (48 mm)^2 = 0.0708 kg per
+ * wheel, plus the wheel's 0.0747 kg: 0.1455 kg -> 0.0791 per mm/s^2 */
+#define RC_CMD_PER_ARC_MM_S2 0.0791f
 #define RC_CMD_MAX 1023
 
 /* ---- ToF sensors (positions match sim/world/config.c defaults) ---- */
@@ -67,7 +91,7 @@
  * 5 mm of the centre lines (docs/BENCHMARKS.md). */
 #define RC_RUN_MM_S 700.0f
 #else
-#define RC_RUN_MM_S 1100.0f          /* speed runs (motor no-load ~1210 mm/s at 6 V) */
+#define RC_RUN_MM_S 600.0f
 #endif
 #define RC_ACCEL_MM_S2 3000.0f       /* ~0.3 g; tyres hold ~1 g at mu 1.0 */
 #define RC_RUN_ACCEL_MM_S2 3000.0f   /* speed runs: 5000 crashed on japan2019 (wheel slip in the stops) */
@@ -94,9 +118,9 @@
  * 7.7 m/s^2 wheel acceleration of turn entry and exit): 18 to 22 mm off
  * the centre line after 6 turns on japan2019's run path, then a contact. A shorter offset leaves the 30 ms ToF sensors time to
  * deliver a fresh reading of the next cell before its own turn must start. */
-#define RC_SMOOTH_MM_S 500.0f
-#define RC_SMOOTH_DEG_S 458.4f       /* 8 rad/s */
-#define RC_SMOOTH_ACCEL_DEG_S2 6875.5f /* 120 rad/s^2 */
+#define RC_SMOOTH_MM_S 300.0f
+#define RC_SMOOTH_DEG_S 286.5f       /* 5 rad/s */
+#define RC_SMOOTH_ACCEL_DEG_S2 2291.8f /* 40 rad/s^2 */
 /* sense the next cell's walls this far before its centre: the diagonal
  * rays then hit it 74 mm past its entry boundary, clear of the posts */
 #define RC_SENSE_BEFORE_MM 110.0f
