@@ -122,7 +122,11 @@ void motion_tick(motion_t *m, float dt_s)
 {
     odom_update(&m->odom, hal_encoder(HAL_LEFT), hal_encoder(HAL_RIGHT), dt_s);
     if (!m->enabled || m->crashed) return;
-    profile_update(&m->fwd, dt_s);
+    /* speed up no faster than the faster wheel's feed-forward allows
+     * within RC_CMD_FF_MAX: the motor's torque to spare falls with speed */
+    float v_wheel = fabsf(m->fwd.speed) + fabsf(m->rot.speed) * (DEG_TO_RAD * HALF_TRACK_MM);
+    profile_update_capped(&m->fwd, dt_s,
+                          (RC_CMD_FF_MAX - RC_CMD_FRICTION - v_wheel / RC_MM_S_PER_CMD) * (1.0f / RC_CMD_PER_MM_S2));
     profile_update(&m->rot, dt_s);
 
     /* rotation setpoint: the turn profile, or hold the heading plus centring */

@@ -50,6 +50,12 @@
  * wheel, plus the wheel's 0.0747 kg: 0.1455 kg -> 0.0791 per mm/s^2 */
 #define RC_CMD_PER_ARC_MM_S2 0.0791f
 #define RC_CMD_MAX 1023
+/* Feed-forward may use this much of the command; the rest is for the
+ * controller's corrections (at RC_KP_* = 30 per mm, 3 mm of error). Forward
+ * moves speed up at most at (RC_CMD_FF_MAX - 57 - 1.2814 * v) / 0.0833
+ * mm/s^2: 3,200 at 500 mm/s, 1,200 at 600, none at 676 (the top speed the
+ * controller can still hold). */
+#define RC_CMD_FF_MAX 923.0f
 
 /* ---- ToF sensors (positions match sim/world/config.c defaults) ---- */
 #define RC_TOF_FRONT_Y_MM 55.0f      /* front sensor ahead of the body centre */
@@ -80,7 +86,7 @@
 /* ---- search and run speeds ---- */
 /* Search runs at the smooth-turn speed throughout: the turn is decided at
  * the sensing point, too late to brake from a faster straight. */
-#define RC_SEARCH_MM_S 500.0f
+#define RC_SEARCH_MM_S 600.0f
 #ifdef __AVR__
 /* over the link the wheel loop lags 5-9 ms: at 1100 mm/s (feed-forward ~930
  * of 1023) the outer wheel saturated and the heading weaved +-10 degrees on
@@ -123,7 +129,7 @@
 #define RC_SMOOTH_ACCEL_DEG_S2 2291.8f /* 40 rad/s^2 */
 /* sense the next cell's walls this far before its centre: the diagonal
  * rays then hit it 74 mm past its entry boundary, clear of the posts */
-#define RC_SENSE_BEFORE_MM 110.0f
+#define RC_SENSE_BEFORE_MM 140.0f
 /* without a fresh reading by this distance before a cell's centre, sense
  * with the last one (at most 30 ms = 15 mm old at search speed) */
 #define RC_SENSE_LATEST_MM 60.0f
