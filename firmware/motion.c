@@ -57,6 +57,8 @@ void motion_turn_smooth(motion_t *m, float degrees)
     m->heading_rad += degrees * DEG_TO_RAD;
 }
 
+static float ff_spare(float v_mm_s, float w_deg_s);
+
 void motion_smooth_geometry(float v_mm_s, float *offset_mm, float *length_mm)
 {
     const float dt_s = 1.0f / HAL_TICK_HZ;
@@ -66,7 +68,8 @@ void motion_smooth_geometry(float v_mm_s, float *offset_mm, float *length_mm)
     profile_reset(&p);
     profile_start(&p, 90.0f, RC_SMOOTH_DEG_S, 0, RC_SMOOTH_ACCEL_DEG_S2);
     while (p.active && ticks < 5000u) { /* ~250 ticks; the bound is for bad constants */
-        profile_update(&p, dt_s);
+        /* as motion_tick: the rotation speeds up within the outer wheel's spare command */
+        profile_update_capped(&p, dt_s, ff_spare(v_mm_s, p.speed) * (1.0f / (RC_CMD_PER_ARC_MM_S2 * HALF_TRACK_MM * DEG_TO_RAD)));
         float w = p.speed * DEG_TO_RAD;
         along += v_mm_s * dt_s * cosf(theta + 0.5f * w * dt_s);
         theta += w * dt_s;
@@ -108,6 +111,14 @@ static int16_t clamp_cmd(float c)
     return (int16_t)lroundf(c);
 }
 
+/* Command left within RC_CMD_FF_MAX for acceleration by the faster wheel's
+ * feed-forward at forward speed v_mm_s while turning at w_deg_s. */
+static float ff_spare(float v_mm_s, float w_deg_s)
+{
+    float v_wheel = fabsf(v_mm_s) + fabsf(w_deg_s) * (DEG_TO_RAD * HALF_TRACK_MM);
+    return RC_CMD_FF_MAX - RC_CMD_FRICTION - v_wheel / RC_MM_S_PER_CMD;
+}
+
 /* Feed-forward of a wheel's speed setpoint: back-EMF plus the gearbox's
  * friction, which opposes the motion (ramped in near rest). */
 static float feed_speed(float v_mm_s)
@@ -124,10 +135,9 @@ void motion_tick(motion_t *m, float dt_s)
     if (!m->enabled || m->crashed) return;
     /* speed up no faster than the faster wheel's feed-forward allows
      * within RC_CMD_FF_MAX: the motor's torque to spare falls with speed */
-    float v_wheel = fabsf(m->fwd.speed) + fabsf(m->rot.speed) * (DEG_TO_RAD * HALF_TRACK_MM);
-    profile_update_capped(&m->fwd, dt_s,
-                          (RC_CMD_FF_MAX - RC_CMD_FRICTION - v_wheel / RC_MM_S_PER_CMD) * (1.0f / RC_CMD_PER_MM_S2));
-    profile_update(&m->rot, dt_s);
+    float spare = ff_spare(m->fwd.speed, m->rot.speed);
+    profile_update_capped(&m->fwd, dt_s, spare * (1.0f / RC_CMD_PER_MM_S2));
+    profile_update_capped(&m->rot, dt_s, spare * (1.0f / (RC_CMD_PER_ARC_MM_S2 * HALF_TRACK_MM * DEG_TO_RAD)));
 
     /* rotation setpoint: the turn profile, or hold the heading plus centring */
     float w_set = m->rot.speed * DEG_TO_RAD;

@@ -113,20 +113,30 @@
  * the centre instead. */
 #define RC_PIVOT_AVG 0.3f
 /* Smooth 90-degree turns while moving at RC_SMOOTH_MM_S: the rotation
- * profile ramps to 8 rad/s at 120 rad/s^2 (peak 0.41 g sideways; outer
- * wheel 884 mm/s of the motor's ~1210). The turn starts ~80 mm before the
- * turn cell's centre and ends ~80 mm past it on the new heading (computed
- * at start-up, motion_smooth_geometry); its body keeps >= 17 mm from the
- * cell's walls and 32 mm from the inner post (checked numerically for the
- * 96 x 120 mm body at 160 rad/s^2; 120 moves both by under 1 mm). At
- * 160 rad/s^2 each turn pair of a staircase (no straight, no side wall
- * between turns) added ~0.5 degrees of heading error (wheel slip in the
- * 7.7 m/s^2 wheel acceleration of turn entry and exit): 18 to 22 mm off
- * the centre line after 6 turns on japan2019's run path, then a contact. A shorter offset leaves the 30 ms ToF sensors time to
- * deliver a fresh reading of the next cell before its own turn must start. */
-#define RC_SMOOTH_MM_S 300.0f
-#define RC_SMOOTH_DEG_S 286.5f       /* 5 rad/s */
-#define RC_SMOOTH_ACCEL_DEG_S2 2291.8f /* 40 rad/s^2 */
+ * profile speeds up at 70 rad/s^2 towards 5.5 rad/s, and no faster than
+ * the outer wheel's feed-forward leaves within RC_CMD_FF_MAX (motion.c
+ * ff_spare): at 350 mm/s that limit takes over at ~4.5 rad/s, so the
+ * outer wheel reaches 614 mm/s (feed-forward 57 + 787 = 844 at cruise, at
+ * most ~930 with the acceleration term) and the turn peaks at 0.20 g
+ * sideways. The turn starts ~79 mm before the turn cell's centre and ends
+ * ~79 mm past it on the new heading (computed at start-up,
+ * motion_smooth_geometry, with the same limit); its body (96 x 120 mm,
+ * wheels to +-52 mm) keeps >= 21 mm from the cell's walls and 32 mm from
+ * the inner post (checked numerically). The motor sets the speed: with a
+ * trapezoidal rotation the feed-forward of the outer wheel peaks where the
+ * ramp ends (speed and acceleration at once), so 300 mm/s, 5 rad/s and
+ * 40 rad/s^2 were the fastest it allowed, and japan2018's first run took
+ * 58.6 s; this turn takes 0.36 s instead of 0.44. At 100 rad/s^2 (370
+ * mm/s, 6.25 rad/s: 4.8 m/s^2 at each wheel as the turn begins) the
+ * search of japan2019 lost its heading in a staircase of turns, mapped
+ * wrong walls and crashed. Before the motor was faithful (1210 mm/s
+ * no-load) the turns ran at 500 mm/s, 8 rad/s, 120 rad/s^2; 160 rad/s^2
+ * had slipped ~0.5 degrees per turn pair in staircases (7.7 m/s^2). A
+ * shorter offset leaves the 30 ms ToF sensors time to deliver a fresh
+ * reading of the next cell before its own turn must start. */
+#define RC_SMOOTH_MM_S 350.0f
+#define RC_SMOOTH_DEG_S 315.1f       /* 5.5 rad/s */
+#define RC_SMOOTH_ACCEL_DEG_S2 4010.7f /* 70 rad/s^2 */
 /* sense the next cell's walls this far before its centre: the diagonal
  * rays then hit it 74 mm past its entry boundary, clear of the posts */
 #define RC_SENSE_BEFORE_MM 140.0f
