@@ -119,14 +119,19 @@ static float ff_spare(float v_mm_s, float w_deg_s)
     return RC_CMD_FF_MAX - RC_CMD_FRICTION - v_wheel / RC_MM_S_PER_CMD;
 }
 
-/* Feed-forward of a wheel's speed setpoint: back-EMF plus the gearbox's
- * friction, which opposes the motion (ramped in near rest). */
-static float feed_speed(float v_mm_s)
+/* A wheel's command: back-EMF of its speed setpoint v_mm_s plus the
+ * controller's correction pid (command), and the gearbox's friction, which
+ * opposes the motion: in the direction the wheel is meant to turn, the
+ * setpoint moved by the correction (as a speed), ramped in near rest. At
+ * rest the correction alone decides: without it a position error under
+ * 57 / RC_KP_FWD mm never moves a wheel held by the stiction (the AVR's
+ * search stood 80 s in one cell of japan2019, busy settling). */
+static float wheel_cmd(float v_mm_s, float pid)
 {
-    float f = v_mm_s * (1.0f / RC_FRICTION_RAMP_MM_S);
+    float f = (v_mm_s + pid * RC_MM_S_PER_CMD) * (1.0f / RC_FRICTION_RAMP_MM_S);
     if (f > 1.0f) f = 1.0f;
     if (f < -1.0f) f = -1.0f;
-    return v_mm_s / RC_MM_S_PER_CMD + f * RC_CMD_FRICTION;
+    return v_mm_s / RC_MM_S_PER_CMD + f * RC_CMD_FRICTION + pid;
 }
 
 void motion_tick(motion_t *m, float dt_s)
@@ -173,10 +178,8 @@ void motion_tick(motion_t *m, float dt_s)
     float w_arc = w_set * HALF_TRACK_MM; /* wheel speed from rotation, mm/s */
     float a_arc = m->rot.accel_now * DEG_TO_RAD * HALF_TRACK_MM;
     float a_fwd = m->fwd.accel_now * RC_CMD_PER_MM_S2, a_rot = a_arc * RC_CMD_PER_ARC_MM_S2;
-    float ff_l = feed_speed(v_set - w_arc) + a_fwd - a_rot;
-    float ff_r = feed_speed(v_set + w_arc) + a_fwd + a_rot;
-    m->cmd[HAL_LEFT] = clamp_cmd(ff_l + fwd_out - rot_out);
-    m->cmd[HAL_RIGHT] = clamp_cmd(ff_r + fwd_out + rot_out);
+    m->cmd[HAL_LEFT] = clamp_cmd(wheel_cmd(v_set - w_arc, fwd_out - rot_out) + a_fwd - a_rot);
+    m->cmd[HAL_RIGHT] = clamp_cmd(wheel_cmd(v_set + w_arc, fwd_out + rot_out) + a_fwd + a_rot);
 
     /* stuck against something: stop rather than push forever */
     if (fabsf(m->fwd_err_mm) > RC_STALL_MM) {

@@ -95,7 +95,7 @@
  * began 2 degrees off, the nine turns after it drifted 5 mm a step and the
  * robot hit the wall at (0.61, 1.40) m. At 700 the staircase stays within
  * 5 mm of the centre lines (docs/BENCHMARKS.md). */
-#define RC_RUN_MM_S 700.0f
+#define RC_RUN_MM_S 600.0f
 #else
 #define RC_RUN_MM_S 600.0f
 #endif
