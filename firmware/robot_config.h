@@ -84,24 +84,35 @@
 #define RC_FRONT_AT_CENTRE_MM (RC_CELL_MM / 2 - RC_WALL_MM / 2 - RC_TOF_FRONT_Y_MM) /* 29 mm */
 
 /* ---- search and run speeds ---- */
-/* Search runs at the smooth-turn speed throughout: the turn is decided at
- * the sensing point, too late to brake from a faster straight. */
+/* The motor's top speed is 754 mm/s (no load, 6 V); the controller keeps
+ * the feed-forward within RC_CMD_FF_MAX, which caps the speed it can hold
+ * at 676 mm/s. Search straights: 600 mm/s (feed-forward 57 + 769 = 826,
+ * 100 of the speeding-up budget left at cruise). The turn at the next cell
+ * is decided at the sensing point, RC_SENSE_BEFORE_MM before its centre,
+ * which leaves 140 - 79 = 61 mm to brake to RC_SMOOTH_MM_S (1,900 mm/s^2
+ * from 600 to 350). Search at 500 mm/s with 300 mm/s turns: japan2018's
+ * first run 63.7 s; at 600 (sensing 140 mm before the centre) 58.6 s. */
 #define RC_SEARCH_MM_S 600.0f
 #ifdef __AVR__
-/* over the link the wheel loop lags 5-9 ms: at 1100 mm/s (feed-forward ~930
- * of 1023) the outer wheel saturated and the heading weaved +-10 degrees on
- * japan2019's long straight. At 900 the braking into a smooth turn still
- * swung the heading +-4 degrees: the first turn of japan2019's staircase
- * began 2 degrees off, the nine turns after it drifted 5 mm a step and the
- * robot hit the wall at (0.61, 1.40) m. At 700 the staircase stays within
- * 5 mm of the centre lines (docs/BENCHMARKS.md). */
+/* Over the link the wheel loop lags 5-9 ms; with the old, faster motor
+ * speed runs at 1100 and 900 mm/s weaved on japan2019's straights and
+ * staircase (docs/BENCHMARKS.md) and 700 held. The true motor's 650 mm/s
+ * is below all of those; the AVR keeps 600 (feed-forward 826: ~200 of
+ * command for the steering of a loop that lags). */
 #define RC_RUN_MM_S 600.0f
 #else
-#define RC_RUN_MM_S 600.0f
+/* speed runs: 650 mm/s, feed-forward 57 + 833 = 890 of 1023 at cruise
+ * (speeding up slows to ~400 mm/s^2 near it, RC_CMD_FF_MAX). 600: best
+ * runs 28.4 s on japan2018 and 27.7 on japan2019, 650: 27.1 and 27.0 */
+#define RC_RUN_MM_S 650.0f
 #endif
-#define RC_ACCEL_MM_S2 3000.0f       /* ~0.3 g; tyres hold ~1 g at mu 1.0 */
+/* ~0.3 g (tyres hold ~1 g at mu 1.0); speeding up, the motor allows it only
+ * below 481 mm/s (RC_CMD_FF_MAX), braking always */
+#define RC_ACCEL_MM_S2 3000.0f
 #define RC_RUN_ACCEL_MM_S2 3000.0f   /* speed runs: 5000 crashed on japan2019 (wheel slip in the stops) */
-#define RC_TURN_DEG_S 600.0f         /* in-place turns */
+/* in-place turns: a quarter turn peaks at 520 deg/s (wheels 436 mm/s),
+ * feed-forward 57 + 558 + 199 (52 rad/s^2 of wheel arc) = 814 */
+#define RC_TURN_DEG_S 600.0f
 #define RC_TURN_ACCEL_DEG_S2 3000.0f
 /* On the spot the body's corners sweep 77 mm about the pivot and the cell
  * leaves 84 mm: 7 mm off the centre line touches a wall. Off-centre stops
@@ -138,10 +149,13 @@
 #define RC_SMOOTH_DEG_S 315.1f       /* 5.5 rad/s */
 #define RC_SMOOTH_ACCEL_DEG_S2 4010.7f /* 70 rad/s^2 */
 /* sense the next cell's walls this far before its centre: the diagonal
- * rays then hit it 74 mm past its entry boundary, clear of the posts */
+ * rays (50 mm ahead of the body's centre, 44 mm more to the side wall)
+ * then hit it 46 mm before its centre, 44 mm past its entry boundary, clear
+ * of the posts (+-6 mm about it). 110 before (74 mm past the boundary)
+ * left only 31 mm to brake into a smooth turn. */
 #define RC_SENSE_BEFORE_MM 140.0f
 /* without a fresh reading by this distance before a cell's centre, sense
- * with the last one (at most 30 ms = 15 mm old at search speed) */
+ * with the last one (at most 30 ms = 18 mm old at search speed) */
 #define RC_SENSE_LATEST_MM 60.0f
 /* front-wall alignment works in the last part of a move towards a wall */
 #define RC_ALIGN_FROM_MM 90.0f
@@ -160,9 +174,12 @@
 #define RC_WALL_HEADING_MAX_RAD 0.09f /* 5 degrees: more is a post or a missing wall, not drift */
 
 /* ---- controller gains (tuned in mmsim on japan2018) ---- */
-/* Plant: one command step accelerates the robot by ~22 mm/s^2, and the
- * motor's back-EMF damps it with a 54 ms time constant, so the loop needs
- * a stiff P and no D (a 1 ms encoder difference is 280 mm/s per count). */
+/* Plant: one command step accelerates the robot by 1 / 0.0833 = 12 mm/s^2,
+ * and the motor's back-EMF damps it with a 0.0833 * 0.7804 = 65 ms time
+ * constant, so the loop needs a stiff P and no D (a 1 ms encoder
+ * difference is 280 mm/s per count). With the gearbox's friction (57) the
+ * P alone left the wheels at rest up to 57 / 30 = 1.9 mm off, more than
+ * RC_SETTLE_MM: motion.c wheel_cmd compensates it. */
 #ifdef __AVR__
 /* On an Arduino over the serial link (HIL, and PIL in simavr) the loop runs
  * at 250 Hz and lags 5-9 ms (encoder frames up to 4 ms old, ~1.8 ms of
