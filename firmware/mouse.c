@@ -410,7 +410,7 @@ static void search_step(void)
         hal_belief(&ex.map, ex.cell, st.heading, st.mode);
         /* planning takes 30-200 ms on a 16 MHz AVR (no time in the
          * simulator): meanwhile the move brakes into the cell ahead (from
-         * 42 mm before it at search speed) instead of running on */
+         * 60 mm before it at search speed) instead of running on */
         float v_end = mo.fwd.v_end;
         mo.fwd.v_end = 0;
         int d = explore_next(&ex);

@@ -26,15 +26,18 @@
  * motor shaft, gearbox efficiency eta = 0.028439 / (N * Kt * 0.34 A) =
  * 0.696, so N * eta * Kt = 0.0836 N*m/A at the wheel. A command step is
  * 6 V / 1023 = 5.865 mV. Steady state: V = R * (i0 + i_load) + N * Ke * w. */
-/* no-load wheel speed per command step: the friction's voltage (below)
- * aside, (6 V - 0.333 V) / 1023 / (N * Ke = 0.12025 V*s/rad) * 16 mm =
- * 0.7804 mm/s, i.e. 1.2814 command per mm/s; 1023 = 57 + 966 -> 754 mm/s,
- * the datasheet's 450 rpm with 32 mm wheels */
+/* no-load wheel speed per command step, the friction's voltage (below)
+ * aside: 5.865 mV / (N * Ke = 0.12025 V*s/rad) = 0.04877 rad/s at the
+ * wheel, * 16 mm = 0.7804 mm/s, i.e. 1.2814 command per mm/s. Check:
+ * 1023 = 57 + 966 -> 966 * 0.7804 = 754 mm/s, the datasheet's 450 rpm
+ * with 32 mm wheels. */
 #define RC_MM_S_PER_CMD 0.7804f
 /* the gearbox's friction, the no-load current's voltage: i0 * R = 0.02 A *
- * 16.67 ohm = 0.333 V = 56.8 command steps, added in the direction of each
- * wheel's setpoint speed (ramped in below RC_FRICTION_RAMP_MM_S so that a
- * wheel held at rest does not chatter between +-57) */
+ * 16.67 ohm = 0.333 V = 56.8 command steps, added in the direction the
+ * wheel is meant to turn: its setpoint speed plus the controller's
+ * correction as a speed (motion.c wheel_cmd), ramped in over
+ * RC_FRICTION_RAMP_MM_S so that a wheel held at rest does not chatter
+ * between +-57 (with the P of 30 the ramp ends at 0.85 mm of error) */
 #define RC_CMD_FRICTION 56.8f
 #define RC_FRICTION_RAMP_MM_S 20.0f
 /* command per mm/s^2 of acceleration: each wheel pushes half the effective
@@ -53,7 +56,7 @@
 /* Feed-forward may use this much of the command; the rest is for the
  * controller's corrections (at RC_KP_* = 30 per mm, 3 mm of error). Forward
  * moves speed up at most at (RC_CMD_FF_MAX - 57 - 1.2814 * v) / 0.0833
- * mm/s^2: 3,200 at 500 mm/s, 1,200 at 600, none at 676 (the top speed the
+ * mm/s^2: 2,700 at 500 mm/s, 1,200 at 600, none at 676 (the top speed the
  * controller can still hold). */
 #define RC_CMD_FF_MAX 923.0f
 
@@ -196,7 +199,7 @@
 #define RC_KD_ROT 0.0f     /* command per mm/s of wheel-arc rotation rate error */
 /* Wall centring: heading offset per mm off the centre line (P: 10 mm ->
  * 5.7 degrees; with the heading loop's 0.1 s lag the lateral loop is
- * damped at zeta ~0.7 at 500 mm/s, ~0.5 at 1100 mm/s) and the rate at
+ * damped at zeta ~0.7 at 500 mm/s, ~0.6 at 650 mm/s) and the rate at
  * which the held heading itself follows (I, a fifth of P per second). */
 #define RC_KP_LATERAL 0.01f   /* rad per mm */
 #define RC_KI_LATERAL 0.01f  /* rad/s per mm */
