@@ -24,6 +24,9 @@ print("mmsim %s (scripted driver, 3 runs to the goal): sim %.1f s, real-time fac
     d["maze"].split("/")[-1], d["sim_time_s"], max(r["real_time_factor"] for r in runs),
     sorted(r["real_time_factor"] for r in runs)[1], [l["run_s"] for l in d["laps"]], d["collisions"]))'
   done
+  # the physical lower bound of a speed run on each maze's best path with
+  # this robot and motor (docs/BENCHMARKS.md, "Speed runs against physics")
+  python3 bench/lower_bound.py --mmsim $B/mmsim --mmmaze $B/mmmaze "$DB/classic/japan2018.txt" "$DB/classic/japan2019.txt"
 else
   echo "SKIP database benchmarks: $DB not found"
   $B/bench_flood mazes/*.txt

@@ -57,6 +57,8 @@ void motion_turn_smooth(motion_t *m, float degrees)
     m->heading_rad += degrees * DEG_TO_RAD;
 }
 
+static float ff_spare(float v_mm_s, float w_deg_s);
+
 void motion_smooth_geometry(float v_mm_s, float *offset_mm, float *length_mm)
 {
     const float dt_s = 1.0f / HAL_TICK_HZ;
@@ -66,7 +68,8 @@ void motion_smooth_geometry(float v_mm_s, float *offset_mm, float *length_mm)
     profile_reset(&p);
     profile_start(&p, 90.0f, RC_SMOOTH_DEG_S, 0, RC_SMOOTH_ACCEL_DEG_S2);
     while (p.active && ticks < 5000u) { /* ~250 ticks; the bound is for bad constants */
-        profile_update(&p, dt_s);
+        /* as motion_tick: the rotation speeds up within the outer wheel's spare command */
+        profile_update_capped(&p, dt_s, ff_spare(v_mm_s, p.speed) * (1.0f / (RC_CMD_PER_ARC_MM_S2 * HALF_TRACK_MM * DEG_TO_RAD)));
         float w = p.speed * DEG_TO_RAD;
         along += v_mm_s * dt_s * cosf(theta + 0.5f * w * dt_s);
         theta += w * dt_s;
@@ -108,12 +111,38 @@ static int16_t clamp_cmd(float c)
     return (int16_t)lroundf(c);
 }
 
+/* Command left within RC_CMD_FF_MAX for acceleration by the faster wheel's
+ * feed-forward at forward speed v_mm_s while turning at w_deg_s. */
+static float ff_spare(float v_mm_s, float w_deg_s)
+{
+    float v_wheel = fabsf(v_mm_s) + fabsf(w_deg_s) * (DEG_TO_RAD * HALF_TRACK_MM);
+    return RC_CMD_FF_MAX - RC_CMD_FRICTION - v_wheel / RC_MM_S_PER_CMD;
+}
+
+/* A wheel's command: back-EMF of its speed setpoint v_mm_s plus the
+ * controller's correction pid (command), and the gearbox's friction, which
+ * opposes the motion: in the direction the wheel is meant to turn, the
+ * setpoint moved by the correction (as a speed), ramped in near rest. At
+ * rest the correction alone decides: without it a position error under
+ * 57 / RC_KP_FWD mm never moves a wheel held by the stiction (the AVR's
+ * search stood 80 s in one cell of japan2019, busy settling). */
+static float wheel_cmd(float v_mm_s, float pid)
+{
+    float f = (v_mm_s + pid * RC_MM_S_PER_CMD) * (1.0f / RC_FRICTION_RAMP_MM_S);
+    if (f > 1.0f) f = 1.0f;
+    if (f < -1.0f) f = -1.0f;
+    return v_mm_s / RC_MM_S_PER_CMD + f * RC_CMD_FRICTION + pid;
+}
+
 void motion_tick(motion_t *m, float dt_s)
 {
     odom_update(&m->odom, hal_encoder(HAL_LEFT), hal_encoder(HAL_RIGHT), dt_s);
     if (!m->enabled || m->crashed) return;
-    profile_update(&m->fwd, dt_s);
-    profile_update(&m->rot, dt_s);
+    /* speed up no faster than the faster wheel's feed-forward allows
+     * within RC_CMD_FF_MAX: the motor's torque to spare falls with speed */
+    float spare = ff_spare(m->fwd.speed, m->rot.speed);
+    profile_update_capped(&m->fwd, dt_s, spare * (1.0f / RC_CMD_PER_MM_S2));
+    profile_update_capped(&m->rot, dt_s, spare * (1.0f / (RC_CMD_PER_ARC_MM_S2 * HALF_TRACK_MM * DEG_TO_RAD)));
 
     /* rotation setpoint: the turn profile, or hold the heading plus centring */
     float w_set = m->rot.speed * DEG_TO_RAD;
@@ -148,10 +177,9 @@ void motion_tick(motion_t *m, float dt_s)
 
     float w_arc = w_set * HALF_TRACK_MM; /* wheel speed from rotation, mm/s */
     float a_arc = m->rot.accel_now * DEG_TO_RAD * HALF_TRACK_MM;
-    float ff_l = (v_set - w_arc) / RC_MM_S_PER_CMD + (m->fwd.accel_now - a_arc) * RC_CMD_PER_MM_S2;
-    float ff_r = (v_set + w_arc) / RC_MM_S_PER_CMD + (m->fwd.accel_now + a_arc) * RC_CMD_PER_MM_S2;
-    m->cmd[HAL_LEFT] = clamp_cmd(ff_l + fwd_out - rot_out);
-    m->cmd[HAL_RIGHT] = clamp_cmd(ff_r + fwd_out + rot_out);
+    float a_fwd = m->fwd.accel_now * RC_CMD_PER_MM_S2, a_rot = a_arc * RC_CMD_PER_ARC_MM_S2;
+    m->cmd[HAL_LEFT] = clamp_cmd(wheel_cmd(v_set - w_arc, fwd_out - rot_out) + a_fwd - a_rot);
+    m->cmd[HAL_RIGHT] = clamp_cmd(wheel_cmd(v_set + w_arc, fwd_out + rot_out) + a_fwd + a_rot);
 
     /* stuck against something: stop rather than push forever */
     if (fabsf(m->fwd_err_mm) > RC_STALL_MM) {

@@ -410,7 +410,7 @@ static void search_step(void)
         hal_belief(&ex.map, ex.cell, st.heading, st.mode);
         /* planning takes 30-200 ms on a 16 MHz AVR (no time in the
          * simulator): meanwhile the move brakes into the cell ahead (from
-         * 42 mm before it at search speed) instead of running on */
+         * 60 mm before it at search speed) instead of running on */
         float v_end = mo.fwd.v_end;
         mo.fwd.v_end = 0;
         int d = explore_next(&ex);
@@ -424,8 +424,9 @@ static void search_step(void)
         }
         int8_t q = d >= 0 ? quarter(st.heading, (uint8_t)d) : 0;
         if ((q == 1 || q == -1) && left >= smooth_offset_mm + 1.0f) {
-            /* go on to the turn's start, turn there without stopping */
-            mo.fwd.v_end = v_end;
+            /* go on to the turn's start, slowing to the turn's speed,
+             * and turn there without stopping */
+            mo.fwd.v_end = v_end < RC_SMOOTH_MM_S ? v_end : RC_SMOOTH_MM_S;
             profile_set_remaining(&mo.fwd, left - smooth_offset_mm);
             move_shift_mm = smooth_offset_mm;
             turn_pending = q;

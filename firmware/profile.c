@@ -22,7 +22,9 @@ void profile_start(profile_t *p, float distance, float v_max, float v_end, float
     if (!p->active) p->speed = p->v_end;
 }
 
-void profile_update(profile_t *p, float dt_s)
+void profile_update(profile_t *p, float dt_s) { profile_update_capped(p, dt_s, INFINITY); }
+
+void profile_update_capped(profile_t *p, float dt_s, float a_up)
 {
     float before = p->speed;
     if (!p->active) {
@@ -35,12 +37,17 @@ void profile_update(profile_t *p, float dt_s)
     float v_brake = sqrtf(p->v_end * p->v_end + 2.0f * p->accel * (remaining > 0 ? remaining : 0));
     float v_goal = fminf(fabsf(p->v_max), v_brake) * sign;
     float dv = p->accel * dt_s;
+    float dv_up = (a_up < p->accel ? (a_up > 0 ? a_up : 0) : p->accel) * dt_s;
     /* brake up to twice as hard when the end moved closer (front-wall
      * alignment shortens a move under way) */
     float dv_brake = fabsf(p->speed) > fabsf(v_goal) + dv ? 2.0f * dv : dv;
-    if (p->speed < v_goal - dv_brake) p->speed += sign > 0 ? dv : dv_brake;
-    else if (p->speed > v_goal + dv_brake) p->speed -= sign > 0 ? dv_brake : dv;
-    else p->speed = v_goal;
+    if (p->speed < v_goal) {
+        float step = sign > 0 ? dv_up : dv_brake;
+        p->speed = p->speed + step < v_goal ? p->speed + step : v_goal;
+    } else if (p->speed > v_goal) {
+        float step = sign > 0 ? dv_brake : dv_up;
+        p->speed = p->speed - step > v_goal ? p->speed - step : v_goal;
+    }
     p->pos += p->speed * dt_s;
     if ((p->target - p->pos) * sign <= 0 || (fabsf(p->speed) < 1e-3f && remaining < 0.05f)) {
         p->pos = p->target;

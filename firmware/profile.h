@@ -19,6 +19,9 @@ void profile_reset(profile_t *p);
 void profile_start(profile_t *p, float distance, float v_max, float v_end, float accel);
 /* Advance by dt seconds. */
 void profile_update(profile_t *p, float dt_s);
+/* The same, speeding up at no more than a_up (>= 0; braking keeps accel):
+ * a motor's torque to spare falls as its speed rises. */
+void profile_update_capped(profile_t *p, float dt_s, float a_up);
 float profile_remaining(const profile_t *p);
 /* Move the end of the current move so that `remaining` is left to go. */
 void profile_set_remaining(profile_t *p, float remaining);

@@ -19,13 +19,46 @@
 #define RC_MM_PER_COUNT (3.14159265f * RC_WHEEL_DIAMETER_MM / RC_COUNTS_PER_REV) /* 0.2806 mm */
 
 /* ---- motor model, for feed-forward ---- */
-/* no-load wheel speed per command step: 6 V / 1023 / 0.079025 N*m/A * 16 mm */
-#define RC_MM_S_PER_CMD 1.1874f
-/* command per mm/s^2 of acceleration: F = m a over two wheels, T = F r,
- * i = T / Kt, V = i R: 0.157 kg * 0.016 m / 2 / 0.079025 * 16.667 ohm
- * / 6 V * 1023 / 1000 = 0.0447 per mm/s^2 (for rotation the same per wheel) */
-#define RC_CMD_PER_MM_S2 0.045f
+/* The Pololu 30:1 LP 6V gearmotor as mmsim's datasheet model has it
+ * (sim/world/motor.h; datasheet at 6 V: no load 450 rpm and 0.02 A, stall
+ * 0.028439 N*m and 0.36 A, gear N = 29.86): R = 6 V / 0.36 A = 16.67 ohm,
+ * Ke = Kt = (6 V - 0.02 A * R) / (N * 47.12 rad/s) = 4.027 mV*s/rad at the
+ * motor shaft, gearbox efficiency eta = 0.028439 / (N * Kt * 0.34 A) =
+ * 0.696, so N * eta * Kt = 0.0836 N*m/A at the wheel. A command step is
+ * 6 V / 1023 = 5.865 mV. Steady state: V = R * (i0 + i_load) + N * Ke * w. */
+/* no-load wheel speed per command step, the friction's voltage (below)
+ * aside: 5.865 mV / (N * Ke = 0.12025 V*s/rad) = 0.04877 rad/s at the
+ * wheel, * 16 mm = 0.7804 mm/s, i.e. 1.2814 command per mm/s. Check:
+ * 1023 = 57 + 966 -> 966 * 0.7804 = 754 mm/s, the datasheet's 450 rpm
+ * with 32 mm wheels. */
+#define RC_MM_S_PER_CMD 0.7804f
+/* the gearbox's friction, the no-load current's voltage: i0 * R = 0.02 A *
+ * 16.67 ohm = 0.333 V = 56.8 command steps, added in the direction the
+ * wheel is meant to turn: its setpoint speed plus the controller's
+ * correction as a speed (motion.c wheel_cmd), ramped in over
+ * RC_FRICTION_RAMP_MM_S so that a wheel held at rest does not chatter
+ * between +-57 (with the P of 30 the ramp ends at 0.85 mm of error) */
+#define RC_CMD_FRICTION 56.8f
+#define RC_FRICTION_RAMP_MM_S 20.0f
+/* command per mm/s^2 of acceleration: each wheel pushes half the effective
+ * mass, the robot's 0.157 kg plus each wheel's inertia over r^2 (rotor
+ * 2e-8 kg*m^2 * N^2 = 1.783e-5, the 10 g wheel 1.28e-6: 0.0747 kg per
+ * wheel), 0.1532 kg; T = F * r, i = T / 0.0836 N*m/A, V = i * R:
+ * 0.1532 kg * 0.001 m/s^2 * 0.016 m / 0.08364 * 16.67 ohm * 170.5 / V =
+ * 0.0833 per mm/s^2 (the robot accelerates like 0.306 kg) */
+#define RC_CMD_PER_MM_S2 0.0833f
+/* the same per mm/s^2 of wheel arc in rotation: the chassis' yaw inertia
+ * (127 g box 96 x 120 mm 2.50e-4, caster 10 g at 55 mm 3.0e-5, wheels 10 g
+ * at 48 mm 4.6e-5: 3.26e-4 kg*m^2) over 2 * (48 mm)^2 = 0.0708 kg per
+ * wheel, plus the wheel's 0.0747 kg: 0.1455 kg -> 0.0791 per mm/s^2 */
+#define RC_CMD_PER_ARC_MM_S2 0.0791f
 #define RC_CMD_MAX 1023
+/* Feed-forward may use this much of the command; the rest is for the
+ * controller's corrections (at RC_KP_* = 30 per mm, 3 mm of error). Forward
+ * moves speed up at most at (RC_CMD_FF_MAX - 57 - 1.2814 * v) / 0.0833
+ * mm/s^2: 2,700 at 500 mm/s, 1,200 at 600, none at 676 (the top speed the
+ * controller can still hold). */
+#define RC_CMD_FF_MAX 923.0f
 
 /* ---- ToF sensors (positions match sim/world/config.c defaults) ---- */
 #define RC_TOF_FRONT_Y_MM 55.0f      /* front sensor ahead of the body centre */
@@ -54,24 +87,35 @@
 #define RC_FRONT_AT_CENTRE_MM (RC_CELL_MM / 2 - RC_WALL_MM / 2 - RC_TOF_FRONT_Y_MM) /* 29 mm */
 
 /* ---- search and run speeds ---- */
-/* Search runs at the smooth-turn speed throughout: the turn is decided at
- * the sensing point, too late to brake from a faster straight. */
-#define RC_SEARCH_MM_S 500.0f
+/* The motor's top speed is 754 mm/s (no load, 6 V); the controller keeps
+ * the feed-forward within RC_CMD_FF_MAX, which caps the speed it can hold
+ * at 676 mm/s. Search straights: 600 mm/s (feed-forward 57 + 769 = 826,
+ * 100 of the speeding-up budget left at cruise). The turn at the next cell
+ * is decided at the sensing point, RC_SENSE_BEFORE_MM before its centre,
+ * which leaves 140 - 79 = 61 mm to brake to RC_SMOOTH_MM_S (1,900 mm/s^2
+ * from 600 to 350). Search at 500 mm/s with 300 mm/s turns: japan2018's
+ * first run 63.7 s; at 600 (sensing 140 mm before the centre) 58.6 s. */
+#define RC_SEARCH_MM_S 600.0f
 #ifdef __AVR__
-/* over the link the wheel loop lags 5-9 ms: at 1100 mm/s (feed-forward ~930
- * of 1023) the outer wheel saturated and the heading weaved +-10 degrees on
- * japan2019's long straight. At 900 the braking into a smooth turn still
- * swung the heading +-4 degrees: the first turn of japan2019's staircase
- * began 2 degrees off, the nine turns after it drifted 5 mm a step and the
- * robot hit the wall at (0.61, 1.40) m. At 700 the staircase stays within
- * 5 mm of the centre lines (docs/BENCHMARKS.md). */
-#define RC_RUN_MM_S 700.0f
+/* Over the link the wheel loop lags 5-9 ms; with the old, faster motor
+ * speed runs at 1100 and 900 mm/s weaved on japan2019's straights and
+ * staircase (docs/BENCHMARKS.md) and 700 held. The true motor's 650 mm/s
+ * is below all of those; the AVR keeps 600 (feed-forward 826: ~200 of
+ * command for the steering of a loop that lags). */
+#define RC_RUN_MM_S 600.0f
 #else
-#define RC_RUN_MM_S 1100.0f          /* speed runs (motor no-load ~1210 mm/s at 6 V) */
+/* speed runs: 650 mm/s, feed-forward 57 + 833 = 890 of 1023 at cruise
+ * (speeding up slows to ~400 mm/s^2 near it, RC_CMD_FF_MAX). 600: best
+ * runs 28.4 s on japan2018 and 27.7 on japan2019, 650: 27.1 and 27.0 */
+#define RC_RUN_MM_S 650.0f
 #endif
-#define RC_ACCEL_MM_S2 3000.0f       /* ~0.3 g; tyres hold ~1 g at mu 1.0 */
+/* ~0.3 g (tyres hold ~1 g at mu 1.0); speeding up, the motor allows it only
+ * below 481 mm/s (RC_CMD_FF_MAX), braking always */
+#define RC_ACCEL_MM_S2 3000.0f
 #define RC_RUN_ACCEL_MM_S2 3000.0f   /* speed runs: 5000 crashed on japan2019 (wheel slip in the stops) */
-#define RC_TURN_DEG_S 600.0f         /* in-place turns */
+/* in-place turns: a quarter turn peaks at 520 deg/s (wheels 436 mm/s),
+ * feed-forward 57 + 558 + 199 (52 rad/s^2 of wheel arc) = 814 */
+#define RC_TURN_DEG_S 600.0f
 #define RC_TURN_ACCEL_DEG_S2 3000.0f
 /* On the spot the body's corners sweep 77 mm about the pivot and the cell
  * leaves 84 mm: 7 mm off the centre line touches a wall. Off-centre stops
@@ -83,25 +127,38 @@
  * the centre instead. */
 #define RC_PIVOT_AVG 0.3f
 /* Smooth 90-degree turns while moving at RC_SMOOTH_MM_S: the rotation
- * profile ramps to 8 rad/s at 120 rad/s^2 (peak 0.41 g sideways; outer
- * wheel 884 mm/s of the motor's ~1210). The turn starts ~80 mm before the
- * turn cell's centre and ends ~80 mm past it on the new heading (computed
- * at start-up, motion_smooth_geometry); its body keeps >= 17 mm from the
- * cell's walls and 32 mm from the inner post (checked numerically for the
- * 96 x 120 mm body at 160 rad/s^2; 120 moves both by under 1 mm). At
- * 160 rad/s^2 each turn pair of a staircase (no straight, no side wall
- * between turns) added ~0.5 degrees of heading error (wheel slip in the
- * 7.7 m/s^2 wheel acceleration of turn entry and exit): 18 to 22 mm off
- * the centre line after 6 turns on japan2019's run path, then a contact. A shorter offset leaves the 30 ms ToF sensors time to
- * deliver a fresh reading of the next cell before its own turn must start. */
-#define RC_SMOOTH_MM_S 500.0f
-#define RC_SMOOTH_DEG_S 458.4f       /* 8 rad/s */
-#define RC_SMOOTH_ACCEL_DEG_S2 6875.5f /* 120 rad/s^2 */
+ * profile speeds up at 70 rad/s^2 towards 5.5 rad/s, and no faster than
+ * the outer wheel's feed-forward leaves within RC_CMD_FF_MAX (motion.c
+ * ff_spare): at 350 mm/s that limit takes over at ~4.5 rad/s, so the
+ * outer wheel reaches 614 mm/s (feed-forward 57 + 787 = 844 at cruise, at
+ * most ~930 with the acceleration term) and the turn peaks at 0.20 g
+ * sideways. The turn starts ~79 mm before the turn cell's centre and ends
+ * ~79 mm past it on the new heading (computed at start-up,
+ * motion_smooth_geometry, with the same limit); its body (96 x 120 mm,
+ * wheels to +-52 mm) keeps >= 21 mm from the cell's walls and 32 mm from
+ * the inner post (checked numerically). The motor sets the speed: with a
+ * trapezoidal rotation the feed-forward of the outer wheel peaks where the
+ * ramp ends (speed and acceleration at once), so 300 mm/s, 5 rad/s and
+ * 40 rad/s^2 were the fastest it allowed, and japan2018's first run took
+ * 58.6 s; this turn takes 0.36 s instead of 0.44. At 100 rad/s^2 (370
+ * mm/s, 6.25 rad/s: 4.8 m/s^2 at each wheel as the turn begins) the
+ * search of japan2019 lost its heading in a staircase of turns, mapped
+ * wrong walls and crashed. Before the motor was faithful (1210 mm/s
+ * no-load) the turns ran at 500 mm/s, 8 rad/s, 120 rad/s^2; 160 rad/s^2
+ * had slipped ~0.5 degrees per turn pair in staircases (7.7 m/s^2). A
+ * shorter offset leaves the 30 ms ToF sensors time to deliver a fresh
+ * reading of the next cell before its own turn must start. */
+#define RC_SMOOTH_MM_S 350.0f
+#define RC_SMOOTH_DEG_S 315.1f       /* 5.5 rad/s */
+#define RC_SMOOTH_ACCEL_DEG_S2 4010.7f /* 70 rad/s^2 */
 /* sense the next cell's walls this far before its centre: the diagonal
- * rays then hit it 74 mm past its entry boundary, clear of the posts */
-#define RC_SENSE_BEFORE_MM 110.0f
+ * rays (50 mm ahead of the body's centre, 44 mm more to the side wall)
+ * then hit it 46 mm before its centre, 44 mm past its entry boundary, clear
+ * of the posts (+-6 mm about it). 110 before (74 mm past the boundary)
+ * left only 31 mm to brake into a smooth turn. */
+#define RC_SENSE_BEFORE_MM 140.0f
 /* without a fresh reading by this distance before a cell's centre, sense
- * with the last one (at most 30 ms = 15 mm old at search speed) */
+ * with the last one (at most 30 ms = 18 mm old at search speed) */
 #define RC_SENSE_LATEST_MM 60.0f
 /* front-wall alignment works in the last part of a move towards a wall */
 #define RC_ALIGN_FROM_MM 90.0f
@@ -120,9 +177,12 @@
 #define RC_WALL_HEADING_MAX_RAD 0.09f /* 5 degrees: more is a post or a missing wall, not drift */
 
 /* ---- controller gains (tuned in mmsim on japan2018) ---- */
-/* Plant: one command step accelerates the robot by ~22 mm/s^2, and the
- * motor's back-EMF damps it with a 54 ms time constant, so the loop needs
- * a stiff P and no D (a 1 ms encoder difference is 280 mm/s per count). */
+/* Plant: one command step accelerates the robot by 1 / 0.0833 = 12 mm/s^2,
+ * and the motor's back-EMF damps it with a 0.0833 * 0.7804 = 65 ms time
+ * constant, so the loop needs a stiff P and no D (a 1 ms encoder
+ * difference is 280 mm/s per count). With the gearbox's friction (57) the
+ * P alone left the wheels at rest up to 57 / 30 = 1.9 mm off, more than
+ * RC_SETTLE_MM: motion.c wheel_cmd compensates it. */
 #ifdef __AVR__
 /* On an Arduino over the serial link (HIL, and PIL in simavr) the loop runs
  * at 250 Hz and lags 5-9 ms (encoder frames up to 4 ms old, ~1.8 ms of
@@ -139,7 +199,7 @@
 #define RC_KD_ROT 0.0f     /* command per mm/s of wheel-arc rotation rate error */
 /* Wall centring: heading offset per mm off the centre line (P: 10 mm ->
  * 5.7 degrees; with the heading loop's 0.1 s lag the lateral loop is
- * damped at zeta ~0.7 at 500 mm/s, ~0.5 at 1100 mm/s) and the rate at
+ * damped at zeta ~0.7 at 500 mm/s, ~0.6 at 650 mm/s) and the rate at
  * which the held heading itself follows (I, a fifth of P per second). */
 #define RC_KP_LATERAL 0.01f   /* rad per mm */
 #define RC_KI_LATERAL 0.01f  /* rad/s per mm */

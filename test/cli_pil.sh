@@ -69,13 +69,15 @@ want_rc 1 "AVR mouse, sim ToF range 1.0 m" "$S" --maze $M --config "$T/r1.ini" -
 
 # the Uno: avr-size's data + bss within the issue's 1,536 B; in simavr (SRAM
 # painted at load) the stack's deepest point stays above .bss, with >= 64 B
-# to spare; a whole 16x16 contest (~118 s of sim time, ~20 s here)
+# to spare; a whole 16x16 contest (~110 s of sim time, ~20 s here). The best
+# run was under 6 s (5.3) with the loss-free motor model; the datasheet motor
+# (754 mm/s no-load) runs it at 600 mm/s: 7.4 s (13.5 s first run)
 static=$(avr-size -A "$UNO" | awk '$1 == ".data" || $1 == ".bss" { s += $2 } END { print s }')
 [ -n "$static" ] && [ "$static" -le 1536 ] && ok "Uno static RAM $static B <= 1536" || bad "Uno static RAM: $static B"
 want_rc 0 "Uno mouse, whole 16x16 contest" "$S" --maze mazes/gen-16x16-s1.txt --avr "$UNO" --time-limit 200 --json --verbose
 got=$(python3 -c "
 import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1]); a=d['avr']
-print(d['exit_reason'], a['mcu'], len(d['laps']), d['first_run_s'] < 20, d['best_run_s'] < 6,
+print(d['exit_reason'], a['mcu'], len(d['laps']), d['first_run_s'] < 20, d['best_run_s'] < 8,
       a['sram_free_min_bytes'] >= 64, a['stack_max_bytes'] + int(sys.argv[2]) <= 2048)" "$T/out" "$static" 2>&1)
 [ "$got" = "mcu_stopped atmega328p 4 True True True True" ] && ok "Uno mouse: 16x16 contest, stack fits" \
   || bad "Uno 16x16: $got $(tail -c 600 "$T/out")"

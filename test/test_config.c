@@ -20,7 +20,10 @@ static void test_defaults_are_the_papers_robot(void **state)
     (void)state;
     config_defaults(&c);
     assert_true(c.cell_m == 0.180 && c.body_w_m == 0.096 && c.body_l_m == 0.120 && c.body_mass_kg == 0.127);
-    assert_true(c.wheel_d_m == 0.032 && c.gear_ratio == 29.86 && c.stall_torque_nm == 0.028439 && c.stall_a == 0.36);
+    assert_true(c.wheel_d_m == 0.032 && c.gear_ratio == 29.86);
+    /* the Pololu 30:1 LP 6V datasheet's figures (the motor model derives R, Ke, eta from them) */
+    assert_true(c.rated_v == 6.0 && c.no_load_rpm == 450 && c.no_load_a == 0.02 && c.stall_torque_nm == 0.028439 &&
+                c.stall_a == 0.36 && c.rotor_inertia_kgm2 == 2.0e-8);
     assert_true(c.motor_model == MOTOR_MODEL_DATASHEET && c.solver == SIM_SOLVER_EXACT);
     assert_true(c.l_h == 0.001 && c.battery_v == 6.0 && c.encoder_ppr == 12 && c.tof_range_m == 1.2);
     assert_true(c.tof_cv == 0.05 && c.tof_period_s == 0.030 && c.step_s == 0.001 && c.time_limit_s == 600);
@@ -145,6 +148,14 @@ static void test_print_round_trip_and_hash(void **state)
     config_print(&c, mem);
     fclose(mem);
     assert_non_null(strstr(text, "battery_v = 7.4 ; V;"));
+    /* libinih reads lines of up to 200 characters (INI_MAX_LINE) and
+     * takes the rest of a longer one for a line of its own */
+    for (const char *l = text; *l;) {
+        const char *e = strchr(l, '\n');
+        size_t n = e ? (size_t)(e - l) : strlen(l);
+        if (n >= 199) fail_msg("printed line of %zu characters: %.60s...", n, l);
+        l += n + (e != NULL);
+    }
     config_defaults(&d);
     assert_int_equal(config_load_string(&d, text, "printed", err, sizeof err), 0);
     assert_memory_equal(&c, &d, sizeof c);

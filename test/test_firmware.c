@@ -151,10 +151,18 @@ static void test_smooth_geometry(void **state)
      * the ramps make the real path longer than that and shorter than the
      * two legs */
     assert_true(len > 1.5708f * d * 0.98f && len < 2.0f * d);
-    /* twice the speed, same profile in time: twice the size */
-    motion_smooth_geometry(2 * RC_SMOOTH_MM_S, &d2, &len2);
+    /* slow enough that the outer wheel's feed-forward never limits the
+     * rotation's speeding up, the profile is the same in time at any
+     * speed: twice the speed, twice the size */
+    motion_smooth_geometry(RC_SMOOTH_MM_S / 4, &d, &len);
+    motion_smooth_geometry(RC_SMOOTH_MM_S / 2, &d2, &len2);
     near(d2, 2 * d, 0.01 * d);
     near(len2, 2 * len, 1e-3 * len);
+    /* at search speed that limit makes the turn longer than the unlimited
+     * profile would (the rotation takes longer to reach its top speed) */
+    float d3, len3;
+    motion_smooth_geometry(RC_SMOOTH_MM_S, &d3, &len3);
+    assert_true(len3 > 2 * len2 * 0.999f);
 }
 
 /* Turning about a point beside the robot: the forward profile is the

@@ -1,0 +1,25 @@
+build250/host/tools/cli.o: tools/cli.c tools/cli.h sim/view/view.h \
+ sim/view/replay.h build250/lcmgen/mmlcm_pose_t.h \
+ build250/lcmgen/mmlcm_race_event_t.h build250/lcmgen/mmlcm_race_t.h \
+ build250/lcmgen/mmlcm_sensors_t.h sim/view/scene.h sim/world/sim.h \
+ sim/world/config.h sim/world/encoder.h firmware/maze.h sim/world/motor.h \
+ sim/world/race.h sim/world/sensors/tof.h sim/world/config.h \
+ sim/world/rng.h sim/world/world.h
+tools/cli.h:
+sim/view/view.h:
+sim/view/replay.h:
+build250/lcmgen/mmlcm_pose_t.h:
+build250/lcmgen/mmlcm_race_event_t.h:
+build250/lcmgen/mmlcm_race_t.h:
+build250/lcmgen/mmlcm_sensors_t.h:
+sim/view/scene.h:
+sim/world/sim.h:
+sim/world/config.h:
+sim/world/encoder.h:
+firmware/maze.h:
+sim/world/motor.h:
+sim/world/race.h:
+sim/world/sensors/tof.h:
+sim/world/config.h:
+sim/world/rng.h:
+sim/world/world.h:
