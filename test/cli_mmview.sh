@@ -60,7 +60,7 @@ printf 'not a log at all\n' >"$T/junk"
 want_rc 2 "not a log" "$V" "$T/junk" --screenshot "$T/x.png" --at 1
 head -c $(( $(stat -c %s "$T/run.lcmlog") - 7 )) "$T/run.lcmlog" >"$T/cut.lcmlog"
 want_rc 2 "truncated log" "$V" "$T/cut.lcmlog" --screenshot "$T/x.png" --at 1
-grep -q "truncated or corrupt" "$T/err" && ok "truncated log named" || bad "truncated message: $(cat "$T/err")"
+grep -q "cut.lcmlog: event [0-9]* at byte [0-9]*: truncated: " "$T/err" && ok "truncated log named" || bad "truncated message: $(cat "$T/err")"
 python3 - "$T/run.lcmlog" "$T/flip.lcmlog" <<'PY'
 import sys
 d = bytearray(open(sys.argv[1], 'rb').read())

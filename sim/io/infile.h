@@ -9,7 +9,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#define INFILE_NO_LIMIT UINT64_MAX /* the caller bounds its reads itself */
+#define INFILE_NO_LIMIT UINT64_MAX /* bytes: no limit here, the caller bounds its reads itself */
 
 /* What infile_open checks before it opens path: 0, or -1 with its line. */
 int infile_check(const char *path, uint64_t max_bytes, char *err, size_t errlen);
