@@ -100,7 +100,7 @@ print(l['protocol'], l['baud'], l['mcu_log_lines'], d['collisions'], 0.15 < p['y
 "$S" --print-config >"$T/cfg" 2>&1
 got=$(python3 -c "
 import json,math,re,sys
-cfg={m.group(1): float(m.group(2)) for m in re.finditer(r'^(\w+) = ([-0-9.][-0-9.e+]*)', open(sys.argv[1]).read(), re.M)}
+cfg={m.group(1): float(m.group(2)) for m in re.finditer(r'^(\w+) = (-?[0-9.]+(?:e[-+]?[0-9]+)?) ;', open(sys.argv[1]).read(), re.M)}
 d=json.load(open(sys.argv[2])); travel=d['final_pose']['y_m'] - 0.09
 l, r = map(int, re.search(r'^mcu: DriveToWall: wall, counts (-?\d+) (-?\d+)$', open(sys.argv[3]).read(), re.M).groups())
 m_per_count = math.pi * cfg['wheel_d_m'] / (cfg['encoder_ppr'] * cfg['gear_ratio'])
