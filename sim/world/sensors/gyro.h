@@ -1,0 +1,55 @@
+/* gyro.h - MEMS z-rate gyroscope model (groundwork for issue 17).
+ *
+ * Not yet wired in: no sim_t member, no HAL reading, no robot/config keys;
+ * that is the next step of issue 17. Plain data + functions only.
+ *
+ * The sensor samples at rate f (Hz); sample k is taken at t_k = k/f and held
+ * until t_(k+1) (sample-and-hold). For sample k, with the true rate w (the
+ * rate passed to the read that first sees sample k):
+ *   b_k = b_(k-1) + rw * sqrt(1/f) * n1      bias random walk (b_0 = bias0)
+ *   y_k = (1 + scale_pct/100) * w + b_k + sigma_w * n2
+ *   sigma_w = density * sqrt(f / 2)         white noise over the band f/2
+ *   y_k clamped to +-full scale, then rounded to a multiple of the LSB.
+ * bias0 ~ N(0, bias_dps) is drawn once per seed at init (the datasheet's
+ * zero-rate level is a spread over parts, not a value of one part).
+ * n1, n2 are standard normal deviates from the gyro's own stream
+ * (RNG_STREAM_GYRO + index); every sample draws both, also samples no one
+ * reads, so the noise depends on time only, never on how often it is read.
+ * Caveat (rng.c, not this file): streams s and s+1 of one seed are one
+ * sequence shifted by a draw, so gyro index 1's noise is index 0's shifted.
+ * Units: the spec in deg/s (as datasheets give them), gyro_read in rad/s. */
+#ifndef GYRO_H
+#define GYRO_H
+
+#include <stdint.h>
+#include "world/rng.h"
+
+typedef struct {
+    double noise_density_dps_rthz; /* white rate noise density, deg/s/sqrt(Hz) */
+    double bias_dps;               /* zero-rate level spread: bias0 ~ N(0, this), deg/s */
+    double bias_rw_dps_rts;        /* bias random walk, deg/s per sqrt(s) */
+    double scale_error_pct;        /* sensitivity error, per cent (output = (1 + e/100) * true) */
+    double full_scale_dps;         /* saturation, +-deg/s */
+    double sample_rate_hz;         /* output data rate, Hz (output held between samples) */
+    double lsb_dps;                /* output resolution, deg/s per LSB (0 = not quantised) */
+} gyro_spec_t;
+
+typedef struct {
+    gyro_spec_t spec;
+    rng_t rng;
+    double bias0_dps;      /* the constant bias drawn at init, deg/s */
+    double walk_dps;       /* the random walk's part of the bias now, deg/s */
+    int64_t sample;        /* index of the held sample, -1 = none yet */
+    double held_rad_s;     /* the held output, rad/s */
+} gyro_t;
+
+/* The defaults: an ST LSM6DS3 at +-1000 dps, 833 Hz (values and sources in gyro.c). */
+void gyro_spec_default(gyro_spec_t *s);
+void gyro_init(gyro_t *g, const gyro_spec_t *s, uint64_t seed, unsigned index);
+/* The measured z rate, rad/s, at simulation time t_s (s, >= 0) for the true
+ * rate true_rate_rad_s. A time before the held sample's returns the held value. */
+double gyro_read(gyro_t *g, double true_rate_rad_s, double t_s);
+/* The white noise's standard deviation per sample, deg/s: density * sqrt(f/2). */
+double gyro_sigma_dps(const gyro_spec_t *s);
+
+#endif
