@@ -55,10 +55,8 @@ static void test_rest_mean_and_sigma(void **state)
 }
 
 /* The bias random walk: over an ensemble of gyros its variance at sample k
- * is rw^2 * k / f, linear in time (4x the time, 4x the variance). The
- * ensemble differs by seed, not by index: rng_init's streams s and s+1 of
- * one seed are the same sequence shifted by one draw (rng.c), so gyros of
- * neighbouring indices are not independent. */
+ * is rw^2 * k / f, linear in time (4x the time, 4x the variance); the
+ * ensemble is one gyro over many seeds. */
 static void test_random_walk_linear(void **state)
 {
     gyro_spec_t s = ideal();

@@ -16,7 +16,13 @@ static double uniform(uint64_t *s) { return ((double)(next_u64(s) >> 11) + 1.0) 
 
 void rng_init(rng_t *r, uint64_t seed, uint64_t stream)
 {
-    r->state = seed * 0x2545F4914F6CDD1Dull + stream * 0x9E3779B97F4A7C15ull;
+    /* The stream number is hashed before it offsets the seed: splitmix64's
+     * state steps by 0x9E37...15, so an offset of stream * 0x9E37...15 made
+     * stream s+1 the same sequence as stream s, one draw later (the three
+     * ToF sensors' noise was one sequence, shifted). A hashed offset puts
+     * each stream at an unrelated point of the 2^64 cycle. */
+    uint64_t h = stream;
+    r->state = seed * 0x2545F4914F6CDD1Dull ^ next_u64(&h);
     next_u64(&r->state);
     r->has_spare = 0;
     r->spare = 0.0;

@@ -15,8 +15,6 @@
  * n1, n2 are standard normal deviates from the gyro's own stream
  * (RNG_STREAM_GYRO + index); every sample draws both, also samples no one
  * reads, so the noise depends on time only, never on how often it is read.
- * Caveat (rng.c, not this file): streams s and s+1 of one seed are one
- * sequence shifted by a draw, so gyro index 1's noise is index 0's shifted.
  * Units: the spec in deg/s (as datasheets give them), gyro_read in rad/s. */
 #ifndef GYRO_H
 #define GYRO_H
