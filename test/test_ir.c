@@ -50,6 +50,25 @@ static ir_t quiet(void)
     return ir;
 }
 
+/* world_ray_normal: the distance of world_ray, the wall's normal facing
+ * the ray, also for a ray tilted up or down. */
+static void test_ray_normal(void **state)
+{
+    (void)state;
+    world_t *w = arena(0);
+    double p[3] = { east_face() - 0.1, 1.5 * cfg.cell_m, cfg.wall_height_m / 2 }, n[3];
+    double east[3] = { 1, 0, 0 }, west[3] = { -2, 0, 0 }, up[3] = { 1, 0, 0.1 };
+    assert_true(fabs(world_ray_normal(w, p, east, 1.0, n) - world_ray(w, p[0], p[1], p[2], 0, 1.0)) < 1e-9);
+    assert_true(fabs(n[0] + 1) < 1e-9 && fabs(n[1]) < 1e-9 && fabs(n[2]) < 1e-9);
+    assert_true(world_ray_normal(w, p, west, 1.0, n) > 0); /* the west wall, dir not unit length */
+    assert_true(fabs(n[0] - 1) < 1e-9);
+    assert_true(fabs(world_ray_normal(w, p, up, 1.0, n) - 0.1 * sqrt(1.01)) < 1e-6);
+    assert_true(fabs(n[0] + 1) < 1e-9);
+    assert_true(world_ray_normal(w, p, east, 0.05, n) < 0); /* out of range */
+    assert_true(n[0] == 0 && n[1] == 0 && n[2] == 0);
+    world_destroy(w);
+}
+
 /* (1) Straight on at the east wall: rho/d^2 in the far field (the beam's
  * cone fits on the wall up to 0.2 m at half the wall's height), counts =
  * ambient + gain (ref/d)^2 rho; flat below the near-field distance. */
@@ -118,6 +137,12 @@ static void test_dark(void **state)
         sum2 += v * v;
     }
     double mean = sum / n, sd = sqrt(sum2 / n - mean * mean);
+    /* dark is dark: the same stream at a wall or in the open reads the same */
+    ir_t a, b;
+    ir_init(&a, &s, 9, 0);
+    ir_init(&b, &s, 9, 0);
+    double open_p[3] = { east_face() - 0.6, 1.5 * cfg.cell_m, cfg.wall_height_m / 2 };
+    for (int i = 0; i < 100; i++) assert_int_equal(ir_read(&a, w, p, 0, 0), ir_read(&b, w, open_p, M_PI, 0));
     assert_true(fabs(mean - 100) < 0.15);               /* 5 / sqrt(20000) = 0.035 */
     assert_true(fabs(sd / sqrt(25 + 1.0 / 12) - 1) < 0.03); /* ~0.5 % */
     world_destroy(w);
@@ -199,6 +224,7 @@ static void test_graze(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_ray_normal),
         cmocka_unit_test(test_distance),
         cmocka_unit_test(test_angle),
         cmocka_unit_test(test_dark),

@@ -11,7 +11,8 @@
 void ir_spec_default(ir_spec_t *s)
 {
     /* SFH4550 datasheet (docs/datasheets/SFH4550.pdf), characteristics:
-     * half angle +-3 deg */
+     * half angle +-3 deg (that PDF's text is font-encoded, not extractable
+     * here: the figure is Osram's published one, to check on the page) */
     s->half_angle_deg = 3.0;
     /* SFH309FA datasheet (docs/datasheets/sfh309-phototransistor.pdf):
      * half angle +-12 deg (the BPW85's is +-25 deg, BPW85 datasheet p. 1) */
