@@ -16,6 +16,7 @@ typedef struct {
 /* Stream numbers of the run's noise sources. */
 enum { RNG_STREAM_TOF = 1,         /* +sensor index */
        RNG_STREAM_VARIATION = 100, /* the robot's per-seed variation */
+       RNG_STREAM_IR = 200,        /* +sensor index (sensors/ir.h) */
        RNG_STREAM_GYRO = 300       /* +gyro index (sensors/gyro.h) */ };
 
 void rng_init(rng_t *r, uint64_t seed, uint64_t stream);

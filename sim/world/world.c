@@ -431,6 +431,38 @@ double world_ray(world_t *w, double x_m, double y_m, double z_m, double dir_rad,
     return w->ray_best;
 }
 
+/* world_ray_normal: the nearest hit of one ray and its surface normal. */
+typedef struct {
+    double best, normal[3];
+} ray_hit_t;
+
+static void ray_normal_cb(void *data, dGeomID a, dGeomID b)
+{
+    ray_hit_t *h = data;
+    if (dGeomIsSpace(a) || dGeomIsSpace(b)) {
+        dSpaceCollide2(a, b, data, ray_normal_cb);
+        return;
+    }
+    dContactGeom cg;
+    if (dCollide(a, b, 1, &cg, sizeof cg) != 1 || (h->best >= 0 && cg.depth >= h->best)) return;
+    h->best = cg.depth;
+    for (int k = 0; k < 3; k++) h->normal[k] = cg.normal[k];
+}
+
+double world_ray_normal(world_t *w, const double pos_m[3], const double dir[3], double max_m, double normal[3])
+{
+    double n = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+    double u[3] = { dir[0] / n, dir[1] / n, dir[2] / n };
+    ray_hit_t h = { -1, { 0, 0, 0 } };
+    dGeomRaySetLength(w->ray, max_m);
+    dGeomRaySet(w->ray, pos_m[0], pos_m[1], pos_m[2], u[0], u[1], u[2]);
+    dSpaceCollide2(w->ray, (dGeomID)w->statics, &h, ray_normal_cb);
+    /* ODE's sign depends on the order of the pair: face the ray */
+    double s = h.normal[0] * u[0] + h.normal[1] * u[1] + h.normal[2] * u[2] > 0 ? -1.0 : 1.0;
+    for (int k = 0; k < 3; k++) normal[k] = s * h.normal[k];
+    return h.best;
+}
+
 void world_tof_origin(const world_t *w, int s, double pos_m[3], double *dir_rad)
 {
     dVector3 p, f;

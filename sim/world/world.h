@@ -59,6 +59,11 @@ double world_tof_ray(world_t *w, int s, double max_m);
 void world_tof_origin(const world_t *w, int s, double pos_m[3], double *dir_rad);
 /* Cast a ray from any point in any horizontal direction (for tests). */
 double world_ray(world_t *w, double x_m, double y_m, double z_m, double dir_rad, double max_m);
+/* The same for a ray from pos_m along any direction dir (need not be unit
+ * length), also giving the unit surface normal of the nearest hit, facing
+ * the ray (normal . dir < 0; the IR sensor's angle of incidence). Distance
+ * in m, -1 (normal 0) if nothing within max_m. */
+double world_ray_normal(world_t *w, const double pos_m[3], const double dir[3], double max_m, double normal[3]);
 
 /* Put the robot, at rest and level, with its body centre over (x_m, y_m)
  * facing heading_rad and its wheels at these hinge angles (rad, positive =

@@ -1,0 +1,89 @@
+/* ir.h - IR reflectance wall sensor model: an emitter LED, a
+ * phototransistor beside it and a 10-bit ADC, as on UKMARSBOT's wall sensor
+ * boards (SFH4550 emitter, SFH309FA or BPW85 detector, the Nano's ADC).
+ *
+ * The beam is a cone of rays about the sensor's axis (a centre ray and
+ * rings of rays), cast in the ODE world, so a post or a wall end is seen as
+ * the beam sees it: each ray returns what it hits. Ray i, at angle th_i off
+ * the axis, hitting at distance d_i with angle of incidence a_i, returns
+ *
+ *   r_i = w_i * rho * cos(a_i) / max(d_i, near_m)^2
+ *
+ * (Lambertian wall of reflectivity rho, light falling as 1/d^2, the near
+ * field saturating below near_m). The weights w_i follow the emitter's and
+ * the detector's angular profiles (Gaussians with the datasheets' half
+ * angles) times the solid angle each ray stands for. The sum is normalised
+ * by k0 = sum w_i cos^3(th_i), what a plane straight on returns in the far
+ * field, so that
+ *
+ *   received = sum r_i / k0      [1/m^2]; a wall straight on at d: rho/d^2.
+ *
+ * One ADC sample, in counts:
+ *
+ *   counts = clamp(round(ambient + (emitter on ? gain * ref_m^2 * received
+ *                                              : 0) + sigma * N(0,1)),
+ *                  0, 2^bits - 1)
+ *
+ * gain = the lit-minus-dark counts of a wall of reflectivity 1 straight on
+ * at ref_m. The reading depends on the emitter's state at the moment of the
+ * sample; the firmware (mazerunner-core's sensors.h) samples dark (emitter
+ * off), then lit (emitter on), and uses lit minus dark. Every sample draws
+ * one deviate from the sensor's own noise stream (rng.h, RNG_STREAM_IR +
+ * index), lit or dark, so the sequence depends only on the seed, the index
+ * and the number of samples.
+ *
+ * Not wired in yet (issue 17, next step): sim_t does not own IR sensors,
+ * hal/hal.h has no IR reading, the robot file has no IR sensor positions,
+ * and telemetry does not publish them. */
+#ifndef IR_H
+#define IR_H
+
+#include <stdint.h>
+#include "world/rng.h"
+#include "world/world.h"
+
+#define IR_MAX_RINGS 4
+#define IR_MAX_PER_RING 16
+#define IR_MAX_RAYS (1 + IR_MAX_RINGS * IR_MAX_PER_RING)
+
+/* The model's numbers (plain data; ir_spec_default gives UKMARSBOT's). */
+typedef struct {
+    double half_angle_deg;     /* emitter: half-intensity angle, deg */
+    double det_half_angle_deg; /* detector: half-sensitivity angle, deg */
+    double cone_deg;           /* the outermost ring's angle off the axis, deg */
+    int rings;                 /* rings of rays about the centre ray, 0..IR_MAX_RINGS */
+    int rays_per_ring;         /* 1..IR_MAX_PER_RING */
+    double reflectivity;       /* of the walls and posts, 0..1 */
+    double gain_counts;        /* lit minus dark, counts, for reflectivity 1 straight on at ref_m */
+    double ref_m;              /* the gain's reference distance, m */
+    double near_m;             /* below this distance the response saturates, m */
+    double max_m;              /* the rays' length, m */
+    double ambient_counts;     /* the dark reading, counts */
+    double noise_counts;       /* standard deviation of one sample, counts */
+    int adc_bits;              /* 10: full scale 1023 */
+} ir_spec_t;
+
+typedef struct {
+    ir_spec_t spec;
+    int nrays;
+    double off[IR_MAX_RAYS][3]; /* ray directions in the sensor's frame: x along the axis, y left, z up */
+    double weight[IR_MAX_RAYS]; /* normalised: a plane straight on in the far field sums to 1 */
+    rng_t rng;
+} ir_t;
+
+/* UKMARSBOT's sensor (values and sources in ir.c). */
+void ir_spec_default(ir_spec_t *s);
+/* The sensor with this spec, its noise stream from the run's seed and the
+ * sensor's index. */
+void ir_init(ir_t *ir, const ir_spec_t *s, uint64_t seed, unsigned index);
+/* The light returned to the detector with the emitter on, 1/m^2 (see
+ * above: rho/d^2 for a wall straight on at d >= near_m), for a sensor at
+ * pos_m (world, m) looking horizontally along dir_rad. */
+double ir_received(const ir_t *ir, world_t *w, const double pos_m[3], double dir_rad);
+/* One ADC sample, counts 0..2^bits - 1, with the emitter on (1) or off (0)
+ * at the moment of the sample. With the emitter off no ray is cast. */
+int ir_read(ir_t *ir, world_t *w, const double pos_m[3], double dir_rad, int emitter_on);
+/* The ADC's top count, 2^bits - 1. */
+int ir_full_scale(const ir_t *ir);
+
+#endif

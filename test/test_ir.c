@@ -1,0 +1,236 @@
+/* test_ir.c - the IR reflectance sensor model against analytic values:
+ * 1/d^2 in the far field and saturation in the near field, cos(angle) of
+ * the wall, ambient and noise with the emitter off, the ADC's rails,
+ * seeded streams, and a beam grazing a wall end. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <math.h>
+
+#include "world/config.h"
+#include "world/rng.h"
+#include "world/sensors/ir.h"
+#include "world/world.h"
+
+static simcfg_t cfg;
+
+static int setup(void **state)
+{
+    (void)state;
+    config_defaults(&cfg);
+    return 0;
+}
+
+/* 4 x 4 cells, only the outer walls (posts everywhere), and optionally the
+ * east side of cell (1,1): a wall on x = 2 cells from y = 1 to 2 cells. */
+static world_t *arena(int inner_wall)
+{
+    maze_t m;
+    maze_init(&m, 4, 4);
+    maze_close_unknown(&m);
+    for (uint16_t c = 0; c < 16; c++)
+        for (uint8_t d = 0; d < 4; d++) maze_set_wall(&m, (maze_cell_t)c, d, MAZE_WALL_OPEN);
+    if (inner_wall) maze_set_wall(&m, maze_cell(&m, 1, 1), MAZE_EAST, MAZE_WALL_CLOSED);
+    world_t *w = world_create(&cfg, &m, 0.09, 0.09, M_PI / 2); /* robot out of the way: rays see only walls and posts */
+    assert_non_null(w);
+    return w;
+}
+
+static double east_face(void) { return 4 * cfg.cell_m - cfg.wall_thick_m / 2; }
+
+static ir_t quiet(void)
+{
+    ir_spec_t s;
+    ir_spec_default(&s);
+    s.noise_counts = 0;
+    ir_t ir;
+    ir_init(&ir, &s, 1, 0);
+    return ir;
+}
+
+/* world_ray_normal: the distance of world_ray, the wall's normal facing
+ * the ray, also for a ray tilted up or down. */
+static void test_ray_normal(void **state)
+{
+    (void)state;
+    world_t *w = arena(0);
+    double p[3] = { east_face() - 0.1, 1.5 * cfg.cell_m, cfg.wall_height_m / 2 }, n[3];
+    double east[3] = { 1, 0, 0 }, west[3] = { -2, 0, 0 }, up[3] = { 1, 0, 0.1 };
+    assert_true(fabs(world_ray_normal(w, p, east, 1.0, n) - world_ray(w, p[0], p[1], p[2], 0, 1.0)) < 1e-9);
+    assert_true(fabs(n[0] + 1) < 1e-9 && fabs(n[1]) < 1e-9 && fabs(n[2]) < 1e-9);
+    assert_true(world_ray_normal(w, p, west, 1.0, n) > 0); /* the west wall, dir not unit length */
+    assert_true(fabs(n[0] - 1) < 1e-9);
+    assert_true(fabs(world_ray_normal(w, p, up, 1.0, n) - 0.1 * sqrt(1.01)) < 1e-6);
+    assert_true(fabs(n[0] + 1) < 1e-9);
+    assert_true(world_ray_normal(w, p, east, 0.05, n) < 0); /* out of range */
+    assert_true(n[0] == 0 && n[1] == 0 && n[2] == 0);
+    world_destroy(w);
+}
+
+/* (1) Straight on at the east wall: rho/d^2 in the far field (the beam's
+ * cone fits on the wall up to 0.2 m at half the wall's height), counts =
+ * ambient + gain (ref/d)^2 rho; flat below the near-field distance. */
+static void test_distance(void **state)
+{
+    (void)state;
+    world_t *w = arena(0);
+    ir_t ir = quiet();
+    const ir_spec_t *s = &ir.spec;
+    double y = 1.5 * cfg.cell_m, z = cfg.wall_height_m / 2;
+    for (double d = 0.02; d <= 0.2001; d += 0.01) {
+        double p[3] = { east_face() - d, y, z };
+        double r = ir_received(&ir, w, p, 0), want = s->reflectivity / (d * d);
+        assert_true(fabs(r / want - 1) < 0.02);
+        double counts = ir_read(&ir, w, p, 0, 1) - s->ambient_counts;
+        double want_counts = s->gain_counts * s->reflectivity * (s->ref_m / d) * (s->ref_m / d);
+        if (want_counts + s->ambient_counts < ir_full_scale(&ir)) /* else the ADC's rail: test_rails */
+            assert_true(fabs(counts - want_counts) < 0.02 * want_counts + 0.5);
+    }
+    /* near field: every ray closer than near_m gives the same */
+    double p1[3] = { east_face() - 0.005, y, z }, p2[3] = { east_face() - 0.010, y, z };
+    double p3[3] = { east_face() - 0.030, y, z };
+    double r1 = ir_received(&ir, w, p1, 0), r2 = ir_received(&ir, w, p2, 0);
+    assert_true(fabs(r1 / r2 - 1) < 1e-9);
+    assert_true(fabs(r1 / (s->reflectivity / (s->near_m * s->near_m)) - 1) < 0.02);
+    assert_true(r1 > ir_received(&ir, w, p3, 0));
+    world_destroy(w);
+}
+
+/* (2) The beam turned by a off the wall's normal, its centre ray hitting
+ * the wall at the same distance: the reading goes as cos(a). */
+static void test_angle(void **state)
+{
+    (void)state;
+    world_t *w = arena(0);
+    ir_t ir = quiet();
+    double y = 1.5 * cfg.cell_m, z = cfg.wall_height_m / 2, dist = 0.1, r0 = 0;
+    for (int deg = 0; deg <= 60; deg += 10) {
+        double a = deg * M_PI / 180;
+        double p[3] = { east_face() - dist * cos(a), y - dist * sin(a), z };
+        double r = ir_received(&ir, w, p, a);
+        if (deg == 0) r0 = r;
+        assert_true(fabs(r / r0 - cos(a)) < 0.02 * cos(a));
+    }
+    world_destroy(w);
+}
+
+/* (3) Emitter off: ambient plus noise, whatever is ahead; mean and
+ * standard deviation as configured (rounding to counts adds 1/12). */
+static void test_dark(void **state)
+{
+    (void)state;
+    world_t *w = arena(0);
+    ir_spec_t s;
+    ir_spec_default(&s);
+    s.ambient_counts = 100;
+    s.noise_counts = 5;
+    ir_t ir;
+    ir_init(&ir, &s, 7, 1);
+    double p[3] = { east_face() - 0.03, 1.5 * cfg.cell_m, cfg.wall_height_m / 2 };
+    const int n = 20000;
+    double sum = 0, sum2 = 0;
+    for (int i = 0; i < n; i++) {
+        double v = ir_read(&ir, w, p, 0, 0);
+        sum += v;
+        sum2 += v * v;
+    }
+    double mean = sum / n, sd = sqrt(sum2 / n - mean * mean);
+    /* dark is dark: the same stream at a wall or in the open reads the same */
+    ir_t a, b;
+    ir_init(&a, &s, 9, 0);
+    ir_init(&b, &s, 9, 0);
+    double open_p[3] = { east_face() - 0.6, 1.5 * cfg.cell_m, cfg.wall_height_m / 2 };
+    for (int i = 0; i < 100; i++) assert_int_equal(ir_read(&a, w, p, 0, 0), ir_read(&b, w, open_p, M_PI, 0));
+    assert_true(fabs(mean - 100) < 0.15);               /* 5 / sqrt(20000) = 0.035 */
+    assert_true(fabs(sd / sqrt(25 + 1.0 / 12) - 1) < 0.03); /* ~0.5 % */
+    world_destroy(w);
+}
+
+/* (4) The ADC: full scale at 2^10 - 1 when the light is too strong, never
+ * below 0 however low the noise takes it. */
+static void test_rails(void **state)
+{
+    (void)state;
+    world_t *w = arena(0);
+    ir_spec_t s;
+    ir_spec_default(&s);
+    s.noise_counts = 50;
+    s.ambient_counts = 0;
+    ir_t ir;
+    ir_init(&ir, &s, 3, 2);
+    assert_int_equal(ir_full_scale(&ir), 1023);
+    double near[3] = { east_face() - 0.02, 1.5 * cfg.cell_m, cfg.wall_height_m / 2 };
+    int zeros = 0;
+    for (int i = 0; i < 2000; i++) {
+        int lit = ir_read(&ir, w, near, 0, 1), dark = ir_read(&ir, w, near, 0, 0);
+        assert_int_equal(lit, 1023); /* gain: 850 (50/20)^2 = 5300 counts */
+        assert_true(dark >= 0 && dark <= 1023);
+        zeros += dark == 0;
+    }
+    assert_true(zeros > 800 && zeros < 1200); /* half the noise is below 0 */
+    world_destroy(w);
+}
+
+/* (5) Same seed and index: the same samples; another index or seed:
+ * another stream. */
+static void test_streams(void **state)
+{
+    (void)state;
+    world_t *w = arena(0);
+    ir_spec_t s;
+    ir_spec_default(&s);
+    s.noise_counts = 3;
+    ir_t a, b, c, d;
+    ir_init(&a, &s, 42, 0);
+    ir_init(&b, &s, 42, 0);
+    ir_init(&c, &s, 42, 1);
+    ir_init(&d, &s, 43, 0);
+    double p[3] = { east_face() - 0.06, 1.5 * cfg.cell_m, cfg.wall_height_m / 2 };
+    int diff_c = 0, diff_d = 0;
+    for (int i = 0; i < 200; i++) {
+        int on = i & 1, va = ir_read(&a, w, p, 0, on);
+        assert_int_equal(va, ir_read(&b, w, p, 0, on));
+        diff_c += va != ir_read(&c, w, p, 0, on);
+        diff_d += va != ir_read(&d, w, p, 0, on);
+    }
+    assert_true(diff_c > 100);
+    assert_true(diff_d > 100);
+    world_destroy(w);
+}
+
+/* (6) A beam whose axis just passes the end of a wall (the post at its
+ * end): the half of the cone on the wall's side returns, the rest flies on
+ * to the far wall; less than the full wall, more than nothing. */
+static void test_graze(void **state)
+{
+    (void)state;
+    world_t *w = arena(1);
+    ir_t ir = quiet();
+    double c = cfg.cell_m, face = 2 * c - cfg.wall_thick_m / 2, d = 0.08, z = cfg.wall_height_m / 2;
+    double full_p[3] = { face - d, 1.5 * c, z };
+    double edge_p[3] = { face - d, 2 * c + cfg.post_m / 2 + 0.0005, z };
+    double past_p[3] = { face - d, 2 * c + cfg.post_m / 2 + 0.03, z };
+    double full = ir_received(&ir, w, full_p, 0);
+    double edge = ir_received(&ir, w, edge_p, 0);
+    double past = ir_received(&ir, w, past_p, 0);
+    assert_true(fabs(full / (ir.spec.reflectivity / (d * d)) - 1) < 0.02);
+    assert_true(edge > 0.25 * full && edge < 0.6 * full);
+    assert_true(past < 0.1 * full);
+    world_destroy(w);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_ray_normal),
+        cmocka_unit_test(test_distance),
+        cmocka_unit_test(test_angle),
+        cmocka_unit_test(test_dark),
+        cmocka_unit_test(test_rails),
+        cmocka_unit_test(test_streams),
+        cmocka_unit_test(test_graze),
+    };
+    return cmocka_run_group_tests(tests, setup, NULL);
+}
