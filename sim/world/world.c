@@ -33,7 +33,6 @@ struct world {
     double tof_pos[WORLD_TOF_COUNT][3], tof_dir[WORLD_TOF_COUNT];
     int touching, touched_last;
     unsigned collisions;
-    double ray_best;
 };
 
 static int ode_ready;
@@ -411,26 +410,6 @@ double world_body_z(const world_t *w)
 double world_wheel_angle(const world_t *w, int side) { return dJointGetHingeAngle(w->hinge[side]); }
 double world_wheel_rate(const world_t *w, int side) { return dJointGetHingeAngleRate(w->hinge[side]); }
 
-static void ray_cb(void *data, dGeomID a, dGeomID b)
-{
-    world_t *w = data;
-    if (dGeomIsSpace(a) || dGeomIsSpace(b)) {
-        dSpaceCollide2(a, b, data, ray_cb);
-        return;
-    }
-    dContactGeom cg;
-    if (dCollide(a, b, 1, &cg, sizeof cg) == 1 && (w->ray_best < 0 || cg.depth < w->ray_best)) w->ray_best = cg.depth;
-}
-
-double world_ray(world_t *w, double x_m, double y_m, double z_m, double dir_rad, double max_m)
-{
-    dGeomRaySetLength(w->ray, max_m);
-    dGeomRaySet(w->ray, x_m, y_m, z_m, cos(dir_rad), sin(dir_rad), 0);
-    w->ray_best = -1;
-    dSpaceCollide2(w->ray, (dGeomID)w->statics, w, ray_cb);
-    return w->ray_best;
-}
-
 /* world_ray_normal: the nearest hit of one ray and its surface normal. */
 typedef struct {
     double best, normal[3];
@@ -461,6 +440,13 @@ double world_ray_normal(world_t *w, const double pos_m[3], const double dir[3], 
     double s = h.normal[0] * u[0] + h.normal[1] * u[1] + h.normal[2] * u[2] > 0 ? -1.0 : 1.0;
     for (int k = 0; k < 3; k++) normal[k] = s * h.normal[k];
     return h.best;
+}
+
+double world_ray(world_t *w, double x_m, double y_m, double z_m, double dir_rad, double max_m)
+{
+    const double pos[3] = { x_m, y_m, z_m }, dir[3] = { cos(dir_rad), sin(dir_rad), 0 };
+    double normal[3];
+    return world_ray_normal(w, pos, dir, max_m, normal);
 }
 
 void world_tof_origin(const world_t *w, int s, double pos_m[3], double *dir_rad)
