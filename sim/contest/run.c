@@ -187,8 +187,7 @@ static void contest_loop(run_t *r)
     double h;
     r->t0 = wall_now();
     world_pose(r->sim.world, &w.last_x, &w.last_y, &h);
-    if (r->drv == &run_scripted && !r->script.reachable) r->reason = "unreachable";
-    while (!(r->drv == &run_scripted && r->script.done)) {
+    for (;;) {
         const char *why = r->hil ? run_link_step(r) : r->drv->step(r);
         if (!why) why = after_step(r, &w);
         if (why) {
@@ -303,5 +302,5 @@ int run_one(const run_opts_t *o, const char *maze_path, json_t **out, int print_
     if (out_rc) return out_rc;
     if (o->shot) return RUN_OK; /* the picture was the point */
     if (!strcmp(r->reason, "avr_stopped")) return RUN_EXTERNAL;
-    return r->drv->exit_code(r);
+    return r->drv->exit_code ? r->drv->exit_code(r) : run_exit_laps(r, "done", "mcu_stopped");
 }

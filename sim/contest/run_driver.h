@@ -23,7 +23,7 @@ typedef struct {
     void (*results)(run_t *r, json_t *j); /* its keys after "driver" (NULL: none) */
     void (*undo)(run_t *r);               /* a later set-up step failed (NULL: nothing) */
     void (*headline)(const run_t *r);     /* the text report's first line */
-    int (*exit_code)(const run_t *r);     /* from the reason and laps */
+    int (*exit_code)(const run_t *r);     /* from the reason and laps (NULL: a lap, and done or mcu_stopped) */
 } run_driver_t;
 
 struct run_s {

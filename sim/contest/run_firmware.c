@@ -63,11 +63,9 @@ static void fw_headline(const run_t *r)
            (unsigned long long)r->o->seed);
 }
 
-static int fw_exit(const run_t *r) { return run_exit_laps(r, "done", "mcu_stopped"); }
-
 const run_driver_t run_firmware = {
     .name = "firmware", .open = fw_open, .step = fw_step, .results = fw_results,
-    .undo = fw_undo, .headline = fw_headline, .exit_code = fw_exit,
+    .undo = fw_undo, .headline = fw_headline,
 };
 
 /* ---- an mms algorithm drives the firmware's command mode ---- */

@@ -140,14 +140,12 @@ static void link_headline(const run_t *r)
            (unsigned)l->st.silences, (unsigned)l->st.disconnects);
 }
 
-static int link_exit(const run_t *r) { return run_exit_laps(r, "done", "mcu_stopped"); }
-
 const run_driver_t run_serial = {
     .name = "serial", .open = serial_open, .step = run_link_step, .undo = serial_undo,
-    .headline = link_headline, .exit_code = link_exit,
+    .headline = link_headline,
 };
 
 const run_driver_t run_avr = {
     .name = "serial", .open = avr_open, .step = run_link_step, .undo = avr_undo,
-    .headline = link_headline, .exit_code = link_exit,
+    .headline = link_headline,
 };

@@ -17,13 +17,17 @@ typedef struct {
     double def, min, max;
     const char *unit, *source;
     const char *const *choices; /* a word key: its words, the value is the index */
+    int whole;                  /* 1: a whole number (a count, or 0/1) */
 } cfgkey_t;
 
 #define K(sec, name, def, min, max, unit, source) \
-    { sec, #name, offsetof(simcfg_t, name), def, min, max, unit, source, NULL }
+    { sec, #name, offsetof(simcfg_t, name), def, min, max, unit, source, NULL, 0 }
+/* a key whose value is a whole number */
+#define KW(sec, name, def, min, max, unit, source) \
+    { sec, #name, offsetof(simcfg_t, name), def, min, max, unit, source, NULL, 1 }
 /* a key whose value is one of the words (stored as the word's index) */
 #define W(sec, name, def, words, source) \
-    { sec, #name, offsetof(simcfg_t, name), def, 0, sizeof words / sizeof words[0] - 1, "word", source, words }
+    { sec, #name, offsetof(simcfg_t, name), def, 0, sizeof words / sizeof words[0] - 1, "word", source, words, 1 }
 
 static const char *const motor_models[] = { "paper", "datasheet" };
 static const char *const solvers[] = { "quickstep", "exact" };
@@ -33,7 +37,7 @@ static const cfgkey_t keys[] = {
     K("world", wall_thick_m, 0.012, 0.001, 0.05, "m", "classic rules: 12 mm walls"),
     K("world", wall_height_m, 0.050, 0.005, 0.2, "m", "classic rules: 50 mm walls"),
     K("world", post_m, 0.012, 0.001, 0.05, "m", "classic rules: 12x12 mm posts"),
-    K("world", centre_post, 1, 0, 1, "0/1", "classic rules allow the goal's centre post"),
+    KW("world", centre_post, 1, 0, 1, "0/1", "classic rules allow the goal's centre post"),
     K("world", body_wall_mu, 0.3, 0, 3, "1", "ours: plastic on painted wood; only matters in a crash"),
     K("robot", body_w_m, 0.096, 0.01, 0.3, "m", "paper Table 1"),
     K("robot", body_l_m, 0.120, 0.01, 0.3, "m", "paper Table 1"),
@@ -95,7 +99,7 @@ static const cfgkey_t keys[] = {
     K("variation", com_sigma_m, 0, 0, 0.01, "m", "spread of com_x_m and com_y_m"),
     K("sim", step_s, 0.001, 1e-5, 0.01, "s", "1 kHz physics"),
     W("sim", solver, 1, solvers, "exact: dWorldStep, no creep at rest, drives straight (README); quickstep slid a resting robot 10 mm/min"),
-    K("sim", solver_iterations, 10, 1, 200, "1", "solver = quickstep only: at 5 the wheel hinges give and a straight run crabs 1.4 degrees"),
+    KW("sim", solver_iterations, 10, 1, 200, "1", "solver = quickstep only: at 5 the wheel hinges give and a straight run crabs 1.4 degrees"),
     K("sim", contact_erp, 0.4, 0.01, 1, "1", "ours: contact error reduction; stiff enough that the robot rests within 0.1 mm"),
     K("sim", contact_cfm, 1e-5, 0, 1, "m/N", "ours: contact softness"),
     K("sim", control_hz, 1000, 10, 100000, "Hz", "firmware control tick"),
@@ -177,7 +181,7 @@ static int on_key(void *user, const char *section, const char *name, const char 
         snprintf(l->reason, sizeof l->reason, "%s.%s: '%s' is not a number", section, name, val);
         return 0;
     }
-    if ((!strcmp(name, "solver_iterations") || !strcmp(name, "centre_post")) && v != floor(v)) {
+    if (k->whole && v != floor(v)) {
         snprintf(l->reason, sizeof l->reason, "%s.%s: %g is not a whole number", section, name, v);
         return 0;
     }

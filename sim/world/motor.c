@@ -48,6 +48,8 @@ void motor_init(motor_t *m, const simcfg_t *c, double scale)
     m->r_circuit_ohm = m->r_ohm;
     m->torque_nm = 0.0;
     m->k_mean = 0.0;
+    m->decay = 0.0;
+    m->step_r_ohm = m->step_dt_s = -1.0; /* nothing cached yet */
     m->i_start_a = 0.0;
 }
 
@@ -78,8 +80,13 @@ motor_drive_t motor_drive(motor_t *m, int cmd, double w_rad_s, double dt_s)
         d.t0_nm = m->torque_nm;
         return d;
     }
-    double tau = m->l_h / r, x = dt_s / tau;
-    m->k_mean = x > 1e-9 ? (1.0 - exp(-x)) / x : 1.0; /* the start current's weight in the step's mean */
+    if (r != m->step_r_ohm || dt_s != m->step_dt_s) { /* once per circuit and step (R_b = 0: once a run) */
+        double x = dt_s * r / m->l_h;                 /* the step in L/R time constants */
+        m->decay = exp(-x);                           /* the start current's share left at the end */
+        m->k_mean = x > 1e-9 ? (1.0 - m->decay) / x : 1.0; /* its weight in the step's mean */
+        m->step_r_ohm = r;
+        m->step_dt_s = dt_s;
+    }
     m->i_start_a = m->i_a;
     double g = m->n * m->eta * m->ke_v_s; /* output torque per ampere */
     /* mean current = (1-k)*(V - kn*w_mean)/R + k*i_start with the step's mean
@@ -96,8 +103,8 @@ void motor_after(motor_t *m, const motor_drive_t *d, double w_end_rad_s, double 
 {
     if (m->model == MOTOR_MODEL_PAPER) return; /* motor_drive did it all */
     double r = m->r_circuit_ohm, kn = m->ke_v_s * m->n, i_ss = (m->v_applied - kn * w_end_rad_s) / r;
-    double decay = exp(-dt_s * r / m->l_h);
-    m->i_a = i_ss + (m->i_start_a - i_ss) * decay;
+    (void)dt_s; /* the step's decay is motor_drive's */
+    m->i_a = i_ss + (m->i_start_a - i_ss) * m->decay;
     /* the output torque: the drive less the gearbox's friction, which
      * opposes the motion, or at rest the motion the drive tends to cause */
     double drive = d->t0_nm - d->damping_nm_s * w_end_rad_s, f = d->friction_nm;

@@ -53,6 +53,8 @@ typedef struct {
     double torque_nm;          /* output torque of the last step (friction excluded), N*m */
     /* this step's drive, set by motor_drive */
     double k_mean;             /* weight of the start current in the step's mean */
+    double decay;              /* exp(-dt*R/L): the start current's share left at the step's end */
+    double step_r_ohm, step_dt_s; /* the circuit and step k_mean and decay are for */
     double i_start_a;
 } motor_t;
 
