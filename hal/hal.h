@@ -25,6 +25,22 @@
  *   not block for longer than it takes to queue it.
  * - hal_belief: the mouse's map and position for telemetry; the backend
  *   may copy it or ignore it, and must not keep the pointer.
+ * Sensors of robots other than the paper's (robot file, docs/ROBOTS.md):
+ * - hal_ir_count: how many IR reflectance sensors the robot has (its
+ *   [ir.*] sections, in the robot file's order); 0 on a robot without.
+ * - hal_emitter: switch emitter group `group` (the sensors' `emitter`
+ *   key, 0..HAL_EMITTER_GROUPS-1) on (1) or off (0). All start off.
+ * - hal_ir_raw: the sensor's phototransistor as a 10-bit ADC sample,
+ *   0..1023, taken with the emitters as they are at that moment: read
+ *   once dark and once lit and subtract, as real firmware does. In
+ *   hal/sim the sample is taken at the call; over the wire (hal/arduino)
+ *   it is the newest sample the simulator sent, taken after the latest
+ *   hal_emitter it received, and hal_ir_seq counts those samples.
+ * - hal_gyro_mdps: the gyro's z rate in millidegrees per second,
+ *   counter-clockwise (seen from above) positive, as its output data
+ *   rate holds it; 0 on a robot without a gyro (hal_gyro_present 0).
+ * - hal_battery_mv: the battery's terminal voltage in millivolts as the
+ *   robot's divider and ADC would report it; 0 if the robot has none.
  */
 #ifndef HAL_H
 #define HAL_H
@@ -84,6 +100,16 @@ void hal_log(const char *line);
 void hal_log_P(const char *line_in_flash); /* hal_log of a PSTR() line */
 #endif
 void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_t state);
+
+#define HAL_IR_MAX 8          /* IR sensors a robot may have */
+#define HAL_EMITTER_GROUPS 4  /* emitter groups */
+uint8_t hal_ir_count(void);
+void hal_emitter(uint8_t group, uint8_t on);
+uint16_t hal_ir_raw(uint8_t sensor);
+uint8_t hal_ir_seq(void);
+uint8_t hal_gyro_present(void);
+int32_t hal_gyro_mdps(void);
+uint16_t hal_battery_mv(void);
 
 /* The firmware's entry points, called by the backend. */
 void fw_setup(void);
