@@ -75,3 +75,24 @@ void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_
 }
 
 const hal_sim_belief_t *hal_sim_belief(void) { return &belief; }
+
+uint8_t hal_ir_count(void) { return sim ? (uint8_t)sim_ir_count(sim) : 0; }
+void hal_emitter(uint8_t group, uint8_t on)
+{
+    if (sim) sim_emitter_set(sim, group, on);
+}
+static uint8_t ir_seq;
+uint16_t hal_ir_raw(uint8_t sensor)
+{
+    if (!sim) return 0;
+    ir_seq++;
+    return (uint16_t)sim_ir_read(sim, sensor);
+}
+uint8_t hal_ir_seq(void) { return ir_seq; }
+uint8_t hal_gyro_present(void) { return sim ? (uint8_t)sim_has_gyro(sim) : 0; }
+int32_t hal_gyro_mdps(void) { return sim ? (int32_t)lround(sim_gyro_rad_s(sim) * 180.0 / M_PI * 1000.0) : 0; }
+uint16_t hal_battery_mv(void)
+{
+    double v = sim ? sim_battery_v(sim) * 1000.0 : 0;
+    return (uint16_t)(v < 0 ? 0 : v > 65535 ? 65535 : lround(v));
+}

@@ -97,3 +97,12 @@ void sim_step(sim_t *s)
     world_pose(s->world, &x, &y, &h);
     race_update(&s->race, sim_time_s(s), x, y);
 }
+
+/* stubs until the robot file's components are wired in (issue 17) */
+int sim_ir_count(const sim_t *s) { (void)s; return 0; }
+void sim_emitter_set(sim_t *s, unsigned group, int on) { (void)s; (void)group; (void)on; }
+int sim_emitter(const sim_t *s, unsigned group) { (void)s; (void)group; return 0; }
+unsigned sim_ir_read(sim_t *s, unsigned i) { (void)s; (void)i; return 0; }
+int sim_has_gyro(const sim_t *s) { (void)s; return 0; }
+double sim_gyro_rad_s(const sim_t *s) { (void)s; return 0; }
+double sim_battery_v(const sim_t *s) { return s->cfg.battery_v; }

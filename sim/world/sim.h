@@ -45,4 +45,19 @@ void sim_free(sim_t *s);
 void sim_step(sim_t *s);
 double sim_time_s(const sim_t *s);
 
+/* The robot's other sensors (robot file components; issue 17). IR sensors
+ * count in the robot file's order; emitter groups 0..SIM_EMITTER_GROUPS-1
+ * start off. sim_ir_read samples sensor i's ADC now, with the emitters as
+ * they are (0..1023; 0 past the count). The gyro's z rate (rad/s, CCW
+ * positive, as its sample rate holds it; 0 without a gyro) and the
+ * battery's terminal voltage (V; 0 without one) are the latest step's. */
+#define SIM_EMITTER_GROUPS 4
+int sim_ir_count(const sim_t *s);
+void sim_emitter_set(sim_t *s, unsigned group, int on);
+int sim_emitter(const sim_t *s, unsigned group);
+unsigned sim_ir_read(sim_t *s, unsigned i);
+int sim_has_gyro(const sim_t *s);
+double sim_gyro_rad_s(const sim_t *s);
+double sim_battery_v(const sim_t *s);
+
 #endif
