@@ -29,7 +29,7 @@ static unsigned text_next;
 static void random_msg(wire_msg_t *m)
 {
     memset(m, 0, sizeof *m);
-    switch (rnd() % 7) {
+    switch (rnd() % 12) {
     case 0:
         m->type = WIRE_HELLO;
         m->u.hello.version = (uint8_t)rnd();
@@ -59,6 +59,21 @@ static void random_msg(wire_msg_t *m)
         break;
     case 4: m->type = WIRE_SENSORS; m->u.flag.on = (uint8_t)(rnd() & 1); break;
     case 5: m->type = WIRE_RUN; m->u.flag.on = (uint8_t)(rnd() & 1); break;
+    case 6: m->type = WIRE_EMITTER; m->u.emitter.groups = (uint8_t)(rnd() % 16); break;
+    case 7:
+        m->type = WIRE_IR;
+        m->u.ir.seq = (uint8_t)rnd();
+        m->u.ir.emitters = (uint8_t)(rnd() % 16);
+        m->u.ir.count = (uint8_t)(rnd() % (WIRE_IR_MAX + 1));
+        for (uint8_t i = 0; i < m->u.ir.count; i++) wire_ir_set(m, i, (uint16_t)(rnd() % 1024));
+        break;
+    case 8: m->type = WIRE_GYRO; m->u.gyro.t_us = rnd(); m->u.gyro.mdps = (int32_t)(rnd() * 5u); break;
+    case 9: m->type = WIRE_BATTERY; m->u.battery.t_us = rnd(); m->u.battery.mv = (uint16_t)rnd(); break;
+    case 10:
+        m->type = WIRE_ROBOT;
+        m->u.robot.ir_count = (uint8_t)(rnd() % (WIRE_IR_MAX + 1));
+        m->u.robot.flags = (uint8_t)(rnd() % 4);
+        break;
     default:
         m->type = WIRE_LOG;
         m->u.log.len = (uint8_t)(rnd() % (WIRE_LOG_MAX + 1));
@@ -446,6 +461,102 @@ static void test_compat_log_overflow(void **state)
     }
 }
 
+/* Version 2 (EMITTER, IR, GYRO, BATTERY, ROBOT): the 10-bit packing, what
+ * the encoder refuses, and malformed frames: each costs exactly one counted
+ * error, never a message, and the decoder goes on with the next frame. */
+static void test_v2_packing_and_rejects(void **state)
+{
+    wire_msg_t m = { .type = WIRE_IR };
+    for (uint16_t v = 0; v < 1024; v += 73) /* every position, neighbours untouched */
+        for (uint8_t i = 0; i < WIRE_IR_MAX; i++) {
+            for (uint8_t k = 0; k < WIRE_IR_MAX; k++) wire_ir_set(&m, k, (uint16_t)(1023 - k));
+            wire_ir_set(&m, i, v);
+            for (uint8_t k = 0; k < WIRE_IR_MAX; k++) assert_int_equal(wire_ir_get(&m, k), k == i ? v : 1023 - k);
+        }
+    wire_ir_set(&m, 0, 5000);
+    assert_int_equal(wire_ir_get(&m, 0), 1023); /* clamped */
+    wire_ir_set(&m, WIRE_IR_MAX, 7);           /* out of range: ignored */
+    assert_int_equal(wire_ir_get(&m, WIRE_IR_MAX), 0);
+    /* the longest sim -> MCU frame (IR, 8 sensors) fits an MCU's decoder */
+    m.u.ir.count = WIRE_IR_MAX;
+    uint8_t buf[WIRE_FRAME_MAX];
+    size_t n = wire_encode(&m, buf, sizeof buf);
+    assert_int_equal(n, 18);
+    assert_true(n - 1 <= WIRE_RX_MAX);
+    static const wire_msg_t bad[] = {
+        { .type = WIRE_EMITTER, .u.emitter = { 16 } },
+        { .type = WIRE_IR, .u.ir = { 0, 0, WIRE_IR_MAX + 1, { 0 } } },
+        { .type = WIRE_IR, .u.ir = { 0, 16, 1, { 0 } } },
+        { .type = WIRE_ROBOT, .u.robot = { WIRE_IR_MAX + 1, 0 } },
+        { .type = WIRE_ROBOT, .u.robot = { 1, 4 } },
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) assert_int_equal(wire_encode(&bad[i], buf, sizeof buf), 0);
+    /* the encoder sends the padding bits after the last sample as 0 */
+    m = (wire_msg_t){ .type = WIRE_IR, .u.ir = { 1, 0, 1, { 0xFF, 0xFF } } };
+    wire_decoder_t d;
+    wire_decoder_init(&d);
+    wire_msg_t out;
+    n = wire_encode(&m, buf, sizeof buf);
+    int ok = 0;
+    for (size_t i = 0; i < n; i++) ok += wire_decode_byte(&d, buf[i], &out);
+    assert_int_equal(ok, 1);
+    assert_int_equal(wire_ir_get(&out, 0), 1023);
+    assert_int_equal(out.u.ir.packed[1], 0x03);
+    /* no compat form */
+    wire_compat_tx_t tx;
+    wire_compat_tx_init(&tx, 1200);
+    static const uint8_t v2[] = { WIRE_EMITTER, WIRE_IR, WIRE_GYRO, WIRE_BATTERY, WIRE_ROBOT };
+    for (size_t i = 0; i < sizeof v2; i++) {
+        m = (wire_msg_t){ .type = v2[i] };
+        assert_int_equal(wire_compat_encode(&tx, &m, buf, sizeof buf), 0);
+    }
+}
+
+static void test_v2_malformed(void **state)
+{
+    static const struct {
+        uint8_t raw[16], n;
+        int err; /* 0 length, 1 value */
+    } cases[] = {
+        { { WIRE_IR, 1, 0, 8, 1, 2, 3, 4, 5, 6, 7, 8, 9 }, 13, 0 },  /* 8 samples, 9 of 10 bytes: truncated */
+        { { WIRE_IR, 1, 0, 2, 1, 2, 3, 4 }, 8, 0 },                 /* 2 samples, a byte too many */
+        { { WIRE_IR, 1, 0 }, 3, 0 },                                /* no count */
+        { { WIRE_IR }, 1, 0 },                                      /* empty */
+        { { WIRE_IR, 1, 0, 9, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12 }, 16, 1 }, /* 9 sensors */
+        { { WIRE_IR, 1, 0x10, 1, 1, 0 }, 6, 1 },                    /* emitter group 4 */
+        { { WIRE_IR, 1, 0, 1, 1, 0x04 }, 6, 1 },                    /* a padding bit set */
+        { { WIRE_EMITTER, 0x10 }, 2, 1 },
+        { { WIRE_EMITTER }, 1, 0 },
+        { { WIRE_GYRO, 1, 2, 3, 4, 5, 6, 7 }, 8, 0 },
+        { { WIRE_BATTERY, 1, 2, 3, 4, 5, 6, 7 }, 8, 0 },
+        { { WIRE_ROBOT, 9, 0 }, 3, 1 },
+        { { WIRE_ROBOT, 1, 4 }, 3, 1 },
+        { { WIRE_ROBOT, 1 }, 2, 0 },
+    };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        uint8_t f[64];
+        size_t n = frame_raw(cases[c].raw, cases[c].n, f);
+        wire_msg_t m = { .type = WIRE_ROBOT, .u.robot = { 2, 1 } }; /* then a good frame */
+        n += wire_encode(&m, f + n, sizeof f - n);
+        int ok;
+        wire_stats_t s = feed(f, n, &ok);
+        assert_int_equal(wire_stats_errors(&s), 1);
+        assert_int_equal(cases[c].err ? s.value : s.length, 1);
+        assert_int_equal(ok, 1);
+    }
+    /* a frame cut off on the wire (the delimiter and its tail lost) runs into the next: one error */
+    uint8_t f[64];
+    wire_msg_t ir = { .type = WIRE_IR, .u.ir = { 3, 1, 4, { 1, 2, 3, 4, 5 } } };
+    size_t n = wire_encode(&ir, f, sizeof f);
+    size_t cut = n - 6;
+    n = cut + wire_encode(&ir, f + cut, sizeof f - cut);
+    n += wire_encode(&ir, f + n, sizeof f - n);
+    int ok;
+    wire_stats_t s = feed(f, n, &ok);
+    assert_int_equal(wire_stats_errors(&s), 1);
+    assert_int_equal(ok, 1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -458,6 +569,8 @@ int main(void)
         cmocka_unit_test(test_pure_garbage),
         cmocka_unit_test(test_compat_details),
         cmocka_unit_test(test_compat_log_overflow),
+        cmocka_unit_test(test_v2_packing_and_rejects),
+        cmocka_unit_test(test_v2_malformed),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

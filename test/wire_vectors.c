@@ -11,11 +11,30 @@ static const uint8_t f_dist_to[] = { 0x04, 0x04, 0x60, 0xEA, 0x01, 0x07, 0x02, 0
 static const uint8_t f_sens[] = { 0x05, 0x05, 0x01, 0xDB, 0xF2, 0x00 };
 static const uint8_t f_run[] = { 0x02, 0x06, 0x03, 0xA9, 0xB7, 0x00 };
 static const uint8_t f_log[] = { 0x09, 0x07, 0x68, 0x65, 0x6C, 0x6C, 0x6F, 0x33, 0x05, 0x00 };
+/* version 2 */
+static const uint8_t f_hello2[] = { 0x03, 0x01, 0x02, 0x05, 0xB0, 0x04, 0xF8, 0x8B, 0x01, 0x05, 0xE8, 0x03, 0xFE, 0x53, 0x00 };
+static const uint8_t f_emitter[] = { 0x05, 0x08, 0x05, 0x03, 0xC4, 0x00 };
+static const uint8_t f_ir3[] = { 0x05, 0x09, 0x07, 0x01, 0x03, 0x06, 0xFC, 0x0F, 0x20, 0x6E, 0x78, 0x00 };
+static const uint8_t f_ir8[] = { 0x11, 0x09, 0xFF, 0x0F, 0x08, 0x64, 0x20, 0xC3, 0x12, 0x64, 0xF4, 0x61, 0xC9, 0xEB, 0xFF, 0xC0, 0xE2, 0x00 };
+static const uint8_t f_ir0[] = { 0x03, 0x09, 0x01, 0x01, 0x03, 0x87, 0x40, 0x00 };
+static const uint8_t f_gyro[] = { 0x05, 0x0A, 0x40, 0xE2, 0x01, 0x07, 0x80, 0x03, 0xF5, 0xFF, 0x36, 0x4A, 0x00 };
+static const uint8_t f_battery[] = { 0x04, 0x0B, 0xA0, 0x0F, 0x01, 0x05, 0xBB, 0x1F, 0x19, 0x1F, 0x00 };
+static const uint8_t f_robot[] = { 0x06, 0x0C, 0x06, 0x03, 0x38, 0x23, 0x00 };
 static const uint8_t f_motor0[] = { 0x02, 0x02, 0x01, 0x01, 0x01, 0x01, 0x01, 0x01, 0x01, 0x03, 0x15, 0xDE, 0x00 };
 
 #define V(n, b, ...) { n, __VA_ARGS__, b, (uint8_t)sizeof b }
 const wire_vector_t wire_vectors_framed[] = {
-    V("hello", f_hello, { .type = WIRE_HELLO, .u.hello = { WIRE_VERSION, WIRE_ROLE_SIM, 1200, 35832, 1000 } }),
+    V("hello v1", f_hello, { .type = WIRE_HELLO, .u.hello = { 1, WIRE_ROLE_SIM, 1200, 35832, 1000 } }),
+    V("hello v2", f_hello2, { .type = WIRE_HELLO, .u.hello = { 2, WIRE_ROLE_SIM, 1200, 35832, 1000 } }),
+    V("emitter", f_emitter, { .type = WIRE_EMITTER, .u.emitter = { 5 } }),
+    /* samples 0, 1023, 512: 10 bits each, LSB first */
+    V("ir 3", f_ir3, { .type = WIRE_IR, .u.ir = { 7, 1, 3, { 0x00, 0xFC, 0x0F, 0x20 } } }),
+    /* 100, 200, ..., 700, 1023 */
+    V("ir 8", f_ir8, { .type = WIRE_IR, .u.ir = { 255, 15, 8, { 0x64, 0x20, 0xC3, 0x12, 0x64, 0xF4, 0x61, 0xC9, 0xEB, 0xFF } } }),
+    V("ir none", f_ir0, { .type = WIRE_IR, .u.ir = { 1, 0, 0, { 0 } } }),
+    V("gyro", f_gyro, { .type = WIRE_GYRO, .u.gyro = { 123456, -720000 } }),
+    V("battery", f_battery, { .type = WIRE_BATTERY, .u.battery = { 4000, 8123 } }),
+    V("robot", f_robot, { .type = WIRE_ROBOT, .u.robot = { 6, WIRE_ROBOT_GYRO | WIRE_ROBOT_BATTERY } }),
     V("motor", f_motor, { .type = WIRE_MOTOR, .u.motor = { 1000, 512, -1023 } }),
     V("encoder", f_encoder, { .type = WIRE_ENCODER, .u.encoder = { 123456, 1000, -5 } }),
     V("distance", f_dist, { .type = WIRE_DISTANCE, .u.distance = { 30000, WIRE_SENSOR_FRONT, 0, 90 } }),
@@ -66,6 +85,15 @@ static int same_msg(const wire_msg_t *a, const wire_msg_t *b)
     case WIRE_SENSORS:
     case WIRE_RUN: return a->u.flag.on == b->u.flag.on;
     case WIRE_LOG: return a->u.log.len == b->u.log.len && (!a->u.log.len || !memcmp(a->u.log.text, b->u.log.text, a->u.log.len));
+    case WIRE_EMITTER: return a->u.emitter.groups == b->u.emitter.groups;
+    case WIRE_IR:
+        if (a->u.ir.seq != b->u.ir.seq || a->u.ir.emitters != b->u.ir.emitters || a->u.ir.count != b->u.ir.count) return 0;
+        for (uint8_t i = 0; i < a->u.ir.count; i++)
+            if (wire_ir_get(a, i) != wire_ir_get(b, i)) return 0;
+        return 1;
+    case WIRE_GYRO: return a->u.gyro.t_us == b->u.gyro.t_us && a->u.gyro.mdps == b->u.gyro.mdps;
+    case WIRE_BATTERY: return a->u.battery.t_us == b->u.battery.t_us && a->u.battery.mv == b->u.battery.mv;
+    case WIRE_ROBOT: return a->u.robot.ir_count == b->u.robot.ir_count && a->u.robot.flags == b->u.robot.flags;
     default: return 0;
     }
 }

@@ -11,6 +11,13 @@
 #define LEN_ENCODER 12u
 #define LEN_DISTANCE 8u
 #define LEN_FLAG 1u
+#define LEN_IR_HEAD 3u /* seq, emitters, count; then the packed samples */
+#define LEN_GYRO 8u
+#define LEN_BATTERY 6u
+#define LEN_ROBOT 2u
+
+/* bytes of n packed 10-bit samples */
+static uint8_t ir_bytes(uint8_t n) { return (uint8_t)((n * 10u + 7u) / 8u); }
 
 uint32_t wire_stats_errors(const wire_stats_t *s)
 {
@@ -51,6 +58,31 @@ static uint32_t get32(const uint8_t *p)
 }
 
 static int motor_ok(int16_t v) { return v >= -WIRE_MOTOR_MAX && v <= WIRE_MOTOR_MAX; }
+static int groups_ok(uint8_t g) { return g < (1u << WIRE_EMITTER_GROUPS); }
+
+uint16_t wire_ir_get(const wire_msg_t *m, uint8_t i)
+{
+    if (i >= WIRE_IR_MAX) return 0;
+    uint8_t bit = (uint8_t)(i * 10u);
+    const uint8_t *p = m->u.ir.packed + (bit >> 3);
+    return (uint16_t)((get16(p) >> (bit & 7u)) & 0x3FFu);
+}
+
+void wire_ir_set(wire_msg_t *m, uint8_t i, uint16_t v)
+{
+    if (i >= WIRE_IR_MAX) return;
+    uint8_t bit = (uint8_t)(i * 10u), sh = bit & 7u;
+    uint8_t *p = m->u.ir.packed + (bit >> 3);
+    uint16_t mask = (uint16_t)(0x3FFu << sh);
+    put16(p, (uint16_t)((get16(p) & ~mask) | ((v > 1023u ? 1023u : v) << sh)));
+}
+
+/* whether the bits past sample count-1 in the last packed byte are 0 */
+static int ir_padding_ok(const uint8_t *packed, uint8_t count)
+{
+    uint8_t used = (uint8_t)((count * 10u) & 7u);
+    return !used || !(packed[ir_bytes(count) - 1] >> used);
+}
 
 /* bytes of type + payload for m, 0 if m is invalid */
 static size_t raw_len(const wire_msg_t *m)
@@ -64,7 +96,44 @@ static size_t raw_len(const wire_msg_t *m)
     case WIRE_SENSORS:
     case WIRE_RUN: return m->u.flag.on <= 1 ? 1 + LEN_FLAG : 0;
     case WIRE_LOG: return m->u.log.len <= WIRE_LOG_MAX && (m->u.log.text || !m->u.log.len) ? 1u + m->u.log.len : 0;
+    case WIRE_EMITTER: return groups_ok(m->u.emitter.groups) ? 1 + LEN_FLAG : 0;
+    case WIRE_IR:
+        return m->u.ir.count <= WIRE_IR_MAX && groups_ok(m->u.ir.emitters) ? 1u + LEN_IR_HEAD + ir_bytes(m->u.ir.count) : 0;
+    case WIRE_GYRO: return 1 + LEN_GYRO;
+    case WIRE_BATTERY: return 1 + LEN_BATTERY;
+    case WIRE_ROBOT:
+        return m->u.robot.ir_count <= WIRE_IR_MAX && m->u.robot.flags <= (WIRE_ROBOT_GYRO | WIRE_ROBOT_BATTERY)
+                   ? 1 + LEN_ROBOT : 0;
     default: return 0;
+    }
+}
+
+/* the payload of a version-2 message (m valid) */
+static void pack2(const wire_msg_t *m, uint8_t *p)
+{
+    switch (m->type) {
+    case WIRE_EMITTER: p[0] = m->u.emitter.groups; break;
+    case WIRE_IR: {
+        uint8_t n = ir_bytes(m->u.ir.count), used = (uint8_t)((m->u.ir.count * 10u) & 7u);
+        p[0] = m->u.ir.seq;
+        p[1] = m->u.ir.emitters;
+        p[2] = m->u.ir.count;
+        memcpy(p + 3, m->u.ir.packed, n);
+        if (used) p[2 + n] &= (uint8_t)((1u << used) - 1u); /* the padding goes as 0 */
+        break;
+    }
+    case WIRE_GYRO:
+        put32(p, m->u.gyro.t_us);
+        put32(p + 4, (uint32_t)m->u.gyro.mdps);
+        break;
+    case WIRE_BATTERY:
+        put32(p, m->u.battery.t_us);
+        put16(p + 4, m->u.battery.mv);
+        break;
+    case WIRE_ROBOT:
+        p[0] = m->u.robot.ir_count;
+        p[1] = m->u.robot.flags;
+        break;
     }
 }
 
@@ -102,6 +171,7 @@ static void pack(const wire_msg_t *m, uint8_t *raw)
     case WIRE_LOG:
         if (m->u.log.len) memcpy(p, m->u.log.text, m->u.log.len);
         break;
+    default: pack2(m, p); break;
     }
 }
 
@@ -127,6 +197,34 @@ size_t wire_encode(const wire_msg_t *m, uint8_t *out, size_t cap)
 
 void wire_decoder_init(wire_decoder_t *d) { memset(d, 0, sizeof *d); }
 
+/* a version-2 payload of the right length -> m; 0 if a field is out of range */
+static int unpack2(wire_msg_t *m, const uint8_t *p)
+{
+    switch (m->type) {
+    case WIRE_EMITTER:
+        m->u.emitter.groups = p[0];
+        return groups_ok(p[0]);
+    case WIRE_IR:
+        m->u.ir.seq = p[0];
+        m->u.ir.emitters = p[1];
+        m->u.ir.count = p[2];
+        memcpy(m->u.ir.packed, p + 3, ir_bytes(p[2]));
+        return groups_ok(p[1]) && ir_padding_ok(p + 3, p[2]);
+    case WIRE_GYRO:
+        m->u.gyro.t_us = get32(p);
+        m->u.gyro.mdps = (int32_t)get32(p + 4);
+        return 1;
+    case WIRE_BATTERY:
+        m->u.battery.t_us = get32(p);
+        m->u.battery.mv = get16(p + 4);
+        return 1;
+    default: /* WIRE_ROBOT */
+        m->u.robot.ir_count = p[0];
+        m->u.robot.flags = p[1];
+        return p[0] <= WIRE_IR_MAX && p[1] <= (WIRE_ROBOT_GYRO | WIRE_ROBOT_BATTERY);
+    }
+}
+
 /* raw (type + payload, CRC after it) -> message; 0 and counted if malformed */
 static int unpack(wire_stats_t *st, uint8_t *raw, size_t n, wire_msg_t *m)
 {
@@ -142,6 +240,14 @@ static int unpack(wire_stats_t *st, uint8_t *raw, size_t n, wire_msg_t *m)
     case WIRE_SENSORS:
     case WIRE_RUN: want = LEN_FLAG; break;
     case WIRE_LOG: want = len <= WIRE_LOG_MAX ? len : WIRE_LOG_MAX + 1; break;
+    case WIRE_EMITTER: want = LEN_FLAG; break;
+    case WIRE_IR:
+        if (len >= LEN_IR_HEAD && p[2] > WIRE_IR_MAX) goto bad_value; /* the count sizes the rest */
+        want = LEN_IR_HEAD + ir_bytes(len >= LEN_IR_HEAD ? p[2] : 0);
+        break;
+    case WIRE_GYRO: want = LEN_GYRO; break;
+    case WIRE_BATTERY: want = LEN_BATTERY; break;
+    case WIRE_ROBOT: want = LEN_ROBOT; break;
     default: st->unknown++; return 0;
     }
     if (len != want) {
@@ -184,6 +290,9 @@ static int unpack(wire_stats_t *st, uint8_t *raw, size_t n, wire_msg_t *m)
         m->u.log.len = (uint8_t)len;
         p[len] = 0; /* over the CRC, already checked */
         m->u.log.text = (const char *)p;
+        break;
+    default:
+        if (!unpack2(m, p)) goto bad_value;
         break;
     }
     return 1;

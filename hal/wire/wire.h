@@ -23,13 +23,15 @@
 extern "C" {
 #endif
 
-#define WIRE_VERSION 1          /* protocol version carried in HELLO */
+#define WIRE_VERSION 2          /* protocol version carried in HELLO (2: EMITTER, IR, GYRO, BATTERY, ROBOT) */
+#define WIRE_VERSION_MIN 1      /* the oldest version a peer may speak: a version-1 peer gets no
+                                   version-2 message (docs/PROTOCOL.md, "Versions") */
 #define WIRE_LOG_MAX 80         /* bytes of text in a LOG message (= HAL_LOG_MAX) */
 #define WIRE_RAW_MAX (1 + WIRE_LOG_MAX + 2)      /* type + longest payload + CRC, bytes */
 #define WIRE_FRAME_MAX (WIRE_RAW_MAX + 2 + 1)    /* + COBS overhead + delimiter, bytes */
 /* The longest LOG text a decoder takes, bytes: WIRE_LOG_MAX by default.
- * An MCU never receives LOG (the sim's longest message, ENCODER, is 16
- * bytes before the delimiter) and may build ALL its files with
+ * An MCU never receives LOG (the sim's longest message, IR with 8 sensors,
+ * is 17 bytes before the delimiter, ENCODER 16) and may build ALL its files with
  * -DWIRE_RX_LOG_MAX=14 (it sizes both decoders' buffers: 66 B less SRAM);
  * a longer frame is then counted as overflow (and dropped), a longer compat
  * log line counted as overflow and delivered cut to WIRE_RX_LOG_MAX bytes. */
@@ -52,8 +54,19 @@ enum wire_type {
     WIRE_DISTANCE = 0x04, /* sim -> MCU: one ToF reading */
     WIRE_SENSORS = 0x05,  /* MCU -> sim: enable / disable the ToF sensors */
     WIRE_RUN = 0x06,      /* MCU -> sim: start / stop */
-    WIRE_LOG = 0x07       /* MCU -> sim: one text line */
+    WIRE_LOG = 0x07,      /* MCU -> sim: one text line */
+    /* version 2: sensors of robots other than the paper's (hal/hal.h) */
+    WIRE_EMITTER = 0x08,  /* MCU -> sim: which emitter groups are lit; the sim answers with IR */
+    WIRE_IR = 0x09,       /* sim -> MCU: every IR sensor's 10-bit sample, taken after an EMITTER */
+    WIRE_GYRO = 0x0A,     /* sim -> MCU: the gyro's z rate, mdps (robots with a gyro) */
+    WIRE_BATTERY = 0x0B,  /* sim -> MCU: the battery's terminal voltage, mV (robots with one) */
+    WIRE_ROBOT = 0x0C     /* sim -> MCU: IR sensor count, gyro and battery present (after HELLO) */
 };
+
+#define WIRE_IR_MAX 8            /* IR sensors in an IR frame (= HAL_IR_MAX) */
+#define WIRE_IR_PACKED 10        /* bytes of WIRE_IR_MAX packed 10-bit samples */
+#define WIRE_EMITTER_GROUPS 4    /* emitter groups, bits 0..3 of a mask (= HAL_EMITTER_GROUPS) */
+enum { WIRE_ROBOT_GYRO = 1, WIRE_ROBOT_BATTERY = 2 }; /* ROBOT flags */
 
 enum { WIRE_ROLE_SIM = 0, WIRE_ROLE_MCU = 1 };
 enum { WIRE_SENSOR_LEFT = 0, WIRE_SENSOR_FRONT = 1, WIRE_SENSOR_RIGHT = 2, WIRE_SENSOR_COUNT = 3 };
@@ -91,6 +104,28 @@ typedef struct {
             uint8_t on;             /* 1 enable, 0 disable (SENSORS); 1 start, 0 stop (RUN) */
         } flag;
         struct {
+            uint8_t groups;         /* bit g = emitter group g lit (g < WIRE_EMITTER_GROUPS) */
+        } emitter;
+        struct {
+            uint8_t seq;            /* +1 (mod 256) with every IR frame the sim sends */
+            uint8_t emitters;       /* the groups lit when it sampled (the EMITTER it answers) */
+            uint8_t count;          /* sensors, 0..WIRE_IR_MAX */
+            uint8_t packed[WIRE_IR_PACKED]; /* samples 0..1023, 10 bits each, LSB first:
+                                       use wire_ir_get / wire_ir_set */
+        } ir;
+        struct {
+            uint32_t t_us;          /* sim time of the reading, us */
+            int32_t mdps;           /* z rate, millidegrees/s, counter-clockwise positive */
+        } gyro;
+        struct {
+            uint32_t t_us;          /* sim time of the reading, us */
+            uint16_t mv;            /* terminal voltage, mV */
+        } battery;
+        struct {
+            uint8_t ir_count;       /* IR sensors, 0..WIRE_IR_MAX */
+            uint8_t flags;          /* WIRE_ROBOT_GYRO | WIRE_ROBOT_BATTERY */
+        } robot;
+        struct {
             uint8_t len;            /* 0..WIRE_LOG_MAX */
             const char *text;       /* len bytes; decoded: NUL-terminated, inside the
                                        decoder, valid until the next byte is fed */
@@ -115,6 +150,10 @@ uint32_t wire_stats_errors(const wire_stats_t *s);
 
 /* CRC-16/CCITT-FALSE (poly 0x1021, init 0xFFFF); "123456789" -> 0x29B1. */
 uint16_t wire_crc16(const uint8_t *p, size_t n);
+
+/* IR sample i (0..WIRE_IR_MAX-1) of an IR message; set clamps v to 1023. */
+uint16_t wire_ir_get(const wire_msg_t *m, uint8_t i);
+void wire_ir_set(wire_msg_t *m, uint8_t i, uint16_t v);
 
 /* ---- framed mode ---- */
 
@@ -155,7 +194,8 @@ void wire_compat_tx_init(wire_compat_tx_t *t, uint16_t range_mm);
 /* Encode m as compat message(s): ENCODER -> IDs 3 and 4 (a delta beyond
  * int16 is sent in part, the rest follows next time), DISTANCE -> ID 0/1/2,
  * MOTOR -> IDs 5 and 6 (clamped to +-1023), SENSORS/RUN -> ID 7, LOG -> ID 8
- * + text + NUL. HELLO has no compat form (returns 0). Returns the bytes
+ * + text + NUL. HELLO and the version-2 messages have no compat form
+ * (return 0). Returns the bytes
  * written, 0 if it does not fit cap (t is then unchanged). */
 size_t wire_compat_encode(wire_compat_tx_t *t, const wire_msg_t *m, uint8_t *out, size_t cap);
 
