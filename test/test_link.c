@@ -2,7 +2,9 @@
  * plays the MCU): byte budget per step at the baud, queue drops, handshake,
  * silence timeout, compat manager messages (stop stops the robot, not the
  * run), receive pacing, garbage, disconnect; over a pty: compat's sensor
- * request kept over a reconnect. No physics: link_step_io with made-up readings. */
+ * request kept over a reconnect; version 2 (ROBOT, GYRO, BATTERY, EMITTER
+ * answered by IR) to a version-2 MCU only. No physics: link_step_io with
+ * made-up readings. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -152,6 +154,100 @@ static void test_framed_overload_drops_whole(void **state)
     assert_int_equal(wire_stats_errors(&d.stats), 0);
     assert_true(d.stats.frames_ok > 500);
     close_pair();
+}
+
+/* version 2: made-up IR sensors; an EMITTER lights groups, each sensor reads
+ * 100 x (its index + 1) + the lit groups */
+static uint8_t lit;
+static int samples;
+static void fake_ir(void *ctx, uint8_t groups, uint16_t raw[WIRE_IR_MAX])
+{
+    lit = groups;
+    samples++;
+    for (int i = 0; i < 3; i++) raw[i] = (uint16_t)(100 * (i + 1) + groups);
+    raw[3] = 5000; /* past the count: not sent */
+}
+static void step_v2(int16_t mo[2])
+{
+    link_io_t io;
+    memset(&io, 0, sizeof io);
+    io.t_us = (uint32_t)(lk.step + 1) * 1000u;
+    io.ir_count = 3;
+    io.has_gyro = 1;
+    io.gyro_mdps = -123456;
+    io.battery_mv = 8012;
+    io.ir_sample = fake_ir;
+    link_step_io(&lk, &io, mo);
+}
+/* the messages the MCU end received, counted per type; the last IR kept */
+static void count_msgs(wire_decoder_t *d, unsigned counts[16], wire_msg_t *ir)
+{
+    uint8_t buf[4096];
+    wire_msg_t m;
+    size_t n = drain(buf, sizeof buf);
+    for (size_t i = 0; i < n; i++)
+        if (wire_decode_byte(d, buf[i], &m)) {
+            counts[m.type & 15]++;
+            if (m.type == WIRE_IR) *ir = m;
+            if (m.type == WIRE_ROBOT) {
+                assert_int_equal(m.u.robot.ir_count, 3);
+                assert_int_equal(m.u.robot.flags, WIRE_ROBOT_GYRO | WIRE_ROBOT_BATTERY);
+            }
+            if (m.type == WIRE_GYRO) assert_int_equal(m.u.gyro.mdps, -123456);
+            if (m.type == WIRE_BATTERY) assert_int_equal(m.u.battery.mv, 8012);
+        }
+}
+
+static void test_v2_messages(void **state)
+{
+    for (uint8_t version = 1; version <= WIRE_VERSION; version++) {
+        int16_t mo[2];
+        wire_decoder_t d;
+        wire_msg_t ir;
+        unsigned c[16] = { 0 };
+        open_pair(LINK_FRAMED, 1000000, 0.1);
+        wire_decoder_init(&d);
+        wire_msg_t h = { .type = WIRE_HELLO, .u.hello = { version, WIRE_ROLE_MCU, 1200, 35832, 250 } };
+        send_msg(&h);
+        for (int s = 0; s < 200; s++) step_v2(mo);
+        count_msgs(&d, c, &ir);
+        assert_int_equal(lk.mcu_version, version);
+        assert_int_equal(c[WIRE_ENCODER], 51); /* step 1 (before the HELLO is read), then every 4th step */
+        if (version < 2) { /* an old MCU: nothing it cannot decode */
+            assert_int_equal(c[WIRE_ROBOT] + c[WIRE_GYRO] + c[WIRE_BATTERY] + c[WIRE_IR], 0);
+            close_pair();
+            continue;
+        }
+        assert_int_equal(c[WIRE_ROBOT], 1);
+        assert_int_equal(c[WIRE_GYRO], 50);    /* with each ENCODER */
+        assert_int_equal(c[WIRE_BATTERY], 2);  /* every 100 ms */
+        assert_int_equal(c[WIRE_IR], 0);       /* only when asked */
+        /* two EMITTERs in one step: two samples, two IR frames, out in that step */
+        wire_msg_t e = { .type = WIRE_EMITTER, .u.emitter = { 0x5 } };
+        send_msg(&e);
+        e.u.emitter.groups = 0x2;
+        send_msg(&e);
+        samples = 0;
+        step_v2(mo);
+        count_msgs(&d, c, &ir);
+        assert_int_equal(samples, 2);
+        assert_int_equal(c[WIRE_IR], 2);
+        assert_int_equal(ir.u.ir.seq, 2);
+        assert_int_equal(ir.u.ir.emitters, 0x2);
+        assert_int_equal(ir.u.ir.count, 3);
+        for (uint8_t i = 0; i < 3; i++) assert_int_equal(wire_ir_get(&ir, i), 100 * (i + 1) + 2);
+        assert_int_equal(lk.st.emitters, 2);
+        assert_int_equal(lk.st.ir_frames, 2);
+        /* a reset MCU says HELLO again: ROBOT again */
+        send_msg(&h);
+        step_v2(mo);
+        step_v2(mo); /* read in the first step, sent in the next */
+        count_msgs(&d, c, &ir);
+        assert_int_equal(c[WIRE_ROBOT], 2);
+        assert_int_equal(wire_stats_errors(&d.stats), 0);
+        assert_int_equal(wire_stats_errors(&lk.dec.stats), 0);
+        close_pair();
+    }
 }
 
 static void test_handshake_and_motor(void **state)
@@ -539,6 +635,7 @@ int main(void)
         cmocka_unit_test(test_compat_reconnect_keeps_sensors),
         cmocka_unit_test(test_compat_distance_from_metres),
         cmocka_unit_test(test_silence_defaults_and_off),
+        cmocka_unit_test(test_v2_messages),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -9,9 +9,37 @@
 #include <stdio.h>
 #include <string.h>
 
-/* The link's view of the robot: after each physics step its encoder counts
- * and the ToF readings that are new since the last step go to the MCU; the
- * MCU's motor commands come back. */
+/* An EMITTER from the MCU (link_step_io calls it): light the groups it
+ * names, then sample every IR sensor with them so. */
+static void ir_sample(void *ctx, uint8_t groups, uint16_t raw[WIRE_IR_MAX])
+{
+    sim_t *s = ctx;
+    for (unsigned g = 0; g < SIM_EMITTER_GROUPS && g < WIRE_EMITTER_GROUPS; g++) sim_emitter_set(s, g, (groups >> g) & 1u);
+    int n = sim_ir_count(s);
+    for (int i = 0; i < n && i < WIRE_IR_MAX; i++) {
+        unsigned v = sim_ir_read(s, (unsigned)i);
+        raw[i] = (uint16_t)(v > 1023u ? 1023u : v);
+    }
+}
+
+/* The robot's other sensors for a version-2 MCU (docs/PROTOCOL.md) */
+static void link_v2_io(link_io_t *io, sim_t *s)
+{
+    int n = sim_ir_count(s);
+    io->ir_count = (uint8_t)(n < 0 ? 0 : n > WIRE_IR_MAX ? WIRE_IR_MAX : n);
+    io->has_gyro = sim_has_gyro(s) ? 1 : 0;
+    double mdps = io->has_gyro ? sim_gyro_rad_s(s) * 180.0 / M_PI * 1000.0 : 0.0;
+    io->gyro_mdps = (int32_t)lround(mdps > 2e9 ? 2e9 : mdps < -2e9 ? -2e9 : mdps);
+    double mv = sim_battery_v(s) * 1000.0;
+    io->battery_mv = (uint16_t)lround(mv < 0 ? 0 : mv > 65535 ? 65535 : mv);
+    io->ir_sample = ir_sample;
+    io->ctx = s;
+}
+
+/* The link's view of the robot: after each physics step its encoder counts,
+ * the ToF readings that are new since the last step and (to a version-2
+ * MCU) gyro, battery and IR go to the MCU; the MCU's motor commands and
+ * emitter switches come back. */
 static void link_exchange(link_t *l, sim_t *s)
 {
     link_io_t io;
@@ -28,6 +56,7 @@ static void link_exchange(link_t *l, sim_t *s)
         }
         l->tof_seen[i] = (uint64_t)s->tof_count[i];
     }
+    link_v2_io(&io, s);
     int16_t mo[2];
     s->tof_enabled = link_step_io(l, &io, mo);
     s->cmd[WORLD_LEFT] = mo[0];

@@ -48,6 +48,9 @@ static void on_connect(link_t *l)
      * does not ask again (init_common sets the state at open) */
     l->hello_ok = l->o.protocol == LINK_COMPAT; /* compat has no handshake */
     l->hello_reply = 0;
+    l->mcu_version = 0;
+    l->robot_due = l->robot_reported = 0;
+    l->ir_seq = 0;
     l->silent = 0;
     l->enc_every = 1;
     l->last_rx_step = l->step;
@@ -152,7 +155,34 @@ static void enqueue(link_t *l, const wire_msg_t *m)
     l->st.tx_msgs++;
 }
 
-static void handle(link_t *l, const wire_msg_t *m)
+/* an EMITTER: the robot lights the groups and samples every IR sensor at
+ * once (in->ir_sample); the IR frame goes out this step */
+static void answer_emitter(link_t *l, const link_io_t *in, uint8_t groups)
+{
+    uint16_t raw[WIRE_IR_MAX] = { 0 };
+    wire_msg_t m;
+    memset(&m, 0, sizeof m);
+    l->st.emitters++;
+    if (in->ir_sample) in->ir_sample(in->ctx, groups, raw);
+    m.type = WIRE_IR;
+    m.u.ir.seq = ++l->ir_seq;
+    m.u.ir.emitters = groups;
+    m.u.ir.count = in->ir_count <= WIRE_IR_MAX ? in->ir_count : WIRE_IR_MAX;
+    for (uint8_t i = 0; i < m.u.ir.count; i++) wire_ir_set(&m, i, raw[i]);
+    uint64_t dropped = l->st.tx_dropped;
+    enqueue(l, &m);
+    if (l->st.tx_dropped != dropped) return;
+    l->st.ir_frames++;
+    l->flush = 1;
+    if (l->st.ir_frames > LINK_IR_REPORT) return;
+    char line[120];
+    int n = snprintf(line, sizeof line, "IR seq %u, emitters 0x%x:", m.u.ir.seq, m.u.ir.emitters);
+    for (uint8_t i = 0; i < m.u.ir.count; i++) n += snprintf(line + n, sizeof line - (size_t)n, " %u", wire_ir_get(&m, i));
+    if (!m.u.ir.count) snprintf(line + n, sizeof line - (size_t)n, " (no IR sensors)");
+    say(l, line);
+}
+
+static void handle(link_t *l, const link_io_t *in, const wire_msg_t *m)
 {
     char line[160];
     l->st.rx_msgs++;
@@ -172,9 +202,9 @@ static void handle(link_t *l, const wire_msg_t *m)
         break;
     case WIRE_HELLO:
         if (m->u.hello.role != WIRE_ROLE_MCU) break;
-        if (m->u.hello.version != WIRE_VERSION) {
-            snprintf(line, sizeof line, "MCU speaks protocol version %u, we speak %u: motors stay off",
-                     m->u.hello.version, WIRE_VERSION);
+        if (m->u.hello.version < WIRE_VERSION_MIN || m->u.hello.version > WIRE_VERSION) {
+            snprintf(line, sizeof line, "MCU speaks protocol version %u, we speak %u to %u: motors stay off",
+                     m->u.hello.version, WIRE_VERSION_MIN, WIRE_VERSION);
             say(l, line);
             l->hello_ok = 0;
             break;
@@ -189,11 +219,14 @@ static void handle(link_t *l, const wire_msg_t *m)
             l->hello_reply = 1; /* an MCU that missed our first HELLO (still booting) gets one now */
         }
         l->hello_ok = 1;
+        l->mcu_version = m->u.hello.version;
+        l->robot_due = m->u.hello.version >= 2; /* after every HELLO: an MCU that was reset asks again */
         /* no point sending encoders faster than the MCU's control tick */
         l->enc_every = m->u.hello.tick_hz ? (uint32_t)lround(1.0 / (l->step_s * m->u.hello.tick_hz)) : 1;
         if (l->enc_every < 1) l->enc_every = 1;
         break;
     case WIRE_SENSORS: l->sensors_on = m->u.flag.on; break;
+    case WIRE_EMITTER: answer_emitter(l, in, m->u.emitter.groups); break;
     case WIRE_RUN:
         l->running = m->u.flag.on;
         if (m->u.flag.on) break;
@@ -242,6 +275,76 @@ static void check_connection(link_t *l)
 
 static int io_failed(int e) { return e != EAGAIN && e != EWOULDBLOCK && e != EINTR; }
 
+/* sim -> MCU: at most the credit's whole bytes; -1 if the device failed (disconnected) */
+static int move_tx(link_t *l)
+{
+    while (l->q_len > 0 && l->credit_tx >= BYTE_COST) {
+        size_t n = l->q_cap - l->q_head;
+        if (n > l->q_len) n = l->q_len;
+        uint64_t allow = l->credit_tx / BYTE_COST;
+        if (n > allow) n = (size_t)allow;
+        ssize_t k = write(l->fd, l->q + l->q_head, n);
+        if (k < 0) {
+            if (io_failed(errno)) {
+                on_disconnect(l);
+                return -1;
+            }
+            l->st.tx_blocked_bytes += n;
+            break;
+        }
+        l->q_head = (l->q_head + (size_t)k) % l->q_cap;
+        l->q_len -= (size_t)k;
+        l->credit_tx -= (uint64_t)k * BYTE_COST;
+        l->st.tx_bytes += (uint64_t)k;
+        if ((size_t)k < n) {
+            l->st.tx_blocked_bytes += n - (size_t)k;
+            break;
+        }
+    }
+    return 0;
+}
+
+/* a version-2 MCU's extra sensor messages this step: ROBOT after its
+ * HELLO, GYRO with ENCODER (enc_now), BATTERY every LINK_BATTERY_S */
+static void queue_v2(link_t *l, const link_io_t *in, int enc_now)
+{
+    wire_msg_t m;
+    if (l->mcu_version < 2) return;
+    uint8_t ir_count = in->ir_count <= WIRE_IR_MAX ? in->ir_count : WIRE_IR_MAX;
+    if (l->robot_due) {
+        l->robot_due = 0;
+        memset(&m, 0, sizeof m);
+        m.type = WIRE_ROBOT;
+        m.u.robot.ir_count = ir_count;
+        m.u.robot.flags = (uint8_t)((in->has_gyro ? WIRE_ROBOT_GYRO : 0) | (in->battery_mv ? WIRE_ROBOT_BATTERY : 0));
+        enqueue(l, &m);
+        l->st.robot_frames++;
+        if (!l->robot_reported) {
+            char line[120];
+            snprintf(line, sizeof line, "robot for the MCU: %u IR sensors, gyro %s, battery %u mV", ir_count,
+                     in->has_gyro ? "yes" : "no", in->battery_mv);
+            say(l, line);
+            l->robot_reported = 1;
+        }
+    }
+    if (enc_now && in->has_gyro) {
+        memset(&m, 0, sizeof m);
+        m.type = WIRE_GYRO;
+        m.u.gyro.t_us = in->t_us;
+        m.u.gyro.mdps = in->gyro_mdps;
+        enqueue(l, &m);
+        l->st.gyro_frames++;
+    }
+    if (in->battery_mv && l->step % steps_of(l, LINK_BATTERY_S) == 0) {
+        memset(&m, 0, sizeof m);
+        m.type = WIRE_BATTERY;
+        m.u.battery.t_us = in->t_us;
+        m.u.battery.mv = in->battery_mv;
+        enqueue(l, &m);
+        l->st.battery_frames++;
+    }
+}
+
 int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2])
 {
     l->step++;
@@ -270,8 +373,9 @@ int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2])
         enqueue(l, &m);
         l->next_hello_step = l->step + steps_of(l, LINK_RETRY_S);
     }
+    int enc_now = l->enc_every <= 1 || l->step % l->enc_every == 0;
     if (l->o.protocol == LINK_COMPAT && !l->sensors_on) goto move; /* the paper's sim sends nothing */
-    if (l->enc_every <= 1 || l->step % l->enc_every == 0) {
+    if (enc_now) {
         memset(&m, 0, sizeof m);
         m.type = WIRE_ENCODER;
         m.u.encoder.t_us = in->t_us;
@@ -294,31 +398,10 @@ int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2])
         }
         enqueue(l, &m);
     }
+    queue_v2(l, in, enc_now);
 
-move: /* sim -> MCU: at most the credit's whole bytes */
-    while (l->q_len > 0 && l->credit_tx >= BYTE_COST) {
-        size_t n = l->q_cap - l->q_head;
-        if (n > l->q_len) n = l->q_len;
-        uint64_t allow = l->credit_tx / BYTE_COST;
-        if (n > allow) n = (size_t)allow;
-        ssize_t k = write(l->fd, l->q + l->q_head, n);
-        if (k < 0) {
-            if (io_failed(errno)) {
-                on_disconnect(l);
-                return l->sensors_on;
-            }
-            l->st.tx_blocked_bytes += n;
-            break;
-        }
-        l->q_head = (l->q_head + (size_t)k) % l->q_cap;
-        l->q_len -= (size_t)k;
-        l->credit_tx -= (uint64_t)k * BYTE_COST;
-        l->st.tx_bytes += (uint64_t)k;
-        if ((size_t)k < n) {
-            l->st.tx_blocked_bytes += n - (size_t)k;
-            break;
-        }
-    }
+move:
+    if (move_tx(l) != 0) return l->sensors_on;
 
     /* MCU -> sim: at most the credit's whole bytes; the rest waits in the OS */
     uint8_t buf[2048];
@@ -333,7 +416,7 @@ move: /* sim -> MCU: at most the credit's whole bytes */
         for (ssize_t i = 0; i < k; i++) {
             int got = l->o.protocol == LINK_COMPAT ? wire_compat_decode_byte(&l->crx, buf[i], &m)
                                                    : wire_decode_byte(&l->dec, buf[i], &m);
-            if (got) handle(l, &m);
+            if (got) handle(l, in, &m);
         }
         if (k > 0) {
             l->credit_rx -= (uint64_t)k * BYTE_COST;
@@ -341,6 +424,10 @@ move: /* sim -> MCU: at most the credit's whole bytes */
         }
     }
 
+    if (l->flush) { /* IR answers go out this step, with the credit left */
+        l->flush = 0;
+        if (move_tx(l) != 0) return l->sensors_on;
+    }
     if (l->o.silence_s > 0 && !l->silent && l->step - l->last_rx_step > steps_of(l, l->o.silence_s)) {
         l->silent = 1;
         l->st.silences++;
@@ -386,5 +473,11 @@ json_t *link_json(const link_t *l)
     json_object_set_new(j, "handshake", json_boolean(l->hello_ok));
     json_object_set_new(j, "mcu_stops", json_integer(l->st.stops + l->st.halts));
     json_object_set_new(j, "sensors_on", json_boolean(l->sensors_on));
+    json_object_set_new(j, "mcu_version", json_integer(l->mcu_version));
+    json_object_set_new(j, "v2", json_pack("{s:I, s:I, s:I, s:I, s:I}", "emitter_msgs", (json_int_t)l->st.emitters,
+                                           "ir_frames", (json_int_t)l->st.ir_frames, "gyro_frames",
+                                           (json_int_t)l->st.gyro_frames, "battery_frames",
+                                           (json_int_t)l->st.battery_frames, "robot_frames",
+                                           (json_int_t)l->st.robot_frames));
     return j;
 }

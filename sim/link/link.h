@@ -3,7 +3,9 @@
  * After each physics step link_step_io (the contest calls it through
  * sim/contest/run_link.c) sends the robot's sensor readings to
  * the microcontroller (ENCODER every step, DISTANCE when a ToF sensor took a
- * new reading) and applies the motor commands it received. Bytes cross at
+ * new reading; to a version-2 MCU also ROBOT after the handshake, GYRO with
+ * ENCODER, BATTERY every 100 ms, and an IR frame in answer to each EMITTER)
+ * and applies the motor commands it received. Bytes cross at
  * the baud rate, 8N1 = 10 bits per byte, never faster; queue, drop,
  * silence and reconnect policy: docs/PROTOCOL.md, "Link timing". */
 #ifndef LINK_H
@@ -21,6 +23,8 @@ enum { LINK_FRAMED = 0, LINK_COMPAT = 1 };
 
 #define LINK_Q_MAX 4096u          /* sim -> MCU queue limit, bytes */
 #define LINK_RETRY_S 0.5          /* reopen / HELLO interval, s of sim time */
+#define LINK_BATTERY_S 0.1        /* BATTERY interval, s of sim time */
+#define LINK_IR_REPORT 32         /* IR frames reported one line each (then only counted) */
 #define LINK_SILENCE_S 0.1        /* framed's default silence timeout, s (our library sends MOTOR every tick);
                                      compat has none by default: the paper's Unity simulator applies a motor
                                      command until the next one and has no watchdog (issue 15) */
@@ -45,6 +49,8 @@ typedef struct {
     uint32_t silences, disconnects, connects, logs;
     uint32_t stops;                      /* framed RUN stop received (mmsim ends the run) */
     uint32_t halts;                      /* compat ID 7 value 0 (stop): motors held at 0 until start */
+    uint32_t emitters, ir_frames;        /* EMITTER received, IR sent (one per EMITTER) */
+    uint32_t gyro_frames, battery_frames, robot_frames; /* sent */
 } link_stats_t;
 
 /* What the link reads from and writes to each step (sim-independent, so the
@@ -57,6 +63,16 @@ typedef struct {
     double tof_m[3];            /* the same reading unrounded, m (compat scales it: 18 um a count
                                    at 1.2 m); 0 = use tof_mm */
     uint8_t tof_timeout[3];
+    /* version 2: sent only to an MCU whose HELLO says 2 or more */
+    uint8_t ir_count;           /* IR sensors, 0..WIRE_IR_MAX (ROBOT, IR) */
+    uint8_t has_gyro;           /* 1: GYRO with every ENCODER */
+    int32_t gyro_mdps;          /* z rate, mdps, CCW positive */
+    uint16_t battery_mv;        /* terminal voltage; 0 = no battery monitor (no BATTERY) */
+    /* Called during link_step_io for each EMITTER the MCU sent: light the
+     * groups (bit g = group g), then sample IR sensors 0..ir_count-1 into
+     * raw (0..1023). NULL: the IR frame carries zeros. */
+    void (*ir_sample)(void *ctx, uint8_t groups, uint16_t raw[WIRE_IR_MAX]);
+    void *ctx;
 } link_io_t;
 
 typedef struct link_s {
@@ -81,6 +97,11 @@ typedef struct link_s {
                                  reconnects; at open on in framed, off in compat */
     int hello_ok;             /* framed: MCU HELLO with our version seen */
     int hello_reply;          /* framed: send our HELLO once more (the MCU's first arrived) */
+    uint8_t mcu_version;      /* framed: the version in the MCU's latest HELLO (0 = none yet) */
+    int robot_due;            /* send ROBOT (a version-2 MCU's HELLO arrived) */
+    int robot_reported;       /* ROBOT described in the report (once per connection) */
+    uint8_t ir_seq;           /* IR frames sent on this connection, mod 256 */
+    int flush;                /* an IR frame was queued while reading: send it this step */
     int silent;
     uint32_t enc_every;       /* framed: ENCODER every this many steps (the MCU's tick, from its HELLO) */
     uint64_t step, last_rx_step, next_hello_step, next_retry_step;
