@@ -32,7 +32,7 @@ void MMLink::sendHello()
     wire_msg_t m;
     memset(&m, 0, sizeof m);
     m.type = WIRE_HELLO;
-    m.u.hello.version = WIRE_VERSION;
+    m.u.hello.version = hello_seen == 1 ? 1 : WIRE_VERSION; /* a version-1 sim takes only 1 */
     m.u.hello.role = WIRE_ROLE_MCU;
     m.u.hello.tof_range_mm = range_mm;
     m.u.hello.counts_per_rev_x100 = 35832u; /* 12 PPR x 29.86 gear, the default robot */
@@ -96,10 +96,18 @@ void MMLink::poll()
             break;
         case WIRE_HELLO:
             if (m.u.hello.role == WIRE_ROLE_SIM) {
-                if (m.u.hello.version != WIRE_VERSION || m.u.hello.tof_range_mm != range_mm) logMismatch(m);
-                hello_seen = 1;
+                if (m.u.hello.version < WIRE_VERSION_MIN || m.u.hello.version > WIRE_VERSION ||
+                    m.u.hello.tof_range_mm != range_mm)
+                    logMismatch(m);
+                hello_seen = m.u.hello.version ? m.u.hello.version : 0xFF;
                 sendHello();
             }
+            break;
+        case WIRE_IR:
+        case WIRE_GYRO:
+        case WIRE_BATTERY:
+        case WIRE_ROBOT:
+            if (hal_wire_extra) hal_wire_extra(&m); /* linked in only if the firmware reads them */
             break;
         default: break; /* commands are for the sim */
         }

@@ -34,7 +34,8 @@ public:
     volatile uint8_t tof_timeout[MM_TOF_COUNT];
     volatile uint8_t tof_seq[MM_TOF_COUNT];     /* +1 per reading received (hal_distance_t.seq) */
     volatile uint32_t sim_us;          /* sim time of the latest reading (framed), us */
-    volatile uint8_t hello_seen;       /* framed: the sim's HELLO arrived */
+    volatile uint8_t hello_seen;       /* framed: the protocol version of the sim's HELLO (0 = none yet);
+                                          a version-1 sim is answered in version 1 */
     const wire_stats_t &stats() const;
 
 private:
@@ -50,5 +51,15 @@ private:
 };
 
 extern MMLink mmLink;
+
+/* The version-2 sensor messages (IR, GYRO, BATTERY, ROBOT) go here from
+ * poll(); m == NULL: the runner's tick is done (send a queued EMITTER).
+ * Defined in hal_arduino_sensors.cpp, which the linker takes from the
+ * library only when the firmware calls hal_emitter, hal_ir_*, hal_gyro_*
+ * or hal_battery_mv. The callers hold a weak reference (the linker pulls
+ * no archive member for one; it is NULL without that file) and call it
+ * only if it is there: a firmware without those calls keeps every byte
+ * of SRAM (the Uno Mouse: 1,536 B, test/cli_pil.sh). */
+void hal_wire_extra(const wire_msg_t *m) __attribute__((weak));
 
 #endif
