@@ -116,7 +116,8 @@ $(B)/test/xinput: test/xinput.c | deps
 test: deps
 	@$(MAKE) --no-print-directory test-run
 test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
-	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf $(B)/arduino/uno/OneCommand.elf
+	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf $(B)/arduino/uno/OneCommand.elf \
+	$(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf
 	@MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
 # PlatformIO from PyPI in a venv, only to check that platformio.ini parses
@@ -206,6 +207,13 @@ $(B)/arduino/%/Mouse-5x5.elf: hal/arduino/examples/Mouse/Mouse.ino $(B)/arduino/
 # sketch of the paper's library that sets its motors once (issue 15).
 $(B)/arduino/uno/OneCommand.elf: test/arduino/OneCommand/OneCommand.ino $(B)/arduino/uno/libmicromouse.a $(B)/arduino/uno/core.a $(ARD_HDRS)
 	avr-g++ $(ARD_uno) $(ARD_COMMON) $(ARD_CXX) -Wall -x c++ -include Arduino.h -c $< -o $@.o
+	avr-gcc $(ARD_uno) -Os -Wl,--gc-sections $@.o $(B)/arduino/uno/libmicromouse.a $(B)/arduino/uno/core.a -lm -o $@
+# A test sketch (test/cli_pil.sh): the runner with a stand-in firmware that
+# calls hal_emitter / hal_ir_raw / hal_gyro_* / hal_battery_mv (protocol
+# version 2), framed and compat.
+IRPROBE_SRC := test/arduino/IrProbe/IrProbe.ino $(B)/arduino/uno/libmicromouse.a $(B)/arduino/uno/core.a $(ARD_HDRS)
+$(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf: $(B)/arduino/uno/IrProbe%.elf: $(IRPROBE_SRC)
+	avr-g++ $(ARD_uno) $(ARD_COMMON) $(ARD_CXX) $(if $*,-DIRPROBE_COMPAT) -Wall -x c++ -include Arduino.h -c $< -o $@.o
 	avr-gcc $(ARD_uno) -Os -Wl,--gc-sections $@.o $(B)/arduino/uno/libmicromouse.a $(B)/arduino/uno/core.a -lm -o $@
 arduino: $(ARD_ELFS)
 	@avr-size $(ARD_ELFS)

@@ -60,13 +60,14 @@ static uint32_t get32(const uint8_t *p)
 static int motor_ok(int16_t v) { return v >= -WIRE_MOTOR_MAX && v <= WIRE_MOTOR_MAX; }
 static int groups_ok(uint8_t g) { return g < (1u << WIRE_EMITTER_GROUPS); }
 
-uint16_t wire_ir_get(const wire_msg_t *m, uint8_t i)
+uint16_t wire_ir_sample(const uint8_t packed[WIRE_IR_PACKED], uint8_t i)
 {
     if (i >= WIRE_IR_MAX) return 0;
     uint8_t bit = (uint8_t)(i * 10u);
-    const uint8_t *p = m->u.ir.packed + (bit >> 3);
-    return (uint16_t)((get16(p) >> (bit & 7u)) & 0x3FFu);
+    return (uint16_t)((get16(packed + (bit >> 3)) >> (bit & 7u)) & 0x3FFu); /* bytes 0..9 */
 }
+
+uint16_t wire_ir_get(const wire_msg_t *m, uint8_t i) { return wire_ir_sample(m->u.ir.packed, i); }
 
 void wire_ir_set(wire_msg_t *m, uint8_t i, uint16_t v)
 {

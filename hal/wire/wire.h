@@ -151,7 +151,9 @@ uint32_t wire_stats_errors(const wire_stats_t *s);
 /* CRC-16/CCITT-FALSE (poly 0x1021, init 0xFFFF); "123456789" -> 0x29B1. */
 uint16_t wire_crc16(const uint8_t *p, size_t n);
 
-/* IR sample i (0..WIRE_IR_MAX-1) of an IR message; set clamps v to 1023. */
+/* IR sample i (0..WIRE_IR_MAX-1) of an IR message (0 past the end); set
+ * clamps v to 1023. wire_ir_sample reads it from a copy of the packed bytes. */
+uint16_t wire_ir_sample(const uint8_t packed[WIRE_IR_PACKED], uint8_t i);
 uint16_t wire_ir_get(const wire_msg_t *m, uint8_t i);
 void wire_ir_set(wire_msg_t *m, uint8_t i, uint16_t v);
 

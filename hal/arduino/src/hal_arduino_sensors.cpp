@@ -81,15 +81,12 @@ void hal_emitter(uint8_t group, uint8_t on)
 
 uint16_t hal_ir_raw(uint8_t sensor)
 {
-    uint16_t w;
-    if (sensor >= WIRE_IR_MAX) return 0;
-    uint8_t bit = (uint8_t)(sensor * 10u), at = bit >> 3;
+    uint16_t v = 0;
     ATOMIC_BLOCK(ATOMIC_RESTORESTATE)
     {
-        if (sensor >= ir_n) return 0;
-        w = (uint16_t)(ir_packed[at] | ((uint16_t)ir_packed[at + 1] << 8)); /* at + 1 <= 9 */
+        if (sensor < ir_n) v = wire_ir_sample(ir_packed, sensor); /* the codec's, checked by the vectors on AVR */
     }
-    return (uint16_t)((w >> (bit & 7u)) & 0x3FFu);
+    return v;
 }
 
 uint8_t hal_ir_seq(void) { return ir_seq; }
