@@ -17,6 +17,12 @@
 #    the paper's 1.0 m compat scale, matches the true distance; with
 #    --silence-ms 100 the watchdog stops it; the run's --report draws no
 #    final path (the MCU has no map we can see);
+#  - protocol version 2 (IrProbe, Uno, the runner with a stand-in firmware):
+#    every IR sample hal_ir_raw gave is the one the simulator reported
+#    sending for that seq and emitter groups, hal_ir_count / hal_gyro_* /
+#    hal_battery_mv match its ROBOT report; in compat (no version 2) no
+#    sample comes and every value reads 0; the Uno Mouse, which calls none
+#    of them, links none of their storage;
 #  - bad images and flags: exit 3 / 2.
 set -u
 S=${MMSIM:-build/mmsim}
@@ -28,7 +34,9 @@ MOUSE=$B/arduino/mega2560/Mouse-5x5.elf
 WALL=$B/arduino/uno/DriveToWall.elf
 UNO=$B/arduino/uno/Mouse.elf
 ONE=$B/arduino/uno/OneCommand.elf
-for f in "$MOUSE" "$WALL" "$UNO" "$ONE"; do
+PROBE=$B/arduino/uno/IrProbe.elf
+PROBEC=$B/arduino/uno/IrProbe-compat.elf
+for f in "$MOUSE" "$WALL" "$UNO" "$ONE" "$PROBE" "$PROBEC"; do
   [ -f "$f" ] || { echo "SKIP cli_pil: $f not built (make arduino)"; exit 77; }
 done
 
@@ -64,7 +72,7 @@ grep -q "hello differs\|MISMATCH" "$T/err" && bad "a hello mismatch reported: $(
 # HELLO with its own, so an MCU that missed the first, still booting, learns it)
 "$S" --print-config | sed 's/^tof_range_m *=.*/tof_range_m = 1.0/' >"$T/r1.ini"
 want_rc 1 "AVR mouse, sim ToF range 1.0 m" "$S" --maze $M --config "$T/r1.ini" --avr "$MOUSE" --mcu atmega2560 --time-limit 1 --verbose
-[ "$(grep -c '^mcu: sim hello differs: protocol 1, ToF 1000 mm (MCU: 1, 1200 mm)$' "$T/err")" = 1 ] \
+[ "$(grep -c '^mcu: sim hello differs: protocol 2, ToF 1000 mm (MCU: 2, 1200 mm)$' "$T/err")" = 1 ] \
   && ok "MCU logs the sim's ToF range mismatch once" || bad "MCU hello check: $(grep -v 'sensed cell' "$T/err" | head -5)"
 
 # the Uno: avr-size's data + bss within the issue's 1,536 B; in simavr (SRAM
@@ -74,6 +82,10 @@ want_rc 1 "AVR mouse, sim ToF range 1.0 m" "$S" --maze $M --config "$T/r1.ini" -
 # (754 mm/s no-load) runs it at 600 mm/s: 7.4 s (13.5 s first run)
 static=$(avr-size -A "$UNO" | awk '$1 == ".data" || $1 == ".bss" { s += $2 } END { print s }')
 [ -n "$static" ] && [ "$static" -le 1536 ] && ok "Uno static RAM $static B <= 1536" || bad "Uno static RAM: $static B"
+# the version-2 sensor functions' storage (hal_arduino_sensors.cpp) is not
+# linked into a firmware that does not call them: only a weak reference
+got=$(avr-nm "$UNO" | grep -c 'hal_ir_raw\|hal_emitter\|ir_packed\|gyro_mdps\|battery_mv'; avr-nm "$UNO" | grep 'hal_wire_extra' | awk '{print $1}')
+[ "$got" = "$(printf '0\nw')" ] && ok "Uno Mouse links no IR/gyro/battery storage" || bad "Uno Mouse links the sensor file: $got"
 want_rc 0 "Uno mouse, whole 16x16 contest" "$S" --maze mazes/gen-16x16-s1.txt --avr "$UNO" --time-limit 200 --json --verbose
 got=$(python3 -c "
 import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1]); a=d['avr']
@@ -129,6 +141,21 @@ want_rc 1 "OneCommand, --silence-ms 100" "$S" --maze $M --avr "$ONE" --protocol 
 got=$(python3 -c "
 import json,sys; d=json.load(open(sys.argv[1])); print(d['final_pose']['y_m'] < 0.2, d['link']['silences'] >= 1)" "$T/out" 2>&1)
 [ "$got" = "True True" ] && ok "OneCommand with --silence-ms 100: the watchdog stops it" || bad "OneCommand --silence-ms 100: $got"
+
+# protocol version 2 end to end: IrProbe lights six emitter patterns
+# through hal_emitter and logs what hal_ir_raw then gives; the simulator
+# reports each IR frame it sent (--verbose); then RUN stop
+want_rc 1 "IrProbe, framed" "$S" --maze $M --avr "$PROBE" --time-limit 5 --json --verbose
+got=$(python3 test/pil_irprobe.py "$T/err" "$T/out" 2>&1)
+[ "$got" = "6 6 True mcu_stopped 2 6 6 0" ] && ok "IrProbe: 6 samples, each as the simulator sent it; robot line matches" \
+  || bad "IrProbe: $got $(grep -v 'sensed cell' "$T/err" | head -20)"
+# compat has no version 2: nothing comes, everything reads 0, nothing breaks
+want_rc 1 "IrProbe, compat" "$S" --maze $M --avr "$PROBEC" --protocol compat --time-limit 4 --json --verbose
+got=$(python3 -c "
+import json,re,sys; e=open(sys.argv[1]).read(); d=json.loads(open(sys.argv[2]).read().splitlines()[-1]); l=d['link']
+print(len(re.findall(r'^mcu: IrProbe: no sample, ir 0 raw0 0$', e, re.M)), 'mcu: IrProbe: ir 0, gyro 0 0 mdps, battery 0 mV' in e,
+      sum(l['v2'].values()), sum(v for k,v in l['decoder'].items() if k not in ('bytes','frames_ok')))" "$T/err" "$T/out" 2>&1)
+[ "$got" = "6 True 0 0" ] && ok "IrProbe, compat: no sample, all zero, no errors" || bad "IrProbe compat: $got $(grep '^mcu:' "$T/err")"
 
 # bad images and flags
 want_rc 3 "missing ELF" "$S" --maze $M --avr "$T/none.elf"
