@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # cli_hil.sh - hardware in the loop: the wire codec's shared vectors on an
 # AVR in simavr; mmsim --pty with hil_mcu.py playing the MCU (compat and
-# framed); a device unplugged and plugged back; the simulator stopped and
-# started again while the MCU stays up; flag and device errors.
+# framed; it speaks protocol version 1 and gets no version-2 message); a
+# device unplugged and plugged back; the simulator stopped and started
+# again while the MCU stays up; flag and device errors.
 set -u
 S=${MMSIM:-build/mmsim}
 B=${BUILD:-build}
@@ -89,6 +90,10 @@ print(len(m), m[-1]['bytes_to_mcu'] == d['tx_bytes'], m[-1]['bytes_from_mcu'] ==
 }
 if command -v python3 >/dev/null; then hil compat; hil framed; else echo "SKIP cli_hil pty: python3 missing"; fi
 grep -q "hello from the MCU: protocol 1, ToF range 1200 mm" "$T/framed.err" && ok "framed handshake reported" || bad "framed handshake: $(cat "$T/framed.err")"
+# hil_mcu.py speaks protocol version 1: accepted, and sent none of version 2's messages (ROBOT, GYRO, BATTERY, IR)
+got=$(python3 -c "
+import json,sys; l=json.load(open(sys.argv[1]))['link']; print(l['mcu_version'], sum(l['v2'].values()))" "$T/framed.json" 2>&1)
+[ "$got" = "1 0" ] && ok "a version-1 MCU: accepted, no version-2 messages" || bad "version-1 MCU: $got"
 
 # compat as the paper's library (issue 15): one motor command, then only
 # sensor reads. By default the command holds (no watchdog) and the robot

@@ -139,7 +139,8 @@ class Mcu:
             if t == 1:
                 self.hellos += 1
                 ver, role, rng = struct.unpack('<BBH', p[:4])
-                assert ver == 1 and role == 0 and rng == RANGE_MM, p
+                # this MCU speaks version 1; a version-2 sim takes it (and sends it nothing newer)
+                assert ver in (1, 2) and role == 0 and rng == RANGE_MM, p
                 self.hello()
             elif t == 3:
                 _, l, r = struct.unpack('<Iii', p); self.enc = [l, r]; self.encs += 1
