@@ -335,7 +335,8 @@ static void queue_v2(link_t *l, const link_io_t *in, int enc_now)
         enqueue(l, &m);
         l->st.gyro_frames++;
     }
-    if (in->battery_mv && l->step % steps_of(l, LINK_BATTERY_S) == 0) {
+    uint64_t every = steps_of(l, LINK_BATTERY_S);
+    if (in->battery_mv && l->step % (every ? every : 1) == 0) {
         memset(&m, 0, sizeof m);
         m.type = WIRE_BATTERY;
         m.u.battery.t_us = in->t_us;

@@ -50,7 +50,7 @@ typedef struct {
     uint32_t stops;                      /* framed RUN stop received (mmsim ends the run) */
     uint32_t halts;                      /* compat ID 7 value 0 (stop): motors held at 0 until start */
     uint32_t emitters, ir_frames;        /* EMITTER received, IR sent (one per EMITTER) */
-    uint32_t gyro_frames, battery_frames, robot_frames; /* sent */
+    uint32_t gyro_frames, battery_frames, robot_frames; /* queued (a full queue drops them: tx_dropped) */
 } link_stats_t;
 
 /* What the link reads from and writes to each step (sim-independent, so the
