@@ -121,7 +121,7 @@ static operating_t dyno(const simcfg_t *c, double w_rad_s, double t_s)
  * simulator's own response). */
 static operating_t at_current(const simcfg_t *c, double current_a)
 {
-    double lo = 0, hi = c->stall_torque_nm;
+    double lo = 0, hi = c->drive[0].stall_torque_nm;
     operating_t op = { 0, 0, 0 };
     for (int i = 0; i < 30; i++) {
         op = loaded(c, 0.5 * (lo + hi), 1.0);
@@ -136,16 +136,16 @@ static operating_t at_current(const simcfg_t *c, double current_a)
  * at t_s (rad/s), and the current (A). */
 static double reference_response(const simcfg_t *c, double t_s, double *current_a)
 {
-    double r, ke, eta, n = c->gear_ratio, v = c->battery_v, i0 = c->no_load_a;
-    motor_constants(c, &r, &ke, &eta);
+    double r, ke, eta, n = c->drive[0].gear_ratio, v = battery_spec_full_v(&c->battery), i0 = c->drive[0].no_load_a;
+    motor_constants(&c->drive[0], &r, &ke, &eta);
     double rw = c->wheel_d_m / 2;
-    double j = 0.5 * c->wheel_mass_kg * rw * rw + c->rotor_inertia_kgm2 * n * n; /* the wheel's axle inertia */
+    double j = 0.5 * c->wheel_mass_kg * rw * rw + c->drive[0].rotor_inertia_kgm2 * n * n; /* the wheel's axle inertia */
     double i = 0, w = 0, h = 1e-7;
     long k = lround(t_s / h);
     for (long s = 0; s < k; s++) {
         double di[4], dw[4], ii = i, ww = w;
         for (int q = 0; q < 4; q++) {
-            di[q] = (v - r * ii - ke * n * ww) / c->l_h;
+            di[q] = (v - r * ii - ke * n * ww) / c->drive[0].l_h;
             double drive = n * eta * ke * (ii - i0);
             dw[q] = (ww > 0 || drive > 0) ? drive / j : 0; /* stiction holds it until the drive beats the friction */
             double f = q < 2 ? 0.5 * h : h;
@@ -234,26 +234,44 @@ typedef struct {
     long n, beyond_valid, timeouts;
 } tof_stats_t;
 
+/* The robot's forward-looking ToF sensor (yaw 0): its index among its
+ * ToF sensors, or -1. */
+static int front_tof(const simcfg_t *c)
+{
+    for (unsigned i = 0; i < WORLD_TOF_COUNT; i++) {
+        int k = robot_part_of_kind(c, "tof", i);
+        if (k >= 0 && c->part[k].yaw_deg == 0) return (int)i;
+    }
+    return -1;
+}
+
+static const tof_spec_t *tof_spec(const simcfg_t *c, int i)
+{
+    return (const tof_spec_t *)c->part[robot_part_of_kind(c, "tof", (unsigned)i)].spec;
+}
+
 static tof_stats_t tof_facing(const simcfg_t *c, double true_m, double seconds)
 {
     tof_stats_t st = { 0, 0, 0, 0, 0 };
+    int f = front_tof(c);
+    double sensor_y = c->part[robot_part_of_kind(c, "tof", (unsigned)f)].y_m;
     corridor(&bench.maze, 16);
     sim_t *s = open_bench(c, 0, 0);
     if (!s) return st;
     double face = 16 * c->cell_m - c->wall_thick_m / 2;
-    world_place(s->world, face - c->tof_front_y_m - true_m, 0.5 * c->cell_m, 0.0, NULL);
+    world_place(s->world, face - sensor_y - true_m, 0.5 * c->cell_m, 0.0, NULL);
     double sum = 0, sum2 = 0;
-    uint32_t seen = s->tof_count[WORLD_TOF_FRONT];
+    uint32_t seen = s->tof_count[f];
     for (long i = 0; i < steps(c, seconds); i++) {
         sim_step(s);
-        if (s->tof_count[WORLD_TOF_FRONT] == seen) continue;
-        seen = s->tof_count[WORLD_TOF_FRONT];
-        tof_reading_t r = s->tof_last[WORLD_TOF_FRONT];
+        if (s->tof_count[f] == seen) continue;
+        seen = s->tof_count[f];
+        tof_reading_t r = s->tof_last[f];
         if (r.timeout) {
             st.timeouts++;
             continue;
         }
-        if (r.dist_m >= c->tof_range_m) st.beyond_valid++;
+        if (r.dist_m >= tof_spec(c, f)->range_m) st.beyond_valid++;
         sum += r.dist_m;
         sum2 += r.dist_m * r.dist_m;
         st.n++;
@@ -305,12 +323,12 @@ static void add(validate_check_t *v, int *n, const char *name, double expected, 
 static int motor_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
     operating_t nl = loaded(c, 0, 3.0), st = stalled(c, 1.0), first = stalled(c, c->step_s);
-    add(v, &n, "no_load_speed", c->no_load_rpm, nl.rpm, "rpm", 2, VALIDATE_NEAR, DATASHEET ": no load");
-    add(v, &n, "no_load_current", c->no_load_a, nl.current_a, "A", 2, VALIDATE_NEAR, DATASHEET ": no load");
-    add(v, &n, "stall_torque", c->stall_torque_nm, st.torque_nm, "N*m", 2, VALIDATE_NEAR, DATASHEET ": stall 2.9 kg*mm");
-    add(v, &n, "stall_current", c->stall_a, st.current_a, "A", 2, VALIDATE_NEAR, DATASHEET ": stall");
-    double r = c->rated_v / c->stall_a;
-    add(v, &n, "first_step_current", c->battery_v / r * (1 - exp(-c->step_s * r / c->l_h)), first.current_a, "A", 2,
+    add(v, &n, "no_load_speed", c->drive[0].no_load_rpm, nl.rpm, "rpm", 2, VALIDATE_NEAR, DATASHEET ": no load");
+    add(v, &n, "no_load_current", c->drive[0].no_load_a, nl.current_a, "A", 2, VALIDATE_NEAR, DATASHEET ": no load");
+    add(v, &n, "stall_torque", c->drive[0].stall_torque_nm, st.torque_nm, "N*m", 2, VALIDATE_NEAR, DATASHEET ": stall 2.9 kg*mm");
+    add(v, &n, "stall_current", c->drive[0].stall_a, st.current_a, "A", 2, VALIDATE_NEAR, DATASHEET ": stall");
+    double r = c->drive[0].rated_v / c->drive[0].stall_a;
+    add(v, &n, "first_step_current", battery_spec_full_v(&c->battery) / r * (1 - exp(-c->step_s * r / c->drive[0].l_h)), first.current_a, "A", 2,
         VALIDATE_NEAR, "analytic: V/R*(1 - exp(-t*R/L)) one step after stall");
     /* the datasheet's maximum-efficiency point: 320 rpm, 0.66 kg*mm, 0.11 A */
     operating_t me = at_current(c, 0.11);
@@ -334,7 +352,7 @@ static int response_checks(const simcfg_t *c, validate_check_t *v, int n)
         add(v, &n, at[k].name, w_ref, lifted_speed_at(c, at[k].t_s), "rad/s", 2, VALIDATE_NEAR,
             "analytic: the motor's L-R circuit and the wheel's inertia (rotor reflected), RK4 at 0.1 us");
     }
-    add(v, &n, "encoder_counts_per_rev", c->encoder_ppr * c->gear_ratio, counts_per_rev(c), "counts", 0.5,
+    add(v, &n, "encoder_counts_per_rev", c->drive[0].encoder_ppr * c->drive[0].gear_ratio, counts_per_rev(c), "counts", 0.5,
         VALIDATE_NEAR, "encoder PPR x gear ratio (paper: 12 x 29.86 = 358.32)");
     return n;
 }
@@ -345,13 +363,15 @@ static int floor_checks(const simcfg_t *c, validate_check_t *v, int n)
         "a robot at rest stays at rest: 10 minutes idle in the start cell");
     add(v, &n, "straight_veer_mm_4m", 2.0, veer_mm_4m(c), "mm", 0, VALIDATE_MAX,
         "a symmetric robot drives straight: full command, 4 m, sideways drift");
-    tof_stats_t near = tof_facing(c, 0.5, 60.0), edge = tof_facing(c, c->tof_range_m * 0.98, 60.0);
-    add(v, &n, "tof_noise_cv", c->tof_cv, near.mean > 0 ? near.sd / near.mean : 0, "1", 5, VALIDATE_NEAR,
+    add(v, &n, "wall_no_tunnelling", 1.0, tunnelling_mm(c), "mm", 0, VALIDATE_MAX,
+        "full command into a wall: the body stops at its face (contact softness allows < 1 mm)");
+    if (front_tof(c) < 0) return n;
+    const tof_spec_t *ts = tof_spec(c, front_tof(c));
+    tof_stats_t near = tof_facing(c, 0.5, 60.0), edge = tof_facing(c, ts->range_m * 0.98, 60.0);
+    add(v, &n, "tof_noise_cv", ts->cv, near.mean > 0 ? near.sd / near.mean : 0, "1", 5, VALIDATE_NEAR,
         "paper: sigma = cv * distance (a wall 0.5 m ahead, 2000 readings)");
     add(v, &n, "tof_timeout_beyond_range", 0, (double)edge.beyond_valid, "readings", 0, VALIDATE_MAX,
         "VL53L0X and the paper's Unity simulator: at or beyond the range is a timeout (a wall at 0.98 x range, noise)");
-    add(v, &n, "wall_no_tunnelling", 1.0, tunnelling_mm(c), "mm", 0, VALIDATE_MAX,
-        "full command into a wall: the body stops at its face (contact softness allows < 1 mm)");
     return n;
 }
 
