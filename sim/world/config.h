@@ -32,6 +32,17 @@ typedef struct {
     double encoder_channels; /* 1 (pulses) or 2 (quadrature) */
 } drive_spec_t;
 
+/* Figures measured on the real robot that the file describes (a robot
+ * file's optional [measured.NAME]); mmsim --validate reproduces each one
+ * given (-1 = not given). */
+typedef struct {
+    double fwd_km_mm_s_v;   /* forward speed per volt: slope of steady speed against voltage, mm/s/V */
+    double fwd_tm_s;        /* forward time constant: 63 % of a voltage step's speed change, s */
+    double rot_km_deg_s_v;  /* spin rate per volt (the motors at +V and -V), deg/s/V */
+    double rot_tm_s;        /* rotation time constant, s */
+    double counts_500mm_left, counts_500mm_right; /* encoder counts over 500 mm of straight travel */
+} robot_measured_t;
+
 #define ROBOT_MAX_PARTS 16   /* sensors a robot file may list */
 #define ROBOT_NAME_MAX 16    /* bytes of a component's name, with the NUL */
 #define ROBOT_SPEC_MAX 32    /* doubles of a sensor kind's specification */
@@ -76,6 +87,8 @@ typedef struct {
     robot_part_t part[ROBOT_MAX_PARTS];
     char robot_path[256];   /* the robot file as given (the paper robot's is built in) */
     char chassis_name[ROBOT_NAME_MAX], battery_name[ROBOT_NAME_MAX];
+    robot_measured_t measured;
+    char measured_name[ROBOT_NAME_MAX]; /* "" = no [measured.NAME] */
     /* [link] */
     double compat_range_m;  /* compat protocol's distance scale: 65535 = this distance (--protocol compat) */
     /* [asymmetry]: right minus left, 0 = symmetric */

@@ -69,6 +69,16 @@ static const keytab_t battery_keys[] = {
     BT(capacity_mah, KEYTAB_REQUIRED, 1, 1e6, "mAh", "capacity"),
     BT(divider, 1, 0.01, 1, "1", "what the robot's ADC sees of the battery voltage"),
 };
+#define M(name, unit, src) \
+    { NULL, #name, offsetof(robot_measured_t, name), -1, -1, 1e6, unit, src, NULL, 0, 0, 0 }
+static const keytab_t measured_keys[] = {
+    M(fwd_km_mm_s_v, "mm/s/V", "forward: slope of steady speed against motor voltage"),
+    M(fwd_tm_s, "s", "forward: time constant of a voltage step"),
+    M(rot_km_deg_s_v, "deg/s/V", "rotation: slope of steady spin rate against motor voltage (+V/-V)"),
+    M(rot_tm_s, "s", "rotation: time constant of a voltage step"),
+    M(counts_500mm_left, "counts", "left encoder over 500 mm of straight travel"),
+    M(counts_500mm_right, "counts", "right encoder over 500 mm of straight travel"),
+};
 #define P(name, field, def, min, max, per, unit, src) \
     { NULL, #name, offsetof(robot_part_t, field), def, min, max, unit, src, NULL, 0, per, 0 }
 static const keytab_t pose_keys[] = {
@@ -133,12 +143,15 @@ static int add_section(load_t *l, const char *kind, const char *name, int line)
         int motor = !strcmp(kind, "motor");
         s->keys[1] = motor ? motor_keys : encoder_keys, s->nkeys[1] = motor ? N(motor_keys) : N(encoder_keys);
         s->target[1] = &c->drive[side];
+    } else if (!strcmp(kind, "measured")) {
+        s->keys[1] = measured_keys, s->nkeys[1] = N(measured_keys), s->target[1] = &c->measured;
+        snprintf(c->measured_name, sizeof c->measured_name, "%s", name);
     } else if (!strcmp(kind, "battery")) {
         s->keys[1] = battery_keys, s->nkeys[1] = N(battery_keys), s->target[1] = &c->battery;
         snprintf(c->battery_name, sizeof c->battery_name, "%s", name);
     } else {
         const sensor_kind_t *k = sensor_kind(kind);
-        if (!k) return fail(l, line, "%s.%s: unknown kind (chassis motor encoder battery tof ir gyro)%s", kind, name, "");
+        if (!k) return fail(l, line, "%s.%s: unknown kind (chassis motor encoder battery measured tof ir gyro)%s", kind, name, "");
         if (c->nparts == ROBOT_MAX_PARTS) return fail(l, line, "%s.%s: more than 16 sensors%s", kind, name, "");
         robot_part_t *p = &c->part[c->nparts++];
         memset(p, 0, sizeof *p);
@@ -178,7 +191,8 @@ static int header(load_t *l, const char *h, size_t len, int line)
     snprintf(name, sizeof name, "%s", dot + 1);
     if (!name_ok(name) || strlen(name) >= ROBOT_NAME_MAX)
         return fail(l, line, "[%s]: a name is 1 to 15 letters, digits, _ or -%s%s", sec, "", "");
-    int fixed = !strcmp(kind, "chassis") || !strcmp(kind, "motor") || !strcmp(kind, "encoder") || !strcmp(kind, "battery");
+    int fixed = !strcmp(kind, "chassis") || !strcmp(kind, "motor") || !strcmp(kind, "encoder") || !strcmp(kind, "battery") ||
+                !strcmp(kind, "measured");
     for (int i = 0; i < l->n; i++) {
         int both_sensors = !fixed && l->s[i].sensor;
         if (!strcmp(l->s[i].kind, kind) && !strcmp(l->s[i].name, name))
@@ -340,6 +354,8 @@ static int load_text(simcfg_t *c, const char *text, size_t len, const char *name
     simcfg_t *out = c;
     l->work = *c;
     l->work.nparts = 0;
+    l->work.measured_name[0] = '\0';
+    keytab_defaults(measured_keys, N(measured_keys), &l->work.measured);
     l->c = &l->work;
     l->name = name;
     int rc = config_scan_lines(text, len, name, err, errlen);
@@ -409,6 +425,10 @@ void robot_print(const simcfg_t *c, FILE *out)
     }
     fprintf(out, "\n[battery.%s]\n", c->battery_name);
     print_keys(battery_keys, N(battery_keys), &c->battery, out);
+    if (c->measured_name[0]) {
+        fprintf(out, "\n[measured.%s]\n", c->measured_name);
+        print_keys(measured_keys, N(measured_keys), &c->measured, out);
+    }
     for (int i = 0; i < c->nparts; i++) {
         const robot_part_t *p = &c->part[i];
         fprintf(out, "\n[%s.%s]\n", p->kind->name, p->name);
@@ -419,7 +439,7 @@ void robot_print(const simcfg_t *c, FILE *out)
 
 int robot_section(const char *section)
 {
-    static const char *const old[] = { "robot", "motor", "drivetrain", "encoder", "tof", "chassis", "battery" };
+    static const char *const old[] = { "robot", "motor", "drivetrain", "encoder", "tof", "chassis", "battery", "measured" };
     char kind[32];
     snprintf(kind, sizeof kind, "%s", section);
     char *dot = strchr(kind, '.');

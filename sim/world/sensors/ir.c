@@ -146,6 +146,8 @@ int ir_read(ir_t *ir, world_t *w, const double pos_m[3], double dir_rad, int emi
 static const keytab_t keys[] = {
     I(emitter, emitter, KEYTAB_REQUIRED, 0, 3, 0, 1, "group", "the emitter group that lights it (hal_emitter)"),
     I(adc_channel, adc_channel, -1, -1, 15, 0, 1, "channel", "the ADC channel of its detector (-1: none; board emulation)"),
+    I(measured_centred, measured_centred, -1, -1, 1023, 0, 0, "counts", "the real robot's lit-minus-dark reading centred between side walls, no wall ahead (mmsim --validate)"),
+    I(measured_backed, measured_backed, -1, -1, 1023, 0, 0, "counts", "the real robot's lit-minus-dark reading backed against a rear wall, a wall ahead (mmsim --validate)"),
     I(gain_counts, model.gain_counts, 1000, 0, 1e6, 0, 0, "counts", "lit minus dark for a reflectivity-1 wall straight on at ref_mm; fit it to your robot's readings"),
     I(ref_mm, model.ref_m, 50, 1, 1000, 1000, 0, "mm", "the gain's reference distance"),
     I(half_angle_deg, model.half_angle_deg, 3, 0.5, 60, 0, 0, "deg", "SFH4550 datasheet: +-3 deg half angle"),
