@@ -139,7 +139,7 @@ static int add_section(load_t *l, const char *kind, const char *name, int line)
         s->keys[1] = chassis_keys, s->nkeys[1] = N(chassis_keys), s->target[1] = c;
         snprintf(c->chassis_name, sizeof c->chassis_name, "%s", name);
     } else if (!strcmp(kind, "motor") || !strcmp(kind, "encoder")) {
-        if (side < 0) return fail(l, line, "%s.%s: a %s is named left or right%s", kind, name, kind);
+        if (side < 0) return fail(l, line, "%s.%s: a %s is named left or right", kind, name, kind);
         int motor = !strcmp(kind, "motor");
         s->keys[1] = motor ? motor_keys : encoder_keys, s->nkeys[1] = motor ? N(motor_keys) : N(encoder_keys);
         s->target[1] = &c->drive[side];
