@@ -138,10 +138,13 @@ def main():
         m = 2 * (jt_f - jw - jr) / r_mean ** 2
         jyaw = (jt_r - jw - jr) * 2 * b ** 2 / r_mean ** 2
         res[label[0]] = (eta, m, jyaw)
-        p(f"{label}\n   eta = {eta:.3f}: m = {m*1e3:.1f} g, J = {jyaw*1e6:.1f} g.cm^2*100 (= {jyaw:.3e} kg.m^2),"
+        p(f"{label}\n   eta = {eta:.3f}: m = {m*1e3:.1f} g, J = {jyaw*1e7:.0f} g.cm^2 (= {jyaw:.3e} kg.m^2),"
           f" radius of gyration {math.sqrt(jyaw/m)*1e3:.1f} mm")
     eta, m, jyaw = res["A"]
-    p(f"chosen: A (m = {m*1e3:.0f} g is a PP3-powered UKMARSBOT; B's {res['B'][1]*1e3:.0f} g is too light)")
+    p(f"chosen: A (the sim has no speed-proportional loss to put B's in); a parts estimate (2 N20 ~20 g, PP3"
+      f" NiMH ~45 g, PCB ~19 g, Nano 7 g, sensor board ~8 g, wheels 8 g, driver, encoders, parts ~15 g)"
+      f" is ~125 g: A {m*1e3:.0f} g is {(m/0.125-1)*100:+.0f}%, B {res['B'][1]*1e3:.0f} g is"
+      f" {(res['B'][1]/0.125-1)*100:+.0f}%")
 
     # ---- rotation KM check
     rot_km_pred = FWD_KM / b * 180 / math.pi
