@@ -12,12 +12,17 @@
 #include "world/motor.h"
 #include "world/sensors/tof.h"
 
-static simcfg_t cfg;
+static drive_spec_t cfg; /* the paper robot's left drive */
+static tof_spec_t tcfg;  /* and its first ToF sensor */
+#define BATTERY_V 6.0    /* its battery (robots/paper.ini) */
 
 static int setup(void **state)
 {
     (void)state;
-    config_defaults(&cfg);
+    static simcfg_t full;
+    config_defaults(&full);
+    cfg = full.drive[0];
+    tcfg = *(const tof_spec_t *)full.part[0].spec;
     return 0;
 }
 
@@ -43,26 +48,26 @@ static double rpm(double w) { return w * 60 / (2 * M_PI); }
 static void test_paper_no_load_speed(void **state)
 {
     (void)state;
-    simcfg_t c = cfg;
+    drive_spec_t c = cfg;
     c.motor_model = MOTOR_MODEL_PAPER;
     motor_t m;
-    motor_init(&m, &c, 1.0);
+    motor_init(&m, &c, BATTERY_V, 0, 1.0);
     double k = c.stall_torque_nm / c.stall_a, j = 1e-5, w = 0, dt = 0.001;
     for (int i = 0; i < 5000; i++) w = free_step(&m, MOTOR_CMD_MAX, w, j, dt);
-    assert_near(w, c.battery_v / k, 0.01);
+    assert_near(w, BATTERY_V / k, 0.01);
     assert_near(rpm(w), 725, 0.01); /* 61 % above the datasheet's 450 rpm */
     for (int i = 0; i < 5000; i++) w = free_step(&m, -512, w, j, dt);
-    assert_near(w, -c.battery_v * 512 / 1023 / k, 0.01);
+    assert_near(w, -BATTERY_V * 512 / 1023 / k, 0.01);
 }
 
 /* The paper's eq. 3: a backward difference, V/(R + L/dt) after one step. */
 static void test_paper_first_step(void **state)
 {
     (void)state;
-    simcfg_t c = cfg;
+    drive_spec_t c = cfg;
     c.motor_model = MOTOR_MODEL_PAPER;
     motor_t m;
-    motor_init(&m, &c, 1.0);
+    motor_init(&m, &c, BATTERY_V, 0, 1.0);
     motor_drive(&m, MOTOR_CMD_MAX, 0.0, 0.001);
     assert_true(m.i_a == c.rated_v / (c.rated_v / c.stall_a + c.l_h / 0.001));
 }
@@ -83,7 +88,7 @@ static void test_datasheet_no_load(void **state)
 {
     (void)state;
     motor_t m;
-    motor_init(&m, &cfg, 1.0);
+    motor_init(&m, &cfg, BATTERY_V, 0, 1.0);
     double w = 0, j = 2e-5;
     for (int i = 0; i < 5000; i++) w = free_step(&m, MOTOR_CMD_MAX, w, j, 0.001);
     assert_near(rpm(w), cfg.no_load_rpm, 1e-4);
@@ -96,7 +101,7 @@ static void test_datasheet_stall(void **state)
 {
     (void)state;
     motor_t m;
-    motor_init(&m, &cfg, 1.0);
+    motor_init(&m, &cfg, BATTERY_V, 0, 1.0);
     motor_drive_t d = motor_drive(&m, MOTOR_CMD_MAX, 0.0, 0.001);
     motor_after(&m, &d, 0.0, 0.001);
     double r = cfg.rated_v / cfg.stall_a;
@@ -111,7 +116,7 @@ static void test_datasheet_stall(void **state)
     motor_drive_t d1 = motor_drive(&m, 5000, 0.0, 0.001), d2 = motor_drive(&m, 1023, 0.0, 0.001);
     assert_true(d1.t0_nm == d2.t0_nm);
     /* a drive weaker than the friction leaves a wheel at rest at rest */
-    motor_init(&m, &cfg, 1.0);
+    motor_init(&m, &cfg, BATTERY_V, 0, 1.0);
     d = motor_drive(&m, 20, 0.0, 0.001);
     assert_true(d.t0_nm < d.friction_nm);
 }
@@ -120,22 +125,22 @@ static void test_datasheet_stall(void **state)
 static void test_motor_battery_sag(void **state)
 {
     (void)state;
-    simcfg_t c = cfg;
-    c.battery_r_ohm = 2.0;
+    drive_spec_t c = cfg;
+    double battery_r_ohm = 2.0;
     motor_t m;
-    motor_init(&m, &c, 1.0);
+    motor_init(&m, &c, BATTERY_V, battery_r_ohm, 1.0);
     for (int i = 0; i < 100; i++) {
         motor_drive_t d = motor_drive(&m, MOTOR_CMD_MAX, 0.0, 0.001);
         motor_after(&m, &d, 0.0, 0.001);
     }
-    assert_true(motor_terminal_v(&m) < c.battery_v - 0.5);
-    assert_near(m.i_a, c.battery_v / (c.rated_v / c.stall_a + c.battery_r_ohm), 0.01);
+    assert_true(motor_terminal_v(&m) < BATTERY_V - 0.5);
+    assert_near(m.i_a, BATTERY_V / (c.rated_v / c.stall_a + battery_r_ohm), 0.01);
     /* a battery of 100 ohm: the sag is in the current's own step, no oscillation */
-    c.battery_r_ohm = 100;
-    motor_init(&m, &c, 1.0);
+    battery_r_ohm = 100;
+    motor_init(&m, &c, BATTERY_V, battery_r_ohm, 1.0);
     double w = 0;
     for (int i = 0; i < 3000; i++) w = free_step(&m, MOTOR_CMD_MAX, w, 2e-5, 0.001);
-    assert_true(w > 0 && m.i_a > 0 && m.i_a < c.battery_v / 100);
+    assert_true(w > 0 && m.i_a > 0 && m.i_a < BATTERY_V / 100);
 }
 
 /* The asymmetry's scale multiplies the motor's constant. */
@@ -143,8 +148,8 @@ static void test_motor_scale(void **state)
 {
     (void)state;
     motor_t a, b;
-    motor_init(&a, &cfg, 1.0);
-    motor_init(&b, &cfg, 1.02);
+    motor_init(&a, &cfg, BATTERY_V, 0, 1.0);
+    motor_init(&b, &cfg, BATTERY_V, 0, 1.02);
     assert_near(b.ke_v_s, 1.02 * a.ke_v_s, 1e-12);
 }
 
@@ -178,7 +183,7 @@ static void test_tof_noise_statistics(void **state)
 {
     (void)state;
     tof_t t;
-    tof_init(&t, &cfg, 42, 0);
+    tof_init(&t, &tcfg, 42, 0);
     double d = 0.5, sum = 0, sum2 = 0;
     int n = 10000;
     for (int i = 0; i < n; i++) {
@@ -189,38 +194,38 @@ static void test_tof_noise_statistics(void **state)
     }
     double mean = sum / n, sd = sqrt(sum2 / n - mean * mean);
     assert_near(mean, d, 0.01);
-    assert_near(sd, cfg.tof_cv * d, 0.05);
+    assert_near(sd, tcfg.cv * d, 0.05);
 }
 
 static void test_tof_clamps_and_timeout(void **state)
 {
     (void)state;
-    simcfg_t c = cfg;
-    c.tof_blind_m = 0.03;
-    c.tof_cv = 0.0;
+    tof_spec_t c = tcfg;
+    c.blind_m = 0.03;
+    c.cv = 0.0;
     tof_t t;
     tof_init(&t, &c, 1, 0);
     assert_true(tof_measure(&t, 0.01).dist_m == 0.03); /* blind spot */
     tof_reading_t r = tof_measure(&t, -1.0);          /* nothing hit */
-    assert_true(r.timeout && r.dist_m == c.tof_range_m);
+    assert_true(r.timeout && r.dist_m == c.range_m);
     r = tof_measure(&t, 1.3); /* beyond range */
     assert_true(r.timeout);
-    r = tof_measure(&t, c.tof_range_m); /* exactly at the range: a timeout too */
-    assert_true(r.timeout && r.dist_m == c.tof_range_m);
-    r = tof_measure(&t, c.tof_range_m - 1e-6);
+    r = tof_measure(&t, c.range_m); /* exactly at the range: a timeout too */
+    assert_true(r.timeout && r.dist_m == c.range_m);
+    r = tof_measure(&t, c.range_m - 1e-6);
     assert_false(r.timeout);
     /* noise that pushes a reading to or past the range makes a timeout, never
      * a reading of the range itself */
-    c.tof_cv = 0.5;
+    c.cv = 0.5;
     tof_init(&t, &c, 1, 0);
     int timeouts = 0;
     for (int i = 0; i < 1000; i++) {
         r = tof_measure(&t, 1.15);
         if (r.timeout) {
             timeouts++;
-            assert_true(r.dist_m == c.tof_range_m);
+            assert_true(r.dist_m == c.range_m);
         } else {
-            assert_true(r.dist_m >= 0 && r.dist_m < c.tof_range_m);
+            assert_true(r.dist_m >= 0 && r.dist_m < c.range_m);
         }
     }
     assert_true(timeouts > 300 && timeouts < 700); /* about the half above 1.2 m */
@@ -230,9 +235,9 @@ static void test_tof_streams(void **state)
 {
     (void)state;
     tof_t a, b, other;
-    tof_init(&a, &cfg, 7, 1);
-    tof_init(&b, &cfg, 7, 1);
-    tof_init(&other, &cfg, 7, 2);
+    tof_init(&a, &tcfg, 7, 1);
+    tof_init(&b, &tcfg, 7, 1);
+    tof_init(&other, &tcfg, 7, 2);
     int differ = 0;
     for (int i = 0; i < 100; i++) {
         double x = tof_measure(&a, 0.3).dist_m;

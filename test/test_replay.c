@@ -106,7 +106,7 @@ static void test_state_at_logged_times(void **state)
     assert_string_equal(r.path, "gen.txt");
     assert_memory_equal(r.maze.cell, maze.cell, maze_cells(&maze));
     assert_int_equal(replay_sim_init(&r, &s), 0);
-    double count_rad = 2 * M_PI / (s.cfg.encoder_ppr * s.cfg.gear_ratio);
+    double count_rad = 2 * M_PI / (s.cfg.drive[0].encoder_ppr * s.cfg.drive[0].gear_ratio);
     for (int k = 0; k < CHECK_AT; k++) {
         replay_apply(&r, &s, CHECK_S[k]);
         double x, y, h;

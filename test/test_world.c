@@ -95,8 +95,8 @@ static run_t drive(const maze_t *m, double x0, double y0, double h0, int cmd_l, 
 {
     world_t *w = world_create(&cfg, m, x0, y0, h0);
     motor_t mo[2];
-    motor_init(&mo[0], &cfg, 1.0);
-    motor_init(&mo[1], &cfg, 1.0);
+    motor_init(&mo[0], &cfg.drive[0], 6.0, 0, 1.0);
+    motor_init(&mo[1], &cfg.drive[0], 6.0, 0, 1.0);
     run_t r = { 0, 0, 0, 0, 1, -1, 0 };
     int steps = (int)lround(seconds / cfg.step_s);
     for (int i = 0; i < steps; i++) {
@@ -124,7 +124,7 @@ static void test_straight_speed(void **state)
     for (uint8_t x = 0; x + 1 < 16; x++) maze_set_wall(&m, maze_cell(&m, x, 0), MAZE_EAST, MAZE_WALL_OPEN);
     /* 1.5 s: steady after ~0.6 s (the rotors' inertia) */
     run_t r = drive(&m, 0.09, 0.09, 0.0, 512, 512, 1.5);
-    double want = motor_free_speed(&cfg, 512.0 / 1023 * cfg.battery_v) * cfg.wheel_d_m / 2;
+    double want = motor_free_speed(&cfg.drive[0], 512.0 / 1023 * 6.0) * cfg.wheel_d_m / 2;
     if (fabs(r.v - want) > 0.03 * want) fail_msg("speed %.4f m/s, want %.4f", r.v, want);
     assert_true(r.x > 0.09 + 0.3);                        /* it went east */
     /* the exact solver keeps a symmetric robot straight */
@@ -192,8 +192,8 @@ static void test_place(void **state)
     maze_set_wall(&m, maze_cell(&m, 0, 0), MAZE_NORTH, MAZE_WALL_OPEN);
     world_t *w = world_create(&cfg, &m, 0.09, 0.09, M_PI / 2);
     motor_t mo[2];
-    motor_init(&mo[0], &cfg, 1.0);
-    motor_init(&mo[1], &cfg, 1.0);
+    motor_init(&mo[0], &cfg.drive[0], 6.0, 0, 1.0);
+    motor_init(&mo[1], &cfg.drive[0], 6.0, 0, 1.0);
     for (int i = 0; i < 300; i++) motor_world_step(w, mo, 900, 700); /* drive off north, turning a little */
     double a0 = world_wheel_angle(w, WORLD_LEFT), a1 = world_wheel_angle(w, WORLD_RIGHT), x, y, h, v, om;
     assert_true(fabs(a0) > 0.5 && fabs(a0 - a1) > 0.05);
@@ -208,8 +208,8 @@ static void test_place(void **state)
     assert_true(fabs(x - 0.27) < 1e-9 && fabs(y - 0.09) < 1e-9 && fabs(h) < 1e-9);
     assert_true(fabs(world_wheel_angle(w, WORLD_LEFT) - 0.25) < 1e-9 && fabs(world_wheel_angle(w, WORLD_RIGHT) + 1.5) < 1e-9);
     unsigned before = world_collisions(w);
-    motor_init(&mo[0], &cfg, 1.0); /* carried: no current left in the motors */
-    motor_init(&mo[1], &cfg, 1.0);
+    motor_init(&mo[0], &cfg.drive[0], 6.0, 0, 1.0); /* carried: no current left in the motors */
+    motor_init(&mo[1], &cfg.drive[0], 6.0, 0, 1.0);
     for (int i = 0; i < 200; i++) motor_world_step(w, mo, 0, 0); /* it settles where it was put */
     world_pose(w, &x, &y, &h);
     if (!(fabs(x - 0.27) < 0.002 && fabs(y - 0.09) < 0.002 && world_collisions(w) == before))

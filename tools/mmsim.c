@@ -32,7 +32,7 @@ typedef struct {
 
 static void usage(FILE *out)
 {
-    fputs("usage: mmsim --maze FILE [--config FILE] [--seed N] [--time-limit S] [--runs N]\n"
+    fputs("usage: mmsim --maze FILE [--config FILE] [--robot FILE] [--seed N] [--time-limit S] [--runs N]\n"
           "             [--centre-post on|off] [--profile default|paper] [--driver firmware|scripted]\n"
           "             [--json] [--realtime] [--verbose] [--report FILE.png]\n"
           "             (--runs: speed runs after the search, default 3; scripted: runs to the goal)\n"
@@ -48,8 +48,8 @@ static void usage(FILE *out)
           "       mmsim --maze FILE --mms COMMAND [--mms-ideal-walls] [--mms-timeout-ms N] [--mms-reset-at S|idle]\n"
           "             (an mms algorithm drives the robot through the mms text API, docs/MMS.md)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
-          "       mmsim --print-config [--config FILE]\n"
-          "       mmsim --validate [--config FILE] [--json]   (every model figure against its source; 0 iff all pass)\n"
+          "       mmsim --print-config [--config FILE]   mmsim --print-robot [--robot FILE]   (robot files: docs/ROBOTS.md)\n"
+          "       mmsim --validate [--config FILE] [--robot FILE] [--json]   (every model figure against its source; 0 iff all pass)\n"
           "Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure.\n",
           out);
 }
@@ -181,6 +181,8 @@ static const cli_opt_t flags[] = {
     { .name = "help", .kind = CLI_SET, .off = offsetof(mmsim_opts_t, help) },
     { .name = "validate", .kind = CLI_SET, .off = offsetof(mmsim_opts_t, validate) },
     { .name = "config", .kind = CLI_STR, .off = RUN(config_path) },
+    { .name = "robot", .kind = CLI_STR, .off = RUN(robot_path) },
+    { .name = "print-robot", .kind = CLI_SET, .off = RUN(print_robot) },
     { .name = "seed", .kind = CLI_FN, .fn = f_seed, .has_arg = 1 },
     { .name = "time-limit", .kind = CLI_NUM, .off = RUN(time_limit_s), .lo = 1, .hi = 86400 },
     { .name = "json", .kind = CLI_SET, .off = RUN(json) },
@@ -238,7 +240,7 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (o->serial && m->batch) return bad("%s", "--serial/--pty/--avr run one maze, not --batch");
     if (o->serial && !o->avr_elf) o->realtime = 1; /* a real MCU runs in real time; simavr in lockstep */
     if (m->batch && m->maze) return bad("%s", "--maze and --batch: one at a time (a batch runs every maze in DIR)");
-    if (o->print_config || m->validate) return 0;
+    if (o->print_config || o->print_robot || m->validate) return 0;
     if (m->batch && (o->telem.url || o->telem.log_path)) return bad("%s", "--lcm and --lcm-log work on one maze, not with --batch");
     if (m->batch && (o->report || o->gui || o->shot)) return bad("%s", "--report, --gui and --screenshot need --maze (one run), not --batch");
     if (o->gui && o->shot) return bad("%s", "--gui and --screenshot: one at a time");
@@ -307,10 +309,11 @@ static int run(int argc, char **argv)
     if (first != argc) return bad("unexpected argument '%s'", argv[first]);
     if (check_combinations(&m, seen)) return RUN_BAD_INPUT;
     if (m.validate) return validate(&m.run);
-    if (m.run.print_config) {
+    if (m.run.print_config || m.run.print_robot) {
         simcfg_t cfg;
         if (run_load_config(&m.run, &cfg) != 0) return RUN_BAD_INPUT;
-        config_print(&cfg, stdout);
+        if (m.run.print_config) config_print(&cfg, stdout);
+        if (m.run.print_robot) robot_print(&cfg, stdout);
         return RUN_OK;
     }
     if (m.batch) return batch_run(&m.run, m.batch);

@@ -13,7 +13,7 @@ static solve_path_t best;
 void driver_init(driver_t *d, const maze_t *m, const simcfg_t *c, int runs)
 {
     /* m/s per command step at no load: V/1023 / Kt * wheel radius */
-    d->v_per_cmd = motor_free_speed(c, c->battery_v) / 1023.0 * c->wheel_d_m / 2;
+    d->v_per_cmd = motor_free_speed(&c->drive[0], battery_spec_full_v(&c->battery)) / 1023.0 * c->wheel_d_m / 2;
     double cell_m = c->cell_m;
     d->decel_m_s2 = fmin(2.0, DECEL_G * c->tyre_mu_dynamic * 9.81);
     d->n = 0;

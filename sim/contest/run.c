@@ -30,6 +30,10 @@ int run_load_config(const run_opts_t *o, simcfg_t *c)
         fprintf(stderr, "%s\n", err);
         return -1;
     }
+    if (o->robot_path && robot_load(c, o->robot_path, err, sizeof err) != 0) {
+        fprintf(stderr, "%s\n", err);
+        return -1;
+    }
     if (o->time_limit_s > 0) c->time_limit_s = o->time_limit_s;
     if (o->centre_post >= 0) c->centre_post = o->centre_post;
     if (o->paper_friction) {
@@ -244,6 +248,7 @@ static json_t *results_json(const run_t *r, double wall)
                                                    round(y * 1e6) / 1e6, "heading_rad", round(h * 1e6) / 1e6));
     json_object_set_new(j, "exit_reason", json_string(r->reason));
     json_object_set_new(j, "config_hash", json_string(r->hash));
+    if (r->o->robot_path) json_object_set_new(j, "robot", json_string(r->o->robot_path));
     return j;
 }
 

@@ -25,9 +25,10 @@ enum { RUN_OK = 0, RUN_NOT_REACHED = 1, RUN_BAD_INPUT = 2, RUN_EXTERNAL = 3 };
 
 typedef struct {
     const char *config_path;
+    const char *robot_path; /* --robot FILE (NULL: the paper's robot, built in) */
     uint64_t seed;
     double time_limit_s; /* <= 0: from the config */
-    int json, realtime, runs, centre_post, print_config;
+    int json, realtime, runs, centre_post, print_config, print_robot;
     int paper_friction; /* --profile paper */
     int scripted;       /* --driver scripted */
     int verbose;        /* --verbose: firmware log lines on stderr */
@@ -45,7 +46,8 @@ typedef struct {
     mms_opts_t mms;                /* --mms COMMAND (NULL: none), --mms-ideal-walls, --mms-timeout-ms, --mms-reset-at */
 } run_opts_t;
 
-/* The defaults, then --config's file, then the flags that override keys.
+/* The defaults, then --config's file, --robot's file, then the flags that
+ * override keys.
  * 0, or -1 after one error line. */
 int run_load_config(const run_opts_t *o, simcfg_t *c);
 /* One contest; *out gets the result object (NULL if none); with print_text

@@ -63,7 +63,7 @@ static void link_exchange(link_t *l, sim_t *s)
     s->cmd[WORLD_RIGHT] = mo[1];
 }
 
-static uint16_t tof_range_mm(const run_t *r) { return (uint16_t)lround(r->cfg.tof_range_m * 1000.0); }
+static uint16_t tof_range_mm(const run_t *r) { return (uint16_t)lround(robot_tof_range_m(&r->cfg) * 1000.0); }
 
 /* the command line's link options with the config's compat distance scale */
 static link_opts_t link_opts(const run_t *r)
@@ -72,7 +72,7 @@ static link_opts_t link_opts(const run_t *r)
     lo.compat_range_m = r->cfg.compat_range_m;
     return lo;
 }
-static uint32_t counts_x100(const run_t *r) { return (uint32_t)lround(r->cfg.encoder_ppr * r->cfg.gear_ratio * 100.0); }
+static uint32_t counts_x100(const run_t *r) { return (uint32_t)lround(r->cfg.drive[0].encoder_ppr * r->cfg.drive[0].gear_ratio * 100.0); }
 
 const char *run_link_step(run_t *r)
 {

@@ -182,6 +182,7 @@ static int maze_layout_ok(const void *data, int len)
     skip(&c, count16(&c) + 2 + 1); /* walls, start, start_heading */
     skip(&c, count16(&c) * 2 + 1 + 8); /* goals, centre_post, seed */
     string(&c);                        /* config */
+    string(&c);                        /* robot */
     return c.ok && c.at == len;
 }
 

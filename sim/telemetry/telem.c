@@ -125,6 +125,15 @@ static void pub_maze(telem_t *t, const sim_t *s, const char *path)
     }
     config_print(&s->cfg, mem);
     fclose(mem);
+    char *robot = NULL;
+    mem = open_memstream(&robot, &len);
+    if (!mem) {
+        free(ini);
+        t->failed = 1;
+        return;
+    }
+    robot_print(&s->cfg, mem);
+    fclose(mem);
     mmlcm_maze_t mz;
     mz.utime = 0;
     mz.path = (char *)(path ? path : "");
@@ -139,8 +148,10 @@ static void pub_maze(telem_t *t, const sim_t *s, const char *path)
     mz.centre_post = (int8_t)(world_has_centre_post(s->world) != 0);
     mz.seed = (int64_t)s->seed;
     mz.config = ini ? ini : (char *)"";
+    mz.robot = robot ? robot : (char *)"";
     emit(t, "MM_MAZE", 0, mmlcm_maze_t_encode(t->buf, 0, TELEM_BUF_BYTES, &mz));
     free(ini);
+    free(robot);
 }
 
 static void close_quiet(telem_t *t)

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "validate/bench.h"
 #include "world/motor.h"
 #include "world/sim.h"
 
@@ -13,16 +14,9 @@
 #define KGMM_PER_NM (1.0 / 9.80665e-3)
 #define DATASHEET "Pololu micro metal gearmotors datasheet Rev 2.0 (May 2018), 30:1 LP 6V"
 
-typedef struct {
-    maze_t maze;
-    sim_t sim;
-} bench_t;
+bench_t bench; /* one at a time; maze_t and sim_t are large */
 
-static bench_t bench; /* one at a time; maze_t and sim_t are large */
-
-/* An open field w x h cells (outer walls only), the robot in cell (sx, 0)
- * facing north. */
-static void field(maze_t *m, uint8_t w, uint8_t h, uint8_t sx)
+void bench_field(maze_t *m, uint8_t w, uint8_t h, uint8_t sx)
 {
     maze_init(m, w, h);
     maze_close_unknown(m);
@@ -36,8 +30,7 @@ static void field(maze_t *m, uint8_t w, uint8_t h, uint8_t sx)
     m->start_heading = MAZE_NORTH;
 }
 
-/* A corridor of n cells running east, the robot in its first facing east. */
-static void corridor(maze_t *m, uint8_t n)
+void bench_corridor(maze_t *m, uint8_t n)
 {
     maze_init(m, n, 1);
     maze_close_unknown(m);
@@ -48,7 +41,7 @@ static void corridor(maze_t *m, uint8_t n)
 
 static sim_t *open_bench(const simcfg_t *c, int lift, int lock)
 {
-    if (lift || lock) field(&bench.maze, 3, 3, 1);
+    if (lift || lock) bench_field(&bench.maze, 3, 3, 1);
     if (sim_init(&bench.sim, c, &bench.maze, 1) != 0) return NULL;
     if (lift) world_lift(bench.sim.world, lock);
     return &bench.sim;
@@ -59,7 +52,7 @@ static void run_steps(sim_t *s, long n)
     for (long i = 0; i < n; i++) sim_step(s);
 }
 
-static long steps(const simcfg_t *c, double seconds) { return lround(seconds / c->step_s); }
+long bench_steps(const simcfg_t *c, double seconds) { return lround(seconds / c->step_s); }
 
 /* ---- the motor on the bench (robot lifted) ---- */
 
@@ -75,7 +68,7 @@ static operating_t loaded(const simcfg_t *c, double load_nm, double settle_s)
     sim_t *s = open_bench(c, 1, 0);
     if (!s) return op;
     s->cmd[0] = s->cmd[1] = MOTOR_CMD_MAX;
-    for (long i = 0; i < steps(c, settle_s); i++) {
+    for (long i = 0; i < bench_steps(c, settle_s); i++) {
         world_brake(s->world, load_nm);
         sim_step(s);
     }
@@ -93,7 +86,7 @@ static operating_t stalled(const simcfg_t *c, double t_s)
     sim_t *s = open_bench(c, 1, 1);
     if (!s) return op;
     s->cmd[0] = s->cmd[1] = MOTOR_CMD_MAX;
-    run_steps(s, steps(c, t_s));
+    run_steps(s, bench_steps(c, t_s));
     op.current_a = s->motor[WORLD_LEFT].i_a;
     op.torque_nm = s->motor[WORLD_LEFT].torque_nm;
     sim_free(s);
@@ -109,7 +102,7 @@ static operating_t dyno(const simcfg_t *c, double w_rad_s, double t_s)
     if (!s) return op;
     world_dyno(s->world, w_rad_s);
     s->cmd[0] = s->cmd[1] = MOTOR_CMD_MAX;
-    run_steps(s, steps(c, t_s));
+    run_steps(s, bench_steps(c, t_s));
     op.rpm = world_wheel_rate(s->world, WORLD_LEFT) * RPM_PER_RAD_S;
     op.current_a = s->motor[WORLD_LEFT].i_a;
     op.torque_nm = s->motor[WORLD_LEFT].torque_nm;
@@ -121,7 +114,7 @@ static operating_t dyno(const simcfg_t *c, double w_rad_s, double t_s)
  * simulator's own response). */
 static operating_t at_current(const simcfg_t *c, double current_a)
 {
-    double lo = 0, hi = c->stall_torque_nm;
+    double lo = 0, hi = c->drive[0].stall_torque_nm;
     operating_t op = { 0, 0, 0 };
     for (int i = 0; i < 30; i++) {
         op = loaded(c, 0.5 * (lo + hi), 1.0);
@@ -136,16 +129,16 @@ static operating_t at_current(const simcfg_t *c, double current_a)
  * at t_s (rad/s), and the current (A). */
 static double reference_response(const simcfg_t *c, double t_s, double *current_a)
 {
-    double r, ke, eta, n = c->gear_ratio, v = c->battery_v, i0 = c->no_load_a;
-    motor_constants(c, &r, &ke, &eta);
+    double r, ke, eta, n = c->drive[0].gear_ratio, v = battery_spec_full_v(&c->battery), i0 = c->drive[0].no_load_a;
+    motor_constants(&c->drive[0], &r, &ke, &eta);
     double rw = c->wheel_d_m / 2;
-    double j = 0.5 * c->wheel_mass_kg * rw * rw + c->rotor_inertia_kgm2 * n * n; /* the wheel's axle inertia */
+    double j = 0.5 * c->wheel_mass_kg * rw * rw + c->drive[0].rotor_inertia_kgm2 * n * n; /* the wheel's axle inertia */
     double i = 0, w = 0, h = 1e-7;
     long k = lround(t_s / h);
     for (long s = 0; s < k; s++) {
         double di[4], dw[4], ii = i, ww = w;
         for (int q = 0; q < 4; q++) {
-            di[q] = (v - r * ii - ke * n * ww) / c->l_h;
+            di[q] = (v - r * ii - ke * n * ww) / c->drive[0].l_h;
             double drive = n * eta * ke * (ii - i0);
             dw[q] = (ww > 0 || drive > 0) ? drive / j : 0; /* stiction holds it until the drive beats the friction */
             double f = q < 2 ? 0.5 * h : h;
@@ -166,7 +159,7 @@ static double lifted_speed_at(const simcfg_t *c, double t_s)
     sim_t *s = open_bench(c, 1, 0);
     if (!s) return 0;
     s->cmd[0] = s->cmd[1] = MOTOR_CMD_MAX;
-    run_steps(s, steps(c, t_s));
+    run_steps(s, bench_steps(c, t_s));
     double w = world_wheel_rate(s->world, WORLD_LEFT);
     sim_free(s);
     return w;
@@ -196,13 +189,13 @@ static double counts_per_rev(const simcfg_t *c)
 /* Idle in the start cell for minutes: the body centre's drift, mm/min. */
 static double creep_mm_per_min(const simcfg_t *c, double minutes)
 {
-    field(&bench.maze, 3, 3, 1);
+    bench_field(&bench.maze, 3, 3, 1);
     sim_t *s = open_bench(c, 0, 0);
     if (!s) return 1e9;
     double x0, y0, h, x, y;
-    run_steps(s, steps(c, 1.0)); /* settle on the floor */
+    run_steps(s, bench_steps(c, 1.0)); /* settle on the floor */
     world_pose(s->world, &x0, &y0, &h);
-    run_steps(s, steps(c, 60.0 * minutes));
+    run_steps(s, bench_steps(c, 60.0 * minutes));
     world_pose(s->world, &x, &y, &h);
     sim_free(s);
     return hypot(x - x0, y - y0) * 1000.0 / minutes;
@@ -212,7 +205,7 @@ static double creep_mm_per_min(const simcfg_t *c, double minutes)
  * body centre ends up sideways of the start line, mm. */
 static double veer_mm_4m(const simcfg_t *c)
 {
-    field(&bench.maze, 32, 32, 16);
+    bench_field(&bench.maze, 32, 32, 16);
     sim_t *s = open_bench(c, 0, 0);
     if (!s) return 1e9;
     double x0, y0, h, x, y;
@@ -234,26 +227,44 @@ typedef struct {
     long n, beyond_valid, timeouts;
 } tof_stats_t;
 
+/* The robot's forward-looking ToF sensor (yaw 0): its index among its
+ * ToF sensors, or -1. */
+static int front_tof(const simcfg_t *c)
+{
+    for (unsigned i = 0; i < WORLD_TOF_COUNT; i++) {
+        int k = robot_part_of_kind(c, "tof", i);
+        if (k >= 0 && c->part[k].yaw_deg == 0) return (int)i;
+    }
+    return -1;
+}
+
+static const tof_spec_t *tof_spec(const simcfg_t *c, int i)
+{
+    return (const tof_spec_t *)c->part[robot_part_of_kind(c, "tof", (unsigned)i)].spec;
+}
+
 static tof_stats_t tof_facing(const simcfg_t *c, double true_m, double seconds)
 {
     tof_stats_t st = { 0, 0, 0, 0, 0 };
-    corridor(&bench.maze, 16);
+    int f = front_tof(c);
+    double sensor_y = c->part[robot_part_of_kind(c, "tof", (unsigned)f)].y_m;
+    bench_corridor(&bench.maze, 16);
     sim_t *s = open_bench(c, 0, 0);
     if (!s) return st;
     double face = 16 * c->cell_m - c->wall_thick_m / 2;
-    world_place(s->world, face - c->tof_front_y_m - true_m, 0.5 * c->cell_m, 0.0, NULL);
+    world_place(s->world, face - sensor_y - true_m, 0.5 * c->cell_m, 0.0, NULL);
     double sum = 0, sum2 = 0;
-    uint32_t seen = s->tof_count[WORLD_TOF_FRONT];
-    for (long i = 0; i < steps(c, seconds); i++) {
+    uint32_t seen = s->tof_count[f];
+    for (long i = 0; i < bench_steps(c, seconds); i++) {
         sim_step(s);
-        if (s->tof_count[WORLD_TOF_FRONT] == seen) continue;
-        seen = s->tof_count[WORLD_TOF_FRONT];
-        tof_reading_t r = s->tof_last[WORLD_TOF_FRONT];
+        if (s->tof_count[f] == seen) continue;
+        seen = s->tof_count[f];
+        tof_reading_t r = s->tof_last[f];
         if (r.timeout) {
             st.timeouts++;
             continue;
         }
-        if (r.dist_m >= c->tof_range_m) st.beyond_valid++;
+        if (r.dist_m >= tof_spec(c, f)->range_m) st.beyond_valid++;
         sum += r.dist_m;
         sum2 += r.dist_m * r.dist_m;
         st.n++;
@@ -270,12 +281,12 @@ static tof_stats_t tof_facing(const simcfg_t *c, double true_m, double seconds)
  * front got past the wall's face at most, mm (0 = never). */
 static double tunnelling_mm(const simcfg_t *c)
 {
-    corridor(&bench.maze, 3);
+    bench_corridor(&bench.maze, 3);
     sim_t *s = open_bench(c, 0, 0);
     if (!s) return 1e9;
     double face = 3 * c->cell_m - c->wall_thick_m / 2, worst = 0, x, y, h;
     s->cmd[0] = s->cmd[1] = MOTOR_CMD_MAX;
-    for (long i = 0; i < steps(c, 3.0); i++) {
+    for (long i = 0; i < bench_steps(c, 3.0); i++) {
         sim_step(s);
         world_pose(s->world, &x, &y, &h);
         worst = fmax(worst, x + c->body_l_m / 2 - face);
@@ -286,7 +297,7 @@ static double tunnelling_mm(const simcfg_t *c)
 
 /* ---- the table ---- */
 
-static void add(validate_check_t *v, int *n, const char *name, double expected, double measured, const char *unit,
+void bench_add(validate_check_t *v, int *n, const char *name, double expected, double measured, const char *unit,
                 double tol_pct, int bound, const char *source)
 {
     validate_check_t *k = &v[(*n)++];
@@ -302,23 +313,31 @@ static void add(validate_check_t *v, int *n, const char *name, double expected, 
     else k->pass = 1;
 }
 
+/* The Pololu 30:1 LP 6V of the paper robot (its datasheet's other figures
+ * are checked only for it). */
+static int pololu_30_lp(const drive_spec_t *d)
+{
+    return d->rated_v == 6 && d->no_load_rpm == 450 && d->stall_a == 0.36 && d->stall_torque_nm == 0.028439;
+}
+
 static int motor_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
     operating_t nl = loaded(c, 0, 3.0), st = stalled(c, 1.0), first = stalled(c, c->step_s);
-    add(v, &n, "no_load_speed", c->no_load_rpm, nl.rpm, "rpm", 2, VALIDATE_NEAR, DATASHEET ": no load");
-    add(v, &n, "no_load_current", c->no_load_a, nl.current_a, "A", 2, VALIDATE_NEAR, DATASHEET ": no load");
-    add(v, &n, "stall_torque", c->stall_torque_nm, st.torque_nm, "N*m", 2, VALIDATE_NEAR, DATASHEET ": stall 2.9 kg*mm");
-    add(v, &n, "stall_current", c->stall_a, st.current_a, "A", 2, VALIDATE_NEAR, DATASHEET ": stall");
-    double r = c->rated_v / c->stall_a;
-    add(v, &n, "first_step_current", c->battery_v / r * (1 - exp(-c->step_s * r / c->l_h)), first.current_a, "A", 2,
+    bench_add(v, &n, "no_load_speed", c->drive[0].no_load_rpm, nl.rpm, "rpm", 2, VALIDATE_NEAR, DATASHEET ": no load");
+    bench_add(v, &n, "no_load_current", c->drive[0].no_load_a, nl.current_a, "A", 2, VALIDATE_NEAR, DATASHEET ": no load");
+    bench_add(v, &n, "stall_torque", c->drive[0].stall_torque_nm, st.torque_nm, "N*m", 2, VALIDATE_NEAR, DATASHEET ": stall 2.9 kg*mm");
+    bench_add(v, &n, "stall_current", c->drive[0].stall_a, st.current_a, "A", 2, VALIDATE_NEAR, DATASHEET ": stall");
+    double r = c->drive[0].rated_v / c->drive[0].stall_a;
+    bench_add(v, &n, "first_step_current", battery_spec_full_v(&c->battery) / r * (1 - exp(-c->step_s * r / c->drive[0].l_h)), first.current_a, "A", 2,
         VALIDATE_NEAR, "analytic: V/R*(1 - exp(-t*R/L)) one step after stall");
+    if (!pololu_30_lp(&c->drive[0])) return n;
     /* the datasheet's maximum-efficiency point: 320 rpm, 0.66 kg*mm, 0.11 A */
     operating_t me = at_current(c, 0.11);
-    add(v, &n, "max_efficiency_speed", 320, me.rpm, "rpm", 8, VALIDATE_NEAR, DATASHEET ": max efficiency, at its 0.11 A");
-    add(v, &n, "max_efficiency_torque", 0.66, me.torque_nm * KGMM_PER_NM, "kg*mm", 0, VALIDATE_REPORT,
+    bench_add(v, &n, "max_efficiency_speed", 320, me.rpm, "rpm", 8, VALIDATE_NEAR, DATASHEET ": max efficiency, at its 0.11 A");
+    bench_add(v, &n, "max_efficiency_torque", 0.66, me.torque_nm * KGMM_PER_NM, "kg*mm", 0, VALIDATE_REPORT,
         DATASHEET ": max efficiency, at its 0.11 A; a model linear in current gives ~0.77 (no bar)");
     operating_t dy = dyno(c, 320 / RPM_PER_RAD_S, 1.0);
-    add(v, &n, "max_efficiency_current", 0.11, dy.current_a, "A", 8, VALIDATE_NEAR,
+    bench_add(v, &n, "max_efficiency_current", 0.11, dy.current_a, "A", 8, VALIDATE_NEAR,
         DATASHEET ": max efficiency, the wheel held at its 320 rpm");
     return n;
 }
@@ -331,27 +350,29 @@ static int response_checks(const simcfg_t *c, validate_check_t *v, int n)
     } at[] = { { "step_response_1ms", 0.001 }, { "step_response_2ms", 0.002 }, { "step_response_5ms", 0.005 } };
     for (int k = 0; k < 3; k++) {
         double i_ref, w_ref = reference_response(c, at[k].t_s, &i_ref);
-        add(v, &n, at[k].name, w_ref, lifted_speed_at(c, at[k].t_s), "rad/s", 2, VALIDATE_NEAR,
+        bench_add(v, &n, at[k].name, w_ref, lifted_speed_at(c, at[k].t_s), "rad/s", 2, VALIDATE_NEAR,
             "analytic: the motor's L-R circuit and the wheel's inertia (rotor reflected), RK4 at 0.1 us");
     }
-    add(v, &n, "encoder_counts_per_rev", c->encoder_ppr * c->gear_ratio, counts_per_rev(c), "counts", 0.5,
+    bench_add(v, &n, "encoder_counts_per_rev", c->drive[0].encoder_ppr * c->drive[0].gear_ratio, counts_per_rev(c), "counts", 0.5,
         VALIDATE_NEAR, "encoder PPR x gear ratio (paper: 12 x 29.86 = 358.32)");
     return n;
 }
 
 static int floor_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
-    add(v, &n, "rest_creep_mm_per_min", 0.1, creep_mm_per_min(c, 10.0), "mm/min", 0, VALIDATE_MAX,
+    bench_add(v, &n, "rest_creep_mm_per_min", 0.1, creep_mm_per_min(c, 10.0), "mm/min", 0, VALIDATE_MAX,
         "a robot at rest stays at rest: 10 minutes idle in the start cell");
-    add(v, &n, "straight_veer_mm_4m", 2.0, veer_mm_4m(c), "mm", 0, VALIDATE_MAX,
+    bench_add(v, &n, "straight_veer_mm_4m", 2.0, veer_mm_4m(c), "mm", 0, VALIDATE_MAX,
         "a symmetric robot drives straight: full command, 4 m, sideways drift");
-    tof_stats_t near = tof_facing(c, 0.5, 60.0), edge = tof_facing(c, c->tof_range_m * 0.98, 60.0);
-    add(v, &n, "tof_noise_cv", c->tof_cv, near.mean > 0 ? near.sd / near.mean : 0, "1", 5, VALIDATE_NEAR,
-        "paper: sigma = cv * distance (a wall 0.5 m ahead, 2000 readings)");
-    add(v, &n, "tof_timeout_beyond_range", 0, (double)edge.beyond_valid, "readings", 0, VALIDATE_MAX,
-        "VL53L0X and the paper's Unity simulator: at or beyond the range is a timeout (a wall at 0.98 x range, noise)");
-    add(v, &n, "wall_no_tunnelling", 1.0, tunnelling_mm(c), "mm", 0, VALIDATE_MAX,
+    bench_add(v, &n, "wall_no_tunnelling", 1.0, tunnelling_mm(c), "mm", 0, VALIDATE_MAX,
         "full command into a wall: the body stops at its face (contact softness allows < 1 mm)");
+    if (front_tof(c) < 0) return n;
+    const tof_spec_t *ts = tof_spec(c, front_tof(c));
+    tof_stats_t near = tof_facing(c, 0.5, 60.0), edge = tof_facing(c, ts->range_m * 0.98, 60.0);
+    bench_add(v, &n, "tof_noise_cv", ts->cv, near.mean > 0 ? near.sd / near.mean : 0, "1", 5, VALIDATE_NEAR,
+        "paper: sigma = cv * distance (a wall 0.5 m ahead, 2000 readings)");
+    bench_add(v, &n, "tof_timeout_beyond_range", 0, (double)edge.beyond_valid, "readings", 0, VALIDATE_MAX,
+        "VL53L0X and the paper's Unity simulator: at or beyond the range is a timeout (a wall at 0.98 x range, noise)");
     return n;
 }
 
@@ -359,7 +380,8 @@ int validate_run(const simcfg_t *c, validate_check_t *checks)
 {
     int n = motor_checks(c, checks, 0);
     n = response_checks(c, checks, n);
-    return floor_checks(c, checks, n);
+    n = floor_checks(c, checks, n);
+    return validate_robot_checks(c, checks, n);
 }
 
 static const char *bound_name(int b) { return b == VALIDATE_NEAR ? "near" : b == VALIDATE_MAX ? "max" : "report"; }

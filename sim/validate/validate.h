@@ -25,7 +25,7 @@ typedef struct {
     int pass;
 } validate_check_t;
 
-#define VALIDATE_MAX_CHECKS 32
+#define VALIDATE_MAX_CHECKS 64
 
 /* Runs every scenario with config c; fills checks, returns their number. */
 int validate_run(const simcfg_t *c, validate_check_t *checks);

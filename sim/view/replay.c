@@ -61,6 +61,7 @@ static int take_maze(load_t *l, const mmlcm_maze_t *m)
     char cerr[600];
     if (config_load_string(&r->cfg, m->config, "MM_MAZE config", cerr, sizeof cerr) != 0)
         return fail(l, cerr, "MM_MAZE");
+    if (robot_load_string(&r->cfg, m->robot, "MM_MAZE robot", cerr, sizeof cerr) != 0) return fail(l, cerr, "MM_MAZE");
     r->seed = (uint64_t)m->seed;
     r->centre_post = m->centre_post != 0;
     r->have_maze = 1;
@@ -234,7 +235,7 @@ static void rebuild_race(const replay_t *r, race_t *rc, int64_t t_us)
 void replay_apply(replay_t *r, sim_t *s, double t_s)
 {
     int64_t t_us = clamp_us(r, t_s);
-    double cpr = s->cfg.encoder_ppr * s->cfg.gear_ratio; /* encoder counts per wheel turn */
+    double cpr = s->cfg.drive[0].encoder_ppr * s->cfg.drive[0].gear_ratio; /* encoder counts per wheel turn */
     long i = LAST_AT(r->pose, r->npose, t_us);
     long j = LAST_AT(r->sensors, r->nsensors, t_us);
     double wheel[2] = { 0, 0 };
@@ -250,7 +251,7 @@ void replay_apply(replay_t *r, sim_t *s, double t_s)
     }
     for (int k = 0; k < WORLD_TOF_COUNT; k++) {
         s->tof_true_m[k] = j >= 0 ? r->sensors[j].tof_true_m[k] : -1;
-        s->tof_last[k].dist_m = j >= 0 ? r->sensors[j].tof_mm[k] * 1e-3 : s->cfg.tof_range_m;
+        s->tof_last[k].dist_m = j >= 0 ? r->sensors[j].tof_mm[k] * 1e-3 : s->tof_range_m;
         s->tof_last[k].timeout = j >= 0 ? r->sensors[j].tof_timeout[k] : 1;
     }
     s->step = (uint64_t)llround((double)t_us * 1e-6 / s->cfg.step_s);

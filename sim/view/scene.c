@@ -196,10 +196,10 @@ static void rays(sim_t *s)
 {
     glDisable(GL_LIGHTING);
     glLineWidth(2);
-    for (int i = 0; i < WORLD_TOF_COUNT; i++) {
+    for (int i = 0; i < s->ntof; i++) {
         double p[3], dir, d = s->tof_true_m[i];
-        world_tof_origin(s->world, i, p, &dir);
-        double len = d >= 0 ? d : s->cfg.tof_range_m;
+        sim_tof_origin(s, i, p, &dir);
+        double len = d >= 0 ? d : s->tof_range_m;
         glBegin(GL_LINES);
         colour(0xFFE040u, 1);
         glVertex3d(p[0], p[1], p[2]);

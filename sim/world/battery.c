@@ -22,6 +22,7 @@ void battery_spec_default(battery_spec_t *s)
     for (int i = 0; i < BATTERY_OCV_MAX; i++) s->ocv_v[i] = 2.0 * cell_v[i];
     s->r_ohm = 0.3;          /* ours: two small cells plus the pack's protection switch; no datasheet */
     s->capacity_mah = 500.0; /* ours: the order of rechargeable PP3 Li-ion packs; no datasheet */
+    s->divider = 0.5;        /* mazerunner-core config-robot-orion.h: BATTERY_R1 = BATTERY_R2 = 10k */
 }
 
 void battery_init(battery_t *b, const battery_spec_t *s)
@@ -43,7 +44,8 @@ double battery_ocv(const battery_t *b)
     if (s->ocv_n <= 1) return s->ocv_v[0];
     double x = battery_soc(b) * (s->ocv_n - 1);
     int i = (int)x;
-    if (i >= s->ocv_n - 1) return s->ocv_v[s->ocv_n - 1];
+    int last = (int)s->ocv_n - 1;
+    if (i >= last) return s->ocv_v[last];
     return s->ocv_v[i] + (x - i) * (s->ocv_v[i + 1] - s->ocv_v[i]);
 }
 
@@ -58,3 +60,5 @@ void battery_draw(battery_t *b, double current_a, double dt_s)
 }
 
 double battery_drawn_mah(const battery_t *b) { return b->drawn_c / COULOMB_PER_MAH; }
+
+double battery_spec_full_v(const battery_spec_t *s) { return s->ocv_v[s->ocv_n >= 1 ? (int)s->ocv_n - 1 : 0]; }

@@ -19,10 +19,11 @@
 #define BATTERY_OCV_MAX 11  /* ours: 11 points = every 10 % of charge */
 
 typedef struct {
-    int ocv_n;                       /* points in ocv_v, 1..BATTERY_OCV_MAX */
+    double ocv_n;                    /* points in ocv_v, 1..BATTERY_OCV_MAX (a double: keytab.h lists) */
     double ocv_v[BATTERY_OCV_MAX];   /* open-circuit voltage at soc = i/(ocv_n-1), V */
     double r_ohm;                    /* internal resistance, ohm */
     double capacity_mah;             /* capacity, mAh */
+    double divider;                  /* what the robot's ADC sees of it: V_adc / V_battery (hal_battery_mv reports V) */
 } battery_spec_t;
 
 typedef struct {
@@ -32,6 +33,8 @@ typedef struct {
 
 /* The defaults: a 2-cell Li-ion/LiPo pack, 8.4 V full (values and sources in battery.c). */
 void battery_spec_default(battery_spec_t *s);
+/* The open-circuit voltage when full, V. */
+double battery_spec_full_v(const battery_spec_t *s);
 /* Full at init (soc 1). */
 void battery_init(battery_t *b, const battery_spec_t *s);
 /* State of charge, 0..1 (clamped). */

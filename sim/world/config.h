@@ -1,12 +1,12 @@
-/* config.h - every number of the simulated world and robot, in one place.
+/* config.h - every number of the simulated world and the simulation, and
+ * the robot's (which come from the robot file: robot.h).
  *
- * Defaults reproduce the paper's robot (Table 1, eq. 1-7) with the fixes
- * the issues ask for; each key's unit, range and source is in the table
- * in config.c, which is also what --print-config prints. A config file is
- * INI (parsed by Debian's libinih):
+ * Defaults reproduce the paper's world; each key's unit, range and source
+ * is in the table in config.c, which is also what --print-config prints. A
+ * config file is INI (parsed by Debian's libinih):
  *
- *   [motor]
- *   battery_v = 7.4
+ *   [sim]
+ *   step_s = 0.0005
  *
  * Unknown keys, missing values and values out of physical range are errors
  * "FILE:LINE: section.key: reason".
@@ -17,6 +17,49 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "battery.h"
+
+/* One wheel's drive: motor (datasheet figures at rated_v, output shaft),
+ * gearbox, H-bridge and encoder. All doubles (keytab.h). */
+typedef struct {
+    double motor_model;     /* MOTOR_MODEL_PAPER or MOTOR_MODEL_DATASHEET */
+    double rated_v, no_load_rpm, no_load_a, stall_torque_nm, stall_a;
+    double l_h;
+    double gear_ratio;
+    double rotor_inertia_kgm2; /* at the motor shaft; 0 = ignored */
+    double driver_r_ohm;    /* H-bridge on-resistance in series with the motor, ohm */
+    double encoder_ppr;     /* encoder counts per motor-shaft revolution */
+    double encoder_channels; /* 1 (pulses) or 2 (quadrature) */
+} drive_spec_t;
+
+/* Figures measured on the real robot that the file describes (a robot
+ * file's optional [measured.NAME]); mmsim --validate reproduces each one
+ * given (-1 = not given). */
+typedef struct {
+    double fwd_km_mm_s_v;   /* forward speed per volt: slope of steady speed against voltage, mm/s/V */
+    double fwd_tm_s;        /* forward time constant: 63 % of a voltage step's speed change, s */
+    double rot_km_deg_s_v;  /* spin rate per volt (the motors at +V and -V), deg/s/V */
+    double rot_tm_s;        /* rotation time constant, s */
+    double counts_500mm_left, counts_500mm_right; /* encoder counts over 500 mm of straight travel */
+} robot_measured_t;
+
+#define ROBOT_MAX_PARTS 16   /* sensors a robot file may list */
+#define ROBOT_NAME_MAX 16    /* bytes of a component's name, with the NUL */
+#define ROBOT_SPEC_MAX 32    /* doubles of a sensor kind's specification */
+
+struct sensor_kind_s;
+/* A sensor from the robot file: its kind (sensors/sensor.h), name, pose on
+ * the chassis and its kind's specification (plain doubles). */
+typedef struct {
+    const struct sensor_kind_s *kind;
+    char name[ROBOT_NAME_MAX];
+    double x_m, y_m, z_m;   /* chassis frame: origin at the body's centre on the floor, x right, y forward, z up */
+    double yaw_deg;         /* counter-clockwise from straight ahead */
+    double pitch_deg;       /* up from level */
+    int line;               /* its section's line in the robot file */
+    double spec[ROBOT_SPEC_MAX];
+} robot_part_t;
+
 typedef struct {
     /* [world] */
     double cell_m;          /* cell pitch, post centre to post centre */
@@ -25,7 +68,9 @@ typedef struct {
     double post_m;          /* post side */
     double centre_post;     /* 1 = the post in the middle of the goal is there */
     double body_wall_mu;    /* robot body/wheel on a wall or post */
-    /* [robot] */
+    double wall_reflectivity; /* of walls and posts to the IR sensors' light, 0..1 */
+    /* The robot (robot file, robot.h): the chassis, both drives, the
+     * battery and the sensors. config_load never sets these. */
     double body_w_m, body_l_m, body_h_m, body_mass_kg;
     double body_clearance_m; /* floor to the underside of the body */
     double wheel_d_m, wheel_w_m, wheel_mass_kg;
@@ -35,20 +80,15 @@ typedef struct {
     double tyre_mu;         /* Coulomb friction, tyre on floor */
     double tyre_mu_dynamic; /* sliding friction; <= tyre_mu */
     double tyre_slip_m_s;   /* contact slip speed above which tyre_mu_dynamic applies */
-    /* [motor]: the datasheet's figures; motor.c derives the constants */
-    double motor_model;     /* MOTOR_MODEL_PAPER or MOTOR_MODEL_DATASHEET */
-    double rated_v, no_load_rpm, no_load_a, stall_torque_nm, stall_a;
-    double gear_ratio;
-    double l_h;
-    double rotor_inertia_kgm2; /* at the motor shaft; 0 = ignored */
-    double battery_v, battery_r_ohm;
-    /* [encoder] */
-    double encoder_ppr;     /* pulses per motor-shaft revolution */
-    /* [tof] */
-    double tof_range_m, tof_blind_m, tof_cv, tof_period_s;
-    double tof_x_m, tof_y_m;  /* side sensors' position on the body (x = +-) */
-    double tof_front_y_m;     /* front sensor, on the centre line */
-    double tof_side_angle_deg; /* side sensors point this far out from ahead */
+    double wheel_left_d_m, wheel_right_d_m; /* the robot file's; wheel_d_m is their mean */
+    drive_spec_t drive[2];  /* WORLD_LEFT, WORLD_RIGHT */
+    battery_spec_t battery;
+    int nparts;             /* sensors, in the robot file's order */
+    robot_part_t part[ROBOT_MAX_PARTS];
+    char robot_path[256];   /* the robot file as given (the paper robot's is built in) */
+    char chassis_name[ROBOT_NAME_MAX], battery_name[ROBOT_NAME_MAX];
+    robot_measured_t measured;
+    char measured_name[ROBOT_NAME_MAX]; /* "" = no [measured.NAME] */
     /* [link] */
     double compat_range_m;  /* compat protocol's distance scale: 65535 = this distance (--protocol compat) */
     /* [asymmetry]: right minus left, 0 = symmetric */
@@ -76,7 +116,7 @@ const char *config_key_word(size_t i, double v);
 /* The i-th key's value in c (0 past the end). */
 double config_key_value(const simcfg_t *c, size_t i);
 
-/* The defaults (the paper's robot). */
+/* The defaults: the paper's world and robot (robots/paper.ini, built in). */
 void config_defaults(simcfg_t *c);
 
 #define CONFIG_MAX_BYTES (1u << 20) /* bytes of a config file; --print-config's is ~3 KB */
@@ -91,10 +131,14 @@ int config_load(simcfg_t *c, const char *path, char *err, size_t errlen);
 /* Same from a NUL-terminated string (name is used in messages). */
 int config_load_string(simcfg_t *c, const char *text, const char *name, char *err, size_t errlen);
 
+/* A config or robot file's text, line by line: 0, or -1 with
+ * "NAME:LINE: NUL byte" or "NAME:LINE: line too long (...)" in err. */
+int config_scan_lines(const char *text, size_t len, const char *name, char *err, size_t errlen);
+
 /* Write every key with its value, unit and source, as a valid INI file. */
 void config_print(const simcfg_t *c, FILE *out);
 
-/* SHA-256 of config_print's text, as 64 hex digits + NUL. */
+/* SHA-256 of config_print's and robot_print's text, as 64 hex digits + NUL. */
 void config_hash(const simcfg_t *c, char out[65]);
 
 #endif

@@ -5,7 +5,7 @@
 
 #define RPM_TO_RAD_S (2.0 * M_PI / 60.0)
 
-void motor_constants(const simcfg_t *c, double *r_ohm, double *ke_v_s, double *eta)
+void motor_constants(const drive_spec_t *c, double *r_ohm, double *ke_v_s, double *eta)
 {
     double r = c->rated_v / c->stall_a;
     double w_motor = c->no_load_rpm * RPM_TO_RAD_S * c->gear_ratio;
@@ -17,7 +17,7 @@ void motor_constants(const simcfg_t *c, double *r_ohm, double *ke_v_s, double *e
 
 double motor_terminal_v(const motor_t *m) { return m->v_applied - (m->r_circuit_ohm - m->r_ohm) * m->i_a; }
 
-double motor_free_speed(const simcfg_t *c, double v_volt)
+double motor_free_speed(const drive_spec_t *c, double v_volt)
 {
     double r, ke, eta;
     if (c->motor_model == MOTOR_MODEL_PAPER) return v_volt / (c->stall_torque_nm / c->stall_a);
@@ -26,22 +26,24 @@ double motor_free_speed(const simcfg_t *c, double v_volt)
     return w > 0 ? copysign(w, v_volt) : 0.0;
 }
 
-void motor_init(motor_t *m, const simcfg_t *c, double scale)
+void motor_init(motor_t *m, const drive_spec_t *c, double battery_v, double battery_r_ohm, double scale)
 {
     m->model = (int)c->motor_model;
     m->n = c->gear_ratio;
     m->l_h = c->l_h;
-    m->battery_v = c->battery_v;
-    m->battery_r_ohm = c->battery_r_ohm;
+    m->battery_v = battery_v;
+    m->battery_r_ohm = battery_r_ohm;
     if (m->model == MOTOR_MODEL_PAPER) { /* eq. 4-5: K and R from the stall figures, at the output shaft */
         m->r_ohm = c->rated_v / c->stall_a;
         m->ke_v_s = c->stall_torque_nm / c->stall_a / m->n * scale;
         m->eta = 1.0;
         m->i_friction_a = 0.0;
+        m->r_ohm += c->driver_r_ohm;
     } else {
         motor_constants(c, &m->r_ohm, &m->ke_v_s, &m->eta);
         m->ke_v_s *= scale;
         m->i_friction_a = c->no_load_a;
+        m->r_ohm += c->driver_r_ohm; /* the H-bridge's switches conduct the current in drive and in slow decay alike */
     }
     m->i_a = 0.0;
     m->v_applied = 0.0;

@@ -67,7 +67,7 @@ typedef struct {
 } motor_drive_t;
 
 /* scale: this motor's constant relative to the nominal (asymmetry), 1 = nominal */
-void motor_init(motor_t *m, const simcfg_t *c, double scale);
+void motor_init(motor_t *m, const drive_spec_t *c, double battery_v, double battery_r_ohm, double scale);
 /* The drive for the next step with command cmd (clamped to +-1023), the
  * wheel's speed w_rad_s at the step's start and the step dt_s. */
 motor_drive_t motor_drive(motor_t *m, int cmd, double w_rad_s, double dt_s);
@@ -80,10 +80,10 @@ double motor_terminal_v(const motor_t *m);
 
 /* The output shaft's speed with no load at voltage v_volt, rad/s, of the
  * configured model (the scripted driver's feed-forward). */
-double motor_free_speed(const simcfg_t *c, double v_volt);
+double motor_free_speed(const drive_spec_t *c, double v_volt);
 
 /* The datasheet model's constants from the config (motor shaft): R, Ke and
  * eta as above. */
-void motor_constants(const simcfg_t *c, double *r_ohm, double *ke_v_s, double *eta);
+void motor_constants(const drive_spec_t *c, double *r_ohm, double *ke_v_s, double *eta);
 
 #endif

@@ -2,6 +2,12 @@
 #include "sim.h"
 
 #include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "world/sensors/gyro.h"
+#include "world/sensors/ir.h"
+#include "world/sensors/sensor.h"
 
 static double start_heading(uint8_t d)
 {
@@ -24,39 +30,94 @@ static void vary(simcfg_t *c, uint64_t seed)
     c->com_y_m += c->com_sigma_m * g[4];
 }
 
+static sensor_ctx_t ctx(sim_t *s)
+{
+    sensor_ctx_t x;
+    double v;
+    x.world = s->world;
+    x.cfg = &s->cfg;
+    x.step = s->step;
+    x.t_s = sim_time_s(s);
+    x.emitter = s->emitter;
+    world_velocity(s->world, &v, &x.yaw_rate_rad_s);
+    return x;
+}
+
+/* The sensors' states, each from its kind; ToF sensors also the HAL's. */
+static int parts_init(sim_t *s, uint64_t seed)
+{
+    const simcfg_t *c = &s->cfg;
+    s->ntof = 0;
+    s->tof_range_m = 1.2;
+    for (int i = 0; i < c->nparts; i++) {
+        const robot_part_t *p = &c->part[i];
+        const sensor_kind_t *k = p->kind;
+        unsigned n = 0, kind_index = 0;
+        for (int j = 0; j < c->nparts; j++) {
+            n += c->part[j].kind == k;
+            kind_index += j < i && c->part[j].kind == k;
+        }
+        s->part_state[i] = calloc(1, k->state_size);
+        if (!s->part_state[i]) return -1;
+        k->init(s->part_state[i], p, c, seed, kind_index, n);
+        if (k == sensor_kind("tof") && s->ntof < WORLD_TOF_COUNT) {
+            if (s->ntof == 0) s->tof_range_m = ((const tof_spec_t *)p->spec)->range_m;
+            s->tof_part[s->ntof++] = i;
+        }
+    }
+    return 0;
+}
+
+/* The HAL's copy of the ToF sensors' state. */
+static void tof_mirror(sim_t *s)
+{
+    for (int i = 0; i < s->ntof; i++) {
+        tof_state_t *t = s->part_state[s->tof_part[i]];
+        t->enabled = s->tof_enabled;
+        s->tof_last[i] = t->last;
+        s->tof_true_m[i] = t->true_m;
+        s->tof_count[i] = t->count;
+    }
+}
+
 int sim_init(sim_t *s, const simcfg_t *cfg, const maze_t *m, uint64_t seed)
 {
     simcfg_t robot = *cfg;
     const simcfg_t *c = &robot;
     vary(&robot, seed);
     double cell = c->cell_m;
+    memset(s->part_state, 0, sizeof s->part_state);
     s->cfg = robot;
     s->maze = m;
     s->seed = seed;
     s->world = world_create(c, m, (maze_x(m, m->start) + 0.5) * cell, (maze_y(m, m->start) + 0.5) * cell,
                             start_heading(m->start_heading));
     if (!s->world) return -1;
-    double counts_per_rev = c->encoder_ppr * c->gear_ratio;
-    uint64_t period = (uint64_t)llround(c->tof_period_s / c->step_s);
-    if (period == 0) period = 1;
+    battery_init(&s->battery, &c->battery);
     for (int i = 0; i < 2; i++) {
+        const drive_spec_t *d = &c->drive[i];
         /* right minus left, in per cent of the mean */
-        motor_init(&s->motor[i], c, 1.0 + (i == WORLD_LEFT ? -0.005 : 0.005) * c->motor_k_diff_pct);
-        encoder_init(&s->encoder[i], counts_per_rev, world_wheel_angle(s->world, i));
+        motor_init(&s->motor[i], d, battery_ocv(&s->battery), c->battery.r_ohm,
+                   1.0 + (i == WORLD_LEFT ? -0.005 : 0.005) * c->motor_k_diff_pct);
+        encoder_init(&s->encoder[i], d->encoder_ppr * d->gear_ratio, world_wheel_angle(s->world, i));
         s->cmd[i] = 0;
     }
+    for (int g = 0; g < SIM_EMITTER_GROUPS; g++) s->emitter[g] = 0;
     for (int i = 0; i < WORLD_TOF_COUNT; i++) {
-        tof_init(&s->tof[i], c, seed, (unsigned)i);
-        s->tof_last[i].dist_m = c->tof_range_m;
+        s->tof_last[i].dist_m = 0;
         s->tof_last[i].timeout = 1;
         s->tof_true_m[i] = -1;
-        s->tof_next_step[i] = (uint64_t)i * period / WORLD_TOF_COUNT; /* staggered */
         s->tof_count[i] = 0;
     }
     s->tof_enabled = 1;
     s->diverged = 0;
-    race_init(&s->race, m, cell, c->time_limit_s);
     s->step = 0;
+    if (parts_init(s, seed) != 0) {
+        sim_free(s);
+        return -1;
+    }
+    tof_mirror(s);
+    race_init(&s->race, m, cell, c->time_limit_s);
     return 0;
 }
 
@@ -64,9 +125,25 @@ void sim_free(sim_t *s)
 {
     world_destroy(s->world);
     s->world = NULL;
+    for (int i = 0; i < ROBOT_MAX_PARTS; i++) {
+        free(s->part_state[i]);
+        s->part_state[i] = NULL;
+    }
 }
 
 double sim_time_s(const sim_t *s) { return (double)s->step * s->cfg.step_s; }
+
+/* The battery: each motor sees the open-circuit voltage less the other
+ * motor's share of the sag (its own is solved in its circuit, motor.c);
+ * the charge drawn is the H-bridges' input current. */
+static void battery_step(sim_t *s, double dt)
+{
+    double i_in[2];
+    for (int i = 0; i < 2; i++) i_in[i] = fabs(s->motor[i].v_applied) * s->motor[i].i_a / (s->motor[i].battery_v > 0 ? s->motor[i].battery_v : 1);
+    battery_draw(&s->battery, fabs(i_in[0]) + fabs(i_in[1]), dt);
+    double ocv = battery_ocv(&s->battery), r = s->cfg.battery.r_ohm;
+    for (int i = 0; i < 2; i++) s->motor[i].battery_v = ocv - r * fabs(i_in[1 - i]);
+}
 
 void sim_step(sim_t *s)
 {
@@ -82,27 +159,61 @@ void sim_step(sim_t *s)
     }
     for (int i = 0; i < 2; i++) motor_after(&s->motor[i], &d[i], world_wheel_rate(s->world, i), dt);
     for (int i = 0; i < 2; i++) encoder_update(&s->encoder[i], world_wheel_angle(s->world, i));
-    uint64_t period = (uint64_t)llround(s->cfg.tof_period_s / dt);
-    if (period == 0) period = 1;
-    for (int i = 0; i < WORLD_TOF_COUNT; i++) {
-        if (s->step < s->tof_next_step[i]) continue;
-        s->tof_next_step[i] += period;
-        if (!s->tof_enabled) continue;
-        /* rays only when a sensor updates: 3 rays per 30 ms, not per step */
-        s->tof_true_m[i] = world_tof_ray(s->world, i, s->cfg.tof_range_m);
-        s->tof_last[i] = tof_measure(&s->tof[i], s->tof_true_m[i]);
-        s->tof_count[i]++;
-    }
-    double x, y, h;
-    world_pose(s->world, &x, &y, &h);
-    race_update(&s->race, sim_time_s(s), x, y);
+    battery_step(s, dt);
+    sensor_ctx_t x = ctx(s);
+    for (int i = 0; i < s->ntof; i++) ((tof_state_t *)s->part_state[s->tof_part[i]])->enabled = s->tof_enabled;
+    for (int i = 0; i < s->cfg.nparts; i++)
+        if (s->cfg.part[i].kind->step) s->cfg.part[i].kind->step(s->part_state[i], &s->cfg.part[i], &x);
+    tof_mirror(s);
+    double px, py, h;
+    world_pose(s->world, &px, &py, &h);
+    race_update(&s->race, sim_time_s(s), px, py);
 }
 
-/* stubs until the robot file's components are wired in (issue 17) */
-int sim_ir_count(const sim_t *s) { (void)s; return 0; }
-void sim_emitter_set(sim_t *s, unsigned group, int on) { (void)s; (void)group; (void)on; }
-int sim_emitter(const sim_t *s, unsigned group) { (void)s; (void)group; return 0; }
-unsigned sim_ir_read(sim_t *s, unsigned i) { (void)s; (void)i; return 0; }
-int sim_has_gyro(const sim_t *s) { (void)s; return 0; }
-double sim_gyro_rad_s(const sim_t *s) { (void)s; return 0; }
-double sim_battery_v(const sim_t *s) { return s->cfg.battery_v; }
+int sim_ir_count(const sim_t *s) { return (int)robot_count(&s->cfg, "ir"); }
+
+void sim_emitter_set(sim_t *s, unsigned group, int on)
+{
+    if (group < SIM_EMITTER_GROUPS) s->emitter[group] = on != 0;
+}
+
+int sim_emitter(const sim_t *s, unsigned group) { return group < SIM_EMITTER_GROUPS ? s->emitter[group] : 0; }
+
+unsigned sim_ir_read(sim_t *s, unsigned i)
+{
+    int k = robot_part_of_kind(&s->cfg, "ir", i);
+    if (k < 0) return 0;
+    sensor_ctx_t x = ctx(s);
+    return (unsigned)ir_sample(s->part_state[k], &s->cfg.part[k], &x);
+}
+
+int sim_has_gyro(const sim_t *s) { return robot_count(&s->cfg, "gyro") > 0; }
+
+double sim_gyro_rad_s(const sim_t *s)
+{
+    int k = robot_part_of_kind(&s->cfg, "gyro", 0);
+    return k < 0 ? 0.0 : ((const gyro_t *)s->part_state[k])->held_rad_s;
+}
+
+double sim_battery_v(const sim_t *s)
+{
+    /* the terminal voltage: the open-circuit voltage less the sag of both motors' input currents */
+    double i_in = 0;
+    for (int i = 0; i < 2; i++)
+        i_in += fabs(s->motor[i].v_applied * s->motor[i].i_a) / (s->motor[i].battery_v > 0 ? s->motor[i].battery_v : 1);
+    return battery_ocv(&s->battery) - s->cfg.battery.r_ohm * i_in;
+}
+
+void sim_tof_origin(const sim_t *s, int i, double pos_m[3], double *dir_rad)
+{
+    double axis[3], left[3], up[3];
+    sensor_frame(s->world, &s->cfg.part[s->tof_part[i]], pos_m, axis, left, up);
+    *dir_rad = atan2(axis[1], axis[0]);
+}
+
+int sim_part_values(sim_t *s, int i, double v[4])
+{
+    if (i < 0 || i >= s->cfg.nparts) return 0;
+    sensor_ctx_t x = ctx(s);
+    return s->cfg.part[i].kind->read(s->part_state[i], &s->cfg.part[i], &x, v);
+}

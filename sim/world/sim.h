@@ -13,7 +13,11 @@
 #include "motor.h"
 #include "race.h"
 #include "world/sensors/tof.h"
+#include "battery.h"
+#include "robot.h"
 #include "world.h"
+
+#define SIM_EMITTER_GROUPS 4
 
 typedef struct sim_s {
     simcfg_t cfg;
@@ -22,11 +26,18 @@ typedef struct sim_s {
     world_t *world;
     motor_t motor[2];
     encoder_t encoder[2];
-    tof_t tof[WORLD_TOF_COUNT];
+    battery_t battery;
+    void *part_state[ROBOT_MAX_PARTS]; /* each sensor's run-time state (its kind's) */
+    int emitter[SIM_EMITTER_GROUPS];   /* emitter groups on (1) or off */
+    /* The robot's ToF sensors (its [tof.*], in the file's order), as the HAL
+     * and the link name them: left, front, right. A copy of their state
+     * after each step; WORLD_TOF_COUNT slots, ntof used. */
+    int ntof;
+    int tof_part[WORLD_TOF_COUNT];     /* index in cfg.part */
     tof_reading_t tof_last[WORLD_TOF_COUNT];
     double tof_true_m[WORLD_TOF_COUNT]; /* ray distance behind the last reading, -1 none */
-    uint64_t tof_next_step[WORLD_TOF_COUNT];
     uint32_t tof_count[WORLD_TOF_COUNT]; /* readings taken */
+    double tof_range_m;                /* the first ToF's range (the link's distance scale); 1.2 without */
     int tof_enabled;
     race_t race;
     uint64_t step;           /* physics steps done */
@@ -51,7 +62,6 @@ double sim_time_s(const sim_t *s);
  * they are (0..1023; 0 past the count). The gyro's z rate (rad/s, CCW
  * positive, as its sample rate holds it; 0 without a gyro) and the
  * battery's terminal voltage (V; 0 without one) are the latest step's. */
-#define SIM_EMITTER_GROUPS 4
 int sim_ir_count(const sim_t *s);
 void sim_emitter_set(sim_t *s, unsigned group, int on);
 int sim_emitter(const sim_t *s, unsigned group);
@@ -59,5 +69,10 @@ unsigned sim_ir_read(sim_t *s, unsigned i);
 int sim_has_gyro(const sim_t *s);
 double sim_gyro_rad_s(const sim_t *s);
 double sim_battery_v(const sim_t *s);
+/* Where ToF sensor i (0..ntof-1) sits and looks (world, m; heading rad). */
+void sim_tof_origin(const sim_t *s, int i, double pos_m[3], double *dir_rad);
+/* Every sensor's latest values for telemetry (no noise drawn): part i's
+ * into v, how many (its kind's `units`). */
+int sim_part_values(sim_t *s, int i, double v[4]);
 
 #endif

@@ -30,7 +30,6 @@ struct world {
     double tyre_mu[2];     /* each tyre's static friction (asymmetry) */
     double box_offset[3];  /* chassis box centre in the chassis body frame */
     double com[3];         /* chassis centre of mass in the robot frame (world_place) */
-    double tof_pos[WORLD_TOF_COUNT][3], tof_dir[WORLD_TOF_COUNT];
     int touching, touched_last;
     unsigned collisions;
 };
@@ -116,7 +115,9 @@ static void build_robot(world_t *w, double x, double y, double heading)
 
     for (int s = 0; s < 2; s++) {
         /* each wheel's own diameter (asymmetry: right minus left) */
-        double rs = rw + (s == WORLD_LEFT ? -0.25 : 0.25) * c->wheel_d_diff_m;
+        /* the robot file's right-minus-left diameter plus the config's asymmetry */
+        double diff = c->wheel_d_diff_m + (c->wheel_right_d_m - c->wheel_left_d_m);
+        double rs = rw + (s == WORLD_LEFT ? -0.25 : 0.25) * diff;
         double wp[3] = { s == WORLD_LEFT ? -c->wheel_x_m : c->wheel_x_m, c->axle_y_m, rs }, ww[3];
         dMass m;
         dMatrix3 r2, r3;
@@ -125,8 +126,9 @@ static void build_robot(world_t *w, double x, double y, double heading)
         /* cylinder axis along z: the mass is set in the wheel frame, then
          * the body is turned so that z points along the robot's x */
         dMassSetCylinderTotal(&m, c->wheel_mass_kg, 3, rs, c->wheel_w_m);
-        if (c->rotor_inertia_kgm2 > 0 && c->motor_model != MOTOR_MODEL_PAPER) /* rotor inertia reflected through the gearbox: J * N^2 */
-            m.I[2 * 4 + 2] += c->rotor_inertia_kgm2 * c->gear_ratio * c->gear_ratio;
+        const drive_spec_t *dr = &c->drive[s];
+        if (dr->rotor_inertia_kgm2 > 0 && dr->motor_model != MOTOR_MODEL_PAPER) /* rotor inertia reflected through the gearbox: J * N^2 */
+            m.I[2 * 4 + 2] += dr->rotor_inertia_kgm2 * dr->gear_ratio * dr->gear_ratio;
         dBodySetMass(w->wheel[s], &m);
         dBodySetPosition(w->wheel[s], ww[0], ww[1], ww[2]);
         dRFromAxisAndAngle(r2, 0, 1, 0, M_PI / 2);
@@ -169,16 +171,6 @@ static void build_robot(world_t *w, double x, double y, double heading)
         dGeomSetCollideBits(w->wheel_geom[k], CAT_FLOOR);
         dGeomSetCategoryBits(w->wheel_side[k], CAT_WHEEL_SIDE);
         dGeomSetCollideBits(w->wheel_side[k], CAT_STATIC);
-    }
-
-    /* ToF sensors at the body's mid height, inside the body outline (a ray
-     * starting inside a wall reports 0) */
-    double zs = box_p[2], side = c->tof_side_angle_deg * M_PI / 180;
-    double pos[3][3] = { { -c->tof_x_m, c->tof_y_m, zs }, { 0, c->tof_front_y_m, zs }, { c->tof_x_m, c->tof_y_m, zs } };
-    double dir[3] = { M_PI / 2 + side, M_PI / 2, M_PI / 2 - side };
-    for (int s = 0; s < WORLD_TOF_COUNT; s++) {
-        for (int k = 0; k < 3; k++) w->tof_pos[s][k] = pos[s][k] - com[k];
-        w->tof_dir[s] = dir[s];
     }
 }
 
@@ -449,21 +441,19 @@ double world_ray(world_t *w, double x_m, double y_m, double z_m, double dir_rad,
     return world_ray_normal(w, pos, dir, max_m, normal);
 }
 
-void world_tof_origin(const world_t *w, int s, double pos_m[3], double *dir_rad)
+void world_body_point(const world_t *w, const double p_m[3], double out_m[3])
 {
-    dVector3 p, f;
-    double a = w->tof_dir[s];
-    dBodyGetRelPointPos(w->chassis, w->tof_pos[s][0], w->tof_pos[s][1], w->tof_pos[s][2], p);
-    dBodyVectorToWorld(w->chassis, cos(a), sin(a), 0, f);
-    for (int k = 0; k < 3; k++) pos_m[k] = p[k];
-    *dir_rad = atan2(f[1], f[0]);
+    dVector3 q;
+    /* the chassis frame's origin is the body's centre on the floor; ODE's is the centre of mass */
+    dBodyGetRelPointPos(w->chassis, p_m[0] - w->com[0], p_m[1] - w->com[1], p_m[2] - w->com[2], q);
+    for (int k = 0; k < 3; k++) out_m[k] = q[k];
 }
 
-double world_tof_ray(world_t *w, int s, double max_m)
+void world_body_vector(const world_t *w, const double v[3], double out[3])
 {
-    double p[3], dir;
-    world_tof_origin(w, s, p, &dir);
-    return world_ray(w, p[0], p[1], p[2], dir, max_m);
+    dVector3 q;
+    dBodyVectorToWorld(w->chassis, v[0], v[1], v[2], q);
+    for (int k = 0; k < 3; k++) out[k] = q[k];
 }
 
 void world_place(world_t *w, double x_m, double y_m, double heading_rad, const double wheel_rad[2])

@@ -51,12 +51,10 @@ double world_body_z(const world_t *w);
 double world_wheel_angle(const world_t *w, int side);
 double world_wheel_rate(const world_t *w, int side);
 
-/* True distance from sensor s's origin to the nearest wall or post along
- * its ray, in metres; -1 if nothing within max_m. */
-double world_tof_ray(world_t *w, int s, double max_m);
-/* Where sensor s sits (world point, m) and the way it looks (heading,
- * rad), for drawing its ray. */
-void world_tof_origin(const world_t *w, int s, double pos_m[3], double *dir_rad);
+/* A point (m) and a direction of the robot's chassis frame (origin at
+ * the body's centre on the floor, x right, y forward, z up) in the world. */
+void world_body_point(const world_t *w, const double p_m[3], double out_m[3]);
+void world_body_vector(const world_t *w, const double v[3], double out[3]);
 /* Cast a ray from any point in any horizontal direction (for tests). */
 double world_ray(world_t *w, double x_m, double y_m, double z_m, double dir_rad, double max_m);
 /* The same for a ray from pos_m along any direction dir (need not be unit

@@ -4,6 +4,8 @@
 
 #include <math.h>
 
+#include "sensor.h"
+
 #define DEG_PER_RAD (180.0 / M_PI)
 
 /* ST LSM6DS3 datasheet, DocID026899 Rev 8 (Feb 2016), Table 3 "Gyroscope
@@ -64,3 +66,40 @@ double gyro_read(gyro_t *g, double true_rate_rad_s, double t_s)
     g->held_rad_s = sample_out(g, true_rate_rad_s * DEG_PER_RAD, n) / DEG_PER_RAD;
     return g->held_rad_s;
 }
+
+/* ---- the sensor kind ---- */
+
+#define G(name, def, min, max, unit, src) \
+    { NULL, #name, offsetof(gyro_spec_t, name), def, min, max, unit, src, NULL, 0, 0, 0 }
+static const keytab_t keys[] = {
+    G(noise_density_dps_rthz, 0.007, 0, 10, "deg/s/sqrt(Hz)", "LSM6DS3 datasheet Table 3: Rn 7 mdps/sqrt(Hz)"),
+    G(bias_dps, 10, 0, 1000, "deg/s", "LSM6DS3 datasheet Table 3: zero-rate level +-10 dps, as 1 sigma"),
+    G(bias_rw_dps_rts, 0.01, 0, 10, "deg/s/sqrt(s)", "ours: not in the datasheet"),
+    G(scale_error_pct, 1, -50, 50, "%", "ours: an uncalibrated part"),
+    G(full_scale_dps, 1000, 1, 10000, "deg/s", "LSM6DS3: FS +-1000 dps"),
+    G(sample_rate_hz, 833, 1, 100000, "Hz", "LSM6DS3: ODR 833 Hz"),
+    G(lsb_dps, 0.035, 0, 10, "deg/s", "LSM6DS3 datasheet Table 3: 35 mdps/LSB at +-1000 dps"),
+};
+
+static void part_init(void *state, const robot_part_t *p, const simcfg_t *c, uint64_t seed, unsigned index, unsigned count)
+{
+    gyro_init(state, (const gyro_spec_t *)p->spec, seed, index);
+}
+
+/* every step: the samples take the true rate of their own time */
+static void part_step(void *state, const robot_part_t *p, const sensor_ctx_t *x)
+{
+    gyro_read(state, x->yaw_rate_rad_s, x->t_s);
+}
+
+static int part_read(void *state, const robot_part_t *p, const sensor_ctx_t *x, double v[SENSOR_VALUES])
+{
+    v[0] = ((const gyro_t *)state)->held_rad_s * DEG_PER_RAD;
+    v[1] = x->yaw_rate_rad_s * DEG_PER_RAD;
+    return 2;
+}
+
+const sensor_kind_t sensor_gyro = {
+    "gyro", "MEMS z-rate gyroscope: white noise, bias, bias random walk, scale error, saturation, sample and hold, LSB",
+    keys, sizeof keys / sizeof keys[0], NULL, sizeof(gyro_t), part_init, part_step, part_read, "dps true_dps",
+};

@@ -3,6 +3,9 @@
 #include "ir.h"
 
 #include <math.h>
+#include <stdio.h>
+
+#include "sensor.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
@@ -81,15 +84,17 @@ void ir_init(ir_t *ir, const ir_spec_t *s, uint64_t seed, unsigned index)
     rng_init(&ir->rng, seed, RNG_STREAM_IR + index);
 }
 
-int ir_full_scale(const ir_t *ir) { return (1 << ir->spec.adc_bits) - 1; }
+int ir_full_scale(const ir_t *ir) { return (1 << (int)ir->spec.adc_bits) - 1; }
 
-double ir_received(const ir_t *ir, world_t *w, const double pos_m[3], double dir_rad)
+double ir_received_frame(const ir_t *ir, world_t *w, const double pos_m[3], const double axis[3], const double left[3],
+                         const double up[3])
 {
     const ir_spec_t *s = &ir->spec;
-    double c = cos(dir_rad), sn = sin(dir_rad), sum = 0;
+    double sum = 0;
     for (int i = 0; i < ir->nrays; i++) {
         const double *o = ir->off[i];
-        double u[3] = { o[0] * c - o[1] * sn, o[0] * sn + o[1] * c, o[2] }, n[3];
+        double u[3], n[3];
+        for (int k = 0; k < 3; k++) u[k] = o[0] * axis[k] + o[1] * left[k] + o[2] * up[k];
         double d = world_ray_normal(w, pos_m, u, s->max_m, n);
         if (d < 0) continue;
         double cosi = -(n[0] * u[0] + n[1] * u[1] + n[2] * u[2]);
@@ -100,12 +105,107 @@ double ir_received(const ir_t *ir, world_t *w, const double pos_m[3], double dir
     return sum;
 }
 
-int ir_read(ir_t *ir, world_t *w, const double pos_m[3], double dir_rad, int emitter_on)
+/* A level sensor's frame looking along dir_rad. */
+static void level_frame(double dir_rad, double axis[3], double left[3], double up[3])
+{
+    double c = cos(dir_rad), sn = sin(dir_rad);
+    axis[0] = c, axis[1] = sn, axis[2] = 0;
+    left[0] = -sn, left[1] = c, left[2] = 0;
+    up[0] = 0, up[1] = 0, up[2] = 1;
+}
+
+double ir_received(const ir_t *ir, world_t *w, const double pos_m[3], double dir_rad)
+{
+    double a[3], l[3], u[3];
+    level_frame(dir_rad, a, l, u);
+    return ir_received_frame(ir, w, pos_m, a, l, u);
+}
+
+int ir_read_frame(ir_t *ir, world_t *w, const double pos_m[3], const double axis[3], const double left[3], const double up[3],
+                  int emitter_on)
 {
     const ir_spec_t *s = &ir->spec;
     double v = s->ambient_counts + s->noise_counts * rng_gauss(&ir->rng);
-    if (emitter_on) v += s->gain_counts * s->ref_m * s->ref_m * ir_received(ir, w, pos_m, dir_rad);
+    if (emitter_on) v += s->gain_counts * s->ref_m * s->ref_m * ir_received_frame(ir, w, pos_m, axis, left, up);
     double top = ir_full_scale(ir);
     v = floor(v + 0.5);
     return v < 0 ? 0 : v > top ? (int)top : (int)v;
 }
+
+int ir_read(ir_t *ir, world_t *w, const double pos_m[3], double dir_rad, int emitter_on)
+{
+    double a[3], l[3], u[3];
+    level_frame(dir_rad, a, l, u);
+    return ir_read_frame(ir, w, pos_m, a, l, u, emitter_on);
+}
+
+/* ---- the sensor kind ---- */
+
+#define I(name, field, def, min, max, per, whole, unit, src) \
+    { NULL, #name, offsetof(ir_part_spec_t, field), def, min, max, unit, src, NULL, whole, per, 0 }
+static const keytab_t keys[] = {
+    I(emitter, emitter, KEYTAB_REQUIRED, 0, 3, 0, 1, "group", "the emitter group that lights it (hal_emitter)"),
+    I(adc_channel, adc_channel, -1, -1, 15, 0, 1, "channel", "the ADC channel of its detector (-1: none; board emulation)"),
+    I(measured_centred, measured_centred, -1, -1, 1023, 0, 0, "counts", "the real robot's lit-minus-dark reading centred between side walls, no wall ahead (mmsim --validate)"),
+    I(measured_backed, measured_backed, -1, -1, 1023, 0, 0, "counts", "the real robot's lit-minus-dark reading backed against a rear wall, a wall ahead (mmsim --validate)"),
+    I(gain_counts, model.gain_counts, 1000, 0, 1e6, 0, 0, "counts", "lit minus dark for a reflectivity-1 wall straight on at ref_mm; fit it to your robot's readings"),
+    I(ref_mm, model.ref_m, 50, 1, 1000, 1000, 0, "mm", "the gain's reference distance"),
+    I(half_angle_deg, model.half_angle_deg, 3, 0.5, 60, 0, 0, "deg", "SFH4550 datasheet: +-3 deg half angle"),
+    I(det_half_angle_deg, model.det_half_angle_deg, 12, 0.5, 90, 0, 0, "deg", "SFH309FA datasheet: +-12 deg half angle"),
+    I(cone_deg, model.cone_deg, 6, 0, 60, 0, 0, "deg", "ours: the outermost ring at two emitter half angles"),
+    I(rings, model.rings, 2, 0, IR_MAX_RINGS, 0, 1, "1", "ours: rings of rays about the axis"),
+    I(rays_per_ring, model.rays_per_ring, 8, 1, IR_MAX_PER_RING, 0, 1, "1", "ours: 1 + 2 x 8 = 17 rays"),
+    I(near_mm, model.near_m, 15, 0.1, 200, 1000, 0, "mm", "ours: closer, the emitter's spot leaves the detector's view"),
+    I(max_mm, model.max_m, 500, 10, 2000, 1000, 0, "mm", "ours: the rays' length (a wall at 0.5 m returns ~8 counts)"),
+    I(ambient_counts, model.ambient_counts, 10, 0, 1023, 0, 0, "counts", "ours: the dark reading, shielded from room light"),
+    I(noise_counts, model.noise_counts, 0.585, 0, 100, 0, 0, "counts", "ukmarsbot docs/analogue-read.md: variance 0.3425 counts^2"),
+    I(adc_bits, model.adc_bits, 10, 1, 16, 0, 1, "bits", "ATmega328P: 10-bit ADC"),
+};
+
+static void part_init(void *state, const robot_part_t *p, const simcfg_t *c, uint64_t seed, unsigned index, unsigned count)
+{
+    ir_state_t *st = state;
+    ir_spec_t m = ((const ir_part_spec_t *)p->spec)->model;
+    m.reflectivity = c->wall_reflectivity;
+    ir_init(&st->ir, &m, seed, index);
+    st->last[0] = st->last[1] = -1;
+    st->count = 0;
+}
+
+/* Telemetry: the latest samples (reading draws noise, so it is the
+ * firmware's to do: ir_sample). */
+static int part_read(void *state, const robot_part_t *p, const sensor_ctx_t *x, double v[SENSOR_VALUES])
+{
+    const ir_state_t *st = state;
+    v[0] = st->last[0];
+    v[1] = st->last[1];
+    v[2] = st->last[0] >= 0 && st->last[1] >= 0 ? st->last[1] - st->last[0] : -1;
+    return 3;
+}
+
+int ir_sample(void *state, const robot_part_t *p, const sensor_ctx_t *x)
+{
+    ir_state_t *st = state;
+    int on = x->emitter[(int)((const ir_part_spec_t *)p->spec)->emitter & 3] != 0;
+    double pos[3], axis[3], left[3], up[3];
+    sensor_frame(x->world, p, pos, axis, left, up);
+    int v = ir_read_frame(&st->ir, x->world, pos, axis, left, up, on);
+    st->last[on] = v;
+    st->count++;
+    return v;
+}
+
+static int part_check(const robot_part_t *p, char *reason, size_t len)
+{
+    const ir_spec_t *m = &((const ir_part_spec_t *)p->spec)->model;
+    if (m->near_m >= m->max_m) {
+        snprintf(reason, len, "near_mm: %g mm is not below max_mm %g mm", m->near_m * 1000, m->max_m * 1000);
+        return -1;
+    }
+    return 0;
+}
+
+const sensor_kind_t sensor_ir = {
+    "ir", "IR reflectance wall sensor: emitter and phototransistor, a cone of rays, 1/d^2 with near-field saturation, cos incidence, ambient, 10-bit ADC",
+    keys, sizeof keys / sizeof keys[0], part_check, sizeof(ir_state_t), part_init, NULL, part_read, "dark lit lit_minus_dark",
+};

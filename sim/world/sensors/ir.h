@@ -41,6 +41,7 @@
 #include <stdint.h>
 #include "world/rng.h"
 #include "world/world.h"
+#include "world/sensors/sensor.h"
 
 #define IR_MAX_RINGS 4
 #define IR_MAX_PER_RING 16
@@ -51,8 +52,8 @@ typedef struct {
     double half_angle_deg;     /* emitter: half-intensity angle, deg */
     double det_half_angle_deg; /* detector: half-sensitivity angle, deg */
     double cone_deg;           /* the outermost ring's angle off the axis, deg */
-    int rings;                 /* rings of rays about the centre ray, 0..IR_MAX_RINGS */
-    int rays_per_ring;         /* 1..IR_MAX_PER_RING */
+    double rings;              /* rings of rays about the centre ray, 0..IR_MAX_RINGS */
+    double rays_per_ring;      /* 1..IR_MAX_PER_RING */
     double reflectivity;       /* of the walls and posts, 0..1 */
     double gain_counts;        /* lit minus dark, counts, for reflectivity 1 straight on at ref_m */
     double ref_m;              /* the gain's reference distance, m */
@@ -60,7 +61,7 @@ typedef struct {
     double max_m;              /* the rays' length, m */
     double ambient_counts;     /* the dark reading, counts */
     double noise_counts;       /* standard deviation of one sample, counts */
-    int adc_bits;              /* 10: full scale 1023 */
+    double adc_bits;           /* 10: full scale 1023 */
 } ir_spec_t;
 
 typedef struct {
@@ -71,6 +72,22 @@ typedef struct {
     rng_t rng;
 } ir_t;
 
+/* The robot file's [ir.NAME]: the model and where it is wired. */
+typedef struct {
+    ir_spec_t model;           /* reflectivity comes from the config ([world] wall_reflectivity) */
+    double emitter;            /* the emitter group that lights it, 0..3 (hal_emitter) */
+    double adc_channel;        /* the MCU's ADC channel its detector feeds (a board's business; issue 18) */
+    double measured_centred;   /* lit minus dark on the real robot centred in a cell between side walls, no wall ahead; -1 none */
+    double measured_backed;    /* lit minus dark with its back against a cell's rear wall, a wall ahead; -1 none */
+} ir_part_spec_t;
+
+/* An [ir.NAME] sensor at run time: the model and its latest samples. */
+typedef struct {
+    ir_t ir;
+    int last[2];               /* the latest sample with its emitter off [0] and on [1], counts; -1 none */
+    uint32_t count;            /* samples taken */
+} ir_state_t;
+
 /* UKMARSBOT's sensor (values and sources in ir.c). */
 void ir_spec_default(ir_spec_t *s);
 /* The sensor with this spec, its noise stream from the run's seed and the
@@ -80,9 +97,21 @@ void ir_init(ir_t *ir, const ir_spec_t *s, uint64_t seed, unsigned index);
  * above: rho/d^2 for a wall straight on at d >= near_m), for a sensor at
  * pos_m (world, m) looking horizontally along dir_rad. */
 double ir_received(const ir_t *ir, world_t *w, const double pos_m[3], double dir_rad);
+/* The same for a sensor whose frame is given: where it looks (axis), its
+ * left and up (unit vectors, world frame). */
+double ir_received_frame(const ir_t *ir, world_t *w, const double pos_m[3], const double axis[3], const double left[3],
+                         const double up[3]);
+/* One ADC sample at this frame (emitter on 1 or off 0). */
+int ir_read_frame(ir_t *ir, world_t *w, const double pos_m[3], const double axis[3], const double left[3], const double up[3],
+                  int emitter_on);
+
 /* One ADC sample, counts 0..2^bits - 1, with the emitter on (1) or off (0)
  * at the moment of the sample. With the emitter off no ray is cast. */
 int ir_read(ir_t *ir, world_t *w, const double pos_m[3], double dir_rad, int emitter_on);
+/* An [ir.NAME] sensor's ADC sample now, with its emitter group as the
+ * context says (ir_state_t; the HAL's hal_ir_raw). */
+int ir_sample(void *state, const robot_part_t *p, const sensor_ctx_t *x);
+
 /* The ADC's top count, 2^bits - 1. */
 int ir_full_scale(const ir_t *ir);
 

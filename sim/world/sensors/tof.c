@@ -1,13 +1,15 @@
-/* tof.c - ToF noise and clamps (see tof.h). */
+/* tof.c - ToF noise and clamps, and the [tof.NAME] sensor kind (see tof.h). */
 #include "tof.h"
 
 #include <math.h>
 
-void tof_init(tof_t *t, const simcfg_t *c, uint64_t seed, unsigned index)
+#include "sensor.h"
+
+void tof_init(tof_t *t, const tof_spec_t *s, uint64_t seed, unsigned index)
 {
-    t->range_m = c->tof_range_m;
-    t->blind_m = c->tof_blind_m;
-    t->cv = c->tof_cv;
+    t->range_m = s->range_m;
+    t->blind_m = s->blind_m;
+    t->cv = s->cv;
     rng_init(&t->rng, seed, RNG_STREAM_TOF + index);
 }
 
@@ -25,3 +27,63 @@ tof_reading_t tof_measure(tof_t *t, double true_m)
     out.timeout = 0;
     return out;
 }
+
+/* ---- the sensor kind ---- */
+
+#define T(name, field, def, min, max, per, unit, src) \
+    { NULL, #name, offsetof(tof_spec_t, field), def, min, max, unit, src, NULL, 0, per, 0 }
+static const keytab_t keys[] = {
+    T(range_mm, range_m, 1200, 50, 10000, 1000, "mm", "VL53L0X long range, as the paper's simulator (its Arduino side assumed 1.0 m)"),
+    T(blind_mm, blind_m, 0, 0, 500, 1000, "mm", "paper: no blind spot modelled"),
+    T(cv, cv, 0.05, 0, 1, 0, "1", "noise sigma = cv * distance (paper)"),
+    T(period_ms, period_s, 30, 1, 1000, 1000, "ms", "VL53L0X default timing budget ~30 ms"),
+};
+
+static void init(void *state, const robot_part_t *p, const simcfg_t *c, uint64_t seed, unsigned index, unsigned count)
+{
+    tof_state_t *t = state;
+    const tof_spec_t *s = (const tof_spec_t *)p->spec;
+    tof_init(&t->tof, s, seed, index);
+    t->period_steps = (uint64_t)llround(s->period_s / c->step_s);
+    if (t->period_steps == 0) t->period_steps = 1;
+    t->next_step = (uint64_t)index * t->period_steps / count; /* staggered */
+    t->last.dist_m = s->range_m;
+    t->last.timeout = 1;
+    t->true_m = -1;
+    t->count = 0;
+    t->enabled = 1;
+}
+
+/* The ray: from the sensor along its heading (the chassis' tilt aside). */
+static double ray(const robot_part_t *p, world_t *w, double max_m)
+{
+    double pos[3], axis[3], left[3], up[3];
+    sensor_frame(w, p, pos, axis, left, up);
+    return world_ray(w, pos[0], pos[1], pos[2], atan2(axis[1], axis[0]), max_m);
+}
+
+static void step(void *state, const robot_part_t *p, const sensor_ctx_t *x)
+{
+    tof_state_t *t = state;
+    if (x->step < t->next_step) return;
+    t->next_step += t->period_steps;
+    if (!t->enabled) return;
+    /* rays only when the sensor updates: one ray per 30 ms, not per step */
+    t->true_m = ray(p, x->world, t->tof.range_m);
+    t->last = tof_measure(&t->tof, t->true_m);
+    t->count++;
+}
+
+static int read(void *state, const robot_part_t *p, const sensor_ctx_t *x, double v[SENSOR_VALUES])
+{
+    const tof_state_t *t = state;
+    v[0] = t->last.dist_m * 1000.0;
+    v[1] = t->last.timeout;
+    v[2] = t->true_m < 0 ? -1 : t->true_m * 1000.0;
+    return 3;
+}
+
+const sensor_kind_t sensor_tof = {
+    "tof", "time-of-flight distance sensor (the paper's model: a ray, Gaussian noise of cv * distance, timeout at range)",
+    keys, sizeof keys / sizeof keys[0], NULL, sizeof(tof_state_t), init, step, read, "mm timeout true_mm",
+};

@@ -17,16 +17,34 @@
 #include "world/rng.h"
 
 typedef struct {
-    double range_m, blind_m, cv;
-    rng_t rng;
-} tof_t;
-
-typedef struct {
     double dist_m;    /* what the sensor reports, m */
     int timeout;      /* 1 = nothing within range */
 } tof_reading_t;
 
-void tof_init(tof_t *t, const simcfg_t *c, uint64_t seed, unsigned index);
+/* The robot file's [tof.NAME] specification (all doubles: keytab.h). */
+typedef struct {
+    double range_m, blind_m, cv;
+    double period_s;  /* between readings */
+} tof_spec_t;
+
+typedef struct {
+    double range_m, blind_m, cv;
+    rng_t rng;
+} tof_t;
+
+/* A tof sensor of the robot at run time: the model, its schedule and its
+ * latest reading. */
+typedef struct {
+    tof_t tof;
+    uint64_t next_step, period_steps;
+    tof_reading_t last;
+    double true_m;       /* the ray behind the last reading, m; -1 none */
+    uint32_t count;      /* readings taken */
+    int enabled;         /* 0: readings paused (a link that sends none) */
+} tof_state_t;
+
+
+void tof_init(tof_t *t, const tof_spec_t *s, uint64_t seed, unsigned index);
 /* true_m < 0 means the ray hit nothing. */
 tof_reading_t tof_measure(tof_t *t, double true_m);
 /* A standard normal deviate from the sensor's stream (exposed for tests). */

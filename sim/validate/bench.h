@@ -1,0 +1,32 @@
+/* bench.h - the validation benches, shared by validate.c (motor, world,
+ * ToF) and validate_robot.c (the robot file's measured figures, IR, gyro).
+ * Private to sim/validate. */
+#ifndef VALIDATE_BENCH_H
+#define VALIDATE_BENCH_H
+
+#include "validate.h"
+#include "world/sim.h"
+
+typedef struct {
+    maze_t maze;
+    sim_t sim;
+} bench_t;
+
+extern bench_t bench; /* one at a time; maze_t and sim_t are large */
+
+/* An open field w x h cells (outer walls only), the robot in cell (sx, 0)
+ * facing north. */
+void bench_field(maze_t *m, uint8_t w, uint8_t h, uint8_t sx);
+/* A corridor of n cells running east, the robot in its first facing east. */
+void bench_corridor(maze_t *m, uint8_t n);
+/* Physics steps in `seconds`. */
+long bench_steps(const simcfg_t *c, double seconds);
+/* Append a check to v (at *n): passes as its bound says (validate.h). */
+void bench_add(validate_check_t *v, int *n, const char *name, double expected, double measured, const char *unit,
+         double tol_pct, int bound, const char *source);
+/* The robot file's checks: its [measured.*] figures and IR calibration
+ * readings reproduced, its IR sensors and gyro against their models'
+ * analytic values (validate_robot.c). Returns the new count. */
+int validate_robot_checks(const simcfg_t *c, validate_check_t *v, int n);
+
+#endif

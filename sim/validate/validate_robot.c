@@ -1,0 +1,251 @@
+/* validate_robot.c - the robot file's own checks (see bench.h): the
+ * figures measured on the real robot ([measured.NAME], the IR sensors'
+ * measured_centred / measured_backed) reproduced by the simulated robot the
+ * way they were measured, and the IR and gyro models against their
+ * analytic values. */
+#include "bench.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "world/robot.h"
+#include "world/sensors/gyro.h"
+#include "world/sensors/ir.h"
+
+#define DEG_PER_RAD (180.0 / M_PI)
+#define MEASURED "the robot file's [measured] section: the real robot's figure"
+
+/* Names and sources of per-sensor checks (validate_check_t keeps pointers). */
+static char names[VALIDATE_MAX_CHECKS][48];
+
+static const char *name_of(int n, const char *fmt, const char *sensor)
+{
+    snprintf(names[n], sizeof names[n], fmt, sensor);
+    return names[n];
+}
+
+/* The command for v_volt on the motor with the battery as it is now. */
+static int volt_cmd(const sim_t *s, double v_volt)
+{
+    double b = sim_battery_v(s);
+    long cmd = b > 0 ? lround(v_volt / b * MOTOR_CMD_MAX) : 0;
+    return (int)(cmd > MOTOR_CMD_MAX ? MOTOR_CMD_MAX : cmd < -MOTOR_CMD_MAX ? -MOTOR_CMD_MAX : cmd);
+}
+
+typedef struct {
+    double steady, tm_s; /* steady speed (m/s or rad/s) and the time to 63.2 % of it */
+} step_t;
+
+/* From rest in an open field, v_volt on both motors (rot: -v left, +v
+ * right, a spin counter-clockwise) for 1.2 s, as ukmars' motorlab steps a
+ * motor: the steady speed (mean of the last 0.2 s) and the time constant. */
+static step_t voltage_step(const simcfg_t *c, double v_volt, int rot)
+{
+    step_t r = { 0, 0 };
+    bench_field(&bench.maze, 10, 10, 4);
+    sim_t *s = &bench.sim;
+    if (sim_init(s, c, &bench.maze, 1) != 0) return r;
+    if (rot) world_place(s->world, 4.5 * c->cell_m, 4.5 * c->cell_m, M_PI / 2, NULL); /* the field's middle */
+    long n = bench_steps(c, 1.2), tail = bench_steps(c, 0.2);
+    static double trace[20000];
+    if (n > 20000) n = 20000;
+    for (long i = 0; i < n; i++) {
+        s->cmd[WORLD_LEFT] = volt_cmd(s, rot ? -v_volt : v_volt);
+        s->cmd[WORLD_RIGHT] = volt_cmd(s, v_volt);
+        sim_step(s);
+        double v, om;
+        world_velocity(s->world, &v, &om);
+        trace[i] = rot ? om : v;
+    }
+    for (long i = n - tail; i < n; i++) r.steady += trace[i] / tail;
+    for (long i = 0; i < n; i++)
+        if (trace[i] >= 0.632 * r.steady) {
+            double prev = i ? trace[i - 1] : 0, f = (0.632 * r.steady - prev) / (trace[i] - prev);
+            r.tm_s = (i + f) * c->step_s; /* trace[i] is after step i + 1 */
+            break;
+        }
+    sim_free(s);
+    return r;
+}
+
+static int motion_checks(const simcfg_t *c, validate_check_t *v, int n)
+{
+    const robot_measured_t *m = &c->measured;
+    /* two voltages: the slope leaves out the voltage friction takes (mazerunner-core's BIAS_FF) */
+    const double v1 = 1.5, v2 = 3.0;
+    if (m->fwd_km_mm_s_v > 0 || m->fwd_tm_s > 0) {
+        step_t a = voltage_step(c, v1, 0), b = voltage_step(c, v2, 0);
+        if (m->fwd_km_mm_s_v > 0)
+            bench_add(v, &n, "forward_km", m->fwd_km_mm_s_v, (b.steady - a.steady) / (v2 - v1) * 1000, "mm/s/V", 10,
+                      VALIDATE_NEAR, MEASURED " (slope of steady speed at 1.5 and 3 V)");
+        if (m->fwd_tm_s > 0)
+            bench_add(v, &n, "forward_tm", m->fwd_tm_s, b.tm_s, "s", 10, VALIDATE_NEAR, MEASURED " (a 3 V step from rest)");
+    }
+    if (m->rot_km_deg_s_v > 0 || m->rot_tm_s > 0) {
+        step_t a = voltage_step(c, v1, 1), b = voltage_step(c, v2, 1);
+        if (m->rot_km_deg_s_v > 0)
+            bench_add(v, &n, "rotation_km", m->rot_km_deg_s_v, (b.steady - a.steady) / (v2 - v1) * DEG_PER_RAD, "deg/s/V",
+                      10, VALIDATE_NEAR, MEASURED " (motors at -V/+V; slope at 1.5 and 3 V)");
+        if (m->rot_tm_s > 0)
+            bench_add(v, &n, "rotation_tm", m->rot_tm_s, b.tm_s, "s", 10, VALIDATE_NEAR, MEASURED " (a 3 V step from rest)");
+    }
+    return n;
+}
+
+/* 500 mm straight down a long field at about 0.15 m/s, steered on the true
+ * heading (a hand pushing it along a ruler): each encoder's counts. */
+static void counts_500mm(const simcfg_t *c, double counts[2])
+{
+    bench_field(&bench.maze, 3, 8, 1);
+    sim_t *s = &bench.sim;
+    counts[0] = counts[1] = 0;
+    if (sim_init(s, c, &bench.maze, 1) != 0) return;
+    double x0, y0, h0, x, y, h;
+    world_pose(s->world, &x0, &y0, &h0);
+    int32_t e0[2] = { s->encoder[0].count, s->encoder[1].count };
+    for (long i = 0; i < bench_steps(c, 20.0); i++) {
+        world_pose(s->world, &x, &y, &h);
+        if (hypot(x - x0, y - y0) >= 0.5) break;
+        double err = remainder(h - h0, 2 * M_PI), base = 0.6, k = 20.0; /* V, V/rad */
+        s->cmd[WORLD_LEFT] = volt_cmd(s, base + k * err);
+        s->cmd[WORLD_RIGHT] = volt_cmd(s, base - k * err);
+        sim_step(s);
+    }
+    world_pose(s->world, &x, &y, &h);
+    double scale = 0.5 / hypot(x - x0, y - y0); /* the last step's overshoot, < 0.2 mm */
+    for (int i = 0; i < 2; i++) counts[i] = (s->encoder[i].count - e0[i]) * scale;
+    sim_free(s);
+}
+
+static int count_checks(const simcfg_t *c, validate_check_t *v, int n)
+{
+    const robot_measured_t *m = &c->measured;
+    if (m->counts_500mm_left <= 0 && m->counts_500mm_right <= 0) return n;
+    double counts[2];
+    counts_500mm(c, counts);
+    if (m->counts_500mm_left > 0)
+        bench_add(v, &n, "counts_500mm_left", m->counts_500mm_left, counts[0], "counts", 1, VALIDATE_NEAR,
+                  MEASURED " (pushed 500 mm along a straight line)");
+    if (m->counts_500mm_right > 0)
+        bench_add(v, &n, "counts_500mm_right", m->counts_500mm_right, counts[1], "counts", 1, VALIDATE_NEAR,
+                  MEASURED " (pushed 500 mm along a straight line)");
+    return n;
+}
+
+/* Sensor i's mean lit-minus-dark over 64 samples, the robot where it is. */
+static double lit_minus_dark(sim_t *s, unsigned i)
+{
+    const robot_part_t *p = &s->cfg.part[robot_part_of_kind(&s->cfg, "ir", i)];
+    unsigned g = (unsigned)((const ir_part_spec_t *)p->spec)->emitter;
+    double sum = 0;
+    for (int k = 0; k < 64; k++) {
+        sim_emitter_set(s, g, 0);
+        double dark = sim_ir_read(s, i);
+        sim_emitter_set(s, g, 1);
+        sum += sim_ir_read(s, i) - dark;
+    }
+    sim_emitter_set(s, g, 0);
+    return sum / 64;
+}
+
+/* The two calibration poses of mazerunner-core's config-robot-*.h:
+ * centred: in the middle cell of a corridor 1 cell wide running north,
+ *   facing north, side walls left and right, no wall ahead for 2 cells;
+ * backed: in the middle cell of a corridor running east, facing north,
+ *   the body's rear against the cell's south wall, its north wall ahead. */
+static int ir_calibration(const simcfg_t *c, validate_check_t *v, int n)
+{
+    sim_t *s = &bench.sim;
+    unsigned nir = robot_count(c, "ir");
+    for (int pose = 0; pose < 2; pose++) {
+        if (pose == 0) bench_field(&bench.maze, 1, 4, 0);
+        else bench_field(&bench.maze, 3, 1, 1);
+        if (sim_init(s, c, &bench.maze, 1) != 0) return n;
+        double y = pose == 0 ? 1.5 * c->cell_m : c->wall_thick_m / 2 + c->body_l_m / 2;
+        world_place(s->world, pose == 0 ? 0.5 * c->cell_m : 1.5 * c->cell_m, y, M_PI / 2, NULL);
+        for (unsigned i = 0; i < nir; i++) {
+            const robot_part_t *p = &c->part[robot_part_of_kind(c, "ir", i)];
+            const ir_part_spec_t *sp = (const ir_part_spec_t *)p->spec;
+            double want = pose == 0 ? sp->measured_centred : sp->measured_backed;
+            if (want < 0) continue;
+            bench_add(v, &n, name_of(n, pose == 0 ? "ir_%s_centred" : "ir_%s_backed", p->name), want, lit_minus_dark(s, i),
+                      "counts", 10, VALIDATE_NEAR,
+                      pose == 0 ? "the robot file's measured_centred: the real robot centred between side walls, no wall ahead"
+                                : "the robot file's measured_backed: the real robot backed against a rear wall, a wall ahead");
+        }
+        sim_free(s);
+    }
+    return n;
+}
+
+/* The first IR sensor facing a wall straight on at d_m (the robot turned so
+ * the sensor's axis is normal to the end wall of a corridor): the model's
+ * far field is gain * reflectivity * (ref / d)^2 (ir.h), the dark reading
+ * the ambient level. */
+static int ir_model_checks(const simcfg_t *c, validate_check_t *v, int n)
+{
+    int k = robot_part_of_kind(c, "ir", 0);
+    if (k < 0) return n;
+    const robot_part_t *p = &c->part[k];
+    const ir_spec_t *m = &((const ir_part_spec_t *)p->spec)->model;
+    sim_t *s = &bench.sim;
+    bench_corridor(&bench.maze, 4);
+    if (sim_init(s, c, &bench.maze, 1) != 0) return n;
+    double face = 4 * c->cell_m - c->wall_thick_m / 2, d = 0.12;
+    /* heading so the sensor looks east: its yaw off the robot's forward */
+    double h = -p->yaw_deg * M_PI / 180, ch = cos(h - M_PI / 2), sh = sin(h - M_PI / 2);
+    double sx = ch * p->x_m - sh * p->y_m, sy = sh * p->x_m + ch * p->y_m; /* the sensor from the body centre */
+    world_place(s->world, face - d - sx, 0.5 * c->cell_m - sy, h, NULL);
+    double want = m->gain_counts * c->wall_reflectivity * (m->ref_m / d) * (m->ref_m / d);
+    bench_add(v, &n, "ir_far_field_120mm", want, lit_minus_dark(s, 0), "counts", 5, VALIDATE_NEAR,
+              "IR model: gain * reflectivity * (ref/d)^2 for a wall straight on in the far field (ir.h)");
+    double dark = 0;
+    unsigned g = (unsigned)((const ir_part_spec_t *)p->spec)->emitter;
+    sim_emitter_set(s, g, 0);
+    for (int i = 0; i < 256; i++) dark += sim_ir_read(s, 0) / 256.0;
+    bench_add(v, &n, "ir_emitter_off_ambient", m->ambient_counts, dark, "counts", 5, VALIDATE_NEAR,
+              "IR model: emitter off reads the ambient level");
+    sim_free(s);
+    return n;
+}
+
+/* The first gyro at rest for 10 s: the spread of its samples is the noise
+ * density times sqrt(ODR/2) (the datasheet's figure), and their mean the
+ * bias it drew. */
+static int gyro_checks(const simcfg_t *c, validate_check_t *v, int n)
+{
+    int k = robot_part_of_kind(c, "gyro", 0);
+    if (k < 0) return n;
+    const gyro_spec_t *g = (const gyro_spec_t *)c->part[k].spec;
+    bench_field(&bench.maze, 3, 3, 1);
+    sim_t *s = &bench.sim;
+    if (sim_init(s, c, &bench.maze, 1) != 0) return n;
+    double sum = 0, sum2 = 0, prev = NAN;
+    long m = 0;
+    for (long i = 0; i < bench_steps(c, 10.0); i++) {
+        sim_step(s);
+        double r = sim_gyro_rad_s(s) * DEG_PER_RAD;
+        if (r == prev) continue; /* a held sample */
+        prev = r;
+        sum += r, sum2 += r * r, m++;
+    }
+    double mean = sum / m, sd = sqrt(fmax(0, sum2 / m - mean * mean));
+    const gyro_t *st = s->part_state[k];
+    double q = g->lsb_dps * g->lsb_dps / 12; /* quantisation adds LSB^2/12 */
+    bench_add(v, &n, "gyro_noise_sd", sqrt(gyro_sigma_dps(g) * gyro_sigma_dps(g) + q), sd, "deg/s", 10, VALIDATE_NEAR,
+              "gyro model: noise density * sqrt(ODR/2) (LSM6DS3 Table 3), with the LSB's quantisation");
+    bench_add(v, &n, "gyro_bias_at_rest", st->bias0_dps + st->walk_dps / 2, mean, "deg/s", 0, VALIDATE_REPORT,
+              "gyro model: the mean at rest is the drawn zero-rate level (plus the walk)");
+    sim_free(s);
+    return n;
+}
+
+int validate_robot_checks(const simcfg_t *c, validate_check_t *v, int n)
+{
+    n = motion_checks(c, v, n);
+    n = count_checks(c, v, n);
+    n = ir_calibration(c, v, n);
+    n = ir_model_checks(c, v, n);
+    return gyro_checks(c, v, n);
+}
