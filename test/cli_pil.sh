@@ -20,7 +20,8 @@
 #  - protocol version 2 (IrProbe, Uno, the runner with a stand-in firmware):
 #    every IR sample hal_ir_raw gave is the one the simulator reported
 #    sending for that seq and emitter groups, hal_ir_count / hal_gyro_* /
-#    hal_battery_mv match its ROBOT report; in compat (no version 2) no
+#    hal_battery_mv match its ROBOT report (default robot, UKMARSBOT's 4 IR
+#    sensors, UKMARSBOT with a gyro); in compat (no version 2) no
 #    sample comes and every value reads 0; the Uno Mouse, which calls none
 #    of them, links none of their storage;
 #  - bad images and flags: exit 3 / 2.
@@ -145,10 +146,20 @@ import json,sys; d=json.load(open(sys.argv[1])); print(d['final_pose']['y_m'] < 
 # protocol version 2 end to end: IrProbe lights six emitter patterns
 # through hal_emitter and logs what hal_ir_raw then gives; the simulator
 # reports each IR frame it sent (--verbose); then RUN stop
-want_rc 1 "IrProbe, framed" "$S" --maze $M --avr "$PROBE" --time-limit 5 --json --verbose
-got=$(python3 test/pil_irprobe.py "$T/err" "$T/out" 2>&1)
-[ "$got" = "6 6 True mcu_stopped 2 6 6 0" ] && ok "IrProbe: 6 samples, each as the simulator sent it; robot line matches" \
-  || bad "IrProbe: $got $(grep -v 'sensed cell' "$T/err" | head -20)"
+# (test/pil_irprobe.py); on the default robot (no IR: empty samples), on
+# UKMARSBOT (4 IR sensors, no gyro) and on UKMARSBOT with a gyro whose noise
+# and bias are 0 (at rest it reads 0 within one LSB, 35 mdps)
+irprobe() { local desc=$1 nvals=$2 gmax=$3; shift 3
+  want_rc 1 "IrProbe, $desc" "$S" --maze $M --avr "$PROBE" "$@" --time-limit 5 --json --verbose
+  got=$(python3 test/pil_irprobe.py "$T/err" "$T/out" "$gmax" 2>&1)
+  [ "$got" = "6 6 True mcu_stopped 2 6 6 0 $nvals True" ] && ok "IrProbe, $desc: 6 samples as the simulator sent them, robot line matches" \
+    || bad "IrProbe, $desc: $got $(grep -v 'sensed cell' "$T/err" | head -20)"; }
+irprobe "default robot" 0 0
+irprobe "UKMARSBOT" 4 0 --robot robots/ukmarsbot.ini
+(cat robots/ukmarsbot.ini; printf '\n[gyro.z]\nx_mm = 0\ny_mm = 0\nz_mm = 20\nyaw_deg = 0\nnoise_density_dps_rthz = 0\nbias_dps = 0\nbias_rw_dps_rts = 0\n') >"$T/gyro.ini"
+irprobe "UKMARSBOT with a gyro" 4 35 --robot "$T/gyro.ini"
+grep -q "robot for the MCU: 4 IR sensors, gyro yes" "$T/err" && grep -q "^mcu: IrProbe: ir 4, gyro 1 " "$T/err" \
+  && ok "IrProbe: the gyro is reported present" || bad "IrProbe gyro: $(grep 'robot for\|IrProbe:' "$T/err")"
 # compat has no version 2: nothing comes, everything reads 0, nothing breaks
 want_rc 1 "IrProbe, compat" "$S" --maze $M --avr "$PROBEC" --protocol compat --time-limit 4 --json --verbose
 got=$(python3 -c "
