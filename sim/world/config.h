@@ -77,9 +77,13 @@ typedef struct {
     double wheel_x_m;       /* wheel centre plane from the body's centre line */
     double axle_y_m;        /* axle position along the body, from its centre */
     double caster_r_m, caster_mass_kg, caster_y_m;
+    double casters;         /* 1, or 2: a second skid at caster2_y_m, as the first */
+    double caster2_y_m;
     double tyre_mu;         /* Coulomb friction, tyre on floor */
     double tyre_mu_dynamic; /* sliding friction; <= tyre_mu */
     double tyre_slip_m_s;   /* contact slip speed above which tyre_mu_dynamic applies */
+    double body_com_y_m;    /* the body's centre of mass ahead of its centre (the robot file's) */
+    double body_yaw_inertia_kgm2; /* the body's about its vertical axis; 0 = a uniform box's */
     double wheel_left_d_m, wheel_right_d_m; /* the robot file's; wheel_d_m is their mean */
     drive_spec_t drive[2];  /* WORLD_LEFT, WORLD_RIGHT */
     battery_spec_t battery;

@@ -36,9 +36,17 @@ static const keytab_t chassis_keys[] = {
     C(caster_r_mm, caster_r_m, 1000, 1, 50, "mm", "caster sphere's radius"),
     C(caster_mass_g, caster_mass_kg, 1000, 0.5, 500, "g", "caster's mass"),
     C(caster_y_mm, caster_y_m, 1000, -200, 200, "mm", "caster ahead of the body's centre (negative: behind)"),
+    { NULL, "casters", offsetof(simcfg_t, casters), 1, 1, 2, "1", "1, or 2: a second skid at caster2_y_mm, as the first",
+      NULL, 1, 0, 0 },
+    { NULL, "caster2_y_mm", offsetof(simcfg_t, caster2_y_m), 0, -200, 200, "mm", "the second skid ahead of the body's centre",
+      NULL, 0, 1000, 0 },
     C(tyre_mu, tyre_mu, 0, 0.01, 3, "1", "Coulomb friction, tyre on floor"),
     C(tyre_mu_dynamic, tyre_mu_dynamic, 0, 0.01, 3, "1", "sliding friction, <= tyre_mu"),
     C(tyre_slip_m_s, tyre_slip_m_s, 0, 0, 1, "m/s", "slip speed above which tyre_mu_dynamic applies"),
+    { NULL, "body_com_y_mm", offsetof(simcfg_t, body_com_y_m), 0, -100, 100, "mm",
+      "the body's centre of mass ahead of its centre (0 = at the box's centre)", NULL, 0, 1000, 0 },
+    { NULL, "body_yaw_inertia_kgm2", offsetof(simcfg_t, body_yaw_inertia_kgm2), 0, 0, 0.1, "kg*m^2",
+      "the body's own about its vertical axis through its centre; 0 = a uniform box's", NULL, 0, 0, 0 },
 };
 
 #define D(name, def, min, max, unit, src) \

@@ -22,7 +22,7 @@ struct world {
     dWorldID world;
     dSpaceID top, statics, robot;
     dJointGroupID contacts;
-    dGeomID floor, centre_post, box, caster, wheel_geom[2], wheel_side[2], ray;
+    dGeomID floor, centre_post, box, caster, caster2, wheel_geom[2], wheel_side[2], ray;
     dBodyID chassis, wheel[2];
     dJointID hinge[2];
     dJointID friction[2];  /* the gearbox's stiction on each wheel (an angular motor, target speed 0) */
@@ -90,11 +90,19 @@ static void build_robot(world_t *w, double x, double y, double heading)
      * body origin, so the body sits at the combined centre of mass and the
      * geoms are offset from it */
     dMassSetBoxTotal(&mb, c->body_mass_kg, c->body_w_m, c->body_l_m, c->body_h_m);
+    /* a body whose mass is not spread as a uniform box: its own yaw inertia */
+    if (c->body_yaw_inertia_kgm2 > 0) mb.I[2 * 4 + 2] = c->body_yaw_inertia_kgm2;
     /* the body's mass may sit off its geometric centre (asymmetry) */
-    dMassTranslate(&mb, box_p[0] + c->com_x_m, box_p[1] + c->com_y_m, box_p[2]);
+    dMassTranslate(&mb, box_p[0] + c->com_x_m, box_p[1] + c->com_y_m + c->body_com_y_m, box_p[2]);
     dMassSetSphereTotal(&mc, c->caster_mass_kg, c->caster_r_m);
     dMassTranslate(&mc, caster_p[0], caster_p[1], caster_p[2]);
     dMassAdd(&mb, &mc);
+    double caster2_p[3] = { 0, c->caster2_y_m, c->caster_r_m };
+    if (c->casters > 1) { /* a second skid, as the first */
+        dMassSetSphereTotal(&mc, c->caster_mass_kg, c->caster_r_m);
+        dMassTranslate(&mc, caster2_p[0], caster2_p[1], caster2_p[2]);
+        dMassAdd(&mb, &mc);
+    }
     double com[3] = { mb.c[0], mb.c[1], mb.c[2] }, com_w[3];
     dMassTranslate(&mb, -com[0], -com[1], -com[2]);
     frame_point(x, y, heading, com, com_w);
@@ -112,6 +120,14 @@ static void build_robot(world_t *w, double x, double y, double heading)
     w->caster = dCreateSphere(w->robot, c->caster_r_m);
     dGeomSetBody(w->caster, w->chassis);
     dGeomSetOffsetPosition(w->caster, caster_p[0] - com[0], caster_p[1] - com[1], caster_p[2] - com[2]);
+    w->caster2 = NULL;
+    if (c->casters > 1) {
+        w->caster2 = dCreateSphere(w->robot, c->caster_r_m);
+        dGeomSetBody(w->caster2, w->chassis);
+        dGeomSetOffsetPosition(w->caster2, caster2_p[0] - com[0], caster2_p[1] - com[1], caster2_p[2] - com[2]);
+        dGeomSetCategoryBits(w->caster2, CAT_ROBOT);
+        dGeomSetCollideBits(w->caster2, CAT_STATIC | CAT_FLOOR);
+    }
 
     for (int s = 0; s < 2; s++) {
         /* each wheel's own diameter (asymmetry: right minus left) */
@@ -239,7 +255,7 @@ void world_destroy(world_t *w)
 
 static int is_robot_part(const world_t *w, dGeomID g)
 {
-    return g == w->box || g == w->caster || g == w->wheel_geom[0] || g == w->wheel_geom[1] || g == w->wheel_side[0] ||
+    return g == w->box || g == w->caster || (w->caster2 && g == w->caster2) || g == w->wheel_geom[0] || g == w->wheel_geom[1] || g == w->wheel_side[0] ||
            g == w->wheel_side[1];
 }
 
@@ -259,7 +275,7 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
     if (wall) w->touching = 1;
     for (int i = 0; i < n; i++) {
         double mu = w->cfg.body_wall_mu;
-        if (a == w->caster) {
+        if (a == w->caster || a == w->caster2) {
             mu = 0.0; /* the paper's caster: frictionless */
         } else if (!wall && (a == w->wheel_geom[0] || a == w->wheel_geom[1])) {
             dVector3 v;
