@@ -1,12 +1,13 @@
 /* replay.h - an LCM log of a run (mmsim --lcm-log) loaded for replay: the
- * true maze and config (MM_MAZE), poses, sensors, contest timers, lap
+ * true maze, config and robot (MM_MAZE), poses, sensors, contest timers, lap
  * events and the mouse's belief, put back into a sim_t at any time so the
  * viewer draws the logged run exactly as it drew the live one (mmview).
  *
  * The sim_t is a stand-in: its ODE world holds the logged maze, and
  * replay_apply places the robot (world_place), sets the ToF readings and
- * the IR emitter groups (MM_PARTS) and rebuilds the contest timers; it is never stepped. Times are simulation
- * time; a channel's state at time t is its last message with utime <= t. */
+ * the IR emitter groups (MM_PARTS: the beams' colours) and rebuilds the
+ * contest timers; it is never stepped. Times are simulation time; a
+ * channel's state at time t is its last message with utime <= t. */
 #ifndef REPLAY_H
 #define REPLAY_H
 
