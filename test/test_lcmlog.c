@@ -192,14 +192,16 @@ static void test_messages_with_arrays(void **state)
     (void)state;
     int8_t walls[4] = { 1, 2, 3, 4 };
     int16_t goals[1] = { 3 }, cost[4] = { 0, 1, 2, 3 }, path_cells[2] = { 0, 1 };
-    mmlcm_maze_t mz = { 0, (char *)"m.txt", 2, 2, 4, walls, 0, 0, 1, goals, 1, 9, (char *)"[motor]\nbattery_v = 7\n", (char *)"[battery.main]\nocv_v = 7\n" };
+    mmlcm_maze_t mz = { 0, (char *)"m.txt", 2, 2, 4, walls, 0, 0, 1, goals, 1, 9, (char *)"[sim]\nstep_s = 0.001\n",
+                        (char *)"[battery.main]\nocv_v = 7\n" };
     static uint8_t buf[512];
     int n = mmlcm_maze_t_encode(buf, 0, sizeof buf, &mz);
     assert_true(n > 0);
     mmlcm_maze_t out;
     assert_int_equal(lcmlog_decode_maze(buf, n, &out), 0);
     assert_string_equal(out.path, "m.txt");
-    assert_string_equal(out.config, "[motor]\nbattery_v = 7\n");
+    assert_string_equal(out.config, "[sim]\nstep_s = 0.001\n");
+    assert_string_equal(out.robot, "[battery.main]\nocv_v = 7\n");
     assert_true(out.ncells == 4 && out.walls[3] == 4 && out.ngoals == 1 && out.goals[0] == 3 && out.seed == 9);
     mmlcm_maze_t_decode_cleanup(&out);
     /* the path's length (bytes 16..19) made huge, negative, 0; its NUL gone;

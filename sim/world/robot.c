@@ -476,3 +476,62 @@ double robot_tof_range_m(const simcfg_t *c)
     int k = robot_part_of_kind(c, "tof", 0);
     return k < 0 ? 1.2 : ((const tof_spec_t *)c->part[k].spec)->range_m;
 }
+
+/* ---- the key list (tests) ---- */
+
+/* The i-th key of the list robot.h describes, and its kind; NULL past the end. */
+static const keytab_t *key_at(size_t i, const char **kind)
+{
+    static const struct {
+        const char *kind;
+        const keytab_t *keys;
+        size_t n;
+    } fixed[] = { { "chassis", chassis_keys, N(chassis_keys) },
+                  { "motor", motor_keys, N(motor_keys) },
+                  { "encoder", encoder_keys, N(encoder_keys) },
+                  { "battery", battery_keys, N(battery_keys) } };
+    for (size_t f = 0; f < N(fixed); f++) {
+        if (i < fixed[f].n) {
+            *kind = fixed[f].kind;
+            return &fixed[f].keys[i];
+        }
+        i -= fixed[f].n;
+    }
+    const sensor_kind_t *k;
+    for (unsigned s = 0; (k = sensor_kind_at(s)) != NULL; s++) {
+        *kind = k->name;
+        if (i < N(pose_keys)) return &pose_keys[i];
+        i -= N(pose_keys);
+        if (i < k->nkeys) return &k->keys[i];
+        i -= k->nkeys;
+    }
+    return NULL;
+}
+
+size_t robot_key_count(void)
+{
+    size_t n = 0;
+    const char *kind;
+    while (key_at(n, &kind)) n++;
+    return n;
+}
+
+int robot_key_info(size_t i, const char **kind, const char **key, double *min, double *max)
+{
+    const char *k_kind;
+    const keytab_t *k = key_at(i, &k_kind);
+    if (!k) return -1;
+    *kind = k_kind;
+    *key = k->key;
+    *min = k->min;
+    *max = k->max;
+    return 0;
+}
+
+const char *robot_key_word(size_t i, double v)
+{
+    const char *kind;
+    const keytab_t *k = key_at(i, &kind);
+    if (!k || !k->choices || v < 0 || v > k->max) return NULL;
+    return k->choices[(int)v];
+}

@@ -48,4 +48,15 @@ double robot_tof_range_m(const simcfg_t *c);
 /* How many parts of kind `kind`. */
 unsigned robot_count(const simcfg_t *c, const char *kind);
 
+/* Every key a robot file's sections take, for tests: the fixed parts'
+ * (kinds chassis, motor, encoder, battery), then for each sensor kind (in
+ * sensors/sensor.c's order) the pose keys and the kind's own. How many,
+ * and the i-th key's kind, name and range in the file's unit: 0, or -1
+ * past the end. */
+size_t robot_key_count(void);
+int robot_key_info(size_t i, const char **kind, const char **key, double *min, double *max);
+/* A word key's word for value v (robot_key_info's min..max are its
+ * indexes); NULL for a number key or past the end. */
+const char *robot_key_word(size_t i, double v);
+
 #endif
