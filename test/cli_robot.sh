@@ -50,4 +50,13 @@ sed 's/^body_mass_g = 127/body_mass_g = 150/' robots/paper.ini >"$T/heavy.ini"
 want_rc 0 "run, a heavier robot" "$S" --maze $M --runs 1 --json --seed 3 --robot "$T/heavy.ini"
 [ "$(python3 -c "import json,sys; print(json.loads(open(sys.argv[1]).read().splitlines()[-1])['config_hash'] != json.loads(open(sys.argv[2]).read().splitlines()[-1])['config_hash'])" "$T/out" "$T/a")" = True ] \
   && ok "another robot: another config hash" || bad "config hash unchanged by the robot"
+# the robot against the world: known once both files are (a narrow world, a wide robot)
+sed 's/^wheel_track_mm = 96/wheel_track_mm = 170/' robots/paper.ini >"$T/wide.ini"
+sed 's/^body_w_mm = 96/body_w_mm = 180/' "$T/wide.ini" >"$T/wide2.ini"
+want_rc 2 "a robot wider than a corridor" "$S" --maze $M --robot "$T/wide2.ini"
+grep -q "wide2.ini: world.cell_m: the robot is wider than a corridor (178 mm over its tyres, the corridor 168 mm)" "$T/err" \
+  && ok "wide robot: one line naming the corridor" || bad "wide robot: $(cat "$T/err")"
+printf '[world]\ncell_m = 0.09\nwall_thick_m = 0.006\npost_m = 0.006\n' >"$T/half.ini"
+want_rc 2 "the paper robot in half-size corridors" "$S" --maze $M --config "$T/half.ini"
+grep -q "half.ini: world.cell_m: the robot is wider than a corridor" "$T/err" && ok "half size: refused, one line" || bad "half size: $(cat "$T/err")"
 [ $fails -eq 0 ]

@@ -60,9 +60,8 @@ static const struct {
 #define NCOMP (sizeof companions / sizeof companions[0])
 
 /* Config extremes that cannot load, and why. world.cell_m's minimum: the
- * config's corridor check runs against the robot loaded so far (the
- * built-in paper robot, 104 mm over its tyres) before --robot's file
- * could bring a narrower one. */
+ * paper robot (104 mm over its tyres) does not fit its corridors (checked
+ * once the config and the robot are both loaded). */
 static const struct {
     const char *key;
     int at_max;

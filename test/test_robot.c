@@ -136,7 +136,7 @@ static void test_errors(void **state)
 {
     (void)state;
     int n = line_of(paper, "[tof.right]") + 10; /* the line after the file's last */
-    refused(append(paper, "\n[wheel.x]\n"), "r.ini:%d: wheel.x: unknown kind (chassis motor encoder battery tof ir gyro)", n + 1);
+    refused(append(paper, "\n[wheel.x]\n"), "r.ini:%d: wheel.x: unknown kind (chassis motor encoder battery measured tof ir gyro)", n + 1);
     char *t = replace(paper, "[tof.front]", "yaw_deg = 0\n", "");
     refused(t, "r.ini:%d: tof.front.yaw_deg: missing key", line_of(paper, "[tof.front]"));
     refused(replace(paper, NULL, "body_w_mm = 96", "body_w_mm = 5"), "r.ini:%d: chassis.body.body_w_mm: 5 mm is out of range [10, 300]",
@@ -193,9 +193,9 @@ static void test_errors(void **state)
 static void test_error_side_name(void **state)
 {
     (void)state;
-    refused(replace(paper, NULL, "[motor.right]", "[motor.rite]"), "r.ini:%d: motor.rite: a motor is named left or right",
+    refused(replace(paper, NULL, "[motor.right]", "[motor.rite]"), "r.ini:%d: motor.rite: the motor is named left or right",
             line_of(paper, "[motor.right]"));
-    refused(replace(paper, NULL, "[encoder.right]", "[encoder.middle]"), "r.ini:%d: encoder.middle: a encoder is named left or right",
+    refused(replace(paper, NULL, "[encoder.right]", "[encoder.middle]"), "r.ini:%d: encoder.middle: the encoder is named left or right",
             line_of(paper, "[encoder.right]"));
 }
 

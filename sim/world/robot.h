@@ -26,6 +26,10 @@
 #define ROBOT_MAX_TOF 3            /* the HAL's three ToF: left, front, right, in the file's order */
 #define ROBOT_MAX_IR 8             /* hal.h HAL_IR_MAX */
 
+/* 0 if the robot fits the world's corridors, else -1 with "world.cell_m:
+ * the robot is wider than a corridor (...)" in reason: checked once both
+ * the config and the robot are known (run_load_config). */
+int robot_fits(const simcfg_t *c, char *reason, size_t len);
 /* The built-in paper robot into c's robot fields (aborts if the built-in
  * text does not load: a build error, caught by test_robot). */
 void robot_defaults(simcfg_t *c);
