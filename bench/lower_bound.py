@@ -6,7 +6,8 @@
 
 The path is the one the firmware races: `mmmaze solve`'s best path (least
 cells + quarter turns, sim/maze/solve.h). The robot and the motor are
-mmsim's (`mmsim --print-config`), so the bound follows the config:
+mmsim's (`mmsim --print-config`, `--print-robot`), so the bound follows the
+config and the robot file:
 
 - straights: up to the motor's top speed, the no-load wheel speed at the
   battery voltage (450 rpm at 6 V with 32 mm wheels: 754 mm/s);
@@ -40,18 +41,46 @@ import subprocess
 import sys
 
 
-def config(mmsim):
-    """mmsim --print-config as {key: float} (INI: key = value ; unit; source)."""
-    out = subprocess.run([mmsim, "--print-config"], check=True, capture_output=True, text=True).stdout
-    c = {}
+def printed(mmsim, flag):
+    """mmsim --print-config or --print-robot as {section: {key: value}}
+    (INI: key = value ; unit; source; numbers as floats, a list of numbers
+    as a list, words as strings)."""
+    out = subprocess.run([mmsim, flag], check=True, capture_output=True, text=True).stdout
+    sections, cur = {}, None
     for line in out.splitlines():
-        if "=" in line and not line.startswith("["):
+        line = line.strip()
+        if line.startswith("["):
+            cur = sections.setdefault(line[1:line.index("]")], {})
+        elif "=" in line and not line.startswith(";") and cur is not None:
             k, v = line.split("=", 1)
             v = v.split(";", 1)[0].strip()
             try:
-                c[k.strip()] = float(v)
+                nums = [float(x) for x in v.split()]
+                cur[k.strip()] = nums[0] if len(nums) == 1 else nums
             except ValueError:
-                c[k.strip()] = v
+                cur[k.strip()] = v
+    return sections
+
+
+def config(mmsim):
+    """The world (mmsim --print-config) and the robot (mmsim --print-robot:
+    mm, g, the left motor's figures) as {key: float} in SI units, named as
+    Robot reads them."""
+    c = {}
+    for keys in printed(mmsim, "--print-config").values():
+        c.update(keys)
+    r = printed(mmsim, "--print-robot")
+    one = lambda kind: next(v for k, v in r.items() if k.split(".")[0] == kind)
+    ch, motor, batt = one("chassis"), r["motor.left"], one("battery")
+    c["wheel_d_m"] = (ch["wheel_left_d_mm"] + ch["wheel_right_d_mm"]) / 2 / 1000
+    c["wheel_x_m"] = ch["wheel_track_mm"] / 2000
+    for k in ("body_mass", "wheel_mass", "caster_mass"):
+        c[k + "_kg"] = ch[k + "_g"] / 1000
+    c["tyre_mu"] = ch["tyre_mu"]
+    for k in ("gear_ratio", "rated_v", "stall_a", "no_load_rpm", "no_load_a", "stall_torque_nm", "rotor_inertia_kgm2"):
+        c[k] = motor[k]
+    ocv = batt["ocv_v"]
+    c["battery_v"] = max(ocv) if isinstance(ocv, list) else ocv  # full charge
     return c
 
 

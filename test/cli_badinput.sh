@@ -46,19 +46,33 @@ want_rc 2 "mmsim --batch with a directory" $G "$S" --batch "$T/batch" --runs 1
 says "mmsim --batch with a directory" "c.txt: not a regular file (a directory)"
 
 # config lines: libinih splits a line at 199 bytes; a longer one is an error
-# (a comment's tail set battery_v, and later line numbers were off)
-python3 -c "print(';' + 'x' * 200 + ' battery_v = 7.5')" >"$T/long.ini"
+# (a comment's tail set a key, and later line numbers were off)
+python3 -c "print(';' + 'x' * 200 + ' step_s = 0.0015')" >"$T/long.ini"
 want_rc 2 "a 217-byte comment line" $G "$S" --maze $M --config "$T/long.ini" --print-config
 says "a 217-byte comment line" "long.ini:1: line too long (217 bytes; at most 197)"
-python3 -c "print('[motor]'); print(';' + 'x' * 196); print('bogus = 1')" >"$T/edge.ini"
+python3 -c "print('[sim]'); print(';' + 'x' * 196); print('bogus = 1')" >"$T/edge.ini"
 want_rc 2 "a 197-byte line is read whole" $G "$S" --maze $M --config "$T/edge.ini"
-says "a 197-byte line is read whole" "edge.ini:3: motor.bogus: unknown key"
-printf '[motor]\nbattery_v = 7\0\n' >"$T/nul.ini"
+says "a 197-byte line is read whole" "edge.ini:3: sim.bogus: unknown key"
+printf '[sim]\nstep_s = 0.001\0\n' >"$T/nul.ini"
 want_rc 2 "a NUL byte in a config" $G "$S" --maze $M --config "$T/nul.ini"
 says "a NUL byte in a config" "nul.ini:2: NUL byte"
 head -c 1048577 /dev/zero | tr '\0' '\n' >"$T/big.ini"
 want_rc 2 "a config over 1 MiB" $G "$S" --maze $M --config "$T/big.ini"
 says "a config over 1 MiB" "big.ini: too large (1048577 bytes; at most 1048576)"
+# robot files (--robot) the same way: the regular-file reader and the line scan
+for f in "$T/fifo.ini" /dev/zero "$T/dir.txt"; do
+  want_rc 2 "mmsim --robot $f" $G "$S" --maze $M --robot "$f"; says "mmsim --robot $f" "not a regular file"
+done
+{ sed -n '1,/^\[chassis/p' robots/paper.ini; python3 -c "print(';' + 'x' * 200 + ' body_w_mm = 50')"; sed '1,/^\[chassis/d' robots/paper.ini; } >"$T/long-robot.ini"
+n=$(grep -n '^;xxx' "$T/long-robot.ini" | cut -d: -f1)
+want_rc 2 "a 216-byte line in a robot file" $G "$S" --maze $M --robot "$T/long-robot.ini"
+says "a 216-byte line in a robot file" "long-robot.ini:$n: line too long (216 bytes; at most 197)"
+{ cat robots/paper.ini; printf '[gyro.g]\nx_mm = 0\0\n'; } >"$T/nul-robot.ini"
+want_rc 2 "a NUL byte in a robot file" $G "$S" --maze $M --robot "$T/nul-robot.ini"
+says "a NUL byte in a robot file" "nul-robot.ini:$(( $(wc -l <robots/paper.ini) + 2 )): NUL byte"
+head -c 1048577 /dev/zero | tr '\0' '\n' >"$T/big-robot.ini"
+want_rc 2 "a robot file over 1 MiB" $G "$S" --maze $M --robot "$T/big-robot.ini"
+says "a robot file over 1 MiB" "big-robot.ini: too large (1048577 bytes; at most 1048576)"
 
 # a crafted LCM log: its one event declares 0x7FFFFFFF bytes of data (liblcm's
 # reader calloc'd that and segfaulted)

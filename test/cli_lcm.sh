@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # cli_lcm.sh - LCM telemetry to a log (mmsim --lcm-log), decoded with the
 # generated C types (mmlog): every channel present, counts match the rates,
-# lap events equal the lap table, the last pose equals final_pose, the run is
-# the same with and without telemetry, flag and file errors.
+# lap events equal the lap table, the last pose equals final_pose, MM_PARTS
+# carries the robot's components (the paper robot's three ToF as
+# MM_SENSORS has them; an IR robot's sensors), the run is the same with and
+# without telemetry (the paper robot and an IR robot), a corrupt or cut
+# MM_PARTS is exit 2, flag and file errors.
 set -u
 S=${MMSIM:-build/mmsim}
 L=${MMLOG:-build/mmlog}
@@ -16,7 +19,7 @@ want_rc 0 "firmware contest with --lcm-log" "$S" --maze $M --driver firmware --j
 cp "$T/out" "$T/run.json"
 want_rc 0 "mmlog summary" "$L" --json "$T/run.lcmlog"
 cp "$T/out" "$T/sum.json"
-for ch in POSE MOTORS SENSORS RACE RACE_EVENT BELIEF MAZE; do "$L" --dump MM_$ch "$T/run.lcmlog" >"$T/$ch.jsonl"; done
+for ch in POSE MOTORS SENSORS PARTS RACE RACE_EVENT BELIEF MAZE; do "$L" --dump MM_$ch "$T/run.lcmlog" >"$T/$ch.jsonl"; done
 
 python3 - "$T" <<'EOF' && ok "channels, counts, laps, final pose, belief" || bad "log content"
 import json, sys
@@ -27,13 +30,13 @@ dump = lambda ch: [json.loads(l) for l in open("%s/%s.jsonl" % (T, ch))]
 fails = []
 def check(cond, what):
     if not cond: fails.append(what)
-chans = ["MM_POSE", "MM_MOTORS", "MM_SENSORS", "MM_RACE", "MM_RACE_EVENT", "MM_BELIEF", "MM_MAZE"]
+chans = ["MM_POSE", "MM_MOTORS", "MM_SENSORS", "MM_PARTS", "MM_RACE", "MM_RACE_EVENT", "MM_BELIEF", "MM_MAZE"]
 check(sorted(summ) == sorted(chans), "channels %s" % sorted(summ))
 check(all(c["bad"] == 0 for c in summ.values()), "undecodable messages")
 steps = round(run["sim_time_s"] * 1000)  # 1 ms physics step
 def expect(period):  # multiples of the period, plus the final state
     return steps // period + (1 if steps % period else 0)
-for ch in ["MM_POSE", "MM_MOTORS", "MM_SENSORS"]:
+for ch in ["MM_POSE", "MM_MOTORS", "MM_SENSORS", "MM_PARTS"]:
     check(summ[ch]["count"] == expect(10), "%s count %d, want %d" % (ch, summ[ch]["count"], expect(10)))
 check(summ["MM_RACE"]["count"] == expect(100), "MM_RACE count %d, want %d" % (summ["MM_RACE"]["count"], expect(100)))
 check(abs(summ["MM_POSE"]["last_s"] - run["sim_time_s"]) < 1e-9, "last pose time")
@@ -66,6 +69,18 @@ check(sens[-1]["encoder"][0] != 0 and sens[-1]["encoder"][1] != 0, "encoder coun
 mz = dump("MAZE")
 check(len(mz) == 1 and mz[0]["utime"] == 0 and mz[0]["path"] == "mazes/gen-5x5-s1.txt" and mz[0]["width"] == 5
       and len(mz[0]["walls"]) == 25 and mz[0]["goals"] and "cell_m = 0.18" in mz[0]["config"], "MM_MAZE: maze, path, config")
+parts = dump("PARTS")
+check([p["utime"] for p in parts] == [s["utime"] for s in sens], "MM_PARTS with every MM_SENSORS")
+for p, s in zip(parts, sens):
+    ok = [(q["kind"], q["name"], q["units"], len(q["values"])) for q in p["parts"]] == \
+         [("tof", n, "mm timeout true_mm", 3) for n in ("left", "front", "right")]
+    for i, q in enumerate(p["parts"][:3]):
+        mm, to, true_mm = q["values"]
+        ok = ok and round(mm) == s["tof_mm"][i] and bool(to) == s["tof_timeout"][i] and \
+             (true_mm == -1 if s["tof_true_m"][i] < 0 else abs(true_mm - s["tof_true_m"][i] * 1000) < 1e-9)
+    ok = ok and p["battery_v"] == 6.0 and 0.99 < p["battery_soc"] <= 1 and p["emitter"] == [False] * 4
+    if not ok:
+        check(False, "MM_PARTS at %d vs MM_SENSORS: %s %s" % (p["utime"], p, s)); break
 mot = dump("MOTORS")
 check(any(m["command"][0] != 0 for m in mot) and any(abs(m["current_a"][0]) > 0 for m in mot), "motor state")
 if fails:
@@ -77,6 +92,37 @@ want_rc 0 "same contest without telemetry" "$S" --maze $M --driver firmware --js
 [ "$(strip "$T/out")" = "$(strip "$T/run.json")" ] && ok "telemetry does not change the run" || bad "telemetry changed the run"
 "$S" --maze $M --driver firmware --json --lcm-log "$T/again.lcmlog" --lcm=memq:// >/dev/null
 cmp -s "$T/run.lcmlog" "$T/again.lcmlog" && ok "same log bytes (with a live memq:// URL too)" || bad "logs differ"
+
+# An IR robot (test/robots/ir.ini): MM_PARTS lists its ToF and IR sensors;
+# its run is the same with and without telemetry.
+R=test/robots/ir.ini
+want_rc 0 "IR robot with --lcm-log" "$S" --maze $M --driver firmware --robot $R --json --lcm-log "$T/ir.lcmlog"
+cp "$T/out" "$T/ir.json"
+want_rc 0 "IR robot without telemetry" "$S" --maze $M --driver firmware --robot $R --json
+[ "$(strip "$T/out")" = "$(strip "$T/ir.json")" ] && ok "IR robot: telemetry does not change the run" || bad "IR robot: telemetry changed the run"
+"$L" --dump MM_PARTS "$T/ir.lcmlog" | tail -1 | python3 -c '
+import json, sys
+p = json.loads(sys.stdin.read())
+k = [(q["kind"], q["name"], q["units"]) for q in p["parts"]]
+sys.exit(0 if k == [("tof", n, "mm timeout true_mm") for n in ("left", "front", "right")] +
+         [("ir", n, "dark lit lit_minus_dark") for n in ("lf", "rf", "ls", "rs")] else 1)' \
+  && ok "IR robot: MM_PARTS lists its seven sensors" || bad "IR robot: MM_PARTS parts"
+# A crafted MM_PARTS: its part count made 0x7FFF (lcm-gen's decoder would
+# malloc for it), or the log cut inside an MM_PARTS event: exit 2, one line.
+python3 - "$T/run.lcmlog" "$T/badparts.lcmlog" "$T/cutparts.lcmlog" <<'PY'
+import sys
+good = open(sys.argv[1], 'rb').read()
+d = bytearray(good)
+i = d.index(b'MM_PARTS') + len('MM_PARTS')  # the payload: hash 8, utime 8, nparts 2
+d[i + 16], d[i + 17] = 0x7F, 0xFF
+open(sys.argv[2], 'wb').write(bytes(d))
+open(sys.argv[3], 'wb').write(good[:good.index(b'MM_PARTS', i) + 30])  # the second MM_PARTS cut
+PY
+want_rc 2 "mmlog on a corrupt MM_PARTS" "$L" "$T/badparts.lcmlog"
+one_line "corrupt MM_PARTS"; grep -q "MM_PARTS: 1 message do not decode" "$T/err" && ok "corrupt MM_PARTS named" || bad "corrupt MM_PARTS: $(cat "$T/err")"
+want_rc 2 "mmlog --dump MM_PARTS on a corrupt MM_PARTS" "$L" --dump MM_PARTS "$T/badparts.lcmlog"
+want_rc 2 "mmlog on a log cut inside MM_PARTS" "$L" "$T/cutparts.lcmlog"
+one_line "cut MM_PARTS"; grep -q "truncated" "$T/err" && ok "cut MM_PARTS: truncated" || bad "cut MM_PARTS: $(cat "$T/err")"
 
 # --lcm-rate: the high-rate channels follow it (scripted driver, 250 Hz = every 4 steps).
 want_rc 0 "scripted run at 250 Hz" "$S" --maze $M --driver scripted --runs 1 --json --lcm-rate 250 --lcm-log "$T/r.lcmlog"

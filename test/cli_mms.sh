@@ -43,12 +43,13 @@ grep -q '^mms *0\.[0-9]* > moveForward$' "$T/err" && grep -q '^mms *[0-9.]* < ac
 # determinism, and sensed walls = the maze file's on a noise-free robot
 "$S" --maze mazes/gen-8x8-s1.txt --mms "$A/floodfill.py 2" --json >"$T/a"; "$S" --maze mazes/gen-8x8-s1.txt --mms "$A/floodfill.py 2" --json >"$T/b"
 [ "$(strip "$T/a")" = "$(strip "$T/b")" ] && ok "mms run deterministic" || bad "mms run deterministic"
-"$S" --print-config | sed 's/^tof_cv *=.*/tof_cv = 0/' >"$T/quiet.ini"
-grep -q '^tof_cv = 0$' "$T/quiet.ini" || bad "noise-free config: no tof_cv line"
+"$S" --print-robot | sed 's/^cv *=.*/cv = 0/' >"$T/quiet.ini"
+[ "$(grep -c '^cv = 0$' "$T/quiet.ini")" = 3 ] || bad "noise-free robot: not three ToF cv lines"
+
 for run in "gen-8x8-s1 2" "gen-16x16-s2 2" "gen-8x8-s1 2 half"; do
   set -- $run; m=$1; shift
-  "$S" --maze mazes/$m.txt --config "$T/quiet.ini" --mms "$A/floodfill.py $*" --json >"$T/sensed"
-  "$S" --maze mazes/$m.txt --config "$T/quiet.ini" --mms "$A/floodfill.py $*" --mms-ideal-walls --json >"$T/ideal"
+  "$S" --maze mazes/$m.txt --robot "$T/quiet.ini" --mms "$A/floodfill.py $*" --json >"$T/sensed"
+  "$S" --maze mazes/$m.txt --robot "$T/quiet.ini" --mms "$A/floodfill.py $*" --mms-ideal-walls --json >"$T/ideal"
   same=$(python3 -c "
 import json
 a, b = (json.loads(open('$T/' + f).read().splitlines()[-1]) for f in ('sensed', 'ideal'))
@@ -115,14 +116,14 @@ grep -q '^algo: script: 21 checks ok$' "$T/err" && [ "$(py "(d['collisions'], ab
   && ok "turned round on a boundary: answers, stats, at (0,1)" || bad "turned round on a boundary: $(cat "$T/err" "$T/out")"
 
 # a robot longer than the firmware thinks (150 mm, not 120): its turns sweep 89 mm and touch the walls
-printf '[robot]\nbody_l_m = 0.15\n' >"$T/long.ini"
-want_rc 0 "a robot too long for its turns" "$S" --maze mazes/gen-5x5-s1.txt --config "$T/long.ini" --mms "$A/wallfollow.py" --json
+sed 's/^body_l_mm *=.*/body_l_mm = 150/' robots/paper.ini >"$T/long.ini"
+want_rc 0 "a robot too long for its turns" "$S" --maze mazes/gen-5x5-s1.txt --robot "$T/long.ini" --mms "$A/wallfollow.py" --json
 [ "$(py "(d['reached_goal'], d['collisions'] > 0, d['mms']['wall_contacts'] == d['collisions'])")" = "(True, True, True)" ] \
   && ok "physical wall contacts in the JSON ($(py "d['collisions']"))" || bad "wall contacts: $(cat "$T/out")"
 
 # a robot too weak to move (0.5 V battery): the firmware's stall stop answers crash and ends the run
-printf '[motor]\nbattery_v = 0.5\n' >"$T/weak.ini"
-want_rc 1 "stuck robot" "$S" --maze mazes/gen-5x5-s1.txt --config "$T/weak.ini" --mms "$A/floodfill.py" --json
+sed 's/^ocv_v *=.*/ocv_v = 0.5/' robots/paper.ini >"$T/weak.ini"
+want_rc 1 "stuck robot" "$S" --maze mazes/gen-5x5-s1.txt --robot "$T/weak.ini" --mms "$A/floodfill.py" --json
 [ "$(py "(d['exit_reason'], d['mms']['crashes'], d['reached_goal'])")" = "('crash_stop', 1, False)" ] && grep -q "^mmsim: mms: the robot is stuck (motion stall) during a forward move: run ended$" "$T/err" \
   && ok "stuck robot: crash_stop, one message" || bad "stuck robot: $(cat "$T/out" "$T/err")"
 

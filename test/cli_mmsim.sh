@@ -28,10 +28,15 @@ want_rc 0 "firmware, five speed runs" "$S" --maze mazes/gen-5x5-s1.txt --runs 5 
 want_rc 0 "run with printed config" "$S" --maze mazes/gen-5x5-s1.txt --runs 1 --json --config "$T/cfg.ini"
 h1=$(py "d['config_hash']"); "$S" --maze mazes/gen-5x5-s1.txt --runs 1 --json >"$T/out"; h2=$(py "d['config_hash']")
 [ "$h1" = "$h2" ] && ok "config hash stable" || bad "config hash"
-printf '[motor]\nbattery_v = 7.4\nwarp = 9\n' >"$T/bad.ini"
+printf '[sim]\nstep_s = 0.001\nwarp = 9\n' >"$T/bad.ini"
 want_rc 2 "unknown config key" "$S" --maze mazes/gen-5x5-s1.txt --config "$T/bad.ini"
-grep -q "^$T/bad.ini:3: motor.warp: unknown key$" "$T/err" && ok "config error line" || bad "config error line: $(cat "$T/err")"
-printf '[motor]\nbattery_v = 7.4\n' >"$T/v.ini"
+grep -q "^$T/bad.ini:3: sim.warp: unknown key$" "$T/err" && ok "config error line" || bad "config error line: $(cat "$T/err")"
+# a robot's number in a config file: where it belongs now
+printf '[world]\ncell_m = 0.18\n[motor]\nbattery_v = 7.4\n' >"$T/old.ini"
+want_rc 2 "a robot key in a config" "$S" --maze mazes/gen-5x5-s1.txt --config "$T/old.ini"
+[ "$(cat "$T/err")" = "$T/old.ini:4: motor.battery_v: a robot's number: it belongs in the robot file (--robot FILE, docs/ROBOTS.md)" ] \
+  && ok "a robot key in a config: one line to the robot file" || bad "robot key in a config: $(cat "$T/err")"
+printf '[world]\nbody_wall_mu = 0.4\n' >"$T/v.ini"
 "$S" --maze mazes/gen-5x5-s1.txt --runs 1 --json --config "$T/v.ini" >"$T/out"; h3=$(py "d['config_hash']")
 [ "$h3" != "$h2" ] && ok "config hash changes" || bad "config hash changes"
 

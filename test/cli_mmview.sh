@@ -3,7 +3,9 @@
 # the test starts: a firmware contest logged, mmview --screenshot at two
 # times shows the robot in two places, and each matches mmsim --screenshot
 # --at the same time of the same run (robot at the same pixels, the maze
-# area the same but for a few pixels); flag and log errors get one line
+# area the same but for a few pixels); an IR robot's beams as mmsim draws
+# them, lit or dark as MM_PARTS says; flag and log errors (a corrupt
+# MM_PARTS among them) get one line
 # and exit 2; no display gets exit 3. Skips if no X server can be started.
 set -u
 S=${MMSIM:-build/mmsim}
@@ -43,6 +45,33 @@ n=$($P "$T/view5.png" near:30e0ff:40:$BOX); [ "${n:-0}" -gt 200 ] && ok "belief 
 want_rc 0 "follow camera" run "$V" "$T/run.lcmlog" --screenshot "$T/follow.png" --at 5 --camera 2 --size 320x240
 n=$($P "$T/follow.png" near:2a5ce0:60:0.4:0.4:0.6:0.6); [ "${n:-0}" -gt 200 ] && ok "robot at the centre of the follow view" || bad "follow view robot pixels: $n"
 
+# An IR robot (test/robots/ir.ini): its geometry comes from MM_MAZE's robot,
+# the emitter groups from MM_PARTS. Beams drawn as mmsim draws them (dark:
+# the firmware lights no emitter); the log with every emitter byte of its
+# MM_PARTS set to 1 draws them lit (SCENE_IR_LIT ff50c0).
+R=test/robots/ir.ini
+want_rc 0 "IR robot logged" "$S" --maze $M --driver firmware --robot $R --lcm-log "$T/ir.lcmlog"
+want_rc 0 "mmview IR robot" run "$V" "$T/ir.lcmlog" --screenshot "$T/irview.png" --at 3 --camera 2 --size 640x480
+want_rc 0 "mmsim IR robot" run "$S" --maze $M --driver firmware --robot $R --screenshot "$T/irsim.png" --at 3 --camera 2 --size 640x480
+d=$($P "$T/irview.png" diff:"$T/irsim.png":40:$BOX)
+dk=$($P "$T/irview.png" near:6070a0:30:$BOX); lt=$($P "$T/irview.png" near:ff50c0:30:$BOX)
+[ "${d:-99999}" -lt 500 ] && [ "${dk:-0}" -gt 50 ] && [ "${lt:-1}" -eq 0 ] \
+  && ok "IR beams (dark) as mmsim draws them ($d px differ, $dk dark px)" || bad "IR beams: $d px differ, $dk dark, $lt lit"
+python3 - "$T/ir.lcmlog" "$T/irlit.lcmlog" "$T/irbad.lcmlog" <<'PY'
+import struct, sys
+d = bytearray(open(sys.argv[1], 'rb').read()); bad = bytearray(d); at = 0; first = True
+while at < len(d):  # event: sync, number, time, channel length, data length, channel, data
+    cl, dl = struct.unpack('>II', d[at + 20:at + 28]); ch = bytes(d[at + 28:at + 28 + cl]); data = at + 28 + cl
+    if ch == b'MM_PARTS':
+        d[data + dl - 4:data + dl] = b'\x01' * 4  # the four emitter groups, lit
+        if first: bad[data + 16:data + 18] = b'\x7f\xff'; first = False  # nparts 0x7FFF
+    at = data + dl
+open(sys.argv[2], 'wb').write(bytes(d)); open(sys.argv[3], 'wb').write(bytes(bad))
+PY
+want_rc 0 "mmview IR robot, emitters lit" run "$V" "$T/irlit.lcmlog" --screenshot "$T/irlit.png" --at 3 --camera 2 --size 640x480
+lt=$($P "$T/irlit.png" near:ff50c0:30:$BOX); dk=$($P "$T/irlit.png" near:6070a0:30:$BOX)
+[ "${lt:-0}" -gt 50 ] && [ "${dk:-1}" -eq 0 ] && ok "IR beams lit from MM_PARTS ($lt px)" || bad "lit IR beams: $lt lit, $dk dark px"
+
 # errors: one line, exit 2 (bad flags, bad logs), nothing written
 ONE_ERROR_LINE=1
 want_rc 2 "no log" "$V"
@@ -71,6 +100,8 @@ open(sys.argv[2], 'wb').write(bytes(d))
 PY
 want_rc 2 "corrupt message" "$V" "$T/flip.lcmlog" --screenshot "$T/x.png" --at 1
 grep -q "does not decode" "$T/err" && ok "corrupt message named" || bad "corrupt message: $(cat "$T/err")"
+want_rc 2 "corrupt MM_PARTS" "$V" "$T/irbad.lcmlog" --screenshot "$T/x.png" --at 1
+grep -q "(MM_PARTS): does not decode" "$T/err" && ok "corrupt MM_PARTS named" || bad "corrupt MM_PARTS: $(cat "$T/err")"
 [ ! -e "$T/x.png" ] && ok "no picture written on errors" || bad "picture written"
 ONE_ERROR_LINE=0
 DISPLAY= run "$V" "$T/run.lcmlog" --screenshot "$T/nod.png" --at 1 >"$T/out" 2>"$T/err"; rc=$?

@@ -71,7 +71,7 @@ grep -q "hello differs\|MISMATCH" "$T/err" && bad "a hello mismatch reported: $(
 # the MCU checks the simulator's HELLO: a sim whose ToF range is 1.0 m (the
 # paper's Arduino side) gets one log line from it (the sim answers the MCU's
 # HELLO with its own, so an MCU that missed the first, still booting, learns it)
-"$S" --print-robot | sed 's/^range_mm *=.*/range_mm = 1000/' >"$T/r1.ini" # the robot's three ToF sensors
+"$S" --print-robot | sed 's/^range_mm *=.*/range_mm = 1000/' >"$T/r1.ini"
 want_rc 1 "AVR mouse, sim ToF range 1.0 m" "$S" --maze $M --robot "$T/r1.ini" --avr "$MOUSE" --mcu atmega2560 --time-limit 1 --verbose
 [ "$(grep -c '^mcu: sim hello differs: protocol 2, ToF 1000 mm (MCU: 2, 1200 mm)$' "$T/err")" = 1 ] \
   && ok "MCU logs the sim's ToF range mismatch once" || bad "MCU hello check: $(grep -v 'sensed cell' "$T/err" | head -5)"
@@ -112,11 +112,12 @@ print(l['protocol'], l['baud'], l['mcu_log_lines'], d['collisions'], 0.15 < p['y
 # both wheels alike (straight)
 "$S" --print-robot >"$T/cfg" 2>&1
 got=$(python3 -c "
-import json,math,re,sys
-cfg={m.group(1): float(m.group(2)) for m in re.finditer(r'^(\w+) = (-?[0-9.]+(?:e[-+]?[0-9]+)?) ;', open(sys.argv[1]).read(), re.M)}
+import configparser,json,math,re,sys
+cfg=configparser.ConfigParser(inline_comment_prefixes=(';',)); cfg.read(sys.argv[1])
 d=json.load(open(sys.argv[2])); travel=d['final_pose']['y_m'] - 0.09
 l, r = map(int, re.search(r'^mcu: DriveToWall: wall, counts (-?\d+) (-?\d+)$', open(sys.argv[3]).read(), re.M).groups())
-m_per_count = math.pi * cfg['wheel_left_d_mm'] / 1000 / (cfg['encoder_ppr'] * cfg['gear_ratio']) # both wheels alike
+ch=cfg[[s for s in cfg.sections() if s.startswith('chassis.')][0]]; wheel_d_m=(ch.getfloat('wheel_left_d_mm') + ch.getfloat('wheel_right_d_mm')) / 2 / 1000
+m_per_count = math.pi * wheel_d_m / (cfg['encoder.left'].getfloat('encoder_ppr') * cfg['motor.left'].getfloat('gear_ratio'))
 print(travel - 0.030 <= l * m_per_count <= travel + 0.001, travel - 0.030 <= r * m_per_count <= travel + 0.001, abs(l - r) <= 0.02 * l)
 " "$T/cfg" "$T/wall.json" "$T/wall.err" 2>&1)
 [ "$got" = "True True True" ] && ok "DriveToWall: encoder counts at the wall match the distance driven: $(grep -o 'counts.*' "$T/wall.err")" \

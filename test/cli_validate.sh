@@ -28,8 +28,9 @@ want_rc 0 "validate table" "$S" --validate
 grep -q "^[0-9]* of [0-9]* checks pass$" "$T/out" && ok "table's last line" || bad "table: $(tail -2 "$T/out")"
 
 # the paper's loss-free motor runs 61 % fast: the datasheet checks fail, exit 1
-printf '[motor]\nmotor_model = paper\n' >"$T/paper.ini"
-want_rc 1 "the paper's motor fails validation" "$S" --validate --json --config "$T/paper.ini"
+sed 's/^model = datasheet/model = paper/' robots/paper.ini >"$T/paper.ini"
+[ "$(grep -c '^model = paper' "$T/paper.ini")" = 2 ] || bad "paper motor robot: not two model lines"
+want_rc 1 "the paper's motor fails validation" "$S" --validate --json --robot "$T/paper.ini"
 python3 -c "
 import json,sys; d=json.loads(open('$T/out').read().splitlines()[-1]); c={k['name']:k for k in d['checks']}
 assert not c['no_load_speed']['pass'] and abs(c['no_load_speed']['measured']-725)<10, c['no_load_speed']
@@ -44,7 +45,13 @@ assert not c['rest_creep_mm_per_min']['pass'], c['rest_creep_mm_per_min']
 " && ok "quickstep: creep flagged" || bad "quickstep: $(head -c 600 "$T/out")"
 
 # a bad word in the config: one error line, exit 2
-printf '[motor]\nmotor_model = magic\n' >"$T/bad.ini"
-ONE_ERROR_LINE=1 want_rc 2 "bad motor_model" "$S" --validate --config "$T/bad.ini"
-grep -q "motor.motor_model: 'magic' is not one of paper datasheet" "$T/err" && ok "word key error" || bad "word key error: $(cat "$T/err")"
+# a bad word in the robot file: one error line with its place, exit 2
+sed 's/^model = datasheet/model = magic/' robots/paper.ini >"$T/bad.ini"
+n=$(grep -n '^model = magic' "$T/bad.ini" | head -1 | cut -d: -f1)
+ONE_ERROR_LINE=1 want_rc 2 "bad motor model" "$S" --validate --robot "$T/bad.ini"
+[ "$(cat "$T/err")" = "$T/bad.ini:$n: motor.left.model: 'magic' is not one of paper datasheet" ] && ok "word key error" || bad "word key error: $(cat "$T/err")"
+# the old config key: where it belongs now
+printf '[motor]\nmotor_model = paper\n' >"$T/old.ini"
+ONE_ERROR_LINE=1 want_rc 2 "motor_model in a config" "$S" --validate --config "$T/old.ini"
+grep -q "old.ini:2: motor.motor_model: a robot's number: it belongs in the robot file" "$T/err" && ok "old motor_model key: to the robot file" || bad "old motor_model: $(cat "$T/err")"
 exit $((fails > 0))

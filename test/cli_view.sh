@@ -2,7 +2,8 @@
 # cli_view.sh - the viewer's screenshots under an Xvfb the test starts:
 # each camera on a known small maze (PNG of the requested size; wall tops
 # in the bird's view, the robot near the centre of the follow and top
-# views), the centre post in and out of the picture, flag errors, and a
+# views), the centre post in and out of the picture, IR sensors' beams
+# (a robot with IR sensors against one without), flag errors, and a
 # clear failure without a display. Skips if no X server can be started.
 set -u
 S=${MMSIM:-build/mmsim}
@@ -49,6 +50,17 @@ for p in on off; do
 done
 a=$($P "$T/poston.png" near:d02828:40:0.45:0.4:0.55:0.6); b=$($P "$T/postoff.png" near:d02828:40:0.45:0.4:0.55:0.6)
 [ "${a:-0}" -gt "${b:-0}" ] && ok "centre post drawn when present ($a > $b px)" || bad "centre post pixels: on $a, off $b"
+
+# IR sensors' beams: the paper robot and the same robot with four IR sensors
+# (test/robots/ir.ini), top view: the pictures differ, the beams' dark colour
+# (SCENE_IR_DARK 6070a0: the firmware lights no emitter) only with IR
+for r in robots/paper.ini test/robots/ir.ini; do
+  "${SIM[@]}" --maze $M --driver firmware --robot $r --screenshot "$T/$(basename $r .ini).png" --camera 3 --at 1 --size 320x240 >"$T/out" 2>"$T/err" \
+    || { bad "$r screenshot"; head -5 "$T/err"; }
+done
+d=$($P "$T/ir.png" diff:"$T/paper.png":40); a=$($P "$T/ir.png" near:6070a0:12); b=$($P "$T/paper.png" near:6070a0:12)
+[ "${d:-0}" -gt 200 ] && [ "${a:-0}" -gt 50 ] && [ "${b:-1}" -eq 0 ] \
+  && ok "IR beams drawn ($d px differ, $a beam px)" || bad "IR beams: $d px differ, beam px $a with IR, $b without"
 
 # errors: one line, before any run
 want2() { local d=$1; shift; "$@" >"$T/out" 2>"$T/err"; local rc=$?

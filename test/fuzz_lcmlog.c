@@ -16,6 +16,7 @@
 #include "mmlcm_link_t.h"
 #include "mmlcm_maze_t.h"
 #include "mmlcm_motors_t.h"
+#include "mmlcm_parts_t.h"
 #include "mmlcm_pose_t.h"
 #include "mmlcm_race_event_t.h"
 #include "mmlcm_race_t.h"
@@ -38,7 +39,7 @@ static void check(int ok, const char *what)
 }
 
 /* Every decoder on the data, as mmlog and the replay decode it: the
- * fixed-size types directly (they allocate nothing), the two with arrays
+ * fixed-size types directly (they allocate nothing), the three with arrays
  * and strings through lcmlog_decode_*. */
 #define DECODE(type)                                                        \
     do {                                                                    \
@@ -64,6 +65,13 @@ static void decode_all(const lcm_eventlog_event_t *ev)
     if (lcmlog_decode_maze(ev->data, ev->datalen, &mz) == 0) {
         check(strlen(mz.path) < (size_t)ev->datalen && strlen(mz.config) < (size_t)ev->datalen, "maze strings");
         mmlcm_maze_t_decode_cleanup(&mz);
+    }
+    mmlcm_parts_t pt;
+    if (lcmlog_decode_parts(ev->data, ev->datalen, &pt) == 0) {
+        check(pt.nparts >= 0 && pt.nemitters >= 0, "parts counts");
+        for (int i = 0; i < pt.nparts; i++)
+            check(pt.parts[i].nvalues >= 0 && strlen(pt.parts[i].units) < (size_t)ev->datalen, "part values and units");
+        mmlcm_parts_t_decode_cleanup(&pt);
     }
 }
 

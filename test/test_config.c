@@ -46,7 +46,7 @@ static void test_load_and_errors(void **state)
         { "[robot]\ntyre_mu = 0.3\n", "c.ini:2: robot.tyre_mu: a robot's number: it belongs in the robot file" },
         { "[motor]\nbattery_v = 7\n", "c.ini:2: motor.battery_v: a robot's number" },
         { "[world]\npost_m = 0.005\n", "c.ini: world.post_m: posts thinner than walls" },
-        { "[world]\ncell_m = 0.1\n", "c.ini: world.cell_m: the robot is wider than a corridor" },
+        { "[world]\ncell_m = 0.01\n", "c.ini:2: world.cell_m: 0.01 m is out of range" },
         { "[nosuch]\nx = 1\n", "c.ini:2: nosuch.x: unknown key" },
         { "[sim]\nsolver_iterations = 10.5\n", "c.ini:2: sim.solver_iterations: 10.5 is not a whole number" },
     };

@@ -192,18 +192,20 @@ static void test_messages_with_arrays(void **state)
     (void)state;
     int8_t walls[4] = { 1, 2, 3, 4 };
     int16_t goals[1] = { 3 }, cost[4] = { 0, 1, 2, 3 }, path_cells[2] = { 0, 1 };
-    mmlcm_maze_t mz = { 0, (char *)"m.txt", 2, 2, 4, walls, 0, 0, 1, goals, 1, 9, (char *)"[motor]\nbattery_v = 7\n" };
+    mmlcm_maze_t mz = { 0, (char *)"m.txt", 2, 2, 4, walls, 0, 0, 1, goals, 1, 9, (char *)"[sim]\nstep_s = 0.001\n",
+                        (char *)"[battery.main]\nocv_v = 7\n" };
     static uint8_t buf[512];
     int n = mmlcm_maze_t_encode(buf, 0, sizeof buf, &mz);
     assert_true(n > 0);
     mmlcm_maze_t out;
     assert_int_equal(lcmlog_decode_maze(buf, n, &out), 0);
     assert_string_equal(out.path, "m.txt");
-    assert_string_equal(out.config, "[motor]\nbattery_v = 7\n");
+    assert_string_equal(out.config, "[sim]\nstep_s = 0.001\n");
+    assert_string_equal(out.robot, "[battery.main]\nocv_v = 7\n");
     assert_true(out.ncells == 4 && out.walls[3] == 4 && out.ngoals == 1 && out.goals[0] == 3 && out.seed == 9);
     mmlcm_maze_t_decode_cleanup(&out);
     /* the path's length (bytes 16..19) made huge, negative, 0; its NUL gone;
-     * the config's NUL gone (the last byte); a byte short; a byte more */
+     * the robot's NUL gone (the last byte); a byte short; a byte more */
     const uint32_t lens[] = { 0x7FFFFFFF, 0xFFFFFFF0u, 0 };
     for (int i = 0; i < 3; i++) {
         uint8_t bad[512];
@@ -240,6 +242,56 @@ static void test_messages_with_arrays(void **state)
     assert_null(bo.walls);
 }
 
+/* MM_PARTS (nested part_t with strings and arrays): decoded whole or not
+ * at all; a negative or huge count, a string without its NUL, bytes
+ * missing or left over are refused before lcm-gen's decoder mallocs. */
+static void test_parts(void **state)
+{
+    (void)state;
+    double v0[3] = { 66.5, 0, 62.25 }, v1[2] = { 1.5, 2.5 };
+    mmlcm_part_t parts[2] = { { (char *)"tof", (char *)"left", 3, v0, (char *)"mm timeout true_mm" },
+                              { (char *)"gyro", (char *)"z", 2, v1, (char *)"dps true_dps" } };
+    int8_t em[4] = { 0, 1, 0, 0 };
+    mmlcm_parts_t m = { 7, 2, parts, 7.9, 0.5, 4, em };
+    static uint8_t buf[512];
+    int n = mmlcm_parts_t_encode(buf, 0, sizeof buf, &m);
+    assert_true(n > 0);
+    mmlcm_parts_t out;
+    assert_int_equal(lcmlog_decode_parts(buf, n, &out), 0);
+    assert_true(out.utime == 7 && out.nparts == 2 && out.nemitters == 4 && out.emitter[1] && out.battery_v == 7.9);
+    assert_string_equal(out.parts[0].kind, "tof");
+    assert_string_equal(out.parts[1].name, "z");
+    assert_string_equal(out.parts[1].units, "dps true_dps");
+    assert_true(out.parts[0].nvalues == 3 && out.parts[0].values[2] == 62.25 && out.parts[1].values[1] == 2.5);
+    mmlcm_parts_t_decode_cleanup(&out);
+    /* bytes: hash 0..7, utime 8..15, nparts 16..17, kind's length 18..21 and
+     * "tof" 22..25, name's length 26..29 and "left" 30..34, nvalues 35 */
+    static const struct { int at; uint8_t byte; } bad[] = {
+        { 16, 0xFF }, { 17, 0x40 },              /* nparts -1 (with byte 17), then 0x4002 */
+        { 18, 0x7F }, { 21, 0xF0 }, { 25, 'x' }, /* kind's length huge, 240; its NUL gone */
+        { 35, 0xFF }, { 35, 0x7F },              /* nvalues -1, 127 */
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        uint8_t b[512];
+        memcpy(b, buf, (size_t)n);
+        b[bad[i].at] = bad[i].byte;
+        if (i == 0) b[17] = 0xFF;
+        assert_int_equal(lcmlog_decode_parts(b, n, &out), -1);
+        assert_null(out.parts);
+    }
+    buf[n - 5] = 0xFF; /* nemitters -1 (the last 5 bytes: nemitters and 4 emitters) */
+    assert_int_equal(lcmlog_decode_parts(buf, n, &out), -1);
+    buf[n - 5] = 4;
+    assert_int_equal(lcmlog_decode_parts(buf, n - 1, &out), -1);
+    assert_int_equal(lcmlog_decode_parts(buf, n + 1, &out), -1);
+    buf[0] ^= 1; /* another type's fingerprint: the layout fits, the decoder refuses */
+    assert_int_equal(lcmlog_decode_parts(buf, n, &out), -1);
+    assert_null(out.parts);
+    buf[0] ^= 1;
+    assert_int_equal(lcmlog_decode_parts(buf, n, &out), 0);
+    mmlcm_parts_t_decode_cleanup(&out);
+}
+
 static int setup(void **state)
 {
     (void)state;
@@ -262,6 +314,7 @@ int main(void)
         cmocka_unit_test(test_not_a_log),
         cmocka_unit_test(test_liblcm_round_trip),
         cmocka_unit_test(test_messages_with_arrays),
+        cmocka_unit_test(test_parts),
     };
     return cmocka_run_group_tests_name("lcmlog", tests, setup, teardown);
 }

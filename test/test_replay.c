@@ -1,6 +1,7 @@
 /* test_replay.c - a log written by sim/telem replayed by sim/replay: at a
  * logged time the stand-in simulation has the live run's pose, wheel
- * angles (to an encoder count), ToF rays, contest timers and belief; the
+ * angles (to an encoder count), ToF rays, emitter groups (MM_PARTS),
+ * contest timers and belief; the
  * index search; the viewer's time slider, seek keys and play/pause on a
  * replay (no window); and the load errors (missing, not a log, truncated,
  * no MM_MAZE). */
@@ -33,7 +34,7 @@ static const double CHECK_S[CHECK_AT] = { 0.5, 1.52, 2.5 };
 static struct {
     double x, y, h, wheel[2], tof[3];
     char g[16], l[16];
-    int over, has_belief;
+    int over, has_belief, emitter[SIM_EMITTER_GROUPS];
     uint16_t cell;
     uint8_t walls[MAZE_MAX_CELLS];
 } live[CHECK_AT];
@@ -42,7 +43,8 @@ static maze_t maze, bmap;
 static char log_path[64];
 static double end_s;
 
-/* A scripted 3.2 s run on a 5x5 maze, logged; a belief reported at 1.0 s. */
+/* A scripted 3.2 s run on a 5x5 maze, logged; a belief reported at 1.0 s;
+ * emitter group 1 lit from 1.5 s to 2.5 s. */
 static int setup(void **state)
 {
     (void)state;
@@ -64,6 +66,7 @@ static int setup(void **state)
     int k = 0;
     while (sim_time_s(&sim) < 3.2 - 1e-9) {
         driver_update(&drv, &sim);
+        sim_emitter_set(&sim, 1, sim.step >= 1500 && sim.step < 2500);
         sim_step(&sim);
         telem_step(&tel, &sim);
         if (sim.step == 1000) hal_belief(&bmap, 1, MAZE_NORTH, 0); /* as fw_loop would */
@@ -71,6 +74,7 @@ static int setup(void **state)
             world_pose(sim.world, &live[k].x, &live[k].y, &live[k].h);
             for (int i = 0; i < 2; i++) live[k].wheel[i] = world_wheel_angle(sim.world, i);
             for (int i = 0; i < 3; i++) live[k].tof[i] = sim.tof_true_m[i];
+            for (int g = 0; g < SIM_EMITTER_GROUPS; g++) live[k].emitter[g] = sim_emitter(&sim, (unsigned)g);
             hud_timers(&sim, live[k].g, live[k].l, &live[k].over);
             live[k].has_belief = hal_sim_belief()->seq != 0;
             live[k].cell = hal_sim_belief()->cell;
@@ -107,6 +111,7 @@ static void test_state_at_logged_times(void **state)
     assert_memory_equal(r.maze.cell, maze.cell, maze_cells(&maze));
     assert_int_equal(replay_sim_init(&r, &s), 0);
     double count_rad = 2 * M_PI / (s.cfg.drive[0].encoder_ppr * s.cfg.drive[0].gear_ratio);
+    assert_true(!live[0].emitter[1] && live[1].emitter[1]); /* the check times see both */
     for (int k = 0; k < CHECK_AT; k++) {
         replay_apply(&r, &s, CHECK_S[k]);
         double x, y, h;
@@ -115,6 +120,7 @@ static void test_state_at_logged_times(void **state)
         for (int i = 0; i < 2; i++) /* an encoder count's resolution */
             assert_true(fabs(wrap(world_wheel_angle(s.world, i) - live[k].wheel[i])) <= count_rad * 1.01);
         for (int i = 0; i < 3; i++) assert_true(s.tof_true_m[i] == live[k].tof[i]);
+        for (int g = 0; g < SIM_EMITTER_GROUPS; g++) assert_int_equal(sim_emitter(&s, (unsigned)g), live[k].emitter[g]);
         assert_true(fabs(sim_time_s(&s) - CHECK_S[k]) < 1e-9);
         char g[16], l[16];
         int over;

@@ -18,6 +18,7 @@
 #include "hal_sim.h"
 #include "mmlcm_belief_t.h"
 #include "mmlcm_motors_t.h"
+#include "mmlcm_parts_t.h"
 #include "mmlcm_pose_t.h"
 #include "mmlcm_race_event_t.h"
 #include "mmlcm_race_t.h"
@@ -36,6 +37,11 @@ static struct {
     int16_t cost[MAZE_MAX_CELLS];
     int last_cmd0;
     double last_x;
+    int parts, parts_n, parts_nvalues[4], emitters, emitter_mask;
+    int64_t parts_ut, sensors_ut;
+    char parts_kind[4][8], parts_name[4][16], parts_units[4][32];
+    double parts_v[4][4], battery_v, battery_soc;
+    mmlcm_sensors_t last_sensors;
 } seen;
 
 static void on_pose(const lcm_recv_buf_t *rb, const char *ch, const mmlcm_pose_t *m, void *u)
@@ -49,7 +55,29 @@ static void on_motors(const lcm_recv_buf_t *rb, const char *ch, const mmlcm_moto
     seen.motors++;
     seen.last_cmd0 = m->command[0];
 }
-static void on_sensors(const lcm_recv_buf_t *rb, const char *ch, const mmlcm_sensors_t *m, void *u) { seen.sensors++; }
+static void on_sensors(const lcm_recv_buf_t *rb, const char *ch, const mmlcm_sensors_t *m, void *u)
+{
+    seen.sensors++;
+    seen.last_sensors = *m;
+}
+static void on_parts(const lcm_recv_buf_t *rb, const char *ch, const mmlcm_parts_t *m, void *u)
+{
+    seen.parts++;
+    seen.parts_ut = m->utime;
+    seen.parts_n = m->nparts;
+    for (int i = 0; i < m->nparts && i < 4; i++) {
+        snprintf(seen.parts_kind[i], sizeof seen.parts_kind[i], "%s", m->parts[i].kind);
+        snprintf(seen.parts_name[i], sizeof seen.parts_name[i], "%s", m->parts[i].name);
+        snprintf(seen.parts_units[i], sizeof seen.parts_units[i], "%s", m->parts[i].units);
+        seen.parts_nvalues[i] = m->parts[i].nvalues;
+        for (int k = 0; k < m->parts[i].nvalues && k < 4; k++) seen.parts_v[i][k] = m->parts[i].values[k];
+    }
+    seen.battery_v = m->battery_v;
+    seen.battery_soc = m->battery_soc;
+    seen.emitters = m->nemitters;
+    seen.emitter_mask = 0;
+    for (int g = 0; g < m->nemitters; g++) seen.emitter_mask |= (m->emitter[g] != 0) << g;
+}
 static void on_race(const lcm_recv_buf_t *rb, const char *ch, const mmlcm_race_t *m, void *u) { seen.race++; }
 static void on_event(const lcm_recv_buf_t *rb, const char *ch, const mmlcm_race_event_t *m, void *u)
 {
@@ -82,6 +110,31 @@ static void drain(lcm_t *l)
     }
 }
 
+/* MM_PARTS with every MM_SENSORS: the paper robot's three ToF (left,
+ * front, right) with the same readings as MM_SENSORS, the battery as the
+ * simulation has it, the four emitter groups. */
+static void check_parts(const sim_t *sim)
+{
+    static const char *names[3] = { "left", "front", "right" };
+    assert_int_equal(seen.parts, seen.sensors);
+    assert_int_equal(seen.parts_ut, seen.last_sensors.utime);
+    assert_int_equal(seen.parts_n, 3);
+    for (int i = 0; i < 3; i++) {
+        assert_string_equal(seen.parts_kind[i], "tof");
+        assert_string_equal(seen.parts_name[i], names[i]);
+        assert_string_equal(seen.parts_units[i], "mm timeout true_mm");
+        assert_int_equal(seen.parts_nvalues[i], 3);
+        assert_int_equal(lround(seen.parts_v[i][0]), seen.last_sensors.tof_mm[i]);
+        assert_int_equal(seen.parts_v[i][1] != 0, seen.last_sensors.tof_timeout[i] != 0);
+        double t = seen.last_sensors.tof_true_m[i];
+        assert_true(t < 0 ? seen.parts_v[i][2] == -1 : fabs(seen.parts_v[i][2] - t * 1000) < 1e-9);
+    }
+    assert_true(seen.battery_v == sim_battery_v(sim));
+    assert_true(seen.battery_soc > 0.99 && seen.battery_soc <= 1);
+    assert_int_equal(seen.emitters, SIM_EMITTER_GROUPS);
+    assert_int_equal(seen.emitter_mask, 1 << 2); /* group 2 lit by the test */
+}
+
 /* 95 steps at 100 Hz: poses at steps 10..90 and the final 95; one race
  * state (the final one, the period being 100 steps); events from the race
  * state; one belief with its time. */
@@ -107,10 +160,12 @@ static void test_memq_messages(void **state)
     mmlcm_race_t_subscription_t *s4 = mmlcm_race_t_subscribe(l, "MM_RACE", on_race, NULL);
     mmlcm_race_event_t_subscription_t *s5 = mmlcm_race_event_t_subscribe(l, "MM_RACE_EVENT", on_event, NULL);
     mmlcm_belief_t_subscription_t *s6 = mmlcm_belief_t_subscribe(l, "MM_BELIEF", on_belief, NULL);
+    mmlcm_parts_t_subscription_t *s7 = mmlcm_parts_t_subscribe(l, "MM_PARTS", on_parts, NULL);
 
     static maze_t map;
     open_maze(&map);
     maze_set_wall(&map, 0, MAZE_NORTH, MAZE_WALL_CLOSED);
+    sim_emitter_set(&sim, 2, 1);
     for (int i = 0; i < 95; i++) {
         sim.cmd[0] = sim.cmd[1] = 300;
         sim_step(&sim);
@@ -139,6 +194,7 @@ static void test_memq_messages(void **state)
     assert_int_equal(seen.motors, 10);
     assert_int_equal(seen.sensors, 10);
     assert_int_equal(seen.race, 1);
+    check_parts(&sim);
     for (int i = 0; i < 9; i++) assert_int_equal(seen.pose_ut[i], (i + 1) * 10000);
     assert_int_equal(seen.pose_ut[9], 95000);
     double x, y, h;
@@ -175,6 +231,7 @@ static void test_memq_messages(void **state)
     mmlcm_race_t_unsubscribe(l, s4);
     mmlcm_race_event_t_unsubscribe(l, s5);
     mmlcm_belief_t_unsubscribe(l, s6);
+    mmlcm_parts_t_unsubscribe(l, s7);
     assert_int_equal(telem_close(&t, err, sizeof err), 0);
     hal_sim_attach(NULL);
     sim_free(&sim);

@@ -21,6 +21,7 @@
 #include "mmlcm_link_t.h"
 #include "mmlcm_maze_t.h"
 #include "mmlcm_motors_t.h"
+#include "mmlcm_parts_t.h"
 #include "mmlcm_pose_t.h"
 #include "mmlcm_race_event_t.h"
 #include "mmlcm_race_t.h"
@@ -75,6 +76,27 @@ static int dec_sensors(const void *data, int len, int64_t *ut, json_t **j)
                       (int)m.encoder[1], "tof_mm", iarr16(m.tof_mm, 3), "tof_timeout", to, "tof_true_m",
                       darr(m.tof_true_m, 3));
     }
+    return 0;
+}
+
+/* MM_PARTS through the checked decoder (arrays and strings: lcmlog.h). */
+static int dec_parts(const void *data, int len, int64_t *ut, json_t **j)
+{
+    mmlcm_parts_t m;
+    if (lcmlog_decode_parts(data, len, &m) != 0) return -1;
+    *ut = m.utime;
+    if (j) {
+        json_t *parts = json_array(), *em = json_array();
+        for (int i = 0; i < m.nparts; i++) {
+            const mmlcm_part_t *p = &m.parts[i];
+            json_array_append_new(parts, json_pack("{s:s, s:s, s:o, s:s}", "kind", p->kind, "name", p->name, "values",
+                                                   darr(p->values, p->nvalues), "units", p->units));
+        }
+        for (int g = 0; g < m.nemitters; g++) json_array_append_new(em, json_boolean(m.emitter[g]));
+        *j = json_pack("{s:I, s:o, s:f, s:f, s:o}", "utime", (json_int_t)m.utime, "parts", parts, "battery_v",
+                      m.battery_v, "battery_soc", m.battery_soc, "emitter", em);
+    }
+    mmlcm_parts_t_decode_cleanup(&m);
     return 0;
 }
 
@@ -160,6 +182,7 @@ static const decoder_t decoders[] = {
     { "MM_POSE", dec_pose },
     { "MM_MOTORS", dec_motors },
     { "MM_SENSORS", dec_sensors },
+    { "MM_PARTS", dec_parts },
     { "MM_RACE", dec_race },
     { "MM_RACE_EVENT", dec_race_event },
     { "MM_BELIEF", dec_belief },

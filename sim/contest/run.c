@@ -34,6 +34,10 @@ int run_load_config(const run_opts_t *o, simcfg_t *c)
         fprintf(stderr, "%s\n", err);
         return -1;
     }
+    if (robot_fits(c, err, sizeof err) != 0) {
+        fprintf(stderr, "%s: %s\n", o->config_path ? o->config_path : o->robot_path ? o->robot_path : "robots/paper.ini", err);
+        return -1;
+    }
     if (o->time_limit_s > 0) c->time_limit_s = o->time_limit_s;
     if (o->centre_post >= 0) c->centre_post = o->centre_post;
     if (o->paper_friction) {

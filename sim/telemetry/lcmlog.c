@@ -127,9 +127,9 @@ int lcmlog_each(const char *path, lcmlog_fn fn, void *ctx, long *events, char *e
  * lcm-gen's decoders malloc what a message's count or string length says
  * before checking it against the data (a negative count asks for ~2^64
  * bytes), leave what they allocated when they fail half way, and do not
- * check that a string ends in its NUL. So the layout of these two types is
- * checked here first, field by field as lcm/belief_t.lcm and
- * lcm/maze_t.lcm declare them (keep in step). */
+ * check that a string ends in its NUL. So the layout of these types is
+ * checked here first, field by field as lcm/belief_t.lcm, lcm/maze_t.lcm
+ * and lcm/parts_t.lcm (with lcm/part_t.lcm) declare them (keep in step). */
 typedef struct {
     const unsigned char *d;
     int64_t len, at;
@@ -147,6 +147,15 @@ static int64_t count16(cursor_t *c) /* an int16_t array length, >= 0 */
     if (c->len - c->at < 2) return c->ok = 0;
     int16_t v = (int16_t)be(c->d + c->at, 2);
     c->at += 2;
+    if (v < 0) c->ok = 0;
+    return v < 0 ? 0 : v;
+}
+
+static int64_t count8(cursor_t *c) /* an int8_t array length, >= 0 */
+{
+    if (c->len - c->at < 1) return c->ok = 0;
+    int8_t v = (int8_t)c->d[c->at];
+    c->at += 1;
     if (v < 0) c->ok = 0;
     return v < 0 ? 0 : v;
 }
@@ -186,6 +195,22 @@ static int maze_layout_ok(const void *data, int len)
     return c.ok && c.at == len;
 }
 
+static int parts_layout_ok(const void *data, int len)
+{
+    cursor_t c = { data, len, 0, 1 };
+    skip(&c, 8 + 8); /* hash, utime */
+    int64_t n = count16(&c);
+    for (int64_t i = 0; i < n && c.ok; i++) { /* part_t, nested: no hash of its own */
+        string(&c);                /* kind */
+        string(&c);                /* name */
+        skip(&c, count8(&c) * 8);  /* values */
+        string(&c);                /* units */
+    }
+    skip(&c, 8 + 8);           /* battery_v, battery_soc */
+    skip(&c, count8(&c) * 1);  /* emitter */
+    return c.ok && c.at == len;
+}
+
 int lcmlog_decode_belief(const void *data, int len, mmlcm_belief_t *m)
 {
     memset(m, 0, sizeof *m);
@@ -202,6 +227,16 @@ int lcmlog_decode_maze(const void *data, int len, mmlcm_maze_t *m)
     if (!maze_layout_ok(data, len)) return -1;
     if (mmlcm_maze_t_decode(data, 0, len, m) == len) return 0;
     mmlcm_maze_t_decode_cleanup(m);
+    memset(m, 0, sizeof *m);
+    return -1;
+}
+
+int lcmlog_decode_parts(const void *data, int len, mmlcm_parts_t *m)
+{
+    memset(m, 0, sizeof *m);
+    if (!parts_layout_ok(data, len)) return -1;
+    if (mmlcm_parts_t_decode(data, 0, len, m) == len) return 0;
+    mmlcm_parts_t_decode_cleanup(m);
     memset(m, 0, sizeof *m);
     return -1;
 }

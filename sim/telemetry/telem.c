@@ -18,11 +18,13 @@
 #include "mmlcm_link_t.h"
 #include "mmlcm_maze_t.h"
 #include "mmlcm_motors_t.h"
+#include "mmlcm_parts_t.h"
 #include "mmlcm_pose_t.h"
 #include "mmlcm_race_event_t.h"
 #include "mmlcm_race_t.h"
 #include "mmlcm_sensors_t.h"
 #include "maze/solve.h"
+#include "world/sensors/sensor.h"
 
 #define NONE UINT64_MAX
 
@@ -282,6 +284,34 @@ static void emit(telem_t *t, const char *channel, int64_t utime, int len)
 
 static int64_t utime_of(const telem_t *t, const sim_t *s) { return (int64_t)(s->step * t->step_us); }
 
+/* Every sensor component's latest values (sim_part_values: no noise
+ * drawn), the battery and the emitter groups. */
+static void pub_parts(telem_t *t, const sim_t *s, int64_t ut)
+{
+    static mmlcm_part_t part[ROBOT_MAX_PARTS];
+    static double values[ROBOT_MAX_PARTS][SENSOR_VALUES];
+    static int8_t emitter[SIM_EMITTER_GROUPS];
+    mmlcm_parts_t m;
+    m.utime = ut;
+    m.nparts = 0;
+    for (int i = 0; i < s->cfg.nparts && i < ROBOT_MAX_PARTS; i++) {
+        const robot_part_t *p = &s->cfg.part[i];
+        mmlcm_part_t *q = &part[m.nparts++];
+        q->kind = (char *)p->kind->name;
+        q->name = (char *)p->name;
+        q->nvalues = (int8_t)sim_part_values(s, i, values[i]);
+        q->values = values[i];
+        q->units = (char *)p->kind->units;
+    }
+    m.parts = part;
+    m.battery_v = sim_battery_v(s);
+    m.battery_soc = battery_soc(&s->battery);
+    m.nemitters = SIM_EMITTER_GROUPS;
+    for (int g = 0; g < SIM_EMITTER_GROUPS; g++) emitter[g] = (int8_t)(sim_emitter(s, (unsigned)g) != 0);
+    m.emitter = emitter;
+    emit(t, "MM_PARTS", ut, mmlcm_parts_t_encode(t->buf, 0, TELEM_BUF_BYTES, &m));
+}
+
 static void pub_fast(telem_t *t, const sim_t *s)
 {
     int64_t ut = utime_of(t, s);
@@ -311,6 +341,7 @@ static void pub_fast(telem_t *t, const sim_t *s)
         r.tof_true_m[i] = s->tof_true_m[i];
     }
     emit(t, "MM_SENSORS", ut, mmlcm_sensors_t_encode(t->buf, 0, TELEM_BUF_BYTES, &r));
+    pub_parts(t, s, ut);
     t->last_fast = s->step;
 }
 

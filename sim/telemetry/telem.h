@@ -3,6 +3,9 @@
  *
  * Channels (every message carries utime = simulation time, microseconds):
  *   MM_POSE, MM_MOTORS, MM_SENSORS  at the high rate (rate_hz, default 100 Hz)
+ *   MM_PARTS                        with them: every sensor component of the
+ *                                   robot file (kind, name, values, units),
+ *                                   the battery and the emitter groups
  *   MM_RACE                         at TELEM_RACE_HZ
  *   MM_RACE_EVENT                   on the step a lap starts or ends
  *   MM_BELIEF                       when the firmware calls hal_belief

@@ -15,7 +15,7 @@ typedef struct {
     const char *path;
     char *err;
     size_t errlen;
-    size_t cap_pose, cap_sensors, cap_race, cap_event, cap_belief, cap_walls;
+    size_t cap_pose, cap_sensors, cap_race, cap_event, cap_belief, cap_walls, cap_parts;
     long n;             /* events read */
 } load_t;
 
@@ -75,6 +75,21 @@ static int take_maze(load_t *l, const mmlcm_maze_t *m)
         r->field[r->count++] = msg;                                                                         \
     } while (0)
 
+/* An MM_PARTS message: its time and the emitter groups' states. */
+static int take_parts(load_t *l, const lcm_eventlog_event_t *ev, int64_t *ut)
+{
+    replay_t *r = l->r;
+    const char *ch = ev->channel;
+    mmlcm_parts_t m;
+    if (lcmlog_decode_parts(ev->data, ev->datalen, &m) != 0) return fail(l, "does not decode", ch);
+    replay_parts_t p = { m.utime, 0 };
+    for (int g = 0; g < m.nemitters && g < 8; g++) p.emitters |= (uint8_t)((m.emitter[g] != 0) << g);
+    mmlcm_parts_t_decode_cleanup(&m);
+    PUSH(parts, nparts, cap_parts, p);
+    *ut = p.utime;
+    return 0;
+}
+
 static int on_event(void *ctx, const lcm_eventlog_event_t *ev)
 {
     load_t *l = ctx;
@@ -93,6 +108,8 @@ static int on_event(void *ctx, const lcm_eventlog_event_t *ev)
         if (mmlcm_sensors_t_decode(ev->data, 0, len, &m) != len) return fail(l, "does not decode", ch);
         PUSH(sensors, nsensors, cap_sensors, m);
         ut = m.utime;
+    } else if (!strcmp(ch, "MM_PARTS")) {
+        if (take_parts(l, ev, &ut) != 0) return -1;
     } else if (!strcmp(ch, "MM_RACE")) {
         mmlcm_race_t m;
         if (mmlcm_race_t_decode(ev->data, 0, len, &m) != len) return fail(l, "does not decode", ch);
@@ -141,6 +158,7 @@ void replay_free(replay_t *r)
 {
     free(r->pose);
     free(r->sensors);
+    free(r->parts);
     free(r->race);
     free(r->event);
     free(r->belief);
@@ -151,7 +169,7 @@ void replay_free(replay_t *r)
 int replay_load(replay_t *r, const char *path, char *err, size_t errlen)
 {
     memset(r, 0, sizeof *r);
-    load_t l = { r, path, err, errlen, 0, 0, 0, 0, 0, 0, 0 };
+    load_t l = { r, path, err, errlen, 0, 0, 0, 0, 0, 0, 0, 0 };
     int rc = lcmlog_each(path, on_event, &l, NULL, err, errlen);
     if (rc == 0 && !r->have_maze) {
         snprintf(err, errlen, "%s: no MM_MAZE message (a log of mmsim --lcm-log before mmview existed?)", path);
@@ -254,6 +272,8 @@ void replay_apply(replay_t *r, sim_t *s, double t_s)
         s->tof_last[k].dist_m = j >= 0 ? r->sensors[j].tof_mm[k] * 1e-3 : s->tof_range_m;
         s->tof_last[k].timeout = j >= 0 ? r->sensors[j].tof_timeout[k] : 1;
     }
+    long e = LAST_AT(r->parts, r->nparts, t_us);
+    for (unsigned g = 0; g < SIM_EMITTER_GROUPS; g++) sim_emitter_set(s, g, e >= 0 && (r->parts[e].emitters >> g & 1));
     s->step = (uint64_t)llround((double)t_us * 1e-6 / s->cfg.step_s);
     rebuild_race(r, &s->race, t_us);
 }

@@ -1,12 +1,13 @@
 /* replay.h - an LCM log of a run (mmsim --lcm-log) loaded for replay: the
- * true maze and config (MM_MAZE), poses, sensors, contest timers, lap
+ * true maze, config and robot (MM_MAZE), poses, sensors, contest timers, lap
  * events and the mouse's belief, put back into a sim_t at any time so the
  * viewer draws the logged run exactly as it drew the live one (mmview).
  *
  * The sim_t is a stand-in: its ODE world holds the logged maze, and
  * replay_apply places the robot (world_place), sets the ToF readings and
- * rebuilds the contest timers; it is never stepped. Times are simulation
- * time; a channel's state at time t is its last message with utime <= t. */
+ * the IR emitter groups (MM_PARTS: the beams' colours) and rebuilds the
+ * contest timers; it is never stepped. Times are simulation time; a
+ * channel's state at time t is its last message with utime <= t. */
 #ifndef REPLAY_H
 #define REPLAY_H
 
@@ -26,6 +27,13 @@ typedef struct {
     uint8_t heading;
 } replay_belief_t;
 
+/* An MM_PARTS message as the viewer needs it: the emitter groups' states
+ * (bit g = group g lit), which colour the IR beams. */
+typedef struct {
+    int64_t utime;
+    uint8_t emitters;
+} replay_parts_t;
+
 typedef struct {
     char path[1024];          /* the maze file named in the log */
     maze_t maze;              /* the true maze */
@@ -40,6 +48,8 @@ typedef struct {
     size_t nrace;
     mmlcm_race_event_t *event;
     size_t nevent;
+    replay_parts_t *parts;    /* MM_PARTS (logs before it: none, emitters dark) */
+    size_t nparts;
     replay_belief_t *belief; /* the mouse's belief messages */
     uint8_t *belief_walls;    /* their maps: ncells wall bytes each */
     size_t nbelief;
@@ -61,7 +71,7 @@ double replay_end_s(const replay_t *r);
  * centre post as logged). Returns 0, or -1 if ODE fails. sim_free it. */
 int replay_sim_init(replay_t *r, sim_t *s);
 /* Put the state at t_s (clamped to 0..end) into s: robot pose and wheels,
- * ToF readings, contest timers, sim time (s->step). */
+ * ToF readings, emitter groups, contest timers, sim time (s->step). */
 void replay_apply(replay_t *r, sim_t *s, double t_s);
 /* The mouse's belief at t_s for the scene overlay (b->map NULL if none yet). */
 void replay_belief(replay_t *r, double t_s, scene_belief_t *b);

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "maze/solve.h"
+#include "world/sensors/ir.h"
 
 #define FOV_DEG 45.0  /* vertical field of view */
 #define NEAR_M 0.01
@@ -217,6 +218,52 @@ static void rays(sim_t *s)
     glEnable(GL_LIGHTING);
 }
 
+/* One IR sensor's beam: a cone from the sensor along its axis, half angle
+ * its model's cone_deg, as long as the ray along the axis reaches (the
+ * first wall or post, else the model's max_m), in its emitter group's
+ * colour. The ray query draws no noise and changes no state. */
+static void ir_beam(sim_t *s, const robot_part_t *p)
+{
+    enum { SEG = 16 };
+    const ir_part_spec_t *sp = (const ir_part_spec_t *)p->spec;
+    double pos[3], ax[3], lf[3], up[3], n[3];
+    sensor_frame(s->world, p, pos, ax, lf, up);
+    double d = world_ray_normal(s->world, pos, ax, sp->model.max_m, n), len = d >= 0 ? d : sp->model.max_m;
+    double r = len * tan(sp->model.cone_deg * M_PI / 180);
+    int lit = sim_emitter(s, (unsigned)sp->emitter) != 0;
+    uint32_t rgb = lit ? SCENE_IR_LIT : SCENE_IR_DARK;
+    double c[3] = { pos[0] + len * ax[0], pos[1] + len * ax[1], pos[2] + len * ax[2] };
+    colour(rgb, lit ? 0.55f : 0.35f);
+    glBegin(GL_TRIANGLE_FAN);
+    glVertex3d(pos[0], pos[1], pos[2]);
+    for (int i = 0; i <= SEG; i++) {
+        double a = 2 * M_PI * i / SEG, ca = cos(a) * r, sa = sin(a) * r;
+        glVertex3d(c[0] + ca * lf[0] + sa * up[0], c[1] + ca * lf[1] + sa * up[1], c[2] + ca * lf[2] + sa * up[2]);
+    }
+    glEnd();
+    colour(rgb, 1);
+    glBegin(GL_LINES); /* the axis, seen even when the cone is thin */
+    glVertex3d(pos[0], pos[1], pos[2]);
+    glVertex3d(c[0], c[1], c[2]);
+    glEnd();
+}
+
+/* Every IR sensor's beam (robot file [ir.*]), translucent. */
+static void ir_beams(sim_t *s)
+{
+    glDisable(GL_LIGHTING);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+    glLineWidth(2);
+    for (int i = 0; i < s->cfg.nparts; i++)
+        if (!strcmp(s->cfg.part[i].kind->name, "ir")) ir_beam(s, &s->cfg.part[i]);
+    glLineWidth(1);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glEnable(GL_LIGHTING);
+}
+
 /* The mouse's walls as bars over the wall tops (cyan where it agrees with
  * the truth, magenta where it does not) and its planned path. */
 static void overlay(const sim_t *s, const scene_belief_t *b)
@@ -297,6 +344,7 @@ void scene_draw(sim_t *s, int cam, const scene_orbit_t *orbit, const scene_belie
     walls(s);
     robot(s);
     rays(s);
+    ir_beams(s);
     if (show_overlay && b && b->map) overlay(s, b);
     glDisable(GL_LIGHTING);
     glDisable(GL_DEPTH_TEST);

@@ -1,6 +1,7 @@
 /* scene.h - the 3D scene of a simulation in legacy OpenGL: floor, start
  * and goal cells, posts, walls, the robot's body and wheels, the ToF rays
- * with their hit points, and (toggle) the mouse's discovered walls and its
+ * with their hit points, each IR sensor's beam (a cone to the first wall,
+ * coloured by its emitter group's state), and (toggle) the mouse's discovered walls and its
  * planned path. Needs a current GL context; draws into the viewport given.
  *
  * Cameras (as in the paper): 1 a static bird's view of the whole maze,
@@ -21,6 +22,8 @@ enum { SCENE_BIRD = 1, SCENE_FOLLOW = 2, SCENE_TOP = 3, SCENE_CAMERAS = 3 };
 #define SCENE_ROBOT 0x2A5CE0u    /* robot body */
 #define SCENE_START 0x2E8B3Eu
 #define SCENE_GOAL 0xD8B020u
+#define SCENE_IR_LIT 0xFF50C0u   /* an IR sensor's beam, its emitter group lit (translucent) */
+#define SCENE_IR_DARK 0x6070A0u  /* the same, the group dark */
 
 typedef struct {
     double dyaw_rad, dpitch_rad; /* added to the camera's own angles */

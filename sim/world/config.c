@@ -117,10 +117,6 @@ static int on_key(void *user, const char *section, const char *name, const char 
 /* Cross-key checks that one key's range cannot express. */
 static int check(const simcfg_t *c, char *reason, size_t len)
 {
-    if (2 * c->wheel_x_m + c->wheel_w_m >= c->cell_m - c->wall_thick_m) {
-        snprintf(reason, len, "world.cell_m: the robot is wider than a corridor");
-        return -1;
-    }
     if (c->post_m < c->wall_thick_m) {
         snprintf(reason, len, "world.post_m: posts thinner than walls");
         return -1;

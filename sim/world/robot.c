@@ -140,23 +140,23 @@ static int add_section(load_t *l, const char *kind, const char *name, int line)
     sect_t *s = &l->s[l->n];
     memset(s, 0, sizeof *s);
     snprintf(s->kind, sizeof s->kind, "%s", kind);
-    snprintf(s->name, sizeof s->name, "%s", name);
+    snprintf(s->name, sizeof s->name, "%.15s", name); /* checked: at most 15 */
     s->line = line;
     int side = side_of(name);
     if (!strcmp(kind, "chassis")) {
         s->keys[1] = chassis_keys, s->nkeys[1] = N(chassis_keys), s->target[1] = c;
-        snprintf(c->chassis_name, sizeof c->chassis_name, "%s", name);
+        snprintf(c->chassis_name, sizeof c->chassis_name, "%.15s", name); /* checked: at most 15 */
     } else if (!strcmp(kind, "motor") || !strcmp(kind, "encoder")) {
-        if (side < 0) return fail(l, line, "%s.%s: a %s is named left or right", kind, name, kind);
+        if (side < 0) return fail(l, line, "%s.%s: the %s is named left or right", kind, name, kind);
         int motor = !strcmp(kind, "motor");
         s->keys[1] = motor ? motor_keys : encoder_keys, s->nkeys[1] = motor ? N(motor_keys) : N(encoder_keys);
         s->target[1] = &c->drive[side];
     } else if (!strcmp(kind, "measured")) {
         s->keys[1] = measured_keys, s->nkeys[1] = N(measured_keys), s->target[1] = &c->measured;
-        snprintf(c->measured_name, sizeof c->measured_name, "%s", name);
+        snprintf(c->measured_name, sizeof c->measured_name, "%.15s", name); /* checked: at most 15 */
     } else if (!strcmp(kind, "battery")) {
         s->keys[1] = battery_keys, s->nkeys[1] = N(battery_keys), s->target[1] = &c->battery;
-        snprintf(c->battery_name, sizeof c->battery_name, "%s", name);
+        snprintf(c->battery_name, sizeof c->battery_name, "%.15s", name); /* checked: at most 15 */
     } else {
         const sensor_kind_t *k = sensor_kind(kind);
         if (!k) return fail(l, line, "%s.%s: unknown kind (chassis motor encoder battery measured tof ir gyro)%s", kind, name, "");
@@ -165,7 +165,7 @@ static int add_section(load_t *l, const char *kind, const char *name, int line)
         memset(p, 0, sizeof *p);
         p->kind = k;
         p->line = line;
-        snprintf(p->name, sizeof p->name, "%s", name);
+        snprintf(p->name, sizeof p->name, "%.15s", name); /* checked: at most 15 */
         s->sensor = k;
         s->keys[0] = pose_keys, s->nkeys[0] = N(pose_keys), s->target[0] = p;
         s->keys[1] = k->keys, s->nkeys[1] = k->nkeys, s->target[1] = p->spec;
@@ -345,9 +345,16 @@ static int physics_checks(load_t *l)
     for (int s = 0; s < 2; s++)
         if (c->drive[s].no_load_a >= c->drive[s].stall_a)
             return fail(l, 0, "motor.%s.no_load_a: not below stall_a%s%s", s ? "right" : "left", "", "");
-    if (2 * c->wheel_x_m + c->wheel_w_m >= c->cell_m - c->wall_thick_m)
-        return fail(l, 0, "chassis.%s.wheel_track_mm: the robot is wider than a corridor%s%s", c->chassis_name, "", "");
     return 0;
+}
+
+int robot_fits(const simcfg_t *c, char *reason, size_t len)
+{
+    double wide = 2 * c->wheel_x_m + c->wheel_w_m, corridor = c->cell_m - c->wall_thick_m;
+    if (wide < corridor) return 0;
+    snprintf(reason, len, "world.cell_m: the robot is wider than a corridor (%g mm over its tyres, the corridor %g mm)",
+             wide * 1000, corridor * 1000);
+    return -1;
 }
 
 /* ---- loading ---- */
@@ -475,4 +482,63 @@ double robot_tof_range_m(const simcfg_t *c)
 {
     int k = robot_part_of_kind(c, "tof", 0);
     return k < 0 ? 1.2 : ((const tof_spec_t *)c->part[k].spec)->range_m;
+}
+
+/* ---- the key list (tests) ---- */
+
+/* The i-th key of the list robot.h describes, and its kind; NULL past the end. */
+static const keytab_t *key_at(size_t i, const char **kind)
+{
+    static const struct {
+        const char *kind;
+        const keytab_t *keys;
+        size_t n;
+    } fixed[] = { { "chassis", chassis_keys, N(chassis_keys) },
+                  { "motor", motor_keys, N(motor_keys) },
+                  { "encoder", encoder_keys, N(encoder_keys) },
+                  { "battery", battery_keys, N(battery_keys) } };
+    for (size_t f = 0; f < N(fixed); f++) {
+        if (i < fixed[f].n) {
+            *kind = fixed[f].kind;
+            return &fixed[f].keys[i];
+        }
+        i -= fixed[f].n;
+    }
+    const sensor_kind_t *k;
+    for (unsigned s = 0; (k = sensor_kind_at(s)) != NULL; s++) {
+        *kind = k->name;
+        if (i < N(pose_keys)) return &pose_keys[i];
+        i -= N(pose_keys);
+        if (i < k->nkeys) return &k->keys[i];
+        i -= k->nkeys;
+    }
+    return NULL;
+}
+
+size_t robot_key_count(void)
+{
+    size_t n = 0;
+    const char *kind;
+    while (key_at(n, &kind)) n++;
+    return n;
+}
+
+int robot_key_info(size_t i, const char **kind, const char **key, double *min, double *max)
+{
+    const char *k_kind;
+    const keytab_t *k = key_at(i, &k_kind);
+    if (!k) return -1;
+    *kind = k_kind;
+    *key = k->key;
+    *min = k->min;
+    *max = k->max;
+    return 0;
+}
+
+const char *robot_key_word(size_t i, double v)
+{
+    const char *kind;
+    const keytab_t *k = key_at(i, &kind);
+    if (!k || !k->choices || v < 0 || v > k->max) return NULL;
+    return k->choices[(int)v];
 }

@@ -26,6 +26,10 @@
 #define ROBOT_MAX_TOF 3            /* the HAL's three ToF: left, front, right, in the file's order */
 #define ROBOT_MAX_IR 8             /* hal.h HAL_IR_MAX */
 
+/* 0 if the robot fits the world's corridors, else -1 with "world.cell_m:
+ * the robot is wider than a corridor (...)" in reason: checked once both
+ * the config and the robot are known (run_load_config). */
+int robot_fits(const simcfg_t *c, char *reason, size_t len);
 /* The built-in paper robot into c's robot fields (aborts if the built-in
  * text does not load: a build error, caught by test_robot). */
 void robot_defaults(simcfg_t *c);
@@ -47,5 +51,16 @@ int robot_part_of_kind(const simcfg_t *c, const char *kind, unsigned i);
 double robot_tof_range_m(const simcfg_t *c);
 /* How many parts of kind `kind`. */
 unsigned robot_count(const simcfg_t *c, const char *kind);
+
+/* Every key a robot file's sections take, for tests: the fixed parts'
+ * (kinds chassis, motor, encoder, battery), then for each sensor kind (in
+ * sensors/sensor.c's order) the pose keys and the kind's own. How many,
+ * and the i-th key's kind, name and range in the file's unit: 0, or -1
+ * past the end. */
+size_t robot_key_count(void);
+int robot_key_info(size_t i, const char **kind, const char **key, double *min, double *max);
+/* A word key's word for value v (robot_key_info's min..max are its
+ * indexes); NULL for a number key or past the end. */
+const char *robot_key_word(size_t i, double v);
 
 #endif

@@ -30,7 +30,7 @@ static void vary(simcfg_t *c, uint64_t seed)
     c->com_y_m += c->com_sigma_m * g[4];
 }
 
-static sensor_ctx_t ctx(sim_t *s)
+static sensor_ctx_t ctx(const sim_t *s)
 {
     sensor_ctx_t x;
     double v;
@@ -211,7 +211,7 @@ void sim_tof_origin(const sim_t *s, int i, double pos_m[3], double *dir_rad)
     *dir_rad = atan2(axis[1], axis[0]);
 }
 
-int sim_part_values(sim_t *s, int i, double v[4])
+int sim_part_values(const sim_t *s, int i, double v[4])
 {
     if (i < 0 || i >= s->cfg.nparts) return 0;
     sensor_ctx_t x = ctx(s);

@@ -71,8 +71,8 @@ double sim_gyro_rad_s(const sim_t *s);
 double sim_battery_v(const sim_t *s);
 /* Where ToF sensor i (0..ntof-1) sits and looks (world, m; heading rad). */
 void sim_tof_origin(const sim_t *s, int i, double pos_m[3], double *dir_rad);
-/* Every sensor's latest values for telemetry (no noise drawn): part i's
- * into v, how many (its kind's `units`). */
-int sim_part_values(sim_t *s, int i, double v[4]);
+/* Every sensor's latest values for telemetry (no noise drawn, no state
+ * changed: a const read): part i's into v, how many (its kind's `units`). */
+int sim_part_values(const sim_t *s, int i, double v[4]);
 
 #endif

@@ -67,7 +67,8 @@ void ir_init(ir_t *ir, const ir_spec_t *s, uint64_t seed, unsigned index)
 {
     ir->spec = *s;
     ir->nrays = 0;
-    int rings = s->rings < 0 ? 0 : s->rings > IR_MAX_RINGS ? IR_MAX_RINGS : s->rings;
+    /* a cone of 0 degrees is the axis alone, however many rings are asked for */
+    int rings = s->rings < 0 || s->cone_deg <= 0 ? 0 : s->rings > IR_MAX_RINGS ? IR_MAX_RINGS : (int)s->rings;
     int per = s->rays_per_ring < 1 ? 1 : s->rays_per_ring > IR_MAX_PER_RING ? IR_MAX_PER_RING : s->rays_per_ring;
     double step = rings ? s->cone_deg / rings : 0.0, step_rad = step * M_PI / 180.0;
     /* each ray stands for the solid angle around it: the centre a disc of

@@ -32,9 +32,10 @@
  * index), lit or dark, so the sequence depends only on the seed, the index
  * and the number of samples.
  *
- * Not wired in yet (issue 17, next step): sim_t does not own IR sensors,
- * hal/hal.h has no IR reading, the robot file has no IR sensor positions,
- * and telemetry does not publish them. */
+ * A robot file's [ir.NAME] sections place them (ir_part_spec_t); the
+ * firmware samples them through sim_ir_read (hal_ir_raw); telemetry
+ * publishes their latest samples on MM_PARTS (lcm/parts_t.lcm) and the
+ * viewer draws each beam (sim/view/scene.c). */
 #ifndef IR_H
 #define IR_H
 
