@@ -120,12 +120,17 @@ $(B)/test/xinput: test/xinput.c | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) -O1 $< -lX11 -lXtst -o $@
 
+# Boots an AVR image in simavr and prints its UART0 (test/cli_mazerunner.sh)
+$(B)/test/mrc_boot: test/mrc_boot.c | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) -O1 -g $(SAN) $< -lsimavr -lelf -o $@
+
 # deps first, then a fresh make: on a new machine the packages (and the Arduino
 # core's files that the wildcards below list) only exist once deps has run.
 test: deps
 	@$(MAKE) --no-print-directory test-run
 test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
-	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf $(B)/arduino/uno/OneCommand.elf
+	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf $(B)/arduino/uno/OneCommand.elf $(B)/test/mrc_boot
 	@MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
 # PlatformIO from PyPI in a venv, only to check that platformio.ini parses
