@@ -19,6 +19,8 @@ CFLAGS  ?= -O2 -g
 SAN     := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 LIBS     = -ljansson -linih -llcm $(shell pkg-config --libs glib-2.0 ode libpng glfw3 gl 2>/dev/null) -lsimavr -lelf -lm
 B       := build
+# ../shared: the maze database and the real clients (tests skip what is absent)
+SHARED  ?= ../shared
 
 # LCM message types (package mmlcm): C and Java generated at build time into
 # $(B)/lcmgen and $(B)/lcmjava, never committed.
@@ -48,7 +50,7 @@ MCU_RX_FLAGS := -DWIRE_RX_LOG_MAX=14
 # decoder as shipped: its own wire.c with the flag (libmm_san's has the host's).
 TESTS += $(B)/test/test_wire_rx14
 
-.PHONY: all deps test test-run sim sim-run bench bench-run fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay view docs-img
+.PHONY: all deps test test-run client-mazerunner mrc-images sim sim-run bench bench-run fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay view docs-img
 all: tools
 
 deps:
@@ -118,12 +120,17 @@ $(B)/test/xinput: test/xinput.c | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) -O1 $< -lX11 -lXtst -o $@
 
+# Boots an AVR image in simavr and prints its UART0 (test/cli_mazerunner.sh)
+$(B)/test/mrc_boot: test/mrc_boot.c | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) -O1 -g $(SAN) $< -lsimavr -lelf -o $@
+
 # deps first, then a fresh make: on a new machine the packages (and the Arduino
 # core's files that the wildcards below list) only exist once deps has run.
 test: deps
 	@$(MAKE) --no-print-directory test-run
 test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
-	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf $(B)/arduino/uno/OneCommand.elf \
+	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf $(B)/arduino/uno/OneCommand.elf $(B)/test/mrc_boot \
 	$(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf
 	@MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
@@ -162,11 +169,14 @@ ARD_EXAMPLES := Mouse DriveToWall
 # the core's serial transmit buffer is 32 B (the receive buffer stays 64: up
 # to ~60 B of sensor frames arrive per 4 ms tick)
 ARD_RAM      := $(MCU_RX_FLAGS) -DSERIAL_TX_BUFFER_SIZE=32
-ARD_COMMON   := -DF_CPU=16000000L -DARDUINO=10819 -DARDUINO_ARCH_AVR -Os -ffunction-sections -fdata-sections \
-	-DMAZE_MAX_SIZE=16 $(ARD_RAM) -I$(ARD_CORE) -Ihal -Ihal/wire -Ihal/arduino/src -Ifirmware
+# ARD_BASE: the core's own flags (platform.txt, less -g and -flto); ARD_COMMON adds ours.
+ARD_BASE     := -DF_CPU=16000000L -DARDUINO=10819 -DARDUINO_ARCH_AVR -Os -ffunction-sections -fdata-sections -I$(ARD_CORE)
+ARD_COMMON   := $(ARD_BASE) -DMAZE_MAX_SIZE=16 $(ARD_RAM) -Ihal -Ihal/wire -Ihal/arduino/src -Ifirmware
 ARD_CXX      := -std=gnu++11 -fno-exceptions -fno-threadsafe-statics -fpermissive -DDECIMAL_DIG=__DECIMAL_DIG__
 ARD_uno      := -mmcu=atmega328p -DARDUINO_AVR_UNO -I$(ARD_DIR)/variants/standard
 ARD_mega2560 := -mmcu=atmega2560 -DARDUINO_AVR_MEGA2560 -I$(ARD_DIR)/variants/mega
+# The Nano: the Uno's ATmega328P at 16 MHz with two more analogue inputs (A6, A7)
+ARD_nano     := -mmcu=atmega328p -DARDUINO_AVR_NANO -I$(ARD_DIR)/variants/eightanaloginputs
 ARD_LIB_SRC  := $(wildcard hal/arduino/src/*.cpp) hal/wire/wire.c $(FW_SRC)
 ARD_CORE_SRC := $(wildcard $(ARD_CORE)/*.c $(ARD_CORE)/*.cpp) $(ARD_CORE)/wiring_pulse.S
 ARD_HDRS     := $(wildcard hal/arduino/src/*.h firmware/*.h) hal/hal.h hal/wire/wire.h
@@ -234,6 +244,53 @@ arduino-lib:
 	cp firmware/*.c firmware/*.h $(B)/arduino-lib/Micromouse/src/
 	@echo "$(B)/arduino-lib/Micromouse: copy it to your Arduino libraries folder (see hal/arduino/README.md)"
 
+# ---- real clients: firmware that others wrote, built from its own folder
+# (../shared/clients or a clone: never copied into the repo) into $(B)/clients.
+# mazerunner-core, UKMARSBOT's contest firmware for the Arduino Nano, as the
+# Arduino IDE builds it: the .ino as C++ with Arduino.h included, the core in
+# an archive (so Tone.cpp, which also defines TIMER2_COMPA_vect, stays out).
+# Two images: as shipped (config.h: EVENT_HOME, goal (1,0)) and -uk, set up
+# for a contest as its README says (config.h's EVENT = EVENT_UK, goal (7,7)),
+# on a copy in $(B). MRC_DIR: a clone of github.com/ukmars/mazerunner-core.
+MRC_DIR    ?= $(SHARED)/clients/mazerunner-core
+MRC_SKETCH := $(firstword $(wildcard $(MRC_DIR)/mazerunner-core/mazerunner-core.ino $(MRC_DIR)/mazerunner-core.ino))
+MRC_SRC    := $(dir $(MRC_SKETCH))
+MRC_FILES  := $(wildcard $(MRC_SRC)*.h $(MRC_SRC)*.ino)
+MRC_ELFS   := $(B)/clients/mazerunner-core.elf $(B)/clients/mazerunner-core-uk.elf
+NANO_CORE  := $(B)/clients/nano/core.a
+client-mazerunner: | deps
+	@if [ -z "$(MRC_SKETCH)" ]; then echo "SKIP client-mazerunner: $(MRC_DIR) not found"; exit 0; fi; \
+	$(MAKE) --no-print-directory mrc-images && avr-size $(MRC_ELFS) && \
+	for e in $(MRC_ELFS); do echo "$$e: $$(avr-size -C --mcu=atmega328p $$e | grep '^Program:\|^Data:' | tr -s ' ' | paste -sd' ')"; done
+mrc-images: $(MRC_ELFS) $(MRC_ELFS:.elf=.hex)
+	@:
+$(B)/clients/nano/core/%.c.o: $(ARD_CORE)/%.c | deps
+	@mkdir -p $(dir $@)
+	@avr-gcc $(ARD_nano) $(ARD_BASE) -std=gnu11 -c $< -o $@
+$(B)/clients/nano/core/%.cpp.o: $(ARD_CORE)/%.cpp | deps
+	@mkdir -p $(dir $@)
+	@avr-g++ $(ARD_nano) $(ARD_BASE) $(ARD_CXX) -c $< -o $@
+$(B)/clients/nano/core/%.S.o: $(ARD_CORE)/%.S | deps
+	@mkdir -p $(dir $@)
+	@avr-gcc $(ARD_nano) $(ARD_BASE) -x assembler-with-cpp -c $< -o $@
+$(NANO_CORE): $(patsubst $(ARD_CORE)/%,$(B)/clients/nano/core/%.o,$(ARD_CORE_SRC))
+	@rm -f $@; avr-ar rcs $@ $^
+# MRC_BUILD (sketch folder, image): the .ino compiled where it is, then linked.
+define MRC_BUILD
+	avr-g++ $(ARD_nano) $(ARD_BASE) $(ARD_CXX) -w -x c++ -include Arduino.h -c $(1)mazerunner-core.ino -o $(2).o
+	avr-gcc $(ARD_nano) -Os -Wl,--gc-sections $(2).o $(NANO_CORE) -lm -o $(2)
+endef
+$(B)/clients/mazerunner-core.elf: $(MRC_FILES) $(NANO_CORE)
+	$(call MRC_BUILD,$(MRC_SRC),$@)
+$(B)/clients/mazerunner-core-uk/mazerunner-core/config.h: $(MRC_FILES)
+	@rm -rf $(dir $@); mkdir -p $(dir $@); cp $(MRC_FILES) $(dir $@)
+	sed -i 's/^#define EVENT EVENT_HOME\b/#define EVENT EVENT_UK/' $@
+	@grep -q '^#define EVENT EVENT_UK' $@ || { echo "client-mazerunner: no '#define EVENT EVENT_HOME' line in config.h to set to EVENT_UK" >&2; exit 1; }
+$(B)/clients/mazerunner-core-uk.elf: $(B)/clients/mazerunner-core-uk/mazerunner-core/config.h $(NANO_CORE)
+	$(call MRC_BUILD,$(dir $<),$@)
+$(B)/clients/%.hex: $(B)/clients/%.elf
+	avr-objcopy -O ihex -R .eeprom $< $@
+
 # ---- simulation: a whole contest with the firmware in the loop (search,
 # proof, return, speed runs); DRIVER=scripted drives the true best path ----
 MAZE ?= mazes/gen-16x16-s1.txt
@@ -282,7 +339,6 @@ $(B)/simavr_cycles: bench/simavr_cycles.c | deps
 	$(CC) -O2 $< $$(pkg-config --cflags --libs simavr) -o $@
 # The AVR flood benchmark's true map: japan2018 from the database, else a
 # generated 16x16 from mazes/ (bench/avr_flood.c)
-SHARED     ?= ../shared
 BENCH_MAZE ?= $(firstword $(wildcard $(SHARED)/mazes/classic/japan2018.txt) mazes/gen-16x16-s1.txt)
 $(B)/maze_header: bench/maze_header.c $(B)/libmm.a
 	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(B)/libmm.a $(LIBS) -o $@
