@@ -248,6 +248,12 @@ static void test_every_config_key_at_its_extremes(void **state)
             for (size_t r = 0; r < sizeof refused / sizeof refused[0]; r++)
                 if (!strcmp(refused[r].key, name) && refused[r].at_max == at_max) why = refused[r].reason;
             int rc = config_load_string(&cfg, ini, j.name, err, sizeof err);
+            /* as mmsim does (run_load_config): the robot against the world once both are known */
+            char why_fit[300];
+            if (rc == 0 && robot_fits(&cfg, why_fit, sizeof why_fit) != 0) {
+                snprintf(err, sizeof err, "%s: %s", j.name, why_fit);
+                rc = -1;
+            }
             if (why) {
                 if (rc == 0 || !one_line(err, j.name) || !strstr(err, why))
                     fail_msg("%s: want refused with '%s', got %s", j.name, why, rc ? err : "loaded");
