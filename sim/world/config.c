@@ -180,16 +180,21 @@ static int load_text(simcfg_t *c, const char *text, size_t len, const char *name
     return 0;
 }
 
-int config_load(simcfg_t *c, const char *path, char *err, size_t errlen)
+int config_apply_file(simcfg_t *c, const char *path, size_t max_bytes, config_text_fn apply, char *err, size_t errlen)
 {
     size_t len;
     /* a regular file of a bounded size: a FIFO or /dev/zero hung, a
      * directory read as an empty file */
-    char *text = infile_read(path, CONFIG_MAX_BYTES, &len, err, errlen);
+    char *text = infile_read(path, max_bytes, &len, err, errlen);
     if (!text) return -1;
-    int rc = load_text(c, text, len, path, err, errlen);
+    int rc = apply(c, text, len, path, err, errlen);
     free(text);
     return rc;
+}
+
+int config_load(simcfg_t *c, const char *path, char *err, size_t errlen)
+{
+    return config_apply_file(c, path, CONFIG_MAX_BYTES, load_text, err, errlen);
 }
 
 int config_load_string(simcfg_t *c, const char *text, const char *name, char *err, size_t errlen)

@@ -135,6 +135,11 @@ int config_load(simcfg_t *c, const char *path, char *err, size_t errlen);
 /* Same from a NUL-terminated string (name is used in messages). */
 int config_load_string(simcfg_t *c, const char *text, const char *name, char *err, size_t errlen);
 
+/* Read the file at path (a regular file of at most max_bytes) and apply
+ * its text with `apply` (the config's or the robot file's loader). */
+typedef int (*config_text_fn)(simcfg_t *c, const char *text, size_t len, const char *name, char *err, size_t errlen);
+int config_apply_file(simcfg_t *c, const char *path, size_t max_bytes, config_text_fn apply, char *err, size_t errlen);
+
 /* A config or robot file's text, line by line: 0, or -1 with
  * "NAME:LINE: NUL byte" or "NAME:LINE: line too long (...)" in err. */
 int config_scan_lines(const char *text, size_t len, const char *name, char *err, size_t errlen);

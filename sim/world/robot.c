@@ -8,7 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "io/infile.h"
 #include "keytab.h"
 #include "world/sensors/sensor.h"
 #include "world/sensors/tof.h"
@@ -398,12 +397,7 @@ static int load_text(simcfg_t *c, const char *text, size_t len, const char *name
 
 int robot_load(simcfg_t *c, const char *path, char *err, size_t errlen)
 {
-    size_t len;
-    char *text = infile_read(path, ROBOT_MAX_BYTES, &len, err, errlen);
-    if (!text) return -1;
-    int rc = load_text(c, text, len, path, err, errlen);
-    free(text);
-    return rc;
+    return config_apply_file(c, path, ROBOT_MAX_BYTES, load_text, err, errlen);
 }
 
 int robot_load_string(simcfg_t *c, const char *text, const char *name, char *err, size_t errlen)
