@@ -263,6 +263,48 @@ static int teardown(void **state)
     return 0;
 }
 
+/* UKMARSBOT at full command from rest for 0.3 s, with its battery's
+ * internal resistance r_ohm: the wheel speed, the battery's terminal
+ * voltage at the end and the charge drawn. */
+static void ukmarsbot_burst(double r_ohm, double *w, double *v, double *mah)
+{
+    static simcfg_t c;
+    static sim_t s;
+    static maze_t m;
+    char err[600];
+    config_defaults(&c);
+    if (robot_load(&c, "robots/ukmarsbot.ini", err, sizeof err) != 0) fail_msg("%s", err);
+    c.battery.r_ohm = r_ohm;
+    if (mazefile_load(&m, "mazes/gen-5x5-s1.txt", NULL, err, sizeof err) != 0) fail_msg("%s", err);
+    assert_int_equal(sim_init(&s, &c, &m, 1), 0);
+    for (int i = 0; i < 300; i++) {
+        s.cmd[0] = s.cmd[1] = MOTOR_CMD_MAX;
+        sim_step(&s);
+    }
+    *w = world_wheel_rate(s.world, 0);
+    *v = sim_battery_v(&s);
+    *mah = battery_drawn_mah(&s.battery);
+    assert_true(battery_ocv(&s.battery) <= battery_spec_full_v(&c.battery));
+    sim_free(&s);
+}
+
+/* The battery is in the motors' circuit: its sag under their current
+ * slows the robot and the terminal voltage falls; the charge drawn is the
+ * current's integral, within what two stalled motors would draw. */
+static void test_battery_sag(void **state)
+{
+    (void)state;
+    double w0, v0, q0, w1, v1, q1;
+    ukmarsbot_burst(0.0, &w0, &v0, &q0);
+    ukmarsbot_burst(1.2, &w1, &v1, &q1);
+    assert_true(w1 < w0 - 1.0);          /* rad/s: the sag costs speed */
+    assert_true(v1 < v0 - 0.05);         /* V: the terminal voltage sags with R */
+    /* mAh drawn: above 0, below both motors stalled for the whole 0.3 s (8.4 V / 8.65 ohm each) */
+    double stall_mah = 2 * 8.4 / 8.65 * 0.3 / 3.6;
+    if (!(q0 > 0.1 * stall_mah && q0 < stall_mah && q1 > 0.1 * stall_mah && q1 < stall_mah))
+        fail_msg("drawn %g and %g mAh (stalled: %g)", q0, q1, stall_mah);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -271,6 +313,7 @@ int main(void)
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_error_side_name),
         cmocka_unit_test(test_more_sensors),
+        cmocka_unit_test(test_battery_sag),
     };
     return cmocka_run_group_tests_name("robot", tests, setup, teardown);
 }
