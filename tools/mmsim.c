@@ -66,6 +66,23 @@ static int f_seed(const char *prog, void *o, const char *arg)
     return 0;
 }
 
+static int f_input(const char *prog, void *o, const char *arg)
+{
+    char err[300];
+    if (input_parse(&run_of(o)->input, arg, err, sizeof err) != 0) return bad("%s", err);
+    return 0;
+}
+
+static int f_goal(const char *prog, void *o, const char *arg)
+{
+    int x, y, n = 0;
+    if (sscanf(arg, "%d,%d%n", &x, &y, &n) != 2 || arg[n] || x < 0 || y < 0 || x > 255 || y > 255)
+        return bad("--goal: expected X,Y (a cell, e.g. 7,7), got '%s'", arg);
+    run_of(o)->goal_x = x;
+    run_of(o)->goal_y = y;
+    return 0;
+}
+
 static int f_centre_post(const char *prog, void *o, const char *arg)
 {
     if (!strcmp(arg, "on")) run_of(o)->centre_post = 1;
@@ -182,6 +199,8 @@ static const cli_opt_t flags[] = {
     { .name = "validate", .kind = CLI_SET, .off = offsetof(mmsim_opts_t, validate) },
     { .name = "config", .kind = CLI_STR, .off = RUN(config_path) },
     { .name = "robot", .kind = CLI_STR, .off = RUN(robot_path) },
+    { .name = "input", .kind = CLI_FN, .fn = f_input, .has_arg = 1 },
+    { .name = "goal", .kind = CLI_FN, .fn = f_goal, .has_arg = 1 },
     { .name = "print-robot", .kind = CLI_SET, .off = RUN(print_robot) },
     { .name = "seed", .kind = CLI_FN, .fn = f_seed, .has_arg = 1 },
     { .name = "time-limit", .kind = CLI_NUM, .off = RUN(time_limit_s), .lo = 1, .hi = 86400 },
@@ -295,7 +314,7 @@ static int validate(const run_opts_t *o)
 static int run(int argc, char **argv)
 {
     mmsim_opts_t m = { .run = { /* the mouse's own firmware by default, 3 speed runs after the search */
-        .seed = 1, .runs = 3, .centre_post = -1, .scripted = 0, .jobs = 1,
+        .seed = 1, .runs = 3, .centre_post = -1, .scripted = 0, .jobs = 1, .goal_x = -1, .goal_y = -1,
         .view = { .width = 1024, .height = 720, .speed = 1, .camera = 1, .port = "", .baud = 115200 },
         .link = { .protocol = LINK_FRAMED, .silence_s = -1 }, /* silence: the protocol's default */
         .mms = { .timeout_ms = 5000, .reset_at_s = -1 },

@@ -112,6 +112,35 @@ static int open_outputs(run_t *r)
     return 0;
 }
 
+/* --goal X,Y: the laps go to that cell (a firmware whose goal is not the
+ * maze's, e.g. mazerunner-core as shipped: (1,0)). 0, or -1 after a line. */
+static int set_goal(run_t *r)
+{
+    const run_opts_t *o = r->o;
+    if (o->goal_x < 0) return 0;
+    if (o->goal_x >= r->maze.width || o->goal_y >= r->maze.height) {
+        fprintf(stderr, "--goal: cell %d,%d is outside the %ux%u maze\n", o->goal_x, o->goal_y, r->maze.width, r->maze.height);
+        return -1;
+    }
+    maze_clear_goals(&r->maze);
+    maze_set_goal(&r->maze, maze_cell(&r->maze, (uint8_t)o->goal_x, (uint8_t)o->goal_y), 1);
+    return 0;
+}
+
+/* The hands' actions due now: occlude and end here, the rest on the board
+ * (r->hands). NULL, or why the run ends. */
+static const char *hands(run_t *r)
+{
+    const input_action_t *a;
+    input_t *in = &r->input;
+    while ((a = input_due(in, sim_time_s(&r->sim))) != NULL) {
+        if (a->kind == INPUT_END) return "input_end";
+        if (a->kind == INPUT_OCCLUDE) sim_ir_occlude(&r->sim, a->value, INPUT_OCCLUDE_M, INPUT_OCCLUDE_S);
+        else if (r->hands) r->hands(r, a);
+    }
+    return NULL;
+}
+
 /* The config, the maze, the world, the driver and the outputs: 0 or the exit code. */
 static int setup(run_t *r)
 {
@@ -122,6 +151,7 @@ static int setup(run_t *r)
         return RUN_BAD_INPUT;
     }
     config_hash(&r->cfg, r->hash);
+    if (set_goal(r) != 0) return RUN_BAD_INPUT;
     if (sim_init(&r->sim, &r->cfg, &r->maze, r->o->seed) != 0) {
         fprintf(stderr, "%s: cannot set up the ODE world\n", r->maze_path);
         return RUN_EXTERNAL;
@@ -130,9 +160,16 @@ static int setup(run_t *r)
     r->tel_on = r->o->telem.url || r->o->telem.log_path;
     r->hil = r->o->serial;
     r->reason = "done";
+    r->input = r->o->input;
     if (r->drv->open(r) != 0) {
         sim_free(&r->sim);
         return RUN_EXTERNAL;
+    }
+    if (input_needs_board(&r->input) && !r->hands) {
+        fprintf(stderr, "--input: switches, button, reset and send act on a board (--board NAME)\n");
+        if (r->drv->undo) r->drv->undo(r);
+        sim_free(&r->sim);
+        return RUN_BAD_INPUT;
     }
     if (open_outputs(r) != 0) return fail_setup(r, RUN_EXTERNAL);
     /* a build with -DHAL_TICK_HZ=250 ticks every 4th step, as on the AVR */
@@ -196,7 +233,8 @@ static void contest_loop(run_t *r)
     r->t0 = wall_now();
     world_pose(r->sim.world, &w.last_x, &w.last_y, &h);
     for (;;) {
-        const char *why = r->hil ? run_link_step(r) : r->drv->step(r);
+        const char *why = hands(r);
+        if (!why) why = r->hil ? run_link_step(r) : r->drv->step(r);
         if (!why) why = after_step(r, &w);
         if (why) {
             r->reason = why;
@@ -252,7 +290,15 @@ static json_t *results_json(const run_t *r, double wall)
                                                    round(y * 1e6) / 1e6, "heading_rad", round(h * 1e6) / 1e6));
     json_object_set_new(j, "exit_reason", json_string(r->reason));
     json_object_set_new(j, "config_hash", json_string(r->hash));
-    if (r->o->robot_path) json_object_set_new(j, "robot", json_string(r->o->robot_path));
+    if (r->o->robot_path) {
+        /* by kind (issue 18): front and side contacts are errors; a rear touch below 0.1 m/s is not */
+        const world_t *w = r->sim.world;
+        json_object_set_new(j, "robot", json_string(r->o->robot_path));
+        json_object_set_new(j, "contacts", json_pack("{s:i, s:i, s:i, s:i}", "front", world_contacts(w, WORLD_CONTACT_FRONT),
+                                                     "side", world_contacts(w, WORLD_CONTACT_SIDE), "rear_soft",
+                                                     world_contacts(w, WORLD_CONTACT_REAR_SOFT), "rear",
+                                                     world_contacts(w, WORLD_CONTACT_REAR)));
+    }
     return j;
 }
 

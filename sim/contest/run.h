@@ -17,6 +17,7 @@
 #include "mms/mms.h"
 #include "telemetry/telem.h"
 #include "view/view.h"
+#include "contest/input.h"
 #include "world/config.h"
 
 enum { RUN_OK = 0, RUN_NOT_REACHED = 1, RUN_BAD_INPUT = 2, RUN_EXTERNAL = 3 };
@@ -44,6 +45,8 @@ typedef struct {
     const char *avr_elf, *avr_mcu; /* --avr ELF: processor in the loop (simavr), --mcu */
     uint32_t avr_f_cpu;            /* --f-cpu, Hz (0 = from the ELF or 16 MHz) */
     mms_opts_t mms;                /* --mms COMMAND (NULL: none), --mms-ideal-walls, --mms-timeout-ms, --mms-reset-at */
+    input_t input;                 /* --input "T ACTION; ...": a person's hands (input.h); input.n 0 = none */
+    int goal_x, goal_y;            /* --goal X,Y: laps scored to this cell, not the maze's goal (-1: the maze's) */
 } run_opts_t;
 
 /* The defaults, then --config's file, --robot's file, then the flags that

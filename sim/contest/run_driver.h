@@ -46,6 +46,9 @@ struct run_s {
     long steps_per_tick, tick_steps; /* the firmware's control tick */
     const char *reason; /* the JSON's exit_reason */
     double t0;          /* wall clock at the start, s */
+    input_t input;      /* --input's actions, consumed as they fall due */
+    /* the board's side of a hand's action (switches, button, reset, send); NULL: no board */
+    void (*hands)(run_t *r, const input_action_t *a);
 };
 
 extern const run_driver_t run_firmware, run_mms, run_scripted, run_serial, run_avr;

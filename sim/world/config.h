@@ -43,6 +43,9 @@ typedef struct {
     double counts_500mm_left, counts_500mm_right; /* encoder counts over 500 mm of straight travel */
 } robot_measured_t;
 
+enum { ROBOT_START_CENTRE = 0, ROBOT_START_BACK_TO_WALL = 1 };
+#define ROBOT_START_GAP_M 0.0005 /* back_to_wall: the body's rear this far from the wall's face, m */
+
 #define ROBOT_MAX_PARTS 16   /* sensors a robot file may list */
 #define ROBOT_NAME_MAX 16    /* bytes of a component's name, with the NUL */
 #define ROBOT_SPEC_MAX 32    /* doubles of a sensor kind's specification */
@@ -82,6 +85,7 @@ typedef struct {
     double tyre_mu;         /* Coulomb friction, tyre on floor */
     double tyre_mu_dynamic; /* sliding friction; <= tyre_mu */
     double tyre_slip_m_s;   /* contact slip speed above which tyre_mu_dynamic applies */
+    double start;           /* ROBOT_START_*: where the robot stands in the start cell */
     double body_com_y_m;    /* the body's centre of mass ahead of its centre (the robot file's) */
     double body_yaw_inertia_kgm2; /* the body's about its vertical axis; 0 = a uniform box's */
     double wheel_left_d_m, wheel_right_d_m; /* the robot file's; wheel_d_m is their mean */

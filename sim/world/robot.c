@@ -15,6 +15,7 @@
 extern const char robot_paper_ini[]; /* robots/paper.ini, built in (Makefile) */
 
 static const char *const motor_models[] = { "paper", "datasheet" };
+static const char *const starts[] = { "centre", "back_to_wall" };
 
 /* ---- the schemas of the robot's fixed parts ---- */
 
@@ -42,6 +43,8 @@ static const keytab_t chassis_keys[] = {
     C(tyre_mu, tyre_mu, 0, 0.01, 3, "1", "Coulomb friction, tyre on floor"),
     C(tyre_mu_dynamic, tyre_mu_dynamic, 0, 0.01, 3, "1", "sliding friction, <= tyre_mu"),
     C(tyre_slip_m_s, tyre_slip_m_s, 0, 0, 1, "m/s", "slip speed above which tyre_mu_dynamic applies"),
+    { NULL, "start", offsetof(simcfg_t, start), 0, 0, 1, "word",
+      "centre: in the start cell's centre; back_to_wall: its rear against the cell's back wall (UKMARSBOT)", starts, 1, 0, 0 },
     { NULL, "body_com_y_mm", offsetof(simcfg_t, body_com_y_m), 0, -100, 100, "mm",
       "the body's centre of mass ahead of its centre (0 = at the box's centre)", NULL, 0, 1000, 0 },
     { NULL, "body_yaw_inertia_kgm2", offsetof(simcfg_t, body_yaw_inertia_kgm2), 0, 0, 0.1, "kg*m^2",

@@ -90,8 +90,10 @@ int sim_init(sim_t *s, const simcfg_t *cfg, const maze_t *m, uint64_t seed)
     s->cfg = robot;
     s->maze = m;
     s->seed = seed;
-    s->world = world_create(c, m, (maze_x(m, m->start) + 0.5) * cell, (maze_y(m, m->start) + 0.5) * cell,
-                            start_heading(m->start_heading));
+    double h = start_heading(m->start_heading), back = 0; /* m behind the cell's centre */
+    if (c->start == ROBOT_START_BACK_TO_WALL) back = cell / 2 - c->wall_thick_m / 2 - c->body_l_m / 2 - ROBOT_START_GAP_M;
+    s->world = world_create(c, m, (maze_x(m, m->start) + 0.5) * cell - back * cos(h),
+                            (maze_y(m, m->start) + 0.5) * cell - back * sin(h), h);
     if (!s->world) return -1;
     battery_init(&s->battery, &c->battery);
     for (int i = 0; i < 2; i++) {
@@ -185,6 +187,19 @@ unsigned sim_ir_read(sim_t *s, unsigned i)
     if (k < 0) return 0;
     sensor_ctx_t x = ctx(s);
     return (unsigned)ir_sample(s->part_state[k], &s->cfg.part[k], &x);
+}
+
+int sim_ir_occlude(sim_t *s, int side, double d_m, double dur_s)
+{
+    for (int k = 0; k < s->cfg.nparts; k++) {
+        const robot_part_t *p = &s->cfg.part[k];
+        if (strcmp(p->kind->name, "ir") != 0 || fabs(p->yaw_deg) > 30 || (side ? p->x_m <= 0 : p->x_m >= 0)) continue;
+        ir_state_t *st = s->part_state[k];
+        st->object_m = d_m;
+        st->object_until_s = sim_time_s(s) + dur_s;
+        return 0;
+    }
+    return -1;
 }
 
 int sim_has_gyro(const sim_t *s) { return robot_count(&s->cfg, "gyro") > 0; }

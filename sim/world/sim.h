@@ -66,6 +66,12 @@ int sim_ir_count(const sim_t *s);
 void sim_emitter_set(sim_t *s, unsigned group, int on);
 int sim_emitter(const sim_t *s, unsigned group);
 unsigned sim_ir_read(sim_t *s, unsigned i);
+/* An object held d_m in front of the robot's front-facing IR sensor on
+ * the left (side 0) or right (1) from now for dur_s: its samples see the
+ * object instead of the maze (a hand starting mazerunner-core). 0, or -1
+ * if the robot has no such sensor (an IR sensor within 30 degrees of
+ * straight ahead, left or right of the centre line). */
+int sim_ir_occlude(sim_t *s, int side, double d_m, double dur_s);
 int sim_has_gyro(const sim_t *s);
 double sim_gyro_rad_s(const sim_t *s);
 double sim_battery_v(const sim_t *s);

@@ -32,6 +32,8 @@ struct world {
     double com[3];         /* chassis centre of mass in the robot frame (world_place) */
     int touching, touched_last;
     unsigned collisions;
+    unsigned step_kinds, episode_kinds; /* WORLD_CONTACT_* bits: this step's, this episode's */
+    unsigned kind_count[WORLD_CONTACT_KINDS]; /* finished episodes by kind */
 };
 
 static int ode_ready;
@@ -259,6 +261,22 @@ static int is_robot_part(const world_t *w, dGeomID g)
            g == w->wheel_side[1];
 }
 
+/* Which part of the robot touches a wall at world point p: its body's
+ * front or rear face (the rear gently, below WORLD_REAR_SOFT_M_S, or not),
+ * else its side (the wheels' sides too). */
+static unsigned contact_kind(const world_t *w, dGeomID a, const dReal *p)
+{
+    if (a != w->box) return a == w->caster || a == w->caster2 ? 1u << WORLD_CONTACT_FRONT : 1u << WORLD_CONTACT_SIDE;
+    dVector3 q;
+    dBodyGetPosRelPoint(w->chassis, p[0], p[1], p[2], q);
+    double y = q[1] + w->com[1], half = w->cfg.body_l_m / 2, edge = 0.002; /* m */
+    if (y > half - edge) return 1u << WORLD_CONTACT_FRONT;
+    if (y >= -half + edge) return 1u << WORLD_CONTACT_SIDE;
+    double v, om;
+    world_velocity(w, &v, &om);
+    return fabs(v) < WORLD_REAR_SOFT_M_S ? 1u << WORLD_CONTACT_REAR_SOFT : 1u << WORLD_CONTACT_REAR;
+}
+
 static void near_cb(void *data, dGeomID a, dGeomID b)
 {
     world_t *w = data;
@@ -272,7 +290,10 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
     int n = dCollide(a, b, MAX_CONTACTS, &c[0].geom, sizeof(dContact));
     if (n <= 0) return;
     int wall = b != w->floor;
-    if (wall) w->touching = 1;
+    if (wall) {
+        w->touching = 1;
+        w->step_kinds |= contact_kind(w, a, c[0].geom.pos);
+    }
     for (int i = 0; i < n; i++) {
         double mu = w->cfg.body_wall_mu;
         if (a == w->caster || a == w->caster2) {
@@ -336,17 +357,33 @@ static void drive_wheel(world_t *w, int s, const motor_drive_t *d)
     }
 }
 
+/* A contact episode over: counted once for each kind it had. */
+static void end_episode(world_t *w)
+{
+    for (int k = 0; k < WORLD_CONTACT_KINDS; k++)
+        if (w->episode_kinds & (1u << k)) w->kind_count[k]++;
+    w->episode_kinds = 0;
+}
+
 void world_step(world_t *w, const motor_drive_t drive[2])
 {
     drive_wheel(w, WORLD_LEFT, &drive[WORLD_LEFT]);
     drive_wheel(w, WORLD_RIGHT, &drive[WORLD_RIGHT]);
     w->touching = 0;
+    w->step_kinds = 0;
     dSpaceCollide(w->top, w, near_cb);
     if (w->cfg.solver == SIM_SOLVER_EXACT) dWorldStep(w->world, w->cfg.step_s);
     else dWorldQuickStep(w->world, w->cfg.step_s);
     dJointGroupEmpty(w->contacts);
     if (w->touching && !w->touched_last) w->collisions++;
+    if (w->touching) w->episode_kinds |= w->step_kinds;
+    else if (w->touched_last) end_episode(w);
     w->touched_last = w->touching;
+}
+
+unsigned world_contacts(const world_t *w, int kind)
+{
+    return w->kind_count[kind] + (w->touched_last && (w->episode_kinds & (1u << kind)) ? 1 : 0);
 }
 
 void world_brake(world_t *w, double load_nm)

@@ -74,6 +74,14 @@ void world_place(world_t *w, double x_m, double y_m, double heading_rad, const d
  * last step, and how many separate contact episodes so far. */
 int world_touching(const world_t *w);
 unsigned world_collisions(const world_t *w);
+/* Contact episodes by the part of the robot that touched: its body's front
+ * face (or a skid), its sides (or a wheel's), its rear face at under
+ * WORLD_REAR_SOFT_M_S (a robot that backs into the wall behind it on
+ * purpose, as UKMARSBOT's firmware does) or faster. An episode with two
+ * kinds counts once for each; the ongoing one counts. */
+enum { WORLD_CONTACT_FRONT, WORLD_CONTACT_SIDE, WORLD_CONTACT_REAR_SOFT, WORLD_CONTACT_REAR, WORLD_CONTACT_KINDS };
+#define WORLD_REAR_SOFT_M_S 0.1 /* m/s, issue 18: a touch of the rear below this is not an error */
+unsigned world_contacts(const world_t *w, int kind);
 /* 0 once the robot's state has left what any run in the config's ranges
  * reaches (a position beyond WORLD_SANE_M, a speed beyond
  * WORLD_SANE_M_S, a spin beyond WORLD_SANE_RAD_S, or not a number): the

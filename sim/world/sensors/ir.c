@@ -133,6 +133,17 @@ int ir_read_frame(ir_t *ir, world_t *w, const double pos_m[3], const double axis
     return v < 0 ? 0 : v > top ? (int)top : (int)v;
 }
 
+int ir_read_object(ir_t *ir, double d_m, int emitter_on)
+{
+    const ir_spec_t *s = &ir->spec;
+    double d = d_m < s->near_m ? s->near_m : d_m;
+    double v = s->ambient_counts + s->noise_counts * rng_gauss(&ir->rng);
+    if (emitter_on) v += s->gain_counts * s->ref_m * s->ref_m / (d * d);
+    double top = ir_full_scale(ir);
+    v = floor(v + 0.5);
+    return v < 0 ? 0 : v > top ? (int)top : (int)v;
+}
+
 int ir_read(ir_t *ir, world_t *w, const double pos_m[3], double dir_rad, int emitter_on)
 {
     double a[3], l[3], u[3];
@@ -189,8 +200,13 @@ int ir_sample(void *state, const robot_part_t *p, const sensor_ctx_t *x)
     ir_state_t *st = state;
     int on = x->emitter[(int)((const ir_part_spec_t *)p->spec)->emitter & 3] != 0;
     double pos[3], axis[3], left[3], up[3];
-    sensor_frame(x->world, p, pos, axis, left, up);
-    int v = ir_read_frame(&st->ir, x->world, pos, axis, left, up, on);
+    int v;
+    if (x->t_s < st->object_until_s) {
+        v = ir_read_object(&st->ir, st->object_m, on);
+    } else {
+        sensor_frame(x->world, p, pos, axis, left, up);
+        v = ir_read_frame(&st->ir, x->world, pos, axis, left, up, on);
+    }
     st->last[on] = v;
     st->count++;
     return v;

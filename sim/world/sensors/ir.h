@@ -87,6 +87,7 @@ typedef struct {
     ir_t ir;
     int last[2];               /* the latest sample with its emitter off [0] and on [1], counts; -1 none */
     uint32_t count;            /* samples taken */
+    double object_m, object_until_s; /* an object held object_m ahead of it until then (sim_ir_occlude) */
 } ir_state_t;
 
 /* UKMARSBOT's sensor (values and sources in ir.c). */
@@ -112,6 +113,11 @@ int ir_read(ir_t *ir, world_t *w, const double pos_m[3], double dir_rad, int emi
 /* An [ir.NAME] sensor's ADC sample now, with its emitter group as the
  * context says (ir_state_t; the HAL's hal_ir_raw). */
 int ir_sample(void *state, const robot_part_t *p, const sensor_ctx_t *x);
+
+/* One ADC sample with a white object straight on at d_m in front of the
+ * sensor (a hand held before it): the far field of ir.h at
+ * max(d, near), reflectivity 1. */
+int ir_read_object(ir_t *ir, double d_m, int emitter_on);
 
 /* The ADC's top count, 2^bits - 1. */
 int ir_full_scale(const ir_t *ir);

@@ -1,0 +1,105 @@
+/* input.c - the scripted person's hands (see input.h). */
+#include "input.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int fail(char *err, size_t errlen, size_t col, const char *what, const char *word)
+{
+    snprintf(err, errlen, "--input:1:%zu: %s%s%s", col + 1, what, word ? ": " : "", word ? word : "");
+    return -1;
+}
+
+static int add(input_t *in, double t, input_kind_t k, int v, const char *text, char *err, size_t errlen, size_t col)
+{
+    if (in->n == INPUT_MAX) return fail(err, errlen, col, "more than 64 actions", NULL);
+    input_action_t *a = &in->a[in->n++];
+    a->t_s = t;
+    a->kind = k;
+    a->value = v;
+    snprintf(a->text, sizeof a->text, "%.79s", text ? text : "");
+    return 0;
+}
+
+/* One "ACTION" (its text in w, n bytes) at time t. */
+static int action(input_t *in, double t, const char *w, size_t n, char *err, size_t errlen, size_t col)
+{
+    char word[INPUT_TEXT_MAX + 8];
+    if (n >= sizeof word) return fail(err, errlen, col, "action too long", NULL);
+    memcpy(word, w, n);
+    word[n] = '\0';
+    if (!strncmp(word, "send=", 5)) {
+        if (n - 5 >= INPUT_TEXT_MAX) return fail(err, errlen, col, "send text longer than 79 bytes", NULL);
+        return add(in, t, INPUT_SEND, 0, word + 5, err, errlen, col);
+    }
+    if (!strncmp(word, "switches=", 9)) {
+        char *end;
+        long v = strtol(word + 9, &end, 10);
+        if (end == word + 9 || *end || v < 0 || v > 15) return fail(err, errlen, col, "switches=N wants N in 0..15", word);
+        return add(in, t, INPUT_SWITCHES, (int)v, NULL, err, errlen, col);
+    }
+    if (!strcmp(word, "button"))
+        return add(in, t, INPUT_BUTTON_DOWN, 0, NULL, err, errlen, col) ||
+               add(in, t + INPUT_BUTTON_S, INPUT_BUTTON_UP, 0, NULL, err, errlen, col);
+    if (!strcmp(word, "button=down")) return add(in, t, INPUT_BUTTON_DOWN, 0, NULL, err, errlen, col);
+    if (!strcmp(word, "button=up")) return add(in, t, INPUT_BUTTON_UP, 0, NULL, err, errlen, col);
+    if (!strcmp(word, "reset")) return add(in, t, INPUT_RESET, 0, NULL, err, errlen, col);
+    if (!strcmp(word, "occlude=left")) return add(in, t, INPUT_OCCLUDE, 0, NULL, err, errlen, col);
+    if (!strcmp(word, "occlude=right")) return add(in, t, INPUT_OCCLUDE, 1, NULL, err, errlen, col);
+    if (!strcmp(word, "end")) return add(in, t, INPUT_END, 0, NULL, err, errlen, col);
+    return fail(err, errlen, col,
+                "unknown action (switches=N, button, button=down, button=up, reset, occlude=left, occlude=right, send=TEXT, end)",
+                word);
+}
+
+int input_parse(input_t *in, const char *spec, char *err, size_t errlen)
+{
+    memset(in, 0, sizeof *in);
+    for (const char *p = spec; *p;) {
+        while (*p == ' ' || *p == ';') p++;
+        if (!*p) break;
+        size_t col = (size_t)(p - spec);
+        char *end;
+        errno = 0;
+        double t = strtod(p, &end);
+        if (end == p || errno || !isfinite(t) || t < 0 || t > 86400 || *end != ' ')
+            return fail(err, errlen, col, "want 'T ACTION' with T in simulation seconds (0..86400)", NULL);
+        p = end;
+        while (*p == ' ') p++;
+        const char *semi = strchr(p, ';');
+        size_t n = semi ? (size_t)(semi - p) : strlen(p);
+        while (n && p[n - 1] == ' ') n--;
+        if (!n) return fail(err, errlen, (size_t)(p - spec), "missing action", NULL);
+        if (action(in, t, p, n, err, errlen, (size_t)(p - spec)) != 0) return -1;
+        p = semi ? semi + 1 : p + strlen(p);
+    }
+    /* in time order; equal times keep the order given */
+    input_action_t tmp[INPUT_MAX];
+    int idx[INPUT_MAX];
+    for (int i = 0; i < in->n; i++) idx[i] = i;
+    for (int i = 1; i < in->n; i++) /* insertion sort: stable, at most 64 */
+        for (int j = i; j > 0 && in->a[idx[j - 1]].t_s > in->a[idx[j]].t_s; j--) {
+            int t = idx[j];
+            idx[j] = idx[j - 1];
+            idx[j - 1] = t;
+        }
+    for (int i = 0; i < in->n; i++) tmp[i] = in->a[idx[i]];
+    memcpy(in->a, tmp, sizeof(input_action_t) * (size_t)in->n);
+    return 0;
+}
+
+const input_action_t *input_due(input_t *in, double t_s)
+{
+    if (in->next >= in->n || in->a[in->next].t_s > t_s + 1e-9) return NULL;
+    return &in->a[in->next++];
+}
+
+int input_needs_board(const input_t *in)
+{
+    for (int i = 0; i < in->n; i++)
+        if (in->a[i].kind != INPUT_OCCLUDE && in->a[i].kind != INPUT_END) return 1;
+    return 0;
+}

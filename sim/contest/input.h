@@ -1,0 +1,46 @@
+/* input.h - a person's hands on the robot, scripted: `--input "T ACTION;
+ * T ACTION; ..."` (T in simulation seconds, ascending or not). Actions:
+ *   switches=N      the function switches to N (0..15)
+ *   button          pressed for 100 ms (a down now and an up 0.1 s later)
+ *   button=down     button=up
+ *   reset           the reset button
+ *   occlude=left    an object ~20 mm ahead of that front IR sensor for 0.3 s
+ *   occlude=right
+ *   send=TEXT       TEXT and a newline typed on the console (to ';' or the end)
+ *   end             the run stops there
+ * Errors: "--input:1:COL: reason" (COL: the action's first character). */
+#ifndef INPUT_H
+#define INPUT_H
+
+#include <stddef.h>
+
+#define INPUT_MAX 64          /* actions after expanding `button` */
+#define INPUT_TEXT_MAX 80     /* bytes of a send's text */
+#define INPUT_BUTTON_S 0.1    /* s a `button` press lasts */
+#define INPUT_OCCLUDE_S 0.3   /* s an occlusion lasts */
+#define INPUT_OCCLUDE_M 0.020 /* m from the sensor to the object */
+
+typedef enum {
+    INPUT_SWITCHES, INPUT_BUTTON_DOWN, INPUT_BUTTON_UP, INPUT_RESET, INPUT_OCCLUDE, INPUT_SEND, INPUT_END
+} input_kind_t;
+
+typedef struct {
+    double t_s;
+    input_kind_t kind;
+    int value;                 /* switches: N; occlude: 0 left, 1 right */
+    char text[INPUT_TEXT_MAX]; /* send */
+} input_action_t;
+
+typedef struct {
+    input_action_t a[INPUT_MAX]; /* in time order (stable for equal times) */
+    int n, next;
+} input_t;
+
+/* Parse spec into in: 0, or -1 with one line in err. */
+int input_parse(input_t *in, const char *spec, char *err, size_t errlen);
+/* The next action due at t_s (and advance), or NULL. */
+const input_action_t *input_due(input_t *in, double t_s);
+/* 1 if any action needs a board (all but occlude and end). */
+int input_needs_board(const input_t *in);
+
+#endif

@@ -1,0 +1,80 @@
+/* test_input.c - --input's actions (sim/contest/input.h): parsing, time
+ * order, errors with their column. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <string.h>
+
+#include "contest/input.h"
+
+static void test_parse_and_order(void **state)
+{
+    (void)state;
+    static input_t in;
+    char err[300];
+    assert_int_equal(input_parse(&in, "0.2 send=X; 0.5 switches=2; 1.0 button; 2.0 occlude=left; 0.9 reset;3 end", err, sizeof err), 0);
+    static const struct {
+        double t;
+        input_kind_t k;
+        int v;
+    } want[] = { { 0.2, INPUT_SEND, 0 }, { 0.5, INPUT_SWITCHES, 2 }, { 0.9, INPUT_RESET, 0 }, { 1.0, INPUT_BUTTON_DOWN, 0 },
+                 { 1.1, INPUT_BUTTON_UP, 0 }, { 2.0, INPUT_OCCLUDE, 0 }, { 3.0, INPUT_END, 0 } };
+    assert_int_equal(in.n, 7);
+    for (int i = 0; i < 7; i++) {
+        assert_true(fabs(in.a[i].t_s - want[i].t) < 1e-12 && in.a[i].kind == want[i].k && in.a[i].value == want[i].v);
+    }
+    assert_string_equal(in.a[0].text, "X");
+    assert_int_equal(input_needs_board(&in), 1);
+    /* due in order, each once */
+    assert_null(input_due(&in, 0.1));
+    assert_int_equal(input_due(&in, 0.2)->kind, INPUT_SEND);
+    assert_null(input_due(&in, 0.2));
+    assert_int_equal(input_due(&in, 1.05)->kind, INPUT_SWITCHES);
+    assert_int_equal(input_due(&in, 1.05)->kind, INPUT_RESET);
+    assert_int_equal(input_due(&in, 1.05)->kind, INPUT_BUTTON_DOWN);
+    assert_null(input_due(&in, 1.05));
+    /* equal times keep the order given */
+    assert_int_equal(input_parse(&in, "1 button=down; 1 button=up; 1 occlude=right", err, sizeof err), 0);
+    assert_true(in.a[0].kind == INPUT_BUTTON_DOWN && in.a[1].kind == INPUT_BUTTON_UP && in.a[2].kind == INPUT_OCCLUDE &&
+                in.a[2].value == 1);
+    assert_int_equal(input_parse(&in, "1 occlude=left; 2 end", err, sizeof err), 0);
+    assert_int_equal(input_needs_board(&in), 0);
+}
+
+static void test_errors(void **state)
+{
+    (void)state;
+    static input_t in;
+    char err[300];
+    static const struct {
+        const char *spec, *want;
+    } bad[] = {
+        { "0.5 wave", "--input:1:5: unknown action (" },
+        { "1 switches=16", "--input:1:3: switches=N wants N in 0..15: switches=16" },
+        { "1 switches=x", "--input:1:3: switches=N wants N in 0..15" },
+        { "button", "--input:1:1: want 'T ACTION'" },
+        { "1 end; -2 end", "--input:1:8: want 'T ACTION'" },
+        { "1 ", "--input:1:3: missing action" },
+        { "1 end;2  ;", "--input:1:7: missing action" },
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        assert_int_equal(input_parse(&in, bad[i].spec, err, sizeof err), -1);
+        if (strncmp(err, bad[i].want, strlen(bad[i].want)) != 0) fail_msg("'%s': got '%s'", bad[i].spec, err);
+    }
+    char many[2000] = "";
+    for (int i = 0; i < 65; i++) strcat(many, "1 reset;");
+    assert_int_equal(input_parse(&in, many, err, sizeof err), -1);
+    assert_non_null(strstr(err, "more than 64 actions"));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_parse_and_order),
+        cmocka_unit_test(test_errors),
+    };
+    return cmocka_run_group_tests_name("input", tests, NULL, NULL);
+}
