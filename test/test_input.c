@@ -58,7 +58,7 @@ static void test_errors(void **state)
         { "button", "--input:1:1: want 'T ACTION'" },
         { "1 end; -2 end", "--input:1:8: want 'T ACTION'" },
         { "1 ", "--input:1:3: missing action" },
-        { "1 end;2  ;", "--input:1:7: missing action" },
+        { "1 end;2  ;", "--input:1:10: missing action" },
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         assert_int_equal(input_parse(&in, bad[i].spec, err, sizeof err), -1);
