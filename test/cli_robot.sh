@@ -32,7 +32,7 @@ want_rc 0 "printed robot loads" "$S" --print-robot --robot "$T/printed.ini"
 want_rc 0 "paper.ini prints as the built-in" "$S" --print-robot --robot robots/paper.ini
 [ "$(cat "$T/out")" = "$(cat "$T/printed.ini")" ] && ok "robots/paper.ini prints as the built-in robot" || bad "paper.ini print: $(diff "$T/out" "$T/printed.ini" | head -5)"
 
-# a run with --robot robots/paper.ini: the same JSON as without (apart from the wall clock and "robot")
+# a run with --robot robots/paper.ini: the same JSON as without (apart from the wall clock, "robot" and "contacts")
 want_rc 0 "run, built-in robot" "$S" --maze $M --runs 1 --json --seed 3
 cp "$T/out" "$T/a"
 want_rc 0 "run, --robot robots/paper.ini" "$S" --maze $M --runs 1 --json --seed 3 --robot robots/paper.ini
@@ -43,7 +43,7 @@ python3 -c "
 import json,sys
 a, b = (json.loads(open(f).read().splitlines()[-1]) for f in sys.argv[1:3])
 for d in (a, b):
-    for k in ('wall_time_s', 'real_time_factor', 'robot'): d.pop(k, None)
+    for k in ('wall_time_s', 'real_time_factor', 'robot', 'contacts'): d.pop(k, None)
 sys.exit(a != b)" "$T/a" "$T/b" && ok "--robot robots/paper.ini: the same run as the built-in robot" || bad "paper.ini run differs: $(cat "$T/a" "$T/b")"
 # another robot: another config hash
 sed 's/^body_mass_g = 127/body_mass_g = 150/' robots/paper.ini >"$T/heavy.ini"
@@ -59,4 +59,26 @@ grep -q "wide2.ini: world.cell_m: the robot is wider than a corridor (178 mm ove
 printf '[world]\ncell_m = 0.09\nwall_thick_m = 0.006\npost_m = 0.006\n' >"$T/half.ini"
 want_rc 2 "the paper robot in half-size corridors" "$S" --maze $M --config "$T/half.ini"
 grep -q "half.ini: world.cell_m: the robot is wider than a corridor" "$T/err" && ok "half size: refused, one line" || bad "half size: $(cat "$T/err")"
+# issue 18's contest side: hands, goal, start pose, contacts by kind
+want_rc 2 "--input's board actions without a board" "$S" --maze $M --input "1 switches=2"
+grep -q "^--input: switches, button, reset and send act on a board" "$T/err" && ok "--input without --board: one line" || bad "input without board: $(cat "$T/err")"
+want_rc 2 "--input: an unknown action" "$S" --maze $M --input "0.5 wave"
+grep -q -- "--input:1:5: unknown action" "$T/err" && ok "--input: unknown action at its column" || bad "unknown action: $(cat "$T/err")"
+want_rc 2 "--goal outside the maze" "$S" --maze $M --goal 5,0
+want_rc 1 "--input end" "$S" --maze $M --robot robots/ukmarsbot.ini --driver scripted --input "0 end" --json
+python3 -c "
+import json,sys
+d = json.loads(open(sys.argv[1]).read().splitlines()[-1])
+p = d['final_pose']
+# back_to_wall: the body's rear 0.5 mm from the start cell's south wall face (6 mm): centre at 6.5 + 50 mm
+assert d['exit_reason'] == 'input_end', d
+assert abs(p['y_m'] - 0.0565) < 0.001 and abs(p['x_m'] - 0.09) < 0.001, p
+assert set(d['contacts']) == {'front', 'side', 'rear_soft', 'rear'}, d
+" "$T/out" && ok "UKMARSBOT starts with its back to the wall; contacts by kind in the JSON" || bad "start pose: $(tail -1 "$T/out")"
+want_rc 0 "--goal 1,0 (scripted)" "$S" --maze mazes/gen-16x16-s1.txt --driver scripted --goal 1,0 --runs 1 --json
+python3 -c "
+import json,sys
+d = json.loads(open(sys.argv[1]).read().splitlines()[-1])
+assert d['reached_goal'] and d['laps'][0]['run_s'] < 3, d
+" "$T/out" && ok "--goal: laps to that cell" || bad "goal: $(tail -1 "$T/out")"
 [ $fails -eq 0 ]
