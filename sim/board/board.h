@@ -108,6 +108,8 @@ board_t *board_open(const board_spec_t *spec, const char *image, sim_t *s, char 
  * motor commands into s->cmd. 0, or -1 with the reason in err (the AVR
  * crashed or halted, an ADC auto-trigger simavr lacks). */
 int board_step(board_t *b, char *err, size_t errn);
+/* Stop the AVR (simavr cannot free a core: b stays allocated, its stats
+ * and console readable; keep the pointer until the process ends). */
 void board_close(board_t *b);
 
 /* A person's hands (take effect at once, between steps). */
