@@ -50,7 +50,7 @@ MCU_RX_FLAGS := -DWIRE_RX_LOG_MAX=14
 # decoder as shipped: its own wire.c with the flag (libmm_san's has the host's).
 TESTS += $(B)/test/test_wire_rx14
 
-.PHONY: all deps test test-run client-mazerunner mrc-images sim sim-run bench bench-run fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay view docs-img
+.PHONY: all deps test test-run client-mazerunner mrc-images board-sketches sim sim-run bench bench-run fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay view docs-img
 all: tools
 
 deps:
@@ -280,6 +280,14 @@ define MRC_BUILD
 	avr-g++ $(ARD_nano) $(ARD_BASE) $(ARD_CXX) -w -x c++ -include Arduino.h -c $(1)mazerunner-core.ino -o $(2).o
 	avr-gcc $(ARD_nano) -Os -Wl,--gc-sections $(2).o $(NANO_CORE) -lm -o $(2)
 endef
+# Our test sketches for the board emulation (test/cli_board.sh), built for the
+# Nano with the same core archive (no ../shared needed).
+BOARD_SKETCHES := $(patsubst test/arduino/board/%.ino,$(B)/clients/board/%.elf,$(wildcard test/arduino/board/*.ino))
+board-sketches: $(BOARD_SKETCHES)
+$(B)/clients/board/%.elf: test/arduino/board/%.ino $(NANO_CORE)
+	@mkdir -p $(dir $@)
+	avr-g++ $(ARD_nano) $(ARD_BASE) $(ARD_CXX) -Wall -x c++ -include Arduino.h -c $< -o $@.o
+	avr-gcc $(ARD_nano) -Os -Wl,--gc-sections $@.o $(NANO_CORE) -lm -o $@
 $(B)/clients/mazerunner-core.elf: $(MRC_FILES) $(NANO_CORE)
 	$(call MRC_BUILD,$(MRC_SRC),$@)
 $(B)/clients/mazerunner-core-uk/mazerunner-core/config.h: $(MRC_FILES)
