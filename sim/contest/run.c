@@ -131,9 +131,10 @@ static int setup(run_t *r)
     r->tel_on = r->o->telem.url || r->o->telem.log_path;
     r->hil = r->o->serial;
     r->reason = "done";
-    if (r->drv->open(r) != 0) {
+    int orc = r->drv->open(r);
+    if (orc != 0) {
         sim_free(&r->sim);
-        return RUN_EXTERNAL;
+        return orc == RUN_BAD_INPUT ? RUN_BAD_INPUT : RUN_EXTERNAL;
     }
     if (open_outputs(r) != 0) return fail_setup(r, RUN_EXTERNAL);
     /* a build with -DHAL_TICK_HZ=250 ticks every 4th step, as on the AVR */
