@@ -147,6 +147,9 @@ v = float(bl.split()[1]); sim = j['board']['battery_v']
 assert abs(v - sim) <= 0.02 * sim, (v, sim)
 print('battery %.2f V, simulated %.3f V' % (v, sim))
 " >"$T/b.txt" 2>&1 && ok "mazerunner-core: MAZERUNNER-CORE, RDY; B within 2 % ($(cat "$T/b.txt"))" || bad "mazerunner-core B: $(tail -3 "$T/b.txt")"
+want_rc 1 "the .hex image runs too" run "${MRC%.elf}.hex" "$T/open.txt" --time-limit 1 --send "?@0.5"
+js "$T/out" "c = j['console'].replace('\\r', ''); assert 'MAZERUNNER-CORE' in c and '?   : this text' in c, c[:300]" 2>"$T/h.txt" \
+  && ok "  ... its banner and its help for '?'" || bad "  .hex: $(tail -1 "$T/h.txt")"
 sline() { js "$1" "print([x for x in j['console'].replace('\r', '').split('\n') if x.startswith('|')][0])"; }
 so=$(sline "$T/mrc-open.json" 2>&1); se=$(sline "$T/mrc-east.json" 2>&1)
 python3 -c "

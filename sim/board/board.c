@@ -100,7 +100,7 @@ static int load_image(board_t *b, const char *image, char *err, size_t errn)
 
 /* simavr has no call that frees a whole core: a board stays allocated and
  * reachable (the last one that failed to open here) until the process ends */
-static board_t *failed_board;
+static board_t *volatile failed_board; /* volatile: written only, it must stay */
 
 static board_t *open_fail(board_t *b)
 {
