@@ -264,7 +264,7 @@ client-mazerunner: | deps
 	@if [ -z "$(MRC_SKETCH)" ]; then echo "SKIP client-mazerunner: $(MRC_DIR) not found"; exit 0; fi; \
 	$(MAKE) --no-print-directory mrc-images && avr-size $(MRC_ELFS) && \
 	for e in $(MRC_ELFS); do echo "$$e: $$(avr-size -C --mcu=atmega328p $$e | grep '^Program:\|^Data:' | tr -s ' ' | paste -sd' ')"; done
-mrc-images: $(MRC_ELFS) $(MRC_ELFS:.elf=.hex)
+mrc-images: $(MRC_ELFS) $(MRC_ELFS:.elf=.hex) $(B)/clients/mazerunner-core-uk-mended.elf
 	@:
 $(B)/clients/nano/core/%.c.o: $(ARD_CORE)/%.c | deps
 	@mkdir -p $(dir $@)
@@ -296,6 +296,19 @@ $(B)/clients/mazerunner-core-uk/mazerunner-core/config.h: $(MRC_FILES)
 	sed -i 's/^#define EVENT EVENT_HOME\b/#define EVENT EVENT_UK/' $@
 	@grep -q '^#define EVENT EVENT_UK' $@ || { echo "client-mazerunner: no '#define EVENT EVENT_HOME' line in config.h to set to EVENT_UK" >&2; exit 1; }
 $(B)/clients/mazerunner-core-uk.elf: $(B)/clients/mazerunner-core-uk/mazerunner-core/config.h $(NANO_CORE)
+	$(call MRC_BUILD,$(dir $<),$@)
+# For tests only, never shipped: the EVENT_UK copy with one firmware bug
+# mended. search_to() checks heading_to_smallest() for BLOCKED before it
+# checks for the target, and the target's cost is 0 with no smaller
+# neighbour, so every search panics "ERR: no route to target" on entering
+# its target (the simulator shows it; issue 18's note). The mend: that
+# check only short of the target. The rest of the search (home, the map)
+# is tested with this image; the shipped ones stay untouched.
+$(B)/clients/mazerunner-core-uk-mended/mazerunner-core/mouse.h: $(B)/clients/mazerunner-core-uk/mazerunner-core/config.h
+	@rm -rf $(dir $@); mkdir -p $(dir $@); cp $(dir $<)*.h $(dir $<)*.ino $(dir $@)
+	sed -i 's/^\( *\)if (newHeading == BLOCKED) {/\1if (newHeading == BLOCKED \&\& m_location != target) {/' $@
+	@grep -q 'newHeading == BLOCKED && m_location != target' $@ || { echo "client-mazerunner: search_to's BLOCKED check not found in mouse.h" >&2; exit 1; }
+$(B)/clients/mazerunner-core-uk-mended.elf: $(B)/clients/mazerunner-core-uk-mended/mazerunner-core/mouse.h $(NANO_CORE)
 	$(call MRC_BUILD,$(dir $<),$@)
 $(B)/clients/%.hex: $(B)/clients/%.elf
 	avr-objcopy -O ihex -R .eeprom $< $@
