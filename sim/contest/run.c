@@ -66,6 +66,7 @@ int run_exit_laps(const run_t *r, const char *ok1, const char *ok2)
 
 static const run_driver_t *pick_driver(const run_opts_t *o)
 {
+    if (o->board) return &run_board;
     if (o->avr_elf) return &run_avr;
     if (o->serial) return &run_serial;
     if (o->scripted) return &run_scripted;
@@ -203,7 +204,7 @@ static const char *after_step(run_t *r, watch_t *w)
     double t = sim_time_s(s), x, y, h;
     if (s->race.over_time && !s->race.in_run) return "time_limit";
     if (t > w->hard_stop_s) return "time_limit";
-    if (s->step % 100 == 0 && !r->hil && !o->mms.command) { /* a HIL robot may wait for its MCU; mms: the firmware's own stall check */
+    if (s->step % 100 == 0 && !r->hil && !o->mms.command && !o->board) { /* a HIL robot or a board may wait for its MCU or a person; mms: the firmware's own stall check */
         world_pose(s->world, &x, &y, &h);
         if (hypot(x - w->last_x, y - w->last_y) > 0.01) {
             w->last_x = x;
@@ -357,5 +358,6 @@ int run_one(const run_opts_t *o, const char *maze_path, json_t **out, int print_
     if (out_rc) return out_rc;
     if (o->shot) return RUN_OK; /* the picture was the point */
     if (!strcmp(r->reason, "avr_stopped")) return RUN_EXTERNAL;
+    if (!strcmp(r->reason, "board_unsupported")) return RUN_BAD_INPUT;
     return r->drv->exit_code ? r->drv->exit_code(r) : run_exit_laps(r, "done", "mcu_stopped");
 }

@@ -4,7 +4,8 @@
  *
  * Drivers (run_driver.h): the mouse's firmware in-process (hal/sim, the
  * default), the scripted stand-in (driver.h), an MCU over a serial link
- * (--serial/--pty) or an AVR image in simavr (--avr), an mms algorithm
+ * (--serial/--pty) or an AVR image in simavr (--avr; on an emulated board
+ * with --board: run_board.c), an mms algorithm
  * driving the firmware's motion layer (--mms).
  * Exit codes: RUN_OK, RUN_NOT_REACHED, RUN_BAD_INPUT, RUN_EXTERNAL. */
 #ifndef RUN_H
@@ -23,6 +24,12 @@
 enum { RUN_OK = 0, RUN_NOT_REACHED = 1, RUN_BAD_INPUT = 2, RUN_EXTERNAL = 3 };
 
 #define RUN_STALL_S 5.0 /* no progress for this long while driving = crash stop, s */
+
+#define RUN_SENDS_MAX 16
+typedef struct {
+    double t_s;
+    char text[200];
+} run_send_t;
 
 typedef struct {
     const char *config_path;
@@ -47,6 +54,9 @@ typedef struct {
     mms_opts_t mms;                /* --mms COMMAND (NULL: none), --mms-ideal-walls, --mms-timeout-ms, --mms-reset-at */
     input_t input;                 /* --input "T ACTION; ...": a person's hands (input.h); input.n 0 = none */
     int goal_x, goal_y;            /* --goal X,Y: laps scored to this cell, not the maze's goal (-1: the maze's) */
+    const char *board;             /* --board NAME|FILE: the image (--avr) on an emulated board (sim/board) */
+    int nsends;                    /* --send TEXT@T: typed on the board's UART0 at sim time T (a newline added) */
+    run_send_t sends[RUN_SENDS_MAX];
 } run_opts_t;
 
 /* The defaults, then --config's file, --robot's file, then the flags that

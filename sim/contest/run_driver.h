@@ -5,6 +5,7 @@
 #ifndef RUN_DRIVER_H
 #define RUN_DRIVER_H
 
+#include "board/board.h"
 #include "board/pil.h"
 #include "contest/driver.h"
 #include "contest/run.h"
@@ -38,6 +39,8 @@ struct run_s {
     mms_t mms;
     link_t lnk;
     pil_t pil;
+    board_t *board;     /* --board */
+    int send_next;      /* the next --send */
     telem_t tel;
     int tel_on;
     report_t *rep;
@@ -51,7 +54,7 @@ struct run_s {
     void (*hands)(run_t *r, const input_action_t *a);
 };
 
-extern const run_driver_t run_firmware, run_mms, run_scripted, run_serial, run_avr;
+extern const run_driver_t run_firmware, run_mms, run_scripted, run_serial, run_avr, run_board;
 
 /* The in-process firmware after a physics step: its control tick at
  * HAL_TICK_HZ, then its background loop (run_firmware.c). */

@@ -1,0 +1,132 @@
+/* board.h - a whole board emulated at the pin and register level: an AVR
+ * image (ELF or Intel HEX) runs in simavr, in lockstep with the physics,
+ * its peripherals wired to the core through simavr's IRQs as a board file
+ * (boards/NAME.ini, board_load) describes them:
+ *
+ *   board_motor.c    H-bridge: direction pins, PWM from Timer1's registers
+ *                    (mode, TOP, OCR1A/B, COM bits) -> sim_t.cmd[]
+ *   board_encoder.c  quadrature edges from the wheel angle, each at its
+ *                    cycle inside the step: A xor B on the interrupt pin,
+ *                    B on its own pin
+ *   board_adc.c      analogue front end: at each conversion's start the
+ *                    channel's voltage (IR detector with the emitters as
+ *                    the pins are then, switch ladder, battery divider)
+ *   board_console.c  UART0 captured (and echoed live), input injected;
+ *                    LEDs and interrupts counted
+ *   board.c          the core: loads the board file and the image, wires
+ *                    the parts, steps the AVR exactly f_cpu x step cycles
+ *
+ * Time is cycles: no wall clock, the same image and inputs give the same
+ * run. Power-on SRAM is zero (simavr's calloc); board_reset keeps SRAM as a
+ * real reset does (a .noinit variable survives it). */
+#ifndef BOARD_H
+#define BOARD_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "world/sim.h"
+
+#define BOARD_ADC_CHANNELS 8
+#define BOARD_LEDS_MAX 4
+#define BOARD_VECTORS_MAX 64      /* interrupt vectors counted */
+#define BOARD_CONSOLE_MAX (1u << 20) /* bytes of UART output kept (the rest counted) */
+#define BOARD_IN_MAX 4096u        /* bytes waiting for the UART's receive FIFO */
+#define BOARD_MAX_BYTES (64u << 10) /* bytes of a board file */
+#define BOARD_IMAGE_MAX_BYTES (64u << 20) /* an ELF with its debug sections */
+
+/* A pin of the MCU: port letter 'B'/'C'/'D' (0: none) and bit 0..7. */
+typedef struct {
+    char port;
+    uint8_t bit;
+} board_pin_t;
+
+/* The board file (see boards/ukmarsbot-v1.3.ini for every key and source). */
+typedef struct {
+    char path[256];
+    char name[64];
+    char mcu[32];
+    uint32_t f_cpu;               /* Hz */
+    double vcc_v;                 /* VCC = AVCC = AREF, V */
+    /* motor driver, [motor.left] / [motor.right] (WORLD_LEFT, WORLD_RIGHT) */
+    board_pin_t motor_dir[2], motor_pwm[2];
+    int motor_oc[2];              /* the PWM pin's Timer1 output: 0 = OC1A, 1 = OC1B */
+    int motor_fwd_level[2];       /* the direction pin's level that turns the wheel forward */
+    /* encoders, [encoder.left] / [encoder.right] */
+    board_pin_t enc_int[2];       /* A xor B: the external-interrupt pin */
+    board_pin_t enc_b[2];         /* channel B */
+    int enc_a_leads[2];           /* 1: A leads B when the wheel turns forward */
+    /* emitters, [emitter.NAME]: the pin that lights sim emitter group g */
+    int nemitters;
+    board_pin_t emitter_pin[SIM_EMITTER_GROUPS];
+    int emitter_group[SIM_EMITTER_GROUPS];
+    /* LEDs, [led.NAME] */
+    int nleds;
+    board_pin_t led_pin[BOARD_LEDS_MAX];
+    char led_name[BOARD_LEDS_MAX][16];
+    /* switches and button on a resistor ladder, [switches] */
+    int sw_channel;
+    double sw_r_top_ohm;          /* VCC to the ADC pin */
+    double sw_r_ohm[4];           /* to ground in series, switch bit k shorts sw_r_ohm[k] */
+    double sw_r_ground_ohm;       /* what stays in series when every switch is closed */
+    /* the battery through its divider, [battery] */
+    int bat_channel;
+    double bat_r_top_ohm, bat_r_bottom_ohm;
+} board_spec_t;
+
+/* What the board saw during the run (the JSON's "board"). */
+typedef struct {
+    uint64_t cycles;
+    uint32_t led_changes[BOARD_LEDS_MAX];
+    uint64_t interrupts[BOARD_VECTORS_MAX]; /* serviced, per vector number */
+    uint64_t adc_conversions[BOARD_ADC_CHANNELS];
+    double duty_min[2], duty_max[2];       /* signed H-bridge duty per motor, -1..1 */
+    uint64_t encoder_edges[2];
+    uint64_t uart_bytes_out, uart_bytes_in, console_dropped;
+    uint32_t resets;
+} board_stats_t;
+
+typedef struct board_s board_t;
+
+/* NAME (boards/NAME-*.ini: the first in sorted order) or a path into out.
+ * 0, or -1 with one line in err. */
+int board_find(const char *name, char *out, size_t outn, char *err, size_t errn);
+/* Read a board file. 0, or -1 with one line "FILE:LINE: section.key:
+ * reason" (or "FILE: section.key: missing") in err. */
+int board_load(board_spec_t *spec, const char *path, char *err, size_t errn);
+/* The vector name of the spec's MCU ("INT0", "ADC", ...; NULL: unnamed). */
+const char *board_vector_name(const board_t *b, unsigned vector);
+
+/* The image (ELF, or Intel HEX by its .hex name) on the board, driving s
+ * (its motors, read from its wheels, IR sensors and battery). step_s: the
+ * physics step. NULL with one line in err: an unreadable image, one for
+ * another MCU, a robot whose IR channel the board lacks. */
+board_t *board_open(const board_spec_t *spec, const char *image, sim_t *s, char *err, size_t errn);
+/* One physics step of AVR time (call after sim_step): encoder edges at
+ * their cycles, ADC conversions as the firmware starts them, then the
+ * motor commands into s->cmd. 0, or -1 with the reason in err (the AVR
+ * crashed or halted, an ADC auto-trigger simavr lacks). */
+int board_step(board_t *b, char *err, size_t errn);
+/* Stop the AVR (simavr cannot free a core: b stays allocated, its stats
+ * and console readable; keep the pointer until the process ends). */
+void board_close(board_t *b);
+
+/* A person's hands (take effect at once, between steps). */
+void board_set_switches(board_t *b, unsigned n); /* DIP switches 0..15 */
+void board_button(board_t *b, int down);
+void board_reset(board_t *b);                     /* the reset button: SRAM kept */
+/* Type text on UART0 (no newline added). 0, or -1 if the input queue is full. */
+int board_send(board_t *b, const char *text);
+
+/* Everything the firmware printed so far (NUL-terminated) and its length. */
+const char *board_console(const board_t *b, size_t *len);
+/* Echo UART output to f as it comes (NULL: off), for --verbose. */
+void board_set_echo(board_t *b, FILE *f);
+const board_stats_t *board_stats(const board_t *b);
+/* The A6-style ladder's voltage for switches n and the button, V. */
+double board_switch_volts(const board_spec_t *spec, unsigned n, int button);
+/* The AVR itself, for tests that look at its memory. */
+struct avr_t *board_avr(board_t *b);
+
+#endif

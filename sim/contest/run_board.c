@@ -1,0 +1,109 @@
+/* run_board.c - an AVR image on an emulated board (--board NAME --avr
+ * FIRMWARE.elf|.hex, sim/board): the board file's MCU in simavr, in
+ * lockstep with the physics, its pins and ADC wired to the robot. The run
+ * lasts the time limit (or until the AVR stops); --send types text on its
+ * UART0 at a given time; the JSON gets "board" (what its parts saw) and
+ * "console" (everything the firmware printed). */
+#include "run_driver.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int board_open_run(run_t *r)
+{
+    char path[512], err[600];
+    board_spec_t spec;
+    if (board_find(r->o->board, path, sizeof path, err, sizeof err) != 0 || board_load(&spec, path, err, sizeof err) != 0) {
+        fprintf(stderr, "%s\n", err);
+        return RUN_BAD_INPUT;
+    }
+    r->board = board_open(&spec, r->o->avr_elf, &r->sim, err, sizeof err);
+    if (!r->board) {
+        fprintf(stderr, "mmsim: %s\n", err);
+        return RUN_BAD_INPUT;
+    }
+    if (r->o->verbose) board_set_echo(r->board, stderr);
+    return 0;
+}
+
+static const char *board_step_run(run_t *r)
+{
+    char err[400], line[sizeof r->o->sends[0].text + 2];
+    const run_opts_t *o = r->o;
+    sim_step(&r->sim);
+    while (r->send_next < o->nsends && sim_time_s(&r->sim) >= o->sends[r->send_next].t_s - 1e-9) {
+        snprintf(line, sizeof line, "%s\n", o->sends[r->send_next++].text);
+        if (board_send(r->board, line) != 0) fprintf(stderr, "mmsim: --send: the UART's input queue is full: '%s' dropped\n", o->sends[r->send_next - 1].text);
+    }
+    if (board_step(r->board, err, sizeof err) != 0) {
+        fprintf(stderr, "mmsim: %s: %s\n", o->avr_elf, err);
+        return strstr(err, "auto-trigger") ? "board_unsupported" : "avr_stopped";
+    }
+    if (sim_time_s(&r->sim) >= r->cfg.time_limit_s) return "time_limit";
+    return NULL;
+}
+
+/* {"NAME": n, ...} of the non-zero counts */
+static json_t *counts(const char *const *names, const uint64_t *n, int k)
+{
+    json_t *j = json_object();
+    for (int i = 0; i < k; i++)
+        if (n[i] && names[i]) json_object_set_new(j, names[i], json_integer((json_int_t)n[i]));
+    return j;
+}
+
+static void board_results(run_t *r, json_t *j)
+{
+    const board_stats_t *st = board_stats(r->board);
+    const char *vnames[BOARD_VECTORS_MAX], *adc[BOARD_ADC_CHANNELS] = { "A0", "A1", "A2", "A3", "A4", "A5", "A6", "A7" };
+    for (int v = 0; v < BOARD_VECTORS_MAX; v++) vnames[v] = board_vector_name(r->board, (unsigned)v);
+    json_t *leds = json_object();
+    board_spec_t spec;
+    char path[512], err[600];
+    if (board_find(r->o->board, path, sizeof path, err, sizeof err) == 0 && board_load(&spec, path, err, sizeof err) == 0)
+        for (int i = 0; i < spec.nleds; i++) json_object_set_new(leds, spec.led_name[i], json_integer(st->led_changes[i]));
+    json_t *b = json_pack("{s:s, s:s, s:I}", "file", path, "image", r->o->avr_elf, "cycles", (json_int_t)st->cycles);
+    json_object_set_new(b, "led_changes", leds);
+    json_object_set_new(b, "interrupts", counts(vnames, st->interrupts, BOARD_VECTORS_MAX));
+    json_object_set_new(b, "adc_conversions", counts(adc, st->adc_conversions, BOARD_ADC_CHANNELS));
+    json_object_set_new(b, "pwm_duty", json_pack("{s:[f,f], s:[f,f]}", "left", st->duty_min[0], st->duty_max[0], "right",
+                                                 st->duty_min[1], st->duty_max[1]));
+    json_object_set_new(b, "encoder_edges", json_pack("{s:I, s:I}", "left", (json_int_t)st->encoder_edges[0], "right",
+                                                      (json_int_t)st->encoder_edges[1]));
+    json_object_set_new(b, "uart_bytes_out", json_integer((json_int_t)st->uart_bytes_out));
+    json_object_set_new(b, "uart_bytes_in", json_integer((json_int_t)st->uart_bytes_in));
+    json_object_set_new(b, "resets", json_integer(st->resets));
+    json_object_set_new(j, "board", b);
+    size_t n;
+    const char *con = board_console(r->board, &n);
+    json_t *cj = json_stringn(con, n);
+    if (!cj) { /* not UTF-8: bytes above 0x7F as '?' */
+        char *t = malloc(n + 1);
+        if (t) memcpy(t, con, n + 1);
+        for (size_t i = 0; t && i < n; i++)
+            if ((unsigned char)t[i] > 0x7F) t[i] = '?';
+        cj = t ? json_stringn(t, n) : json_null();
+        free(t);
+    }
+    json_object_set_new(j, "console", cj ? cj : json_null());
+}
+
+static void board_stop(run_t *r) { board_close(r->board); }
+
+static void board_undo(run_t *r) { board_close(r->board); }
+
+static void board_headline(const run_t *r)
+{
+    const board_stats_t *st = board_stats(r->board);
+    printf("%s: %ux%u, seed %llu, %s on board %s: %llu cycles, UART %llu B out, %llu B in\n", r->maze_path, r->maze.width,
+           r->maze.height, (unsigned long long)r->o->seed, r->o->avr_elf, r->o->board, (unsigned long long)st->cycles,
+           (unsigned long long)st->uart_bytes_out, (unsigned long long)st->uart_bytes_in);
+}
+
+static int board_exit(const run_t *r) { return r->sim.race.nlaps > 0 ? RUN_OK : RUN_NOT_REACHED; }
+
+const run_driver_t run_board = {
+    .name = "board", .open = board_open_run, .step = board_step_run, .stop = board_stop, .results = board_results,
+    .undo = board_undo, .headline = board_headline, .exit_code = board_exit,
+};
