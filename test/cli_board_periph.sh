@@ -80,7 +80,8 @@ brun() { local name=$1 img=$2 tl=$3 input=$4; shift 4
   timeout 300 "$MMSIM" --board ukmarsbot --avr "$SK/$img.elf" --robot "$ROBOT" --maze "$MAZE" --time-limit "$tl" "${in[@]}" --json "$@" \
     >"$T/$name.out" 2>"$T/$name.err"; local rc=$?
   tail -1 "$T/$name.out" >"$T/$name.json"
-  if [ $rc -ne 0 ] || ! python3 -c 'import json,sys; json.load(open(sys.argv[1]))' "$T/$name.json" 2>/dev/null; then
+  # exit 1: the goal not reached (these runs do not go there)
+  if [ $rc -gt 1 ] || ! python3 -c 'import json,sys; json.load(open(sys.argv[1]))' "$T/$name.json" 2>/dev/null; then
     bad "$name: mmsim exit $rc, no JSON: $(head -3 "$T/$name.err")"; : >"$T/$name.con"; echo '{}' >"$T/$name.json"; return 1
   fi
   python3 -c 'import json,sys; sys.stdout.write(json.load(open(sys.argv[1])).get("console", "").replace("\r", ""))' "$T/$name.json" >"$T/$name.con"
@@ -104,7 +105,7 @@ for p, v in walk(d, []):
 EOF
 }
 
-# ---- MotorPwm: forward (analogWrite), back (fast PWM 8-bit), forward (TOP = ICR1)
+# ---- MotorPwm: forward (analogWrite), back (fast PWM 8-bit), forward (TOP = ICR1), at 25 %
 brun motor MotorPwm 5 "4.5 end"
 if grep -q '^DONE$' "$T/motor.con"; then
   python3 - "$T/motor.con" >"$T/motor.chk" <<'EOF'
@@ -116,10 +117,10 @@ for l in open(sys.argv[1]):
 for side in (0, 1):
     name = ("left", "right")[side]
     fw, fs, rv, rs, ic = (p[k][side] for k in ("fwd", "fwd_stop", "rev", "rev_stop", "icr"))
-    print(("ok" if fw > 2000 else "bad"), f"{name}: forward 1 s at 50 % (analogWrite): {fw} counts (> 2000)")
+    print(("ok" if fw > 2000 else "bad"), f"{name}: forward 1 s at 25 % (analogWrite): {fw} counts (> 2000)")
     print(("ok" if fs >= fw else "bad"), f"{name}: stopped, no counts back ({fw} -> {fs})")
     print(("ok" if rv < fs - 1000 else "bad"), f"{name}: reverse 0.6 s (fast PWM 8-bit): {fs} -> {rv} (< -1000)")
-    print(("ok" if ic > rs + 1000 else "bad"), f"{name}: forward 0.5 s (fast PWM, TOP = ICR1): {rs} -> {ic} (> +1000)")
+    print(("ok" if ic > rs + 700 else "bad"), f"{name}: forward 0.5 s (fast PWM, TOP = ICR1): {rs} -> {ic} (> +700)")
 l, r = p["fwd"]
 print(("ok" if abs(l - r) < 0.05 * max(l, r) else "bad"), f"both wheels alike forward: {l} and {r} (5 %)")
 EOF
@@ -128,17 +129,14 @@ EOF
 else
   bad "MotorPwm: no DONE: $(head -c 300 "$T/motor.con")"
 fi
-# duty range per motor in the JSON: both directions at ~50 %
-bnums "$T/motor.json" 'duty' >"$T/duty"
+# duty range per motor in the JSON: both directions at ~25 %
 for side in left right; do
-  i=0; [ $side = right ] && i=1
-  lo=$(awk -v s=$side -v i=$i 'tolower($1) ~ /min/ && (tolower($1) ~ s || $1 ~ "\\."i"$" || $1 ~ "\\."i"\\.") {print $2; exit}' "$T/duty")
-  hi=$(awk -v s=$side -v i=$i 'tolower($1) ~ /max/ && (tolower($1) ~ s || $1 ~ "\\."i"$" || $1 ~ "\\."i"\\.") {print $2; exit}' "$T/duty")
-  if [ -n "$lo" ] && [ -n "$hi" ]; then
-    awk -v a="$lo" -v b="$hi" 'BEGIN {exit !(a <= -0.45 && a >= -0.55 && b >= 0.45 && b <= 0.55)}' \
-      && ok "MotorPwm: $side duty range $lo .. $hi (about -0.5 .. 0.5)" || bad "MotorPwm: $side duty range $lo .. $hi, want about -0.5 .. 0.5"
+  read -r lo hi < <(jv "$T/motor.json" '" ".join(map(str, d["board"]["pwm_duty"]["'$side'"]))')
+  if [ -n "${hi:-}" ]; then
+    awk -v a="$lo" -v b="$hi" 'BEGIN {exit !(a <= -0.24 && a >= -0.27 && b >= 0.24 && b <= 0.27)}' \
+      && ok "MotorPwm: $side duty range $lo .. $hi (about -0.25 .. 0.25)" || bad "MotorPwm: $side duty range $lo .. $hi, want about -0.25 .. 0.25"
   else
-    bad "MotorPwm: no $side duty range under \"board\": $(jv "$T/motor.json" 'json.dumps(d.get("board"))' | head -c 300)"
+    bad "MotorPwm: no board.pwm_duty.$side [min, max] in the JSON: $(jv "$T/motor.json" 'json.dumps(d.get("board"))' | head -c 300)"
   fi
 done
 [ "$(jv "$T/motor.json" 'd["contacts"]["front"] + d["contacts"]["side"]')" = 0 ] && ok "MotorPwm: no front or side contact" \
@@ -152,8 +150,8 @@ y2=$(jv "$T/motor2.json" 'd["final_pose"]["y_m"]'); y3=$(jv "$T/motor.json" 'd["
 h3=$(jv "$T/motor.json" 'd["final_pose"]["heading_rad"]')
 if [ -n "$y0" ] && [ -n "$y1" ] && [ -n "$y2" ] && [ -n "$y3" ]; then
   awk -v a="$y0" -v b="$y1" 'BEGIN {exit !(b > a + 0.5)}' && ok "MotorPwm: north $y0 -> $y1 m in the first second" || bad "MotorPwm: y $y0 -> $y1 m in the first second, want > +0.5"
-  awk -v a="$y1" -v b="$y2" 'BEGIN {exit !(b < a - 0.3)}' && ok "MotorPwm: back to $y2 m after the reverse" || bad "MotorPwm: y $y1 -> $y2 m after the reverse, want < -0.3"
-  awk -v a="$y2" -v b="$y3" 'BEGIN {exit !(b > a + 0.3)}' && ok "MotorPwm: forward again to $y3 m (ICR1 mode)" || bad "MotorPwm: y $y2 -> $y3 m in ICR1 mode, want > +0.3"
+  awk -v a="$y1" -v b="$y2" 'BEGIN {exit !(b < a - 0.25)}' && ok "MotorPwm: back to $y2 m after the reverse" || bad "MotorPwm: y $y1 -> $y2 m after the reverse, want < -0.25"
+  awk -v a="$y2" -v b="$y3" 'BEGIN {exit !(b > a + 0.2)}' && ok "MotorPwm: forward again to $y3 m (ICR1 mode)" || bad "MotorPwm: y $y2 -> $y3 m in ICR1 mode, want > +0.2"
   awk -v h="$h3" 'BEGIN {exit !(h > 1.2708 && h < 1.8708)}' && ok "MotorPwm: still facing north ($h3 rad)" || bad "MotorPwm: heading $h3 rad at the end, want pi/2 +- 0.3"
 else
   bad "MotorPwm: no final_pose: $y0 $y1 $y2 $y3"
@@ -191,7 +189,7 @@ for v in INT0 INT1; do
   [ -n "$n" ] && [ "$n" -gt 500 ] && ok "Encoders: $v serviced $n times (the JSON's board)" || bad "Encoders: $v interrupts in the JSON: '${n}'"
 done
 brun enc_again Encoders 3 "2.1 end" >/dev/null
-[ "$(strip "$T/enc.json")" = "$(strip "$T/enc_again.json")" ] && ok "Encoders: a second run prints the same JSON" || bad "Encoders: two runs differ"
+a=$(strip "$T/enc.json" 2>/dev/null); [ -n "$a" ] && [ "$a" = "$(strip "$T/enc_again.json" 2>/dev/null)" ] && ok "Encoders: a second run prints the same JSON" || bad "Encoders: two runs differ"
 
 # ---- AdcIr: dark ~ ambient, the diagonals see the start cell's side walls,
 # a hand before one front sensor lights that one only

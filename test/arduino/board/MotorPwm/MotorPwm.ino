@@ -1,8 +1,9 @@
 // MotorPwm - Timer1 PWM on D9 (OC1A, left) and D10 (OC1B, right) with the
-// direction on D7/D8, in three Timer1 set-ups, each at ~50 % duty:
+// direction on D7/D8, in three Timer1 set-ups, each at 25 % duty (50 %
+// is ~2 m/s on a full battery: too fast to stop in a 16x16 maze):
 //   fwd: analogWrite (the core's Timer1: phase-correct 8-bit, clk/64), 1 s
 //   rev: fast PWM 8-bit at clk/1 (mazerunner-core's 31.25 kHz), 0.6 s back
-//   icr: fast PWM with TOP = ICR1 = 799 (mode 14, 20 kHz), OCR = 400, 0.5 s
+//   icr: fast PWM with TOP = ICR1 = 799 (mode 14, 20 kHz), OCR = 200, 0.5 s
 // with 0.5 s stopped after each. After each phase: `PHASE name ms left
 // right` with the encoder counts (forward positive), then `DONE`.
 const uint8_t L_DIR = 7, R_DIR = 8, L_PWM = 9, R_PWM = 10;
@@ -72,8 +73,8 @@ void setup() {
 
   // analogWrite as the core sets Timer1 up (wiring.c: WGM10, CS11|CS10)
   direction(true);
-  analogWrite(L_PWM, 128);
-  analogWrite(R_PWM, 128);
+  analogWrite(L_PWM, 64);
+  analogWrite(R_PWM, 64);
   delay(1000);
   stop_motors();
   report("fwd");
@@ -84,8 +85,8 @@ void setup() {
   direction(false);
   TCCR1A = _BV(COM1A1) | _BV(COM1B1) | _BV(WGM10);
   TCCR1B = _BV(WGM12) | _BV(CS10);
-  OCR1A = 128;
-  OCR1B = 128;
+  OCR1A = 64;
+  OCR1B = 64;
   delay(600);
   stop_motors();
   report("rev");
@@ -95,8 +96,8 @@ void setup() {
   // fast PWM, TOP = ICR1 (mode 14), clk/1: 16 MHz / 800 = 20 kHz
   direction(true);
   ICR1 = 799;
-  OCR1A = 400;
-  OCR1B = 400;
+  OCR1A = 200;
+  OCR1B = 200;
   TCCR1A = _BV(COM1A1) | _BV(COM1B1) | _BV(WGM11);
   TCCR1B = _BV(WGM13) | _BV(WGM12) | _BV(CS10);
   delay(500);
