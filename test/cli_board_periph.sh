@@ -251,7 +251,7 @@ decode "$T/sw.con" >"$T/sw.dec"
 for want in "300 0" "350 0" "500 5" "550 5" "700 15" "750 15" "900 16" "950 16" "1100 15" "1150 15"; do
   set -- $want
   got=$(awk -v ms=$1 '$1 >= ms && $1 < ms + 10 {print $3 " (raw " $2 ")"; exit}' "$T/sw.dec")
-  [ "${got%% *}" = "$2" ] && ok "Switches: at $1 ms decodes to $2$( [ $2 = 16 ] && echo ' (the button)') $got" || bad "Switches: at $1 ms: '$got', want $2"
+  [ "${got%% *}" = "$2" ] && ok "Switches: at $1 ms: $got$( [ $2 = 16 ] && echo ', the button')" || bad "Switches: at $1 ms: '$got', want $2"
 done
 in=""; for n in $(seq 0 15); do in="$in$(awk -v n=$n 'BEGIN {printf "%.1f switches=%d; ", 0.1 * (n + 1), n}')"; done
 brun sw16 Switches 2 "${in}1.7 button=down; 1.8 end"
