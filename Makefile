@@ -49,8 +49,10 @@ MCU_RX_FLAGS := -DWIRE_RX_LOG_MAX=14
 # test_wire again with the MCU's decoder buffers, so its fault runs check the
 # decoder as shipped: its own wire.c with the flag (libmm_san's has the host's).
 TESTS += $(B)/test/test_wire_rx14
+# Our sketches for the board emulation (test/cli_board.sh, test/test_board.c), built for the Nano.
+BOARD_SKETCHES := $(patsubst test/arduino/board/%.ino,$(B)/clients/board/%.elf,$(wildcard test/arduino/board/*.ino))
 
-.PHONY: all deps test test-run client-mazerunner mrc-images sim sim-run bench bench-run fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay view docs-img
+.PHONY: all deps test test-run client-mazerunner mrc-images board-sketches sim sim-run bench bench-run fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay view docs-img
 all: tools
 
 deps:
@@ -125,9 +127,10 @@ $(B)/test/mrc_boot: test/mrc_boot.c | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) -O1 -g $(SAN) $< -lsimavr -lelf -o $@
 
-# Our sketches for the UKMARSBOT board's peripherals (rules below, by the clients')
-BOARD_SKETCHES := MotorPwm Encoders AdcIr Switches Battery UartEcho Persist
-BOARD_ELFS     := $(patsubst %,$(B)/arduino/nano/board/%.elf,$(BOARD_SKETCHES) UartEcho9600)
+# Our sketches for the UKMARSBOT board's peripherals, one folder each in
+# test/arduino/board (rules below, by the clients')
+PERIPH_SKETCHES := MotorPwm Encoders AdcIr Switches Battery UartEcho Persist
+PERIPH_ELFS     := $(patsubst %,$(B)/arduino/nano/board/%.elf,$(PERIPH_SKETCHES) UartEcho9600)
 
 # deps first, then a fresh make: on a new machine the packages (and the Arduino
 # core's files that the wildcards below list) only exist once deps has run.
@@ -135,7 +138,7 @@ test: deps
 	@$(MAKE) --no-print-directory test-run
 test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
 	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf $(B)/arduino/uno/OneCommand.elf $(B)/test/mrc_boot \
-	$(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf $(BOARD_ELFS)
+	$(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf $(BOARD_SKETCHES) $(PERIPH_ELFS)
 	@MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
 # PlatformIO from PyPI in a venv, only to check that platformio.ini parses
@@ -284,6 +287,13 @@ define MRC_BUILD
 	avr-g++ $(ARD_nano) $(ARD_BASE) $(ARD_CXX) -w -x c++ -include Arduino.h -c $(1)mazerunner-core.ino -o $(2).o
 	avr-gcc $(ARD_nano) -Os -Wl,--gc-sections $(2).o $(NANO_CORE) -lm -o $(2)
 endef
+# Our test sketches for the board emulation (test/cli_board.sh), built for the
+# Nano with the same core archive (no ../shared needed).
+board-sketches: $(BOARD_SKETCHES)
+$(B)/clients/board/%.elf: test/arduino/board/%.ino $(NANO_CORE)
+	@mkdir -p $(dir $@)
+	avr-g++ $(ARD_nano) $(ARD_BASE) $(ARD_CXX) -Wall -x c++ -include Arduino.h -c $< -o $@.o
+	avr-gcc $(ARD_nano) -Os -Wl,--gc-sections $@.o $(NANO_CORE) -lm -o $@
 $(B)/clients/mazerunner-core.elf: $(MRC_FILES) $(NANO_CORE)
 	$(call MRC_BUILD,$(MRC_SRC),$@)
 $(B)/clients/mazerunner-core-uk/mazerunner-core/config.h: $(MRC_FILES)
@@ -298,18 +308,18 @@ $(B)/clients/%.hex: $(B)/clients/%.elf
 # ---- our sketches for the UKMARSBOT board's peripherals (test/arduino/board,
 # test/cli_board_periph.sh): built for the Nano as the mazerunner-core images
 # are, with the same core archive. UartEcho9600: UartEcho at 9600 baud.
-.PHONY: board-sketches
-board-sketches: $(BOARD_ELFS)
-	@avr-size $(BOARD_ELFS)
-# BOARD_SKETCH (image name, sketch, extra flags)
-define BOARD_SKETCH
+.PHONY: periph-sketches
+periph-sketches: $(PERIPH_ELFS)
+	@avr-size $(PERIPH_ELFS)
+# PERIPH_SKETCH (image name, sketch folder, extra flags)
+define PERIPH_SKETCH
 $(B)/arduino/nano/board/$(1).elf: test/arduino/board/$(2)/$(2).ino $(NANO_CORE)
 	@mkdir -p $$(dir $$@)
 	avr-g++ $(ARD_nano) $(ARD_BASE) $(ARD_CXX) $(3) -Wall -x c++ -include Arduino.h -c $$< -o $$@.o
 	avr-gcc $(ARD_nano) -Os -Wl,--gc-sections $$@.o $(NANO_CORE) -lm -o $$@
 endef
-$(foreach s,$(BOARD_SKETCHES),$(eval $(call BOARD_SKETCH,$(s),$(s),)))
-$(eval $(call BOARD_SKETCH,UartEcho9600,UartEcho,-DECHO_BAUD=9600))
+$(foreach s,$(PERIPH_SKETCHES),$(eval $(call PERIPH_SKETCH,$(s),$(s),)))
+$(eval $(call PERIPH_SKETCH,UartEcho9600,UartEcho,-DECHO_BAUD=9600))
 
 # ---- simulation: a whole contest with the firmware in the loop (search,
 # proof, return, speed runs); DRIVER=scripted drives the true best path ----

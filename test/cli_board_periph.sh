@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # cli_board_periph.sh - issue 18: a sketch of ours per peripheral of the
-# UKMARSBOT board (test/arduino/board, `make board-sketches`), each built
+# UKMARSBOT board (test/arduino/board, `make periph-sketches`), each built
 # for the Nano and run on the emulated board against the physics:
 #   mmsim --board ukmarsbot --avr SKETCH.elf --robot robots/ukmarsbot.ini ...
 # MotorPwm (Timer1 in three modes, direction pins), Encoders (counts vs the
@@ -26,7 +26,7 @@ T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
 mk() { env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory B="$B" "$@"; }
 
 # ---- the images: ATmega328P ELFs that fit the Nano
-for s in $SKETCHES; do [ -s "$SK/$s.elf" ] || { mk board-sketches >"$T/make.out" 2>&1 || { bad "make board-sketches: $(tail -3 "$T/make.out")"; }; break; }; done
+for s in $SKETCHES; do [ -s "$SK/$s.elf" ] || { mk periph-sketches >"$T/make.out" 2>&1 || { bad "make periph-sketches: $(tail -3 "$T/make.out")"; }; break; }; done
 for s in $SKETCHES; do
   elf=$SK/$s.elf
   [ -s "$elf" ] || { bad "$s: $elf not built"; continue; }

@@ -73,6 +73,15 @@ static int load_image(board_t *b, const char *image, char *err, size_t errn)
     }
     if (got < sizeof h || memcmp(h, "\x7f" "ELF", 4) != 0 || h[18] != 83 || h[19] != 0)
         return snprintf(err, errn, "%s: not an AVR ELF image (or a .hex file)", image), -1;
+    /* e_flags' low bits: the AVR architecture the image was built for (avr4: ATmega48/88, avr5: 168/328) */
+    unsigned arch = 0, want = strstr(b->spec.mcu, "168") || strstr(b->spec.mcu, "328") ? 5u : 4u;
+    FILE *g = fopen(image, "rb");
+    uint8_t fl[4] = { 0 };
+    if (g && fseek(g, 36, SEEK_SET) == 0 && fread(fl, 1, 4, g) == 4) arch = fl[0] & 0x7Fu;
+    if (g) fclose(g);
+    if (arch && arch != want)
+        return snprintf(err, errn, "%s: built for another MCU (AVR architecture avr%u; the board %s has an %s: avr%u)", image,
+                        arch, b->spec.name, b->spec.mcu, want), -1;
     static elf_firmware_t fw; /* large: keep it off the stack */
     memset(&fw, 0, sizeof fw);
     last_log[0] = '\0';

@@ -162,9 +162,10 @@ static int setup(run_t *r)
     r->hil = r->o->serial;
     r->reason = "done";
     r->input = r->o->input;
-    if (r->drv->open(r) != 0) {
+    int orc = r->drv->open(r);
+    if (orc != 0) {
         sim_free(&r->sim);
-        return RUN_EXTERNAL;
+        return orc == RUN_BAD_INPUT ? RUN_BAD_INPUT : RUN_EXTERNAL;
     }
     if (input_needs_board(&r->input) && !r->hands) {
         fprintf(stderr, "--input: switches, button, reset and send act on a board (--board NAME)\n");

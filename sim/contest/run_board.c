@@ -6,6 +6,7 @@
  * "console" (everything the firmware printed). */
 #include "run_driver.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -71,6 +72,10 @@ static void board_results(run_t *r, json_t *j)
                                                  st->duty_min[1], st->duty_max[1]));
     json_object_set_new(b, "encoder_edges", json_pack("{s:I, s:I}", "left", (json_int_t)st->encoder_edges[0], "right",
                                                       (json_int_t)st->encoder_edges[1]));
+    /* the physics' own counts (the robot file's encoder_ppr x gear per wheel turn) and battery, to check the board's against */
+    json_object_set_new(b, "sim_encoder_counts", json_pack("{s:i, s:i}", "left", (int)r->sim.encoder[WORLD_LEFT].count, "right",
+                                                           (int)r->sim.encoder[WORLD_RIGHT].count));
+    json_object_set_new(b, "battery_v", json_real(round(sim_battery_v(&r->sim) * 1000.0) / 1000.0));
     json_object_set_new(b, "uart_bytes_out", json_integer((json_int_t)st->uart_bytes_out));
     json_object_set_new(b, "uart_bytes_in", json_integer((json_int_t)st->uart_bytes_in));
     json_object_set_new(b, "resets", json_integer(st->resets));

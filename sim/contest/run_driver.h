@@ -16,7 +16,7 @@ typedef struct run_s run_t;
 
 typedef struct {
     const char *name; /* the JSON's "driver" */
-    /* set up after the world: 0, or RUN_EXTERNAL after one error line */
+    /* set up after the world: 0, or RUN_EXTERNAL (RUN_BAD_INPUT: bad input) after one error line */
     int (*open)(run_t *r);
     /* one physics step with this driver: NULL, or why the run ends now */
     const char *(*step)(run_t *r);

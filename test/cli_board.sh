@@ -1,0 +1,162 @@
+#!/usr/bin/env bash
+# cli_board.sh - issue 18: an AVR image on the emulated UKMARSBOT board
+# (mmsim --board ukmarsbot --avr IMAGE, sim/board, boards/ukmarsbot-v1.3.ini).
+# Our sketches (test/arduino/board, built for the Nano with the Debian
+# Arduino core) check each part against the physics: motor PWM and
+# direction (two Timer1 modes), both encoders at full speed (every edge an
+# interrupt, the decoded count = the physics' count), the ADC (single,
+# free-running and interrupt-driven conversions, emitters off and on, the
+# switch ladder, the battery), an auto-trigger simavr lacks; bad board files
+# and images. Then mazerunner-core (if ../shared has it): banner and RDY,
+# `B` within 2 % of the simulated battery, `S` changes with a wall, the same
+# JSON twice; and its idle speed (simulated s per wall s) is printed.
+set -u
+B=${BUILD:-build}
+SHARED=${SHARED:-../shared}
+MRC_DIR=${MRC_DIR:-$SHARED/clients/mazerunner-core}
+MMSIM=${MMSIM:-$B/mmsim}
+T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
+. "$(dirname "$0")/lib.sh"
+mk() { env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory B="$B" SHARED="$SHARED" "$@"; }
+ROBOT=robots/ukmarsbot.ini
+SK=$B/clients/board
+
+want_rc 0 "the board sketches build for the Nano" mk board-sketches
+# open 16x16 mazes (posts only): as is, and with a wall east of the start cell
+python3 - "$T" <<'PY'
+import sys
+def maze(path, east):
+    n = 16; rows = ["o" + "---o" * n]
+    for r in range(n):
+        row = "|" + "    " * (n - 1) + "   |"
+        if r == n - 1 and east: row = row[:4] + "|" + row[5:]
+        rows += [row, "o" + ("---o" * n if r == n - 1 else "   o" * n)]
+    open(path, "w").write("\n".join(rows) + "\n")
+maze(sys.argv[1] + "/open.txt", False); maze(sys.argv[1] + "/east.txt", True)
+PY
+run() { local img=$1 maze=$2; shift 2; "$MMSIM" --maze "$maze" --board ukmarsbot --avr "$img" --robot $ROBOT --json "$@"; }
+js() { python3 -c "import json,sys; j=json.loads(open(sys.argv[1]).read().splitlines()[-1]); $2" "$1"; }
+
+# ---- bad input: one line, exit 2 ----
+ONE_ERROR_LINE=1
+cp boards/ukmarsbot-v1.3.ini "$T/good.ini"
+sed 's/^pwm_pin = D9$/pwm_pin = D6/' "$T/good.ini" >"$T/pwm.ini"
+sed 's/^int_pin = D2$/int_pin = D22/' "$T/good.ini" >"$T/pin.ini"
+sed 's/^pin = D13$/pin = D7/' "$T/good.ini" >"$T/twice.ini"
+sed '/^r_ground_ohm/d' "$T/good.ini" >"$T/missing.ini"
+sed 's/^vcc_v = 5.0$/vcc_v = 12/' "$T/good.ini" >"$T/vcc.ini"
+printf '[board]\nnmae = x\n' >"$T/unknown.ini"
+for f in pwm pin twice missing vcc unknown; do
+  want_rc 2 "bad board file ($f): exit 2" run $SK/MotorPwm.elf "$T/open.txt" --board "$T/$f.ini" --time-limit 1
+  grep -qE "^$T/$f.ini:[0-9]+: [a-z]+(\.[a-z]+)?\.[a-z_]+: " "$T/err" && ok "bad board file ($f): FILE:LINE: section.key: reason" \
+    || bad "bad board file ($f): $(cat "$T/err")"
+done
+want_rc 2 "unknown board name" run $SK/MotorPwm.elf "$T/open.txt" --board nosuchboard --time-limit 1
+want_rc 2 "--board without --avr" "$MMSIM" --maze "$T/open.txt" --board ukmarsbot --time-limit 1
+want_rc 2 "--send without --board" "$MMSIM" --maze "$T/open.txt" --send "B@1" --time-limit 1
+printf 'int main(void) { for (;;) {} }\n' >"$T/m.c"
+if avr-gcc -mmcu=atmega2560 -Os "$T/m.c" -o "$T/mega.elf" 2>/dev/null; then
+  want_rc 2 "an image for the ATmega2560" run "$T/mega.elf" "$T/open.txt" --time-limit 1
+  grep -q 'built for another MCU' "$T/err" && ok "  ... says so" || bad "  another MCU: $(cat "$T/err")"
+fi
+printf 'not an image\n' >"$T/x.elf"
+want_rc 2 "not an image" run "$T/x.elf" "$T/open.txt" --time-limit 1
+want_rc 2 "ADC auto-trigger from Timer0: exit 2" run $SK/AdcTimerTrigger.elf "$T/open.txt" --time-limit 1
+grep -q 'ADC auto-trigger source 4 (timer0 overflow.*simavr 1.6 does not emulate' "$T/err" && ok "  ... one clear line" \
+  || bad "  auto-trigger: $(cat "$T/err")"
+ONE_ERROR_LINE=0
+
+# ---- motors: both wheels forward at duty 40/255 for 0.8 s, in two Timer1 modes ----
+want_rc 1 "MotorPwm runs (no goal: exit 1)" run $SK/MotorPwm.elf "$T/open.txt" --time-limit 2
+cp "$T/out" "$T/motor.json"
+js "$T/motor.json" "
+b = j['board']; d = b['pwm_duty']; p = j['final_pose']
+import math
+assert j['console'] == 'DONE\r\n', j['console']
+for s in 'left', 'right':
+    assert d[s][0] == 0 and abs(d[s][1] - 40 / 255) < 2e-3, d
+# forward: ORION's 475 mm/s/V less 0.34 V bias, time constant 0.19 s (robots/ukmarsbot.ini [measured.orion]):
+# 0.8 s driven then braked: v_ss (0.8 - tau (1 - e^(-0.8/tau))) + v_ss tau
+v = 0.475 * (40 / 255 * b['battery_v'] - 0.34); tau = 0.19
+want = v * (0.8 - tau * (1 - math.exp(-0.8 / tau))) + v * tau * (1 - math.exp(-0.8 / tau))
+moved = p['y_m'] - 0.09
+assert abs(moved - want) < 0.15 * want, (moved, want)
+assert abs(p['x_m'] - 0.09) < 0.01 and abs(p['heading_rad'] - math.pi / 2) < 0.05, p
+print('moved %.3f m north, expected %.3f m' % (moved, want))
+" >"$T/m.txt" 2>&1 && ok "motors: duty 40/255 in both modes, both wheels forward at the expected speed ($(cat "$T/m.txt"))" \
+  || bad "motors: $(tail -3 "$T/m.txt")"
+
+# ---- encoders: full speed, then back ----
+want_rc 1 "EncoderCount runs" run $SK/EncoderCount.elf "$T/open.txt" --time-limit 2.5
+cp "$T/out" "$T/enc.json"
+js "$T/enc.json" "
+b = j['board']; c = j['console'].split()
+assert c[0] == 'COUNTS' and c[3] == 'EDGES', c
+l, r, el, er = int(c[1]), int(c[2]), int(c[4]), int(c[5])
+# every edge an interrupt, none lost
+assert el == b['interrupts']['INT0'] == b['encoder_edges']['left'], (el, b)
+assert er == b['interrupts']['INT1'] == b['encoder_edges']['right'], (er, b)
+# the decoded count is the physics' (36 counts a motor turn x 11.4), but for the edge the settling
+# robot may make before the sketch attaches its interrupts
+s = b['sim_encoder_counts']
+assert abs(l - s['left']) <= 1 and abs(r - s['right']) <= 1, (l, r, s)
+assert l > 2000 and r > 2000 and el > l + 1000, (l, r, el)
+assert b['pwm_duty']['left'] == [-60 / 255, 1.0] or abs(b['pwm_duty']['left'][0] + 60 / 255) < 1e-6, b['pwm_duty']
+print('L %d R %d (physics %d %d), %d + %d edges' % (l, r, s['left'], s['right'], el, er))
+" >"$T/e.txt" 2>&1 && ok "encoders: every edge counted at full speed ($(cat "$T/e.txt"))" || bad "encoders: $(tail -3 "$T/e.txt")"
+
+# ---- ADC ----
+for m in open east; do
+  want_rc 1 "AdcProbe on the $m maze" run $SK/AdcProbe.elf "$T/$m.txt" --time-limit 1
+  cp "$T/out" "$T/adc-$m.json"
+done
+js "$T/adc-open.json" "
+b = j['board']; L = j['console'].split('\r\n')
+o = L[0].split(); f = L[1].split()
+off = [int(x) for x in o[1:5]]; on = [int(x) for x in o[6:10]]; sw = int(o[11]); bat = int(o[13])
+e = json.loads(open(sys.argv[1].replace('open', 'east')).read().splitlines()[-1])['console'].split()
+assert all(5 <= x <= 15 for x in off), off                      # dark: the ambient counts
+assert on[1] > off[1] + 50 and on[2] > off[2] + 50, (off, on)   # the diagonals see the posts lit
+assert int(e[7]) > on[1] + 40, (e[7], on[1])                    # A1 (right diagonal) sees the east wall
+thr = [660, 647, 630, 614, 590, 570, 545, 522, 461, 429, 385, 343, 271, 212, 128, 44, 0]
+assert sw > (thr[0] + thr[1]) / 2 and sw <= 800, sw             # switches 0
+v = bat * 5.0 / 1023 * 2
+assert abs(v - b['battery_v']) < 0.02 * b['battery_v'], (v, b['battery_v'])
+assert f[0] == 'FREE' and 90 <= int(f[1]) <= 100 and abs(int(f[2]) - bat) <= 2, f   # 16 MHz / 128 / 13 for 10 ms
+assert b['adc_conversions']['A7'] >= 91, b['adc_conversions']
+print('dark %s lit %s, east wall A1 %s, switches %d, battery %.2f V of %.2f' % (off, on, e[7], sw, v, b['battery_v']))
+" >"$T/a.txt" 2>&1 && ok "ADC: single, free-running and interrupt-driven; emitters off/on; wall; switches; battery ($(cat "$T/a.txt"))" \
+  || bad "ADC: $(tail -3 "$T/a.txt")"
+
+# ---- mazerunner-core ----
+MRC=$B/clients/mazerunner-core-uk.elf
+if [ ! -f "$MRC_DIR/mazerunner-core/mazerunner-core.ino" ] && [ ! -f "$MRC_DIR/mazerunner-core.ino" ]; then
+  echo "SKIP cli_board: mazerunner-core: $MRC_DIR not found"
+  [ $fails -eq 0 ] && exit 0 || exit 1
+fi
+[ -s "$MRC" ] || mk client-mazerunner >/dev/null 2>&1
+for m in open east; do
+  want_rc 1 "mazerunner-core-uk on the board ($m maze): B and S" run "$MRC" "$T/$m.txt" --time-limit 2 --send "B@0.5" --send "S@1.0"
+  cp "$T/out" "$T/mrc-$m.json"
+done
+js "$T/mrc-open.json" "
+c = j['console'].replace('\r', '').split('\n')
+assert 'MAZERUNNER-CORE' in c and 'RDY' in c, c[:6]
+bl = [x for x in c if x.startswith('Battery: ')][0]
+v = float(bl.split()[1]); sim = j['board']['battery_v']
+assert abs(v - sim) <= 0.02 * sim, (v, sim)
+print('battery %.2f V, simulated %.3f V' % (v, sim))
+" >"$T/b.txt" 2>&1 && ok "mazerunner-core: MAZERUNNER-CORE, RDY; B within 2 % ($(cat "$T/b.txt"))" || bad "mazerunner-core B: $(tail -3 "$T/b.txt")"
+sline() { js "$1" "print([x for x in j['console'].replace('\r', '').split('\n') if x.startswith('|')][0])"; }
+so=$(sline "$T/mrc-open.json" 2>&1); se=$(sline "$T/mrc-east.json" 2>&1)
+python3 -c "
+import sys
+a = [int(x) for x in sys.argv[1].replace('|', ' ').split()[:4]]; b = [int(x) for x in sys.argv[2].replace('|', ' ').split()[:4]]
+assert b[2] > a[2] + 30 and abs(b[1] - a[1]) < 10, (a, b)   # lfs lss rss rfs: rss sees the east wall
+" "$so" "$se" 2>"$T/s.txt" && ok "mazerunner-core S: rss rises with a wall on the right ('$so' -> '$se')" || bad "S: $so / $se: $(tail -1 "$T/s.txt")"
+run "$MRC" "$T/east.txt" --time-limit 2 --send "B@0.5" --send "S@1.0" >"$T/again.json" 2>/dev/null
+[ "$(strip "$T/mrc-east.json")" = "$(strip "$T/again.json")" ] && ok "the same console and JSON on a second run" || bad "a second run differs"
+# speed: mazerunner-core idle (its systick, ADC sequence and prompt), 20 simulated s
+run "$MRC" "$T/open.txt" --time-limit 20 >"$T/idle.json" 2>/dev/null
+echo "speed: mazerunner-core idle on the board: $(js "$T/idle.json" "print(j['real_time_factor'])")x real time ($(js "$T/idle.json" "print(j['sim_time_s'], 's in', j['wall_time_s'], 's')"))"
+[ $fails -eq 0 ]
