@@ -127,13 +127,18 @@ $(B)/test/mrc_boot: test/mrc_boot.c | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) -O1 -g $(SAN) $< -lsimavr -lelf -o $@
 
+# Our sketches for the UKMARSBOT board's peripherals, one folder each in
+# test/arduino/board (rules below, by the clients')
+PERIPH_SKETCHES := MotorPwm Encoders AdcIr Switches Battery UartEcho Persist
+PERIPH_ELFS     := $(patsubst %,$(B)/arduino/nano/board/%.elf,$(PERIPH_SKETCHES) UartEcho9600)
+
 # deps first, then a fresh make: on a new machine the packages (and the Arduino
 # core's files that the wildcards below list) only exist once deps has run.
 test: deps
 	@$(MAKE) --no-print-directory test-run
 test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
 	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf $(B)/arduino/uno/OneCommand.elf $(B)/test/mrc_boot \
-	$(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf $(BOARD_SKETCHES)
+	$(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf $(BOARD_SKETCHES) $(PERIPH_ELFS)
 	@MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
 # PlatformIO from PyPI in a venv, only to check that platformio.ini parses
@@ -312,6 +317,22 @@ $(B)/clients/mazerunner-core-uk-mended.elf: $(B)/clients/mazerunner-core-uk-mend
 	$(call MRC_BUILD,$(dir $<),$@)
 $(B)/clients/%.hex: $(B)/clients/%.elf
 	avr-objcopy -O ihex -R .eeprom $< $@
+
+# ---- our sketches for the UKMARSBOT board's peripherals (test/arduino/board,
+# test/cli_board_periph.sh): built for the Nano as the mazerunner-core images
+# are, with the same core archive. UartEcho9600: UartEcho at 9600 baud.
+.PHONY: periph-sketches
+periph-sketches: $(PERIPH_ELFS)
+	@avr-size $(PERIPH_ELFS)
+# PERIPH_SKETCH (image name, sketch folder, extra flags)
+define PERIPH_SKETCH
+$(B)/arduino/nano/board/$(1).elf: test/arduino/board/$(2)/$(2).ino $(NANO_CORE)
+	@mkdir -p $$(dir $$@)
+	avr-g++ $(ARD_nano) $(ARD_BASE) $(ARD_CXX) $(3) -Wall -x c++ -include Arduino.h -c $$< -o $$@.o
+	avr-gcc $(ARD_nano) -Os -Wl,--gc-sections $$@.o $(NANO_CORE) -lm -o $$@
+endef
+$(foreach s,$(PERIPH_SKETCHES),$(eval $(call PERIPH_SKETCH,$(s),$(s),)))
+$(eval $(call PERIPH_SKETCH,UartEcho9600,UartEcho,-DECHO_BAUD=9600))
 
 # ---- simulation: a whole contest with the firmware in the loop (search,
 # proof, return, speed runs); DRIVER=scripted drives the true best path ----
