@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# cli_mazerunner_search.sh - issue 18's done-when: UKMARSBOT's unmodified
+# contest firmware (mazerunner-core, EVENT_UK image) on the emulated board
+# searches mazes/gen-16x16-s1.txt the way its README says: switches to its
+# search function 2, the button, a hand before one front sensor.
+#  - the shipped image reaches the goal (7,7) with no front or side contact,
+#    every wall it reports is the maze's; then it stops with its own "ERR:
+#    no route to target": a bug of the firmware (search_to checks for a
+#    blocked cell before it checks for the target, whose cost is 0), which
+#    the simulator shows as the robot would;
+#  - the test-only mended copy (Makefile: mazerunner-core-uk-mended) also
+#    comes home to (0,0), and its map (W) matches the maze in every cell it
+#    visited; a second run gives the same console and JSON.
+set -u
+B=${BUILD:-build}
+SHARED=${SHARED:-../shared}
+MMSIM=${MMSIM:-$B/mmsim}
+T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
+. "$(dirname "$0")/lib.sh"
+MRC_DIR=${MRC_DIR:-$SHARED/clients/mazerunner-core}
+if [ ! -d "$MRC_DIR" ]; then
+    echo "SKIP cli_mazerunner_search: $MRC_DIR not found (git clone https://github.com/ukmars/mazerunner-core, then MRC_DIR=that folder)"
+    exit 77
+fi
+mk() { env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory B="$B" SHARED="$SHARED" "$@"; }
+want_rc 0 "mazerunner-core images" mk client-mazerunner
+M=mazes/gen-16x16-s1.txt
+HANDS="0.2 send=X; 0.5 switches=2; 1.0 button; 2.0 occlude=left"
+run() { "$MMSIM" --board ukmarsbot --avr "$1" --robot robots/ukmarsbot.ini --maze $M "${@:2}" --json; }
+js() { python3 -c "import json,sys; j=json.loads(open(sys.argv[1]).read().splitlines()[-1]); $2" "$1"; }
+
+# the shipped EVENT_UK image, the issue's command
+want_rc 0 "EVENT_UK image: search (the issue's command)" run $B/clients/mazerunner-core-uk.elf --input "$HANDS" --time-limit 40
+cp "$T/out" "$T/uk.json"
+js "$T/uk.json" "
+c = j['console']; k = j['contacts']
+assert 'MAZERUNNER-CORE' in c and 'RDY' in c and 'Off we go...[7,7]' in c, c[:300]
+assert j['reached_goal'], j['laps']
+assert k['front'] == 0 and k['side'] == 0 and k['rear'] == 0, k
+tail = c.replace('\r', '').rstrip().splitlines()[-1]
+assert tail.endswith('ERR: no route to target') and '[ 6, 7,E]' in tail, tail
+" && ok "EVENT_UK: reaches (7,7), no front or side contact, then the firmware's own ERR on entering it" \
+  || bad "EVENT_UK search: $(tail -c 600 "$T/uk.json")"
+python3 test/mrc_check.py $M "$T/uk.json" >"$T/chk" && ok "EVENT_UK: $(tail -1 "$T/chk")" || bad "walls: $(cat "$T/chk")"
+
+# the mended copy: there and back, then its map
+want_rc 0 "mended image: there and back" run $B/clients/mazerunner-core-uk-mended.elf --input "$HANDS; 75 send=W; 78 end"
+cp "$T/out" "$T/m1.json"
+js "$T/m1.json" "
+c = j['console'].replace('\r', ''); k = j['contacts']; p = j['final_pose']
+assert c.count('Arrived!') == 2 and 'Off we go...[0,0]' in c, c[-600:]
+assert k['front'] == 0 and k['side'] == 0 and k['rear'] == 0, k
+assert p['x_m'] < 0.18 and p['y_m'] < 0.18, p
+" && ok "mended: (7,7) and home to (0,0), no front or side contact" || bad "mended: $(tail -c 600 "$T/m1.json")"
+python3 test/mrc_check.py $M "$T/m1.json" >"$T/chk" && ok "mended: $(tail -1 "$T/chk")" || bad "mended walls: $(cat "$T/chk")"
+want_rc 0 "mended image: the same run again" run $B/clients/mazerunner-core-uk-mended.elf --input "$HANDS; 75 send=W; 78 end"
+python3 -c "
+import json,sys
+a, b = (json.loads(open(f).read().splitlines()[-1]) for f in sys.argv[1:3])
+for d in (a, b):
+    for k in ('wall_time_s', 'real_time_factor'): d.pop(k)
+sys.exit(a != b)" "$T/m1.json" "$T/out" && ok "the same console and JSON on a second run" || bad "second run differs"
+[ $fails -eq 0 ]
