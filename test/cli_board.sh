@@ -56,7 +56,7 @@ for f in pwm pin twice missing vcc unknown; do
 done
 want_rc 2 "unknown board name" run $SK/MotorPwm.elf "$T/open.txt" --board nosuchboard --time-limit 1
 want_rc 2 "--board without --avr" "$MMSIM" --maze "$T/open.txt" --board ukmarsbot --time-limit 1
-want_rc 2 "--send without --board" "$MMSIM" --maze "$T/open.txt" --send "B@1" --time-limit 1
+want_rc 2 "--input send= without --board" "$MMSIM" --maze "$T/open.txt" --input "1 send=B" --time-limit 1
 printf 'int main(void) { for (;;) {} }\n' >"$T/m.c"
 if avr-gcc -mmcu=atmega2560 -Os "$T/m.c" -o "$T/mega.elf" 2>/dev/null; then
   want_rc 2 "an image for the ATmega2560" run "$T/mega.elf" "$T/open.txt" --time-limit 1
@@ -139,7 +139,7 @@ if [ ! -f "$MRC_DIR/mazerunner-core/mazerunner-core.ino" ] && [ ! -f "$MRC_DIR/m
 fi
 [ -s "$MRC" ] || mk client-mazerunner >/dev/null 2>&1
 for m in open east; do
-  want_rc 1 "mazerunner-core-uk on the board ($m maze): B and S" run "$MRC" "$T/$m.txt" --time-limit 2 --send "B@0.5" --send "S@1.0"
+  want_rc 1 "mazerunner-core-uk on the board ($m maze): B and S" run "$MRC" "$T/$m.txt" --time-limit 2 --input "0.5 send=B; 1.0 send=S"
   cp "$T/out" "$T/mrc-$m.json"
 done
 js "$T/mrc-open.json" "
@@ -150,7 +150,7 @@ v = float(bl.split()[1]); sim = j['board']['battery_v']
 assert abs(v - sim) <= 0.02 * sim, (v, sim)
 print('battery %.2f V, simulated %.3f V' % (v, sim))
 " >"$T/b.txt" 2>&1 && ok "mazerunner-core: MAZERUNNER-CORE, RDY; B within 2 % ($(cat "$T/b.txt"))" || bad "mazerunner-core B: $(tail -3 "$T/b.txt")"
-want_rc 1 "the .hex image runs too" run "${MRC%.elf}.hex" "$T/open.txt" --time-limit 1 --send "?@0.5"
+want_rc 1 "the .hex image runs too" run "${MRC%.elf}.hex" "$T/open.txt" --time-limit 1 --input "0.5 send=?"
 js "$T/out" "c = j['console'].replace('\\r', ''); assert 'MAZERUNNER-CORE' in c and '?   : this text' in c, c[:300]" 2>"$T/h.txt" \
   && ok "  ... its banner and its help for '?'" || bad "  .hex: $(tail -1 "$T/h.txt")"
 sline() { js "$1" "print([x for x in j['console'].replace('\r', '').split('\n') if x.startswith('|')][0])"; }
@@ -160,7 +160,7 @@ import sys
 a = [int(x) for x in sys.argv[1].replace('|', ' ').split()[:4]]; b = [int(x) for x in sys.argv[2].replace('|', ' ').split()[:4]]
 assert b[2] > a[2] + 30 and abs(b[1] - a[1]) < 10, (a, b)   # lfs lss rss rfs: rss sees the east wall
 " "$so" "$se" 2>"$T/s.txt" && ok "mazerunner-core S: rss rises with a wall on the right ('$so' -> '$se')" || bad "S: $so / $se: $(tail -1 "$T/s.txt")"
-run "$MRC" "$T/east.txt" --time-limit 2 --send "B@0.5" --send "S@1.0" >"$T/again.json" 2>/dev/null
+run "$MRC" "$T/east.txt" --time-limit 2 --input "0.5 send=B; 1.0 send=S" >"$T/again.json" 2>/dev/null
 [ "$(strip "$T/mrc-east.json")" = "$(strip "$T/again.json")" ] && ok "the same console and JSON on a second run" || bad "a second run differs"
 # speed: mazerunner-core idle (its systick, ADC sequence and prompt), 20 simulated s
 run "$MRC" "$T/open.txt" --time-limit 20 >"$T/idle.json" 2>/dev/null

@@ -45,9 +45,10 @@ static void usage(FILE *out)
           "             motors off after N ms without a message: framed 100 by default, compat never; 0 never)\n"
           "       mmsim --maze FILE --avr ELF [--mcu NAME] [--f-cpu HZ] [--baud N] [--protocol P] [--silence-ms N]\n"
           "             (processor in the loop: the AVR image runs in simavr, in lockstep)\n"
-          "       mmsim --maze FILE --board NAME|FILE --avr FIRMWARE.elf|.hex [--robot FILE] [--send TEXT@T ...]\n"
-          "             (the image on an emulated board, boards/NAME-*.ini: pins, PWM, encoders, ADC, UART; --verbose\n"
-          "             echoes its console; --send types TEXT and a newline at sim time T)\n"
+          "       mmsim --maze FILE --board NAME|FILE --avr FIRMWARE.elf|.hex [--robot FILE] [--input \"T ACTION; ...\"]\n"
+          "             [--goal X,Y]   (the image on an emulated board, boards/NAME-*.ini: pins, PWM, encoders, ADC,\n"
+          "             UART; --verbose echoes its console; --input: a person's hands, T in sim seconds: switches=N,\n"
+          "             button, button=down|up, reset, occlude=left|right, send=TEXT, end)\n"
           "       mmsim --maze FILE --mms COMMAND [--mms-ideal-walls] [--mms-timeout-ms N] [--mms-reset-at S|idle]\n"
           "             (an mms algorithm drives the robot through the mms text API, docs/MMS.md)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
@@ -195,21 +196,6 @@ static int f_mms_reset_at(const char *prog, void *o, const char *arg)
     return 0;
 }
 
-/* --send TEXT@T: TEXT (and a newline) typed on the board's UART0 at sim time T, s */
-static int f_send(const char *prog, void *o, const char *arg)
-{
-    run_opts_t *r = run_of(o);
-    const char *at = strrchr(arg, '@');
-    char *end;
-    double t = at ? strtod(at + 1, &end) : -1;
-    if (!at || at == arg || !at[1] || *end || !(t >= 0 && t <= 86400) || (size_t)(at - arg) >= sizeof r->sends[0].text)
-        return bad("--send: expected TEXT@SECONDS (TEXT 1-199 bytes, seconds of simulation time 0-86400), got '%s'", arg);
-    if (r->nsends >= RUN_SENDS_MAX) return bad("--send: at most 16, got another: '%s'", arg);
-    if (r->nsends > 0 && t < r->sends[r->nsends - 1].t_s) return bad("--send: give them in time order: '%s'", arg);
-    snprintf(r->sends[r->nsends].text, sizeof r->sends[0].text, "%.*s", (int)(at - arg), arg);
-    r->sends[r->nsends++].t_s = t;
-    return 0;
-}
 
 static const cli_opt_t flags[] = {
     { .name = "maze", .kind = CLI_STR, .off = offsetof(mmsim_opts_t, maze) },
@@ -251,7 +237,6 @@ static const cli_opt_t flags[] = {
     { .name = "avr", .kind = CLI_STR, .off = RUN(avr_elf) },
     { .name = "mcu", .kind = CLI_STR, .off = RUN(avr_mcu) },
     { .name = "board", .kind = CLI_STR, .off = RUN(board) },
-    { .name = "send", .kind = CLI_FN, .fn = f_send, .has_arg = 1 },
     { .name = "f-cpu", .kind = CLI_FN, .fn = f_f_cpu, .has_arg = 1 },
     { .name = "mms", .kind = CLI_FN, .fn = f_mms, .has_arg = 1 },
     { .name = "mms-ideal-walls", .kind = CLI_SET, .off = RUN(mms.ideal_walls) },
@@ -270,7 +255,6 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (o->board && !o->avr_elf) return bad("%s", "--board NAME needs --avr FIRMWARE.elf|.hex");
     if (o->board && (o->link.device || o->link.pty || link_flags || o->avr_mcu || o->avr_f_cpu || m->batch || o->mms.command))
         return bad("%s", "--board: the image runs on the board file's MCU: not with --serial/--pty, --protocol, --silence-ms, --mcu, --f-cpu, --mms or --batch");
-    if (o->nsends && !o->board) return bad("%s", "--send TEXT@T needs --board NAME");
     o->serial = o->link.device || o->link.pty || (o->avr_elf && !o->board);
     if (!!o->link.device + o->link.pty + !!o->avr_elf > 1) return bad("%s", "--serial/--port, --pty and --avr exclude each other");
     if (!o->serial && link_flags) return bad("%s", "--protocol and --silence-ms need --serial DEV, --pty or --avr ELF");

@@ -25,12 +25,6 @@ enum { RUN_OK = 0, RUN_NOT_REACHED = 1, RUN_BAD_INPUT = 2, RUN_EXTERNAL = 3 };
 
 #define RUN_STALL_S 5.0 /* no progress for this long while driving = crash stop, s */
 
-#define RUN_SENDS_MAX 16
-typedef struct {
-    double t_s;
-    char text[200];
-} run_send_t;
-
 typedef struct {
     const char *config_path;
     const char *robot_path; /* --robot FILE (NULL: the paper's robot, built in) */
@@ -55,8 +49,6 @@ typedef struct {
     input_t input;                 /* --input "T ACTION; ...": a person's hands (input.h); input.n 0 = none */
     int goal_x, goal_y;            /* --goal X,Y: laps scored to this cell, not the maze's goal (-1: the maze's) */
     const char *board;             /* --board NAME|FILE: the image (--avr) on an emulated board (sim/board) */
-    int nsends;                    /* --send TEXT@T: typed on the board's UART0 at sim time T (a newline added) */
-    run_send_t sends[RUN_SENDS_MAX];
 } run_opts_t;
 
 /* The defaults, then --config's file, --robot's file, then the flags that

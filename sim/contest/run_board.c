@@ -1,8 +1,8 @@
 /* run_board.c - an AVR image on an emulated board (--board NAME --avr
  * FIRMWARE.elf|.hex, sim/board): the board file's MCU in simavr, in
  * lockstep with the physics, its pins and ADC wired to the robot. The run
- * lasts the time limit (or until the AVR stops); --send types text on its
- * UART0 at a given time; the JSON gets "board" (what its parts saw) and
+ * lasts the time limit (or until the AVR stops); --input's hands act on
+ * its switches, button, reset and console; the JSON gets "board" (what its parts saw) and
  * "console" (everything the firmware printed). */
 #include "run_driver.h"
 
@@ -50,13 +50,9 @@ static int board_open_run(run_t *r)
 
 static const char *board_step_run(run_t *r)
 {
-    char err[400], line[sizeof r->o->sends[0].text + 2];
+    char err[400];
     const run_opts_t *o = r->o;
     sim_step(&r->sim);
-    while (r->send_next < o->nsends && sim_time_s(&r->sim) >= o->sends[r->send_next].t_s - 1e-9) {
-        snprintf(line, sizeof line, "%s\n", o->sends[r->send_next++].text);
-        if (board_send(r->board, line) != 0) fprintf(stderr, "mmsim: --send: the UART's input queue is full: '%s' dropped\n", o->sends[r->send_next - 1].text);
-    }
     if (board_step(r->board, err, sizeof err) != 0) {
         fprintf(stderr, "mmsim: %s: %s\n", o->avr_elf, err);
         return strstr(err, "auto-trigger") ? "board_unsupported" : "avr_stopped";

@@ -40,7 +40,6 @@ struct run_s {
     link_t lnk;
     pil_t pil;
     board_t *board;     /* --board */
-    int send_next;      /* the next --send */
     telem_t tel;
     int tel_on;
     report_t *rep;
