@@ -43,6 +43,17 @@ assert tail.endswith('ERR: no route to target') and '[ 6, 7,E]' in tail, tail
   || bad "EVENT_UK search: $(tail -c 600 "$T/uk.json")"
 python3 test/mrc_check.py $M "$T/uk.json" >"$T/chk" && ok "EVENT_UK: $(tail -1 "$T/chk")" || bad "walls: $(cat "$T/chk")"
 
+# the image as shipped (EVENT_HOME: its goal is cell 1,0): --goal scores laps there
+want_rc 0 "as shipped: search to its own goal (--goal 1,0)" run $B/clients/mazerunner-core.elf --goal 1,0 --input "$HANDS; 30 end"
+cp "$T/out" "$T/home.json"
+js "$T/home.json" "
+c = j['console']; k = j['contacts']
+assert 'Off we go...[1,0]' in c and j['reached_goal'], (c[-300:], j['laps'])
+assert k['front'] == 0 and k['side'] == 0 and k['rear'] == 0, k
+assert c.replace('\r', '').rstrip().endswith('ERR: no route to target'), c[-200:]
+" && ok "as shipped: reaches its goal (1,0), no front or side contact, then the same ERR" || bad "home image: $(tail -c 400 "$T/home.json")"
+python3 test/mrc_check.py $M "$T/home.json" >"$T/chk" && ok "as shipped: $(tail -1 "$T/chk")" || bad "home walls: $(cat "$T/chk")"
+
 # the mended copy: there and back, then its map
 want_rc 0 "mended image: there and back" run $B/clients/mazerunner-core-uk-mended.elf --input "$HANDS; 75 send=W; 78 end"
 cp "$T/out" "$T/m1.json"
