@@ -71,4 +71,11 @@ a, b = (json.loads(open(f).read().splitlines()[-1]) for f in sys.argv[1:3])
 for d in (a, b):
     for k in ('wall_time_s', 'real_time_factor'): d.pop(k)
 sys.exit(a != b)" "$T/m1.json" "$T/out" && ok "the same console and JSON on a second run" || bad "second run differs"
+# a person at a serial monitor: --console pty (real time), B typed after the banner
+MRC_UK=$B/clients/mazerunner-core-uk.elf
+python3 test/board_console.py "$MMSIM" --board ukmarsbot --avr $MRC_UK --robot robots/ukmarsbot.ini --maze $M \
+    --console pty --time-limit 3 --json >"$T/pty" 2>&1 && ok "--console pty: the banner, then B answered on the pty" \
+    || bad "--console pty: $(tail -5 "$T/pty")"
+want_rc 2 "--console pty without --board" "$MMSIM" --maze $M --console pty
+want_rc 2 "--console other than pty" "$MMSIM" --maze $M --board ukmarsbot --avr $MRC_UK --console tcp
 [ $fails -eq 0 ]

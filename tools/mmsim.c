@@ -77,6 +77,13 @@ static int f_input(const char *prog, void *o, const char *arg)
     return 0;
 }
 
+static int f_console(const char *prog, void *o, const char *arg)
+{
+    if (strcmp(arg, "pty") != 0) return bad("--console: expected pty, got '%s'", arg);
+    run_of(o)->console_pty = 1;
+    return 0;
+}
+
 static int f_goal(const char *prog, void *o, const char *arg)
 {
     int x, y, n = 0;
@@ -206,6 +213,7 @@ static const cli_opt_t flags[] = {
     { .name = "robot", .kind = CLI_STR, .off = RUN(robot_path) },
     { .name = "input", .kind = CLI_FN, .fn = f_input, .has_arg = 1 },
     { .name = "goal", .kind = CLI_FN, .fn = f_goal, .has_arg = 1 },
+    { .name = "console", .kind = CLI_FN, .fn = f_console, .has_arg = 1 },
     { .name = "print-robot", .kind = CLI_SET, .off = RUN(print_robot) },
     { .name = "seed", .kind = CLI_FN, .fn = f_seed, .has_arg = 1 },
     { .name = "time-limit", .kind = CLI_NUM, .off = RUN(time_limit_s), .lo = 1, .hi = 86400 },
@@ -268,6 +276,8 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (o->serial && m->batch) return bad("%s", "--serial/--pty/--avr run one maze, not --batch");
     if (o->serial && !o->avr_elf) o->realtime = 1; /* a real MCU runs in real time; simavr in lockstep */
     if (m->batch && m->maze) return bad("%s", "--maze and --batch: one at a time (a batch runs every maze in DIR)");
+    if (o->console_pty && !o->board) return bad("%s", "--console pty needs --board NAME");
+    if (o->console_pty) o->realtime = 1; /* a person at a serial monitor: in real time */
     if (o->print_config || o->print_robot || m->validate) return 0;
     if (m->batch && (o->telem.url || o->telem.log_path)) return bad("%s", "--lcm and --lcm-log work on one maze, not with --batch");
     if (m->batch && (o->report || o->gui || o->shot)) return bad("%s", "--report, --gui and --screenshot need --maze (one run), not --batch");

@@ -49,6 +49,7 @@ typedef struct {
     input_t input;                 /* --input "T ACTION; ...": a person's hands (input.h); input.n 0 = none */
     int goal_x, goal_y;            /* --goal X,Y: laps scored to this cell, not the maze's goal (-1: the maze's) */
     const char *board;             /* --board NAME|FILE: the image (--avr) on an emulated board (sim/board) */
+    int console_pty;               /* --console pty: the board's UART0 on a pseudo-terminal (a person's serial monitor) */
 } run_opts_t;
 
 /* The defaults, then --config's file, --robot's file, then the flags that

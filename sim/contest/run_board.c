@@ -10,6 +10,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
+
+#include "link/serial.h"
 
 /* --input's actions on the board: the switches, the button, the reset
  * button and the console (a newline after the text, as a serial monitor
@@ -30,6 +33,42 @@ static void board_hands(run_t *r, const input_action_t *a)
     }
 }
 
+/* --console pty: the UART on a pseudo-terminal whose path goes to
+ * stderr; 0, or RUN_EXTERNAL after a line. */
+static int console_open(run_t *r)
+{
+    char path[256], err[300];
+    r->console_fd = -1;
+    r->console_sent = 0;
+    if (!r->o->console_pty) return 0;
+    r->console_fd = serial_open_pty(path, sizeof path, err, sizeof err);
+    if (r->console_fd < 0) {
+        fprintf(stderr, "mmsim: --console pty: %s\n", err);
+        return RUN_EXTERNAL;
+    }
+    fprintf(stderr, "mmsim: the board's console (UART0) is on %s\n", path);
+    return 0;
+}
+
+/* What the person typed to the board, what the firmware printed to the person. */
+static void console_pump(run_t *r)
+{
+    char in[64];
+    size_t len;
+    if (r->console_fd < 0) return;
+    ssize_t n = read(r->console_fd, in, sizeof in - 1);
+    if (n > 0) {
+        in[n] = '\0';
+        board_send(r->board, in);
+    }
+    const char *out = board_console(r->board, &len);
+    while (r->console_sent < len) {
+        ssize_t w = write(r->console_fd, out + r->console_sent, len - r->console_sent);
+        if (w <= 0) break; /* nobody reading yet (or a full buffer): the rest next time */
+        r->console_sent += (size_t)w;
+    }
+}
+
 static int board_open_run(run_t *r)
 {
     char path[512], err[600];
@@ -45,7 +84,7 @@ static int board_open_run(run_t *r)
     }
     if (r->o->verbose) board_set_echo(r->board, stderr);
     r->hands = board_hands;
-    return 0;
+    return console_open(r);
 }
 
 static const char *board_step_run(run_t *r)
@@ -53,6 +92,7 @@ static const char *board_step_run(run_t *r)
     char err[400];
     const run_opts_t *o = r->o;
     sim_step(&r->sim);
+    if (r->sim.step % 10 == 0) console_pump(r); /* every 10 ms */
     if (board_step(r->board, err, sizeof err) != 0) {
         fprintf(stderr, "mmsim: %s: %s\n", o->avr_elf, err);
         return strstr(err, "auto-trigger") ? "board_unsupported" : "avr_stopped";
@@ -110,9 +150,20 @@ static void board_results(run_t *r, json_t *j)
     json_object_set_new(j, "console", cj ? cj : json_null());
 }
 
-static void board_stop(run_t *r) { board_close(r->board); }
+static void board_stop(run_t *r)
+{
+    console_pump(r); /* the last words */
+    if (r->console_fd >= 0) close(r->console_fd);
+    r->console_fd = -1;
+    board_close(r->board);
+}
 
-static void board_undo(run_t *r) { board_close(r->board); }
+static void board_undo(run_t *r)
+{
+    if (r->console_fd >= 0) close(r->console_fd);
+    r->console_fd = -1;
+    board_close(r->board);
+}
 
 static void board_headline(const run_t *r)
 {

@@ -49,6 +49,8 @@ struct run_s {
     const char *reason; /* the JSON's exit_reason */
     double t0;          /* wall clock at the start, s */
     input_t input;      /* --input's actions, consumed as they fall due */
+    int console_fd;     /* --console pty: the pty's master, -1 none */
+    size_t console_sent; /* console bytes written to it so far */
     /* the board's side of a hand's action (switches, button, reset, send); NULL: no board */
     void (*hands)(run_t *r, const input_action_t *a);
 };
