@@ -18,21 +18,9 @@
 #include <simavr/sim_io.h>
 #include <simavr/sim_irq.h>
 
+#include "avrlog.h"
 #include "io/infile.h"
 
-static char last_log[200]; /* simavr's last error message, for ours */
-
-static void quiet_logger(avr_t *avr, const int level, const char *fmt, va_list ap)
-{
-    (void)avr;
-    if (level > LOG_ERROR) return;
-    vsnprintf(last_log, sizeof last_log, fmt, ap);
-    size_t n = strlen(last_log);
-    while (n > 0 && (last_log[n - 1] == '\n' || last_log[n - 1] == '\r')) last_log[--n] = '\0';
-}
-
-/* A sleeping AVR must not sleep the host: time is cycles, not wall clock. */
-static void no_sleep(avr_t *avr, avr_cycle_count_t how_long) { (void)avr, (void)how_long; }
 
 avr_irq_t *board_pin_irq(board_t *b, board_pin_t p) { return avr_io_getirq(b->avr, AVR_IOCTL_IOPORT_GETIRQ(p.port), p.bit); }
 
@@ -84,9 +72,9 @@ static int load_image(board_t *b, const char *image, char *err, size_t errn)
                         arch, b->spec.name, b->spec.mcu, want), -1;
     static elf_firmware_t fw; /* large: keep it off the stack */
     memset(&fw, 0, sizeof fw);
-    last_log[0] = '\0';
+    avrlog_clear();
     if (elf_read_firmware(image, &fw) != 0 || fw.flashsize == 0)
-        return snprintf(err, errn, "%s: not an AVR ELF image%s%s", image, last_log[0] ? ": " : "", last_log), -1;
+        return snprintf(err, errn, "%s: not an AVR ELF image%s%s", image, avrlog_sep(), avrlog_last()), -1;
     if (fw.mmcu[0] && strcmp(fw.mmcu, b->spec.mcu))
         return snprintf(err, errn, "%s: built for the %s; the board %s has an %s", image, fw.mmcu, b->spec.name, b->spec.mcu), -1;
     if (fw.flashsize > b->avr->flashend + 1u)
@@ -115,7 +103,7 @@ board_t *board_open(const board_spec_t *spec, const char *image, sim_t *s, char 
     if (!b) return snprintf(err, errn, "out of memory"), NULL;
     b->spec = *spec;
     b->sim = s;
-    avr_global_logger_set(quiet_logger);
+    avrlog_install();
     b->avr = avr_make_mcu_by_name(spec->mcu);
     if (!b->avr) return snprintf(err, errn, "%s: simavr does not know the MCU '%s'", spec->path, spec->mcu), open_fail(b);
     avr_init(b->avr);
@@ -123,7 +111,7 @@ board_t *board_open(const board_spec_t *spec, const char *image, sim_t *s, char 
     if (load_image(b, image, err, errn) != 0) return open_fail(b);
     b->avr->frequency = spec->f_cpu;
     b->avr->vcc = b->avr->avcc = b->avr->aref = (uint32_t)lround(spec->vcc_v * 1000.0);
-    b->avr->sleep = no_sleep;
+    b->avr->sleep = avrlog_no_sleep;
     if (board_console_init(b, err, errn) != 0 || board_adc_init(b, err, errn) != 0) return open_fail(b);
     board_encoder_init(b);
     for (int m = 0; m < 2; m++) b->st.duty_min[m] = b->st.duty_max[m] = 0.0;
@@ -139,7 +127,7 @@ static int run_to(board_t *b, uint64_t until, char *err, size_t errn)
         int state = avr_run(b->avr);
         if (state == cpu_Done || state == cpu_Crashed)
             return snprintf(err, errn, "AVR %s at cycle %llu%s%s", state == cpu_Crashed ? "crashed" : "halted",
-                            (unsigned long long)b->avr->cycle, last_log[0] ? ": " : "", last_log), -1;
+                            (unsigned long long)b->avr->cycle, avrlog_sep(), avrlog_last()), -1;
     }
     return 0;
 }

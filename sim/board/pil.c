@@ -16,21 +16,9 @@
 #include <simavr/sim_io.h>
 #include <simavr/sim_irq.h>
 
+#include "avrlog.h"
 #include "io/infile.h"
 
-static char last_log[200]; /* simavr's last error message, for ours */
-
-static void quiet_logger(avr_t *avr, const int level, const char *fmt, va_list ap)
-{
-    (void)avr;
-    if (level > LOG_ERROR) return;
-    vsnprintf(last_log, sizeof last_log, fmt, ap);
-    size_t n = strlen(last_log);
-    while (n > 0 && (last_log[n - 1] == '\n' || last_log[n - 1] == '\r')) last_log[--n] = '\0';
-}
-
-/* A sleeping AVR must not sleep the host: time is cycles, not wall clock. */
-static void no_sleep(avr_t *avr, avr_cycle_count_t how_long) { (void)avr; (void)how_long; }
 
 static void feed(pil_t *p)
 {
@@ -73,7 +61,7 @@ int pil_open(pil_t *p, const char *elf, const char *mcu, uint32_t f_cpu, double 
 {
     memset(p, 0, sizeof *p);
     p->fd = -1;
-    avr_global_logger_set(quiet_logger);
+    avrlog_install();
     if (access(elf, R_OK) != 0) {
         snprintf(err, errn, "%s: cannot read: %s", elf, strerror(errno));
         return -1;
@@ -89,9 +77,9 @@ int pil_open(pil_t *p, const char *elf, const char *mcu, uint32_t f_cpu, double 
     }
     static elf_firmware_t fw; /* large: keep it off the stack */
     memset(&fw, 0, sizeof fw);
-    last_log[0] = '\0';
+    avrlog_clear();
     if (elf_read_firmware(elf, &fw) != 0 || fw.flashsize == 0) {
-        snprintf(err, errn, "%s: not an AVR ELF image%s%s", elf, last_log[0] ? ": " : "", last_log);
+        snprintf(err, errn, "%s: not an AVR ELF image%s%s", elf, avrlog_sep(), avrlog_last());
         return -1;
     }
     snprintf(p->mcu, sizeof p->mcu, "%s", mcu ? mcu : fw.mmcu[0] ? fw.mmcu : "atmega328p");
@@ -107,7 +95,7 @@ int pil_open(pil_t *p, const char *elf, const char *mcu, uint32_t f_cpu, double 
     fw.frequency = p->f_cpu;
     avr_load_firmware(p->avr, &fw);
     p->avr->frequency = p->f_cpu;
-    p->avr->sleep = no_sleep;
+    p->avr->sleep = avrlog_no_sleep;
     for (uint32_t a = p->avr->ioend + 1u; a <= p->avr->ramend; a++) p->avr->data[a] = PIL_PAINT; /* for pil_stack */
 
     uint32_t flags = 0; /* simavr would print UART lines itself, and usleep while the AVR polls the UART */
@@ -162,7 +150,7 @@ int pil_step(pil_t *p, char *err, size_t errn)
         int state = avr_run(p->avr);
         if (state == cpu_Done || state == cpu_Crashed) {
             snprintf(err, errn, "AVR %s at cycle %llu%s%s", state == cpu_Crashed ? "crashed" : "halted",
-                     (unsigned long long)p->avr->cycle, last_log[0] ? ": " : "", last_log);
+                     (unsigned long long)p->avr->cycle, avrlog_sep(), avrlog_last());
             return -1;
         }
     }
