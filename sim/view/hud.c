@@ -121,7 +121,7 @@ int hud_hit(int W, int H, double x, double y)
 static const char *const board_labels[HUD_BOARD_COUNT] = { "1", "2", "4", "8", "Button", "Reset" };
 
 #define TIMERS_BOTTOM (3 * FONT_LINE * HUD_TEXT_SCALE + 2 * PAD) /* below the timers' box */
-#define CONSOLE_COLS_MAX 48
+#define CONSOLE_COLS_MAX 40
 
 void hud_board_layout(int W, int H, hud_board_layout_t *o)
 {
@@ -162,6 +162,7 @@ int hud_board_hit(int W, int H, double x, double y)
 }
 
 #define ROWS_MAX (2 * HUD_CONSOLE_LINES)
+#define LINE_BACK_MAX 16384 /* bytes looked back for the start of the first line */
 
 int hud_console_rows(const char *c, size_t n, int cols, int rows, char out[][129])
 {
@@ -170,6 +171,7 @@ int hud_console_rows(const char *c, size_t n, int cols, int rows, char out[][129
     if (cols < 1 || rows < 1 || !c) return 0;
     /* enough of the tail for `rows` rows: each takes at most cols characters and a CR LF */
     size_t want = (size_t)rows * (size_t)(cols + 2) + 2, i = n > want ? n - want : 0;
+    for (size_t back = 0; i > 0 && c[i - 1] != '\n' && back < LINE_BACK_MAX; back++) i--; /* from a line's start: wraps as drawn */
     int filled = 0, cur = 0, len = 0; /* rows started, the current one (ring index), its length */
     for (; i < n; i++) {
         char ch = c[i];
@@ -269,7 +271,7 @@ static void draw_board(const hud_board_t *bd, int W, int H)
     if (l.rows < 1) return;
     char rows[HUD_CONSOLE_LINES][129];
     int k = l.console_scale, nr = hud_console_rows(bd->console, bd->console_len, l.cols, l.rows, rows);
-    rect(l.console.x, l.console.y, l.console.w, l.console.h, 0x000000u, 0.7f);
+    rect(l.console.x, l.console.y, l.console.w, (nr > 0 ? nr : 1) * FONT_LINE * k + PAD, 0x000000u, 0.6f); /* as tall as the text */
     for (int r = 0; r < nr; r++) text_k(l.console.x + PAD / 2, l.console.y + PAD / 2 + r * FONT_LINE * k, HUD_CONSOLE_TEXT, rows[r], k);
 }
 

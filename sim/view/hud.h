@@ -52,7 +52,7 @@ enum { HUD_BOARD_SW0, HUD_BOARD_SW1, HUD_BOARD_SW2, HUD_BOARD_SW3, HUD_BOARD_BUT
 typedef struct {
     hud_button_t ctl[HUD_BOARD_COUNT];
     hud_button_t leds;    /* the LED row */
-    hud_button_t console; /* the console panel */
+    hud_button_t console; /* the console panel at its tallest (drawn as tall as its text) */
     int console_scale;    /* screen pixels per font pixel there */
     int cols, rows;       /* console text that fits */
 } hud_board_layout_t;

@@ -240,6 +240,7 @@ void view_set_board(view_t *v, view_board_fill_t *fill, void *ctx)
 
 int view_click(view_t *v, sim_t *s, double x, double y)
 {
+    if (s) v->sim = s;
     if (v->rp && hud_slider_hit(v->o.width, v->o.height, x, y)) {
         v->rp_drag = 1;
         view_seek(v, hud_slider_time(v->o.width, v->o.height, x, replay_end_s(v->rp)));
