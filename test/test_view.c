@@ -2,7 +2,8 @@
  * post" button adds and removes the centre post in the physics world (a
  * ray across the centre hits it or not), camera keys and buttons, speed
  * limits, pause and single step; the HUD timers turn over-time after the
- * limit; the port and baud fields and Connect. */
+ * limit; the port and baud fields and Connect; a board's panel (switches,
+ * Button, Reset as requests; the console's last rows). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -11,6 +12,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <math.h>
+#include <string.h>
 
 #include "world/config.h"
 #include "view/hud.h"
@@ -247,6 +249,101 @@ static void test_mms_reset_button(void **state)
     view_set_mms(view, NULL, NULL, 0, NULL);
 }
 
+static int fills;
+static void fill_board(void *ctx, view_board_t *out)
+{
+    (void)ctx;
+    memset(out, 0, sizeof *out);
+    fills++;
+}
+
+static void click_board(int c)
+{
+    hud_board_layout_t l;
+    hud_board_layout(opts.width, opts.height, &l);
+    assert_int_equal(view_click(view, &sim, l.ctl[c].x + l.ctl[c].w / 2.0, l.ctl[c].y + l.ctl[c].h / 2.0), VIEW_BOARD + c);
+}
+
+static void want_hand(view_hand_kind_t kind, unsigned switches)
+{
+    view_hand_t h;
+    assert_int_equal(view_hands_request(view, &h), 1);
+    assert_int_equal(h.kind, kind);
+    if (kind == VIEW_HAND_SWITCHES) assert_int_equal(h.switches, switches);
+}
+
+/* A board's panel: switch k toggles bit k (two clicks before the run takes
+ * them add up), Button is down while held and at least 0.1 s of simulation
+ * time, Reset; without a board the panel takes no clicks */
+static void test_board_panel(void **state)
+{
+    (void)state;
+    view_hand_t h;
+    hud_board_layout_t l;
+    hud_board_layout(opts.width, opts.height, &l);
+    /* where test/cli_view_board.sh clicks in an 800x600 window */
+    assert_int_equal(l.ctl[HUD_BOARD_SW0].x, 8), assert_int_equal(l.ctl[HUD_BOARD_SW0].y, 76);
+    assert_int_equal(l.ctl[HUD_BOARD_SW0].w, 28), assert_int_equal(l.ctl[HUD_BOARD_BUTTON].x, 140);
+    assert_int_equal(l.rows, HUD_CONSOLE_LINES);
+    for (int i = 0; i < HUD_BOARD_COUNT; i++) /* clear of the HUD's buttons and fields */
+        assert_int_equal(hud_hit(opts.width, opts.height, l.ctl[i].x + 1, l.ctl[i].y + 1), -1),
+        assert_int_equal(hud_field_hit(opts.width, opts.height, l.ctl[i].x + 1, l.ctl[i].y + 1), -1);
+    assert_int_equal(view_click(view, &sim, l.ctl[0].x + 5, l.ctl[0].y + 5), -1); /* no board: the scene */
+    view_release(view);
+    assert_int_equal(view_hands_request(view, &h), 0);
+    view_set_board(view, fill_board, NULL);
+    click_board(HUD_BOARD_SW1);
+    click_board(HUD_BOARD_SW0);
+    click_board(HUD_BOARD_SW1);
+    want_hand(VIEW_HAND_SWITCHES, 2);
+    want_hand(VIEW_HAND_SWITCHES, 3);
+    want_hand(VIEW_HAND_SWITCHES, 1);
+    click_board(HUD_BOARD_RESET);
+    want_hand(VIEW_HAND_RESET, 0);
+    assert_int_equal(view_hands_request(view, &h), 0);
+    /* a click: down now, up 0.1 s later */
+    double t0 = sim_time_s(&sim);
+    click_board(HUD_BOARD_BUTTON);
+    view_release(view);
+    want_hand(VIEW_HAND_BUTTON_DOWN, 0);
+    while (sim_time_s(&sim) < t0 + 0.099) {
+        assert_int_equal(view_hands_request(view, &h), 0);
+        sim_step(&sim);
+    }
+    while (sim_time_s(&sim) < t0 + 0.1 - 1e-9) sim_step(&sim);
+    want_hand(VIEW_HAND_BUTTON_UP, 0);
+    /* held: up when released */
+    click_board(HUD_BOARD_BUTTON);
+    want_hand(VIEW_HAND_BUTTON_DOWN, 0);
+    for (int i = 0; i < 300; i++) sim_step(&sim);
+    assert_int_equal(view_hands_request(view, &h), 0);
+    view_release(view);
+    want_hand(VIEW_HAND_BUTTON_UP, 0);
+    assert_int_equal(fills, 0); /* no window, no frame: the board is never read */
+    view_set_board(view, NULL, NULL);
+}
+
+/* the console's last rows: CRs dropped, long lines wrapped, odd bytes as '?' */
+static void test_console_rows(void **state)
+{
+    (void)state;
+    char rows[HUD_CONSOLE_LINES][129];
+    const char *c = "one\r\ntwo\r\nthree-long\r\n";
+    assert_int_equal(hud_console_rows(c, strlen(c), 5, 3, rows), 3);
+    assert_string_equal(rows[0], "two"), assert_string_equal(rows[1], "three"), assert_string_equal(rows[2], "-long");
+    c = "a\tb\x01\nlast";
+    assert_int_equal(hud_console_rows(c, strlen(c), 10, 12, rows), 2);
+    assert_string_equal(rows[0], "a b?"), assert_string_equal(rows[1], "last");
+    assert_int_equal(hud_console_rows("", 0, 10, 12, rows), 0);
+    assert_int_equal(hud_console_rows("\n\n", 2, 10, 12, rows), 2); /* two empty lines */
+    assert_string_equal(rows[0], ""), assert_string_equal(rows[1], "");
+    static char big[10000]; /* one long line */
+    memset(big, 'x', sizeof big - 1);
+    big[sizeof big - 2] = 'y';
+    assert_int_equal(hud_console_rows(big, strlen(big), 40, 12, rows), 12);
+    assert_int_equal((int)strlen(rows[11]), (int)((sizeof big - 1) % 40 ? (sizeof big - 1) % 40 : 40));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -257,6 +354,8 @@ int main(void)
         cmocka_unit_test(test_hud_timers),
         cmocka_unit_test(test_connect_fields),
         cmocka_unit_test(test_mms_reset_button),
+        cmocka_unit_test(test_board_panel),
+        cmocka_unit_test(test_console_rows),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -161,6 +161,18 @@ void board_close(board_t *b)
 void board_set_switches(board_t *b, unsigned n) { b->switches = n & 15u; }
 void board_button(board_t *b, int down) { b->button = down != 0; }
 
+void board_panel(const board_t *b, board_panel_t *out)
+{
+    memset(out, 0, sizeof *out);
+    out->switches = b->switches;
+    out->button = b->button;
+    out->nleds = b->spec.nleds;
+    for (int i = 0; i < b->spec.nleds && i < BOARD_LEDS_MAX; i++) {
+        out->led[i] = b->led_level[i];
+        out->led_name[i] = b->spec.led_name[i];
+    }
+}
+
 void board_reset(board_t *b)
 {
     /* a reset keeps SRAM (a .noinit variable survives; the C runtime clears .bss itself) */

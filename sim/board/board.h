@@ -116,6 +116,15 @@ void board_close(board_t *b);
 void board_set_switches(board_t *b, unsigned n); /* DIP switches 0..15 */
 void board_button(board_t *b, int down);
 void board_reset(board_t *b);                     /* the reset button: SRAM kept */
+/* What a person sees on the board and set on it now (the viewer's panel). */
+typedef struct {
+    unsigned switches;              /* 0..15 */
+    int button;                     /* 1: held down */
+    int nleds;
+    int led[BOARD_LEDS_MAX];        /* 1: lit (its pin high) */
+    const char *led_name[BOARD_LEDS_MAX]; /* the board file's [led.NAME] */
+} board_panel_t;
+void board_panel(const board_t *b, board_panel_t *out);
 /* Type text on UART0 (no newline added). 0, or -1 if the input queue is full. */
 int board_send(board_t *b, const char *text);
 

@@ -102,6 +102,7 @@ static int open_outputs(run_t *r)
     }
     snprintf(err, sizeof err, "out of memory");
     r->view = view_new(&vo);
+    if (r->view && r->panel) view_set_board(r->view, r->panel, r);
     if (r->view && o->mms.command)
         view_set_mms(r->view, r->mms.color, &r->mms.text[0][0], sizeof r->mms.text[0], &r->mms.was_reset);
     if (!r->view || view_open(r->view, o->gui, err, sizeof err) != 0) {
@@ -140,6 +141,19 @@ static const char *hands(run_t *r)
         else if (r->hands) r->hands(r, a);
     }
     return NULL;
+}
+
+/* The person's clicks on the HUD's board panel: the same path as --input's
+ * actions (r->hands), taking effect before the next step. */
+static void gui_hands(run_t *r)
+{
+    static const input_kind_t kinds[] = { [VIEW_HAND_SWITCHES] = INPUT_SWITCHES, [VIEW_HAND_BUTTON_DOWN] = INPUT_BUTTON_DOWN,
+                                          [VIEW_HAND_BUTTON_UP] = INPUT_BUTTON_UP, [VIEW_HAND_RESET] = INPUT_RESET };
+    view_hand_t h;
+    while (view_hands_request(r->view, &h)) {
+        input_action_t a = { sim_time_s(&r->sim), kinds[h.kind], (int)h.switches, "" };
+        if (r->hands) r->hands(r, &a);
+    }
 }
 
 /* The config, the maze, the world, the driver and the outputs: 0 or the exit code. */
@@ -201,6 +215,7 @@ static const char *after_step(run_t *r, watch_t *w)
     if (r->rep) report_step(r->rep, s);
     if (o->gui && view_step(r->view, s)) return "window_closed";
     if (o->gui && view_connect_request(r->view, &cport, &cbaud)) run_link_connect(r, cport, cbaud);
+    if (o->gui && r->panel) gui_hands(r);
     if (o->shot && sim_time_s(s) >= o->shot_at_s) return "screenshot";
     double t = sim_time_s(s), x, y, h;
     if (s->race.over_time && !s->race.in_run) return "time_limit";

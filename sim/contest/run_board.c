@@ -69,6 +69,24 @@ static void console_pump(run_t *r)
     }
 }
 
+/* The viewer's panel, just before it draws a frame (reads only: the run is
+ * the same with or without the viewer). */
+static void board_panel_fill(void *ctx, view_board_t *out)
+{
+    const run_t *r = ctx;
+    board_panel_t p;
+    board_panel(r->board, &p);
+    memset(out, 0, sizeof *out);
+    out->switches = p.switches;
+    out->button = p.button;
+    out->nleds = p.nleds < HUD_BOARD_LEDS ? p.nleds : HUD_BOARD_LEDS;
+    for (int i = 0; i < out->nleds; i++) {
+        out->led[i] = p.led[i];
+        out->led_name[i] = p.led_name[i];
+    }
+    out->console = board_console(r->board, &out->console_len);
+}
+
 static int board_open_run(run_t *r)
 {
     char path[512], err[600];
@@ -84,6 +102,7 @@ static int board_open_run(run_t *r)
     }
     if (r->o->verbose) board_set_echo(r->board, stderr);
     r->hands = board_hands;
+    r->panel = board_panel_fill;
     return console_open(r);
 }
 

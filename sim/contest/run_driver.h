@@ -53,6 +53,8 @@ struct run_s {
     size_t console_sent; /* console bytes written to it so far */
     /* the board's side of a hand's action (switches, button, reset, send); NULL: no board */
     void (*hands)(run_t *r, const input_action_t *a);
+    /* the board as the viewer's panel shows it (view_board_fill_t, ctx = the run); NULL: no board */
+    view_board_fill_t *panel;
 };
 
 extern const run_driver_t run_firmware, run_mms, run_scripted, run_serial, run_avr, run_board;

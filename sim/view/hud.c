@@ -116,6 +116,87 @@ int hud_hit(int W, int H, double x, double y)
     return -1;
 }
 
+/* ---- a board's panel, under the timers ---- */
+
+static const char *const board_labels[HUD_BOARD_COUNT] = { "1", "2", "4", "8", "Button", "Reset" };
+
+#define TIMERS_BOTTOM (3 * FONT_LINE * HUD_TEXT_SCALE + 2 * PAD) /* below the timers' box */
+#define CONSOLE_COLS_MAX 40
+
+void hud_board_layout(int W, int H, hud_board_layout_t *o)
+{
+    memset(o, 0, sizeof *o);
+    int x = PAD, y = TIMERS_BOTTOM;
+    for (int i = 0; i < HUD_BOARD_COUNT; i++) {
+        hud_button_t *c = &o->ctl[i];
+        c->label = board_labels[i];
+        c->x = x;
+        c->y = y;
+        c->w = btn_w(c->label);
+        c->h = BTN_H;
+        x += c->w + (i == HUD_BOARD_SW3 ? PAD : PAD / 2); /* a gap after the switches */
+    }
+    o->leds = (hud_button_t){ PAD, y + BTN_H + PAD / 2, x - PAD, FONT_LINE * HUD_TEXT_SCALE, "" };
+    /* the console: big text in a big window; rows down to the status line above the bottom row */
+    int k = W >= 800 && H >= 560 ? 2 : 1, cw = FONT_ADVANCE * k, lh = FONT_LINE * k;
+    int top = o->leds.y + o->leds.h + PAD / 2, bottom = H - PAD - BTN_H - FONT_LINE * HUD_TEXT_SCALE - 2 * PAD;
+    o->console_scale = k;
+    o->cols = (W - 4 * PAD) / cw;
+    if (o->cols > CONSOLE_COLS_MAX) o->cols = CONSOLE_COLS_MAX;
+    if (o->cols < 1) o->cols = 1;
+    o->rows = (bottom - top - PAD) / lh;
+    if (o->rows > HUD_CONSOLE_LINES) o->rows = HUD_CONSOLE_LINES;
+    if (o->rows < 0) o->rows = 0;
+    o->console = (hud_button_t){ PAD / 2, top, o->cols * cw + PAD, o->rows * lh + PAD, "" };
+}
+
+int hud_board_hit(int W, int H, double x, double y)
+{
+    hud_board_layout_t l;
+    hud_board_layout(W, H, &l);
+    for (int i = 0; i < HUD_BOARD_COUNT; i++) {
+        const hud_button_t *c = &l.ctl[i];
+        if (x >= c->x && x < c->x + c->w && y >= c->y && y < c->y + c->h) return i;
+    }
+    return -1;
+}
+
+#define ROWS_MAX (2 * HUD_CONSOLE_LINES)
+#define LINE_BACK_MAX 16384 /* bytes looked back for the start of the first line */
+
+int hud_console_rows(const char *c, size_t n, int cols, int rows, char out[][129])
+{
+    if (cols > 128) cols = 128;
+    if (rows > ROWS_MAX) rows = ROWS_MAX;
+    if (cols < 1 || rows < 1 || !c) return 0;
+    /* enough of the tail for `rows` rows: each takes at most cols characters and a CR LF */
+    size_t want = (size_t)rows * (size_t)(cols + 2) + 2, i = n > want ? n - want : 0;
+    for (size_t back = 0; i > 0 && c[i - 1] != '\n' && back < LINE_BACK_MAX; back++) i--; /* from a line's start: wraps as drawn */
+    int filled = 0, cur = 0, len = 0; /* rows started, the current one (ring index), its length */
+    for (; i < n; i++) {
+        char ch = c[i];
+        if (ch == '\r') continue;
+        if (!filled || (ch != '\n' && len == cols)) { /* a row starts: the first, or a wrap */
+            cur = filled++ % rows;
+            out[cur][len = 0] = '\0';
+        }
+        if (ch == '\n') {
+            if (i + 1 < n) { /* a newline at the very end starts no row */
+                cur = filled++ % rows;
+                out[cur][len = 0] = '\0';
+            }
+            continue;
+        }
+        out[cur][len++] = ch == '\t' ? ' ' : ch >= ' ' && ch <= '~' ? ch : '?';
+        out[cur][len] = '\0';
+    }
+    if (filled <= rows) return filled;
+    char tmp[ROWS_MAX][129]; /* the ring, oldest row first */
+    for (int r = 0; r < rows; r++) memcpy(tmp[r], out[(filled + r) % rows], sizeof tmp[0]);
+    memcpy(out, tmp, (size_t)rows * sizeof tmp[0]);
+    return rows;
+}
+
 static void mmss(double s, char out[16])
 {
     long ms = lround(s * 1000.0);
@@ -147,12 +228,11 @@ static void rect(int x, int y, int w, int h, uint32_t rgb, float a)
     glEnd();
 }
 
-static void text(int x, int y, uint32_t rgb, const char *s)
+static void text_k(int x, int y, uint32_t rgb, const char *s, int k)
 {
-    const int k = HUD_TEXT_SCALE;
     col(rgb, 1);
     glBegin(GL_QUADS);
-    for (; *s; s++, x += CHAR_PX)
+    for (; *s; s++, x += FONT_ADVANCE * k)
         for (int row = 0; row < FONT_H; row++) {
             int bits = font_row(*s, row);
             for (int c = 0; c < FONT_W; c++)
@@ -164,7 +244,36 @@ static void text(int x, int y, uint32_t rgb, const char *s)
     glEnd();
 }
 
+static void text(int x, int y, uint32_t rgb, const char *s) { text_k(x, y, rgb, s, HUD_TEXT_SCALE); }
+
 #define LINE (FONT_LINE * HUD_TEXT_SCALE)
+
+/* The board's switches, button, reset, LEDs and console (hud.h). */
+static void draw_board(const hud_board_t *bd, int W, int H)
+{
+    hud_board_layout_t l;
+    hud_board_layout(W, H, &l);
+    for (int i = 0; i < HUD_BOARD_COUNT; i++) {
+        const hud_button_t *c = &l.ctl[i];
+        int on = i <= HUD_BOARD_SW3 ? (bd->switches >> i) & 1u : i == HUD_BOARD_BUTTON && bd->button;
+        rect(c->x, c->y, c->w, c->h, on ? 0x3070D0u : 0x404040u, 0.85f);
+        text(c->x + PAD, c->y + (BTN_H - FONT_H * HUD_TEXT_SCALE) / 2, 0xFFFFFFu, c->label);
+    }
+    int x = l.leds.x, n = bd->nleds < HUD_BOARD_LEDS ? bd->nleds : HUD_BOARD_LEDS;
+    for (int i = 0; i < n; i++) { /* a lamp and its name */
+        const char *name = bd->led_name[i] ? bd->led_name[i] : "LED";
+        int w = LINE + PAD / 2 + font_text_width(name, HUD_TEXT_SCALE) + PAD;
+        rect(x - PAD / 2, l.leds.y, w, l.leds.h, 0x000000u, 0.55f);
+        rect(x + 2, l.leds.y + 2, LINE - 4, LINE - 4, bd->led[i] ? HUD_LED_LIT : HUD_LED_DARK, 1);
+        text(x + LINE + PAD / 2, l.leds.y + (LINE - FONT_H * HUD_TEXT_SCALE) / 2, 0xFFFFFFu, name);
+        x += w + PAD / 2;
+    }
+    if (l.rows < 1) return;
+    char rows[HUD_CONSOLE_LINES][129];
+    int k = l.console_scale, nr = hud_console_rows(bd->console, bd->console_len, l.cols, l.rows, rows);
+    rect(l.console.x, l.console.y, l.console.w, (nr > 0 ? nr : 1) * FONT_LINE * k + PAD, 0x000000u, 0.6f); /* as tall as the text */
+    for (int r = 0; r < nr; r++) text_k(l.console.x + PAD / 2, l.console.y + PAD / 2 + r * FONT_LINE * k, HUD_CONSOLE_TEXT, rows[r], k);
+}
 
 void hud_draw(const sim_t *s, const hud_info_t *in, int W, int H)
 {
@@ -231,6 +340,7 @@ void hud_draw(const sim_t *s, const hud_info_t *in, int W, int H)
         rect(sl.x, sl.y + sl.h / 3, kx - sl.x, sl.h / 3, 0x3070D0u, 0.95f);
         rect(kx - 4, sl.y, 8, sl.h, 0xF0F0F0u, 1);
     }
+    if (in->board) draw_board(in->board, W, H);
     if (in->status && *in->status) {
         int y = (in->replay ? sl.y : b[HUD_BTN_BIRD].y) - LINE - PAD;
         rect(PAD / 2, y - PAD / 2, (int)strlen(in->status) * CHAR_PX + PAD, LINE + PAD / 2, 0x000000u, 0.55f);

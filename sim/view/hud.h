@@ -3,11 +3,15 @@
  * with a Connect button at the upper right, camera and overlay buttons at
  * the lower left, run controls at the bottom centre, "Toggle post" at
  * the lower right; when replaying a log, a time slider above the bottom
- * row.
+ * row; with a board (--board), under the timers: its four function
+ * switches, BUTTON and RESET, its LEDs, and a console panel (the last
+ * lines the firmware printed).
  * Layout and hit tests need no GL (the viewer's tests use them); drawing
  * needs a current GL context. Pixel coordinates: origin top-left. */
 #ifndef HUD_H
 #define HUD_H
+
+#include <stddef.h>
 
 #include "world/sim.h"
 
@@ -26,6 +30,42 @@ typedef struct {
     const char *label;
 } hud_button_t;
 
+/* A board's panel: plain data (the viewer knows no board types). */
+#define HUD_BOARD_LEDS 4
+#define HUD_CONSOLE_LINES 12 /* console rows shown at most */
+#define HUD_CONSOLE_TEXT 0x60F060u /* the console's text colour */
+#define HUD_LED_LIT 0xFF5020u      /* an LED lit, and dark */
+#define HUD_LED_DARK 0x402018u
+typedef struct {
+    unsigned switches;                   /* 0..15, bit k: switch k */
+    int button;                          /* 1: held down */
+    int nleds;                           /* 0..HUD_BOARD_LEDS */
+    int led[HUD_BOARD_LEDS];             /* 1: lit */
+    const char *led_name[HUD_BOARD_LEDS];
+    const char *console;                 /* everything the firmware printed (NULL: nothing) */
+    size_t console_len;
+} hud_board_t;
+
+/* The panel's controls: switch k toggles bit k (labelled by its weight 1, 2, 4, 8). */
+enum { HUD_BOARD_SW0, HUD_BOARD_SW1, HUD_BOARD_SW2, HUD_BOARD_SW3, HUD_BOARD_BUTTON, HUD_BOARD_RESET, HUD_BOARD_COUNT };
+
+typedef struct {
+    hud_button_t ctl[HUD_BOARD_COUNT];
+    hud_button_t leds;    /* the LED row */
+    hud_button_t console; /* the console panel at its tallest (drawn as tall as its text) */
+    int console_scale;    /* screen pixels per font pixel there */
+    int cols, rows;       /* console text that fits */
+} hud_board_layout_t;
+
+/* Where the board's panel sits in a win_w x win_h window. */
+void hud_board_layout(int win_w, int win_h, hud_board_layout_t *out);
+/* The board control under (x, y) (HUD_BOARD_*), or -1. */
+int hud_board_hit(int win_w, int win_h, double x, double y);
+/* The last `rows` rows of console text c (n bytes) wrapped at `cols`
+ * (cols <= 128): printable ASCII, a tab as a space, other bytes '?', CRs
+ * dropped; row i into out[i] (NUL-terminated). Returns the rows filled. */
+int hud_console_rows(const char *c, size_t n, int cols, int rows, char out[][129]);
+
 /* What the HUD shows besides the simulation itself. */
 typedef struct {
     int camera;           /* 1..3 */
@@ -39,6 +79,7 @@ typedef struct {
     int editing;          /* the field being typed in (HUD_FIELD_*), -1 none */
     const char *baud_text; /* the baud field's text, or NULL: baud */
     int mms;              /* an mms algorithm drives: show Reset */
+    const hud_board_t *board; /* a board's panel, or NULL */
 } hud_info_t;
 
 enum { HUD_FIELD_PORT = 0, HUD_FIELD_BAUD = 1, HUD_FIELDS = 2 };

@@ -23,6 +23,7 @@
 #define ZOOM_PER_NOTCH 0.9    /* camera distance factor per scroll notch (towards the target) */
 #define ZOOM_MIN 0.1          /* camera distance factor limits */
 #define ZOOM_MAX 10.0
+#define VIEW_HANDS_MAX 32     /* board clicks queued between two physics steps */
 
 struct view {
     view_opts_t o;
@@ -46,6 +47,16 @@ struct view {
     const char *mms_texts;   /* and texts, mms_stride bytes per cell */
     size_t mms_stride;
     int *mms_reset;          /* set to 1 by the Reset button, or NULL */
+    view_board_fill_t *board_fill; /* view_set_board, or NULL: no board */
+    void *board_ctx;
+    view_board_t board;      /* as last filled */
+    view_hand_t hands[VIEW_HANDS_MAX]; /* clicks on the board not yet taken */
+    int hands_head, hands_len;
+    int sw_pending;          /* a switches request not yet taken: sw_want */
+    unsigned sw_want;
+    int btn_held;            /* the mouse holds BUTTON down */
+    int btn_up_due;          /* released early: up at btn_down_s + VIEW_BUTTON_MIN_S */
+    double btn_down_s;       /* simulation time it went down */
 };
 
 static int glfw_users;
@@ -170,8 +181,66 @@ void view_button(view_t *v, sim_t *s, int button)
     }
 }
 
+static double sim_now(const view_t *v) { return v->sim ? sim_time_s(v->sim) : 0; }
+
+static void push_hand(view_t *v, view_hand_kind_t kind, unsigned switches)
+{
+    if (v->hands_len == VIEW_HANDS_MAX) return; /* a person cannot click that fast: dropped */
+    view_hand_t *h = &v->hands[(v->hands_head + v->hands_len++) % VIEW_HANDS_MAX];
+    h->kind = kind;
+    h->switches = switches;
+}
+
+/* A click on the board's control c (HUD_BOARD_*). */
+static void board_click(view_t *v, int c)
+{
+    if (c >= HUD_BOARD_SW0 && c <= HUD_BOARD_SW3) {
+        unsigned now = v->sw_pending ? v->sw_want : v->board.switches;
+        v->sw_want = (now ^ (1u << (c - HUD_BOARD_SW0))) & 15u;
+        v->sw_pending = 1;
+        push_hand(v, VIEW_HAND_SWITCHES, v->sw_want);
+        snprintf(v->status, sizeof v->status, "switches %u", v->sw_want);
+    } else if (c == HUD_BOARD_BUTTON) {
+        push_hand(v, VIEW_HAND_BUTTON_DOWN, 0);
+        v->btn_held = 1;
+        v->btn_up_due = 0;
+        v->btn_down_s = sim_now(v);
+        snprintf(v->status, sizeof v->status, "button down");
+    } else if (c == HUD_BOARD_RESET) {
+        push_hand(v, VIEW_HAND_RESET, 0);
+        snprintf(v->status, sizeof v->status, "reset pressed");
+    }
+}
+
+int view_hands_request(view_t *v, view_hand_t *out)
+{
+    if (v->hands_len) {
+        *out = v->hands[v->hands_head];
+        v->hands_head = (v->hands_head + 1) % VIEW_HANDS_MAX;
+        v->hands_len--;
+        if (out->kind == VIEW_HAND_SWITCHES && out->switches == v->sw_want) v->sw_pending = 0;
+        return 1;
+    }
+    if (v->btn_up_due && sim_now(v) >= v->btn_down_s + VIEW_BUTTON_MIN_S - 1e-9) {
+        v->btn_up_due = 0;
+        out->kind = VIEW_HAND_BUTTON_UP;
+        out->switches = 0;
+        snprintf(v->status, sizeof v->status, "button up");
+        return 1;
+    }
+    return 0;
+}
+
+void view_set_board(view_t *v, view_board_fill_t *fill, void *ctx)
+{
+    v->board_fill = fill;
+    v->board_ctx = ctx;
+    memset(&v->board, 0, sizeof v->board);
+}
+
 int view_click(view_t *v, sim_t *s, double x, double y)
 {
+    if (s) v->sim = s;
     if (v->rp && hud_slider_hit(v->o.width, v->o.height, x, y)) {
         v->rp_drag = 1;
         view_seek(v, hud_slider_time(v->o.width, v->o.height, x, replay_end_s(v->rp)));
@@ -183,6 +252,11 @@ int view_click(view_t *v, sim_t *s, double x, double y)
         return VIEW_FIELD + f;
     }
     v->editing = -1;
+    int c = v->board_fill && !v->rp ? hud_board_hit(v->o.width, v->o.height, x, y) : -1;
+    if (c >= 0) {
+        board_click(v, c);
+        return VIEW_BOARD + c;
+    }
     int b = hud_hit(v->o.width, v->o.height, x, y);
     if (b >= 0) {
         view_button(v, s, b);
@@ -209,6 +283,15 @@ void view_drag(view_t *v, double x, double y)
 
 void view_release(view_t *v)
 {
+    if (v->btn_held) { /* BUTTON up now, or once it has been down VIEW_BUTTON_MIN_S */
+        v->btn_held = 0;
+        if (sim_now(v) >= v->btn_down_s + VIEW_BUTTON_MIN_S - 1e-9) {
+            push_hand(v, VIEW_HAND_BUTTON_UP, 0);
+            snprintf(v->status, sizeof v->status, "button up");
+        } else {
+            v->btn_up_due = 1;
+        }
+    }
     v->rp_drag = 0;
     v->dragging = 0;
 }
@@ -396,7 +479,16 @@ static void draw(view_t *v, sim_t *s)
     const char *status = v->status[0] ? v->status : v->overlay && !b.map ? "no mouse map to overlay yet" : NULL;
     hud_info_t in = { v->camera, v->overlay, v->paused, v->speed, v->port, v->o.baud, status, v->rp != NULL,
                       v->rp_t, v->rp ? replay_end_s(v->rp) : 0, v->editing, v->baud,
-                      v->mms_reset != NULL };
+                      v->mms_reset != NULL, NULL };
+    if (v->board_fill && !v->rp) { /* the board as it is now, and what the person's hands asked for */
+        v->board_fill(v->board_ctx, &v->board);
+        view_board_t shown = v->board;
+        if (v->sw_pending) shown.switches = v->sw_want;
+        shown.button = shown.button || v->btn_held;
+        in.board = &shown;
+        hud_draw(s, &in, v->o.width, v->o.height);
+        return;
+    }
     hud_draw(s, &in, v->o.width, v->o.height);
 }
 

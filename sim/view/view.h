@@ -17,6 +17,10 @@
  *   click Port / Baud      type a serial port and baud (Tab: the other
  *                          field, Backspace, Esc: done); Connect or Enter
  *                          asks the caller to open the link (HIL)
+ * A board (--board, view_set_board): under the timers its function
+ * switches (click: toggle), BUTTON (down while the mouse is held, at least
+ * VIEW_BUTTON_MIN_S of simulation time), RESET, its LEDs and the last lines
+ * of its console; the clicks come back as view_hands_request.
  * Replay (mmview): view_set_replay gives the view a log loaded into a
  * stand-in simulation; view_play runs it at `speed` with a time slider
  * (click or drag to seek) and these keys instead of the physics ones:
@@ -31,6 +35,7 @@
 
 #include <stddef.h>
 
+#include "hud.h"
 #include "replay.h"
 #include "scene.h"
 #include "world/sim.h"
@@ -38,6 +43,7 @@
 #define VIEW_SPEED_MAX 64.0
 #define VIEW_SLIDER 100 /* view_click's answer for the replay slider */
 #define VIEW_FIELD 200  /* view_click's answer for a HUD field: + HUD_FIELD_* */
+#define VIEW_BOARD 300  /* view_click's answer for a board control: + HUD_BOARD_* */
 
 typedef struct {
     int width, height; /* window or picture, pixels */
@@ -72,6 +78,25 @@ int view_screenshot(view_t *v, sim_t *s, const char *path, char *err, size_t err
 int view_connect_request(view_t *v, const char **port, long *baud);
 void view_set_status(view_t *v, const char *text);
 
+/* A board's panel (plain data: hud.h's hud_board_t). fill(ctx, out) is
+ * called just before each frame is drawn (only then: nothing per step),
+ * and must only read; what out points to must stay valid until the frame
+ * is drawn. NULL: no board. */
+typedef hud_board_t view_board_t;
+typedef void view_board_fill_t(void *ctx, view_board_t *out);
+void view_set_board(view_t *v, view_board_fill_t *fill, void *ctx);
+
+/* A person's hand on the board, from a click on the HUD. */
+typedef enum { VIEW_HAND_SWITCHES, VIEW_HAND_BUTTON_DOWN, VIEW_HAND_BUTTON_UP, VIEW_HAND_RESET } view_hand_kind_t;
+typedef struct {
+    view_hand_kind_t kind;
+    unsigned switches; /* VIEW_HAND_SWITCHES: the new setting, 0..15 */
+} view_hand_t;
+#define VIEW_BUTTON_MIN_S 0.1 /* a click on BUTTON holds it this long (simulation time) */
+/* The oldest request not yet taken (call after view_step): 1 and *out, or
+ * 0. A BUTTON released early comes up VIEW_BUTTON_MIN_S after it went down. */
+int view_hands_request(view_t *v, view_hand_t *out);
+
 /* Replay: show log r put into s (replay_sim_init) from time 0. */
 void view_set_replay(view_t *v, replay_t *r, sim_t *s);
 /* Replay: run the log in the window until it is closed. */
@@ -83,7 +108,7 @@ double view_time(const view_t *v);
 
 /* UI actions. */
 void view_button(view_t *v, sim_t *s, int button);             /* HUD_BTN_* */
-int view_click(view_t *v, sim_t *s, double x, double y);       /* the button hit, VIEW_SLIDER, VIEW_FIELD + f, or -1 */
+int view_click(view_t *v, sim_t *s, double x, double y);       /* the button hit, VIEW_SLIDER, VIEW_FIELD + f, VIEW_BOARD + c, or -1 */
 void view_char(view_t *v, unsigned codepoint);                 /* a typed character (into the field being edited) */
 void view_drag(view_t *v, double x, double y);                 /* mouse moved (slider drag, or orbit after a click on the scene) */
 void view_release(view_t *v);                                  /* mouse button up */
