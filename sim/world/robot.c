@@ -3,6 +3,7 @@
 #include "robot.h"
 
 #include <ctype.h>
+#include <stdarg.h>
 #include <ini.h>
 #include <math.h>
 #include <stdlib.h>
@@ -127,11 +128,16 @@ typedef struct {
 
 static int side_of(const char *name) { return !strcmp(name, "left") ? 0 : !strcmp(name, "right") ? 1 : -1; }
 
-static int fail(load_t *l, int line, const char *fmt, const char *a, const char *b, const char *cc)
+/* The load's error: its line (0: none) and reason; returns -1. */
+static int fail(load_t *l, int line, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+static int fail(load_t *l, int line, const char *fmt, ...)
 {
+    va_list ap;
+    va_start(ap, fmt);
     l->failed = 1;
     l->err_line = line;
-    snprintf(l->reason, sizeof l->reason, fmt, a, b, cc);
+    vsnprintf(l->reason, sizeof l->reason, fmt, ap);
+    va_end(ap);
     return -1;
 }
 
@@ -161,8 +167,8 @@ static int add_section(load_t *l, const char *kind, const char *name, int line)
         snprintf(c->battery_name, sizeof c->battery_name, "%.15s", name); /* checked: at most 15 */
     } else {
         const sensor_kind_t *k = sensor_kind(kind);
-        if (!k) return fail(l, line, "%s.%s: unknown kind (chassis motor encoder battery measured tof ir gyro)%s", kind, name, "");
-        if (c->nparts == ROBOT_MAX_PARTS) return fail(l, line, "%s.%s: more than 16 sensors%s", kind, name, "");
+        if (!k) return fail(l, line, "%s.%s: unknown kind (chassis motor encoder battery measured tof ir gyro)", kind, name);
+        if (c->nparts == ROBOT_MAX_PARTS) return fail(l, line, "%s.%s: more than 16 sensors", kind, name);
         robot_part_t *p = &c->part[c->nparts++];
         memset(p, 0, sizeof *p);
         p->kind = k;
@@ -190,17 +196,17 @@ static int name_ok(const char *s)
 static int header(load_t *l, const char *h, size_t len, int line)
 {
     char sec[64], kind[16], name[64];
-    if (len >= sizeof sec) return fail(l, line, "[%.40s...]: section name too long%s%s", h, "", "");
+    if (len >= sizeof sec) return fail(l, line, "[%.40s...]: section name too long", h);
     memcpy(sec, h, len);
     sec[len] = '\0';
     const char *dot = strchr(sec, '.');
     if (!dot || (size_t)(dot - sec) >= sizeof kind)
-        return fail(l, line, "[%s]: want [KIND.NAME], e.g. [ir.left_front]%s%s", sec, "", "");
+        return fail(l, line, "[%s]: want [KIND.NAME], e.g. [ir.left_front]", sec);
     memcpy(kind, sec, (size_t)(dot - sec));
     kind[dot - sec] = '\0';
     snprintf(name, sizeof name, "%s", dot + 1);
     if (!name_ok(name) || strlen(name) >= ROBOT_NAME_MAX)
-        return fail(l, line, "[%s]: a name is 1 to 15 letters, digits, _ or -%s%s", sec, "", "");
+        return fail(l, line, "[%s]: a name is 1 to 15 letters, digits, _ or -", sec);
     int fixed = !strcmp(kind, "chassis") || !strcmp(kind, "motor") || !strcmp(kind, "encoder") || !strcmp(kind, "battery") ||
                 !strcmp(kind, "measured");
     for (int i = 0; i < l->n; i++) {
@@ -212,7 +218,7 @@ static int header(load_t *l, const char *h, size_t len, int line)
         if (fixed && strcmp(kind, "motor") && strcmp(kind, "encoder") && !strcmp(l->s[i].kind, kind))
             return fail(l, line, "%s.%s: a robot has one %s", kind, name, kind);
     }
-    if (l->n == MAX_SECTIONS) return fail(l, line, "%s.%s: too many sections%s", kind, name, "");
+    if (l->n == MAX_SECTIONS) return fail(l, line, "%s.%s: too many sections", kind, name);
     return add_section(l, kind, name, line);
 }
 
@@ -228,7 +234,7 @@ static int scan_sections(load_t *l, const char *text)
         while (q < p + len && isspace((unsigned char)*q)) q++;
         if (q < p + len && *q == '[') {
             const char *r = memchr(q, ']', (size_t)(p + len - q));
-            if (!r) return fail(l, line, "'[' without ']'%s%s%s", "", "", "");
+            if (!r) return fail(l, line, "'[' without ']'");
             if (header(l, q + 1, (size_t)(r - q - 1), line) != 0) return -1;
         }
         if (!e) break;
@@ -304,10 +310,10 @@ static int required_parts(load_t *l)
                                            { "encoder", "left" }, { "encoder", "right" }, { "battery", NULL } };
     for (size_t i = 0; i < N(need); i++)
         if (!has(l, need[i][0], need[i][1]))
-            return fail(l, 0, "no [%s.%s] section: a robot has a chassis, motor and encoder left and right, and a battery%s",
-                        need[i][0], need[i][1] ? need[i][1] : "NAME", "");
-    if (robot_count(l->c, "tof") > ROBOT_MAX_TOF) return fail(l, 0, "more than 3 tof sensors (the HAL has left, front, right)%s%s%s", "", "", "");
-    if (robot_count(l->c, "ir") > ROBOT_MAX_IR) return fail(l, 0, "more than 8 ir sensors (hal.h HAL_IR_MAX)%s%s%s", "", "", "");
+            return fail(l, 0, "no [%s.%s] section: a robot has a chassis, motor and encoder left and right, and a battery",
+                        need[i][0], need[i][1] ? need[i][1] : "NAME");
+    if (robot_count(l->c, "tof") > ROBOT_MAX_TOF) return fail(l, 0, "more than 3 tof sensors (the HAL has left, front, right)");
+    if (robot_count(l->c, "ir") > ROBOT_MAX_IR) return fail(l, 0, "more than 8 ir sensors (hal.h HAL_IR_MAX)");
     return 0;
 }
 
@@ -321,13 +327,9 @@ static int part_checks(load_t *l)
         if (fabs(p->x_m) > c->body_w_m / 2) key = "x_mm";
         else if (fabs(p->y_m) > c->body_l_m / 2) key = "y_mm";
         else if (p->z_m > top) key = "z_mm";
-        if (key) {
-            fail(l, p->line, "%s.%s.%s: pose outside the chassis", k, p->name, key);
-            size_t n = strlen(l->reason);
-            snprintf(l->reason + n, sizeof l->reason - n, " (body %g x %g mm, %g mm high above the floor)", c->body_w_m * 1000,
-                     c->body_l_m * 1000, top * 1000);
-            return -1;
-        }
+        if (key)
+            return fail(l, p->line, "%s.%s.%s: pose outside the chassis (body %g x %g mm, %g mm high above the floor)", k,
+                        p->name, key, c->body_w_m * 1000, c->body_l_m * 1000, top * 1000);
         char why[160];
         if (p->kind->check && p->kind->check(p, why, sizeof why) != 0)
             return fail(l, p->line, "%s.%s.%s", k, p->name, why);
@@ -338,15 +340,11 @@ static int part_checks(load_t *l)
 static int physics_checks(load_t *l)
 {
     simcfg_t *c = l->c;
-    char num[2][32];
-    if (c->tyre_mu_dynamic > c->tyre_mu) {
-        snprintf(num[0], sizeof num[0], "%g", c->tyre_mu_dynamic);
-        snprintf(num[1], sizeof num[1], "%g", c->tyre_mu);
-        return fail(l, 0, "chassis.%s.tyre_mu_dynamic: %s is above tyre_mu %s", c->chassis_name, num[0], num[1]);
-    }
+    if (c->tyre_mu_dynamic > c->tyre_mu)
+        return fail(l, 0, "chassis.%s.tyre_mu_dynamic: %g is above tyre_mu %g", c->chassis_name, c->tyre_mu_dynamic, c->tyre_mu);
     for (int s = 0; s < 2; s++)
         if (c->drive[s].no_load_a >= c->drive[s].stall_a)
-            return fail(l, 0, "motor.%s.no_load_a: not below stall_a%s%s", s ? "right" : "left", "", "");
+            return fail(l, 0, "motor.%s.no_load_a: not below stall_a", s ? "right" : "left");
     return 0;
 }
 

@@ -73,7 +73,6 @@ static void tof_mirror(sim_t *s)
 {
     for (int i = 0; i < s->ntof; i++) {
         tof_state_t *t = s->part_state[s->tof_part[i]];
-        t->enabled = s->tof_enabled;
         s->tof_last[i] = t->last;
         s->tof_true_m[i] = t->true_m;
         s->tof_count[i] = t->count;
@@ -138,13 +137,16 @@ double sim_time_s(const sim_t *s) { return (double)s->step * s->cfg.step_s; }
 /* The battery: each motor sees the open-circuit voltage less the other
  * motor's share of the sag (its own is solved in its circuit, motor.c);
  * the charge drawn is the H-bridges' input current. */
+/* The current an H-bridge draws from the battery: duty x the motor's, A
+ * (v_applied = duty x the supply it saw). */
+static double bridge_in_a(const motor_t *m) { return fabs(m->v_applied * m->i_a) / (m->battery_v > 0 ? m->battery_v : 1); }
+
 static void battery_step(sim_t *s, double dt)
 {
-    double i_in[2];
-    for (int i = 0; i < 2; i++) i_in[i] = fabs(s->motor[i].v_applied) * s->motor[i].i_a / (s->motor[i].battery_v > 0 ? s->motor[i].battery_v : 1);
-    battery_draw(&s->battery, fabs(i_in[0]) + fabs(i_in[1]), dt);
+    double i_in[2] = { bridge_in_a(&s->motor[0]), bridge_in_a(&s->motor[1]) };
+    battery_draw(&s->battery, i_in[0] + i_in[1], dt);
     double ocv = battery_ocv(&s->battery), r = s->cfg.battery.r_ohm;
-    for (int i = 0; i < 2; i++) s->motor[i].battery_v = ocv - r * fabs(i_in[1 - i]);
+    for (int i = 0; i < 2; i++) s->motor[i].battery_v = ocv - r * i_in[1 - i];
 }
 
 void sim_step(sim_t *s)
@@ -213,9 +215,7 @@ double sim_gyro_rad_s(const sim_t *s)
 double sim_battery_v(const sim_t *s)
 {
     /* the terminal voltage: the open-circuit voltage less the sag of both motors' input currents */
-    double i_in = 0;
-    for (int i = 0; i < 2; i++)
-        i_in += fabs(s->motor[i].v_applied * s->motor[i].i_a) / (s->motor[i].battery_v > 0 ? s->motor[i].battery_v : 1);
+    double i_in = bridge_in_a(&s->motor[0]) + bridge_in_a(&s->motor[1]);
     return battery_ocv(&s->battery) - s->cfg.battery.r_ohm * i_in;
 }
 
