@@ -10,6 +10,7 @@
 #include "config.h"
 #include "encoder.h"
 #include "maze.h"
+#include "model.h"
 #include "motor.h"
 #include "race.h"
 #include "world/sensors/tof.h"
@@ -19,8 +20,10 @@
 
 #define SIM_EMITTER_GROUPS 4
 
+/* A run's state: all that changes as it steps. The robot and world it
+ * simulates are the const model it points to. */
 typedef struct sim_s {
-    simcfg_t cfg;
+    const sim_model_t *model; /* built by sim_init, freed by sim_free */
     const maze_t *maze;
     uint64_t seed;
     world_t *world;
@@ -33,7 +36,7 @@ typedef struct sim_s {
      * and the link name them: left, front, right. A copy of their state
      * after each step; WORLD_TOF_COUNT slots, ntof used. */
     int ntof;
-    int tof_part[WORLD_TOF_COUNT];     /* index in cfg.part */
+    int tof_part[WORLD_TOF_COUNT];     /* index in model->cfg->part */
     tof_reading_t tof_last[WORLD_TOF_COUNT];
     double tof_true_m[WORLD_TOF_COUNT]; /* ray distance behind the last reading, -1 none */
     uint32_t tof_count[WORLD_TOF_COUNT]; /* readings taken */
@@ -45,8 +48,9 @@ typedef struct sim_s {
     int diverged;            /* the physics diverged (world_sane): sim_step no longer steps */
 } sim_t;
 
-/* Place the robot in the start cell's centre facing the start heading.
- * Returns 0, or -1 if ODE could not be set up. */
+/* The model of config c (which must outlive the run) for this seed
+ * (sim_model_build), and the robot placed in the start cell facing the
+ * start heading. Returns 0, or -1 if ODE could not be set up. */
 int sim_init(sim_t *s, const simcfg_t *c, const maze_t *m, uint64_t seed);
 void sim_free(sim_t *s);
 /* One physics step: motor currents from the commands, ODE step, encoders,

@@ -81,7 +81,7 @@ static const keytab_t keys[] = {
     G(lsb_dps, 0.035, 0, 10, "deg/s", "LSM6DS3 datasheet Table 3: 35 mdps/LSB at +-1000 dps"),
 };
 
-static void part_init(void *state, const robot_part_t *p, const simcfg_t *c, uint64_t seed, unsigned index, unsigned count)
+static void part_init(void *state, const robot_part_t *p, const sim_model_t *md, uint64_t seed, unsigned index, unsigned count)
 {
     gyro_init(state, (const gyro_spec_t *)p->spec, seed, index);
 }
