@@ -496,6 +496,11 @@ double world_body_z(const world_t *w)
     return p[2];
 }
 
+double world_wheel_floor_gap(const world_t *w, int side)
+{
+    return dBodyGetPosition(w->wheel[side])[2] - dGeomSphereGetRadius(w->wheel_geom[side]);
+}
+
 double world_wheel_angle(const world_t *w, int side) { return dJointGetHingeAngle(w->hinge[side]); }
 double world_wheel_rate(const world_t *w, int side) { return dJointGetHingeAngleRate(w->hinge[side]); }
 

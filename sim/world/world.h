@@ -49,6 +49,9 @@ void world_velocity(const world_t *w, double *v_m_s, double *omega_rad_s);
 /* Height of the body centre above the floor, m (to check it stays down). */
 double world_body_z(const world_t *w);
 
+/* The lowest point of a wheel's tyre above the floor, m (0 = resting on
+ * it; the floor's contact softness presses it in by a few micrometres). */
+double world_wheel_floor_gap(const world_t *w, int side);
 /* Wheel hinge angle (wraps at +-pi) and rate (positive = forward). */
 double world_wheel_angle(const world_t *w, int side);
 double world_wheel_rate(const world_t *w, int side);
