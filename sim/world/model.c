@@ -48,7 +48,6 @@ static void wheels(sim_model_t *m, const simcfg_t *c, const asym_t *a)
 
 static void sensor_poses(sim_model_t *m, const simcfg_t *c)
 {
-    m->nparts = c->nparts;
     for (int i = 0; i < c->nparts; i++) {
         const robot_part_t *p = &c->part[i];
         sim_pose_t *q = &m->pose[i];

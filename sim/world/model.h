@@ -39,8 +39,7 @@ typedef struct sim_model_s {
     double tyre_mu[2];          /* each tyre's static friction on the floor (Coulomb, 1) */
     double tyre_mu_dynamic[2];  /* each tyre's sliding friction, above cfg->tyre_slip_m_s (1) */
     double body_com_m[3];       /* the body's centre of mass in the chassis frame, before the casters' mass, m */
-    int nparts;                 /* sensors, as cfg->part */
-    sim_pose_t pose[ROBOT_MAX_PARTS]; /* each sensor's, as cfg->part */
+    sim_pose_t pose[ROBOT_MAX_PARTS]; /* each sensor's, in cfg->part's order (cfg->nparts of them) */
 } sim_model_t;
 
 /* Build m from the loaded c (which must outlive m) and the run's seed:

@@ -1,5 +1,6 @@
-/* sim.h - one simulated contest: the ODE world, both motors and encoders,
- * the three ToF sensors at their update periods, the contest timers.
+/* sim.h - one run's state, stepped through its const model (model.h): the
+ * ODE world, both motors and encoders, every sensor's state (the ToF
+ * sensors at their update periods), the contest timers.
  * Time is simulation time only; every noise source has its own stream
  * seeded from the run's seed, so the same inputs give the same run. */
 #ifndef SIM_H
@@ -60,7 +61,7 @@ void sim_free(sim_t *s);
 void sim_step(sim_t *s);
 double sim_time_s(const sim_t *s);
 
-/* The robot's other sensors (robot file components; issue 17). IR sensors
+/* The robot's other sensors (robot file components). IR sensors
  * count in the robot file's order; emitter groups 0..SIM_EMITTER_GROUPS-1
  * start off. sim_ir_read samples sensor i's ADC now, with the emitters as
  * they are (0..1023; 0 past the count). The gyro's z rate (rad/s, CCW
