@@ -126,7 +126,7 @@ static void test_straight_speed(void **state)
     for (uint8_t x = 0; x + 1 < 16; x++) maze_set_wall(&m, maze_cell(&m, x, 0), MAZE_EAST, MAZE_WALL_OPEN);
     /* 1.5 s: steady after ~0.6 s (the rotors' inertia) */
     run_t r = drive(&m, 0.09, 0.09, 0.0, 512, 512, 1.5);
-    double want = motor_free_speed(&cfg.drive[0], 512.0 / 1023 * 6.0) * cfg.wheel_d_m / 2;
+    double want = motor_free_speed(&cfg.drive[0], 512.0 / 1023 * 6.0) * model.wheel_r_m[WORLD_LEFT];
     if (fabs(r.v - want) > 0.03 * want) fail_msg("speed %.4f m/s, want %.4f", r.v, want);
     assert_true(r.x > 0.09 + 0.3);                        /* it went east */
     /* the exact solver keeps a symmetric robot straight */
