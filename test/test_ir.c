@@ -15,11 +15,13 @@
 #include "world/world.h"
 
 static simcfg_t cfg;
+static sim_model_t model; /* of cfg */
 
 static int setup(void **state)
 {
     (void)state;
     config_defaults(&cfg);
+    sim_model_build(&model, &cfg, 1);
     return 0;
 }
 
@@ -33,7 +35,7 @@ static world_t *arena(int inner_wall)
     for (uint16_t c = 0; c < 16; c++)
         for (uint8_t d = 0; d < 4; d++) maze_set_wall(&m, (maze_cell_t)c, d, MAZE_WALL_OPEN);
     if (inner_wall) maze_set_wall(&m, maze_cell(&m, 1, 1), MAZE_EAST, MAZE_WALL_CLOSED);
-    world_t *w = world_create(&cfg, &m, 0.09, 0.09, M_PI / 2); /* robot out of the way: rays see only walls and posts */
+    world_t *w = world_create(&model, &m, 0.09, 0.09, M_PI / 2); /* robot out of the way: rays see only walls and posts */
     assert_non_null(w);
     return w;
 }

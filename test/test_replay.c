@@ -51,13 +51,13 @@ static int setup(void **state)
     static sim_t sim;
     static driver_t drv;
     static telem_t tel;
-    simcfg_t cfg;
+    static simcfg_t cfg; /* the sim's model reads it */
     char err[300];
     config_defaults(&cfg);
     if (mazegen_generate(&maze, 5, 5, 7) != 0) return -1;
     if (sim_init(&sim, &cfg, &maze, 3) != 0) return -1;
     hal_sim_attach(&sim);
-    driver_init(&drv, &maze, &cfg, 1);
+    driver_init(&drv, &maze, sim.model, 1);
     snprintf(log_path, sizeof log_path, "/tmp/test_replay_%d.lcmlog", (int)getpid());
     telem_opts_t o = { NULL, log_path, 0, NULL, "gen.txt" };
     if (telem_open(&tel, &o, &sim, err, sizeof err) != 0) return -1;
@@ -110,7 +110,7 @@ static void test_state_at_logged_times(void **state)
     assert_string_equal(r.path, "gen.txt");
     assert_memory_equal(r.maze.cell, maze.cell, maze_cells(&maze));
     assert_int_equal(replay_sim_init(&r, &s), 0);
-    double count_rad = 2 * M_PI / (s.cfg.drive[0].encoder_ppr * s.cfg.drive[0].gear_ratio);
+    double count_rad = 2 * M_PI / (s.model->cfg->drive[0].encoder_ppr * s.model->cfg->drive[0].gear_ratio);
     assert_true(!live[0].emitter[1] && live[1].emitter[1]); /* the check times see both */
     for (int k = 0; k < CHECK_AT; k++) {
         replay_apply(&r, &s, CHECK_S[k]);
@@ -173,7 +173,7 @@ static void test_slider_and_keys(void **state)
     hud_slider(o.width, o.height, &sl);
     assert_int_equal(view_click(v, &s, sl.x + sl.w * 0.25, sl.y + sl.h / 2.0), VIEW_SLIDER);
     assert_true(fabs(view_time(v) - 0.25 * end_s) < 1e-6);
-    assert_true(fabs(sim_time_s(&s) - 0.25 * end_s) < s.cfg.step_s);
+    assert_true(fabs(sim_time_s(&s) - 0.25 * end_s) < s.model->cfg->step_s);
     view_drag(v, sl.x + sl.w * 0.5, sl.y + sl.h / 2.0);
     assert_true(fabs(view_time(v) - 0.5 * end_s) < 1e-6);
     view_drag(v, sl.x - 100.0, sl.y + sl.h / 2.0); /* past the left end: the start */

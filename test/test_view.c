@@ -27,7 +27,7 @@ static const view_opts_t opts = { 800, 600, 1, 1, "", 115200 };
 static int setup(void **state)
 {
     (void)state;
-    simcfg_t c;
+    static simcfg_t c; /* the sim's model reads it */
     config_defaults(&c);
     maze_init(&maze, 4, 4); /* even size: a post at the centre (2, 2) */
     maze_close_unknown(&maze);
@@ -51,7 +51,7 @@ static int teardown(void **state)
  * (3,3). */
 static double ray_across_centre(void)
 {
-    double cell = sim.cfg.cell_m;
+    double cell = sim.model->cfg->cell_m;
     return world_ray(sim.world, 1.5 * cell, 1.5 * cell, 0.02, M_PI / 4, 1.0);
 }
 
@@ -65,7 +65,7 @@ static void click_button(int b)
 static void test_toggle_post_button(void **state)
 {
     (void)state;
-    double cell = sim.cfg.cell_m, half = sim.cfg.post_m / 2;
+    double cell = sim.model->cfg->cell_m, half = sim.model->cfg->post_m / 2;
     assert_true(world_has_centre_post(sim.world));
     assert_true(fabs(ray_across_centre() - M_SQRT2 * (0.5 * cell - half)) < 0.001);
     click_button(HUD_BTN_POST);
@@ -179,7 +179,7 @@ static void test_hud_timers(void **state)
     assert_false(over);
     sim.race.started = 1;
     sim.race.global_start_s = 0;
-    sim.step = (uint64_t)llround((sim.race.limit_s + 1.5) / sim.cfg.step_s);
+    sim.step = (uint64_t)llround((sim.race.limit_s + 1.5) / sim.model->cfg->step_s);
     hud_timers(&sim, g, l, &over);
     assert_true(over);
     sim.step = 0;

@@ -15,11 +15,13 @@
 #include "world/world.h"
 
 static simcfg_t cfg;
+static sim_model_t model; /* of cfg */
 
 static int setup(void **state)
 {
     (void)state;
     config_defaults(&cfg);
+    sim_model_build(&model, &cfg, 1);
     return 0;
 }
 
@@ -37,7 +39,7 @@ static void test_rays_hit_maze_walls(void **state)
     closed(&m, 4, 4);
     maze_set_wall(&m, maze_cell(&m, 0, 0), MAZE_NORTH, MAZE_WALL_OPEN);
     maze_set_wall(&m, maze_cell(&m, 0, 1), MAZE_NORTH, MAZE_WALL_OPEN);
-    world_t *w = world_create(&cfg, &m, 0.5, 0.5, M_PI / 2); /* robot out of the way */
+    world_t *w = world_create(&model, &m, 0.5, 0.5, M_PI / 2); /* robot out of the way */
     assert_non_null(w);
     double c = cfg.cell_m, half = cfg.wall_thick_m / 2, z = 0.02;
     /* from the centre of (0,0): east wall 90 - 6 mm away */
@@ -60,7 +62,7 @@ static void test_centre_post_toggle(void **state)
     maze_close_unknown(&m);
     for (uint16_t c = 0; c < 16; c++)
         for (uint8_t d = 0; d < 4; d++) maze_set_wall(&m, (maze_cell_t)c, d, MAZE_WALL_OPEN);
-    world_t *w = world_create(&cfg, &m, 0.09, 0.09, M_PI / 2);
+    world_t *w = world_create(&model, &m, 0.09, 0.09, M_PI / 2);
     double c = cfg.cell_m, y = 2 * c, z = 0.02;
     /* along the post row y = 2 cells, from the west wall's inside: the first
      * post hit is (1,2), then (2,2) the centre; start just east of (1,2) */
@@ -93,7 +95,7 @@ static void motor_world_step(world_t *w, motor_t mo[2], int cmd_l, int cmd_r)
 /* Drive with constant commands for seconds; motors per motor.c. */
 static run_t drive(const maze_t *m, double x0, double y0, double h0, int cmd_l, int cmd_r, double seconds)
 {
-    world_t *w = world_create(&cfg, m, x0, y0, h0);
+    world_t *w = world_create(&model, m, x0, y0, h0);
     motor_t mo[2];
     motor_init(&mo[0], &cfg.drive[0], 6.0, 0, 1.0);
     motor_init(&mo[1], &cfg.drive[0], 6.0, 0, 1.0);
@@ -124,7 +126,7 @@ static void test_straight_speed(void **state)
     for (uint8_t x = 0; x + 1 < 16; x++) maze_set_wall(&m, maze_cell(&m, x, 0), MAZE_EAST, MAZE_WALL_OPEN);
     /* 1.5 s: steady after ~0.6 s (the rotors' inertia) */
     run_t r = drive(&m, 0.09, 0.09, 0.0, 512, 512, 1.5);
-    double want = motor_free_speed(&cfg.drive[0], 512.0 / 1023 * 6.0) * cfg.wheel_d_m / 2;
+    double want = motor_free_speed(&cfg.drive[0], 512.0 / 1023 * 6.0) * model.wheel_r_m[WORLD_LEFT];
     if (fabs(r.v - want) > 0.03 * want) fail_msg("speed %.4f m/s, want %.4f", r.v, want);
     assert_true(r.x > 0.09 + 0.3);                        /* it went east */
     /* the exact solver keeps a symmetric robot straight */
@@ -190,7 +192,7 @@ static void test_place(void **state)
     maze_init(&m, 4, 4);
     maze_close_unknown(&m);
     maze_set_wall(&m, maze_cell(&m, 0, 0), MAZE_NORTH, MAZE_WALL_OPEN);
-    world_t *w = world_create(&cfg, &m, 0.09, 0.09, M_PI / 2);
+    world_t *w = world_create(&model, &m, 0.09, 0.09, M_PI / 2);
     motor_t mo[2];
     motor_init(&mo[0], &cfg.drive[0], 6.0, 0, 1.0);
     motor_init(&mo[1], &cfg.drive[0], 6.0, 0, 1.0);

@@ -24,7 +24,7 @@ void hal_sim_set_log(FILE *out) { log_out = out; }
 
 uint32_t hal_micros(void)
 {
-    if (sim) return (uint32_t)(sim->step * (uint64_t)llround(sim->cfg.step_s * 1e6));
+    if (sim) return (uint32_t)(sim->step * (uint64_t)llround(sim->model->cfg->step_s * 1e6));
     return (uint32_t)sim_time_us;
 }
 
@@ -67,7 +67,7 @@ void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_
 {
     /* a copy for telemetry (sim/telemetry/telem.c); the simulation never reads it */
     belief.seq++;
-    belief.t_us = sim ? sim->step * (uint64_t)llround(sim->cfg.step_s * 1e6) : sim_time_us;
+    belief.t_us = sim ? sim->step * (uint64_t)llround(sim->model->cfg->step_s * 1e6) : sim_time_us;
     belief.map = *map;
     belief.cell = cell;
     belief.heading = heading;

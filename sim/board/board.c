@@ -115,7 +115,7 @@ board_t *board_open(const board_spec_t *spec, const char *image, sim_t *s, char 
     if (board_console_init(b, err, errn) != 0 || board_adc_init(b, err, errn) != 0) return open_fail(b);
     board_encoder_init(b);
     for (int m = 0; m < 2; m++) b->st.duty_min[m] = b->st.duty_max[m] = 0.0;
-    b->cycles_per_step = (uint64_t)llround((double)spec->f_cpu * s->cfg.step_s);
+    b->cycles_per_step = (uint64_t)llround((double)spec->f_cpu * s->model->cfg->step_s);
     b->target = b->avr->cycle;
     return b;
 }

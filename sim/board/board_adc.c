@@ -65,7 +65,7 @@ static void on_trigger(struct avr_irq_t *irq, uint32_t value, void *param)
 
 int board_adc_init(board_t *b, char *err, size_t errn)
 {
-    const simcfg_t *c = &b->sim->cfg;
+    const simcfg_t *c = b->sim->model->cfg;
     for (int ch = 0; ch < BOARD_ADC_CHANNELS; ch++) {
         b->ir_of_channel[ch] = -1;
         b->adc_in[ch] = avr_io_getirq(b->avr, AVR_IOCTL_ADC_GETIRQ, ch);

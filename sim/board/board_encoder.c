@@ -33,7 +33,7 @@ static void put(board_t *b, int w, long q)
 void board_encoder_init(board_t *b)
 {
     for (int w = 0; w < 2; w++) {
-        const drive_spec_t *d = &b->sim->cfg.drive[w];
+        const drive_spec_t *d = &b->sim->model->cfg->drive[w];
         b->enc_per_rad[w] = d->encoder_ppr * d->gear_ratio / (2.0 * M_PI);
         b->enc_last_rad[w] = world_wheel_angle(b->sim->world, w);
         b->enc_pos[w] = 0.0;

@@ -22,8 +22,9 @@ typedef struct {
     double vref;      /* speed reference, ramped */
 } driver_t;
 
-/* Plan on the true maze; runs = number of start-to-goal runs. */
-void driver_init(driver_t *d, const maze_t *m, const simcfg_t *c, int runs);
+/* Plan on the true maze for the robot of model md; runs = number of
+ * start-to-goal runs. */
+void driver_init(driver_t *d, const maze_t *m, const sim_model_t *md, int runs);
 /* Set s->cmd from the true pose; call once per physics step. */
 void driver_update(driver_t *d, sim_t *s);
 

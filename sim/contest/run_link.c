@@ -44,7 +44,7 @@ static void link_exchange(link_t *l, sim_t *s)
 {
     link_io_t io;
     memset(&io, 0, sizeof io);
-    io.t_us = (uint32_t)(s->step * (uint64_t)llround(s->cfg.step_s * 1e6));
+    io.t_us = (uint32_t)(s->step * (uint64_t)llround(s->model->cfg->step_s * 1e6));
     io.encoder[0] = s->encoder[WORLD_LEFT].count;
     io.encoder[1] = s->encoder[WORLD_RIGHT].count;
     for (int i = 0; i < 3; i++) { /* a new reading bumped the sensor's count */

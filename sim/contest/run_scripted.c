@@ -6,7 +6,7 @@
 
 static int scripted_open(run_t *r)
 {
-    driver_init(&r->script, &r->maze, &r->cfg, r->o->runs);
+    driver_init(&r->script, &r->maze, r->sim.model, r->o->runs);
     return 0;
 }
 

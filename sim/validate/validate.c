@@ -132,7 +132,9 @@ static double reference_response(const simcfg_t *c, double t_s, double *current_
 {
     double r, ke, eta, n = c->drive[0].gear_ratio, v = battery_spec_full_v(&c->battery), i0 = c->drive[0].no_load_a;
     motor_constants(&c->drive[0], &r, &ke, &eta);
-    double rw = c->wheel_d_m / 2;
+    sim_model_t md; /* the bench's robot (open_bench's seed), for its left wheel's radius */
+    sim_model_build(&md, c, 1);
+    double rw = md.wheel_r_m[WORLD_LEFT];
     double j = 0.5 * c->wheel_mass_kg * rw * rw + c->drive[0].rotor_inertia_kgm2 * n * n; /* the wheel's axle inertia */
     double i = 0, w = 0, h = 1e-7;
     long k = lround(t_s / h);

@@ -156,7 +156,7 @@ static int count_checks(const simcfg_t *c, validate_check_t *v, int n)
 /* Sensor i's mean lit-minus-dark over 64 samples, the robot where it is. */
 static double lit_minus_dark(sim_t *s, unsigned i)
 {
-    const robot_part_t *p = &s->cfg.part[robot_part_of_kind(&s->cfg, "ir", i)];
+    const robot_part_t *p = &s->model->cfg->part[robot_part_of_kind(s->model->cfg, "ir", i)];
     unsigned g = (unsigned)((const ir_part_spec_t *)p->spec)->emitter;
     double sum = 0;
     for (int k = 0; k < 64; k++) {

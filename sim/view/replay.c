@@ -253,7 +253,7 @@ static void rebuild_race(const replay_t *r, race_t *rc, int64_t t_us)
 void replay_apply(replay_t *r, sim_t *s, double t_s)
 {
     int64_t t_us = clamp_us(r, t_s);
-    double cpr = s->cfg.drive[0].encoder_ppr * s->cfg.drive[0].gear_ratio; /* encoder counts per wheel turn */
+    double cpr = s->model->cfg->drive[0].encoder_ppr * s->model->cfg->drive[0].gear_ratio; /* encoder counts per wheel turn */
     long i = LAST_AT(r->pose, r->npose, t_us);
     long j = LAST_AT(r->sensors, r->nsensors, t_us);
     double wheel[2] = { 0, 0 };
@@ -264,7 +264,7 @@ void replay_apply(replay_t *r, sim_t *s, double t_s)
     } else { /* before the first pose: in the start cell, as sim_init puts it */
         static const double a[4] = { M_PI / 2, 0.0, -M_PI / 2, M_PI };
         const maze_t *m = &r->maze;
-        world_place(s->world, (maze_x(m, m->start) + 0.5) * s->cfg.cell_m, (maze_y(m, m->start) + 0.5) * s->cfg.cell_m,
+        world_place(s->world, (maze_x(m, m->start) + 0.5) * s->model->cfg->cell_m, (maze_y(m, m->start) + 0.5) * s->model->cfg->cell_m,
                     a[m->start_heading & 3], wheel);
     }
     for (int k = 0; k < WORLD_TOF_COUNT; k++) {
@@ -274,7 +274,7 @@ void replay_apply(replay_t *r, sim_t *s, double t_s)
     }
     long e = LAST_AT(r->parts, r->nparts, t_us);
     for (unsigned g = 0; g < SIM_EMITTER_GROUPS; g++) sim_emitter_set(s, g, e >= 0 && (r->parts[e].emitters >> g & 1));
-    s->step = (uint64_t)llround((double)t_us * 1e-6 / s->cfg.step_s);
+    s->step = (uint64_t)llround((double)t_us * 1e-6 / s->model->cfg->step_s);
     rebuild_race(r, &s->race, t_us);
 }
 

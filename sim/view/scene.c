@@ -23,7 +23,7 @@ static void colour(uint32_t rgb, float a)
 void scene_camera(const sim_t *s, int cam, const scene_orbit_t *orbit, double eye[3], double target[3], double up[3])
 {
     const maze_t *m = s->maze;
-    double cell = s->cfg.cell_m, W = m->width * cell, H = m->height * cell;
+    double cell = s->model->cfg->cell_m, W = m->width * cell, H = m->height * cell;
     double x, y, h;
     world_pose(s->world, &x, &y, &h);
     double yaw, pitch, dist;
@@ -31,7 +31,7 @@ void scene_camera(const sim_t *s, int cam, const scene_orbit_t *orbit, double ey
     up[2] = 1;
     if (cam == SCENE_FOLLOW) {
         /* behind the robot, looking at its body centre */
-        target[0] = x, target[1] = y, target[2] = s->cfg.body_clearance_m + s->cfg.body_h_m / 2;
+        target[0] = x, target[1] = y, target[2] = s->model->cfg->body_clearance_m + s->model->cfg->body_h_m / 2;
         yaw = h + M_PI, pitch = 22 * M_PI / 180, dist = 0.32;
     } else if (cam == SCENE_TOP) {
         target[0] = x, target[1] = y, target[2] = 0;
@@ -130,7 +130,7 @@ static void wheel(double r, double w, double angle)
 static void floor_and_cells(const sim_t *s)
 {
     const maze_t *m = s->maze;
-    double cell = s->cfg.cell_m, W = m->width * cell, H = m->height * cell, pad = cell;
+    double cell = s->model->cfg->cell_m, W = m->width * cell, H = m->height * cell, pad = cell;
     glNormal3d(0, 0, 1);
     glBegin(GL_QUADS);
     colour(SCENE_FLOOR, 1);
@@ -149,7 +149,7 @@ static void floor_and_cells(const sim_t *s)
 static void walls(const sim_t *s)
 {
     const maze_t *m = s->maze;
-    const simcfg_t *c = &s->cfg;
+    const simcfg_t *c = s->model->cfg;
     double cell = c->cell_m, post = c->post_m, th = c->wall_thick_m, hh = c->wall_height_m;
     int cx = m->width % 2 == 0 ? m->width / 2 : -1, cy = m->height % 2 == 0 ? m->height / 2 : -1;
     int centre_post = world_has_centre_post(s->world);
@@ -173,7 +173,7 @@ static void walls(const sim_t *s)
 
 static void robot(const sim_t *s)
 {
-    const simcfg_t *c = &s->cfg;
+    const simcfg_t *c = s->model->cfg;
     double x, y, h;
     world_pose(s->world, &x, &y, &h);
     glPushMatrix();
@@ -185,9 +185,10 @@ static void robot(const sim_t *s)
         0xF0F0F0u, 0xF0F0F0u);
     for (int side = 0; side < 2; side++) {
         glPushMatrix();
-        glTranslated(side == WORLD_LEFT ? -c->wheel_x_m : c->wheel_x_m, c->axle_y_m, c->wheel_d_m / 2);
+        double r = s->model->wheel_r_m[side];
+        glTranslated(side == WORLD_LEFT ? -c->wheel_x_m : c->wheel_x_m, c->axle_y_m, r);
         /* hinge angle positive = forward roll: about -x in the robot frame */
-        wheel(c->wheel_d_m / 2, c->wheel_w_m, -world_wheel_angle(s->world, side));
+        wheel(r, c->wheel_w_m, -world_wheel_angle(s->world, side));
         glPopMatrix();
     }
     glPopMatrix();
@@ -222,12 +223,12 @@ static void rays(sim_t *s)
  * its model's cone_deg, as long as the ray along the axis reaches (the
  * first wall or post, else the model's max_m), in its emitter group's
  * colour. The ray query draws no noise and changes no state. */
-static void ir_beam(sim_t *s, const robot_part_t *p)
+static void ir_beam(sim_t *s, int part)
 {
     enum { SEG = 16 };
-    const ir_part_spec_t *sp = (const ir_part_spec_t *)p->spec;
+    const ir_part_spec_t *sp = (const ir_part_spec_t *)s->model->cfg->part[part].spec;
     double pos[3], ax[3], lf[3], up[3], n[3];
-    sensor_frame(s->world, p, pos, ax, lf, up);
+    sensor_frame(s->world, &s->model->pose[part], pos, ax, lf, up);
     double d = world_ray_normal(s->world, pos, ax, sp->model.max_m, n), len = d >= 0 ? d : sp->model.max_m;
     double r = len * tan(sp->model.cone_deg * M_PI / 180);
     int lit = sim_emitter(s, (unsigned)sp->emitter) != 0;
@@ -256,8 +257,8 @@ static void ir_beams(sim_t *s)
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);
     glLineWidth(2);
-    for (int i = 0; i < s->cfg.nparts; i++)
-        if (!strcmp(s->cfg.part[i].kind->name, "ir")) ir_beam(s, &s->cfg.part[i]);
+    for (int i = 0; i < s->model->cfg->nparts; i++)
+        if (!strcmp(s->model->cfg->part[i].kind->name, "ir")) ir_beam(s, i);
     glLineWidth(1);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
@@ -270,7 +271,7 @@ static void overlay(const sim_t *s, const scene_belief_t *b)
 {
     const maze_t *m = s->maze, *k = b->map;
     if (k->width != m->width || k->height != m->height) return;
-    double cell = s->cfg.cell_m, z = s->cfg.wall_height_m + 0.003;
+    double cell = s->model->cfg->cell_m, z = s->model->cfg->wall_height_m + 0.003;
     glDisable(GL_LIGHTING);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -353,7 +354,7 @@ void scene_draw(sim_t *s, int cam, const scene_orbit_t *orbit, const scene_belie
 void scene_draw_cells(const sim_t *s, const char *colours, const char *texts, size_t stride)
 {
     const maze_t *m = s->maze;
-    double cell = s->cfg.cell_m;
+    double cell = s->model->cfg->cell_m;
     glEnable(GL_DEPTH_TEST);
     glBegin(GL_QUADS);
     for (uint16_t k = 0; k < maze_cells(m); k++) {

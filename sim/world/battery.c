@@ -27,20 +27,20 @@ void battery_spec_default(battery_spec_t *s)
 
 void battery_init(battery_t *b, const battery_spec_t *s)
 {
-    b->spec = *s;
+    b->spec = s;
     b->drawn_c = 0.0;
 }
 
 double battery_soc(const battery_t *b)
 {
-    double cap_c = b->spec.capacity_mah * COULOMB_PER_MAH;
+    double cap_c = b->spec->capacity_mah * COULOMB_PER_MAH;
     double soc = cap_c > 0.0 ? 1.0 - b->drawn_c / cap_c : 1.0;
     return soc < 0.0 ? 0.0 : soc > 1.0 ? 1.0 : soc;
 }
 
 double battery_ocv(const battery_t *b)
 {
-    const battery_spec_t *s = &b->spec;
+    const battery_spec_t *s = b->spec;
     if (s->ocv_n <= 1) return s->ocv_v[0];
     double x = battery_soc(b) * (s->ocv_n - 1);
     int i = (int)x;
@@ -51,7 +51,7 @@ double battery_ocv(const battery_t *b)
 
 double battery_voltage(battery_t *b, double current_a)
 {
-    return battery_ocv(b) - b->spec.r_ohm * current_a;
+    return battery_ocv(b) - b->spec->r_ohm * current_a;
 }
 
 void battery_draw(battery_t *b, double current_a, double dt_s)

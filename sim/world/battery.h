@@ -27,7 +27,7 @@ typedef struct {
 } battery_spec_t;
 
 typedef struct {
-    battery_spec_t spec;
+    const battery_spec_t *spec;      /* battery_init's (the caller's: it outlives the battery) */
     double drawn_c;                  /* charge drawn since full, coulombs */
 } battery_t;
 

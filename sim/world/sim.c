@@ -1,4 +1,4 @@
-/* sim.c - the contest loop around the world (see sim.h). */
+/* sim.c - one run's state stepped through its model (see sim.h). */
 #include "sim.h"
 
 #include <math.h>
@@ -15,27 +15,12 @@ static double start_heading(uint8_t d)
     return a[d & 3];
 }
 
-/* This robot's asymmetries: the configured ones plus the per-seed
- * variation's draws (config [variation]; one stream, drawn in this order). */
-static void vary(simcfg_t *c, uint64_t seed)
-{
-    rng_t r;
-    rng_init(&r, seed, RNG_STREAM_VARIATION);
-    double g[5];
-    for (int i = 0; i < 5; i++) g[i] = rng_gauss(&r);
-    c->wheel_d_diff_m += c->wheel_d_sigma_m * g[0];
-    c->motor_k_diff_pct += c->motor_k_sigma_pct * g[1];
-    c->tyre_mu_diff += c->tyre_mu_sigma * g[2];
-    c->com_x_m += c->com_sigma_m * g[3];
-    c->com_y_m += c->com_sigma_m * g[4];
-}
-
 static sensor_ctx_t ctx(const sim_t *s)
 {
     sensor_ctx_t x;
     double v;
     x.world = s->world;
-    x.cfg = &s->cfg;
+    x.model = s->model;
     x.step = s->step;
     x.t_s = sim_time_s(s);
     x.emitter = s->emitter;
@@ -46,7 +31,7 @@ static sensor_ctx_t ctx(const sim_t *s)
 /* The sensors' states, each from its kind; ToF sensors also the HAL's. */
 static int parts_init(sim_t *s, uint64_t seed)
 {
-    const simcfg_t *c = &s->cfg;
+    const simcfg_t *c = s->model->cfg;
     s->ntof = 0;
     s->tof_range_m = 1.2;
     for (int i = 0; i < c->nparts; i++) {
@@ -59,7 +44,7 @@ static int parts_init(sim_t *s, uint64_t seed)
         }
         s->part_state[i] = calloc(1, k->state_size);
         if (!s->part_state[i]) return -1;
-        k->init(s->part_state[i], p, c, seed, kind_index, n);
+        k->init(s->part_state[i], p, s->model, seed, kind_index, n);
         if (k == sensor_kind("tof") && s->ntof < WORLD_TOF_COUNT) {
             if (s->ntof == 0) s->tof_range_m = ((const tof_spec_t *)p->spec)->range_m;
             s->tof_part[s->ntof++] = i;
@@ -79,27 +64,29 @@ static void tof_mirror(sim_t *s)
     }
 }
 
-int sim_init(sim_t *s, const simcfg_t *cfg, const maze_t *m, uint64_t seed)
+int sim_init(sim_t *s, const simcfg_t *c, const maze_t *m, uint64_t seed)
 {
-    simcfg_t robot = *cfg;
-    const simcfg_t *c = &robot;
-    vary(&robot, seed);
-    double cell = c->cell_m;
+    sim_model_t *model = malloc(sizeof *model);
     memset(s->part_state, 0, sizeof s->part_state);
-    s->cfg = robot;
+    s->world = NULL;
+    s->model = model;
+    if (!model) return -1;
+    sim_model_build(model, c, seed);
+    double cell = c->cell_m;
     s->maze = m;
     s->seed = seed;
     double h = start_heading(m->start_heading), back = 0; /* m behind the cell's centre */
-    if (c->start == ROBOT_START_BACK_TO_WALL) back = cell / 2 - c->wall_thick_m / 2 - c->body_l_m / 2 - ROBOT_START_GAP_M;
-    s->world = world_create(c, m, (maze_x(m, m->start) + 0.5) * cell - back * cos(h),
+    if (model->start == ROBOT_START_BACK_TO_WALL) back = cell / 2 - c->wall_thick_m / 2 - c->body_l_m / 2 - ROBOT_START_GAP_M;
+    s->world = world_create(model, m, (maze_x(m, m->start) + 0.5) * cell - back * cos(h),
                             (maze_y(m, m->start) + 0.5) * cell - back * sin(h), h);
-    if (!s->world) return -1;
+    if (!s->world) {
+        sim_free(s);
+        return -1;
+    }
     battery_init(&s->battery, &c->battery);
     for (int i = 0; i < 2; i++) {
         const drive_spec_t *d = &c->drive[i];
-        /* right minus left, in per cent of the mean */
-        motor_init(&s->motor[i], d, battery_ocv(&s->battery), c->battery.r_ohm,
-                   1.0 + (i == WORLD_LEFT ? -0.005 : 0.005) * c->motor_k_diff_pct);
+        motor_init(&s->motor[i], d, battery_ocv(&s->battery), c->battery.r_ohm, model->motor_k_scale[i]);
         encoder_init(&s->encoder[i], d->encoder_ppr * d->gear_ratio, world_wheel_angle(s->world, i));
         s->cmd[i] = 0;
     }
@@ -126,13 +113,15 @@ void sim_free(sim_t *s)
 {
     world_destroy(s->world);
     s->world = NULL;
+    free((void *)s->model); /* sim_init's */
+    s->model = NULL;
     for (int i = 0; i < ROBOT_MAX_PARTS; i++) {
         free(s->part_state[i]);
         s->part_state[i] = NULL;
     }
 }
 
-double sim_time_s(const sim_t *s) { return (double)s->step * s->cfg.step_s; }
+double sim_time_s(const sim_t *s) { return (double)s->step * s->model->cfg->step_s; }
 
 /* The battery: each motor sees the open-circuit voltage less the other
  * motor's share of the sag (its own is solved in its circuit, motor.c);
@@ -145,13 +134,13 @@ static void battery_step(sim_t *s, double dt)
 {
     double i_in[2] = { bridge_in_a(&s->motor[0]), bridge_in_a(&s->motor[1]) };
     battery_draw(&s->battery, i_in[0] + i_in[1], dt);
-    double ocv = battery_ocv(&s->battery), r = s->cfg.battery.r_ohm;
+    double ocv = battery_ocv(&s->battery), r = s->model->cfg->battery.r_ohm;
     for (int i = 0; i < 2; i++) s->motor[i].battery_v = ocv - r * i_in[1 - i];
 }
 
 void sim_step(sim_t *s)
 {
-    double dt = s->cfg.step_s;
+    double dt = s->model->cfg->step_s;
     if (s->diverged) return;
     motor_drive_t d[2];
     for (int i = 0; i < 2; i++) d[i] = motor_drive(&s->motor[i], s->cmd[i], world_wheel_rate(s->world, i), dt);
@@ -166,15 +155,15 @@ void sim_step(sim_t *s)
     battery_step(s, dt);
     sensor_ctx_t x = ctx(s);
     for (int i = 0; i < s->ntof; i++) ((tof_state_t *)s->part_state[s->tof_part[i]])->enabled = s->tof_enabled;
-    for (int i = 0; i < s->cfg.nparts; i++)
-        if (s->cfg.part[i].kind->step) s->cfg.part[i].kind->step(s->part_state[i], &s->cfg.part[i], &x);
+    for (int i = 0; i < s->model->cfg->nparts; i++)
+        if (s->model->cfg->part[i].kind->step) s->model->cfg->part[i].kind->step(s->part_state[i], &s->model->cfg->part[i], &x);
     tof_mirror(s);
     double px, py, h;
     world_pose(s->world, &px, &py, &h);
     race_update(&s->race, sim_time_s(s), px, py);
 }
 
-int sim_ir_count(const sim_t *s) { return (int)robot_count(&s->cfg, "ir"); }
+int sim_ir_count(const sim_t *s) { return (int)robot_count(s->model->cfg, "ir"); }
 
 void sim_emitter_set(sim_t *s, unsigned group, int on)
 {
@@ -185,16 +174,16 @@ int sim_emitter(const sim_t *s, unsigned group) { return group < SIM_EMITTER_GRO
 
 unsigned sim_ir_read(sim_t *s, unsigned i)
 {
-    int k = robot_part_of_kind(&s->cfg, "ir", i);
+    int k = robot_part_of_kind(s->model->cfg, "ir", i);
     if (k < 0) return 0;
     sensor_ctx_t x = ctx(s);
-    return (unsigned)ir_sample(s->part_state[k], &s->cfg.part[k], &x);
+    return (unsigned)ir_sample(s->part_state[k], &s->model->cfg->part[k], &x);
 }
 
 int sim_ir_occlude(sim_t *s, int side, double d_m, double dur_s)
 {
-    for (int k = 0; k < s->cfg.nparts; k++) {
-        const robot_part_t *p = &s->cfg.part[k];
+    for (int k = 0; k < s->model->cfg->nparts; k++) {
+        const robot_part_t *p = &s->model->cfg->part[k];
         if (strcmp(p->kind->name, "ir") != 0 || fabs(p->yaw_deg) > 30 || (side ? p->x_m <= 0 : p->x_m >= 0)) continue;
         ir_state_t *st = s->part_state[k];
         st->object_m = d_m;
@@ -204,11 +193,11 @@ int sim_ir_occlude(sim_t *s, int side, double d_m, double dur_s)
     return -1;
 }
 
-int sim_has_gyro(const sim_t *s) { return robot_count(&s->cfg, "gyro") > 0; }
+int sim_has_gyro(const sim_t *s) { return robot_count(s->model->cfg, "gyro") > 0; }
 
 double sim_gyro_rad_s(const sim_t *s)
 {
-    int k = robot_part_of_kind(&s->cfg, "gyro", 0);
+    int k = robot_part_of_kind(s->model->cfg, "gyro", 0);
     return k < 0 ? 0.0 : ((const gyro_t *)s->part_state[k])->held_rad_s;
 }
 
@@ -216,19 +205,19 @@ double sim_battery_v(const sim_t *s)
 {
     /* the terminal voltage: the open-circuit voltage less the sag of both motors' input currents */
     double i_in = bridge_in_a(&s->motor[0]) + bridge_in_a(&s->motor[1]);
-    return battery_ocv(&s->battery) - s->cfg.battery.r_ohm * i_in;
+    return battery_ocv(&s->battery) - s->model->cfg->battery.r_ohm * i_in;
 }
 
 void sim_tof_origin(const sim_t *s, int i, double pos_m[3], double *dir_rad)
 {
     double axis[3], left[3], up[3];
-    sensor_frame(s->world, &s->cfg.part[s->tof_part[i]], pos_m, axis, left, up);
+    sensor_frame(s->world, &s->model->pose[s->tof_part[i]], pos_m, axis, left, up);
     *dir_rad = atan2(axis[1], axis[0]);
 }
 
 int sim_part_values(const sim_t *s, int i, double v[4])
 {
-    if (i < 0 || i >= s->cfg.nparts) return 0;
+    if (i < 0 || i >= s->model->cfg->nparts) return 0;
     sensor_ctx_t x = ctx(s);
-    return s->cfg.part[i].kind->read(s->part_state[i], &s->cfg.part[i], &x, v);
+    return s->model->cfg->part[i].kind->read(s->part_state[i], &s->model->cfg->part[i], &x, v);
 }

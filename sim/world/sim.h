@@ -1,5 +1,6 @@
-/* sim.h - one simulated contest: the ODE world, both motors and encoders,
- * the three ToF sensors at their update periods, the contest timers.
+/* sim.h - one run's state, stepped through its const model (model.h): the
+ * ODE world, both motors and encoders, every sensor's state (the ToF
+ * sensors at their update periods), the contest timers.
  * Time is simulation time only; every noise source has its own stream
  * seeded from the run's seed, so the same inputs give the same run. */
 #ifndef SIM_H
@@ -10,6 +11,7 @@
 #include "config.h"
 #include "encoder.h"
 #include "maze.h"
+#include "model.h"
 #include "motor.h"
 #include "race.h"
 #include "world/sensors/tof.h"
@@ -19,8 +21,10 @@
 
 #define SIM_EMITTER_GROUPS 4
 
+/* A run's state: all that changes as it steps. The robot and world it
+ * simulates are the const model it points to. */
 typedef struct sim_s {
-    simcfg_t cfg;
+    const sim_model_t *model; /* built by sim_init, freed by sim_free */
     const maze_t *maze;
     uint64_t seed;
     world_t *world;
@@ -33,7 +37,7 @@ typedef struct sim_s {
      * and the link name them: left, front, right. A copy of their state
      * after each step; WORLD_TOF_COUNT slots, ntof used. */
     int ntof;
-    int tof_part[WORLD_TOF_COUNT];     /* index in cfg.part */
+    int tof_part[WORLD_TOF_COUNT];     /* index in model->cfg->part */
     tof_reading_t tof_last[WORLD_TOF_COUNT];
     double tof_true_m[WORLD_TOF_COUNT]; /* ray distance behind the last reading, -1 none */
     uint32_t tof_count[WORLD_TOF_COUNT]; /* readings taken */
@@ -45,8 +49,9 @@ typedef struct sim_s {
     int diverged;            /* the physics diverged (world_sane): sim_step no longer steps */
 } sim_t;
 
-/* Place the robot in the start cell's centre facing the start heading.
- * Returns 0, or -1 if ODE could not be set up. */
+/* The model of config c (which must outlive the run) for this seed
+ * (sim_model_build), and the robot placed in the start cell facing the
+ * start heading. Returns 0, or -1 if ODE could not be set up. */
 int sim_init(sim_t *s, const simcfg_t *c, const maze_t *m, uint64_t seed);
 void sim_free(sim_t *s);
 /* One physics step: motor currents from the commands, ODE step, encoders,
@@ -56,7 +61,7 @@ void sim_free(sim_t *s);
 void sim_step(sim_t *s);
 double sim_time_s(const sim_t *s);
 
-/* The robot's other sensors (robot file components; issue 17). IR sensors
+/* The robot's other sensors (robot file components). IR sensors
  * count in the robot file's order; emitter groups 0..SIM_EMITTER_GROUPS-1
  * start off. sim_ir_read samples sensor i's ADC now, with the emitters as
  * they are (0..1023; 0 past the count). The gyro's z rate (rad/s, CCW

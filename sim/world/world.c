@@ -18,7 +18,7 @@
 #define WORLD_STICTION_RAD_S 1.0 /* wheel speed below which the gearbox friction is a stiction row, rad/s */
 
 struct world {
-    simcfg_t cfg;
+    const sim_model_t *model; /* the caller's: outlives the world */
     dWorldID world;
     dSpaceID top, statics, robot;
     dJointGroupID contacts;
@@ -27,7 +27,6 @@ struct world {
     dJointID hinge[2];
     dJointID friction[2];  /* the gearbox's stiction on each wheel (an angular motor, target speed 0) */
     dJointID lift, lock[2]; /* world_lift: chassis held above the floor, wheels locked */
-    double tyre_mu[2];     /* each tyre's static friction (asymmetry) */
     double box_offset[3];  /* chassis box centre in the chassis body frame */
     double com[3];         /* chassis centre of mass in the robot frame (world_place) */
     int touching, touched_last;
@@ -40,7 +39,7 @@ static int ode_ready;
 
 static dGeomID static_box(world_t *w, double x, double y, double lx, double ly)
 {
-    double h = w->cfg.wall_height_m;
+    double h = w->model->cfg->wall_height_m;
     dGeomID g = dCreateBox(w->statics, lx, ly, h);
     dGeomSetPosition(g, x, y, h / 2);
     dGeomSetCategoryBits(g, CAT_STATIC);
@@ -50,7 +49,8 @@ static dGeomID static_box(world_t *w, double x, double y, double lx, double ly)
 
 static void build_maze(world_t *w, const maze_t *m)
 {
-    double cell = w->cfg.cell_m, post = w->cfg.post_m, thick = w->cfg.wall_thick_m;
+    const simcfg_t *cf = w->model->cfg;
+    double cell = cf->cell_m, post = cf->post_m, thick = cf->wall_thick_m;
     int cx = m->width % 2 == 0 ? m->width / 2 : -1, cy = m->height % 2 == 0 ? m->height / 2 : -1;
     for (int py = 0; py <= m->height; py++)
         for (int px = 0; px <= m->width; px++) {
@@ -79,116 +79,160 @@ static void frame_point(double x, double y, double heading, const double p[3], d
     out[2] = p[2];
 }
 
-static void build_robot(world_t *w, double x, double y, double heading)
+/* The chassis' mass: the body box (its own yaw inertia if the robot file
+ * gives one; its centre of mass where the model puts it) and the casters,
+ * as spheres. com gets the combined centre of mass in the chassis frame
+ * and mb is moved to it: ODE wants the centre of mass at the body's origin. */
+static void chassis_mass(const world_t *w, dMass *mb, double com[3])
 {
-    const simcfg_t *c = &w->cfg;
-    double rw = c->wheel_d_m / 2;
-    double box_p[3] = { 0, 0, c->body_clearance_m + c->body_h_m / 2 };
-    double caster_p[3] = { 0, c->caster_y_m, c->caster_r_m };
-    dMass mb, mc;
-    dMatrix3 rot;
-
-    /* chassis = box + caster sphere; ODE wants the centre of mass at the
-     * body origin, so the body sits at the combined centre of mass and the
-     * geoms are offset from it */
-    dMassSetBoxTotal(&mb, c->body_mass_kg, c->body_w_m, c->body_l_m, c->body_h_m);
-    /* a body whose mass is not spread as a uniform box: its own yaw inertia */
-    if (c->body_yaw_inertia_kgm2 > 0) mb.I[2 * 4 + 2] = c->body_yaw_inertia_kgm2;
-    /* the body's mass may sit off its geometric centre (asymmetry) */
-    dMassTranslate(&mb, box_p[0] + c->com_x_m, box_p[1] + c->com_y_m + c->body_com_y_m, box_p[2]);
-    dMassSetSphereTotal(&mc, c->caster_mass_kg, c->caster_r_m);
-    dMassTranslate(&mc, caster_p[0], caster_p[1], caster_p[2]);
-    dMassAdd(&mb, &mc);
-    double caster2_p[3] = { 0, c->caster2_y_m, c->caster_r_m };
-    if (c->casters > 1) { /* a second skid, as the first */
+    const simcfg_t *c = w->model->cfg;
+    const double *bc = w->model->body_com_m;
+    dMass mc;
+    dMassSetBoxTotal(mb, c->body_mass_kg, c->body_w_m, c->body_l_m, c->body_h_m);
+    if (c->body_yaw_inertia_kgm2 > 0) mb->I[2 * 4 + 2] = c->body_yaw_inertia_kgm2;
+    dMassTranslate(mb, bc[0], bc[1], bc[2]);
+    for (int k = 0; k < w->model->casters && k < 2; k++) {
         dMassSetSphereTotal(&mc, c->caster_mass_kg, c->caster_r_m);
-        dMassTranslate(&mc, caster2_p[0], caster2_p[1], caster2_p[2]);
-        dMassAdd(&mb, &mc);
+        dMassTranslate(&mc, 0, k == 0 ? c->caster_y_m : c->caster2_y_m, c->caster_r_m);
+        dMassAdd(mb, &mc);
     }
-    double com[3] = { mb.c[0], mb.c[1], mb.c[2] }, com_w[3];
-    dMassTranslate(&mb, -com[0], -com[1], -com[2]);
-    frame_point(x, y, heading, com, com_w);
+    for (int k = 0; k < 3; k++) com[k] = mb->c[k];
+    dMassTranslate(mb, -com[0], -com[1], -com[2]);
+}
+
+/* A skid: a sphere on the chassis at y_m along it, touching the floor. */
+static dGeomID caster_geom(world_t *w, double y_m)
+{
+    double r = w->model->cfg->caster_r_m;
+    dGeomID g = dCreateSphere(w->robot, r);
+    dGeomSetBody(g, w->chassis);
+    dGeomSetOffsetPosition(g, 0 - w->com[0], y_m - w->com[1], r - w->com[2]);
+    dGeomSetCategoryBits(g, CAT_ROBOT);
+    dGeomSetCollideBits(g, CAT_STATIC | CAT_FLOOR);
+    return g;
+}
+
+/* The chassis: one body at the combined centre of mass, the body box and
+ * the casters as its geoms, offset from it. */
+static void build_chassis(world_t *w, double x, double y, double heading)
+{
+    const simcfg_t *c = w->model->cfg;
+    double box_z = c->body_clearance_m + c->body_h_m / 2, com_w[3];
+    dMass mb;
+    dMatrix3 rot;
+    chassis_mass(w, &mb, w->com);
+    frame_point(x, y, heading, w->com, com_w);
     dRFromAxisAndAngle(rot, 0, 0, 1, heading - M_PI / 2);
     w->chassis = dBodyCreate(w->world);
     dBodySetMass(w->chassis, &mb);
     dBodySetPosition(w->chassis, com_w[0], com_w[1], com_w[2]);
     dBodySetRotation(w->chassis, rot);
-    for (int k = 0; k < 3; k++) w->box_offset[k] = box_p[k] - com[k];
-    for (int k = 0; k < 3; k++) w->com[k] = com[k];
+    w->box_offset[0] = 0 - w->com[0];
+    w->box_offset[1] = 0 - w->com[1];
+    w->box_offset[2] = box_z - w->com[2];
 
     w->box = dCreateBox(w->robot, c->body_w_m, c->body_l_m, c->body_h_m);
     dGeomSetBody(w->box, w->chassis);
     dGeomSetOffsetPosition(w->box, w->box_offset[0], w->box_offset[1], w->box_offset[2]);
-    w->caster = dCreateSphere(w->robot, c->caster_r_m);
-    dGeomSetBody(w->caster, w->chassis);
-    dGeomSetOffsetPosition(w->caster, caster_p[0] - com[0], caster_p[1] - com[1], caster_p[2] - com[2]);
-    w->caster2 = NULL;
-    if (c->casters > 1) {
-        w->caster2 = dCreateSphere(w->robot, c->caster_r_m);
-        dGeomSetBody(w->caster2, w->chassis);
-        dGeomSetOffsetPosition(w->caster2, caster2_p[0] - com[0], caster2_p[1] - com[1], caster2_p[2] - com[2]);
-        dGeomSetCategoryBits(w->caster2, CAT_ROBOT);
-        dGeomSetCollideBits(w->caster2, CAT_STATIC | CAT_FLOOR);
-    }
+    dGeomSetCategoryBits(w->box, CAT_ROBOT);
+    dGeomSetCollideBits(w->box, CAT_STATIC | CAT_FLOOR);
+    w->caster = caster_geom(w, c->caster_y_m);
+    w->caster2 = w->model->casters > 1 ? caster_geom(w, c->caster2_y_m) : NULL;
+}
 
+/* Where wheel s's centre is in the chassis frame (its own radius above
+ * the floor). */
+static void wheel_point(const world_t *w, int s, double p[3])
+{
+    const simcfg_t *c = w->model->cfg;
+    p[0] = s == WORLD_LEFT ? -c->wheel_x_m : c->wheel_x_m;
+    p[1] = c->axle_y_m;
+    p[2] = w->model->wheel_r_m[s];
+}
+
+/* A wheel's orientation for a robot facing heading, turned by angle_rad
+ * about its axle (positive = forward): a cylinder's axis is its z, turned
+ * to point along the robot's x (NULL: as built). */
+static void wheel_rotation(double heading, const double *angle_rad, dMatrix3 out)
+{
+    dMatrix3 rot, r2, r3, spin;
+    dRFromAxisAndAngle(rot, 0, 0, 1, heading - M_PI / 2);
+    dRFromAxisAndAngle(r2, 0, 1, 0, M_PI / 2);
+    dMultiply0(angle_rad ? r3 : out, rot, r2, 3, 3, 3);
+    if (!angle_rad) return;
+    dRFromAxisAndAngle(spin, 0, 0, 1, -*angle_rad); /* hinge angles count the other way */
+    dMultiply0(out, r3, spin, 3, 3, 3);
+}
+
+/* A wheel's body: a cylinder's mass (and the motor's rotor, reflected
+ * through the gearbox as J * N^2) at its centre. */
+static void wheel_body(world_t *w, int s, const double at_w[3], double heading)
+{
+    const simcfg_t *c = w->model->cfg;
+    const drive_spec_t *dr = &c->drive[s];
+    dMass m;
+    dMatrix3 r;
+    w->wheel[s] = dBodyCreate(w->world);
+    /* cylinder axis along z: the mass is set in the wheel frame */
+    dMassSetCylinderTotal(&m, c->wheel_mass_kg, 3, w->model->wheel_r_m[s], c->wheel_w_m);
+    if (dr->rotor_inertia_kgm2 > 0 && w->model->motor_model[s] != MOTOR_MODEL_PAPER)
+        m.I[2 * 4 + 2] += dr->rotor_inertia_kgm2 * dr->gear_ratio * dr->gear_ratio;
+    dBodySetMass(w->wheel[s], &m);
+    dBodySetPosition(w->wheel[s], at_w[0], at_w[1], at_w[2]);
+    wheel_rotation(heading, NULL, r);
+    dBodySetRotation(w->wheel[s], r);
+}
+
+/* A wheel's geoms. The tyre touches the floor as a sphere of the wheel's
+ * radius: one contact on the wheel's centre plane, as a rounded tyre. A
+ * flat cylinder touches with one rim edge or the other as the chassis
+ * rolls a little, which moves the effective track between 88 and 104 mm
+ * and makes in-place turns miss by up to 9 degrees. Against walls and
+ * posts the wheel is its real cylinder. */
+static void wheel_geoms(world_t *w, int s)
+{
+    double r = w->model->wheel_r_m[s];
+    w->wheel_geom[s] = dCreateSphere(w->robot, r);
+    dGeomSetBody(w->wheel_geom[s], w->wheel[s]);
+    dGeomSetCategoryBits(w->wheel_geom[s], CAT_TYRE);
+    dGeomSetCollideBits(w->wheel_geom[s], CAT_FLOOR);
+    w->wheel_side[s] = dCreateCylinder(w->robot, r, w->model->cfg->wheel_w_m);
+    dGeomSetBody(w->wheel_side[s], w->wheel[s]);
+    dGeomSetCategoryBits(w->wheel_side[s], CAT_WHEEL_SIDE);
+    dGeomSetCollideBits(w->wheel_side[s], CAT_STATIC);
+}
+
+/* A wheel's joints to the chassis: the hinge on the axle at anchor_w
+ * (its motor row off until world_step drives it) and the gearbox's
+ * stiction, an angular motor held at speed 0. */
+static void wheel_joints(world_t *w, int s, const double anchor_w[3])
+{
+    const dReal *ax = dBodyGetRotation(w->chassis); /* robot x axis in the world: column 0 */
+    w->hinge[s] = dJointCreateHinge(w->world, 0);
+    dJointAttach(w->hinge[s], w->chassis, w->wheel[s]);
+    dJointSetHingeAnchor(w->hinge[s], anchor_w[0], anchor_w[1], anchor_w[2]);
+    dJointSetHingeAxis(w->hinge[s], ax[0], ax[4], ax[8]);
+    dJointSetHingeParam(w->hinge[s], dParamFMax, 0);
+    w->friction[s] = dJointCreateAMotor(w->world, 0);
+    dJointAttach(w->friction[s], w->chassis, w->wheel[s]);
+    dJointSetAMotorNumAxes(w->friction[s], 1);
+    dJointSetAMotorAxis(w->friction[s], 0, 1, 1, 0, 0); /* the axle, in the chassis' frame */
+    dJointSetAMotorParam(w->friction[s], dParamVel, 0);
+    dJointSetAMotorParam(w->friction[s], dParamFMax, 0);
+}
+
+/* The robot for a body centre at (x, y) facing heading: the chassis, then
+ * each wheel on its hinge. */
+static void build_robot(world_t *w, double x, double y, double heading)
+{
+    build_chassis(w, x, y, heading);
     for (int s = 0; s < 2; s++) {
-        /* each wheel's own diameter (asymmetry: right minus left) */
-        /* the robot file's right-minus-left diameter plus the config's asymmetry */
-        double diff = c->wheel_d_diff_m + (c->wheel_right_d_m - c->wheel_left_d_m);
-        double rs = rw + (s == WORLD_LEFT ? -0.25 : 0.25) * diff;
-        double wp[3] = { s == WORLD_LEFT ? -c->wheel_x_m : c->wheel_x_m, c->axle_y_m, rs }, ww[3];
-        dMass m;
-        dMatrix3 r2, r3;
+        double wp[3], ww[3];
+        wheel_point(w, s, wp);
         frame_point(x, y, heading, wp, ww);
-        w->wheel[s] = dBodyCreate(w->world);
-        /* cylinder axis along z: the mass is set in the wheel frame, then
-         * the body is turned so that z points along the robot's x */
-        dMassSetCylinderTotal(&m, c->wheel_mass_kg, 3, rs, c->wheel_w_m);
-        const drive_spec_t *dr = &c->drive[s];
-        if (dr->rotor_inertia_kgm2 > 0 && dr->motor_model != MOTOR_MODEL_PAPER) /* rotor inertia reflected through the gearbox: J * N^2 */
-            m.I[2 * 4 + 2] += dr->rotor_inertia_kgm2 * dr->gear_ratio * dr->gear_ratio;
-        dBodySetMass(w->wheel[s], &m);
-        dBodySetPosition(w->wheel[s], ww[0], ww[1], ww[2]);
-        dRFromAxisAndAngle(r2, 0, 1, 0, M_PI / 2);
-        dMultiply0(r3, rot, r2, 3, 3, 3);
-        dBodySetRotation(w->wheel[s], r3);
-        /* the tyre touches the floor as a sphere of the wheel's radius: one
-         * contact on the wheel's centre plane, as a rounded tyre. A flat
-         * cylinder touches with one rim edge or the other as the chassis
-         * rolls a little, which moved the effective track between 88 and
-         * 104 mm and made in-place turns miss by up to 9 degrees. The
-         * wheel's mass and inertia stay those of a cylinder. */
-        w->wheel_geom[s] = dCreateSphere(w->robot, rs);
-        dGeomSetBody(w->wheel_geom[s], w->wheel[s]);
-        /* ...but against walls and posts the wheel is its real cylinder */
-        w->wheel_side[s] = dCreateCylinder(w->robot, rs, c->wheel_w_m);
-        dGeomSetBody(w->wheel_side[s], w->wheel[s]);
-
-        const dReal *ax = dBodyGetRotation(w->chassis); /* robot x axis in the world: column 0 */
-        w->hinge[s] = dJointCreateHinge(w->world, 0);
-        dJointAttach(w->hinge[s], w->chassis, w->wheel[s]);
-        dJointSetHingeAnchor(w->hinge[s], ww[0], ww[1], ww[2]);
-        dJointSetHingeAxis(w->hinge[s], ax[0], ax[4], ax[8]);
-        dJointSetHingeParam(w->hinge[s], dParamFMax, 0); /* the motor row: off until world_step drives it */
-        w->friction[s] = dJointCreateAMotor(w->world, 0);
-        dJointAttach(w->friction[s], w->chassis, w->wheel[s]);
-        dJointSetAMotorNumAxes(w->friction[s], 1);
-        dJointSetAMotorAxis(w->friction[s], 0, 1, 1, 0, 0); /* the axle, in the chassis' frame */
-        dJointSetAMotorParam(w->friction[s], dParamVel, 0);
-        dJointSetAMotorParam(w->friction[s], dParamFMax, 0);
-        w->tyre_mu[s] = c->tyre_mu + (s == WORLD_LEFT ? -0.5 : 0.5) * c->tyre_mu_diff;
-        if (w->tyre_mu[s] < 0.01) w->tyre_mu[s] = 0.01;
-    }
-    dGeomID parts[2] = { w->box, w->caster };
-    for (int k = 0; k < 2; k++) {
-        dGeomSetCategoryBits(parts[k], CAT_ROBOT);
-        dGeomSetCollideBits(parts[k], CAT_STATIC | CAT_FLOOR);
-    }
-    for (int k = 0; k < 2; k++) {
-        dGeomSetCategoryBits(w->wheel_geom[k], CAT_TYRE);
-        dGeomSetCollideBits(w->wheel_geom[k], CAT_FLOOR);
-        dGeomSetCategoryBits(w->wheel_side[k], CAT_WHEEL_SIDE);
-        dGeomSetCollideBits(w->wheel_side[k], CAT_STATIC);
+        wheel_body(w, s, ww, heading);
+        wheel_geoms(w, s);
+        wheel_joints(w, s, ww);
     }
 }
 
@@ -204,7 +248,7 @@ static void ode_message(int num, const char *msg, va_list ap)
     (void)ap;
 }
 
-world_t *world_create(const simcfg_t *c, const maze_t *m, double x_m, double y_m, double heading_rad)
+world_t *world_create(const sim_model_t *model, const maze_t *m, double x_m, double y_m, double heading_rad)
 {
     if (!ode_ready) {
         dSetMessageHandler(ode_message);
@@ -216,10 +260,11 @@ world_t *world_create(const simcfg_t *c, const maze_t *m, double x_m, double y_m
     /* quickstep shuffles constraints with ODE's global PRNG: reseed it so
      * every world steps the same way, whatever ran before it */
     dRandSetSeed(1);
-    w->cfg = *c;
+    const simcfg_t *c = model->cfg;
+    w->model = model;
     w->world = dWorldCreate();
     dWorldSetGravity(w->world, 0, 0, -9.81);
-    dWorldSetQuickStepNumIterations(w->world, (int)c->solver_iterations);
+    dWorldSetQuickStepNumIterations(w->world, model->solver_iterations);
     dWorldSetCFM(w->world, 1e-6); /* joints (hinges): near rigid */
     dWorldSetERP(w->world, 0.4);  /* joint drift corrected in ~2 steps */
     w->top = dSimpleSpaceCreate(0);
@@ -269,7 +314,7 @@ static unsigned contact_kind(const world_t *w, dGeomID a, const dReal *p)
     if (a != w->box) return a == w->caster || a == w->caster2 ? 1u << WORLD_CONTACT_FRONT : 1u << WORLD_CONTACT_SIDE;
     dVector3 q;
     dBodyGetPosRelPoint(w->chassis, p[0], p[1], p[2], q);
-    double y = q[1] + w->com[1], half = w->cfg.body_l_m / 2, edge = 0.002; /* m */
+    double y = q[1] + w->com[1], half = w->model->cfg->body_l_m / 2, edge = 0.002; /* m */
     if (y > half - edge) return 1u << WORLD_CONTACT_FRONT;
     if (y >= -half + edge) return 1u << WORLD_CONTACT_SIDE;
     double v, om;
@@ -295,7 +340,7 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
         w->step_kinds |= contact_kind(w, a, c[0].geom.pos);
     }
     for (int i = 0; i < n; i++) {
-        double mu = w->cfg.body_wall_mu;
+        double mu = w->model->cfg->body_wall_mu;
         if (a == w->caster || a == w->caster2) {
             mu = 0.0; /* the paper's caster: frictionless */
         } else if (!wall && (a == w->wheel_geom[0] || a == w->wheel_geom[1])) {
@@ -303,8 +348,7 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
             dBodyGetPointVel(dGeomGetBody(a), c[i].geom.pos[0], c[i].geom.pos[1], c[i].geom.pos[2], v);
             double slip = hypot(v[0], v[1]);
             int side = a == w->wheel_geom[WORLD_LEFT] ? WORLD_LEFT : WORLD_RIGHT;
-            /* the dynamic friction keeps its ratio to the static one */
-            mu = slip > w->cfg.tyre_slip_m_s ? w->tyre_mu[side] * w->cfg.tyre_mu_dynamic / w->cfg.tyre_mu : w->tyre_mu[side];
+            mu = slip > w->model->cfg->tyre_slip_m_s ? w->model->tyre_mu_dynamic[side] : w->model->tyre_mu[side];
         }
         c[i].surface.mode = dContactApprox1 | dContactSoftERP | dContactSoftCFM;
         if (!wall && (a == w->wheel_geom[0] || a == w->wheel_geom[1])) {
@@ -319,8 +363,8 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
             c[i].fdir1[2] = 0;
         }
         c[i].surface.mu = mu;
-        c[i].surface.soft_erp = w->cfg.contact_erp;
-        c[i].surface.soft_cfm = w->cfg.contact_cfm;
+        c[i].surface.soft_erp = w->model->cfg->contact_erp;
+        c[i].surface.soft_cfm = w->model->cfg->contact_cfm;
         dJointID j = dJointCreateContact(w->world, w->contacts, &c[i]);
         dJointAttach(j, dGeomGetBody(c[i].geom.g1), dGeomGetBody(c[i].geom.g2));
     }
@@ -372,8 +416,8 @@ void world_step(world_t *w, const motor_drive_t drive[2])
     w->touching = 0;
     w->step_kinds = 0;
     dSpaceCollide(w->top, w, near_cb);
-    if (w->cfg.solver == SIM_SOLVER_EXACT) dWorldStep(w->world, w->cfg.step_s);
-    else dWorldQuickStep(w->world, w->cfg.step_s);
+    if (w->model->solver == SIM_SOLVER_EXACT) dWorldStep(w->world, w->model->cfg->step_s);
+    else dWorldQuickStep(w->world, w->model->cfg->step_s);
     dJointGroupEmpty(w->contacts);
     if (w->touching && !w->touched_last) w->collisions++;
     if (w->touching) w->episode_kinds |= w->step_kinds;
@@ -452,6 +496,11 @@ double world_body_z(const world_t *w)
     return p[2];
 }
 
+double world_wheel_floor_gap(const world_t *w, int side)
+{
+    return dBodyGetPosition(w->wheel[side])[2] - dGeomSphereGetRadius(w->wheel_geom[side]);
+}
+
 double world_wheel_angle(const world_t *w, int side) { return dJointGetHingeAngle(w->hinge[side]); }
 double world_wheel_rate(const world_t *w, int side) { return dJointGetHingeAngleRate(w->hinge[side]); }
 
@@ -511,8 +560,7 @@ void world_body_vector(const world_t *w, const double v[3], double out[3])
 
 void world_place(world_t *w, double x_m, double y_m, double heading_rad, const double wheel_rad[2])
 {
-    const simcfg_t *c = &w->cfg;
-    dMatrix3 rot, r2, r3, spin, r4;
+    dMatrix3 rot, r;
     double com_w[3], keep[2] = { world_wheel_angle(w, 0), world_wheel_angle(w, 1) };
     if (!wheel_rad) wheel_rad = keep;
     frame_point(x_m, y_m, heading_rad, w->com, com_w);
@@ -522,21 +570,17 @@ void world_place(world_t *w, double x_m, double y_m, double heading_rad, const d
     dBodySetLinearVel(w->chassis, 0, 0, 0);
     dBodySetAngularVel(w->chassis, 0, 0, 0);
     for (int s = 0; s < 2; s++) {
-        double wp[3] = { s == WORLD_LEFT ? -c->wheel_x_m : c->wheel_x_m, c->axle_y_m, c->wheel_d_m / 2 }, ww[3];
+        double wp[3], ww[3];
+        wheel_point(w, s, wp);
         frame_point(x_m, y_m, heading_rad, wp, ww);
-        /* as built (cylinder z along the robot's x), then turned about that axis */
-        dRFromAxisAndAngle(r2, 0, 1, 0, M_PI / 2);
-        dMultiply0(r3, rot, r2, 3, 3, 3);
-        dRFromAxisAndAngle(spin, 0, 0, 1, -wheel_rad[s]); /* hinge angles count the other way */
-        dMultiply0(r4, r3, spin, 3, 3, 3);
+        wheel_rotation(heading_rad, &wheel_rad[s], r);
         dBodySetPosition(w->wheel[s], ww[0], ww[1], ww[2]);
-        dBodySetRotation(w->wheel[s], r4);
+        dBodySetRotation(w->wheel[s], r);
         dBodySetLinearVel(w->wheel[s], 0, 0, 0);
         dBodySetAngularVel(w->wheel[s], 0, 0, 0);
     }
 }
 
-int world_touching(const world_t *w) { return w->touched_last; }
 unsigned world_collisions(const world_t *w) { return w->collisions; }
 
 static int body_sane(dBodyID b)

@@ -16,6 +16,7 @@
 
 #include "config.h"
 #include "maze.h"
+#include "model.h"
 #include "motor.h"
 
 enum { WORLD_LEFT = 0, WORLD_RIGHT = 1 };
@@ -23,12 +24,13 @@ enum { WORLD_TOF_LEFT = 0, WORLD_TOF_FRONT = 1, WORLD_TOF_RIGHT = 2, WORLD_TOF_C
 
 typedef struct world world_t;
 
-/* Build the world for maze m with the robot's body centre over (x_m, y_m)
- * facing heading_rad. NULL if ODE fails. */
-world_t *world_create(const simcfg_t *c, const maze_t *m, double x_m, double y_m, double heading_rad);
+/* Build the world of model for maze m with the robot's body centre over
+ * (x_m, y_m) facing heading_rad. The world reads the model (which must
+ * outlive it) by pointer. NULL if ODE fails. */
+world_t *world_create(const sim_model_t *model, const maze_t *m, double x_m, double y_m, double heading_rad);
 void world_destroy(world_t *w);
 
-/* One physics step of c->step_s with each wheel's motor drive (output
+/* One physics step of the config's sim.step_s with each wheel's motor drive (output
  * shaft, positive drives forward; motor.h): the chassis gets the reaction
  * torques. The solver is the config's (sim.solver). */
 void world_step(world_t *w, const motor_drive_t drive[2]);
@@ -47,6 +49,9 @@ void world_velocity(const world_t *w, double *v_m_s, double *omega_rad_s);
 /* Height of the body centre above the floor, m (to check it stays down). */
 double world_body_z(const world_t *w);
 
+/* The lowest point of a wheel's tyre above the floor, m (0 = resting on
+ * it; the floor's contact softness presses it in by a few micrometres). */
+double world_wheel_floor_gap(const world_t *w, int side);
 /* Wheel hinge angle (wraps at +-pi) and rate (positive = forward). */
 double world_wheel_angle(const world_t *w, int side);
 double world_wheel_rate(const world_t *w, int side);
@@ -65,14 +70,13 @@ double world_ray_normal(world_t *w, const double pos_m[3], const double dir[3], 
 
 /* Put the robot, at rest and level, with its body centre over (x_m, y_m)
  * facing heading_rad and its wheels at these hinge angles (rad, positive =
- * forward; NULL = keep the current ones, so the encoders do not jump):
+ * forward; NULL = keep the current ones, so the encoders do not jump),
+ * each wheel on the floor at its own radius:
  * a logged pose replayed (mmview), the robot carried back to the start
  * (mms ackReset). */
 void world_place(world_t *w, double x_m, double y_m, double heading_rad, const double wheel_rad[2]);
 
-/* Robot-wall contact: are robot and any wall or post touching after the
- * last step, and how many separate contact episodes so far. */
-int world_touching(const world_t *w);
+/* Robot-wall contact: how many separate contact episodes so far. */
 unsigned world_collisions(const world_t *w);
 /* Contact episodes by the part of the robot that touched: its body's front
  * face (or a skid), its sides (or a wheel's), its rear face at under
@@ -80,7 +84,7 @@ unsigned world_collisions(const world_t *w);
  * purpose, as UKMARSBOT's firmware does) or faster. An episode with two
  * kinds counts once for each; the ongoing one counts. */
 enum { WORLD_CONTACT_FRONT, WORLD_CONTACT_SIDE, WORLD_CONTACT_REAR_SOFT, WORLD_CONTACT_REAR, WORLD_CONTACT_KINDS };
-#define WORLD_REAR_SOFT_M_S 0.1 /* m/s, issue 18: a touch of the rear below this is not an error */
+#define WORLD_REAR_SOFT_M_S 0.1 /* m/s: a touch of the rear below this is not an error */
 unsigned world_contacts(const world_t *w, int kind);
 /* 0 once the robot's state has left what any run in the config's ranges
  * reaches (a position beyond WORLD_SANE_M, a speed beyond

@@ -30,7 +30,7 @@ double gyro_sigma_dps(const gyro_spec_t *s)
 
 void gyro_init(gyro_t *g, const gyro_spec_t *s, uint64_t seed, unsigned index)
 {
-    g->spec = *s;
+    g->spec = s;
     rng_init(&g->rng, seed, RNG_STREAM_GYRO + index);
     g->bias0_dps = s->bias_dps * rng_gauss(&g->rng);
     g->walk_dps = 0.0;
@@ -41,7 +41,7 @@ void gyro_init(gyro_t *g, const gyro_spec_t *s, uint64_t seed, unsigned index)
 /* The output of one sample from the true rate and the white noise n, deg/s. */
 static double sample_out(const gyro_t *g, double true_dps, double n)
 {
-    const gyro_spec_t *s = &g->spec;
+    const gyro_spec_t *s = g->spec;
     double y = (1.0 + s->scale_error_pct / 100.0) * true_dps + g->bias0_dps + g->walk_dps
              + gyro_sigma_dps(s) * n;
     if (y > s->full_scale_dps) y = s->full_scale_dps;
@@ -52,10 +52,10 @@ static double sample_out(const gyro_t *g, double true_dps, double n)
 
 double gyro_read(gyro_t *g, double true_rate_rad_s, double t_s)
 {
-    double f = g->spec.sample_rate_hz;
+    double f = g->spec->sample_rate_hz;
     int64_t k = (int64_t)floor(t_s * f);
     if (k <= g->sample) return g->held_rad_s;
-    double step = g->spec.bias_rw_dps_rts * sqrt(1.0 / f), n = 0.0;
+    double step = g->spec->bias_rw_dps_rts * sqrt(1.0 / f), n = 0.0;
     /* every sample draws its two deviates, read or not: the noise depends on time only */
     for (int64_t i = g->sample + 1; i <= k; i++) {
         double n1 = rng_gauss(&g->rng);
@@ -81,7 +81,7 @@ static const keytab_t keys[] = {
     G(lsb_dps, 0.035, 0, 10, "deg/s", "LSM6DS3 datasheet Table 3: 35 mdps/LSB at +-1000 dps"),
 };
 
-static void part_init(void *state, const robot_part_t *p, const simcfg_t *c, uint64_t seed, unsigned index, unsigned count)
+static void part_init(void *state, const robot_part_t *p, const sim_model_t *md, uint64_t seed, unsigned index, unsigned count)
 {
     gyro_init(state, (const gyro_spec_t *)p->spec, seed, index);
 }

@@ -33,7 +33,7 @@ typedef struct {
 } gyro_spec_t;
 
 typedef struct {
-    gyro_spec_t spec;
+    const gyro_spec_t *spec; /* gyro_init's (the caller's: it outlives the gyro) */
     rng_t rng;
     double bias0_dps;      /* the constant bias drawn at init, deg/s */
     double walk_dps;       /* the random walk's part of the bias now, deg/s */

@@ -174,11 +174,11 @@ static const keytab_t keys[] = {
     I(adc_bits, model.adc_bits, 10, 1, 16, 0, 1, "bits", "ATmega328P: 10-bit ADC"),
 };
 
-static void part_init(void *state, const robot_part_t *p, const simcfg_t *c, uint64_t seed, unsigned index, unsigned count)
+static void part_init(void *state, const robot_part_t *p, const sim_model_t *md, uint64_t seed, unsigned index, unsigned count)
 {
     ir_state_t *st = state;
     ir_spec_t m = ((const ir_part_spec_t *)p->spec)->model;
-    m.reflectivity = c->wall_reflectivity;
+    m.reflectivity = md->cfg->wall_reflectivity;
     ir_init(&st->ir, &m, seed, index);
     st->last[0] = st->last[1] = -1;
     st->count = 0;
@@ -204,7 +204,7 @@ int ir_sample(void *state, const robot_part_t *p, const sensor_ctx_t *x)
     if (x->t_s < st->object_until_s) {
         v = ir_read_object(&st->ir, st->object_m, on);
     } else {
-        sensor_frame(x->world, p, pos, axis, left, up);
+        sensor_frame(x->world, sensor_pose(x->model, p), pos, axis, left, up);
         v = ir_read_frame(&st->ir, x->world, pos, axis, left, up, on);
     }
     st->last[on] = v;

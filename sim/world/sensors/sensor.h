@@ -20,7 +20,7 @@
 /* What a sensor sees of the simulation when it steps or is read. */
 typedef struct {
     world_t *world;
-    const simcfg_t *cfg;
+    const sim_model_t *model;
     uint64_t step;          /* physics steps done */
     double t_s;             /* simulation time, s */
     const int *emitter;     /* emitter groups' states (SIM_EMITTER_GROUPS) */
@@ -36,7 +36,7 @@ typedef struct sensor_kind_s {
     int (*check)(const robot_part_t *p, char *reason, size_t len);
     size_t state_size;               /* bytes of its run-time state */
     /* index: this sensor's number among its kind's; count: how many there are */
-    void (*init)(void *state, const robot_part_t *p, const simcfg_t *c, uint64_t seed, unsigned index, unsigned count);
+    void (*init)(void *state, const robot_part_t *p, const sim_model_t *m, uint64_t seed, unsigned index, unsigned count);
     /* every physics step, after the world moved (NULL: samples only when read) */
     void (*step)(void *state, const robot_part_t *p, const sensor_ctx_t *x);
     /* the reading now into v (the kind's units, as `units` names them); returns how many */
@@ -49,8 +49,10 @@ const sensor_kind_t *sensor_kind(const char *name);
 /* The i-th kind, NULL past the end. */
 const sensor_kind_t *sensor_kind_at(unsigned i);
 
-/* Where part p sits in the world now and its frame: axis (where it
- * looks: yaw then pitch), left and up, unit vectors. */
-void sensor_frame(const world_t *w, const robot_part_t *p, double pos_m[3], double axis[3], double left[3], double up[3]);
+/* Part p's pose in model m (p is one of m->cfg->part). */
+const sim_pose_t *sensor_pose(const sim_model_t *m, const robot_part_t *p);
+/* Where a sensor at this pose sits in the world now and its frame: axis
+ * (where it looks: yaw then pitch), left and up, unit vectors. */
+void sensor_frame(const world_t *w, const sim_pose_t *pose, double pos_m[3], double axis[3], double left[3], double up[3]);
 
 #endif

@@ -39,12 +39,12 @@ static const keytab_t keys[] = {
     T(period_ms, period_s, 30, 1, 1000, 1000, "ms", "VL53L0X default timing budget ~30 ms"),
 };
 
-static void init(void *state, const robot_part_t *p, const simcfg_t *c, uint64_t seed, unsigned index, unsigned count)
+static void init(void *state, const robot_part_t *p, const sim_model_t *md, uint64_t seed, unsigned index, unsigned count)
 {
     tof_state_t *t = state;
     const tof_spec_t *s = (const tof_spec_t *)p->spec;
     tof_init(&t->tof, s, seed, index);
-    t->period_steps = (uint64_t)llround(s->period_s / c->step_s);
+    t->period_steps = (uint64_t)llround(s->period_s / md->cfg->step_s);
     if (t->period_steps == 0) t->period_steps = 1;
     t->next_step = (uint64_t)index * t->period_steps / count; /* staggered */
     t->last.dist_m = s->range_m;
@@ -55,10 +55,10 @@ static void init(void *state, const robot_part_t *p, const simcfg_t *c, uint64_t
 }
 
 /* The ray: from the sensor along its heading (the chassis' tilt aside). */
-static double ray(const robot_part_t *p, world_t *w, double max_m)
+static double ray(const sim_pose_t *pose, world_t *w, double max_m)
 {
     double pos[3], axis[3], left[3], up[3];
-    sensor_frame(w, p, pos, axis, left, up);
+    sensor_frame(w, pose, pos, axis, left, up);
     return world_ray(w, pos[0], pos[1], pos[2], atan2(axis[1], axis[0]), max_m);
 }
 
@@ -69,7 +69,7 @@ static void step(void *state, const robot_part_t *p, const sensor_ctx_t *x)
     t->next_step += t->period_steps;
     if (!t->enabled) return;
     /* rays only when the sensor updates: one ray per 30 ms, not per step */
-    t->true_m = ray(p, x->world, t->tof.range_m);
+    t->true_m = ray(sensor_pose(x->model, p), x->world, t->tof.range_m);
     t->last = tof_measure(&t->tof, t->true_m);
     t->count++;
 }

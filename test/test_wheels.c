@@ -1,0 +1,104 @@
+/* test_wheels.c - a robot whose wheels differ in diameter sits on both
+ * wheels wherever it is put: built at the start, carried back to the start
+ * (world_place, as the mms reset does) and replayed from its log (mmview's
+ * path: replay_load, replay_sim_init, replay_apply). The wheels differ
+ * through the config's [asymmetry] and through the robot file's left and
+ * right diameters. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "world/config.h"
+#include "maze/mazegen.h"
+#include "telemetry/telem.h"
+#include "view/replay.h"
+#include "world/sim.h"
+
+#define SEATED_M 1e-4 /* a wheel's lowest point within 0.1 mm of the floor */
+#define DIFF_M 0.002  /* right wheel's diameter minus the left's, m */
+
+/* Both wheels' lowest points at most SEATED_M from the floor. */
+static void seated(const sim_t *s, const char *where)
+{
+    for (int side = 0; side < 2; side++) {
+        double gap = world_wheel_floor_gap(s->world, side);
+        if (!(fabs(gap) < SEATED_M))
+            fail_msg("%s: %s wheel's lowest point %.3f mm from the floor", where, side == WORLD_LEFT ? "left" : "right",
+                     gap * 1e3);
+    }
+}
+
+/* Drive a while (logging to log_path), carry the robot back to the start
+ * cell, then replay the log at its middle: seated at each stage. */
+static void place_reset_replay(const simcfg_t *c)
+{
+    static maze_t m;
+    static sim_t s;
+    static telem_t tel;
+    static replay_t r;
+    char err[600], log_path[64];
+    assert_int_equal(mazegen_generate(&m, 5, 5, 7), 0);
+    assert_int_equal(sim_init(&s, c, &m, 1), 0);
+    assert_true(fabs(s.model->wheel_r_m[WORLD_RIGHT] - s.model->wheel_r_m[WORLD_LEFT] - DIFF_M / 2) < 1e-9);
+    seated(&s, "placed at the start");
+    snprintf(log_path, sizeof log_path, "/tmp/test_wheels_%d.lcmlog", (int)getpid());
+    telem_opts_t o = { NULL, log_path, 0, NULL, "gen.txt" };
+    assert_int_equal(telem_open(&tel, &o, &s, err, sizeof err), 0);
+    s.cmd[0] = s.cmd[1] = 300;
+    for (int i = 0; i < 400; i++) {
+        sim_step(&s);
+        telem_step(&tel, &s);
+    }
+    telem_finish(&tel, &s);
+    assert_int_equal(telem_close(&tel, err, sizeof err), 0);
+    double x, y, h;
+    world_pose(s.world, &x, &y, &h);
+    world_place(s.world, (maze_x(&m, m.start) + 0.5) * c->cell_m, (maze_y(&m, m.start) + 0.5) * c->cell_m, M_PI / 2, NULL);
+    seated(&s, "reset to the start");
+    sim_free(&s);
+
+    assert_int_equal(replay_load(&r, log_path, err, sizeof err), 0);
+    assert_int_equal(replay_sim_init(&r, &s), 0);
+    replay_apply(&r, &s, replay_end_s(&r) / 2);
+    seated(&s, "replayed");
+    sim_free(&s);
+    replay_free(&r);
+    unlink(log_path);
+}
+
+static void test_config_asymmetry(void **state)
+{
+    (void)state;
+    static simcfg_t c;
+    char err[300];
+    config_defaults(&c);
+    assert_int_equal(config_load_string(&c, "[asymmetry]\nwheel_d_diff_m = 0.002\n", "asym.ini", err, sizeof err), 0);
+    place_reset_replay(&c);
+}
+
+static void test_robot_file_diameters(void **state)
+{
+    (void)state;
+    static simcfg_t c;
+    config_defaults(&c);
+    /* as a robot file's chassis gives them: each wheel's, and their mean */
+    c.wheel_left_d_m -= DIFF_M / 2;
+    c.wheel_right_d_m += DIFF_M / 2;
+    c.wheel_d_m = (c.wheel_left_d_m + c.wheel_right_d_m) / 2;
+    place_reset_replay(&c);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_config_asymmetry),
+        cmocka_unit_test(test_robot_file_diameters),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
