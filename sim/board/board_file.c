@@ -155,13 +155,13 @@ static int on_section(void *user, const char *section, int line, char *why, size
 static int on_key(void *user, const char *section, const char *key, const char *val, char *why, size_t len)
 {
     bload_t *l = user;
-    int led;
-    part_t *p = named(l, section, &led);
-    const keytab_t *k = p ? keytab_find(emitter_keys, led ? LED_KEYS : N(emitter_keys), NULL, key) : keytab_find(keys, N(keys), section, key);
     if (!*section) {
         snprintf(why, len, "%s: a key outside any [section]", key);
         return -1;
     }
+    int led;
+    part_t *p = named(l, section, &led);
+    const keytab_t *k = p ? keytab_find(emitter_keys, led ? LED_KEYS : N(emitter_keys), NULL, key) : keytab_find(keys, N(keys), section, key);
     if (!k) {
         snprintf(why, len, "%s.%s: unknown key", section, key);
         return -1;
