@@ -59,6 +59,17 @@ says "a NUL byte in a config" "nul.ini:2: NUL byte"
 head -c 1048577 /dev/zero | tr '\0' '\n' >"$T/big.ini"
 want_rc 2 "a config over 1 MiB" $G "$S" --maze $M --config "$T/big.ini"
 says "a config over 1 MiB" "big.ini: too large (1048577 bytes; at most 1048576)"
+# an indented line (libinih hands it over as the key above's value again), a
+# key given twice, and the tick that is HAL_TICK_HZ, not a key
+printf '[sim]\ntime_limit_s = 7\n  1999\n' >"$T/cont.ini"
+want_rc 2 "a config's indented continuation line" $G "$S" --maze $M --config "$T/cont.ini"
+says "a config's indented continuation line" "^$T/cont.ini:3: sim.time_limit_s: an indented line continues its value"
+printf '[sim]\ntime_limit_s = 7\n[world]\ncell_m = 0.18\n[sim]\ntime_limit_s = 8\n' >"$T/twice.ini"
+want_rc 2 "a config's key given twice" $G "$S" --maze $M --config "$T/twice.ini"
+says "a config's key given twice" "^$T/twice.ini:6: sim.time_limit_s: given twice (first on line 2)$"
+printf '[sim]\ncontrol_hz = 1000\n' >"$T/tick.ini"
+want_rc 2 "[sim] control_hz" $G "$S" --maze $M --config "$T/tick.ini"
+says "[sim] control_hz" "^$T/tick.ini:2: sim.control_hz: unknown key$"
 # robot files (--robot) the same way: the regular-file reader and the line scan
 for f in "$T/fifo.ini" /dev/zero "$T/dir.txt"; do
   want_rc 2 "mmsim --robot $f" $G "$S" --maze $M --robot "$f"; says "mmsim --robot $f" "not a regular file"

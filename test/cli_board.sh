@@ -49,11 +49,21 @@ sed 's/^pin = D13$/pin = D7/' "$T/good.ini" >"$T/twice.ini"
 sed '/^r_ground_ohm/d' "$T/good.ini" >"$T/missing.ini"
 sed 's/^vcc_v = 5.0$/vcc_v = 12/' "$T/good.ini" >"$T/vcc.ini"
 printf '[board]\nnmae = x\n' >"$T/unknown.ini"
-for f in pwm pin twice missing vcc unknown; do
+# a key given twice (an emitter's pin = D11 then pin = A0: the last won) and an indented line
+sed 's/^pin = D11$/pin = D11\npin = A0/' "$T/good.ini" >"$T/dupkey.ini"
+sed 's/^vcc_v = 5.0$/vcc_v = 5.0\n  3.3/' "$T/good.ini" >"$T/cont.ini"
+for f in pwm pin twice missing vcc unknown dupkey cont; do
   want_rc 2 "bad board file ($f): exit 2" run $SK/MotorPwm.elf "$T/open.txt" --board "$T/$f.ini" --time-limit 1
+  cp "$T/err" "$T/err.$f"
   grep -qE "^$T/$f.ini:[0-9]+: [a-z]+(\.[a-z]+)?\.[a-z_]+: " "$T/err" && ok "bad board file ($f): FILE:LINE: section.key: reason" \
     || bad "bad board file ($f): $(cat "$T/err")"
 done
+n=$(grep -n '^pin = D11$' "$T/good.ini" | cut -d: -f1)
+grep -qx "$T/dupkey.ini:$((n + 1)): emitter.front.pin: given twice (first on line $n)" "$T/err.dupkey" \
+  && ok "board file: a named part's key twice: its line" || bad "board key twice: $(cat "$T/err.dupkey")"
+n=$(grep -n '^vcc_v' "$T/good.ini" | cut -d: -f1)
+grep -q "^$T/cont.ini:$((n + 1)): board.vcc_v: an indented line continues its value" "$T/err.cont" \
+  && ok "board file: continuation line: its line" || bad "board continuation: $(cat "$T/err.cont")"
 want_rc 2 "unknown board name" run $SK/MotorPwm.elf "$T/open.txt" --board nosuchboard --time-limit 1
 want_rc 2 "--board without --avr" "$MMSIM" --maze "$T/open.txt" --board ukmarsbot --time-limit 1
 want_rc 2 "--input send= without --board" "$MMSIM" --maze "$T/open.txt" --input "1 send=B" --time-limit 1

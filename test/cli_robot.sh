@@ -21,6 +21,16 @@ grep -q "^$T/none.ini: " "$T/err" && ok "missing robot file: FILE: reason" || ba
 want_rc 2 "robot file as config" "$S" --maze $M --config robots/paper.ini
 grep -q "^robots/paper.ini:[0-9]*: chassis.body.body_w_mm: a robot's number: it belongs in the robot file" "$T/err" \
   && ok "a robot file given as --config: to --robot" || bad "robot file as config: $(cat "$T/err")"
+# an indented line (libinih: more of the key above, body_mass_g = 1999) and a key given twice
+sed 's/^body_mass_g = 127$/body_mass_g = 127\n  1999/' robots/paper.ini >"$T/cont.ini"
+n=$(( $(grep -n '^body_mass_g' robots/paper.ini | cut -d: -f1) + 1 ))
+want_rc 2 "robot file: an indented continuation line" "$S" --maze $M --robot "$T/cont.ini"
+[ "$(cat "$T/err")" = "$T/cont.ini:$n: chassis.body.body_mass_g: an indented line continues its value (INI continuation lines are refused: start the line in its first column)" ] \
+  && ok "robot file: continuation line: FILE:LINE" || bad "robot continuation: $(cat "$T/err")"
+sed 's/^body_mass_g = 127$/body_mass_g = 127\nbody_mass_g = 200/' robots/paper.ini >"$T/twice.ini"
+want_rc 2 "robot file: a key given twice" "$S" --maze $M --robot "$T/twice.ini"
+[ "$(cat "$T/err")" = "$T/twice.ini:$n: chassis.body.body_mass_g: given twice (first on line $((n - 1)))" ] \
+  && ok "robot file: key twice: FILE:LINE" || bad "robot key twice: $(cat "$T/err")"
 ONE_ERROR_LINE=0
 
 # --print-robot loads back, prints the same (apart from its first line, the path)

@@ -15,6 +15,7 @@
 
 #include "world/config.h"
 #include "world/robot.h"
+#include "world/world.h"
 
 static char path[64];
 
@@ -40,7 +41,7 @@ static char *print(const simcfg_t *c)
 static void check_loaded(const simcfg_t *c, const char *name)
 {
     check(c->nparts >= 0 && c->nparts <= ROBOT_MAX_PARTS, "more sensors than ROBOT_MAX_PARTS");
-    check(robot_count(c, "tof") <= ROBOT_MAX_TOF, "more ToF sensors than ROBOT_MAX_TOF");
+    check(robot_count(c, "tof") <= WORLD_TOF_COUNT, "more ToF sensors than WORLD_TOF_COUNT");
     check(robot_count(c, "ir") <= ROBOT_MAX_IR, "more IR sensors than ROBOT_MAX_IR");
     check(c->tyre_mu_dynamic <= c->tyre_mu, "tyre_mu_dynamic above tyre_mu");
     char *text = print(c), err[600];

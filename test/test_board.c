@@ -61,16 +61,27 @@ static void bad_file(const char *text, const char *want)
     remove(path);
     if (!strstr(err, want)) fail_msg("got '%s', want '%s'", err, want);
     assert_true(!strncmp(err, path, strlen(path)));
+    assert_null(strchr(err, '\n'));
 }
 
 static void test_bad_files(void **state)
 {
     bad_file("[board]\nname = x\nmcu = atmega2560\n", ":1: board.f_cpu_hz: missing"); /* a missing key: its section's line */
-    bad_file("[board]\nname = x\nmcu = atmega328p\nf_cpu_hz = 1\n", ":4: board.f_cpu_hz: expected a number");
-    bad_file("[board]\nname = x\n[motor.left]\ndir_pin = Q7\n", ":4: motor.left.dir_pin: expected a pin");
-    bad_file("[board]\nname = x\nname = y\n", ":3: board.name: given twice");
+    bad_file("[board]\nname = x\nmcu = atmega328p\nf_cpu_hz = 16000000\nvcc_v = 5\n",
+             ": motor.left.dir_pin: missing (no [motor.left] section)");
+    bad_file("[board]\nname = x\nmcu = atmega328p\nf_cpu_hz = 1\n", ":4: board.f_cpu_hz: 1 Hz is out of range [1e+06, 3.2e+07]");
+    bad_file("[board]\nname = x\n[motor.left]\ndir_pin = Q7\n", ":4: motor.left.dir_pin: expected a pin D0-D13, A0-A5 or PB0-PD7, got 'Q7'");
     bad_file("[led.a]\npin = D13\ncolour = red\n", ":3: led.a.colour: unknown key");
-    bad_file("[switches]\nr_ohm = 1 2 3\n", ":2: switches.r_ohm: expected four resistances");
+    bad_file("[switches]\nr_ohm = 1 2 3\n", ":2: switches.r_ohm: 3 numbers, want 4");
+    bad_file("[encoder.left]\nforward = c_leads\n", ":2: encoder.left.forward: 'c_leads' is not one of b_leads a_leads");
+    bad_file("[motors]\nx = 1\n", ":1: [motors]: unknown section");
+    /* a key twice in one section, the named parts' too (pin = D11 then pin = A0: the last won, the robot never moved) */
+    bad_file("[board]\nname = x\nname = y\n", ":3: board.name: given twice (first on line 2)");
+    bad_file("[emitter.front]\npin = D11\ngroup = 0\npin = A0\n", ":4: emitter.front.pin: given twice (first on line 2)");
+    bad_file("[led.a]\npin = D13\n[led.b]\npin = D6\n[led.a]\npin = D12\n", ":6: led.a.pin: given twice (first on line 2)");
+    /* an indented line: libinih would hand it over as the key's value again */
+    bad_file("[board]\nname = x\n  y\n", ":3: board.name: an indented line continues its value");
+    bad_file("[emitter.front]\npin = D11\n\tA0\n", ":3: emitter.front.pin: an indented line continues its value");
 }
 
 typedef struct {

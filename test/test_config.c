@@ -49,6 +49,20 @@ static void test_load_and_errors(void **state)
         { "[world]\ncell_m = 0.01\n", "c.ini:2: world.cell_m: 0.01 m is out of range" },
         { "[nosuch]\nx = 1\n", "c.ini:2: nosuch.x: unknown key" },
         { "[sim]\nsolver_iterations = 10.5\n", "c.ini:2: sim.solver_iterations: 10.5 is not a whole number" },
+        /* libinih would set time_limit_s to 1999: an indented line continues a key's value */
+        { "[sim]\ntime_limit_s = 7\n  1999\n",
+          "c.ini:3: sim.time_limit_s: an indented line continues its value (INI continuation lines are refused: start the line in "
+          "its first column)" },
+        { "[sim]\ntime_limit_s = 7\n\n; a comment\n\t8\n", "c.ini:5: sim.time_limit_s: an indented line continues its value" },
+        { "[sim]\ntime_limit_s = 7\ntime_limit_s = 8\n", "c.ini:3: sim.time_limit_s: given twice (first on line 2)" },
+        { "[sim]\ntime_limit_s = 7\n[world]\ncell_m = 0.18\n[sim]\ntime_limit_s = 8\n",
+          "c.ini:6: sim.time_limit_s: given twice (first on line 2)" },
+        /* the first error in the file's order, whether the scan's or a key's */
+        { "[sim]\ntime_limit_s = 0\ntime_limit_s = 8\n", "c.ini:2: sim.time_limit_s: 0 s is out of range" },
+        { "[sim]\ntime_limit_s = 7\ntime_limit_s = 8\nbogus = 1\n", "c.ini:3: sim.time_limit_s: given twice" },
+        { "[sim\ntime_limit_s = 7\n", "c.ini:1: '[' without ']'" },
+        /* the firmware's tick is HAL_TICK_HZ, compiled in: no key */
+        { "[sim]\ncontrol_hz = 1000\n", "c.ini:2: sim.control_hz: unknown key" },
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         config_defaults(&c);
@@ -59,6 +73,9 @@ static void test_load_and_errors(void **state)
     config_defaults(&c);
     assert_int_equal(config_load_string(&c, "; plastic on plastic\n[world]\nbody_wall_mu = 0.35\n", "p.ini", err, sizeof err), 0);
     assert_true(c.body_wall_mu == 0.35);
+    /* an indented key straight after its section is a key (libinih's reading), and an indented comment a comment */
+    assert_int_equal(config_load_string(&c, "[world]\n  body_wall_mu = 0.4\n  ; plastic\n", "p.ini", err, sizeof err), 0);
+    assert_true(c.body_wall_mu == 0.4);
     assert_int_equal(config_load(&c, "/nonexistent/c.ini", err, sizeof err), -1);
     assert_string_equal(err, "/nonexistent/c.ini: cannot open: No such file or directory");
 }

@@ -167,6 +167,18 @@ static void test_errors(void **state)
     refused(append(paper, "\n[sim]\nstep_s = 0.001\n"), "r.ini:%d: [sim]: want [KIND.NAME], e.g. [ir.left_front]", n + 1);
     refused(replace(paper, NULL, "tyre_mu_dynamic = 1.0", "tyre_mu_dynamic = 1.5"),
             "r.ini: chassis.body.tyre_mu_dynamic: 1.5 is above tyre_mu 1%.0d", 0);
+    /* libinih reads an indented line as more of the key above: body_mass_g would be 1999 */
+    refused(replace(paper, NULL, "body_mass_g = 127", "body_mass_g = 127\n  1999"),
+            "r.ini:%d: chassis.body.body_mass_g: an indented line continues its value (INI continuation lines are refused: start the "
+            "line in its first column)",
+            line_of(paper, "body_mass_g") + 1);
+    char twice[200];
+    int mass = line_of(paper, "body_mass_g"), sec = line_of(paper, "[tof.front]");
+    int yaw = sec - 1 + line_of(strstr(paper, "[tof.front]"), "yaw_deg");
+    snprintf(twice, sizeof twice, "r.ini:%%d: chassis.body.body_mass_g: given twice (first on line %d)", mass);
+    refused(replace(paper, NULL, "body_mass_g = 127", "body_mass_g = 127\nbody_mass_g = 200"), twice, mass + 1);
+    snprintf(twice, sizeof twice, "r.ini:%%d: tof.front.yaw_deg: given twice (first on line %d)", yaw);
+    refused(replace(paper, "[tof.front]", "yaw_deg = 0", "yaw_deg = 0\nyaw_deg = 5"), twice, yaw + 1);
     refused(replace(paper, "[battery.main]", "r_ohm = 0", "r_ohm = 0\nvolts = 7"),
             "r.ini:%d: battery.main.volts: unknown key (a battery has: ocv_v r_ohm capacity_mah divider)", line_of(paper, "r_ohm") + 1);
 

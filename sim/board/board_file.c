@@ -1,299 +1,293 @@
 /* board_file.c - the board file (board.h's board_spec_t): INI, one section
- * per part. Every key is required; a bad value is "FILE:LINE: section.key:
- * reason", a missing key "FILE:LINE: section.key: missing" (the section's
- * line; line 0 = no such section). */
-#include "board_int.h"
+ * per part, read through the INI reader (world/inifile.h) with its keys in
+ * keytab tables (world/keytab.h). Every key is required; a bad value is
+ * "FILE:LINE: section.key: reason", a missing key "FILE:LINE: section.key:
+ * missing" (the section's line), or "FILE: section.key: missing (no
+ * [section] section)". */
+#include "board.h"
 
 #include <ctype.h>
 #include <dirent.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include <ini.h>
+#include "world/inifile.h"
+#include "world/keytab.h"
 
-#include "io/infile.h"
-#include "world/config.h"
-
-enum { K_STR, K_NUM, K_U32, K_INT, K_PIN, K_LEVEL, K_LEADS, K_OHMS4 };
-
-typedef struct {
-    const char *section, *key;
-    int kind;
-    double lo, hi;
-    size_t off;
-    int seen;
-} bkey_t;
-
-#define OFF(f) offsetof(board_spec_t, f)
-
-typedef struct {
-    board_spec_t *sp;
-    bkey_t *keys;
-    int nkeys;
-    char reason[300];
-    int emitters_seen[SIM_EMITTER_GROUPS]; /* [emitter.*] sections in order: their index */
-    char emitter_names[SIM_EMITTER_GROUPS][32];
-    char led_names[BOARD_LEDS_MAX][32];
-} bload_t;
-
-/* "D7", "A0" (Arduino Nano names) or "PB1" */
-static int parse_pin(const char *v, board_pin_t *p)
+/* "D7", "A0" (Arduino Nano names) or "PB1" into a board_pin_t */
+static int parse_pin(const char *v, void *field, char *why, size_t len)
 {
+    board_pin_t *p = field;
     char *end;
     if ((v[0] == 'D' || v[0] == 'A') && isdigit((unsigned char)v[1])) {
         long n = strtol(v + 1, &end, 10);
-        if (*end) return -1;
-        if (v[0] == 'A') {
-            if (n > 5) return -1; /* A6/A7 are analogue inputs only */
+        if (*end) n = -1;
+        if (v[0] == 'A' && n >= 0 && n <= 5) { /* A6/A7 are analogue inputs only */
             *p = (board_pin_t){ 'C', (uint8_t)n };
-        } else if (n <= 7) *p = (board_pin_t){ 'D', (uint8_t)n };
-        else if (n <= 13) *p = (board_pin_t){ 'B', (uint8_t)(n - 8) };
-        else return -1;
-        return 0;
-    }
-    if (v[0] == 'P' && (v[1] == 'B' || v[1] == 'C' || v[1] == 'D') && v[2] >= '0' && v[2] <= '7' && !v[3]) {
+            return 0;
+        }
+        if (v[0] == 'D' && n >= 0 && n <= 7) {
+            *p = (board_pin_t){ 'D', (uint8_t)n };
+            return 0;
+        }
+        if (v[0] == 'D' && n >= 8 && n <= 13) {
+            *p = (board_pin_t){ 'B', (uint8_t)(n - 8) };
+            return 0;
+        }
+    } else if (v[0] == 'P' && (v[1] == 'B' || v[1] == 'C' || v[1] == 'D') && v[2] >= '0' && v[2] <= '7' && !v[3]) {
         *p = (board_pin_t){ v[1], (uint8_t)(v[2] - '0') };
         return 0;
     }
+    snprintf(why, len, "expected a pin D0-D13, A0-A5 or PB0-PD7, got '%s'", v);
     return -1;
 }
 
-static int set_num(bload_t *l, const bkey_t *k, const char *v, double *out)
-{
-    char *end;
-    double x = strtod(v, &end);
-    if (end == v || *end || !(x >= k->lo && x <= k->hi)) {
-        snprintf(l->reason, sizeof l->reason, "%s.%s: expected a number from %g to %g, got '%s'", k->section, k->key, k->lo,
-                 k->hi, v);
-        return -1;
-    }
-    *out = x;
-    return 0;
-}
+static const char *const leads[] = { "b_leads", "a_leads" }; /* the index is enc_a_leads */
 
-static int set_value(bload_t *l, const bkey_t *k, const char *v, char *base)
-{
-    double x;
-    switch (k->kind) {
-    case K_STR:
-        if (!*v || strlen(v) >= 32) return snprintf(l->reason, sizeof l->reason, "%s.%s: expected a name of 1-31 characters", k->section, k->key), -1;
-        snprintf(base + k->off, 32, "%s", v);
-        return 0;
-    case K_NUM:
-        if (set_num(l, k, v, &x)) return -1;
-        *(double *)(void *)(base + k->off) = x;
-        return 0;
-    case K_U32:
-        if (set_num(l, k, v, &x)) return -1;
-        *(uint32_t *)(void *)(base + k->off) = (uint32_t)x;
-        return 0;
-    case K_INT:
-    case K_LEVEL:
-        if (set_num(l, k, v, &x)) return -1;
-        if (x != (int)x) return snprintf(l->reason, sizeof l->reason, "%s.%s: expected a whole number, got '%s'", k->section, k->key, v), -1;
-        *(int *)(void *)(base + k->off) = (int)x;
-        return 0;
-    case K_PIN:
-        if (parse_pin(v, (board_pin_t *)(void *)(base + k->off)) == 0) return 0;
-        return snprintf(l->reason, sizeof l->reason, "%s.%s: expected a pin D0-D13, A0-A5 or PB0-PD7, got '%s'", k->section, k->key, v), -1;
-    case K_LEADS:
-        if (!strcmp(v, "a_leads") || !strcmp(v, "b_leads")) {
-            *(int *)(void *)(base + k->off) = v[0] == 'a';
-            return 0;
-        }
-        return snprintf(l->reason, sizeof l->reason, "%s.%s: expected a_leads or b_leads, got '%s'", k->section, k->key, v), -1;
-    default: { /* K_OHMS4: four resistances */
-        double *r = (double *)(void *)(base + k->off);
-        char *end;
-        const char *s = v;
-        for (int i = 0; i < 4; i++) {
-            r[i] = strtod(s, &end);
-            if (end == s || !(r[i] > 0 && r[i] <= 1e7)) break;
-            s = end;
-            if (i == 3 && !*s) return 0;
-        }
-        return snprintf(l->reason, sizeof l->reason, "%s.%s: expected four resistances in ohm (bit 0 to bit 3), got '%s'", k->section, k->key, v), -1;
-    }
-    }
-}
+#define OFF(f) offsetof(board_spec_t, f)
+#define TEXT(sec, key, f, src) \
+    { sec, key, OFF(f), KEYTAB_REQUIRED, 0, 0, "text", src, NULL, 0, 0, 0, KEYTAB_TEXT, sizeof ((board_spec_t *)0)->f, NULL }
+#define NUM(sec, key, type, f, min, max, unit, src) \
+    { sec, key, OFF(f), KEYTAB_REQUIRED, min, max, unit, src, NULL, 0, 0, 0, type, 0, NULL }
+#define PIN(sec, key, f, src) \
+    { sec, key, OFF(f), KEYTAB_REQUIRED, 0, 0, "pin", src, NULL, 0, 0, 0, KEYTAB_PARSED, sizeof(board_pin_t), parse_pin }
+#define LEADS(sec, f) \
+    { sec, "forward", OFF(f), KEYTAB_REQUIRED, 0, 1, "word", "which channel leads when the wheel turns forward", leads, 1, 0, 0, KEYTAB_INT, 0, NULL }
 
-static const bkey_t KEYS[] = {
-    { "board", "name", K_STR, 0, 0, OFF(name), 0 },
-    { "board", "mcu", K_STR, 0, 0, OFF(mcu), 0 },
-    { "board", "f_cpu_hz", K_U32, 1e6, 32e6, OFF(f_cpu), 0 },
-    { "board", "vcc_v", K_NUM, 1.8, 5.5, OFF(vcc_v), 0 },
-    { "motor.left", "dir_pin", K_PIN, 0, 0, OFF(motor_dir[0]), 0 },
-    { "motor.left", "pwm_pin", K_PIN, 0, 0, OFF(motor_pwm[0]), 0 },
-    { "motor.left", "forward_level", K_LEVEL, 0, 1, OFF(motor_fwd_level[0]), 0 },
-    { "motor.right", "dir_pin", K_PIN, 0, 0, OFF(motor_dir[1]), 0 },
-    { "motor.right", "pwm_pin", K_PIN, 0, 0, OFF(motor_pwm[1]), 0 },
-    { "motor.right", "forward_level", K_LEVEL, 0, 1, OFF(motor_fwd_level[1]), 0 },
-    { "encoder.left", "int_pin", K_PIN, 0, 0, OFF(enc_int[0]), 0 },
-    { "encoder.left", "b_pin", K_PIN, 0, 0, OFF(enc_b[0]), 0 },
-    { "encoder.left", "forward", K_LEADS, 0, 0, OFF(enc_a_leads[0]), 0 },
-    { "encoder.right", "int_pin", K_PIN, 0, 0, OFF(enc_int[1]), 0 },
-    { "encoder.right", "b_pin", K_PIN, 0, 0, OFF(enc_b[1]), 0 },
-    { "encoder.right", "forward", K_LEADS, 0, 0, OFF(enc_a_leads[1]), 0 },
-    { "switches", "adc_channel", K_INT, 0, 7, OFF(sw_channel), 0 },
-    { "switches", "r_top_ohm", K_NUM, 1, 1e7, OFF(sw_r_top_ohm), 0 },
-    { "switches", "r_ohm", K_OHMS4, 0, 0, OFF(sw_r_ohm), 0 },
-    { "switches", "r_ground_ohm", K_NUM, 0, 1e7, OFF(sw_r_ground_ohm), 0 },
-    { "battery", "adc_channel", K_INT, 0, 7, OFF(bat_channel), 0 },
-    { "battery", "r_top_ohm", K_NUM, 0, 1e7, OFF(bat_r_top_ohm), 0 },
-    { "battery", "r_bottom_ohm", K_NUM, 1, 1e7, OFF(bat_r_bottom_ohm), 0 },
+static const keytab_t keys[] = {
+    TEXT("board", "name", name, "the board's name"),
+    TEXT("board", "mcu", mcu, "the MCU, as simavr names it"),
+    NUM("board", "f_cpu_hz", KEYTAB_U32, f_cpu, 1e6, 32e6, "Hz", "the MCU's clock"),
+    NUM("board", "vcc_v", KEYTAB_DOUBLE, vcc_v, 1.8, 5.5, "V", "VCC = AVCC = AREF"),
+    PIN("motor.left", "dir_pin", motor_dir[0], "the H-bridge's direction input"),
+    PIN("motor.left", "pwm_pin", motor_pwm[0], "the H-bridge's PWM input: a Timer1 output"),
+    NUM("motor.left", "forward_level", KEYTAB_INT, motor_fwd_level[0], 0, 1, "0/1", "the direction level that turns the wheel forward"),
+    PIN("motor.right", "dir_pin", motor_dir[1], "the H-bridge's direction input"),
+    PIN("motor.right", "pwm_pin", motor_pwm[1], "the H-bridge's PWM input: a Timer1 output"),
+    NUM("motor.right", "forward_level", KEYTAB_INT, motor_fwd_level[1], 0, 1, "0/1", "the direction level that turns the wheel forward"),
+    PIN("encoder.left", "int_pin", enc_int[0], "A xor B: an external-interrupt pin"),
+    PIN("encoder.left", "b_pin", enc_b[0], "channel B"),
+    LEADS("encoder.left", enc_a_leads[0]),
+    PIN("encoder.right", "int_pin", enc_int[1], "A xor B: an external-interrupt pin"),
+    PIN("encoder.right", "b_pin", enc_b[1], "channel B"),
+    LEADS("encoder.right", enc_a_leads[1]),
+    NUM("switches", "adc_channel", KEYTAB_INT, sw_channel, 0, 7, "1", "the ladder's ADC channel"),
+    NUM("switches", "r_top_ohm", KEYTAB_DOUBLE, sw_r_top_ohm, 1, 1e7, "ohm", "VCC to the ADC pin"),
+    { "switches", "r_ohm", OFF(sw_r_ohm), KEYTAB_REQUIRED, 0.001, 1e7, "ohm", "the ladder's four resistors, bit 0 to bit 3", NULL, 0, 0, 4,
+      KEYTAB_DOUBLES, 0, NULL },
+    NUM("switches", "r_ground_ohm", KEYTAB_DOUBLE, sw_r_ground_ohm, 0, 1e7, "ohm", "in series when every switch is closed"),
+    NUM("battery", "adc_channel", KEYTAB_INT, bat_channel, 0, 7, "1", "the divider's ADC channel"),
+    NUM("battery", "r_top_ohm", KEYTAB_DOUBLE, bat_r_top_ohm, 0, 1e7, "ohm", "battery to the ADC pin"),
+    NUM("battery", "r_bottom_ohm", KEYTAB_DOUBLE, bat_r_bottom_ohm, 1, 1e7, "ohm", "the ADC pin to ground"),
 };
-#define NKEYS (int)(sizeof KEYS / sizeof KEYS[0])
+#define N(t) (sizeof t / sizeof t[0])
+static const char *const fixed[] = { "board", "motor.left", "motor.right", "encoder.left", "encoder.right", "switches", "battery" };
 
-/* [emitter.NAME] (pin, group) and [led.NAME] (pin): as many as the board has */
-static int named_part(bload_t *l, const char *section, const char *name, const char *v)
+/* [emitter.NAME] and [led.NAME]: as many as the board has */
+typedef struct {
+    char name[16];
+    int line;          /* its section's */
+    board_pin_t pin;
+    int group;         /* an emitter's */
+    uint64_t seen;     /* its keys given */
+} part_t;
+
+static const keytab_t emitter_keys[] = {
+    { NULL, "pin", offsetof(part_t, pin), KEYTAB_REQUIRED, 0, 0, "pin", "lights the emitter group", NULL, 0, 0, 0, KEYTAB_PARSED,
+      sizeof(board_pin_t), parse_pin },
+    { NULL, "group", offsetof(part_t, group), KEYTAB_REQUIRED, 0, SIM_EMITTER_GROUPS - 1, "1", "the robot file's [ir.*] emitter number",
+      NULL, 0, 0, 0, KEYTAB_INT, 0, NULL },
+};
+#define LED_KEYS 1 /* of emitter_keys: pin only */
+
+typedef struct {
+    const char *path;
+    board_spec_t work;
+    uint64_t seen;     /* keys[] given */
+    int line[N(fixed)]; /* each fixed section's line, 0: none */
+    part_t emitter[SIM_EMITTER_GROUPS], led[BOARD_LEDS_MAX];
+    int nemitters, nleds;
+    char *err;
+    size_t errn;
+} bload_t;
+
+/* The named part of section ("emitter.NAME", "led.NAME"), NULL if none;
+ * *led: which kind the section names (-1: neither). */
+static part_t *named(bload_t *l, const char *section, int *led)
 {
-    board_spec_t *sp = l->sp;
-    int led = !strncmp(section, "led.", 4);
-    const char *nm = section + (led ? 4 : 8);
-    char (*names)[32] = led ? l->led_names : l->emitter_names;
-    int *n = led ? &sp->nleds : &sp->nemitters, max = led ? BOARD_LEDS_MAX : SIM_EMITTER_GROUPS, i;
-    for (i = 0; i < *n && strcmp(names[i], nm); i++) {}
-    if (i == *n) {
-        if (*n >= max || !*nm || strlen(nm) >= 16)
-            return snprintf(l->reason, sizeof l->reason, "%s: at most %d %s sections, names of 1-15 characters", section, max, led ? "led" : "emitter"), -1;
-        snprintf(names[i], 32, "%s", nm);
-        (*n)++;
-        if (led) snprintf(sp->led_name[i], sizeof sp->led_name[i], "%s", nm), sp->led_pin[i].port = 0;
-        else sp->emitter_pin[i].port = 0, sp->emitter_group[i] = -1;
-    }
-    bkey_t k = { section, name, K_PIN, 0, SIM_EMITTER_GROUPS - 1, 0, 0 };
-    if (!strcmp(name, "pin")) {
-        k.off = led ? OFF(led_pin[i]) : OFF(emitter_pin[i]);
-        return set_value(l, &k, v, (char *)sp);
-    }
-    if (!led && !strcmp(name, "group")) {
-        k.kind = K_INT;
-        k.off = OFF(emitter_group[i]);
-        return set_value(l, &k, v, (char *)sp);
-    }
-    return snprintf(l->reason, sizeof l->reason, "%s.%s: unknown key", section, name), -1;
+    *led = !strncmp(section, "led.", 4) ? 1 : !strncmp(section, "emitter.", 8) ? 0 : -1;
+    if (*led < 0) return NULL;
+    const char *nm = section + (*led ? 4 : 8);
+    part_t *p = *led ? l->led : l->emitter;
+    for (int i = 0, n = *led ? l->nleds : l->nemitters; i < n; i++)
+        if (!strcmp(p[i].name, nm)) return &p[i];
+    return NULL;
 }
 
-static int on_key(void *user, const char *section, const char *name, const char *v)
+static int on_section(void *user, const char *section, int line, char *why, size_t len)
 {
     bload_t *l = user;
-    if (!strncmp(section, "led.", 4) || !strncmp(section, "emitter.", 8)) return named_part(l, section, name, v) == 0;
-    for (int i = 0; i < l->nkeys; i++)
-        if (!strcmp(l->keys[i].section, section) && !strcmp(l->keys[i].key, name)) {
-            if (l->keys[i].seen++) return snprintf(l->reason, sizeof l->reason, "%s.%s: given twice", section, name), 0;
-            return set_value(l, &l->keys[i], v, (char *)l->sp) == 0;
+    for (size_t i = 0; i < N(fixed); i++)
+        if (!strcmp(section, fixed[i])) {
+            if (!l->line[i]) l->line[i] = line;
+            return 0;
         }
-    snprintf(l->reason, sizeof l->reason, "%s.%s: unknown key", section, name);
-    return 0;
-}
-
-/* the line of [section] in text, 0 if none */
-static int section_line(const char *text, const char *section)
-{
-    int line = 1;
-    size_t n = strlen(section);
-    for (const char *p = text; *p; line++) {
-        while (*p == ' ' || *p == '\t') p++;
-        if (*p == '[' && !strncmp(p + 1, section, n) && p[1 + n] == ']') return line;
-        p = strchr(p, '\n');
-        if (!p) break;
-        p++;
+    int led;
+    if (named(l, section, &led) || led < 0) {
+        if (led >= 0) return 0; /* the part's section again */
+        snprintf(why, len, "[%s]: unknown section (board, motor.left, motor.right, encoder.left, encoder.right, switches, battery, "
+                 "emitter.NAME, led.NAME)", section);
+        return -1;
     }
+    const char *nm = section + (led ? 4 : 8);
+    int *n = led ? &l->nleds : &l->nemitters, max = led ? BOARD_LEDS_MAX : SIM_EMITTER_GROUPS;
+    if (*n >= max || !*nm || strlen(nm) >= sizeof l->led[0].name) {
+        snprintf(why, len, "[%s]: at most %d %s sections, names of 1-15 characters", section, max, led ? "led" : "emitter");
+        return -1;
+    }
+    part_t *p = &(led ? l->led : l->emitter)[(*n)++];
+    snprintf(p->name, sizeof p->name, "%s", nm);
+    p->line = line;
     return 0;
 }
 
-static int fail(bload_t *l, const char *text, const char *section, const char *fmt, const char *a)
+static int on_key(void *user, const char *section, const char *key, const char *val, char *why, size_t len)
 {
-    char r[200];
-    snprintf(r, sizeof r, fmt, a);
-    snprintf(l->reason, sizeof l->reason, "%d: %s", section_line(text, section), r);
+    bload_t *l = user;
+    if (!*section) {
+        snprintf(why, len, "%s: a key outside any [section]", key);
+        return -1;
+    }
+    int led;
+    part_t *p = named(l, section, &led);
+    const keytab_t *k = p ? keytab_find(emitter_keys, led ? LED_KEYS : N(emitter_keys), NULL, key) : keytab_find(keys, N(keys), section, key);
+    if (!k) {
+        snprintf(why, len, "%s.%s: unknown key", section, key);
+        return -1;
+    }
+    if (keytab_set(k, p ? (void *)p : (void *)&l->work, section, val, why, len) != 0) return -1;
+    if (p) p->seen |= 1ull << (k - emitter_keys);
+    else l->seen |= 1ull << (k - keys);
+    return 0;
+}
+
+/* The load's error at line (0: none); returns -1. */
+static int fail(bload_t *l, int line, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+static int fail(bload_t *l, int line, const char *fmt, ...)
+{
+    char why[300];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(why, sizeof why, fmt, ap);
+    va_end(ap);
+    if (line > 0) snprintf(l->err, l->errn, "%s:%d: %s", l->path, line, why);
+    else snprintf(l->err, l->errn, "%s: %s", l->path, why);
     return -1;
+}
+
+static int line_of(const bload_t *l, const char *section)
+{
+    for (size_t i = 0; i < N(fixed); i++)
+        if (!strcmp(section, fixed[i])) return l->line[i];
+    return 0;
+}
+
+/* Every key given; the named parts into the spec. */
+static int missing(bload_t *l)
+{
+    const keytab_t *k = keytab_missing(keys, N(keys), l->seen);
+    if (k && line_of(l, k->section)) return fail(l, line_of(l, k->section), "%s.%s: missing", k->section, k->key);
+    if (k) return fail(l, 0, "%s.%s: missing (no [%s] section)", k->section, k->key, k->section);
+    board_spec_t *sp = &l->work;
+    for (int i = 0; i < l->nemitters; i++) {
+        part_t *p = &l->emitter[i];
+        if ((k = keytab_missing(emitter_keys, N(emitter_keys), p->seen)) != NULL)
+            return fail(l, p->line, "emitter.%s.%s: missing", p->name, k->key);
+        sp->emitter_pin[i] = p->pin;
+        sp->emitter_group[i] = p->group;
+    }
+    for (int i = 0; i < l->nleds; i++) {
+        part_t *p = &l->led[i];
+        if ((k = keytab_missing(emitter_keys, LED_KEYS, p->seen)) != NULL) return fail(l, p->line, "led.%s.%s: missing", p->name, k->key);
+        sp->led_pin[i] = p->pin;
+        snprintf(sp->led_name[i], sizeof sp->led_name[i], "%s", p->name);
+    }
+    sp->nemitters = l->nemitters;
+    sp->nleds = l->nleds;
+    return 0;
 }
 
 /* the pins of the board, each with its section: no pin twice */
-static int check_pins(bload_t *l, const char *text)
+static int check_pins(bload_t *l)
 {
-    board_spec_t *sp = l->sp;
-    board_pin_t pins[32];
-    char secs[32][40];
-    int n = 0;
-    static const char *side[2] = { "left", "right" };
+    const board_spec_t *sp = &l->work;
+    board_pin_t pins[8 + SIM_EMITTER_GROUPS + BOARD_LEDS_MAX];
+    char secs[N(pins)][24];
+    int lines[N(pins)], n = 0;
+    static const char *const side[2] = { "left", "right" };
     for (int m = 0; m < 2; m++) {
-        snprintf(secs[n], 40, "motor.%s", side[m]), pins[n++] = sp->motor_dir[m];
-        snprintf(secs[n], 40, "motor.%s", side[m]), pins[n++] = sp->motor_pwm[m];
-        snprintf(secs[n], 40, "encoder.%s", side[m]), pins[n++] = sp->enc_int[m];
-        snprintf(secs[n], 40, "encoder.%s", side[m]), pins[n++] = sp->enc_b[m];
+        board_pin_t mine[4] = { sp->motor_dir[m], sp->motor_pwm[m], sp->enc_int[m], sp->enc_b[m] };
+        for (int j = 0; j < 4; j++, n++) {
+            snprintf(secs[n], sizeof secs[n], "%s.%s", j < 2 ? "motor" : "encoder", side[m]);
+            lines[n] = line_of(l, secs[n]);
+            pins[n] = mine[j];
+        }
     }
-    for (int i = 0; i < sp->nemitters; i++) snprintf(secs[n], 40, "emitter.%s", l->emitter_names[i]), pins[n++] = sp->emitter_pin[i];
-    for (int i = 0; i < sp->nleds; i++) snprintf(secs[n], 40, "led.%s", l->led_names[i]), pins[n++] = sp->led_pin[i];
-    for (int i = 0; i < n; i++) {
-        if (!pins[i].port) return fail(l, text, secs[i], "%s.pin: missing", secs[i]);
+    for (int i = 0; i < l->nemitters; i++, n++)
+        snprintf(secs[n], sizeof secs[n], "emitter.%s", l->emitter[i].name), pins[n] = sp->emitter_pin[i], lines[n] = l->emitter[i].line;
+    for (int i = 0; i < l->nleds; i++, n++)
+        snprintf(secs[n], sizeof secs[n], "led.%s", l->led[i].name), pins[n] = sp->led_pin[i], lines[n] = l->led[i].line;
+    for (int i = 0; i < n; i++)
         for (int j = 0; j < i; j++)
             if (pins[j].port == pins[i].port && pins[j].bit == pins[i].bit)
-                return fail(l, text, secs[i], "%s: a pin already wired to another part", secs[i]);
-    }
+                return fail(l, lines[i], "%s: a pin already wired to another part (%s)", secs[i], secs[j]);
     return 0;
 }
 
-static int check(bload_t *l, const char *text)
+static int check(bload_t *l)
 {
-    board_spec_t *sp = l->sp;
-    for (int i = 0; i < l->nkeys; i++)
-        if (!l->keys[i].seen) {
-            char sk[80];
-            snprintf(sk, sizeof sk, "%s.%s", l->keys[i].section, l->keys[i].key);
-            return fail(l, text, l->keys[i].section, "%s: missing", sk);
-        }
+    board_spec_t *sp = &l->work;
     static const char *mcus[] = { "atmega48", "atmega48p", "atmega88", "atmega88p", "atmega168", "atmega168p", "atmega328", "atmega328p" };
     int known = 0;
-    for (size_t i = 0; i < sizeof mcus / sizeof mcus[0]; i++) known |= !strcmp(sp->mcu, mcus[i]);
-    if (!known) return fail(l, text, "board", "board.mcu: '%s': the board emulation knows the ATmega48/88/168/328 registers only", sp->mcu);
+    for (size_t i = 0; i < N(mcus); i++) known |= !strcmp(sp->mcu, mcus[i]);
+    if (!known)
+        return fail(l, line_of(l, "board"), "board.mcu: '%s': the board emulation knows the ATmega48/88/168/328 registers only", sp->mcu);
     for (int m = 0; m < 2; m++) {
         board_pin_t p = sp->motor_pwm[m];
+        const char *sec = m ? "motor.right" : "motor.left";
         if (p.port != 'B' || (p.bit != 1 && p.bit != 2))
-            return fail(l, text, m ? "motor.right" : "motor.left", "%s.pwm_pin: not a Timer1 output (OC1A = D9, OC1B = D10)", m ? "motor.right" : "motor.left");
+            return fail(l, line_of(l, sec), "%s.pwm_pin: not a Timer1 output (OC1A = D9, OC1B = D10)", sec);
         sp->motor_oc[m] = p.bit == 2;
     }
-    for (int i = 0; i < sp->nemitters; i++) {
-        char sec[40];
-        snprintf(sec, sizeof sec, "emitter.%s", l->emitter_names[i]);
-        if (sp->emitter_group[i] < 0) return fail(l, text, sec, "%s.group: missing", sec);
+    for (int i = 0; i < sp->nemitters; i++)
         for (int j = 0; j < i; j++)
-            if (sp->emitter_group[j] == sp->emitter_group[i]) return fail(l, text, sec, "%s.group: another emitter lights that group", sec);
-    }
-    if (sp->sw_channel == sp->bat_channel) return fail(l, text, "battery", "%s", "battery.adc_channel: the switches' channel too");
-    return check_pins(l, text);
+            if (sp->emitter_group[j] == sp->emitter_group[i])
+                return fail(l, l->emitter[i].line, "emitter.%s.group: another emitter lights that group", l->emitter[i].name);
+    if (sp->sw_channel == sp->bat_channel) return fail(l, line_of(l, "battery"), "battery.adc_channel: the switches' channel too");
+    return check_pins(l);
 }
 
 int board_load(board_spec_t *spec, const char *path, char *err, size_t errn)
 {
-    size_t len;
-    char *text = infile_read(path, BOARD_MAX_BYTES, &len, err, errn);
-    if (!text) return -1;
     bload_t *l = calloc(1, sizeof *l);
-    bkey_t *keys = malloc(sizeof KEYS);
-    board_spec_t work;
-    memset(&work, 0, sizeof work);
-    int rc = -1;
-    if (!l || !keys) snprintf(err, errn, "%s: out of memory", path);
-    else if (config_scan_lines(text, len, path, err, errn) == 0) {
-        memcpy(keys, KEYS, sizeof KEYS);
-        l->sp = &work;
-        l->keys = keys;
-        l->nkeys = NKEYS;
-        int ini = ini_parse_string(text, on_key, l);
-        if (ini > 0) snprintf(err, errn, "%s:%d: %s", path, ini, l->reason[0] ? l->reason : "syntax error (want key = value or [section])");
-        else if (ini < 0) snprintf(err, errn, "%s: out of memory", path);
-        else if (check(l, text) != 0) snprintf(err, errn, "%s:%s", path, l->reason);
-        else {
-            snprintf(work.path, sizeof work.path, "%s", path);
-            *spec = work;
-            rc = 0;
-        }
+    if (!l) {
+        snprintf(err, errn, "%s: out of memory", path);
+        return -1;
     }
-    free(keys);
+    l->path = path;
+    l->err = err;
+    l->errn = errn;
+    keytab_defaults(keys, N(keys), &l->work);
+    const inifile_t r = { on_section, on_key, l, "want key = value or [section]" };
+    int rc = inifile_load(&r, path, BOARD_MAX_BYTES, err, errn);
+    if (rc == 0 && missing(l) == 0 && check(l) == 0) {
+        snprintf(l->work.path, sizeof l->work.path, "%s", path);
+        *spec = l->work;
+    } else {
+        rc = -1;
+    }
     free(l);
-    free(text);
     return rc;
 }
 

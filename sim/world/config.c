@@ -1,26 +1,24 @@
 /* config.c - the key table (unit, physical range, source of the default),
- * INI loading through libinih, printing and hashing. */
+ * loading through the INI reader (inifile.h), printing and hashing. */
 #include "config.h"
 
-#include <errno.h>
 #include <glib.h>
-#include <ini.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "io/infile.h"
+#include "inifile.h"
 #include "keytab.h"
 #include "robot.h"
 
 #define K(sec, name, def, min, max, unit, source) \
-    { sec, #name, offsetof(simcfg_t, name), def, min, max, unit, source, NULL, 0, 0, 0 }
+    { sec, #name, offsetof(simcfg_t, name), def, min, max, unit, source, NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL }
 /* a key whose value is a whole number */
 #define KW(sec, name, def, min, max, unit, source) \
-    { sec, #name, offsetof(simcfg_t, name), def, min, max, unit, source, NULL, 1, 0, 0 }
+    { sec, #name, offsetof(simcfg_t, name), def, min, max, unit, source, NULL, 1, 0, 0, KEYTAB_DOUBLE, 0, NULL }
 /* a key whose value is one of the words (stored as the word's index) */
 #define W(sec, name, def, words, source) \
-    { sec, #name, offsetof(simcfg_t, name), def, 0, sizeof words / sizeof words[0] - 1, "word", source, words, 1, 0, 0 }
+    { sec, #name, offsetof(simcfg_t, name), def, 0, sizeof words / sizeof words[0] - 1, "word", source, words, 1, 0, 0, KEYTAB_DOUBLE, 0, NULL }
 
 static const char *const solvers[] = { "quickstep", "exact" };
 
@@ -50,12 +48,14 @@ static const keytab_t keys[] = {
     K("variation", motor_k_sigma_pct, 0, 0, 10, "%", "spread of motor_k_diff_pct (motors of one batch differ by a few per cent)"),
     K("variation", tyre_mu_sigma, 0, 0, 0.5, "1", "spread of tyre_mu_diff"),
     K("variation", com_sigma_m, 0, 0, 0.01, "m", "spread of com_x_m and com_y_m"),
+    /* The firmware's control tick is no key: it is hal.h's HAL_TICK_HZ,
+     * compiled into the firmware (the contest calls fw_tick every
+     * 1/HAL_TICK_HZ s of simulation time). */
     K("sim", step_s, 0.001, 1e-5, 0.01, "s", "1 kHz physics"),
     W("sim", solver, 1, solvers, "exact: dWorldStep, no creep at rest, drives straight (README); quickstep slid a resting robot 10 mm/min"),
     KW("sim", solver_iterations, 10, 1, 200, "1", "solver = quickstep only: at 5 the wheel hinges give and a straight run crabs 1.4 degrees"),
     K("sim", contact_erp, 0.4, 0.01, 1, "1", "ours: contact error reduction; stiff enough that the robot rests within 0.1 mm"),
     K("sim", contact_cfm, 1e-5, 0, 1, "m/N", "ours: contact softness"),
-    K("sim", control_hz, 1000, 10, 100000, "Hz", "firmware control tick"),
     K("sim", time_limit_s, 600, 1, 86400, "s", "contest rules: 10 minutes"),
 };
 
@@ -88,30 +88,18 @@ void config_defaults(simcfg_t *c)
     robot_defaults(c);
 }
 
-typedef struct {
-    simcfg_t *cfg;
-    char reason[200]; /* the first error's text */
-    int failed;
-} load_t;
-
-static int on_key(void *user, const char *section, const char *name, const char *val)
+static int on_key(void *user, const char *section, const char *name, const char *val, char *why, size_t len)
 {
-    load_t *l = user;
-    if (l->failed) return 1; /* report the first error only */
     const keytab_t *k = keytab_find(keys, NKEYS, section, name);
-    l->failed = 1;
     if (!k && robot_section(section)) {
-        snprintf(l->reason, sizeof l->reason, "%s.%s: a robot's number: it belongs in the robot file (--robot FILE, docs/ROBOTS.md)",
-                 section, name);
-        return 0;
+        snprintf(why, len, "%s.%s: a robot's number: it belongs in the robot file (--robot FILE, docs/ROBOTS.md)", section, name);
+        return -1;
     }
     if (!k) {
-        snprintf(l->reason, sizeof l->reason, "%s.%s: unknown key", section, name);
-        return 0;
+        snprintf(why, len, "%s.%s: unknown key", section, name);
+        return -1;
     }
-    if (keytab_set(k, l->cfg, section, val, l->reason, sizeof l->reason) != 0) return 0;
-    l->failed = 0;
-    return 1;
+    return keytab_set(k, user, section, val, why, len);
 }
 
 /* Cross-key checks that one key's range cannot express. */
@@ -124,82 +112,28 @@ static int check(const simcfg_t *c, char *reason, size_t len)
     return 0;
 }
 
-static int finish(load_t *l, int rc, const char *name, char *err, size_t errlen)
+/* The config from text (NULL: the file at name) over c; c changes only
+ * if the whole file is good. */
+static int load(simcfg_t *c, const char *text, const char *name, char *err, size_t errlen)
 {
-    if (rc < 0) { /* ini_parse_string: out of memory */
-        snprintf(err, errlen, "%s: cannot parse: out of memory", name);
-        return -1;
-    }
-    if (rc > 0) {
-        snprintf(err, errlen, "%s:%d: %s", name, rc, l->failed ? l->reason : "syntax error (want key = value or [section])");
-        return -1;
-    }
+    simcfg_t work = *c;
+    const inifile_t r = { NULL, on_key, &work, "want key = value or [section]" };
+    int rc = text ? inifile_parse(&r, text, strlen(text), name, err, errlen) : inifile_load(&r, name, CONFIG_MAX_BYTES, err, errlen);
+    if (rc != 0) return -1;
     char reason[200];
-    if (check(l->cfg, reason, sizeof reason) != 0) {
+    if (check(&work, reason, sizeof reason) != 0) {
         snprintf(err, errlen, "%s: %s", name, reason);
         return -1;
     }
-    return 0;
-}
-
-/* libinih reads each line into a buffer of INI_MAX_LINE bytes (with the
- * line end and a NUL) and parses the rest of a longer line as a line of
- * its own, so a long comment could set a key and later line numbers were
- * off; a NUL would end the text early. Both are errors here. */
-#define CONFIG_MAX_LINE (INI_MAX_LINE - 3) /* bytes of a line without its CR LF */
-
-int config_scan_lines(const char *text, size_t len, const char *name, char *err, size_t errlen)
-{
-    size_t line = 1, start = 0;
-    for (size_t i = 0; i <= len; i++) {
-        if (i < len && text[i] == '\0') {
-            snprintf(err, errlen, "%s:%zu: NUL byte", name, line);
-            return -1;
-        }
-        if (i < len && text[i] != '\n') continue;
-        size_t n = i - start;
-        if (n > 0 && text[i - 1] == '\r') n--;
-        if (n > CONFIG_MAX_LINE) {
-            snprintf(err, errlen, "%s:%zu: line too long (%zu bytes; at most %d)", name, line, n, CONFIG_MAX_LINE);
-            return -1;
-        }
-        line++;
-        start = i + 1;
-    }
-    return 0;
-}
-
-static int load_text(simcfg_t *c, const char *text, size_t len, const char *name, char *err, size_t errlen)
-{
-    simcfg_t work = *c; /* nothing changes unless the whole file is good */
-    load_t l = { &work, "", 0 };
-    if (config_scan_lines(text, len, name, err, errlen) != 0) return -1;
-    int rc = ini_parse_string(text, on_key, &l);
-    if (finish(&l, rc, name, err, errlen) != 0) return -1;
     *c = work;
     return 0;
 }
 
-int config_apply_file(simcfg_t *c, const char *path, size_t max_bytes, config_text_fn apply, char *err, size_t errlen)
-{
-    size_t len;
-    /* a regular file of a bounded size: a FIFO or /dev/zero hung, a
-     * directory read as an empty file */
-    char *text = infile_read(path, max_bytes, &len, err, errlen);
-    if (!text) return -1;
-    int rc = apply(c, text, len, path, err, errlen);
-    free(text);
-    return rc;
-}
-
-int config_load(simcfg_t *c, const char *path, char *err, size_t errlen)
-{
-    return config_apply_file(c, path, CONFIG_MAX_BYTES, load_text, err, errlen);
-}
+int config_load(simcfg_t *c, const char *path, char *err, size_t errlen) { return load(c, NULL, path, err, errlen); }
 
 int config_load_string(simcfg_t *c, const char *text, const char *name, char *err, size_t errlen)
 {
-    return load_text(c, text, strlen(text), name, err, errlen);
+    return load(c, text, name, err, errlen);
 }
 
 void config_print(const simcfg_t *c, FILE *out)

@@ -8,8 +8,10 @@
  *   [sim]
  *   step_s = 0.0005
  *
- * Unknown keys, missing values and values out of physical range are errors
- * "FILE:LINE: section.key: reason".
+ * Unknown keys, missing values, values out of physical range, a key given
+ * twice in a section and indented (continuation) lines are errors
+ * "FILE:LINE: section.key: reason" (inifile.h). The firmware's control
+ * tick is not here: it is hal.h's HAL_TICK_HZ, a compile-time constant.
  */
 #ifndef CONFIG_H
 #define CONFIG_H
@@ -108,7 +110,6 @@ typedef struct {
     double solver;          /* SIM_SOLVER_QUICKSTEP or SIM_SOLVER_EXACT */
     double solver_iterations;
     double contact_erp, contact_cfm; /* contact softness (ODE units) */
-    double control_hz;      /* firmware control tick */
     double time_limit_s;    /* contest limit */
 } simcfg_t;
 
@@ -133,20 +134,12 @@ void config_defaults(simcfg_t *c);
  * "FILE:LINE: section.key: reason", "FILE:LINE: line too long (...)" (a
  * line over 197 bytes, what libinih reads whole), "FILE:LINE: NUL byte",
  * or "FILE: cannot open: ...", "FILE: not a regular file (...)", "FILE:
- * too large (...)" (regular files of at most CONFIG_MAX_BYTES only). */
+ * too large (...)" (regular files of at most CONFIG_MAX_BYTES only); c is
+ * unchanged then. */
 int config_load(simcfg_t *c, const char *path, char *err, size_t errlen);
 
 /* Same from a NUL-terminated string (name is used in messages). */
 int config_load_string(simcfg_t *c, const char *text, const char *name, char *err, size_t errlen);
-
-/* Read the file at path (a regular file of at most max_bytes) and apply
- * its text with `apply` (the config's or the robot file's loader). */
-typedef int (*config_text_fn)(simcfg_t *c, const char *text, size_t len, const char *name, char *err, size_t errlen);
-int config_apply_file(simcfg_t *c, const char *path, size_t max_bytes, config_text_fn apply, char *err, size_t errlen);
-
-/* A config or robot file's text, line by line: 0, or -1 with
- * "NAME:LINE: NUL byte" or "NAME:LINE: line too long (...)" in err. */
-int config_scan_lines(const char *text, size_t len, const char *name, char *err, size_t errlen);
 
 /* Write every key with its value, unit and source, as a valid INI file. */
 void config_print(const simcfg_t *c, FILE *out);

@@ -6,18 +6,42 @@
 #include <string.h>
 
 static double per(const keytab_t *k) { return k->per > 0 ? k->per : 1.0; }
-static double *field(const keytab_t *k, void *t) { return (double *)((char *)t + k->offset); }
-static double cfield(const keytab_t *k, const void *t) { return *(const double *)((const char *)t + k->offset); }
+static void *at(const keytab_t *k, void *t) { return (char *)t + k->offset; }
+static double *field(const keytab_t *k, void *t) { return at(k, t); }
+
+/* A number or word (already divided by per) into k's field, by its type. */
+static void store(const keytab_t *k, void *t, double v)
+{
+    if (k->type == KEYTAB_INT) *(int *)at(k, t) = (int)v;
+    else if (k->type == KEYTAB_U32) *(uint32_t *)at(k, t) = (uint32_t)v;
+    else *field(k, t) = v;
+}
+
+static double load(const keytab_t *k, const void *t)
+{
+    const void *f = (const char *)t + k->offset;
+    if (k->type == KEYTAB_INT) return *(const int *)f;
+    if (k->type == KEYTAB_U32) return *(const uint32_t *)f;
+    if (k->type == KEYTAB_DOUBLE) return *(const double *)f;
+    return 0.0;
+}
+
+static int whole(const keytab_t *k) { return k->whole || k->type == KEYTAB_INT || k->type == KEYTAB_U32; }
 
 void keytab_defaults(const keytab_t *tab, size_t n, void *target)
 {
     for (size_t i = 0; i < n; i++) {
-        double d = isnan(tab[i].def) ? 0.0 : tab[i].def;
-        if (tab[i].list) {
-            field(&tab[i], target)[-1] = isnan(tab[i].def) ? 0 : 1;
-            for (int j = 0; j < tab[i].list; j++) field(&tab[i], target)[j] = j ? 0.0 : d / per(&tab[i]);
+        const keytab_t *k = &tab[i];
+        double d = isnan(k->def) ? 0.0 : k->def;
+        if (k->type == KEYTAB_TEXT || k->type == KEYTAB_PARSED) {
+            memset(at(k, target), 0, k->size);
+        } else if (k->type == KEYTAB_DOUBLES) {
+            for (int j = 0; j < k->list; j++) field(k, target)[j] = d / per(k);
+        } else if (k->list) {
+            field(k, target)[-1] = isnan(k->def) ? 0 : 1;
+            for (int j = 0; j < k->list; j++) field(k, target)[j] = j ? 0.0 : d / per(k);
         } else {
-            *field(&tab[i], target) = d / per(&tab[i]);
+            store(k, target, d / per(k));
         }
     }
 }
@@ -29,17 +53,34 @@ const keytab_t *keytab_find(const keytab_t *tab, size_t n, const char *section, 
     return NULL;
 }
 
+const keytab_t *keytab_missing(const keytab_t *tab, size_t n, uint64_t seen)
+{
+    for (size_t i = 0; i < n && i < 64; i++)
+        if (isnan(tab[i].def) && !(seen & (1ull << i))) return &tab[i];
+    return NULL;
+}
+
 static int word(const keytab_t *k, void *t, const char *where, const char *val, char *reason, size_t len)
 {
     for (int i = 0; i <= (int)k->max; i++)
         if (!strcmp(val, k->choices[i])) {
-            *field(k, t) = i;
+            store(k, t, i);
             return 0;
         }
     int n = snprintf(reason, len, "%s.%s: '%s' is not one of", where, k->key, val);
     for (int i = 0; i <= (int)k->max && n > 0 && (size_t)n < len; i++)
         n += snprintf(reason + n, len - (size_t)n, " %s", k->choices[i]);
     return -1;
+}
+
+static int text(const keytab_t *k, void *t, const char *where, const char *val, char *reason, size_t len)
+{
+    if (strlen(val) >= k->size) {
+        snprintf(reason, len, "%s.%s: '%.40s...' is longer than %zu characters", where, k->key, val, k->size - 1);
+        return -1;
+    }
+    memcpy(at(k, t), val, strlen(val) + 1);
+    return 0;
 }
 
 /* One number at *p (leading blanks skipped), range-checked; *p moves past it. */
@@ -52,7 +93,7 @@ static int number_at(const keytab_t *k, const char **p, const char *where, doubl
         snprintf(reason, len, "%s.%s: '%s' is not a number", where, k->key, *p);
         return -1;
     }
-    if (k->whole && v != floor(v)) {
+    if (whole(k) && v != floor(v)) {
         snprintf(reason, len, "%s.%s: %g is not a whole number", where, k->key, v);
         return -1;
     }
@@ -66,30 +107,54 @@ static int number_at(const keytab_t *k, const char **p, const char *where, doubl
     return 0;
 }
 
-int keytab_set(const keytab_t *k, void *t, const char *where, const char *val, char *reason, size_t len)
+/* The numbers of val into v[] (at most cap): how many, or -1. */
+static int numbers(const keytab_t *k, const char *where, const char *val, double *v, int cap, char *reason, size_t len)
 {
-    if (!val || !*val) {
-        snprintf(reason, len, "%s.%s: missing value", where, k->key);
-        return -1;
-    }
-    if (k->choices) return word(k, t, where, val, reason, len);
     const char *p = val;
-    double v[64];
-    int n = 0, cap = k->list > 0 ? k->list : 1;
+    int n = 0;
     while (*p) {
         if (n == cap && !k->list) {
             snprintf(reason, len, "%s.%s: '%s' is not a number", where, k->key, val);
             return -1;
         }
-        if (n == cap || n == 64) {
+        if (n == cap) {
             snprintf(reason, len, "%s.%s: more than %d numbers", where, k->key, cap);
             return -1;
         }
         if (number_at(k, &p, where, &v[n], reason, len) != 0) return -1;
         n++;
     }
+    return n;
+}
+
+int keytab_set(const keytab_t *k, void *t, const char *where, const char *val, char *reason, size_t len)
+{
+    if (!val || !*val) {
+        snprintf(reason, len, "%s.%s: missing value", where, k->key);
+        return -1;
+    }
+    if (k->type == KEYTAB_TEXT) return text(k, t, where, val, reason, len);
+    if (k->type == KEYTAB_PARSED) {
+        char why[160];
+        if (k->parse(val, at(k, t), why, sizeof why) == 0) return 0;
+        snprintf(reason, len, "%s.%s: %s", where, k->key, why);
+        return -1;
+    }
+    if (k->choices) return word(k, t, where, val, reason, len);
+    double v[64];
+    int cap = k->list > 0 ? (k->list < 64 ? k->list : 64) : 1;
+    int n = numbers(k, where, val, v, cap, reason, len);
+    if (n < 0) return -1;
+    if (k->type == KEYTAB_DOUBLES) {
+        if (n != cap) {
+            snprintf(reason, len, "%s.%s: %d numbers, want %d", where, k->key, n, cap);
+            return -1;
+        }
+        memcpy(field(k, t), v, sizeof v[0] * (size_t)n);
+        return 0;
+    }
     if (!k->list) {
-        *field(k, t) = v[0];
+        store(k, t, v[0]);
         return 0;
     }
     field(k, t)[-1] = n;
@@ -97,7 +162,7 @@ int keytab_set(const keytab_t *k, void *t, const char *where, const char *val, c
     return 0;
 }
 
-double keytab_get(const keytab_t *k, const void *t) { return cfield(k, t) * per(k); }
+double keytab_get(const keytab_t *k, const void *t) { return load(k, t) * per(k); }
 
 /* v (stored) in as few digits as read back the same double, at least 9:
  * the defaults print as before, and a value given with more digits prints
@@ -116,17 +181,20 @@ static void number(double stored, double p, FILE *out)
 
 void keytab_print(const keytab_t *k, const void *t, FILE *out)
 {
+    const double *f = (const double *)(const void *)((const char *)t + k->offset);
     fprintf(out, "%s = ", k->key);
-    if (k->choices) {
-        fputs(k->choices[(int)cfield(k, t)], out);
+    if (k->type == KEYTAB_TEXT) {
+        fputs((const char *)t + k->offset, out);
+    } else if (k->choices) {
+        fputs(k->choices[(int)load(k, t)], out);
     } else if (k->list) {
-        int n = (int)field(k, (void *)t)[-1];
+        int n = k->type == KEYTAB_DOUBLES ? k->list : (int)f[-1];
         for (int i = 0; i < n; i++) {
             if (i) fputc(' ', out);
-            number(field(k, (void *)t)[i], per(k), out);
+            number(f[i], per(k), out);
         }
     } else {
-        number(cfield(k, t), per(k), out);
+        number(load(k, t), per(k), out);
     }
     fprintf(out, " ; %s; %s\n", k->unit, k->source);
 }

@@ -1,15 +1,16 @@
 /* robot.c - the robot file: components, their schemas, loading through
- * libinih, checks and printing (see robot.h). */
+ * the INI reader (inifile.h), checks and printing (see robot.h). */
 #include "robot.h"
 
 #include <ctype.h>
 #include <stdarg.h>
-#include <ini.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "inifile.h"
 #include "keytab.h"
+#include "world.h"
 #include "world/sensors/sensor.h"
 #include "world/sensors/tof.h"
 
@@ -21,7 +22,7 @@ static const char *const starts[] = { "centre", "back_to_wall" };
 /* ---- the schemas of the robot's fixed parts ---- */
 
 #define C(name, field, per, min, max, unit, src) \
-    { NULL, #name, offsetof(simcfg_t, field), KEYTAB_REQUIRED, min, max, unit, src, NULL, 0, per, 0 }
+    { NULL, #name, offsetof(simcfg_t, field), KEYTAB_REQUIRED, min, max, unit, src, NULL, 0, per, 0, KEYTAB_DOUBLE, 0, NULL }
 static const keytab_t chassis_keys[] = {
     C(body_w_mm, body_w_m, 1000, 10, 300, "mm", "the body's width"),
     C(body_l_mm, body_l_m, 1000, 10, 300, "mm", "the body's length"),
@@ -38,25 +39,25 @@ static const keytab_t chassis_keys[] = {
     C(caster_mass_g, caster_mass_kg, 1000, 0.5, 500, "g", "caster's mass"),
     C(caster_y_mm, caster_y_m, 1000, -200, 200, "mm", "caster ahead of the body's centre (negative: behind)"),
     { NULL, "casters", offsetof(simcfg_t, casters), 1, 1, 2, "1", "1, or 2: a second skid at caster2_y_mm, as the first",
-      NULL, 1, 0, 0 },
+      NULL, 1, 0, 0, KEYTAB_DOUBLE, 0, NULL },
     { NULL, "caster2_y_mm", offsetof(simcfg_t, caster2_y_m), 0, -200, 200, "mm", "the second skid ahead of the body's centre",
-      NULL, 0, 1000, 0 },
+      NULL, 0, 1000, 0, KEYTAB_DOUBLE, 0, NULL },
     C(tyre_mu, tyre_mu, 0, 0.01, 3, "1", "Coulomb friction, tyre on floor"),
     C(tyre_mu_dynamic, tyre_mu_dynamic, 0, 0.01, 3, "1", "sliding friction, <= tyre_mu"),
     C(tyre_slip_m_s, tyre_slip_m_s, 0, 0, 1, "m/s", "slip speed above which tyre_mu_dynamic applies"),
     { NULL, "start", offsetof(simcfg_t, start), 0, 0, 1, "word",
-      "centre: in the start cell's centre; back_to_wall: its rear against the cell's back wall (UKMARSBOT)", starts, 1, 0, 0 },
+      "centre: in the start cell's centre; back_to_wall: its rear against the cell's back wall (UKMARSBOT)", starts, 1, 0, 0, KEYTAB_DOUBLE, 0, NULL },
     { NULL, "body_com_y_mm", offsetof(simcfg_t, body_com_y_m), 0, -100, 100, "mm",
-      "the body's centre of mass ahead of its centre (0 = at the box's centre)", NULL, 0, 1000, 0 },
+      "the body's centre of mass ahead of its centre (0 = at the box's centre)", NULL, 0, 1000, 0, KEYTAB_DOUBLE, 0, NULL },
     { NULL, "body_yaw_inertia_kgm2", offsetof(simcfg_t, body_yaw_inertia_kgm2), 0, 0, 0.1, "kg*m^2",
-      "the body's own about its vertical axis through its centre; 0 = a uniform box's", NULL, 0, 0, 0 },
+      "the body's own about its vertical axis through its centre; 0 = a uniform box's", NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL },
 };
 
 #define D(name, def, min, max, unit, src) \
-    { NULL, #name, offsetof(drive_spec_t, name), def, min, max, unit, src, NULL, 0, 0, 0 }
+    { NULL, #name, offsetof(drive_spec_t, name), def, min, max, unit, src, NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL }
 static const keytab_t motor_keys[] = {
     { NULL, "model", offsetof(drive_spec_t, motor_model), KEYTAB_REQUIRED, 0, 1, "word",
-      "datasheet: losses and rotor inertia; paper: the paper's eq. 1-5", motor_models, 1, 0, 0 },
+      "datasheet: losses and rotor inertia; paper: the paper's eq. 1-5", motor_models, 1, 0, 0, KEYTAB_DOUBLE, 0, NULL },
     D(rated_v, KEYTAB_REQUIRED, 0.5, 50, "V", "the datasheet's figures below are at this voltage"),
     D(no_load_rpm, KEYTAB_REQUIRED, 1, 100000, "rpm", "output shaft, at rated_v"),
     D(no_load_a, KEYTAB_REQUIRED, 0, 10, "A", "at rated_v"),
@@ -69,19 +70,19 @@ static const keytab_t motor_keys[] = {
 };
 static const keytab_t encoder_keys[] = {
     D(encoder_ppr, KEYTAB_REQUIRED, 1, 100000, "counts/motor rev", "counts per motor-shaft turn, every edge counted"),
-    { NULL, "channels", offsetof(drive_spec_t, encoder_channels), 2, 1, 2, "1", "1: pulses only; 2: quadrature (direction)", NULL, 1, 0, 0 },
+    { NULL, "channels", offsetof(drive_spec_t, encoder_channels), 2, 1, 2, "1", "1: pulses only; 2: quadrature (direction)", NULL, 1, 0, 0, KEYTAB_DOUBLE, 0, NULL },
 };
 #define BT(name, def, min, max, unit, src) \
-    { NULL, #name, offsetof(battery_spec_t, name), def, min, max, unit, src, NULL, 0, 0, 0 }
+    { NULL, #name, offsetof(battery_spec_t, name), def, min, max, unit, src, NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL }
 static const keytab_t battery_keys[] = {
     { NULL, "ocv_v", offsetof(battery_spec_t, ocv_v), KEYTAB_REQUIRED, 0.5, 60, "V",
-      "open-circuit voltage, empty to full in even steps of charge (one value: constant)", NULL, 0, 0, BATTERY_OCV_MAX },
+      "open-circuit voltage, empty to full in even steps of charge (one value: constant)", NULL, 0, 0, BATTERY_OCV_MAX, KEYTAB_DOUBLE, 0, NULL },
     BT(r_ohm, KEYTAB_REQUIRED, 0, 100, "ohm", "internal resistance"),
     BT(capacity_mah, KEYTAB_REQUIRED, 1, 1e6, "mAh", "capacity"),
     BT(divider, 1, 0.01, 1, "1", "what the robot's ADC sees of the battery voltage"),
 };
 #define M(name, unit, src) \
-    { NULL, #name, offsetof(robot_measured_t, name), -1, -1, 1e6, unit, src, NULL, 0, 0, 0 }
+    { NULL, #name, offsetof(robot_measured_t, name), -1, -1, 1e6, unit, src, NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL }
 static const keytab_t measured_keys[] = {
     M(fwd_km_mm_s_v, "mm/s/V", "forward: slope of steady speed against motor voltage"),
     M(fwd_tm_s, "s", "forward: time constant of a voltage step"),
@@ -91,7 +92,7 @@ static const keytab_t measured_keys[] = {
     M(counts_500mm_right, "counts", "right encoder over 500 mm of straight travel"),
 };
 #define P(name, field, def, min, max, per, unit, src) \
-    { NULL, #name, offsetof(robot_part_t, field), def, min, max, unit, src, NULL, 0, per, 0 }
+    { NULL, #name, offsetof(robot_part_t, field), def, min, max, unit, src, NULL, 0, per, 0, KEYTAB_DOUBLE, 0, NULL }
 static const keytab_t pose_keys[] = {
     P(x_mm, x_m, KEYTAB_REQUIRED, -200, 200, 1000, "mm", "to the right of the body's centre"),
     P(y_mm, y_m, KEYTAB_REQUIRED, -200, 200, 1000, "mm", "ahead of the body's centre"),
@@ -123,7 +124,7 @@ typedef struct {
     sect_t s[MAX_SECTIONS];
     int n;
     char reason[240];
-    int failed, err_line; /* err_line: the line of an error found outside libinih's callback */
+    int err_line;         /* the line of a section's or a check's error, 0: none */
 } load_t;
 
 static int side_of(const char *name) { return !strcmp(name, "left") ? 0 : !strcmp(name, "right") ? 1 : -1; }
@@ -134,7 +135,6 @@ static int fail(load_t *l, int line, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    l->failed = 1;
     l->err_line = line;
     vsnprintf(l->reason, sizeof l->reason, fmt, ap);
     va_end(ap);
@@ -192,13 +192,12 @@ static int name_ok(const char *s)
     return 1;
 }
 
-/* One "[...]" line: its section, checked (libinih parses the keys). */
-static int header(load_t *l, const char *h, size_t len, int line)
+/* One [section] line (the text between the brackets): the component it
+ * starts, checked. */
+static int header(load_t *l, const char *sec, int line)
 {
-    char sec[64], kind[16], name[64];
-    if (len >= sizeof sec) return fail(l, line, "[%.40s...]: section name too long", h);
-    memcpy(sec, h, len);
-    sec[len] = '\0';
+    char kind[16], name[64];
+    if (strlen(sec) >= 64) return fail(l, line, "[%.40s...]: section name too long", sec);
     const char *dot = strchr(sec, '.');
     if (!dot || (size_t)(dot - sec) >= sizeof kind)
         return fail(l, line, "[%s]: want [KIND.NAME], e.g. [ir.left_front]", sec);
@@ -222,25 +221,13 @@ static int header(load_t *l, const char *h, size_t len, int line)
     return add_section(l, kind, name, line);
 }
 
-/* Every section header, in order, with its line (libinih reports no line
- * to its callback; these give the errors found after parsing theirs). */
-static int scan_sections(load_t *l, const char *text)
+/* The reader's section callback: every [section] before any key. */
+static int on_section(void *user, const char *section, int line, char *why, size_t len)
 {
-    int line = 1;
-    for (const char *p = text; *p; line++) {
-        const char *e = strchr(p, '\n');
-        size_t len = e ? (size_t)(e - p) : strlen(p);
-        const char *q = p;
-        while (q < p + len && isspace((unsigned char)*q)) q++;
-        if (q < p + len && *q == '[') {
-            const char *r = memchr(q, ']', (size_t)(p + len - q));
-            if (!r) return fail(l, line, "'[' without ']'");
-            if (header(l, q + 1, (size_t)(r - q - 1), line) != 0) return -1;
-        }
-        if (!e) break;
-        p = e + 1;
-    }
-    return 0;
+    load_t *l = user;
+    if (header(l, section, line) == 0) return 0;
+    snprintf(why, len, "%s", l->reason);
+    return -1;
 }
 
 static sect_t *find(load_t *l, const char *section)
@@ -253,34 +240,28 @@ static sect_t *find(load_t *l, const char *section)
     return NULL;
 }
 
-static int on_key(void *user, const char *section, const char *key, const char *val)
+static int on_key(void *user, const char *section, const char *key, const char *val, char *why, size_t len)
 {
     load_t *l = user;
-    if (l->failed) return 1;
     sect_t *s = find(l, section);
-    l->failed = 1;
     if (!s) {
-        snprintf(l->reason, sizeof l->reason, "%s: a key outside any [KIND.NAME] section", key);
-        return 0;
+        snprintf(why, len, "%s: a key outside any [KIND.NAME] section", key);
+        return -1;
     }
     for (int t = 0; t < 2; t++) {
         if (!s->keys[t]) continue;
         const keytab_t *k = keytab_find(s->keys[t], s->nkeys[t], NULL, key);
         if (!k) continue;
-        if (keytab_set(k, s->target[t], section, val, l->reason, sizeof l->reason) != 0) return 0;
+        if (keytab_set(k, s->target[t], section, val, why, len) != 0) return -1;
         s->seen[t] |= 1ull << (k - s->keys[t]);
-        l->failed = 0;
-        return 1;
+        return 0;
     }
-    snprintf(l->reason, sizeof l->reason, "%s.%s: unknown key (a %s has:", section, key, s->kind);
+    int n = snprintf(why, len, "%s.%s: unknown key (a %s has:", section, key, s->kind);
     for (int t = 0; t < 2; t++)
-        for (size_t i = 0; s->keys[t] && i < s->nkeys[t]; i++) {
-            size_t n = strlen(l->reason);
-            snprintf(l->reason + n, sizeof l->reason - n, " %s", s->keys[t][i].key);
-        }
-    size_t n = strlen(l->reason);
-    snprintf(l->reason + n, sizeof l->reason - n, ")");
-    return 0;
+        for (size_t i = 0; s->keys[t] && i < s->nkeys[t] && n > 0 && (size_t)n < len; i++)
+            n += snprintf(why + n, len - (size_t)n, " %s", s->keys[t][i].key);
+    if (n > 0 && (size_t)n < len) snprintf(why + n, len - (size_t)n, ")");
+    return -1;
 }
 
 /* ---- checks after parsing ---- */
@@ -289,10 +270,10 @@ static int missing_keys(load_t *l)
 {
     for (int i = 0; i < l->n; i++) {
         sect_t *s = &l->s[i];
-        for (int t = 0; t < 2; t++)
-            for (size_t k = 0; s->keys[t] && k < s->nkeys[t]; k++)
-                if (isnan(s->keys[t][k].def) && !(s->seen[t] & (1ull << k)))
-                    return fail(l, s->line, "%s.%s.%s: missing key", s->kind, s->name, s->keys[t][k].key);
+        for (int t = 0; t < 2; t++) {
+            const keytab_t *k = s->keys[t] ? keytab_missing(s->keys[t], s->nkeys[t], s->seen[t]) : NULL;
+            if (k) return fail(l, s->line, "%s.%s.%s: missing key", s->kind, s->name, k->key);
+        }
     }
     return 0;
 }
@@ -312,7 +293,8 @@ static int required_parts(load_t *l)
         if (!has(l, need[i][0], need[i][1]))
             return fail(l, 0, "no [%s.%s] section: a robot has a chassis, motor and encoder left and right, and a battery",
                         need[i][0], need[i][1] ? need[i][1] : "NAME");
-    if (robot_count(l->c, "tof") > ROBOT_MAX_TOF) return fail(l, 0, "more than 3 tof sensors (the HAL has left, front, right)");
+    if (robot_count(l->c, "tof") > WORLD_TOF_COUNT)
+        return fail(l, 0, "more than %d tof sensors (the HAL has left, front, right)", WORLD_TOF_COUNT);
     if (robot_count(l->c, "ir") > ROBOT_MAX_IR) return fail(l, 0, "more than 8 ir sensors (hal.h HAL_IR_MAX)");
     return 0;
 }
@@ -359,35 +341,28 @@ int robot_fits(const simcfg_t *c, char *reason, size_t len)
 
 /* ---- loading ---- */
 
-static int load_text(simcfg_t *c, const char *text, size_t len, const char *name, char *err, size_t errlen)
+/* The robot from text (NULL: the file at name) into c; c changes only if
+ * the whole file is good. */
+static int load(simcfg_t *c, const char *text, const char *name, char *err, size_t errlen)
 {
     load_t *l = calloc(1, sizeof *l);
     if (!l) {
         snprintf(err, errlen, "%s: out of memory", name);
         return -1;
     }
-    simcfg_t *out = c;
     l->work = *c;
     l->work.nparts = 0;
     l->work.measured_name[0] = '\0';
     keytab_defaults(measured_keys, N(measured_keys), &l->work.measured);
     l->c = &l->work;
     l->name = name;
-    int rc = config_scan_lines(text, len, name, err, errlen);
-    if (rc == 0 && scan_sections(l, text) == 0) {
-        int ini = ini_parse_string(text, on_key, l);
-        if (ini < 0) {
-            snprintf(l->reason, sizeof l->reason, "cannot parse: out of memory"), l->failed = 1;
-        } else if (ini > 0) {
-            l->err_line = ini;
-            if (!l->failed) snprintf(l->reason, sizeof l->reason, "syntax error (want key = value or [KIND.NAME])"), l->failed = 1;
-        } else if (missing_keys(l) == 0 && required_parts(l) == 0 && part_checks(l) == 0 && physics_checks(l) == 0) {
-            l->work.wheel_d_m = (l->work.wheel_left_d_m + l->work.wheel_right_d_m) / 2;
-            snprintf(l->work.robot_path, sizeof l->work.robot_path, "%s", name);
-            *out = l->work;
-        }
-    }
-    if (rc == 0 && l->failed) {
+    const inifile_t r = { on_section, on_key, l, "want key = value or [KIND.NAME]" };
+    int rc = text ? inifile_parse(&r, text, strlen(text), name, err, errlen) : inifile_load(&r, name, ROBOT_MAX_BYTES, err, errlen);
+    if (rc == 0 && missing_keys(l) == 0 && required_parts(l) == 0 && part_checks(l) == 0 && physics_checks(l) == 0) {
+        l->work.wheel_d_m = (l->work.wheel_left_d_m + l->work.wheel_right_d_m) / 2;
+        snprintf(l->work.robot_path, sizeof l->work.robot_path, "%s", name);
+        *c = l->work;
+    } else if (rc == 0) {
         if (l->err_line > 0) snprintf(err, errlen, "%s:%d: %s", name, l->err_line, l->reason);
         else snprintf(err, errlen, "%s: %s", name, l->reason);
         rc = -1;
@@ -396,14 +371,11 @@ static int load_text(simcfg_t *c, const char *text, size_t len, const char *name
     return rc;
 }
 
-int robot_load(simcfg_t *c, const char *path, char *err, size_t errlen)
-{
-    return config_apply_file(c, path, ROBOT_MAX_BYTES, load_text, err, errlen);
-}
+int robot_load(simcfg_t *c, const char *path, char *err, size_t errlen) { return load(c, NULL, path, err, errlen); }
 
 int robot_load_string(simcfg_t *c, const char *text, const char *name, char *err, size_t errlen)
 {
-    return load_text(c, text, strlen(text), name, err, errlen);
+    return load(c, text, name, err, errlen);
 }
 
 void robot_defaults(simcfg_t *c)

@@ -10,8 +10,10 @@
  *                           the chassis (x_mm y_mm z_mm yaw_deg pitch_deg)
  * Lengths in mm, masses in g, angles in deg; the chassis frame has its
  * origin at the body's centre on the floor, x right, y forward, z up.
- * Bad files: "FILE:LINE: KIND.NAME.key: reason" (unknown kind, missing key,
- * pose outside the chassis, two components with one name, ...).
+ * At most WORLD_TOF_COUNT (world.h) ToF sensors: left, front, right, in the
+ * file's order. Bad files: "FILE:LINE: KIND.NAME.key: reason" (unknown
+ * kind, missing key, pose outside the chassis, two components with one
+ * name, a key given twice, an indented continuation line: inifile.h, ...).
  *
  * The paper's robot (robots/paper.ini) is built in: config_defaults loads
  * it, so a run without --robot is the paper's. */
@@ -23,7 +25,6 @@
 #include "config.h"
 
 #define ROBOT_MAX_BYTES (1u << 20) /* bytes of a robot file */
-#define ROBOT_MAX_TOF 3            /* the HAL's three ToF: left, front, right, in the file's order */
 #define ROBOT_MAX_IR 8             /* hal.h HAL_IR_MAX */
 
 /* 0 if the robot fits the world's corridors, else -1 with "world.cell_m:

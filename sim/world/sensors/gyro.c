@@ -70,7 +70,7 @@ double gyro_read(gyro_t *g, double true_rate_rad_s, double t_s)
 /* ---- the sensor kind ---- */
 
 #define G(name, def, min, max, unit, src) \
-    { NULL, #name, offsetof(gyro_spec_t, name), def, min, max, unit, src, NULL, 0, 0, 0 }
+    { NULL, #name, offsetof(gyro_spec_t, name), def, min, max, unit, src, NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL }
 static const keytab_t keys[] = {
     G(noise_density_dps_rthz, 0.007, 0, 10, "deg/s/sqrt(Hz)", "LSM6DS3 datasheet Table 3: Rn 7 mdps/sqrt(Hz)"),
     G(bias_dps, 10, 0, 1000, "deg/s", "LSM6DS3 datasheet Table 3: zero-rate level +-10 dps, as 1 sigma"),

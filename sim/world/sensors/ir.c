@@ -154,7 +154,7 @@ int ir_read(ir_t *ir, world_t *w, const double pos_m[3], double dir_rad, int emi
 /* ---- the sensor kind ---- */
 
 #define I(name, field, def, min, max, per, whole, unit, src) \
-    { NULL, #name, offsetof(ir_part_spec_t, field), def, min, max, unit, src, NULL, whole, per, 0 }
+    { NULL, #name, offsetof(ir_part_spec_t, field), def, min, max, unit, src, NULL, whole, per, 0, KEYTAB_DOUBLE, 0, NULL }
 static const keytab_t keys[] = {
     I(emitter, emitter, KEYTAB_REQUIRED, 0, 3, 0, 1, "group", "the emitter group that lights it (hal_emitter)"),
     I(adc_channel, adc_channel, -1, -1, 15, 0, 1, "channel", "the ADC channel of its detector (-1: none; board emulation)"),

@@ -31,7 +31,7 @@ tof_reading_t tof_measure(tof_t *t, double true_m)
 /* ---- the sensor kind ---- */
 
 #define T(name, field, def, min, max, per, unit, src) \
-    { NULL, #name, offsetof(tof_spec_t, field), def, min, max, unit, src, NULL, 0, per, 0 }
+    { NULL, #name, offsetof(tof_spec_t, field), def, min, max, unit, src, NULL, 0, per, 0, KEYTAB_DOUBLE, 0, NULL }
 static const keytab_t keys[] = {
     T(range_mm, range_m, 1200, 50, 10000, 1000, "mm", "VL53L0X long range, as the paper's simulator (its Arduino side assumed 1.0 m)"),
     T(blind_mm, blind_m, 0, 0, 500, 1000, "mm", "paper: no blind spot modelled"),
