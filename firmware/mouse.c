@@ -599,7 +599,6 @@ void fw_loop(void)
 
 const maze_t *mouse_map(void) { return &ex.map; }
 uint16_t mouse_proven_at_step(void) { return ex.proven_at_step; }
-const struct motion_s *mouse_motion(void) { return &mo; }
 
 /* ---- External command mode (mmsim --mms): the caller orders each move ----
  * The moves reuse the search's primitives: a straight senses the walls of
