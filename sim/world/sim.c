@@ -1,4 +1,5 @@
-/* sim.c - the contest loop around the world (see sim.h). */
+/* sim.c - one simulated contest's physics step around the world: motors,
+ * battery, encoders, sensors, contest timers (see sim.h). */
 #include "sim.h"
 
 #include <math.h>

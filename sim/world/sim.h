@@ -56,7 +56,7 @@ void sim_free(sim_t *s);
 void sim_step(sim_t *s);
 double sim_time_s(const sim_t *s);
 
-/* The robot's other sensors (robot file components; issue 17). IR sensors
+/* The robot's other sensors (robot file components). IR sensors
  * count in the robot file's order; emitter groups 0..SIM_EMITTER_GROUPS-1
  * start off. sim_ir_read samples sensor i's ADC now, with the emitters as
  * they are (0..1023; 0 past the count). The gyro's z rate (rad/s, CCW

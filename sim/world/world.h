@@ -80,7 +80,7 @@ unsigned world_collisions(const world_t *w);
  * purpose, as UKMARSBOT's firmware does) or faster. An episode with two
  * kinds counts once for each; the ongoing one counts. */
 enum { WORLD_CONTACT_FRONT, WORLD_CONTACT_SIDE, WORLD_CONTACT_REAR_SOFT, WORLD_CONTACT_REAR, WORLD_CONTACT_KINDS };
-#define WORLD_REAR_SOFT_M_S 0.1 /* m/s, issue 18: a touch of the rear below this is not an error */
+#define WORLD_REAR_SOFT_M_S 0.1 /* m/s: a touch of the rear below this is not an error */
 unsigned world_contacts(const world_t *w, int kind);
 /* 0 once the robot's state has left what any run in the config's ranges
  * reaches (a position beyond WORLD_SANE_M, a speed beyond
