@@ -250,9 +250,9 @@ def circles(root, files, contracts):
     out = []
     for (u, v), (rel, line, name, vrel) in sorted(edges.items()):
         if u < v and (v, u) in edges:
-            rel2, line2, name2, _ = edges[(v, u)]
+            rel2, line2, name2, vrel2 = edges[(v, u)]
             out.append(f"{rel}:{line}: calls {name} ({vrel}) and {rel2}:{line2} calls {name2}"
-                       f" ({rel}): the two files call each other")
+                       f" ({vrel2}): the two files call each other")
     return out
 
 
