@@ -228,7 +228,7 @@ $(B)/arduino/%/Mouse-5x5.elf: hal/arduino/examples/Mouse/Mouse.ino $(B)/arduino/
 	avr-g++ $(ARD_$*) $(ARD_COMMON) $(ARD_CXX) -DMM_MAZE_SIZE=5 -Wall -x c++ -include Arduino.h -c $< -o $@.o
 	avr-gcc $(ARD_$*) -Os -Wl,--gc-sections $@.o $(B)/arduino/$*/libmicromouse.a $(B)/arduino/$*/core.a -lm -o $@
 # A test sketch (test/cli_pil.sh): one motor command, then only reads, as a
-# sketch of the paper's library that sets its motors once (issue 15).
+# sketch of the paper's library that sets its motors once.
 $(B)/arduino/uno/OneCommand.elf: test/arduino/OneCommand/OneCommand.ino $(B)/arduino/uno/libmicromouse.a $(B)/arduino/uno/core.a $(ARD_HDRS)
 	avr-g++ $(ARD_uno) $(ARD_COMMON) $(ARD_CXX) -Wall -x c++ -include Arduino.h -c $< -o $@.o
 	avr-gcc $(ARD_uno) -Os -Wl,--gc-sections $@.o $(B)/arduino/uno/libmicromouse.a $(B)/arduino/uno/core.a -lm -o $@
@@ -306,7 +306,7 @@ $(B)/clients/mazerunner-core-uk.elf: $(B)/clients/mazerunner-core-uk/mazerunner-
 # mended. search_to() checks heading_to_smallest() for BLOCKED before it
 # checks for the target, and the target's cost is 0 with no smaller
 # neighbour, so every search panics "ERR: no route to target" on entering
-# its target (the simulator shows it; issue 18's note). The mend: that
+# its target (the simulator shows it). The mend: that
 # check only short of the target. The rest of the search (home, the map)
 # is tested with this image; the shipped ones stay untouched.
 $(B)/clients/mazerunner-core-uk-mended/mazerunner-core/mouse.h: $(B)/clients/mazerunner-core-uk/mazerunner-core/config.h

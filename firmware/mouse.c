@@ -361,6 +361,43 @@ static int turn_done(void)
     return 1;
 }
 
+/* Search, at the sensing point of the cell ahead (`left` mm of the move
+ * to go): its walls sensed and the next direction decided: straight on
+ * (the move extended by a cell), a smooth quarter turn at the turn's start,
+ * or a stop in the cell ahead (next_dir; -1: explore has ended). */
+static void search_decide(float left)
+{
+    uint8_t walls = sense_cell_ahead(left);
+    log_line(HAL_STR("sensed cell %u walls %u"), ex.cell, walls);
+    hal_belief(&ex.map, ex.cell, st.heading, st.mode);
+    /* planning takes 30-200 ms on a 16 MHz AVR (no time in the
+     * simulator): meanwhile the move brakes into the cell ahead (from
+     * 60 mm before it at search speed) instead of running on */
+    float v_end = mo.fwd.v_end;
+    mo.fwd.v_end = 0;
+    int d = explore_next(&ex);
+    left = profile_remaining(&mo.fwd); /* where the robot is now */
+    wall_ahead = (walls & EXPLORE_WALL_FRONT) != 0;
+    if (d >= 0 && (uint8_t)d == st.heading && mo.fwd.active) {
+        mo.fwd.v_end = v_end;
+        profile_set_remaining(&mo.fwd, left + RC_CELL_MM);
+        sensed = 0;
+        return;
+    }
+    int8_t q = d >= 0 ? quarter(st.heading, (uint8_t)d) : 0;
+    if ((q == 1 || q == -1) && left >= smooth_offset_mm + 1.0f) {
+        /* go on to the turn's start, slowing to the turn's speed,
+         * and turn there without stopping */
+        mo.fwd.v_end = v_end < RC_SMOOTH_MM_S ? v_end : RC_SMOOTH_MM_S;
+        profile_set_remaining(&mo.fwd, left - smooth_offset_mm);
+        move_shift_mm = smooth_offset_mm;
+        turn_pending = q;
+        st.heading = (uint8_t)d;
+        return;
+    }
+    next_dir = (int8_t)d; /* stop in the cell ahead */
+}
+
 /* Search: decide at the sensing point of each cell. st.heading is the way
  * the robot faces (or will face once a pending turn is made); ex.cell is
  * the cell it is in or committed to. */
@@ -405,35 +442,7 @@ static void search_step(void)
     }
     float left = profile_remaining(&mo.fwd);
     if (sense_point(left)) {
-        uint8_t walls = sense_cell_ahead(left);
-        log_line(HAL_STR("sensed cell %u walls %u"), ex.cell, walls);
-        hal_belief(&ex.map, ex.cell, st.heading, st.mode);
-        /* planning takes 30-200 ms on a 16 MHz AVR (no time in the
-         * simulator): meanwhile the move brakes into the cell ahead (from
-         * 60 mm before it at search speed) instead of running on */
-        float v_end = mo.fwd.v_end;
-        mo.fwd.v_end = 0;
-        int d = explore_next(&ex);
-        left = profile_remaining(&mo.fwd); /* where the robot is now */
-        wall_ahead = (walls & EXPLORE_WALL_FRONT) != 0;
-        if (d >= 0 && (uint8_t)d == st.heading && mo.fwd.active) {
-            mo.fwd.v_end = v_end;
-            profile_set_remaining(&mo.fwd, left + RC_CELL_MM);
-            sensed = 0;
-            return;
-        }
-        int8_t q = d >= 0 ? quarter(st.heading, (uint8_t)d) : 0;
-        if ((q == 1 || q == -1) && left >= smooth_offset_mm + 1.0f) {
-            /* go on to the turn's start, slowing to the turn's speed,
-             * and turn there without stopping */
-            mo.fwd.v_end = v_end < RC_SMOOTH_MM_S ? v_end : RC_SMOOTH_MM_S;
-            profile_set_remaining(&mo.fwd, left - smooth_offset_mm);
-            move_shift_mm = smooth_offset_mm;
-            turn_pending = q;
-            st.heading = (uint8_t)d;
-            return;
-        }
-        next_dir = (int8_t)d; /* stop in the cell ahead */
+        search_decide(left);
         return;
     }
     if (sensed && wall_ahead && mo.fwd.active) align_to_front_wall(0);
@@ -590,7 +599,6 @@ void fw_loop(void)
 
 const maze_t *mouse_map(void) { return &ex.map; }
 uint16_t mouse_proven_at_step(void) { return ex.proven_at_step; }
-const struct motion_s *mouse_motion(void) { return &mo; }
 
 /* ---- External command mode (mmsim --mms): the caller orders each move ----
  * The moves reuse the search's primitives: a straight senses the walls of

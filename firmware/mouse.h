@@ -37,9 +37,6 @@ const mouse_status_t *mouse_status(void);
 /* The mouse's map (for reports and tests). */
 const maze_t *mouse_map(void);
 uint16_t mouse_proven_at_step(void);
-struct motion_s;
-/* The motion layer's state (odometry, profiles), for telemetry and tests. */
-const struct motion_s *mouse_motion(void);
 
 
 /* ---- External command mode (mmsim --mms) ----

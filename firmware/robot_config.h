@@ -1,7 +1,8 @@
 /* robot_config.h - every robot-specific number of the firmware, with its
  * unit and where it comes from. Port the firmware to another mouse by
  * changing this file only. Defaults: the paper's robot as simulated by
- * mmsim (sim/world/config.c holds the simulator's side of the same numbers). */
+ * mmsim (robots/paper.ini holds the simulator's side of the same numbers;
+ * test/robot_config_check.py checks that the two agree). */
 #ifndef ROBOT_CONFIG_H
 #define ROBOT_CONFIG_H
 
@@ -60,7 +61,7 @@
  * controller can still hold). */
 #define RC_CMD_FF_MAX 923.0f
 
-/* ---- ToF sensors (positions match sim/world/config.c defaults) ---- */
+/* ---- ToF sensors (positions as robots/paper.ini's [tof.*]) ---- */
 #define RC_TOF_FRONT_Y_MM 55.0f      /* front sensor ahead of the body centre */
 #define RC_TOF_SIDE_X_MM 40.0f       /* diagonal sensors' offset from the centre line */
 #define RC_TOF_SIDE_Y_MM 50.0f       /* diagonal sensors ahead of the body centre */

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# cli_badinput.sh - bad input files (issue 15): a FIFO, /dev/zero or a
+# cli_badinput.sh - bad input files: a FIFO, /dev/zero or a
 # directory as maze, config, log or batch entry; a crafted LCM log whose
 # event declares 2 GB of data; config lines too long for libinih. Each is
 # exit 2 with one error line, under a `timeout` guard so a hang fails

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# cli_board.sh - issue 18: an AVR image on the emulated UKMARSBOT board
+# cli_board.sh - an AVR image on the emulated UKMARSBOT board
 # (mmsim --board ukmarsbot --avr IMAGE, sim/board, boards/ukmarsbot-v1.3.ini).
 # Our sketches (test/arduino/board, built for the Nano with the Debian
 # Arduino core) check each part against the physics: motor PWM and

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# cli_board_periph.sh - issue 18: a sketch of ours per peripheral of the
+# cli_board_periph.sh - a sketch of ours per peripheral of the
 # UKMARSBOT board (test/arduino/board, `make periph-sketches`), each built
 # for the Nano and run on the emulated board against the physics:
 #   mmsim --board ukmarsbot --avr SKETCH.elf --robot robots/ukmarsbot.ini ...

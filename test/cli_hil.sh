@@ -95,7 +95,7 @@ got=$(python3 -c "
 import json,sys; l=json.load(open(sys.argv[1]))['link']; print(l['mcu_version'], sum(l['v2'].values()))" "$T/framed.json" 2>&1)
 [ "$got" = "1 0" ] && ok "a version-1 MCU: accepted, no version-2 messages" || bad "version-1 MCU: $got"
 
-# compat as the paper's library (issue 15): one motor command, then only
+# compat as the paper's library: one motor command, then only
 # sensor reads. By default the command holds (no watchdog) and the robot
 # drives on until the wall north of cell (0,1) (its face at y 0.354 m: the
 # robot's centre stops at 0.294); with --silence-ms 100 it stops soon after

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# cli_mazerunner.sh - a real client's firmware (issue 18's groundwork):
+# cli_mazerunner.sh - a real client's firmware:
 # `make client-mazerunner` builds UKMARSBOT's mazerunner-core from ../shared
 # (or MRC_DIR) for the Nano, as shipped and set for EVENT_UK; both images are
 # ATmega328P ELFs that fit the Nano (30 KB flash, 2 KB RAM); each boots in

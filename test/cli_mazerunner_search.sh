@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# cli_mazerunner_search.sh - issue 18's done-when: UKMARSBOT's unmodified
+# cli_mazerunner_search.sh - UKMARSBOT's unmodified
 # contest firmware (mazerunner-core, EVENT_UK image) on the emulated board
 # searches mazes/gen-16x16-s1.txt the way its README says: switches to its
 # search function 2, the button, a hand before one front sensor.

@@ -58,11 +58,11 @@ print(a['reached_goal'] and all(a[k] == b[k] for k in keys) and a['mms']['stats'
   [ "$same" = True ] && ok "$m ($*): ideal walls and sensed walls give the same run" || bad "$m ($*) ideal vs sensed: $(cat "$T/sensed") $(cat "$T/ideal")"
 done
 
-# algorithms that wait for Reset (issue 15): after the goal resetwait.py polls
+# algorithms that wait for Reset: after the goal resetwait.py polls
 # wasReset until it is true, then ackReset and a second run. Simulation time
-# stands still while an algorithm thinks, so a reset time was never reached
-# (the run ended after 10^6 commands, mms_flood). Now an algorithm that asks
-# 10 times without a move idles: --mms-reset-at S lets the contest clock run
+# stands still while an algorithm thinks, so polling alone would never reach
+# a reset time (the run would end after 10^6 commands, mms_flood): an
+# algorithm that asks 10 times without a move idles: --mms-reset-at S lets the contest clock run
 # to S (the robot at rest), --mms-reset-at idle presses Reset at once; with
 # neither the run ends (mms_idle, exit 1)
 want_rc 0 "waits for Reset, --mms-reset-at 30" "$S" --maze mazes/gen-5x5-s1.txt --mms "$A/resetwait.py 2" --mms-reset-at 30 --json

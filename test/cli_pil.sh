@@ -123,7 +123,7 @@ print(travel - 0.030 <= l * m_per_count <= travel + 0.001, travel - 0.030 <= r *
 [ "$got" = "True True True" ] && ok "DriveToWall: encoder counts at the wall match the distance driven: $(grep -o 'counts.*' "$T/wall.err")" \
   || bad "DriveToWall encoders: $got $(grep '^mcu:' "$T/wall.err") $(grep -o '"final_pose":{[^}]*}' "$T/wall.json")"
 
-# one motor command, then only reads (issue 15): held until the wall north
+# one motor command, then only reads: held until the wall north
 # of cell (0,1), whose face is at y 0.354 m (the robot's centre stops at
 # 0.294); at rest the front sensor is 0.209 m from it (with our 1.2 m as the
 # compat scale the sketch read 177 mm)

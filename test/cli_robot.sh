@@ -69,7 +69,7 @@ grep -q "wide2.ini: world.cell_m: the robot is wider than a corridor (178 mm ove
 printf '[world]\ncell_m = 0.09\nwall_thick_m = 0.006\npost_m = 0.006\n' >"$T/half.ini"
 want_rc 2 "the paper robot in half-size corridors" "$S" --maze $M --config "$T/half.ini"
 grep -q "half.ini: world.cell_m: the robot is wider than a corridor" "$T/err" && ok "half size: refused, one line" || bad "half size: $(cat "$T/err")"
-# issue 18's contest side: hands, goal, start pose, contacts by kind
+# the contest side of a board: hands, goal, start pose, contacts by kind
 want_rc 2 "--input's board actions without a board" "$S" --maze $M --input "1 switches=2"
 grep -q "^--input: switches, button, reset and send act on a board" "$T/err" && ok "--input without --board: one line" || bad "input without board: $(cat "$T/err")"
 want_rc 2 "--input: an unknown action" "$S" --maze $M --input "0.5 wave"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# cli_view_board.sh - issue 18: the HUD's board panel, under an Xvfb the
+# cli_view_board.sh - the HUD's board panel, under an Xvfb the
 # test starts. A sketch of ours (test/arduino/board/HudPanel.ino: a banner,
 # the builtin LED lit, `SW n` each time A6 decodes to another setting) on
 # the emulated UKMARSBOT board:

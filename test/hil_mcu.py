@@ -12,7 +12,7 @@ Prints one line of what it saw; exit 0 if sensors and encoders arrived.
 
 usage: hil_mcu.py once PTY SECONDS
 A compat MCU like a sketch of the paper's library, which sends a motor
-command only when the value changes (issue 15): it asks for the sensors,
+command only when the value changes: it asks for the sensors,
 averages the first 8 front readings at rest (decoded with the paper's 1.0 m
 scale), sends one motor command (300 on both sides) and then only reads.
 Prints what it saw; exit 0 if readings kept arriving.

@@ -4,8 +4,8 @@
  *
  * Config keys: a short firmware contest on mazes/gen-5x5-s1.txt ends with
  * exit 0 or 1 and not with exit_reason physics_diverged; never a signal
- * (ODE aborted on five such values before the motor's damping went
- * implicit, issue 15). Refused: only what `refused` lists, with its reason.
+ * (ODE aborts on some of these values unless the motor's damping is
+ * implicit). Refused: only what `refused` lists, with its reason.
  *
  * Robot keys (robot_key_info: the fixed parts' and each sensor kind's
  * pose and schema keys): a copy of robots/paper.ini with the key at its

@@ -369,7 +369,7 @@ static void test_compat_manager_and_pacing(void **state)
     close_pair();
 }
 
-/* Silence (issue 15): compat holds the last motor command for ever by
+/* Silence: compat holds the last motor command for ever by
  * default (the paper's sketches send a command only when it changes; its
  * Unity simulator has no watchdog); framed's default is 100 ms; 0 turns the
  * watchdog off in either protocol; a positive value turns it on in compat. */
@@ -470,8 +470,8 @@ static void test_faults_through_link(void **state)
 
 /* Compat distances are scaled from the true metres, not from whole mm:
  * round(d / range * 65535) exactly (one count = 15 um at 1.0 m), with the
- * range the paper's 1.0 m by default (issue 15: its library converts with
- * 1.0 m; we once scaled by our 1.2 m and it read 1/1.2 of the truth) or the
+ * range the paper's 1.0 m by default (its library converts with 1.0 m;
+ * another scale, e.g. our ToF's 1.2 m, would read 1/1.2 of the truth) or the
  * configured [link] compat_range_m; a reading at or beyond the range and a
  * timeout go as 65535; the MCU's decoder gives both the u16 and mm. */
 static void test_compat_distance_from_metres(void **state)

@@ -8,7 +8,6 @@
 #include "world/sim.h"
 
 static sim_t *sim;
-static uint64_t sim_time_us;
 static FILE *log_out;
 static int32_t encoder_zero[2];
 static hal_sim_belief_t belief;
@@ -19,13 +18,12 @@ void hal_sim_attach(struct sim_s *s)
     encoder_zero[0] = encoder_zero[1] = 0;
     belief.seq = 0;
 }
-void hal_sim_set_time_us(uint64_t t_us) { sim_time_us = t_us; }
 void hal_sim_set_log(FILE *out) { log_out = out; }
 
 uint32_t hal_micros(void)
 {
     if (sim) return (uint32_t)(sim->step * (uint64_t)llround(sim->model->cfg->step_s * 1e6));
-    return (uint32_t)sim_time_us;
+    return 0; /* no simulation attached: time stands at 0 */
 }
 
 void hal_motor_set(int16_t left, int16_t right)
@@ -67,7 +65,7 @@ void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_
 {
     /* a copy for telemetry (sim/telemetry/telem.c); the simulation never reads it */
     belief.seq++;
-    belief.t_us = sim ? sim->step * (uint64_t)llround(sim->model->cfg->step_s * 1e6) : sim_time_us;
+    belief.t_us = sim ? sim->step * (uint64_t)llround(sim->model->cfg->step_s * 1e6) : 0;
     belief.map = *map;
     belief.cell = cell;
     belief.heading = heading;

@@ -23,8 +23,6 @@ typedef struct {
 
 /* Serve the HAL from this simulation (NULL detaches). */
 void hal_sim_attach(struct sim_s *s);
-/* Without an attached simulation (grid mode): the time hal_micros reports. */
-void hal_sim_set_time_us(uint64_t t_us);
 /* Where hal_log lines go: a stream (NULL = dropped, the default). */
 void hal_sim_set_log(FILE *out);
 /* The latest belief the firmware reported (seq 0 until the first). */

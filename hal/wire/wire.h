@@ -45,7 +45,7 @@ extern "C" {
 #define WIRE_COMPAT_RANGE_MM 1000u /* compat's distance scale, mm: u16 65535 stands for this distance. The
                                       paper's Arduino library converts with 1.0 m and its Unity simulator's
                                       default ToF (TimeOfFlight asset) has range 1.0 m; the simulator's
-                                      [link] compat_range_m (issue 15) */
+                                      [link] compat_range_m */
 
 enum wire_type {
     WIRE_HELLO = 0x01,    /* both ways: version, role, scaling */

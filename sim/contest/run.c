@@ -308,7 +308,7 @@ static json_t *results_json(const run_t *r, double wall)
     json_object_set_new(j, "exit_reason", json_string(r->reason));
     json_object_set_new(j, "config_hash", json_string(r->hash));
     if (r->o->robot_path) {
-        /* by kind (issue 18): front and side contacts are errors; a rear touch below 0.1 m/s is not */
+        /* by kind: front and side contacts are errors; a rear touch below 0.1 m/s is not */
         const world_t *w = r->sim.world;
         json_object_set_new(j, "robot", json_string(r->o->robot_path));
         json_object_set_new(j, "contacts", json_pack("{s:i, s:i, s:i, s:i}", "front", world_contacts(w, WORLD_CONTACT_FRONT),

@@ -346,17 +346,11 @@ static void queue_v2(link_t *l, const link_io_t *in, int enc_now)
     }
 }
 
-int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2])
+/* This step's messages to the MCU, queued: HELLO (framed, until answered),
+ * the encoder counts at their rate, new ToF readings, the v2 sensors;
+ * nothing in the paper's protocol before the MCU asks for sensors. */
+static void queue_step(link_t *l, const link_io_t *in)
 {
-    l->step++;
-    l->st.steps++;
-    motor_out[0] = motor_out[1] = 0;
-    check_connection(l);
-    if (!l->connected) return l->sensors_on;
-    l->credit_tx = l->credit_tx + l->credit_step < l->credit_cap ? l->credit_tx + l->credit_step : l->credit_cap;
-    l->credit_rx = l->credit_rx + l->credit_step < l->credit_cap ? l->credit_rx + l->credit_step : l->credit_cap;
-
-    /* this step's messages */
     wire_msg_t m;
     if (l->ctx.enc_sent[0] == INT32_MIN) { /* compat deltas start from the counts at connection */
         l->ctx.enc_sent[0] = in->encoder[0];
@@ -375,7 +369,7 @@ int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2])
         l->next_hello_step = l->step + steps_of(l, LINK_RETRY_S);
     }
     int enc_now = l->enc_every <= 1 || l->step % l->enc_every == 0;
-    if (l->o.protocol == LINK_COMPAT && !l->sensors_on) goto move; /* the paper's sim sends nothing */
+    if (l->o.protocol == LINK_COMPAT && !l->sensors_on) return; /* the paper's sim sends nothing */
     if (enc_now) {
         memset(&m, 0, sizeof m);
         m.type = WIRE_ENCODER;
@@ -400,30 +394,47 @@ int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2])
         enqueue(l, &m);
     }
     queue_v2(l, in, enc_now);
+}
 
-move:
-    if (move_tx(l) != 0) return l->sensors_on;
-
-    /* MCU -> sim: at most the credit's whole bytes; the rest waits in the OS */
+/* MCU -> sim: at most the credit's whole bytes (the rest waits in the OS),
+ * each decoded message handled. -1 if the link went down. */
+static int receive(link_t *l, const link_io_t *in)
+{
     uint8_t buf[2048];
+    wire_msg_t m;
     uint64_t allow = l->credit_rx / BYTE_COST;
     size_t want = allow < sizeof buf ? (size_t)allow : sizeof buf;
-    if (want > 0) {
-        ssize_t k = read(l->fd, buf, want);
-        if (k < 0 && io_failed(errno)) {
-            on_disconnect(l);
-            return l->sensors_on;
-        }
-        for (ssize_t i = 0; i < k; i++) {
-            int got = l->o.protocol == LINK_COMPAT ? wire_compat_decode_byte(&l->crx, buf[i], &m)
-                                                   : wire_decode_byte(&l->dec, buf[i], &m);
-            if (got) handle(l, in, &m);
-        }
-        if (k > 0) {
-            l->credit_rx -= (uint64_t)k * BYTE_COST;
-            l->st.rx_bytes += (uint64_t)k;
-        }
+    if (want == 0) return 0;
+    ssize_t k = read(l->fd, buf, want);
+    if (k < 0 && io_failed(errno)) {
+        on_disconnect(l);
+        return -1;
     }
+    for (ssize_t i = 0; i < k; i++) {
+        int got = l->o.protocol == LINK_COMPAT ? wire_compat_decode_byte(&l->crx, buf[i], &m)
+                                               : wire_decode_byte(&l->dec, buf[i], &m);
+        if (got) handle(l, in, &m);
+    }
+    if (k > 0) {
+        l->credit_rx -= (uint64_t)k * BYTE_COST;
+        l->st.rx_bytes += (uint64_t)k;
+    }
+    return 0;
+}
+
+int link_step_io(link_t *l, const link_io_t *in, int16_t motor_out[2])
+{
+    l->step++;
+    l->st.steps++;
+    motor_out[0] = motor_out[1] = 0;
+    check_connection(l);
+    if (!l->connected) return l->sensors_on;
+    l->credit_tx = l->credit_tx + l->credit_step < l->credit_cap ? l->credit_tx + l->credit_step : l->credit_cap;
+    l->credit_rx = l->credit_rx + l->credit_step < l->credit_cap ? l->credit_rx + l->credit_step : l->credit_cap;
+
+    queue_step(l, in);
+    if (move_tx(l) != 0) return l->sensors_on;
+    if (receive(l, in) != 0) return l->sensors_on;
 
     if (l->flush) { /* IR answers go out this step, with the credit left */
         l->flush = 0;

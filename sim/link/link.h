@@ -27,7 +27,7 @@ enum { LINK_FRAMED = 0, LINK_COMPAT = 1 };
 #define LINK_IR_REPORT 32         /* IR frames reported one line each (then only counted) */
 #define LINK_SILENCE_S 0.1        /* framed's default silence timeout, s (our library sends MOTOR every tick);
                                      compat has none by default: the paper's Unity simulator applies a motor
-                                     command until the next one and has no watchdog (issue 15) */
+                                     command until the next one and has no watchdog */
 
 typedef struct {
     const char *device;   /* serial device path, or NULL with pty */

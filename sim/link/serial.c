@@ -79,8 +79,6 @@ int serial_open_pty(char *path, size_t pathn, char *err, size_t errn)
     return m;
 }
 
-void serial_flush(int fd) { ioctl(fd, TCFLSH, TCIOFLUSH); }
-
 int serial_hung_up(int fd)
 {
     struct pollfd p = { fd, POLLIN, 0 };

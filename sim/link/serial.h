@@ -21,8 +21,6 @@ int serial_pty_peer(int master_fd);
 /* Has the device gone (hang-up or error: unplugged)? 1/0. A raw terminal
  * with VMIN=0 reads 0 bytes when idle, so read()'s 0 cannot tell. */
 int serial_hung_up(int fd);
-/* Drop whatever waits in the terminal's buffers, both ways. */
-void serial_flush(int fd);
 /* Raw 8N1 at baud on an open terminal fd; 0 or -1 (errno set). */
 int serial_set_raw(int fd, uint32_t baud);
 

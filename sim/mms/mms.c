@@ -318,6 +318,202 @@ static int start_forward(mms_t *m, long halves, char *resp, size_t len)
     return 1;
 }
 
+/* ---- the commands: each handler answers into resp and returns 0, 1 when
+ * it started a move (the answer comes when the move ends), -1 when the
+ * command is invalid (mms answers nothing) ---- */
+
+/* What a handler is given: the tokens, the number argument (the second
+ * token of a command that takes one; 1 without it) and its table entry's
+ * parameter. */
+typedef struct {
+    mms_t *m;
+    struct sim_s *s;
+    char **tok;
+    int arg, param;
+    char *resp;
+    size_t len;
+} cmd_call_t;
+
+/* setText X Y TEXT: the text may hold spaces; p is what follows "setText ". */
+static int set_text(mms_t *m, char *p)
+{
+    char *sp1 = strchr(p, ' ');
+    if (!sp1) return -1;
+    *sp1 = '\0';
+    char *q = sp1 + 1, *sp2 = strchr(q, ' ');
+    const char *text = "";
+    if (sp2) {
+        *sp2 = '\0';
+        text = sp2 + 1;
+    }
+    int ok = 1, x = to_int(p, &ok), y = to_int(q, &ok);
+    if (!ok || !in_maze(m, x, y)) return -1;
+    char *dst = m->text[maze_cell(m->truth, (uint8_t)x, (uint8_t)y)];
+    size_t k = 0;
+    for (const unsigned char *t = (const unsigned char *)text; *t && k < MMS_TEXT_MAX; k++) {
+        dst[k] = *t >= 32 && *t < 127 ? (char)*t : '?';
+        t += utf8_length(t);
+    }
+    dst[k] = '\0';
+    return 0;
+}
+
+/* setWall / clearWall X Y D (param 1: set): the drawn wall on both sides. */
+static int cmd_draw_wall(const cmd_call_t *c)
+{
+    mms_t *m = c->m;
+    int ok = 1, x = to_int(c->tok[1], &ok), y = to_int(c->tok[2], &ok), d = dir_of(c->tok[3]);
+    if (!ok || d < 0 || !in_maze(m, x, y)) return -1;
+    maze_cell_t cell = maze_cell(m->truth, (uint8_t)x, (uint8_t)y), nb;
+    if (c->param) m->drawn_walls[cell] |= (uint8_t)(1u << d);
+    else m->drawn_walls[cell] &= (uint8_t)~(1u << d);
+    if (maze_neighbour(m->truth, cell, (uint8_t)d, &nb)) {
+        uint8_t bit = (uint8_t)(1u << ((d + 2) & 3));
+        if (c->param) m->drawn_walls[nb] |= bit;
+        else m->drawn_walls[nb] &= (uint8_t)~bit;
+    }
+    return 0;
+}
+
+/* setColor X Y C */
+static int cmd_set_color(const cmd_call_t *c)
+{
+    char **tok = c->tok;
+    int ok = 1, x = to_int(tok[1], &ok), y = to_int(tok[2], &ok);
+    if (!ok || strlen(tok[3]) != 1 || !strchr("kbacgorwyBCAGRY", tok[3][0]) || !in_maze(c->m, x, y)) return -1;
+    c->m->color[maze_cell(c->m->truth, (uint8_t)x, (uint8_t)y)] = tok[3][0];
+    return 0;
+}
+
+/* clearColor / clearText X Y (param 0: the colour, 1: the text) */
+static int cmd_clear_cell(const cmd_call_t *c)
+{
+    int ok = 1, x = to_int(c->tok[1], &ok), y = to_int(c->tok[2], &ok);
+    if (!ok || !in_maze(c->m, x, y)) return -1;
+    maze_cell_t cell = maze_cell(c->m->truth, (uint8_t)x, (uint8_t)y);
+    if (c->param == 0) c->m->color[cell] = 0;
+    else c->m->text[cell][0] = '\0';
+    return 0;
+}
+
+/* clearAllColor / clearAllText (param 0: the colours, 1: the texts) */
+static int cmd_clear_all(const cmd_call_t *c)
+{
+    if (c->param == 0) memset(c->m->color, 0, sizeof c->m->color);
+    else memset(c->m->text, 0, sizeof c->m->text);
+    return 0;
+}
+
+/* mazeWidth / mazeHeight (param 0 / 1) */
+static int cmd_size(const cmd_call_t *c)
+{
+    snprintf(c->resp, c->len, "%d", c->param ? c->m->truth->height : c->m->truth->width);
+    return 0;
+}
+
+/* wallFront & co (param: eighths of a turn clockwise from the heading) */
+static int cmd_wall(const cmd_call_t *c)
+{
+    snprintf(c->resp, c->len, "%s", wall_query(c->m, c->param, c->arg) ? "true" : "false");
+    return 0;
+}
+
+/* moveForward N (param 2: N cells) / moveForwardHalf N (param 1: N halves) */
+static int cmd_forward(const cmd_call_t *c)
+{
+    long halves = c->param == 2 ? (c->arg > 255 ? 510 : 2L * c->arg) : c->arg;
+    return start_forward(c->m, halves, c->resp, c->len);
+}
+
+/* turnRight / turnLeft (param 1 / -1: a quarter turn clockwise / not) */
+static int cmd_turn(const cmd_call_t *c)
+{
+    if (mouse_cmd_turn((int8_t)c->param) != 0) {
+        snprintf(c->resp, c->len, "crash");
+        return 0;
+    }
+    mms_stats_turn(&c->m->stats);
+    c->m->pending = MOVE_TURN;
+    return 1;
+}
+
+/* turnRight45 / turnLeft45: no diagonal moves in the motion layer */
+static int cmd_crash(const cmd_call_t *c)
+{
+    snprintf(c->resp, c->len, "crash");
+    return 0;
+}
+
+static int cmd_was_reset(const cmd_call_t *c)
+{
+    return answer_was_reset(c->m, c->s, c->resp, c->len);
+}
+
+/* ackReset: the robot back at the start (without a simulation, only "ack") */
+static int cmd_ack_reset(const cmd_call_t *c)
+{
+    mms_t *m = c->m;
+    m->was_reset = 0;
+    m->idle_polls = 0;
+    m->resets++;
+    mms_stats_reset_penalty(&m->stats);
+    mms_stats_end_unfinished(&m->stats);
+    if (!c->s) {
+        snprintf(c->resp, c->len, "ack");
+        return 0;
+    }
+    place_at_start(m, c->s);
+    mouse_cmd_reset();
+    m->pending = MOVE_RESET;
+    return 1;
+}
+
+/* getStat NAME */
+static int cmd_get_stat(const cmd_call_t *c)
+{
+    return mms_stats_get(&c->m->stats, c->tok[1], c->resp, c->len) != 0 ? -1 : 0;
+}
+
+/* A command's tokens, the name included: exactly that many, or TOK_ARG:
+ * the name and an optional number (mms: not a number = 0). */
+enum { TOK_ARG = -1 };
+
+static const struct {
+    const char *name;
+    int (*run)(const cmd_call_t *c);
+    int param;
+    int tokens;
+} commands[] = {
+    { "setWall", cmd_draw_wall, 1, 4 },
+    { "clearWall", cmd_draw_wall, 0, 4 },
+    { "setColor", cmd_set_color, 0, 4 },
+    { "clearColor", cmd_clear_cell, 0, 3 },
+    { "clearText", cmd_clear_cell, 1, 3 },
+    { "clearAllColor", cmd_clear_all, 0, 1 },
+    { "clearAllText", cmd_clear_all, 1, 1 },
+    { "mazeWidth", cmd_size, 0, 1 },
+    { "mazeHeight", cmd_size, 1, 1 },
+    { "wallFront", cmd_wall, 0, TOK_ARG },
+    { "wallRight", cmd_wall, 2, TOK_ARG },
+    { "wallBack", cmd_wall, 4, TOK_ARG },
+    { "wallLeft", cmd_wall, 6, TOK_ARG },
+    { "wallFrontLeft", cmd_wall, -1, TOK_ARG },
+    { "wallFrontRight", cmd_wall, 1, TOK_ARG },
+    { "wallBackLeft", cmd_wall, -3, TOK_ARG },
+    { "wallBackRight", cmd_wall, 3, TOK_ARG },
+    { "moveForward", cmd_forward, 2, TOK_ARG },
+    { "moveForwardHalf", cmd_forward, 1, TOK_ARG },
+    { "turnRight", cmd_turn, 1, 1 },
+    { "turnRight90", cmd_turn, 1, 1 },
+    { "turnLeft", cmd_turn, -1, 1 },
+    { "turnLeft90", cmd_turn, -1, 1 },
+    { "turnRight45", cmd_crash, 0, 1 },
+    { "turnLeft45", cmd_crash, 0, 1 },
+    { "wasReset", cmd_was_reset, 0, 1 },
+    { "ackReset", cmd_ack_reset, 0, 1 },
+    { "getStat", cmd_get_stat, 0, 2 },
+};
+
 int mms_execute(mms_t *m, struct sim_s *s, const char *line_in, char *resp, size_t len)
 {
     char line[MMS_LINE_MAX + 1], *tok[5];
@@ -326,126 +522,27 @@ int mms_execute(mms_t *m, struct sim_s *s, const char *line_in, char *resp, size
     m->commands++;
     m->since_move++;
 
-    if (!strncmp(line, "setText ", 8)) { /* the text may hold spaces: X, Y, then the rest */
-        char *p = line + 8, *sp1 = strchr(p, ' ');
-        if (!sp1) goto invalid;
-        *sp1 = '\0';
-        char *q = sp1 + 1, *sp2 = strchr(q, ' ');
-        const char *text = "";
-        if (sp2) {
-            *sp2 = '\0';
-            text = sp2 + 1;
-        }
-        int ok = 1, x = to_int(p, &ok), y = to_int(q, &ok);
-        if (!ok || !in_maze(m, x, y)) goto invalid;
-        char *dst = m->text[maze_cell(m->truth, (uint8_t)x, (uint8_t)y)];
-        size_t k = 0;
-        for (const unsigned char *t = (const unsigned char *)text; *t && k < MMS_TEXT_MAX; k++) {
-            dst[k] = *t >= 32 && *t < 127 ? (char)*t : '?';
-            t += utf8_length(t);
-        }
-        dst[k] = '\0';
-        return 0;
-    }
-    int n = split(line, tok, 4);
-    if (n < 1 || n > 4) goto invalid;
-    const char *f = tok[0];
-    int ok = 1;
-    if (!strcmp(f, "setWall") || !strcmp(f, "clearWall")) {
-        if (n != 4) goto invalid;
-        int x = to_int(tok[1], &ok), y = to_int(tok[2], &ok), d = dir_of(tok[3]);
-        if (!ok || d < 0 || !in_maze(m, x, y)) goto invalid;
-        maze_cell_t c = maze_cell(m->truth, (uint8_t)x, (uint8_t)y), nb;
-        int set = f[0] == 's';
-        if (set) m->drawn_walls[c] |= (uint8_t)(1u << d);
-        else m->drawn_walls[c] &= (uint8_t)~(1u << d);
-        if (maze_neighbour(m->truth, c, (uint8_t)d, &nb)) {
-            uint8_t bit = (uint8_t)(1u << ((d + 2) & 3));
-            if (set) m->drawn_walls[nb] |= bit;
-            else m->drawn_walls[nb] &= (uint8_t)~bit;
-        }
-        return 0;
-    }
-    if (!strcmp(f, "setColor")) {
-        if (n != 4) goto invalid;
-        int x = to_int(tok[1], &ok), y = to_int(tok[2], &ok);
-        if (!ok || strlen(tok[3]) != 1 || !strchr("kbacgorwyBCAGRY", tok[3][0]) || !in_maze(m, x, y)) goto invalid;
-        m->color[maze_cell(m->truth, (uint8_t)x, (uint8_t)y)] = tok[3][0];
-        return 0;
-    }
-    if (!strcmp(f, "clearColor") || !strcmp(f, "clearText")) {
-        if (n != 3) goto invalid;
-        int x = to_int(tok[1], &ok), y = to_int(tok[2], &ok);
-        if (!ok || !in_maze(m, x, y)) goto invalid;
-        maze_cell_t c = maze_cell(m->truth, (uint8_t)x, (uint8_t)y);
-        if (f[5] == 'C') m->color[c] = 0;
-        else m->text[c][0] = '\0';
-        return 0;
-    }
-    if (!strcmp(f, "clearAllColor") || !strcmp(f, "clearAllText")) {
-        if (n != 1) goto invalid;
-        if (f[8] == 'C') memset(m->color, 0, sizeof m->color);
-        else memset(m->text, 0, sizeof m->text);
-        return 0;
-    }
-    /* the commands with an answer: one token, or two for these */
-    if (n > 2) goto invalid;
-    static const char *const walls[] = { "wallFront", "wallRight", "wallBack", "wallLeft" };
-    static const char *const diag[] = { "wallFrontLeft", "wallFrontRight", "wallBackLeft", "wallBackRight" };
-    static const int diag_rel[] = { -1, 1, -3, 3 }; /* eighths of a turn clockwise */
-    int arg = 1, is_wall = -1, is_diag = -1;
-    for (int i = 0; i < 4; i++) {
-        if (!strcmp(f, walls[i])) is_wall = i;
-        if (!strcmp(f, diag[i])) is_diag = i;
-    }
-    int two_ok = is_wall >= 0 || is_diag >= 0 || !strcmp(f, "getStat") || !strcmp(f, "moveForward") ||
-                 !strcmp(f, "moveForwardHalf");
-    if (n == 2 && !two_ok) goto invalid;
-    if (n == 2 && strcmp(f, "getStat")) arg = to_int(tok[1], &ok); /* mms: not a number = 0 */
-
-    if (!strcmp(f, "mazeWidth")) snprintf(resp, len, "%d", m->truth->width);
-    else if (!strcmp(f, "mazeHeight")) snprintf(resp, len, "%d", m->truth->height);
-    else if (is_wall >= 0) snprintf(resp, len, "%s", wall_query(m, 2 * is_wall, arg) ? "true" : "false");
-    else if (is_diag >= 0) snprintf(resp, len, "%s", wall_query(m, diag_rel[is_diag], arg) ? "true" : "false");
-    else if (!strcmp(f, "moveForward")) return start_forward(m, arg > 255 ? 510 : 2L * arg, resp, len);
-    else if (!strcmp(f, "moveForwardHalf")) return start_forward(m, arg, resp, len);
-    else if (!strcmp(f, "turnRight") || !strcmp(f, "turnRight90") || !strcmp(f, "turnLeft") ||
-               !strcmp(f, "turnLeft90")) {
-        if (mouse_cmd_turn(f[4] == 'R' ? 1 : -1) != 0) {
-            snprintf(resp, len, "crash");
-            return 0;
-        }
-        mms_stats_turn(&m->stats);
-        m->pending = MOVE_TURN;
-        return 1;
-    } else if (!strcmp(f, "turnRight45") || !strcmp(f, "turnLeft45")) {
-        snprintf(resp, len, "crash"); /* no diagonal moves in the motion layer */
-    } else if (!strcmp(f, "wasReset")) {
-        return answer_was_reset(m, s, resp, len);
-    } else if (!strcmp(f, "ackReset")) {
-        m->was_reset = 0;
-        m->idle_polls = 0;
-        m->resets++;
-        mms_stats_reset_penalty(&m->stats);
-        mms_stats_end_unfinished(&m->stats);
-        if (!s) {
-            snprintf(resp, len, "ack");
-            return 0;
-        }
-        place_at_start(m, s);
-        mouse_cmd_reset();
-        m->pending = MOVE_RESET;
-        return 1;
-    } else if (!strcmp(f, "getStat")) {
-        if (n != 2 || mms_stats_get(&m->stats, tok[1], resp, len) != 0) goto invalid;
+    int r = -1;
+    if (!strncmp(line, "setText ", 8)) {
+        r = set_text(m, line + 8);
     } else {
-        goto invalid;
+        int n = split(line, tok, 4);
+        for (size_t i = 0; n >= 1 && n <= 4 && i < sizeof commands / sizeof commands[0]; i++) {
+            if (strcmp(tok[0], commands[i].name)) continue;
+            int t = commands[i].tokens;
+            if (t == TOK_ARG ? n > 2 : n != t) break;
+            int ok = 1;
+            cmd_call_t c = { m, s, tok, t == TOK_ARG && n == 2 ? to_int(tok[1], &ok) : 1, commands[i].param, resp, len };
+            r = commands[i].run(&c);
+            break;
+        }
     }
-    return 0;
-invalid:
-    resp[0] = '\0';
-    m->invalid++;
-    return 0;
+    if (r < 0) {
+        resp[0] = '\0';
+        m->invalid++;
+        return 0;
+    }
+    return r;
 }
 
 /* ---- the child process ---- */
@@ -647,67 +744,84 @@ static int read_line(mms_t *m, char *line)
     }
 }
 
+/* What mms_service's helpers return besides MMS_STEP and MMS_END: serve
+ * the next command. */
+enum { GO_ON = 2 };
+
+/* An idle algorithm (MOVE_WAIT): the clock runs, the robot at rest, until
+ * Reset (--mms-reset-at, or the viewer's Reset button sets was_reset);
+ * then wasReset's answer, "true". */
+static int wait_reset(mms_t *m, struct sim_s *s)
+{
+    if (m->o.reset_at_s >= 0 && sim_time_s(s) >= m->o.reset_at_s) {
+        m->was_reset = 1; /* the Reset button, pressed once */
+        m->o.reset_at_s = -1;
+    }
+    if (!m->was_reset) return MMS_STEP;
+    m->pending = MOVE_NONE;
+    trace(m, s, "<", "true");
+    if (send_line(m, "true") != 0) return child_gone(m);
+    return GO_ON;
+}
+
+/* A move under way: MMS_STEP while it runs; when it ends, its statistics
+ * and its answer ("ack" or "crash"), or the end of the run if the robot is
+ * stuck. */
+static int move_done(mms_t *m, struct sim_s *s)
+{
+    uint8_t st = mouse_cmd_status();
+    if (st == MOUSE_CMD_BUSY && sim_time_s(s) - m->move_start_s > MMS_MOVE_MAX_S) {
+        m->crashes++;
+        send_line(m, "crash");
+        snprintf(m->message, sizeof m->message,
+                 "mmsim: mms: the robot did not finish a move in %.0f s of simulation time: stuck", MMS_MOVE_MAX_S);
+        m->reason = "crash_stop";
+        return MMS_END;
+    }
+    if (st == MOUSE_CMD_BUSY) return MMS_STEP;
+    int was = m->pending;
+    m->pending = MOVE_NONE;
+    if (was == MOVE_FORWARD) {
+        mms_stats_distance(&m->stats, mouse_cmd_moved());
+        int x, y;
+        semi_pos(m, &x, &y);
+        maze_cell_t c = semi_cell(m, x, y);
+        if (maze_is_goal(m->truth, c)) mms_stats_finish_run(&m->stats);
+        else if (c == m->truth->start) mms_stats_end_unfinished(&m->stats);
+        m->moves++;
+        m->since_move = m->idle_polls = 0;
+    }
+    if (was == MOVE_TURN) {
+        m->moves++;
+        m->since_move = m->idle_polls = 0;
+    }
+    if (was == MOVE_RESET) m->since_move = 0; /* a reset is not a flood */
+    if (st == MOUSE_CMD_CRASHED) {
+        if (was != MOVE_SENSE) send_line(m, "crash");
+        m->crashes++;
+        return end_run(m, "crash_stop", "mmsim: mms: the robot is stuck (motion stall) during a %s: run ended",
+                       was == MOVE_FORWARD ? "forward move" : was == MOVE_TURN ? "turn" : "reset");
+    }
+    if (m->o.reset_at_s >= 0 && sim_time_s(s) >= m->o.reset_at_s) {
+        m->was_reset = 1; /* the Reset button, pressed once */
+        m->o.reset_at_s = -1;
+    }
+    if (was != MOVE_SENSE) {
+        const char *r = st == MOUSE_CMD_BLOCKED ? "crash" : "ack";
+        trace(m, s, "<", r);
+        if (st == MOUSE_CMD_BLOCKED) m->crashes++;
+        if (send_line(m, r) != 0) return child_gone(m);
+    }
+    return GO_ON;
+}
+
 int mms_service(mms_t *m, struct sim_s *s)
 {
     char line[MMS_LINE_MAX + 1], resp[64];
     forward_stderr(m);
     for (;;) {
-        if (m->pending == MOVE_WAIT) { /* an idle algorithm: the clock runs, the robot at rest, until Reset */
-            if (m->o.reset_at_s >= 0 && sim_time_s(s) >= m->o.reset_at_s) {
-                m->was_reset = 1; /* the Reset button, pressed once */
-                m->o.reset_at_s = -1;
-            }
-            if (!m->was_reset) return MMS_STEP; /* (or the viewer's Reset button sets was_reset) */
-            m->pending = MOVE_NONE;
-            trace(m, s, "<", "true");
-            if (send_line(m, "true") != 0) return child_gone(m);
-            continue;
-        }
-        if (m->pending) {
-            uint8_t st = mouse_cmd_status();
-            if (st == MOUSE_CMD_BUSY && sim_time_s(s) - m->move_start_s > MMS_MOVE_MAX_S) {
-                m->crashes++;
-                send_line(m, "crash");
-                snprintf(m->message, sizeof m->message,
-                         "mmsim: mms: the robot did not finish a move in %.0f s of simulation time: stuck", MMS_MOVE_MAX_S);
-                m->reason = "crash_stop";
-                return MMS_END;
-            }
-            if (st == MOUSE_CMD_BUSY) return MMS_STEP;
-            int was = m->pending;
-            m->pending = MOVE_NONE;
-            if (was == MOVE_FORWARD) {
-                mms_stats_distance(&m->stats, mouse_cmd_moved());
-                int x, y;
-                semi_pos(m, &x, &y);
-                maze_cell_t c = semi_cell(m, x, y);
-                if (maze_is_goal(m->truth, c)) mms_stats_finish_run(&m->stats);
-                else if (c == m->truth->start) mms_stats_end_unfinished(&m->stats);
-                m->moves++;
-                m->since_move = m->idle_polls = 0;
-            }
-            if (was == MOVE_TURN) {
-                m->moves++;
-                m->since_move = m->idle_polls = 0;
-            }
-            if (was == MOVE_RESET) m->since_move = 0; /* a reset is not a flood */
-            if (st == MOUSE_CMD_CRASHED) {
-                if (was != MOVE_SENSE) send_line(m, "crash");
-                m->crashes++;
-                return end_run(m, "crash_stop", "mmsim: mms: the robot is stuck (motion stall) during a %s: run ended",
-                               was == MOVE_FORWARD ? "forward move" : was == MOVE_TURN ? "turn" : "reset");
-            }
-            if (m->o.reset_at_s >= 0 && sim_time_s(s) >= m->o.reset_at_s) {
-                m->was_reset = 1; /* the Reset button, pressed once */
-                m->o.reset_at_s = -1;
-            }
-            if (was != MOVE_SENSE) {
-                const char *r = st == MOUSE_CMD_BLOCKED ? "crash" : "ack";
-                trace(m, s, "<", r);
-                if (st == MOUSE_CMD_BLOCKED) m->crashes++;
-                if (send_line(m, r) != 0) return child_gone(m);
-            }
-        }
+        int r = m->pending == MOVE_WAIT ? wait_reset(m, s) : m->pending ? move_done(m, s) : GO_ON;
+        if (r != GO_ON) return r;
         if (m->since_move >= MMS_FLOOD_LIMIT)
             return end_run(m, "mms_flood", "mmsim: mms: the algorithm '%s' sent %ld commands without a move",
                            m->o.command, MMS_FLOOD_LIMIT);

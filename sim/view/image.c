@@ -34,13 +34,6 @@ void image_set(image_t *im, int x, int y, uint32_t rgb)
     p[2] = (uint8_t)rgb;
 }
 
-uint32_t image_get(const image_t *im, int x, int y)
-{
-    if (x < 0 || y < 0 || x >= im->w || y >= im->h) return 0;
-    const uint8_t *p = im->px + ((size_t)y * (size_t)im->w + (size_t)x) * 3;
-    return (uint32_t)p[0] << 16 | (uint32_t)p[1] << 8 | p[2];
-}
-
 void image_rect(image_t *im, int x0, int y0, int x1, int y1, uint32_t rgb)
 {
     if (x0 < 0) x0 = 0;
@@ -130,9 +123,4 @@ int image_write_png_rows(const uint8_t *rgb, int w, int h, int bottom_up, const 
 int image_write_png_file(const image_t *im, FILE *f, const char *name, char *err, size_t errlen)
 {
     return png_to(im->px, im->w, im->h, 0, f, name, err, errlen);
-}
-
-int image_write_png(const image_t *im, const char *path, char *err, size_t errlen)
-{
-    return image_write_png_rows(im->px, im->w, im->h, 0, path, err, errlen);
 }

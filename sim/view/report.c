@@ -213,12 +213,12 @@ typedef struct {
 static double px_x(const layout_t *L, double cells) { return L->ox + cells * L->cp; }
 static double px_y(const layout_t *L, double cells) { return L->oy - cells * L->cp; }
 
-static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_t *s, const maze_t *learned,
-                 const solve_path_t *path, const char *title)
+/* The cells (start, goal, visited, the algorithm's colours) and the final
+ * run's path (NULL: the run has none). */
+static void draw_cells(canvas_t *c, const layout_t *L, const report_t *r, const solve_path_t *path)
 {
     const maze_t *m = r->maze;
-    double cp = L->cp, cell_m = r->cell_m;
-    c_rect(c, 0, 0, L->w, L->h, C_BG);
+    double cp = L->cp;
     for (uint8_t y = 0; y < m->height; y++)
         for (uint8_t x = 0; x < m->width; x++) {
             maze_cell_t k = maze_cell(m, x, y);
@@ -234,8 +234,15 @@ static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_t 
             c_line(c, px_x(L, maze_x(m, a) + 0.5), px_y(L, maze_y(m, a) + 0.5), px_x(L, maze_x(m, b) + 0.5),
                    px_y(L, maze_y(m, b) + 0.5), cp * 0.4, C_PATH);
         }
+}
 
-    /* walls: south and west of every cell, plus the outer north and east */
+/* The walls (south and west of every cell, plus the outer north and east)
+ * as the mouse learned them against the truth, the algorithm's cell texts,
+ * the posts. */
+static void draw_walls(canvas_t *c, const layout_t *L, const report_t *r, const maze_t *learned)
+{
+    const maze_t *m = r->maze;
+    double cp = L->cp;
     double wall_px = fmax(2.0, cp * 0.08);
     for (uint8_t y = 0; y < m->height; y++)
         for (uint8_t x = 0; x < m->width; x++) {
@@ -278,8 +285,13 @@ static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_t 
         for (int x = 0; x <= m->width; x++)
             c_rect(c, px_x(L, x) - wall_px / 2, px_y(L, y) - wall_px / 2, px_x(L, x) + wall_px / 2,
                    px_y(L, y) + wall_px / 2, C_POST);
+}
 
-    /* trajectory by speed; the last lap thicker */
+/* The trajectory coloured by speed, the last lap thicker; the robot's last
+ * position as a dot. */
+static void draw_trajectory(canvas_t *c, const layout_t *L, const report_t *r, const sim_t *s)
+{
+    double cp = L->cp, cell_m = r->cell_m;
     const race_t *rc = &s->race;
     double lap0 = rc->nlaps ? rc->laps[rc->nlaps - 1].start_s : -1, lap1 = rc->nlaps ? rc->laps[rc->nlaps - 1].end_s : -1;
     double vmax = r->vmax > 0.05 ? r->vmax : 0.05, k = cp / cell_m;
@@ -313,8 +325,14 @@ static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_t 
         const sample_t *e = &r->s[r->n - 1];
         c_disc(c, L->ox + e->x * k, L->oy - e->y * k, fmax(3.0, cp * 0.12), 0x000000);
     }
+}
 
-    /* text panel: title, lap table, totals, legend */
+/* The text panel: title, lap table, totals, legend, speed scale. */
+static void draw_panel(canvas_t *c, const layout_t *L, const report_t *r, const sim_t *s, const maze_t *learned,
+                       const solve_path_t *path, const char *title)
+{
+    const race_t *rc = &s->race;
+    double vmax = r->vmax > 0.05 ? r->vmax : 0.05;
     int ty = L->text_y;
     c_text(c, MARGIN_PX, ty, C_TEXT, title);
     ty += LINE_PX + LINE_PX / 2;
@@ -353,6 +371,16 @@ static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_t 
     for (int i = 0; i < bw; i++) c_rect(c, bx + i, ty, bx + i + 1, ty + 14, speed_colour((double)i / (bw - 1)));
     snprintf(buf, sizeof buf, "%.2f m/s", vmax);
     c_text(c, bx + bw + 8, ty, C_TEXT, buf);
+}
+
+static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_t *s, const maze_t *learned,
+                 const solve_path_t *path, const char *title)
+{
+    c_rect(c, 0, 0, L->w, L->h, C_BG);
+    draw_cells(c, L, r, path);
+    draw_walls(c, L, r, learned);
+    draw_trajectory(c, L, r, s);
+    draw_panel(c, L, r, s, learned, path, title);
 }
 
 static int layout_make(layout_t *L, const report_t *r, const sim_t *s, const char *title)

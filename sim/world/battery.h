@@ -1,9 +1,7 @@
 /* battery.h - the robot's battery: open-circuit voltage by state of charge,
- * internal resistance, charge drawn (groundwork for issue 17).
- *
- * Not yet wired in: no sim_t member, no HAL reading, no config keys; the
- * motor still uses the config's constant battery_v and battery_r_ohm
- * (motor.h). Wiring it is the next step of issue 17.
+ * internal resistance, charge drawn. The robot file's [battery.*] section
+ * sets it up; sim.c steps it with the H-bridges' currents and feeds the
+ * motors its voltage; the firmware reads it through hal_battery_mv.
  *
  *   soc = 1 - Q / C                    Q = charge drawn (C), C = capacity (C);
  *                                      clamped to 0..1 for the voltage

@@ -1,7 +1,7 @@
-/* gyro.h - MEMS z-rate gyroscope model (groundwork for issue 17).
- *
- * Not yet wired in: no sim_t member, no HAL reading, no robot/config keys;
- * that is the next step of issue 17. Plain data + functions only.
+/* gyro.h - MEMS z-rate gyroscope model. The robot file's [gyro.*] section
+ * sets it up (sensor_gyro in gyro.c, a sensor kind of sensor.h); the
+ * simulation samples it with the body's yaw rate every step; the firmware
+ * reads it through hal_gyro_mdps.
  *
  * The sensor samples at rate f (Hz); sample k is taken at t_k = k/f and held
  * until t_(k+1) (sample-and-hold). For sample k, with the true rate w (the

@@ -77,7 +77,7 @@ typedef struct {
 typedef struct {
     ir_spec_t model;           /* reflectivity comes from the config ([world] wall_reflectivity) */
     double emitter;            /* the emitter group that lights it, 0..3 (hal_emitter) */
-    double adc_channel;        /* the MCU's ADC channel its detector feeds (a board's business; issue 18) */
+    double adc_channel;        /* the MCU's ADC channel its detector feeds (a board's business) */
     double measured_centred;   /* lit minus dark on the real robot centred in a cell between side walls, no wall ahead; -1 none */
     double measured_backed;    /* lit minus dark with its back against a cell's rear wall, a wall ahead; -1 none */
 } ir_part_spec_t;

@@ -5,7 +5,7 @@
  * within range, or a reading at or beyond the range (before or after the
  * noise) = timeout, reported as a flag (and the range as distance): a
  * reading is always below the range (the paper's Unity simulator sends a
- * reading at or beyond its range as a timeout; issue 15).
+ * reading at or beyond its range as a timeout).
  * Each sensor has its own noise stream (world/rng.h, from the run seed and
  * the sensor index), so adding a sensor or reading one more often never
  * changes another one's noise. */

@@ -1,4 +1,4 @@
-// OneCommand - a test sketch for test/cli_pil.sh (issue 15) with the habit of
+// OneCommand - a test sketch for test/cli_pil.sh with the habit of
 // the paper's Arduino library: its Motor sends a command only when the value
 // changes, so a sketch that sets both motors once and then only reads the
 // sensors sends exactly one command. In compat mode the simulator must hold
