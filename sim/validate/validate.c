@@ -15,31 +15,6 @@
 #define DATASHEET "Pololu micro metal gearmotors datasheet Rev 2.0 (May 2018), 30:1 LP 6V"
 #define ROBOT_MOTOR "the robot file's [motor.left] figures at rated_v"
 
-bench_t bench; /* one at a time; maze_t and sim_t are large */
-
-void bench_field(maze_t *m, uint8_t w, uint8_t h, uint8_t sx)
-{
-    maze_init(m, w, h);
-    maze_close_unknown(m);
-    for (uint8_t y = 0; y < h; y++)
-        for (uint8_t x = 0; x < w; x++) {
-            maze_cell_t c = maze_cell(m, x, y);
-            if (x + 1 < w) maze_set_wall(m, c, MAZE_EAST, MAZE_WALL_OPEN);
-            if (y + 1 < h) maze_set_wall(m, c, MAZE_NORTH, MAZE_WALL_OPEN);
-        }
-    m->start = maze_cell(m, sx, 0);
-    m->start_heading = MAZE_NORTH;
-}
-
-void bench_corridor(maze_t *m, uint8_t n)
-{
-    maze_init(m, n, 1);
-    maze_close_unknown(m);
-    for (uint8_t x = 0; x + 1 < n; x++) maze_set_wall(m, maze_cell(m, x, 0), MAZE_EAST, MAZE_WALL_OPEN);
-    m->start = maze_cell(m, 0, 0);
-    m->start_heading = MAZE_EAST;
-}
-
 static sim_t *open_bench(const simcfg_t *c, int lift, int lock)
 {
     if (lift || lock) bench_field(&bench.maze, 3, 3, 1);
@@ -53,7 +28,6 @@ static void run_steps(sim_t *s, long n)
     for (long i = 0; i < n; i++) sim_step(s);
 }
 
-long bench_steps(const simcfg_t *c, double seconds) { return lround(seconds / c->step_s); }
 
 /* ---- the motor on the bench (robot lifted) ---- */
 
@@ -303,22 +277,6 @@ static double tunnelling_mm(const simcfg_t *c)
 }
 
 /* ---- the table ---- */
-
-void bench_add(validate_check_t *v, int *n, const char *name, double expected, double measured, const char *unit,
-                double tol_pct, int bound, const char *source)
-{
-    validate_check_t *k = &v[(*n)++];
-    k->name = name;
-    k->expected = expected;
-    k->measured = measured;
-    k->unit = unit;
-    k->tolerance_pct = tol_pct;
-    k->bound = bound;
-    k->source = source;
-    if (bound == VALIDATE_NEAR) k->pass = fabs(measured - expected) <= tol_pct / 100.0 * fabs(expected);
-    else if (bound == VALIDATE_MAX) k->pass = measured <= expected;
-    else k->pass = 1;
-}
 
 /* The Pololu 30:1 LP 6V of the paper robot (its datasheet's other figures
  * are checked only for it). */
