@@ -74,7 +74,7 @@ static const run_driver_t *pick_driver(const run_opts_t *o)
 
 static int fail_setup(run_t *r, int rc)
 {
-    r->drv->close(r, r->self);
+    if (r->drv->close) r->drv->close(r, r->self);
     sim_free(&r->sim);
     return rc;
 }
@@ -395,7 +395,7 @@ int run_one(const run_opts_t *o, const char *maze_path, json_t **out, int print_
     if (print_text) print_summary(r, wall);
     int code = r->drv->exit_code ? r->drv->exit_code(r, r->self) : run_exit_laps(r, "done", "mcu_stopped");
     if (r->ctl != r->drv) r->ctl->close(r, r->ctl_self);
-    r->drv->close(r, r->self);
+    if (r->drv->close) r->drv->close(r, r->self);
     sim_free(&r->sim);
     *out = j;
     if (out_rc) return out_rc;

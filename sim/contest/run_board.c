@@ -21,6 +21,10 @@ typedef struct {
     size_t console_sent; /* console bytes written to it so far */
 } board_run_t;
 
+/* One contest per process (run_one): the driver's state is static, as
+ * run_one's run_t is, so what it holds stays reachable to the end. */
+static board_run_t board_state;
+
 /* --input's actions on the board: the switches, the button, the reset
  * button and the console (a newline after the text, as a serial monitor
  * sends it). */
@@ -101,8 +105,8 @@ static void board_close_run(run_t *r, void *self)
 {
     board_run_t *b = self;
     if (b->console_fd >= 0) close(b->console_fd);
+    b->console_fd = -1;
     board_close(b->board);
-    free(b);
 }
 
 static int board_open_run(run_t *r, void **self)
@@ -113,16 +117,12 @@ static int board_open_run(run_t *r, void **self)
         fprintf(stderr, "%s\n", err);
         return RUN_BAD_INPUT;
     }
-    board_run_t *b = calloc(1, sizeof *b);
-    if (!b) {
-        fprintf(stderr, "mmsim: out of memory\n");
-        return RUN_EXTERNAL;
-    }
+    board_run_t *b = &board_state;
+    memset(b, 0, sizeof *b);
     b->console_fd = -1;
     b->board = board_open(&spec, r->o->avr_elf, &r->sim, err, sizeof err);
     if (!b->board) {
         fprintf(stderr, "mmsim: %s\n", err);
-        free(b);
         return RUN_BAD_INPUT;
     }
     if (r->o->verbose) board_set_echo(b->board, stderr);

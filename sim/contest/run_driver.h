@@ -38,7 +38,7 @@ typedef struct {
     const char *(*after)(run_t *r, void *self);
     void (*stop)(run_t *r, void *self);                /* the loop has ended (NULL: nothing to do) */
     void (*results)(run_t *r, void *self, json_t *j);  /* its keys after "driver" (NULL: none) */
-    void (*close)(run_t *r, void *self);               /* release self: at the end, or a later set-up step failed */
+    void (*close)(run_t *r, void *self);               /* release what self holds: at the end, or a later set-up step failed (NULL: nothing) */
     void (*headline)(const run_t *r, const void *self); /* the text report's first line */
     /* from the reason and laps (NULL: a lap, and done or mcu_stopped) */
     int (*exit_code)(const run_t *r, const void *self);

@@ -5,7 +5,6 @@
 
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "hal.h"
@@ -49,27 +48,20 @@ static void fw_start(run_t *r, fw_t *f)
     f->tick_steps = f->steps_per_tick - 1; /* the first step ticks */
 }
 
-/* *self = calloc(size): 0, or RUN_EXTERNAL after a line */
-static int alloc_self(void **self, size_t size)
-{
-    *self = calloc(1, size);
-    if (*self) return 0;
-    fprintf(stderr, "mmsim: out of memory\n");
-    return RUN_EXTERNAL;
-}
+/* One contest per process (run_one): the driver's state is static, as
+ * run_one's run_t is, so what it holds stays reachable to the end. */
+static fw_t fw_state;
+static fw_mms_t mms_state;
 
 static int fw_open(run_t *r, void **self)
 {
-    if (alloc_self(self, sizeof(fw_t)) != 0) return RUN_EXTERNAL;
-    fw_start(r, *self);
+    memset(&fw_state, 0, sizeof fw_state);
+    *self = &fw_state;
+    fw_start(r, &fw_state);
     return 0;
 }
 
-static void fw_close(run_t *r, void *self)
-{
-    hal_sim_attach(NULL);
-    free(self);
-}
+static void fw_close(run_t *r, void *self) { hal_sim_attach(NULL); }
 
 static const char *fw_after(run_t *r, void *self)
 {
@@ -115,8 +107,9 @@ const run_driver_t run_firmware = {
 static int mms_open(run_t *r, void **self)
 {
     char err[400];
-    if (alloc_self(self, sizeof(fw_mms_t)) != 0) return RUN_EXTERNAL;
-    fw_mms_t *m = *self;
+    fw_mms_t *m = &mms_state;
+    memset(m, 0, sizeof *m);
+    *self = m;
     fw_start(r, &m->fw);
     mouse_cmd_mode();
     if (mms_start(&m->mms, &r->o->mms, &r->maze, err, sizeof err) != 0) {

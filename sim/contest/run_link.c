@@ -7,7 +7,6 @@
 
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "board/pil.h"
@@ -105,13 +104,16 @@ static const char *avr_after(run_t *r, void *self)
 
 static const link_t *link_of(const void *self) { return &((const link_run_t *)self)->lnk; }
 
-/* *self = a zeroed link_run_t: 0, or -1 with the reason in err */
-static int alloc_self(void **self, char *err, size_t errlen)
+/* One contest per process (run_one): the driver's state is static, as
+ * run_one's run_t is, so what it holds stays reachable to the end. */
+static link_run_t link_state;
+
+/* *self = the zeroed link_run_t */
+static link_run_t *new_self(void **self)
 {
-    *self = calloc(1, sizeof(link_run_t));
-    if (*self) return 0;
-    snprintf(err, errlen, "out of memory");
-    return -1;
+    memset(&link_state, 0, sizeof link_state);
+    *self = &link_state;
+    return &link_state;
 }
 
 int run_link_connect(run_t *r, const char *port, long baud, void **self, char *err, size_t errlen)
@@ -120,11 +122,8 @@ int run_link_connect(run_t *r, const char *port, long baud, void **self, char *e
     lo.device = port;
     lo.pty = 0;
     lo.baud = (uint32_t)baud;
-    if (alloc_self(self, err, errlen) != 0) return -1;
-    link_run_t *l = *self;
-    if (link_open(&l->lnk, &lo, r->cfg.step_s, tof_range_mm(r), counts_x100(r), stderr, err, errlen) == 0) return 0;
-    free(l);
-    return -1;
+    link_run_t *l = new_self(self);
+    return link_open(&l->lnk, &lo, r->cfg.step_s, tof_range_mm(r), counts_x100(r), stderr, err, errlen) == 0 ? 0 : -1;
 }
 
 static void link_results(run_t *r, void *self, json_t *j)
@@ -150,37 +149,27 @@ static int serial_open(run_t *r, void **self)
 {
     char err[400];
     link_opts_t lo = link_opts(r);
-    if (alloc_self(self, err, sizeof err) == 0) {
-        link_run_t *l = *self;
-        if (link_open(&l->lnk, &lo, r->cfg.step_s, tof_range_mm(r), counts_x100(r), stderr, err, sizeof err) == 0) return 0;
-        free(l);
-    }
+    link_run_t *l = new_self(self);
+    if (link_open(&l->lnk, &lo, r->cfg.step_s, tof_range_mm(r), counts_x100(r), stderr, err, sizeof err) == 0) return 0;
     fprintf(stderr, "mmsim: %s\n", err);
     return RUN_EXTERNAL;
 }
 
-static void serial_close(run_t *r, void *self)
-{
-    link_close(&((link_run_t *)self)->lnk);
-    free(self);
-}
+static void serial_close(run_t *r, void *self) { link_close(&((link_run_t *)self)->lnk); }
 
 static int avr_open(run_t *r, void **self)
 {
     char err[400];
     int fd;
-    if (alloc_self(self, err, sizeof err) == 0) {
-        link_run_t *l = *self;
-        if (pil_open(&l->pil, r->o->avr_elf, r->o->avr_mcu, r->o->avr_f_cpu, r->cfg.step_s, &fd, err, sizeof err) == 0) {
-            link_opts_t lo = link_opts(r);
-            link_open_fd(&l->lnk, fd, "simavr UART0", &lo, r->cfg.step_s, tof_range_mm(r), counts_x100(r),
-                         r->o->verbose ? stderr : NULL);
-            return 0;
-        }
-        free(l);
+    link_run_t *l = new_self(self);
+    if (pil_open(&l->pil, r->o->avr_elf, r->o->avr_mcu, r->o->avr_f_cpu, r->cfg.step_s, &fd, err, sizeof err) != 0) {
+        fprintf(stderr, "mmsim: %s\n", err);
+        return RUN_EXTERNAL;
     }
-    fprintf(stderr, "mmsim: %s\n", err);
-    return RUN_EXTERNAL;
+    link_opts_t lo = link_opts(r);
+    link_open_fd(&l->lnk, fd, "simavr UART0", &lo, r->cfg.step_s, tof_range_mm(r), counts_x100(r),
+                 r->o->verbose ? stderr : NULL);
+    return 0;
 }
 
 static void avr_close(run_t *r, void *self)
@@ -188,7 +177,6 @@ static void avr_close(run_t *r, void *self)
     link_run_t *l = self;
     link_close(&l->lnk);
     pil_close(&l->pil);
-    free(l);
 }
 
 /* the processor stopped: an external failure; else as every MCU */
