@@ -1,6 +1,7 @@
 /* run.c - one contest (see run.h): set up the world and the driver, the
- * contest loop, the results. What differs per driver is in run_driver.h's
- * tables (run_firmware.c, run_scripted.c, run_link.c). */
+ * contest loop (one step, then every observer: run_driver.h), the results.
+ * What differs per driver is in run_driver.h's tables (run_firmware.c,
+ * run_scripted.c, run_link.c, run_board.c). */
 #include "run_driver.h"
 
 #include <math.h>
@@ -9,9 +10,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "hal.h"
 #include "maze/mazefile.h"
-#include "mouse.h"
 
 static double wall_now(void)
 {
@@ -75,7 +74,7 @@ static const run_driver_t *pick_driver(const run_opts_t *o)
 
 static int fail_setup(run_t *r, int rc)
 {
-    if (r->drv->undo) r->drv->undo(r);
+    if (r->drv->close) r->drv->close(r, r->self);
     sim_free(&r->sim);
     return rc;
 }
@@ -85,9 +84,10 @@ static int open_outputs(run_t *r)
 {
     const run_opts_t *o = r->o;
     char err[400];
+    const link_t *lnk = r->drv->link ? r->drv->link(r->self) : NULL;
     telem_opts_t topts = o->telem;
-    if (o->serial) topts.link = &r->lnk; /* MM_LINK in HIL/PIL runs */
-    topts.maze_path = r->maze_path;      /* MM_MAZE names it */
+    topts.link = lnk;               /* MM_LINK in HIL/PIL runs */
+    topts.maze_path = r->maze_path; /* MM_MAZE names it */
     if (r->tel_on && telem_open(&r->tel, &topts, &r->sim, err, sizeof err) != 0) {
         fprintf(stderr, "mmsim: %s\n", err);
         return RUN_EXTERNAL;
@@ -96,15 +96,13 @@ static int open_outputs(run_t *r)
     r->view = NULL;
     if (!o->gui && !o->shot) return 0;
     view_opts_t vo = o->view;
-    if (o->serial) { /* the HUD shows the link's port and baud */
-        vo.port = r->lnk.path;
-        vo.baud = (long)r->lnk.o.baud;
+    if (lnk) { /* the HUD shows the link's port and baud */
+        vo.port = lnk->path;
+        vo.baud = (long)lnk->o.baud;
     }
     snprintf(err, sizeof err, "out of memory");
     r->view = view_new(&vo);
-    if (r->view && r->panel) view_set_board(r->view, r->panel, r);
-    if (r->view && o->mms.command)
-        view_set_mms(r->view, r->mms.color, &r->mms.text[0][0], sizeof r->mms.text[0], &r->mms.was_reset);
+    if (r->view && r->drv->show) r->drv->show(r, r->self, r->view);
     if (!r->view || view_open(r->view, o->gui, err, sizeof err) != 0) {
         fprintf(stderr, "mmsim: %s\n", err);
         view_free(r->view);
@@ -130,7 +128,7 @@ static int set_goal(run_t *r)
 }
 
 /* The hands' actions due now: occlude and end here, the rest on the board
- * (r->hands). NULL, or why the run ends. */
+ * (the driver's hands). NULL, or why the run ends. */
 static const char *hands(run_t *r)
 {
     const input_action_t *a;
@@ -138,13 +136,13 @@ static const char *hands(run_t *r)
     while ((a = input_due(in, sim_time_s(&r->sim))) != NULL) {
         if (a->kind == INPUT_END) return "input_end";
         if (a->kind == INPUT_OCCLUDE) sim_ir_occlude(&r->sim, a->value, INPUT_OCCLUDE_M, INPUT_OCCLUDE_S);
-        else if (r->hands) r->hands(r, a);
+        else if (r->drv->hands) r->drv->hands(r, r->self, a);
     }
     return NULL;
 }
 
 /* The person's clicks on the HUD's board panel: the same path as --input's
- * actions (r->hands), taking effect before the next step. */
+ * actions (the driver's hands), taking effect before the next step. */
 static void gui_hands(run_t *r)
 {
     static const input_kind_t kinds[] = { [VIEW_HAND_SWITCHES] = INPUT_SWITCHES, [VIEW_HAND_BUTTON_DOWN] = INPUT_BUTTON_DOWN,
@@ -152,7 +150,7 @@ static void gui_hands(run_t *r)
     view_hand_t h;
     while (view_hands_request(r->view, &h)) {
         input_action_t a = { sim_time_s(&r->sim), kinds[h.kind], (int)h.switches, "" };
-        if (r->hands) r->hands(r, &a);
+        r->drv->hands(r, r->self, &a);
     }
 }
 
@@ -173,30 +171,46 @@ static int setup(run_t *r)
     }
     r->drv = pick_driver(r->o);
     r->tel_on = r->o->telem.url || r->o->telem.log_path;
-    r->hil = r->o->serial;
     r->reason = "done";
     r->input = r->o->input;
-    int orc = r->drv->open(r);
+    int orc = r->drv->open(r, &r->self);
     if (orc != 0) {
         sim_free(&r->sim);
         return orc == RUN_BAD_INPUT ? RUN_BAD_INPUT : RUN_EXTERNAL;
     }
-    if (input_needs_board(&r->input) && !r->hands) {
+    r->ctl = r->drv;
+    r->ctl_self = r->self;
+    if (input_needs_board(&r->input) && !r->drv->hands) {
         fprintf(stderr, "--input: switches, button, reset and send act on a board (--board NAME)\n");
-        if (r->drv->undo) r->drv->undo(r);
-        sim_free(&r->sim);
-        return RUN_BAD_INPUT;
+        return fail_setup(r, RUN_BAD_INPUT);
     }
     if (open_outputs(r) != 0) return fail_setup(r, RUN_EXTERNAL);
-    /* a build with -DHAL_TICK_HZ=250 ticks every 4th step, as on the AVR */
-    r->steps_per_tick = lround(1.0 / (HAL_TICK_HZ * r->cfg.step_s));
-    if (r->steps_per_tick < 1) r->steps_per_tick = 1;
-    r->tick_steps = r->steps_per_tick - 1; /* the first step ticks */
     return 0;
 }
 
-/* After the driver's step: the report, the viewer, the contest's limits and
- * the stall check. NULL, or why the run ends now. */
+/* The HUD's Connect: the serial link takes the steps from now on (the
+ * driver the run began with keeps its state for its results). */
+static void hand_to_link(run_t *r, const char *port, long baud)
+{
+    char err[400];
+    void *self;
+    if (r->ctl->link) {
+        view_set_status(r->view, "already connected: one link per run");
+        return;
+    }
+    if (run_link_connect(r, port, baud, &self, err, sizeof err) != 0) {
+        view_set_status(r->view, err);
+        return;
+    }
+    r->ctl = &run_serial;
+    r->ctl_self = self;
+    r->sim.cmd[0] = r->sim.cmd[1] = 0;
+    if (r->tel_on) r->tel.link = run_serial.link(self); /* MM_LINK from now on */
+    view_set_status(r->view, "connected: the MCU drives from now on");
+}
+
+/* After the step and the driver: the report, the viewer, the contest's
+ * limits and the stall check. NULL, or why the run ends now. */
 typedef struct {
     double last_x, last_y, progress_s, hard_stop_s;
 } watch_t;
@@ -214,13 +228,13 @@ static const char *after_step(run_t *r, watch_t *w)
     }
     if (r->rep) report_step(r->rep, s);
     if (o->gui && view_step(r->view, s)) return "window_closed";
-    if (o->gui && view_connect_request(r->view, &cport, &cbaud)) run_link_connect(r, cport, cbaud);
-    if (o->gui && r->panel) gui_hands(r);
+    if (o->gui && view_connect_request(r->view, &cport, &cbaud)) hand_to_link(r, cport, cbaud);
+    if (o->gui && r->drv->hands) gui_hands(r);
     if (o->shot && sim_time_s(s) >= o->shot_at_s) return "screenshot";
     double t = sim_time_s(s), x, y, h;
     if (s->race.over_time && !s->race.in_run) return "time_limit";
     if (t > w->hard_stop_s) return "time_limit";
-    if (s->step % 100 == 0 && !r->hil && !o->mms.command && !o->board) { /* a HIL robot or a board may wait for its MCU or a person; mms: the firmware's own stall check */
+    if (s->step % 100 == 0 && r->ctl->watch_stall) {
         world_pose(s->world, &x, &y, &h);
         if (hypot(x - w->last_x, y - w->last_y) > 0.01) {
             w->last_x = x;
@@ -241,8 +255,22 @@ static const char *after_step(run_t *r, watch_t *w)
     return NULL;
 }
 
-/* The contest loop: a physics step with the driver (or the link, once an
- * MCU drives), then the common checks, until one of them ends the run. */
+/* One step: the driver's control, the physics, the telemetry between the
+ * driver's hooks (run_driver.h), then the other observers and the checks.
+ * NULL, or why the run ends. */
+static const char *step(run_t *r, watch_t *w)
+{
+    const run_driver_t *d = r->ctl;
+    const char *why = d->before ? d->before(r, r->ctl_self) : NULL;
+    if (why) return why;
+    sim_step(&r->sim);
+    if (d->exchange) d->exchange(r, r->ctl_self);
+    if (r->tel_on) telem_step(&r->tel, &r->sim);
+    why = d->after ? d->after(r, r->ctl_self) : NULL;
+    return why ? why : after_step(r, w);
+}
+
+/* The contest loop: the hands, then a step, until something ends the run. */
 static void contest_loop(run_t *r)
 {
     watch_t w = { 0, 0, 0, r->cfg.time_limit_s + 60.0 }; /* a lap under way may finish over time, flagged */
@@ -251,8 +279,7 @@ static void contest_loop(run_t *r)
     world_pose(r->sim.world, &w.last_x, &w.last_y, &h);
     for (;;) {
         const char *why = hands(r);
-        if (!why) why = r->hil ? run_link_step(r) : r->drv->step(r);
-        if (!why) why = after_step(r, &w);
+        if (!why) why = step(r, &w);
         if (why) {
             r->reason = why;
             break;
@@ -327,11 +354,8 @@ static int write_report(run_t *r)
     if (!r->rep) return 0;
     snprintf(title, sizeof title, "%s  %ux%u  seed %llu  %s driver  exit: %s", r->maze_path, r->maze.width,
              r->maze.height, (unsigned long long)r->o->seed, r->drv->name, r->reason);
-    if (r->drv == &run_mms) report_set_cells(r->rep, r->mms.color, &r->mms.text[0][0], sizeof r->mms.text[0]);
-    /* only what the run has: an MCU over the link keeps its map to itself (no belief, no final path); the
-     * scripted driver has no map and drives the true best path */
-    const maze_t *belief = r->drv == &run_firmware || r->drv == &run_mms ? mouse_map() : NULL;
-    const maze_t *path_on = belief ? belief : r->drv == &run_scripted ? &r->maze : NULL;
+    const maze_t *belief = NULL, *path_on = NULL; /* only what the run's driver has */
+    if (r->drv->report) r->drv->report(r, r->self, r->rep, &belief, &path_on);
     if (report_write(r->rep, &r->sim, belief, path_on, r->o->report, title, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         rc = RUN_EXTERNAL;
@@ -343,7 +367,7 @@ static int write_report(run_t *r)
 static void print_summary(const run_t *r, double wall)
 {
     double t = sim_time_s(&r->sim);
-    r->drv->headline(r);
+    r->drv->headline(r, r->self);
     race_print_table(&r->sim.race, stdout);
     printf("sim time %.3f s, wall time %.3f s (%.0fx real time), collisions %u, exit: %s\n", t, wall,
            wall > 0 ? t / wall : 0.0, world_collisions(r->sim.world), r->reason);
@@ -360,20 +384,20 @@ int run_one(const run_opts_t *o, const char *maze_path, json_t **out, int print_
     int rc = setup(r);
     if (rc) return rc;
     contest_loop(r);
-    if (r->drv->stop) r->drv->stop(r);
+    if (r->drv->stop) r->drv->stop(r, r->self);
     int out_rc = close_outputs(r);
     double wall = wall_now() - r->t0;
     json_t *j = results_json(r, wall);
     json_object_set_new(j, "driver", json_string(r->drv->name));
-    if (r->drv->results) r->drv->results(r, j);
-    if (r->hil) run_link_results(r, j);
+    if (r->drv->results) r->drv->results(r, r->self, j);
+    if (r->ctl != r->drv) r->ctl->results(r, r->ctl_self, j); /* the link the HUD's Connect opened */
     if (write_report(r)) out_rc = RUN_EXTERNAL;
     if (print_text) print_summary(r, wall);
+    int code = r->drv->exit_code ? r->drv->exit_code(r, r->self) : run_exit_laps(r, "done", "mcu_stopped");
+    if (r->ctl != r->drv) r->ctl->close(r, r->ctl_self);
+    if (r->drv->close) r->drv->close(r, r->self);
     sim_free(&r->sim);
     *out = j;
     if (out_rc) return out_rc;
-    if (o->shot) return RUN_OK; /* the picture was the point */
-    if (!strcmp(r->reason, "avr_stopped")) return RUN_EXTERNAL;
-    if (!strcmp(r->reason, "board_unsupported")) return RUN_BAD_INPUT;
-    return r->drv->exit_code ? r->drv->exit_code(r) : run_exit_laps(r, "done", "mcu_stopped");
+    return o->shot ? RUN_OK : code; /* with a screenshot, the picture was the point */
 }

@@ -12,22 +12,34 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "board/board.h"
 #include "link/serial.h"
+
+typedef struct {
+    board_t *board;
+    int console_fd;      /* --console pty: the pty's master, -1 none */
+    size_t console_sent; /* console bytes written to it so far */
+} board_run_t;
+
+/* One contest per process (run_one): the driver's state is static, as
+ * run_one's run_t is, so what it holds stays reachable to the end. */
+static board_run_t board_state;
 
 /* --input's actions on the board: the switches, the button, the reset
  * button and the console (a newline after the text, as a serial monitor
  * sends it). */
-static void board_hands(run_t *r, const input_action_t *a)
+static void board_hands(run_t *r, void *self, const input_action_t *a)
 {
+    board_t *b = ((board_run_t *)self)->board;
     char line[INPUT_TEXT_MAX + 2];
     switch (a->kind) {
-    case INPUT_SWITCHES: board_set_switches(r->board, (unsigned)a->value); break;
-    case INPUT_BUTTON_DOWN: board_button(r->board, 1); break;
-    case INPUT_BUTTON_UP: board_button(r->board, 0); break;
-    case INPUT_RESET: board_reset(r->board); break;
+    case INPUT_SWITCHES: board_set_switches(b, (unsigned)a->value); break;
+    case INPUT_BUTTON_DOWN: board_button(b, 1); break;
+    case INPUT_BUTTON_UP: board_button(b, 0); break;
+    case INPUT_RESET: board_reset(b); break;
     case INPUT_SEND:
         snprintf(line, sizeof line, "%s\n", a->text);
-        if (board_send(r->board, line) != 0) fprintf(stderr, "mmsim: --input send: the UART's input queue is full: '%s' dropped\n", a->text);
+        if (board_send(b, line) != 0) fprintf(stderr, "mmsim: --input send: the UART's input queue is full: '%s' dropped\n", a->text);
         break;
     default: break;
     }
@@ -35,14 +47,14 @@ static void board_hands(run_t *r, const input_action_t *a)
 
 /* --console pty: the UART on a pseudo-terminal whose path goes to
  * stderr; 0, or RUN_EXTERNAL after a line. */
-static int console_open(run_t *r)
+static int console_open(run_t *r, board_run_t *b)
 {
     char path[256], err[300];
-    r->console_fd = -1;
-    r->console_sent = 0;
+    b->console_fd = -1;
+    b->console_sent = 0;
     if (!r->o->console_pty) return 0;
-    r->console_fd = serial_open_pty(path, sizeof path, err, sizeof err);
-    if (r->console_fd < 0) {
+    b->console_fd = serial_open_pty(path, sizeof path, err, sizeof err);
+    if (b->console_fd < 0) {
         fprintf(stderr, "mmsim: --console pty: %s\n", err);
         return RUN_EXTERNAL;
     }
@@ -51,31 +63,31 @@ static int console_open(run_t *r)
 }
 
 /* What the person typed to the board, what the firmware printed to the person. */
-static void console_pump(run_t *r)
+static void console_pump(board_run_t *b)
 {
     char in[64];
     size_t len;
-    if (r->console_fd < 0) return;
-    ssize_t n = read(r->console_fd, in, sizeof in - 1);
+    if (b->console_fd < 0) return;
+    ssize_t n = read(b->console_fd, in, sizeof in - 1);
     if (n > 0) {
         in[n] = '\0';
-        board_send(r->board, in);
+        board_send(b->board, in);
     }
-    const char *out = board_console(r->board, &len);
-    while (r->console_sent < len) {
-        ssize_t w = write(r->console_fd, out + r->console_sent, len - r->console_sent);
+    const char *out = board_console(b->board, &len);
+    while (b->console_sent < len) {
+        ssize_t w = write(b->console_fd, out + b->console_sent, len - b->console_sent);
         if (w <= 0) break; /* nobody reading yet (or a full buffer): the rest next time */
-        r->console_sent += (size_t)w;
+        b->console_sent += (size_t)w;
     }
 }
 
 /* The viewer's panel, just before it draws a frame (reads only: the run is
- * the same with or without the viewer). */
+ * the same with or without the viewer). ctx: the board_run_t. */
 static void board_panel_fill(void *ctx, view_board_t *out)
 {
-    const run_t *r = ctx;
+    const board_run_t *b = ctx;
     board_panel_t p;
-    board_panel(r->board, &p);
+    board_panel(b->board, &p);
     memset(out, 0, sizeof *out);
     out->switches = p.switches;
     out->button = p.button;
@@ -84,10 +96,20 @@ static void board_panel_fill(void *ctx, view_board_t *out)
         out->led[i] = p.led[i];
         out->led_name[i] = p.led_name[i];
     }
-    out->console = board_console(r->board, &out->console_len);
+    out->console = board_console(b->board, &out->console_len);
 }
 
-static int board_open_run(run_t *r)
+static void board_show(run_t *r, void *self, view_t *v) { view_set_board(v, board_panel_fill, self); }
+
+static void board_close_run(run_t *r, void *self)
+{
+    board_run_t *b = self;
+    if (b->console_fd >= 0) close(b->console_fd);
+    b->console_fd = -1;
+    board_close(b->board);
+}
+
+static int board_open_run(run_t *r, void **self)
 {
     char path[512], err[600];
     board_spec_t spec;
@@ -95,24 +117,29 @@ static int board_open_run(run_t *r)
         fprintf(stderr, "%s\n", err);
         return RUN_BAD_INPUT;
     }
-    r->board = board_open(&spec, r->o->avr_elf, &r->sim, err, sizeof err);
-    if (!r->board) {
+    board_run_t *b = &board_state;
+    memset(b, 0, sizeof *b);
+    b->console_fd = -1;
+    b->board = board_open(&spec, r->o->avr_elf, &r->sim, err, sizeof err);
+    if (!b->board) {
         fprintf(stderr, "mmsim: %s\n", err);
         return RUN_BAD_INPUT;
     }
-    if (r->o->verbose) board_set_echo(r->board, stderr);
-    r->hands = board_hands;
-    r->panel = board_panel_fill;
-    return console_open(r);
+    if (r->o->verbose) board_set_echo(b->board, stderr);
+    *self = b;
+    int rc = console_open(r, b);
+    if (rc) board_close_run(r, b);
+    return rc;
 }
 
-static const char *board_step_run(run_t *r)
+/* after the step: the console every 10 ms, then the AVR's cycles of the step */
+static const char *board_after(run_t *r, void *self)
 {
     char err[400];
     const run_opts_t *o = r->o;
-    sim_step(&r->sim);
-    if (r->sim.step % 10 == 0) console_pump(r); /* every 10 ms */
-    if (board_step(r->board, err, sizeof err) != 0) {
+    board_run_t *b = self;
+    if (r->sim.step % 10 == 0) console_pump(b);
+    if (board_step(b->board, err, sizeof err) != 0) {
         fprintf(stderr, "mmsim: %s: %s\n", o->avr_elf, err);
         return strstr(err, "auto-trigger") ? "board_unsupported" : "avr_stopped";
     }
@@ -129,11 +156,12 @@ static json_t *counts(const char *const *names, const uint64_t *n, int k)
     return j;
 }
 
-static void board_results(run_t *r, json_t *j)
+static void board_results(run_t *r, void *self, json_t *j)
 {
-    const board_stats_t *st = board_stats(r->board);
+    board_t *bd = ((board_run_t *)self)->board;
+    const board_stats_t *st = board_stats(bd);
     const char *vnames[BOARD_VECTORS_MAX], *adc[BOARD_ADC_CHANNELS] = { "A0", "A1", "A2", "A3", "A4", "A5", "A6", "A7" };
-    for (int v = 0; v < BOARD_VECTORS_MAX; v++) vnames[v] = board_vector_name(r->board, (unsigned)v);
+    for (int v = 0; v < BOARD_VECTORS_MAX; v++) vnames[v] = board_vector_name(bd, (unsigned)v);
     json_t *leds = json_object();
     board_spec_t spec;
     char path[512], err[600];
@@ -156,7 +184,7 @@ static void board_results(run_t *r, json_t *j)
     json_object_set_new(b, "resets", json_integer(st->resets));
     json_object_set_new(j, "board", b);
     size_t n;
-    const char *con = board_console(r->board, &n);
+    const char *con = board_console(bd, &n);
     json_t *cj = json_stringn(con, n);
     if (!cj) { /* not UTF-8: bytes above 0x7F as '?' */
         char *t = malloc(n + 1);
@@ -169,32 +197,27 @@ static void board_results(run_t *r, json_t *j)
     json_object_set_new(j, "console", cj ? cj : json_null());
 }
 
-static void board_stop(run_t *r)
-{
-    console_pump(r); /* the last words */
-    if (r->console_fd >= 0) close(r->console_fd);
-    r->console_fd = -1;
-    board_close(r->board);
-}
+static void board_stop(run_t *r, void *self) { console_pump(self); /* the last words */ }
 
-static void board_undo(run_t *r)
+static void board_headline(const run_t *r, const void *self)
 {
-    if (r->console_fd >= 0) close(r->console_fd);
-    r->console_fd = -1;
-    board_close(r->board);
-}
-
-static void board_headline(const run_t *r)
-{
-    const board_stats_t *st = board_stats(r->board);
+    const board_stats_t *st = board_stats(((const board_run_t *)self)->board);
     printf("%s: %ux%u, seed %llu, %s on board %s: %llu cycles, UART %llu B out, %llu B in\n", r->maze_path, r->maze.width,
            r->maze.height, (unsigned long long)r->o->seed, r->o->avr_elf, r->o->board, (unsigned long long)st->cycles,
            (unsigned long long)st->uart_bytes_out, (unsigned long long)st->uart_bytes_in);
 }
 
-static int board_exit(const run_t *r) { return r->sim.race.nlaps > 0 ? RUN_OK : RUN_NOT_REACHED; }
+/* the AVR stopped: external; an ADC mode simavr lacks: the image's (bad input); else was a lap made */
+static int board_exit(const run_t *r, const void *self)
+{
+    if (!strcmp(r->reason, "avr_stopped")) return RUN_EXTERNAL;
+    if (!strcmp(r->reason, "board_unsupported")) return RUN_BAD_INPUT;
+    return r->sim.race.nlaps > 0 ? RUN_OK : RUN_NOT_REACHED;
+}
 
+/* no stall watch: a board may wait for a person (switches, button, console) */
 const run_driver_t run_board = {
-    .name = "board", .open = board_open_run, .step = board_step_run, .stop = board_stop, .results = board_results,
-    .undo = board_undo, .headline = board_headline, .exit_code = board_exit,
+    .name = "board", .open = board_open_run, .after = board_after, .stop = board_stop, .results = board_results,
+    .close = board_close_run, .headline = board_headline, .exit_code = board_exit, .show = board_show,
+    .hands = board_hands,
 };

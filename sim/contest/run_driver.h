@@ -1,13 +1,24 @@
-/* run_driver.h - inside a run (run.c): its state, and what a driver adds to
- * the contest loop. A driver is a table of functions; the loop in run.c is
- * the same for all of them. A new way to drive the robot = a new
- * run_driver_t in its own run_*.c file and one line in run_pick_driver. */
+/* run_driver.h - inside a run (run.c): what the contest loop holds, and what
+ * a driver adds to it. A driver is a table of functions and its own state
+ * (self, made by its open); it supplies control only. The loop in run.c is
+ * the same for all of them and owns "advance one step, then publish to
+ * every observer", so a driver cannot leave an observer out. One iteration:
+ *
+ *   the hands' actions due now (--input, the HUD's board panel)
+ *   before(r, self)     control for the coming step, or why the run ends
+ *   sim_step
+ *   exchange(r, self)   the step's readings to an outside controller and
+ *                       its commands back, before the observers see them
+ *   telemetry
+ *   after(r, self)      the controller's own time: the firmware's tick, the
+ *                       AVR's cycles; or why the run ends
+ *   report, viewer, the contest's limits, the stall watch, real-time pacing
+ *
+ * A new way to drive the robot = a new run_driver_t in its own run_*.c
+ * file and one line in run.c's pick_driver. */
 #ifndef RUN_DRIVER_H
 #define RUN_DRIVER_H
 
-#include "board/board.h"
-#include "board/pil.h"
-#include "contest/driver.h"
 #include "contest/run.h"
 #include "view/report.h"
 #include "world/sim.h"
@@ -16,58 +27,62 @@ typedef struct run_s run_t;
 
 typedef struct {
     const char *name; /* the JSON's "driver" */
-    /* set up after the world: 0, or RUN_EXTERNAL (RUN_BAD_INPUT: bad input) after one error line */
-    int (*open)(run_t *r);
-    /* one physics step with this driver: NULL, or why the run ends now */
-    const char *(*step)(run_t *r);
-    void (*stop)(run_t *r);               /* the loop has ended (NULL: nothing to do) */
-    void (*results)(run_t *r, json_t *j); /* its keys after "driver" (NULL: none) */
-    void (*undo)(run_t *r);               /* a later set-up step failed (NULL: nothing) */
-    void (*headline)(const run_t *r);     /* the text report's first line */
-    int (*exit_code)(const run_t *r);     /* from the reason and laps (NULL: a lap, and done or mcu_stopped) */
+    /* set up after the world; *self = its state. 0, or RUN_EXTERNAL
+     * (RUN_BAD_INPUT: bad input) after one error line, nothing left open */
+    int (*open)(run_t *r, void **self);
+    /* before each step: NULL, or why the run ends now (NULL hook: nothing) */
+    const char *(*before)(run_t *r, void *self);
+    /* after sim_step, before telemetry (NULL: nothing) */
+    void (*exchange)(run_t *r, void *self);
+    /* after telemetry: NULL, or why the run ends now (NULL hook: nothing) */
+    const char *(*after)(run_t *r, void *self);
+    void (*stop)(run_t *r, void *self);                /* the loop has ended (NULL: nothing to do) */
+    void (*results)(run_t *r, void *self, json_t *j);  /* its keys after "driver" (NULL: none) */
+    void (*close)(run_t *r, void *self);               /* release what self holds: at the end, or a later set-up step failed (NULL: nothing) */
+    void (*headline)(const run_t *r, const void *self); /* the text report's first line */
+    /* from the reason and laps (NULL: a lap, and done or mcu_stopped) */
+    int (*exit_code)(const run_t *r, const void *self);
+    /* the serial link it drives over, for MM_LINK and the HUD's port (NULL: none) */
+    const link_t *(*link)(const void *self);
+    /* its part of the report: the mms cells, the map it believes (NULL: none, an MCU keeps its
+     * map to itself) and the maze its final path is drawn on (NULL: no path) */
+    void (*report)(const run_t *r, void *self, report_t *rep, const maze_t **belief, const maze_t **path_on);
+    void (*show)(run_t *r, void *self, view_t *v); /* its part of the viewer: board panel, mms cells (NULL: none) */
+    /* a hand's action on the board: switches, button, reset, send (NULL: no board to act on) */
+    void (*hands)(run_t *r, void *self, const input_action_t *a);
+    /* the loop ends a run whose robot has made no progress for RUN_STALL_S ("crash_stop"); 0: the
+     * driver may wait for an MCU or a person, or has a stall check of its own */
+    int watch_stall;
 } run_driver_t;
 
 struct run_s {
     const run_opts_t *o;
     const char *maze_path;
-    const run_driver_t *drv;
     simcfg_t cfg;
-    char hash[65];      /* config_hash */
+    char hash[65]; /* config_hash */
     maze_t maze;
     sim_t sim;
-    driver_t script;    /* the scripted driver (drv == &run_scripted) */
-    mms_t mms;
-    link_t lnk;
-    pil_t pil;
-    board_t *board;     /* --board */
+    /* the driver the run began with (its name, results, headline and exit code) and its state */
+    const run_driver_t *drv;
+    void *self;
+    /* the driver in control of the steps and its state: drv, or the serial link since the HUD's Connect */
+    const run_driver_t *ctl;
+    void *ctl_self;
     telem_t tel;
     int tel_on;
     report_t *rep;
     view_t *view;
-    int hil;            /* an MCU drives: from the start, or since the HUD's Connect */
-    long steps_per_tick, tick_steps; /* the firmware's control tick */
     const char *reason; /* the JSON's exit_reason */
     double t0;          /* wall clock at the start, s */
     input_t input;      /* --input's actions, consumed as they fall due */
-    int console_fd;     /* --console pty: the pty's master, -1 none */
-    size_t console_sent; /* console bytes written to it so far */
-    /* the board's side of a hand's action (switches, button, reset, send); NULL: no board */
-    void (*hands)(run_t *r, const input_action_t *a);
-    /* the board as the viewer's panel shows it (view_board_fill_t, ctx = the run); NULL: no board */
-    view_board_fill_t *panel;
 };
 
 extern const run_driver_t run_firmware, run_mms, run_scripted, run_serial, run_avr, run_board;
 
-/* The in-process firmware after a physics step: its control tick at
- * HAL_TICK_HZ, then its background loop (run_firmware.c). */
-void run_firmware_tick(run_t *r);
-/* One step while an MCU drives over the link (run_link.c): NULL or why the run ends. */
-const char *run_link_step(run_t *r);
-/* The HUD's Connect button: an MCU drives from now on (run_link.c). */
-void run_link_connect(run_t *r, const char *port, long baud);
-/* "link" and "avr" into j (run_link.c). */
-void run_link_results(run_t *r, json_t *j);
+/* The HUD's Connect: the serial link to port at baud opened for the run
+ * under way (run_link.c), its run_serial state in *self. 0, or -1 with
+ * the reason in err. */
+int run_link_connect(run_t *r, const char *port, long baud, void **self, char *err, size_t errlen);
 /* RUN_OK if a lap was completed and the run ended for one of the two
  * reasons given (or NULL), else RUN_NOT_REACHED. */
 int run_exit_laps(const run_t *r, const char *ok1, const char *ok2);

@@ -9,6 +9,13 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "board/pil.h"
+
+typedef struct {
+    link_t lnk;
+    pil_t pil; /* --avr: the image in simavr whose UART0 is the link */
+} link_run_t;
+
 /* An EMITTER from the MCU (link_step_io calls it): light the groups it
  * names, then sample every IR sensor with them so. */
 static void ir_sample(void *ctx, uint8_t groups, uint16_t raw[WIRE_IR_MAX])
@@ -74,91 +81,113 @@ static link_opts_t link_opts(const run_t *r)
 }
 static uint32_t counts_x100(const run_t *r) { return (uint32_t)lround(r->cfg.drive[0].encoder_ppr * r->cfg.drive[0].gear_ratio * 100.0); }
 
-const char *run_link_step(run_t *r)
+static void link_exchange_run(run_t *r, void *self) { link_exchange(&((link_run_t *)self)->lnk, &r->sim); }
+
+/* the MCU ended the contest (RUN stop), or the time is up */
+static const char *link_after(run_t *r, void *self)
 {
-    char err[400];
-    sim_step(&r->sim);
-    link_exchange(&r->lnk, &r->sim);
-    if (r->tel_on) telem_step(&r->tel, &r->sim);
-    if (r->o->avr_elf && pil_step(&r->pil, err, sizeof err) != 0) {
-        fprintf(stderr, "mmsim: %s: %s\n", r->o->avr_elf, err);
-        return "avr_stopped";
-    }
-    if (r->lnk.st.stops) return "mcu_stopped"; /* the MCU ended the contest (RUN stop) */
+    if (((link_run_t *)self)->lnk.st.stops) return "mcu_stopped";
     if (sim_time_s(&r->sim) >= r->cfg.time_limit_s) return "time_limit";
     return NULL;
 }
 
-void run_link_connect(run_t *r, const char *port, long baud)
+/* the AVR's cycles of this step, then as link_after */
+static const char *avr_after(run_t *r, void *self)
 {
     char err[400];
+    if (pil_step(&((link_run_t *)self)->pil, err, sizeof err) != 0) {
+        fprintf(stderr, "mmsim: %s: %s\n", r->o->avr_elf, err);
+        return "avr_stopped";
+    }
+    return link_after(r, self);
+}
+
+static const link_t *link_of(const void *self) { return &((const link_run_t *)self)->lnk; }
+
+/* One contest per process (run_one): the driver's state is static, as
+ * run_one's run_t is, so what it holds stays reachable to the end. */
+static link_run_t link_state;
+
+/* *self = the zeroed link_run_t */
+static link_run_t *new_self(void **self)
+{
+    memset(&link_state, 0, sizeof link_state);
+    *self = &link_state;
+    return &link_state;
+}
+
+int run_link_connect(run_t *r, const char *port, long baud, void **self, char *err, size_t errlen)
+{
     link_opts_t lo = link_opts(r);
     lo.device = port;
     lo.pty = 0;
     lo.baud = (uint32_t)baud;
-    if (r->hil) view_set_status(r->view, "already connected: one link per run");
-    else if (link_open(&r->lnk, &lo, r->cfg.step_s, tof_range_mm(r), counts_x100(r), stderr, err, sizeof err) != 0)
-        view_set_status(r->view, err);
-    else {
-        r->hil = 1;
-        r->sim.cmd[0] = r->sim.cmd[1] = 0;
-        if (r->tel_on) r->tel.link = &r->lnk; /* MM_LINK from now on */
-        view_set_status(r->view, "connected: the MCU drives from now on");
-    }
+    link_run_t *l = new_self(self);
+    return link_open(&l->lnk, &lo, r->cfg.step_s, tof_range_mm(r), counts_x100(r), stderr, err, errlen) == 0 ? 0 : -1;
 }
 
-void run_link_results(run_t *r, json_t *j)
+static void link_results(run_t *r, void *self, json_t *j)
 {
-    json_object_set_new(j, "link", link_json(&r->lnk));
-    link_close(&r->lnk);
-    if (!r->o->avr_elf) return;
+    link_run_t *l = self;
+    json_object_set_new(j, "link", link_json(&l->lnk));
+}
+
+static void avr_results(run_t *r, void *self, json_t *j)
+{
+    link_results(r, self, j);
     uint32_t stack_max, free_min;
-    const pil_t *p = &r->pil;
+    const pil_t *p = &((link_run_t *)self)->pil;
     pil_stack(p, &stack_max, &free_min);
     json_object_set_new(j, "avr", json_pack("{s:s, s:s, s:I, s:I, s:I, s:I, s:I, s:I}", "elf", r->o->avr_elf, "mcu",
                                             p->mcu, "f_cpu_hz", (json_int_t)p->f_cpu, "cycles", (json_int_t)p->cycles,
                                             "uart_bytes_in", (json_int_t)p->bytes_in, "uart_bytes_out",
                                             (json_int_t)p->bytes_out, "stack_max_bytes", (json_int_t)stack_max,
                                             "sram_free_min_bytes", (json_int_t)free_min));
-    pil_close(&r->pil);
 }
 
-static int serial_open(run_t *r)
+static int serial_open(run_t *r, void **self)
 {
     char err[400];
     link_opts_t lo = link_opts(r);
-    if (link_open(&r->lnk, &lo, r->cfg.step_s, tof_range_mm(r), counts_x100(r), stderr, err, sizeof err) != 0) {
-        fprintf(stderr, "mmsim: %s\n", err);
-        return RUN_EXTERNAL;
-    }
-    return 0;
+    link_run_t *l = new_self(self);
+    if (link_open(&l->lnk, &lo, r->cfg.step_s, tof_range_mm(r), counts_x100(r), stderr, err, sizeof err) == 0) return 0;
+    fprintf(stderr, "mmsim: %s\n", err);
+    return RUN_EXTERNAL;
 }
 
-static void serial_undo(run_t *r) { link_close(&r->lnk); }
+static void serial_close(run_t *r, void *self) { link_close(&((link_run_t *)self)->lnk); }
 
-static int avr_open(run_t *r)
+static int avr_open(run_t *r, void **self)
 {
     char err[400];
     int fd;
-    if (pil_open(&r->pil, r->o->avr_elf, r->o->avr_mcu, r->o->avr_f_cpu, r->cfg.step_s, &fd, err, sizeof err) != 0) {
+    link_run_t *l = new_self(self);
+    if (pil_open(&l->pil, r->o->avr_elf, r->o->avr_mcu, r->o->avr_f_cpu, r->cfg.step_s, &fd, err, sizeof err) != 0) {
         fprintf(stderr, "mmsim: %s\n", err);
         return RUN_EXTERNAL;
     }
     link_opts_t lo = link_opts(r);
-    link_open_fd(&r->lnk, fd, "simavr UART0", &lo, r->cfg.step_s, tof_range_mm(r), counts_x100(r),
+    link_open_fd(&l->lnk, fd, "simavr UART0", &lo, r->cfg.step_s, tof_range_mm(r), counts_x100(r),
                  r->o->verbose ? stderr : NULL);
     return 0;
 }
 
-static void avr_undo(run_t *r)
+static void avr_close(run_t *r, void *self)
 {
-    link_close(&r->lnk);
-    pil_close(&r->pil);
+    link_run_t *l = self;
+    link_close(&l->lnk);
+    pil_close(&l->pil);
 }
 
-static void link_headline(const run_t *r)
+/* the processor stopped: an external failure; else as every MCU */
+static int avr_exit(const run_t *r, const void *self)
 {
-    const link_t *l = &r->lnk;
+    return !strcmp(r->reason, "avr_stopped") ? RUN_EXTERNAL : run_exit_laps(r, "done", "mcu_stopped");
+}
+
+static void link_headline(const run_t *r, const void *self)
+{
+    const link_t *l = link_of(self);
     int compat = r->o->link.protocol == LINK_COMPAT;
     printf("%s: %ux%u, seed %llu, MCU over %s (%s, %u baud): sent %llu B (%.0f %%), received %llu B (%.0f %%), "
            "dropped %llu messages, %u decode errors, %u silences, %u disconnects\n",
@@ -169,12 +198,13 @@ static void link_headline(const run_t *r)
            (unsigned)l->st.silences, (unsigned)l->st.disconnects);
 }
 
+/* an MCU keeps its map to itself (no report hook) and may wait (no stall watch) */
 const run_driver_t run_serial = {
-    .name = "serial", .open = serial_open, .step = run_link_step, .undo = serial_undo,
-    .headline = link_headline,
+    .name = "serial", .open = serial_open, .exchange = link_exchange_run, .after = link_after,
+    .results = link_results, .close = serial_close, .headline = link_headline, .link = link_of,
 };
 
 const run_driver_t run_avr = {
-    .name = "serial", .open = avr_open, .step = run_link_step, .undo = avr_undo,
-    .headline = link_headline,
+    .name = "serial", .open = avr_open, .exchange = link_exchange_run, .after = avr_after,
+    .results = avr_results, .close = avr_close, .headline = link_headline, .exit_code = avr_exit, .link = link_of,
 };
