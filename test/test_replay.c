@@ -1,10 +1,12 @@
-/* test_replay.c - a log written by sim/telem replayed by sim/replay: at a
- * logged time the stand-in simulation has the live run's pose, wheel
- * angles (to an encoder count), ToF rays, emitter groups (MM_PARTS),
- * contest timers and belief; the
- * index search; the viewer's time slider, seek keys and play/pause on a
- * replay (no window); and the load errors (missing, not a log, truncated,
- * no MM_MAZE). */
+/* test_replay.c - a log written by sim/telem replayed by sim/replay
+ * without a simulation: at a logged time the replay's snapshot (snap.h)
+ * has the live run's pose, wheel angles (to an encoder count), ToF rays,
+ * emitter groups (MM_PARTS), contest timers and belief, and the replay's
+ * model the live run's; rays cast against the maze's geometry
+ * (snap_maze_ray) meet the walls and posts where the ODE world's rays do;
+ * the index search; the viewer's time slider, seek keys, play/pause and
+ * centre post on a replay (no window); and the load errors (missing, not
+ * a log, truncated, no MM_MAZE). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -26,20 +28,22 @@
 #include "view/hud.h"
 #include "maze/mazegen.h"
 #include "view/replay.h"
+#include "view/snap.h"
 #include "telemetry/telem.h"
 #include "view/view.h"
 
 #define CHECK_AT 3 /* live states kept, at CHECK_S[i] */
 static const double CHECK_S[CHECK_AT] = { 0.5, 1.52, 2.5 };
 static struct {
-    double x, y, h, wheel[2], tof[3];
+    snap_t snap; /* as the live viewer draws it */
     char g[16], l[16];
-    int over, has_belief, emitter[SIM_EMITTER_GROUPS];
+    int over, has_belief;
     uint16_t cell;
     uint8_t walls[MAZE_MAX_CELLS];
 } live[CHECK_AT];
 
 static maze_t maze, bmap;
+static double live_wheel_r_m[2]; /* the live run's model's */
 static char log_path[64];
 static double end_s;
 
@@ -71,11 +75,8 @@ static int setup(void **state)
         telem_step(&tel, &sim);
         if (sim.step == 1000) hal_belief(&bmap, 1, MAZE_NORTH, 0); /* as fw_loop would */
         if (k < CHECK_AT && sim.step == (uint64_t)llround(CHECK_S[k] * 1000)) {
-            world_pose(sim.world, &live[k].x, &live[k].y, &live[k].h);
-            for (int i = 0; i < 2; i++) live[k].wheel[i] = world_wheel_angle(sim.world, i);
-            for (int i = 0; i < 3; i++) live[k].tof[i] = sim.tof_true_m[i];
-            for (int g = 0; g < SIM_EMITTER_GROUPS; g++) live[k].emitter[g] = sim_emitter(&sim, (unsigned)g);
-            hud_timers(&sim, live[k].g, live[k].l, &live[k].over);
+            snap_from_sim(&live[k].snap, &sim);
+            hud_timers(&live[k].snap, live[k].g, live[k].l, &live[k].over);
             live[k].has_belief = hal_sim_belief()->seq != 0;
             live[k].cell = hal_sim_belief()->cell;
             memcpy(live[k].walls, hal_sim_belief()->map.cell, maze_cells(&maze));
@@ -84,6 +85,7 @@ static int setup(void **state)
     }
     telem_finish(&tel, &sim);
     end_s = sim_time_s(&sim);
+    for (int i = 0; i < 2; i++) live_wheel_r_m[i] = sim.model->wheel_r_m[i];
     int rc = telem_close(&tel, err, sizeof err);
     hal_sim_attach(NULL);
     sim_free(&sim);
@@ -99,29 +101,46 @@ static int teardown(void **state)
 
 static double wrap(double a) { return atan2(sin(a), cos(a)); }
 
+/* A replayed sensor over the floor within 1 mm of the live one, looking
+ * within 0.01 rad of its way: the replay draws the robot level on the
+ * floor, the live body pitches a little as it drives. */
+#define SENSOR_AT_M 1e-3
+#define SENSOR_TURN_RAD 0.01
+
 static void test_state_at_logged_times(void **state)
 {
     (void)state;
     static replay_t r;
-    static sim_t s;
+    static snap_t s;
     char err[600];
     assert_int_equal(replay_load(&r, log_path, err, sizeof err), 0);
     assert_true(fabs(replay_end_s(&r) - end_s) < 1e-9);
     assert_string_equal(r.path, "gen.txt");
     assert_memory_equal(r.maze.cell, maze.cell, maze_cells(&maze));
-    assert_int_equal(replay_sim_init(&r, &s), 0);
-    double count_rad = 2 * M_PI / (s.model->cfg->drive[0].encoder_ppr * s.model->cfg->drive[0].gear_ratio);
-    assert_true(!live[0].emitter[1] && live[1].emitter[1]); /* the check times see both */
+    for (int i = 0; i < 2; i++) assert_true(r.model.wheel_r_m[i] == live_wheel_r_m[i]); /* the same seed's model */
+    double count_rad = 2 * M_PI / (r.model.cfg->drive[0].encoder_ppr * r.model.cfg->drive[0].gear_ratio);
+    assert_true(!live[0].snap.emitter[1] && live[1].snap.emitter[1]); /* the check times see both */
     for (int k = 0; k < CHECK_AT; k++) {
-        replay_apply(&r, &s, CHECK_S[k]);
-        double x, y, h;
-        world_pose(s.world, &x, &y, &h);
-        assert_true(fabs(x - live[k].x) < 1e-9 && fabs(y - live[k].y) < 1e-9 && fabs(wrap(h - live[k].h)) < 1e-9);
-        for (int i = 0; i < 2; i++) /* an encoder count's resolution */
-            assert_true(fabs(wrap(world_wheel_angle(s.world, i) - live[k].wheel[i])) <= count_rad * 1.01);
-        for (int i = 0; i < 3; i++) assert_true(s.tof_true_m[i] == live[k].tof[i]);
-        for (int g = 0; g < SIM_EMITTER_GROUPS; g++) assert_int_equal(sim_emitter(&s, (unsigned)g), live[k].emitter[g]);
-        assert_true(fabs(sim_time_s(&s) - CHECK_S[k]) < 1e-9);
+        const snap_t *lv = &live[k].snap;
+        replay_snap(&r, CHECK_S[k], &s);
+        assert_true(fabs(s.x_m - lv->x_m) < 1e-9 && fabs(s.y_m - lv->y_m) < 1e-9 && fabs(wrap(s.heading_rad - lv->heading_rad)) < 1e-9);
+        for (int i = 0; i < 2; i++) { /* an encoder count's resolution */
+            assert_true(fabs(wrap(s.wheel_rad[i] - lv->wheel_rad[i])) <= count_rad * 1.01);
+            assert_true(s.wheel_hub_z_m[i] == lv->wheel_hub_z_m[i]);
+        }
+        assert_int_equal(s.ntof, lv->ntof);
+        assert_true(s.ntof == 3 && s.tof_range_m == lv->tof_range_m);
+        for (int i = 0; i < s.ntof; i++) { /* where it sits over the floor and where it looks */
+            const snap_ray_t *a = &s.tof[i], *b = &lv->tof[i];
+            double off = hypot(a->pos_m[0] - b->pos_m[0], a->pos_m[1] - b->pos_m[1]);
+            double turn = wrap(atan2(a->axis[1], a->axis[0]) - atan2(b->axis[1], b->axis[0]));
+            assert_true(a->hit_m == b->hit_m);
+            if (off > SENSOR_AT_M || fabs(turn) > SENSOR_TURN_RAD)
+                fail_msg("ToF %d at %.2f s: replayed %.3f mm from the live sensor, turned %.4f rad", i, CHECK_S[k], off * 1e3, turn);
+        }
+        for (int g = 0; g < SIM_EMITTER_GROUPS; g++) assert_int_equal(s.emitter[g], lv->emitter[g]);
+        assert_int_equal(s.centre_post, lv->centre_post);
+        assert_true(fabs(s.time_s - CHECK_S[k]) < 1e-9);
         char g[16], l[16];
         int over;
         hud_timers(&s, g, l, &over);
@@ -137,8 +156,45 @@ static void test_state_at_logged_times(void **state)
             assert_true(maze_is_goal(b.map, maze.start) == maze_is_goal(&maze, maze.start));
         }
     }
-    sim_free(&s);
     replay_free(&r);
+}
+
+/* Rays from points spread over a 6x6 maze at several heights (one above
+ * the walls), in 32 directions level and tilted up and down, with and
+ * without the centre post: snap_maze_ray meets the first wall or post
+ * where the ODE world's ray does, or misses as it does. */
+static void test_maze_ray_as_ode(void **state)
+{
+    (void)state;
+    static simcfg_t c;
+    static maze_t m;
+    static sim_t s;
+    config_defaults(&c);
+    assert_int_equal(mazegen_generate(&m, 6, 6, 11), 0);
+    assert_int_equal(sim_init(&s, &c, &m, 1), 0);
+    static const double z_m[] = { 0.002, 0.02, 0.049, 0.06 }, pitch_deg[] = { 0, 8, -8, -60, 45 };
+    int hits = 0, misses = 0;
+    for (int post = 1; post >= 0; post--) {
+        world_set_centre_post(s.world, post);
+        for (int px = 0; px < 12; px++)
+            for (int py = 0; py < 12; py++)
+                for (size_t iz = 0; iz < sizeof z_m / sizeof *z_m; iz++)
+                    for (int a = 0; a < 32; a++)
+                        for (size_t ip = 0; ip < sizeof pitch_deg / sizeof *pitch_deg; ip++) {
+                            double yaw = a * M_PI / 16 + 0.01, p = pitch_deg[ip] * M_PI / 180, n[3];
+                            double pos[3] = { (px * 0.5 + 0.25) * c.cell_m, (py * 0.5 + 0.25) * c.cell_m, z_m[iz] };
+                            double dir[3] = { cos(p) * cos(yaw), cos(p) * sin(yaw), sin(p) };
+                            double ode = world_ray_normal(s.world, pos, dir, 0.5, n);
+                            double geo = snap_maze_ray(&c, &m, post, pos, dir, 0.5);
+                            if (!(fabs(ode - geo) < 1e-9))
+                                fail_msg("ray from (%.4f, %.4f, %.4f) yaw %.3f pitch %.0f: ODE %.6f, maze %.6f", pos[0],
+                                         pos[1], pos[2], yaw, pitch_deg[ip], ode, geo);
+                            if (geo >= 0) hits++;
+                            else misses++;
+                        }
+    }
+    assert_true(hits > 10000 && misses > 1000); /* both kinds tried */
+    sim_free(&s);
 }
 
 static void test_index(void **state)
@@ -158,22 +214,22 @@ static void test_slider_and_keys(void **state)
 {
     (void)state;
     static replay_t r;
-    static sim_t s;
+    static snap_t s;
     char err[600];
     assert_int_equal(replay_load(&r, log_path, err, sizeof err), 0);
-    assert_int_equal(replay_sim_init(&r, &s), 0);
     const view_opts_t o = { 800, 600, 1, 1, "", 115200 };
     view_t *v = view_new(&o);
     assert_non_null(v);
-    view_set_replay(v, &r, &s);
+    view_set_replay(v, &r);
     assert_true(view_time(v) == 0);
     assert_false(view_paused(v));
     /* a click at a quarter of the slider seeks there; a drag follows the mouse */
     hud_button_t sl;
     hud_slider(o.width, o.height, &sl);
-    assert_int_equal(view_click(v, &s, sl.x + sl.w * 0.25, sl.y + sl.h / 2.0), VIEW_SLIDER);
+    assert_int_equal(view_click(v, NULL, sl.x + sl.w * 0.25, sl.y + sl.h / 2.0), VIEW_SLIDER);
     assert_true(fabs(view_time(v) - 0.25 * end_s) < 1e-6);
-    assert_true(fabs(sim_time_s(&s) - 0.25 * end_s) < s.model->cfg->step_s);
+    replay_snap(&r, view_time(v), &s);
+    assert_true(fabs(s.time_s - 0.25 * end_s) < r.model.cfg->step_s);
     view_drag(v, sl.x + sl.w * 0.5, sl.y + sl.h / 2.0);
     assert_true(fabs(view_time(v) - 0.5 * end_s) < 1e-6);
     view_drag(v, sl.x - 100.0, sl.y + sl.h / 2.0); /* past the left end: the start */
@@ -182,33 +238,36 @@ static void test_slider_and_keys(void **state)
     view_drag(v, sl.x + sl.w * 0.9, sl.y + sl.h / 2.0); /* no longer dragging */
     assert_true(view_time(v) == 0);
     /* keys: a second forward and back, one logged pose (10 ms) forward and back, the ends */
-    view_key(v, &s, GLFW_KEY_RIGHT);
+    view_key(v, NULL, GLFW_KEY_RIGHT);
     assert_true(fabs(view_time(v) - 1.0) < 1e-9);
-    view_key(v, &s, GLFW_KEY_S);
+    view_key(v, NULL, GLFW_KEY_S);
     assert_true(view_paused(v));
     assert_true(fabs(view_time(v) - 1.01) < 1e-9);
-    view_key(v, &s, GLFW_KEY_COMMA);
-    view_key(v, &s, GLFW_KEY_COMMA);
+    view_key(v, NULL, GLFW_KEY_COMMA);
+    view_key(v, NULL, GLFW_KEY_COMMA);
     assert_true(fabs(view_time(v) - 0.99) < 1e-9);
-    view_key(v, &s, GLFW_KEY_LEFT);
-    view_key(v, &s, GLFW_KEY_LEFT);
+    view_key(v, NULL, GLFW_KEY_LEFT);
+    view_key(v, NULL, GLFW_KEY_LEFT);
     assert_true(view_time(v) == 0);
-    view_key(v, &s, GLFW_KEY_END);
+    view_key(v, NULL, GLFW_KEY_END);
     assert_true(fabs(view_time(v) - end_s) < 1e-9);
-    double x, y, h;
-    world_pose(s.world, &x, &y, &h);
-    assert_true(fabs(x - r.pose[r.npose - 1].x_m) < 1e-9 && fabs(y - r.pose[r.npose - 1].y_m) < 1e-9);
+    replay_snap(&r, view_time(v), &s);
+    assert_true(fabs(s.x_m - r.pose[r.npose - 1].x_m) < 1e-9 && fabs(s.y_m - r.pose[r.npose - 1].y_m) < 1e-9);
     /* play at the end starts again from the start */
-    view_key(v, &s, GLFW_KEY_SPACE);
+    view_key(v, NULL, GLFW_KEY_SPACE);
     assert_false(view_paused(v));
     assert_true(view_time(v) == 0);
     /* speed x1..x64 as live */
-    for (int i = 0; i < 10; i++) view_key(v, &s, GLFW_KEY_EQUAL);
+    for (int i = 0; i < 10; i++) view_key(v, NULL, GLFW_KEY_EQUAL);
     assert_true(view_speed(v) == VIEW_SPEED_MAX);
     /* buttons elsewhere still work; a click off every control does nothing */
-    assert_int_equal(view_click(v, &s, o.width / 2.0, o.height / 3.0), -1);
+    assert_int_equal(view_click(v, NULL, o.width / 2.0, o.height / 3.0), -1);
+    /* the centre post shows or not in the replay */
+    int post = r.centre_post;
+    view_key(v, NULL, GLFW_KEY_P);
+    replay_snap(&r, view_time(v), &s);
+    assert_int_equal(s.centre_post, !post);
     view_free(v);
-    sim_free(&s);
     replay_free(&r);
 }
 
@@ -259,6 +318,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_state_at_logged_times),
+        cmocka_unit_test(test_maze_ray_as_ode),
         cmocka_unit_test(test_index),
         cmocka_unit_test(test_slider_and_keys),
         cmocka_unit_test(test_errors),

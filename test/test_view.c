@@ -1,8 +1,8 @@
 /* test_view.c - the viewer's UI actions without a window: the "Toggle
  * post" button adds and removes the centre post in the physics world (a
  * ray across the centre hits it or not), camera keys and buttons, speed
- * limits, pause and single step; the HUD timers turn over-time after the
- * limit; the port and baud fields and Connect; a board's panel (switches,
+ * limits, pause and single step; the HUD timers (from the run's snapshot)
+ * turn over-time after the limit; the port and baud fields and Connect; a board's panel (switches,
  * Button, Reset as requests; the console's last rows). */
 #include <stdarg.h>
 #include <stddef.h>
@@ -16,6 +16,8 @@
 
 #include "world/config.h"
 #include "view/hud.h"
+#include "view/scene.h"
+#include "view/snap.h"
 #include "world/sim.h"
 #include "view/view.h"
 
@@ -55,6 +57,14 @@ static double ray_across_centre(void)
     return world_ray(sim.world, 1.5 * cell, 1.5 * cell, 0.02, M_PI / 4, 1.0);
 }
 
+/* The live run's snapshot now, as the viewer draws it. */
+static const snap_t *now(void)
+{
+    static snap_t snap;
+    snap_from_sim(&snap, &sim);
+    return &snap;
+}
+
 static void click_button(int b)
 {
     hud_button_t bt[HUD_BTN_COUNT];
@@ -68,8 +78,10 @@ static void test_toggle_post_button(void **state)
     double cell = sim.model->cfg->cell_m, half = sim.model->cfg->post_m / 2;
     assert_true(world_has_centre_post(sim.world));
     assert_true(fabs(ray_across_centre() - M_SQRT2 * (0.5 * cell - half)) < 0.001);
+    assert_true(now()->centre_post);
     click_button(HUD_BTN_POST);
     assert_false(world_has_centre_post(sim.world));
+    assert_false(now()->centre_post); /* the scene draws what the world has */
     assert_true(fabs(ray_across_centre() - M_SQRT2 * (1.5 * cell - half)) < 0.001); /* the next post */
     view_key(view, &sim, GLFW_KEY_P);
     assert_true(world_has_centre_post(sim.world));
@@ -110,7 +122,7 @@ static void test_orbit_zoom(void **state)
     (void)state;
     double eye0[3], eye[3], tgt0[3], tgt[3], up[3];
     view_key(view, &sim, GLFW_KEY_1);
-    scene_camera(&sim, 1, view_orbit(view), eye0, tgt0, up);
+    scene_camera(sim.model, &maze, now(), 1, view_orbit(view), eye0, tgt0, up);
     double d0 = dist3(eye0, tgt0);
     /* a drag of 100 px to the right and 20 px down, starting on the scene */
     assert_int_equal(view_click(view, &sim, opts.width / 2.0, opts.height / 2.0), -1);
@@ -119,7 +131,7 @@ static void test_orbit_zoom(void **state)
     view_release(view);
     assert_near(view_orbit(view)->dyaw_rad, -0.8, 1e-9);
     assert_near(view_orbit(view)->dpitch_rad, 0.16, 1e-9);
-    scene_camera(&sim, 1, view_orbit(view), eye, tgt, up);
+    scene_camera(sim.model, &maze, now(), 1, view_orbit(view), eye, tgt, up);
     assert_near(dist3(tgt, tgt0), 0, 1e-9);       /* orbit about the same target */
     assert_near(dist3(eye, tgt), d0, 1e-6 * d0);   /* at the same distance */
     assert_true(dist3(eye, eye0) > 0.1 * d0);              /* from elsewhere */
@@ -127,7 +139,7 @@ static void test_orbit_zoom(void **state)
     assert_near(view_orbit(view)->dyaw_rad, -0.8, 1e-9);
     /* three notches in: 0.9^3 of the distance; the limit holds */
     view_scroll(view, 3);
-    scene_camera(&sim, 1, view_orbit(view), eye, tgt, up);
+    scene_camera(sim.model, &maze, now(), 1, view_orbit(view), eye, tgt, up);
     assert_near(dist3(eye, tgt), d0 * 0.729, 1e-6 * d0);
     view_scroll(view, -1000);
     assert_near(view_orbit(view)->zoom, 10.0, 1e-9);
@@ -145,7 +157,7 @@ static void test_orbit_zoom(void **state)
     view_key(view, &sim, GLFW_KEY_R);
     assert_near(view_orbit(view)->zoom, 1.0, 0);
     assert_near(view_orbit(view)->dyaw_rad, 0, 0);
-    scene_camera(&sim, 1, view_orbit(view), eye, tgt, up);
+    scene_camera(sim.model, &maze, now(), 1, view_orbit(view), eye, tgt, up);
     assert_near(dist3(eye, eye0), 0, 1e-9);
 }
 
@@ -174,13 +186,13 @@ static void test_hud_timers(void **state)
     (void)state;
     char g[16], l[16];
     int over;
-    hud_timers(&sim, g, l, &over);
+    hud_timers(now(), g, l, &over);
     assert_string_equal(g, "0:00.000");
     assert_false(over);
     sim.race.started = 1;
     sim.race.global_start_s = 0;
     sim.step = (uint64_t)llround((sim.race.limit_s + 1.5) / sim.model->cfg->step_s);
-    hud_timers(&sim, g, l, &over);
+    hud_timers(now(), g, l, &over);
     assert_true(over);
     sim.step = 0;
     sim.race.started = 0;

@@ -6,7 +6,8 @@
  *   mmview LOG --screenshot FILE.png --at SECONDS [--camera N] [--size WxH]
  *
  * The log alone is enough: its MM_MAZE message carries the maze, the
- * config and the seed. Exit codes: 0 ok, 2 bad input (flags, a missing,
+ * config, the robot and the seed, from which the run's model is built;
+ * no physics runs. Exit codes: 0 ok, 2 bad input (flags, a missing,
  * corrupt or truncated log), 3 external failure (no display, no OpenGL). */
 #include <stddef.h>
 #include <stdio.h>
@@ -76,7 +77,7 @@ static int parse(int argc, char **argv, mmview_opts_t *m, const char **log)
 }
 
 /* The viewer on the replayed log: played, or one frame to a file. */
-static int show(const mmview_opts_t *m, replay_t *rp, sim_t *sim)
+static int show(const mmview_opts_t *m, replay_t *rp)
 {
     char err[600];
     int rc = EXIT_OK;
@@ -86,10 +87,10 @@ static int show(const mmview_opts_t *m, replay_t *rp, sim_t *sim)
         fprintf(stderr, "mmview: %s\n", err);
         rc = EXIT_EXTERNAL;
     } else {
-        view_set_replay(v, rp, sim);
+        view_set_replay(v, rp);
         if (m->shot) {
             view_seek(v, m->at_s);
-            if (view_screenshot(v, sim, m->shot, err, sizeof err) != 0) {
+            if (view_screenshot(v, NULL, m->shot, err, sizeof err) != 0) {
                 fprintf(stderr, "mmview: %s\n", err);
                 rc = EXIT_EXTERNAL;
             }
@@ -111,7 +112,6 @@ static int run(int argc, char **argv)
         return EXIT_OK;
     }
     static replay_t rp;
-    static sim_t sim;
     char err[4200];
     if (replay_load(&rp, log, err, sizeof err) != 0) {
         fprintf(stderr, "mmview: %s\n", err);
@@ -123,13 +123,7 @@ static int run(int argc, char **argv)
         replay_free(&rp);
         return EXIT_BAD_INPUT;
     }
-    if (replay_sim_init(&rp, &sim) != 0) {
-        fprintf(stderr, "mmview: %s: cannot set up the ODE world\n", log);
-        replay_free(&rp);
-        return EXIT_EXTERNAL;
-    }
-    int rc = show(&m, &rp, &sim);
-    sim_free(&sim);
+    int rc = show(&m, &rp);
     replay_free(&rp);
     return rc;
 }

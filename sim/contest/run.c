@@ -57,12 +57,6 @@ int run_json_line(json_t *j)
     return 0;
 }
 
-int run_exit_laps(const run_t *r, const char *ok1, const char *ok2)
-{
-    int ok = !strcmp(r->reason, ok1) || (ok2 && !strcmp(r->reason, ok2));
-    return r->sim.race.nlaps > 0 && ok ? RUN_OK : RUN_NOT_REACHED;
-}
-
 static const run_driver_t *pick_driver(const run_opts_t *o)
 {
     if (o->board) return &run_board;

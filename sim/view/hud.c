@@ -204,10 +204,10 @@ static void mmss(double s, char out[16])
     snprintf(out, 16, "%ld:%02ld.%03ld", ms / 60000 % 1000, (ms / 1000) % 60, ms % 1000);
 }
 
-void hud_timers(const sim_t *s, char global[16], char lap[16], int *over_time)
+void hud_timers(const snap_t *s, char global[16], char lap[16], int *over_time)
 {
     const race_t *r = &s->race;
-    double t = sim_time_s(s), g = race_global_s(r, t), l = 0;
+    double t = s->time_s, g = race_global_s(r, t), l = 0;
     if (r->in_run) l = t - r->run_start_s;
     else if (r->nlaps) l = r->laps[r->nlaps - 1].end_s - r->laps[r->nlaps - 1].start_s;
     mmss(g, global);
@@ -275,7 +275,7 @@ static void draw_board(const hud_board_t *bd, int W, int H)
     for (int r = 0; r < nr; r++) text_k(l.console.x + PAD / 2, l.console.y + PAD / 2 + r * FONT_LINE * k, HUD_CONSOLE_TEXT, rows[r], k);
 }
 
-void hud_draw(const sim_t *s, const hud_info_t *in, int W, int H)
+void hud_draw(const snap_t *s, const hud_info_t *in, int W, int H)
 {
     glViewport(0, 0, W, H);
     glMatrixMode(GL_PROJECTION);
@@ -302,7 +302,7 @@ void hud_draw(const sim_t *s, const hud_info_t *in, int W, int H)
         snprintf(line, sizeof line, "Log %.3f/%.3f x%g%s", in->replay_s, in->replay_end_s, in->speed,
                  in->paused ? " paused" : "");
     else
-        snprintf(line, sizeof line, "Sim %.3f s  x%g%s", sim_time_s(s), in->speed, in->paused ? "  paused" : "");
+        snprintf(line, sizeof line, "Sim %.3f s  x%g%s", s->time_s, in->speed, in->paused ? "  paused" : "");
     text(PAD, PAD + 2 * LINE, 0xB0B0B0u, line);
 
     /* upper right: serial port and baud fields (the tail of a long port
@@ -327,7 +327,7 @@ void hud_draw(const sim_t *s, const hud_info_t *in, int W, int H)
     for (int i = 0; i < HUD_BTN_COUNT; i++) {
         if (i == HUD_BTN_RESET && !in->mms) continue;
         int on = (i <= HUD_BTN_TOP && in->camera == i + 1) || (i == HUD_BTN_OVERLAY && in->overlay) ||
-                 (i == HUD_BTN_PAUSE && in->paused) || (i == HUD_BTN_POST && world_has_centre_post(s->world));
+                 (i == HUD_BTN_PAUSE && in->paused) || (i == HUD_BTN_POST && s->centre_post);
         rect(b[i].x, b[i].y, b[i].w, b[i].h, on ? 0x3070D0u : 0x404040u, 0.85f);
         text(b[i].x + PAD, b[i].y + (BTN_H - FONT_H * HUD_TEXT_SCALE) / 2, 0xFFFFFFu, b[i].label);
     }

@@ -13,7 +13,7 @@
 
 #include <stddef.h>
 
-#include "world/sim.h"
+#include "snap.h"
 
 enum {
     HUD_BTN_BIRD, HUD_BTN_FOLLOW, HUD_BTN_TOP, HUD_BTN_OVERLAY,
@@ -97,9 +97,10 @@ void hud_slider(int win_w, int win_h, hud_button_t *out);
 int hud_slider_hit(int win_w, int win_h, double x, double y);
 /* The time at x along the slider of a replay end_s long (clamped to 0..end_s). */
 double hud_slider_time(int win_w, int win_h, double x, double end_s);
-/* The global and current lap timer texts ("m:ss.mmm") and whether they are over the contest limit. */
-void hud_timers(const sim_t *s, char global[16], char lap[16], int *over_time);
-/* Draw the overlay (GL, orthographic, over whatever is drawn). */
-void hud_draw(const sim_t *s, const hud_info_t *info, int win_w, int win_h);
+/* The global and current lap timer texts ("m:ss.mmm") of snapshot s and
+ * whether they are over the contest limit. */
+void hud_timers(const snap_t *s, char global[16], char lap[16], int *over_time);
+/* Draw the overlay of snapshot s (GL, orthographic, over whatever is drawn). */
+void hud_draw(const snap_t *s, const hud_info_t *info, int win_w, int win_h);
 
 #endif

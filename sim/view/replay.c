@@ -178,17 +178,11 @@ int replay_load(replay_t *r, const char *path, char *err, size_t errlen)
         snprintf(err, errlen, "%s: no MM_POSE message", path);
         rc = -1;
     }
+    if (rc == 0) sim_model_build(&r->model, &r->cfg, r->seed);
     return rc ? -1 : 0;
 }
 
 double replay_end_s(const replay_t *r) { return (double)r->end_us * 1e-6; }
-
-int replay_sim_init(replay_t *r, sim_t *s)
-{
-    if (sim_init(s, &r->cfg, &r->maze, r->seed) != 0) return -1;
-    world_set_centre_post(s->world, r->centre_post);
-    return 0;
-}
 
 long replay_index(const int64_t *times, size_t stride, size_t n, int64_t t_us)
 {
@@ -250,32 +244,31 @@ static void rebuild_race(const replay_t *r, race_t *rc, int64_t t_us)
     }
 }
 
-void replay_apply(replay_t *r, sim_t *s, double t_s)
+void replay_snap(const replay_t *r, double t_s, snap_t *out)
 {
+    const simcfg_t *c = &r->cfg;
     int64_t t_us = clamp_us(r, t_s);
-    double cpr = s->model->cfg->drive[0].encoder_ppr * s->model->cfg->drive[0].gear_ratio; /* encoder counts per wheel turn */
+    double cpr = c->drive[0].encoder_ppr * c->drive[0].gear_ratio; /* encoder counts per wheel turn */
     long i = LAST_AT(r->pose, r->npose, t_us);
     long j = LAST_AT(r->sensors, r->nsensors, t_us);
     double wheel[2] = { 0, 0 };
     if (j >= 0)
         for (int k = 0; k < 2; k++) wheel[k] = (double)r->sensors[j].encoder[k] * 2 * M_PI / cpr;
+    memset(out, 0, sizeof *out);
     if (i >= 0) {
-        world_place(s->world, r->pose[i].x_m, r->pose[i].y_m, r->pose[i].heading_rad, wheel);
-    } else { /* before the first pose: in the start cell, as sim_init puts it */
+        snap_place(out, &r->model, &r->maze, r->centre_post, r->pose[i].x_m, r->pose[i].y_m, r->pose[i].heading_rad, wheel);
+    } else { /* before the first pose: at the start cell's centre */
         static const double a[4] = { M_PI / 2, 0.0, -M_PI / 2, M_PI };
         const maze_t *m = &r->maze;
-        world_place(s->world, (maze_x(m, m->start) + 0.5) * s->model->cfg->cell_m, (maze_y(m, m->start) + 0.5) * s->model->cfg->cell_m,
-                    a[m->start_heading & 3], wheel);
+        snap_place(out, &r->model, m, r->centre_post, (maze_x(m, m->start) + 0.5) * c->cell_m,
+                   (maze_y(m, m->start) + 0.5) * c->cell_m, a[m->start_heading & 3], wheel);
     }
-    for (int k = 0; k < WORLD_TOF_COUNT; k++) {
-        s->tof_true_m[k] = j >= 0 ? r->sensors[j].tof_true_m[k] : -1;
-        s->tof_last[k].dist_m = j >= 0 ? r->sensors[j].tof_mm[k] * 1e-3 : s->tof_range_m;
-        s->tof_last[k].timeout = j >= 0 ? r->sensors[j].tof_timeout[k] : 1;
-    }
+    for (int k = 0; k < out->ntof; k++) out->tof[k].hit_m = j >= 0 ? r->sensors[j].tof_true_m[k] : -1;
     long e = LAST_AT(r->parts, r->nparts, t_us);
-    for (unsigned g = 0; g < SIM_EMITTER_GROUPS; g++) sim_emitter_set(s, g, e >= 0 && (r->parts[e].emitters >> g & 1));
-    s->step = (uint64_t)llround((double)t_us * 1e-6 / s->model->cfg->step_s);
-    rebuild_race(r, &s->race, t_us);
+    for (unsigned g = 0; g < SIM_EMITTER_GROUPS; g++) out->emitter[g] = e >= 0 && (r->parts[e].emitters >> g & 1);
+    out->time_s = (double)llround((double)t_us * 1e-6 / c->step_s) * c->step_s; /* whole steps, as sim_time_s */
+    race_init(&out->race, &r->maze, c->cell_m, c->time_limit_s);
+    rebuild_race(r, &out->race, t_us);
 }
 
 void replay_belief(replay_t *r, double t_s, scene_belief_t *b)

@@ -1,13 +1,17 @@
 /* replay.h - an LCM log of a run (mmsim --lcm-log) loaded for replay: the
  * true maze, config and robot (MM_MAZE), poses, sensors, contest timers, lap
- * events and the mouse's belief, put back into a sim_t at any time so the
- * viewer draws the logged run exactly as it drew the live one (mmview).
+ * events and the mouse's belief, turned at any time into the snapshot the
+ * viewer draws (snap.h), so it draws the logged run as it drew the live
+ * one (mmview).
  *
- * The sim_t is a stand-in: its ODE world holds the logged maze, and
- * replay_apply places the robot (world_place), sets the ToF readings and
- * the IR emitter groups (MM_PARTS: the beams' colours) and rebuilds the
- * contest timers; it is never stepped. Times are simulation time; a
- * channel's state at time t is its last message with utime <= t. */
+ * No simulation runs: the run's model is built from the logged config,
+ * robot and seed (sim_model_build), and replay_snap puts the logged pose
+ * and wheel angles into a snapshot of the robot standing level on the
+ * floor (snap_place: the IR beams cast against the maze's geometry), with
+ * the logged ToF distances, the IR emitter groups (MM_PARTS: the beams'
+ * colours) and the contest timers rebuilt from the lap events. Times are
+ * simulation time; a channel's state at time t is its last message with
+ * utime <= t. */
 #ifndef REPLAY_H
 #define REPLAY_H
 
@@ -19,7 +23,8 @@
 #include "mmlcm_race_t.h"
 #include "mmlcm_sensors_t.h"
 #include "scene.h"
-#include "world/sim.h"
+#include "snap.h"
+#include "world/model.h"
 
 typedef struct {
     int64_t utime;
@@ -39,7 +44,8 @@ typedef struct {
     maze_t maze;              /* the true maze */
     simcfg_t cfg;             /* the run's config */
     uint64_t seed;
-    int centre_post;
+    sim_model_t model;        /* the run's model: cfg with the seed's variation (points to cfg: r stays put) */
+    int centre_post;          /* the middle post as logged (the viewer may toggle it) */
     mmlcm_pose_t *pose;       /* in time order */
     size_t npose;
     mmlcm_sensors_t *sensors;
@@ -58,21 +64,23 @@ typedef struct {
     maze_t bmap;              /* the belief map replay_belief returns */
 } replay_t;
 
-/* Read the log at path. Returns 0, or -1 with one line in err ("PATH: ...":
- * unreadable, not an LCM log, truncated or corrupt event, an mmlcm message
- * that does not decode, no MM_MAZE or no MM_POSE, a bad maze or config).
- * Channels other than mmlcm's are ignored. replay_free in both cases. */
+/* Read the log at path and build the run's model (r->model, which points
+ * into r: r must not move while it is used). Returns 0, or -1 with one
+ * line in err ("PATH: ...": unreadable, not an LCM log, truncated or
+ * corrupt event, an mmlcm message that does not decode, no MM_MAZE or no
+ * MM_POSE, a bad maze or config). Channels other than mmlcm's are
+ * ignored. replay_free in both cases. */
 int replay_load(replay_t *r, const char *path, char *err, size_t errlen);
 void replay_free(replay_t *r);
 
 /* Length of the log, s (its last message's time). */
 double replay_end_s(const replay_t *r);
-/* The stand-in simulation for r (the logged maze, config and seed; the
- * centre post as logged). Returns 0, or -1 if ODE fails. sim_free it. */
-int replay_sim_init(replay_t *r, sim_t *s);
-/* Put the state at t_s (clamped to 0..end) into s: robot pose and wheels,
- * ToF readings, emitter groups, contest timers, sim time (s->step). */
-void replay_apply(replay_t *r, sim_t *s, double t_s);
+/* The snapshot at t_s (clamped to 0..end): the robot's pose and wheels
+ * (before the first pose: at the start cell's centre facing the start
+ * heading), its sensors' frames and rays, the ToF distances,
+ * emitter groups, centre post, contest timers and the simulation time
+ * (whole physics steps, as the live run counts it). */
+void replay_snap(const replay_t *r, double t_s, snap_t *out);
 /* The mouse's belief at t_s for the scene overlay (b->map NULL if none yet). */
 void replay_belief(replay_t *r, double t_s, scene_belief_t *b);
 

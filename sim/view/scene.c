@@ -20,18 +20,18 @@ static void colour(uint32_t rgb, float a)
     glColor4f((float)((rgb >> 16) & 255) / 255.f, (float)((rgb >> 8) & 255) / 255.f, (float)(rgb & 255) / 255.f, a);
 }
 
-void scene_camera(const sim_t *s, int cam, const scene_orbit_t *orbit, double eye[3], double target[3], double up[3])
+void scene_camera(const sim_model_t *model, const maze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
+                  double eye[3], double target[3], double up[3])
 {
-    const maze_t *m = s->maze;
-    double cell = s->model->cfg->cell_m, W = m->width * cell, H = m->height * cell;
-    double x, y, h;
-    world_pose(s->world, &x, &y, &h);
+    const simcfg_t *c = model->cfg;
+    double cell = c->cell_m, W = m->width * cell, H = m->height * cell;
+    double x = s->x_m, y = s->y_m, h = s->heading_rad;
     double yaw, pitch, dist;
     up[0] = up[1] = 0;
     up[2] = 1;
     if (cam == SCENE_FOLLOW) {
         /* behind the robot, looking at its body centre */
-        target[0] = x, target[1] = y, target[2] = s->model->cfg->body_clearance_m + s->model->cfg->body_h_m / 2;
+        target[0] = x, target[1] = y, target[2] = c->body_clearance_m + c->body_h_m / 2;
         yaw = h + M_PI, pitch = 22 * M_PI / 180, dist = 0.32;
     } else if (cam == SCENE_TOP) {
         target[0] = x, target[1] = y, target[2] = 0;
@@ -127,10 +127,9 @@ static void wheel(double r, double w, double angle)
     }
 }
 
-static void floor_and_cells(const sim_t *s)
+static void floor_and_cells(const simcfg_t *c, const maze_t *m)
 {
-    const maze_t *m = s->maze;
-    double cell = s->model->cfg->cell_m, W = m->width * cell, H = m->height * cell, pad = cell;
+    double cell = c->cell_m, W = m->width * cell, H = m->height * cell, pad = cell;
     glNormal3d(0, 0, 1);
     glBegin(GL_QUADS);
     colour(SCENE_FLOOR, 1);
@@ -146,13 +145,10 @@ static void floor_and_cells(const sim_t *s)
     glEnd();
 }
 
-static void walls(const sim_t *s)
+static void walls(const simcfg_t *c, const maze_t *m, int centre_post)
 {
-    const maze_t *m = s->maze;
-    const simcfg_t *c = s->model->cfg;
     double cell = c->cell_m, post = c->post_m, th = c->wall_thick_m, hh = c->wall_height_m;
     int cx = m->width % 2 == 0 ? m->width / 2 : -1, cy = m->height % 2 == 0 ? m->height / 2 : -1;
-    int centre_post = world_has_centre_post(s->world);
     for (int py = 0; py <= m->height; py++)
         for (int px = 0; px <= m->width; px++)
             if (px != cx || py != cy || centre_post)
@@ -171,36 +167,36 @@ static void walls(const sim_t *s)
         }
 }
 
-static void robot(const sim_t *s)
+/* The robot standing level at the snapshot's pose. */
+static void robot(const sim_model_t *model, const snap_t *s)
 {
-    const simcfg_t *c = s->model->cfg;
-    double x, y, h;
-    world_pose(s->world, &x, &y, &h);
+    const simcfg_t *c = model->cfg;
     glPushMatrix();
-    glTranslated(x, y, 0);
-    glRotated((h - M_PI / 2) * 180 / M_PI, 0, 0, 1); /* robot frame: x right, y forward */
+    glTranslated(s->x_m, s->y_m, 0);
+    glRotated((s->heading_rad - M_PI / 2) * 180 / M_PI, 0, 0, 1); /* robot frame: x right, y forward */
     box(0, 0, c->body_clearance_m + c->body_h_m / 2, c->body_w_m, c->body_l_m, c->body_h_m, SCENE_ROBOT, SCENE_ROBOT);
     /* a white nose so the heading shows from above */
     box(0, c->body_l_m / 2 - 0.006, c->body_clearance_m + c->body_h_m + 0.001, c->body_w_m * 0.5, 0.01, 0.002,
         0xF0F0F0u, 0xF0F0F0u);
     for (int side = 0; side < 2; side++) {
         glPushMatrix();
-        double r = s->model->wheel_r_m[side];
-        glTranslated(side == WORLD_LEFT ? -c->wheel_x_m : c->wheel_x_m, c->axle_y_m, r);
+        glTranslated(side == WORLD_LEFT ? -c->wheel_x_m : c->wheel_x_m, c->axle_y_m, s->wheel_hub_z_m[side]);
         /* hinge angle positive = forward roll: about -x in the robot frame */
-        wheel(r, c->wheel_w_m, -world_wheel_angle(s->world, side));
+        wheel(model->wheel_r_m[side], c->wheel_w_m, -s->wheel_rad[side]);
         glPopMatrix();
     }
     glPopMatrix();
 }
 
-static void rays(sim_t *s)
+/* Each ToF sensor's ray in the floor's plane along its heading, to its
+ * true distance (a red point there) or its range. */
+static void rays(const snap_t *s)
 {
     glDisable(GL_LIGHTING);
     glLineWidth(2);
     for (int i = 0; i < s->ntof; i++) {
-        double p[3], dir, d = s->tof_true_m[i];
-        sim_tof_origin(s, i, p, &dir);
+        const double *p = s->tof[i].pos_m;
+        double dir = atan2(s->tof[i].axis[1], s->tof[i].axis[0]), d = s->tof[i].hit_m;
         double len = d >= 0 ? d : s->tof_range_m;
         glBegin(GL_LINES);
         colour(0xFFE040u, 1);
@@ -221,17 +217,18 @@ static void rays(sim_t *s)
 
 /* One IR sensor's beam: a cone from the sensor along its axis, half angle
  * its model's cone_deg, as long as the ray along the axis reaches (the
- * first wall or post, else the model's max_m), in its emitter group's
- * colour. The ray query draws no noise and changes no state. */
-static void ir_beam(sim_t *s, int part)
+ * snapshot's: the first wall or post, else the model's max_m), in its
+ * emitter group's colour. */
+static void ir_beam(const simcfg_t *cf, const snap_t *s, int part)
 {
     enum { SEG = 16 };
-    const ir_part_spec_t *sp = (const ir_part_spec_t *)s->model->cfg->part[part].spec;
-    double pos[3], ax[3], lf[3], up[3], n[3];
-    sensor_frame(s->world, &s->model->pose[part], pos, ax, lf, up);
-    double d = world_ray_normal(s->world, pos, ax, sp->model.max_m, n), len = d >= 0 ? d : sp->model.max_m;
+    const ir_part_spec_t *sp = (const ir_part_spec_t *)cf->part[part].spec;
+    const snap_ray_t *bm = &s->part[part];
+    const double *pos = bm->pos_m, *ax = bm->axis, *lf = bm->left, *up = bm->up;
+    double d = bm->hit_m, len = d >= 0 ? d : sp->model.max_m;
     double r = len * tan(sp->model.cone_deg * M_PI / 180);
-    int lit = sim_emitter(s, (unsigned)sp->emitter) != 0;
+    unsigned g = (unsigned)sp->emitter; /* 0..3, as the robot file's range check allows */
+    int lit = g < SIM_EMITTER_GROUPS && s->emitter[g] != 0;
     uint32_t rgb = lit ? SCENE_IR_LIT : SCENE_IR_DARK;
     double c[3] = { pos[0] + len * ax[0], pos[1] + len * ax[1], pos[2] + len * ax[2] };
     colour(rgb, lit ? 0.55f : 0.35f);
@@ -250,15 +247,15 @@ static void ir_beam(sim_t *s, int part)
 }
 
 /* Every IR sensor's beam (robot file [ir.*]), translucent. */
-static void ir_beams(sim_t *s)
+static void ir_beams(const simcfg_t *c, const snap_t *s)
 {
     glDisable(GL_LIGHTING);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);
     glLineWidth(2);
-    for (int i = 0; i < s->model->cfg->nparts; i++)
-        if (!strcmp(s->model->cfg->part[i].kind->name, "ir")) ir_beam(s, i);
+    for (int i = 0; i < c->nparts; i++)
+        if (!strcmp(c->part[i].kind->name, "ir")) ir_beam(c, s, i);
     glLineWidth(1);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
@@ -267,11 +264,11 @@ static void ir_beams(sim_t *s)
 
 /* The mouse's walls as bars over the wall tops (cyan where it agrees with
  * the truth, magenta where it does not) and its planned path. */
-static void overlay(const sim_t *s, const scene_belief_t *b)
+static void overlay(const simcfg_t *cf, const maze_t *m, const scene_belief_t *b)
 {
-    const maze_t *m = s->maze, *k = b->map;
+    const maze_t *k = b->map;
     if (k->width != m->width || k->height != m->height) return;
-    double cell = s->model->cfg->cell_m, z = s->model->cfg->wall_height_m + 0.003;
+    double cell = cf->cell_m, z = cf->wall_height_m + 0.003;
     glDisable(GL_LIGHTING);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -311,7 +308,8 @@ static void overlay(const sim_t *s, const scene_belief_t *b)
     glEnable(GL_LIGHTING);
 }
 
-void scene_draw(sim_t *s, int cam, const scene_orbit_t *orbit, const scene_belief_t *b, int show_overlay, int w, int h)
+void scene_draw(const sim_model_t *model, const maze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
+                const scene_belief_t *b, int show_overlay, int w, int h)
 {
     glViewport(0, 0, w, h);
     glClearColor(0.08f, 0.09f, 0.11f, 1);
@@ -323,7 +321,7 @@ void scene_draw(sim_t *s, int cam, const scene_orbit_t *orbit, const scene_belie
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
     double eye[3], target[3], up[3];
-    scene_camera(s, cam, orbit, eye, target, up);
+    scene_camera(model, m, s, cam, orbit, eye, target, up);
     look_at(eye, target, up);
 
     glEnable(GL_DEPTH_TEST);
@@ -341,20 +339,19 @@ void scene_draw(sim_t *s, int cam, const scene_orbit_t *orbit, const scene_belie
     glLightfv(GL_LIGHT0, GL_AMBIENT, amb);
     glLightfv(GL_LIGHT0, GL_DIFFUSE, dif);
 
-    floor_and_cells(s);
-    walls(s);
-    robot(s);
+    floor_and_cells(model->cfg, m);
+    walls(model->cfg, m, s->centre_post);
+    robot(model, s);
     rays(s);
-    ir_beams(s);
-    if (show_overlay && b && b->map) overlay(s, b);
+    ir_beams(model->cfg, s);
+    if (show_overlay && b && b->map) overlay(model->cfg, m, b);
     glDisable(GL_LIGHTING);
     glDisable(GL_DEPTH_TEST);
 }
 
-void scene_draw_cells(const sim_t *s, const char *colours, const char *texts, size_t stride)
+void scene_draw_cells(const sim_model_t *model, const maze_t *m, const char *colours, const char *texts, size_t stride)
 {
-    const maze_t *m = s->maze;
-    double cell = s->model->cfg->cell_m;
+    double cell = model->cfg->cell_m;
     glEnable(GL_DEPTH_TEST);
     glBegin(GL_QUADS);
     for (uint16_t k = 0; k < maze_cells(m); k++) {

@@ -7,11 +7,19 @@
  * Cameras (as in the paper): 1 a static bird's view of the whole maze,
  * 2 following the robot from behind, 3 a close-up top view over the robot.
  * Each is an orbit around its target; the user's drag and scroll adjust
- * it through scene_orbit_t. */
+ * it through scene_orbit_t.
+ *
+ * What is drawn comes from the run's const model (its config's maze
+ * geometry and robot dimensions), a snapshot of the moment (snap.h: live
+ * or replayed) and the true maze; the scene reads no simulation state. */
 #ifndef SCENE_H
 #define SCENE_H
 
-#include "world/sim.h"
+#include <stddef.h>
+
+#include "maze.h"
+#include "snap.h"
+#include "world/model.h"
 
 enum { SCENE_BIRD = 1, SCENE_FOLLOW = 2, SCENE_TOP = 3, SCENE_CAMERAS = 3 };
 
@@ -36,17 +44,20 @@ typedef struct {
     uint8_t heading;
 } scene_belief_t;
 
-/* Eye, target and up vector of camera cam (SCENE_*) for the current pose. */
-void scene_camera(const sim_t *s, int cam, const scene_orbit_t *orbit, double eye[3], double target[3],
-                  double up[3]);
-/* Draw the scene for camera cam into the viewport w x h pixels (clears it).
- * overlay: draw b's walls and planned path (b may be NULL). */
-void scene_draw(sim_t *s, int cam, const scene_orbit_t *orbit, const scene_belief_t *b, int overlay, int w, int h);
+/* Eye, target and up vector of camera cam (SCENE_*) for snapshot s's
+ * pose in maze m. */
+void scene_camera(const sim_model_t *model, const maze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
+                  double eye[3], double target[3], double up[3]);
+/* Draw the scene of snapshot s in maze m for camera cam into the viewport
+ * w x h pixels (clears it). overlay: draw b's walls and planned path (b
+ * may be NULL). */
+void scene_draw(const sim_model_t *model, const maze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
+                const scene_belief_t *b, int overlay, int w, int h);
 
 /* After scene_draw, in the same frame: tint the floor of every cell with
  * its mms colour letter (colours[cell], 0 = none; mms.h mms_colour_rgb) and
  * paint its text (texts + cell * stride, NUL-terminated; texts may be NULL)
  * on the floor, under the robot (depth-tested). */
-void scene_draw_cells(const sim_t *s, const char *colours, const char *texts, size_t stride);
+void scene_draw_cells(const sim_model_t *model, const maze_t *m, const char *colours, const char *texts, size_t stride);
 
 #endif

@@ -14,6 +14,7 @@
 #include "image.h"
 #include "replay.h"
 #include "scene.h"
+#include "snap.h"
 #include "link/serial.h"
 
 #define FRAME_S (1.0 / 60)   /* wall time between drawn frames */
@@ -36,8 +37,8 @@ struct view {
     int dragging;
     double drag_x, drag_y;
     char status[96];
-    sim_t *sim;              /* the simulation being shown (for callbacks) */
-    replay_t *rp;            /* a log replayed into sim (mmview), or NULL */
+    sim_t *sim;              /* the simulation being shown (for callbacks); NULL in a replay */
+    replay_t *rp;            /* a log replayed (mmview), or NULL */
     double rp_t;             /* replay time, s */
     int rp_drag;             /* the slider is being dragged */
     char port[256], baud[24]; /* the HUD's fields, as typed */
@@ -102,14 +103,13 @@ static void resync(view_t *v)
     v->wall0 = wall_now();
 }
 
-void view_set_replay(view_t *v, replay_t *r, sim_t *s)
+void view_set_replay(view_t *v, replay_t *r)
 {
     v->rp = r;
-    v->sim = s;
+    v->sim = NULL;
     if (v->win) glfwSetWindowTitle(v->win, "mmview");
     v->rp_t = 0;
     v->paused = 0;
-    if (r) replay_apply(r, s, 0);
     resync(v);
 }
 
@@ -118,7 +118,6 @@ void view_seek(view_t *v, double t_s)
     if (!v->rp) return;
     double end = replay_end_s(v->rp);
     v->rp_t = t_s < 0 ? 0 : t_s > end ? end : t_s;
-    replay_apply(v->rp, v->sim, v->rp_t);
     resync(v);
 }
 
@@ -153,7 +152,10 @@ void view_button(view_t *v, sim_t *s, int button)
     case HUD_BTN_PAUSE: v->paused = !v->paused; resync(v); break;
     case HUD_BTN_STEP: v->paused = 1; v->step_req = 1; break;
     case HUD_BTN_POST:
-        if (s) {
+        if (v->rp) {
+            v->rp->centre_post = !v->rp->centre_post;
+            snprintf(v->status, sizeof v->status, "centre post %s", v->rp->centre_post ? "on" : "off");
+        } else if (s) {
             world_set_centre_post(s->world, !world_has_centre_post(s->world));
             snprintf(v->status, sizeof v->status, "centre post %s", world_has_centre_post(s->world) ? "on" : "off");
         }
@@ -461,21 +463,33 @@ void view_free(view_t *v)
     free(v);
 }
 
+/* One frame of the live run s, or of the replay at its time (s NULL). */
 static void draw(view_t *v, sim_t *s)
 {
     int fw, fh;
     glfwGetFramebufferSize(v->win, &fw, &fh);
     scene_belief_t b = { NULL, 0, 0 };
     const hal_sim_belief_t *hb = hal_sim_belief();
+    static snap_t snap; /* what this frame draws */
+    const sim_model_t *model;
+    const maze_t *maze;
     if (v->rp) {
+        replay_snap(v->rp, v->rp_t, &snap);
+        model = &v->rp->model;
+        maze = &v->rp->maze;
         replay_belief(v->rp, v->rp_t, &b);
-    } else if (hb->seq) {
-        b.map = &hb->map;
-        b.cell = hb->cell;
-        b.heading = hb->heading;
+    } else {
+        snap_from_sim(&snap, s);
+        model = s->model;
+        maze = s->maze;
+        if (hb->seq) {
+            b.map = &hb->map;
+            b.cell = hb->cell;
+            b.heading = hb->heading;
+        }
     }
-    scene_draw(s, v->camera, &v->orbit[v->camera], &b, v->overlay, fw, fh);
-    if (v->mms_colours) scene_draw_cells(s, v->mms_colours, v->mms_texts, v->mms_stride);
+    scene_draw(model, maze, &snap, v->camera, &v->orbit[v->camera], &b, v->overlay, fw, fh);
+    if (v->mms_colours) scene_draw_cells(model, maze, v->mms_colours, v->mms_texts, v->mms_stride);
     const char *status = v->status[0] ? v->status : v->overlay && !b.map ? "no mouse map to overlay yet" : NULL;
     hud_info_t in = { v->camera, v->overlay, v->paused, v->speed, v->port, v->o.baud, status, v->rp != NULL,
                       v->rp_t, v->rp ? replay_end_s(v->rp) : 0, v->editing, v->baud,
@@ -486,10 +500,10 @@ static void draw(view_t *v, sim_t *s)
         if (v->sw_pending) shown.switches = v->sw_want;
         shown.button = shown.button || v->btn_held;
         in.board = &shown;
-        hud_draw(s, &in, v->o.width, v->o.height);
+        hud_draw(&snap, &in, v->o.width, v->o.height);
         return;
     }
-    hud_draw(s, &in, v->o.width, v->o.height);
+    hud_draw(&snap, &in, v->o.width, v->o.height);
 }
 
 static void frame(view_t *v, sim_t *s)
@@ -563,9 +577,8 @@ void view_play(view_t *v)
                 v->paused = 1;
             }
             v->rp_t = t < 0 ? 0 : t;
-            replay_apply(v->rp, v->sim, v->rp_t);
         }
-        frame(v, v->sim);
+        frame(v, NULL);
         /* a frame's time, or until the user acts when paused */
         if (v->paused) glfwWaitEventsTimeout(FRAME_S * 4);
         else glfwWaitEventsTimeout(FRAME_S);

@@ -21,15 +21,19 @@
  * switches (click: toggle), BUTTON (down while the mouse is held, at least
  * VIEW_BUTTON_MIN_S of simulation time), RESET, its LEDs and the last lines
  * of its console; the clicks come back as view_hands_request.
- * Replay (mmview): view_set_replay gives the view a log loaded into a
- * stand-in simulation; view_play runs it at `speed` with a time slider
+ * Replay (mmview): view_set_replay gives the view a loaded log (replay.h),
+ * drawn from its model and its snapshots, no simulation; view_play runs
+ * it at `speed` with a time slider
  * (click or drag to seek) and these keys instead of the physics ones:
  *   space or "Pause"       play / pause (at the end: play from the start)
  *   S (or .) / ,           one logged pose forward / back, paused
  *   + / -                  speed x2 / /2 (x1 .. x64)
  *   Left / Right           one second back / forward; Home / End
+ * (P or "Toggle post" shows or hides the centre post in the replay.)
  * The UI actions work without a window too (view_button, view_click,
- * view_key), which is how they are tested. */
+ * view_key), which is how they are tested; their sim_t is NULL in a
+ * replay. Each frame is drawn from a snapshot (snap.h): a live run's
+ * taken from its sim_t just before the frame. */
 #ifndef VIEW_H
 #define VIEW_H
 
@@ -67,8 +71,9 @@ void view_free(view_t *v);
 int view_step(view_t *v, sim_t *s);
 /* After the run: show the final state until the window is closed. */
 void view_hold(view_t *v, sim_t *s);
-/* Draw one frame of s (window opened hidden or not) and write it as PNG of
- * the window's size. Returns 0, or -1 with one line in err. */
+/* Draw one frame of s (a replay's: NULL; window opened hidden or not) and
+ * write it as PNG of the window's size. Returns 0, or -1 with one line in
+ * err. */
 int view_screenshot(view_t *v, sim_t *s, const char *path, char *err, size_t errlen);
 
 /* HIL at run time: the port and baud typed into the HUD's fields when
@@ -97,8 +102,8 @@ typedef struct {
  * 0. A BUTTON released early comes up VIEW_BUTTON_MIN_S after it went down. */
 int view_hands_request(view_t *v, view_hand_t *out);
 
-/* Replay: show log r put into s (replay_sim_init) from time 0. */
-void view_set_replay(view_t *v, replay_t *r, sim_t *s);
+/* Replay: show the loaded log r (which must outlive the view) from time 0. */
+void view_set_replay(view_t *v, replay_t *r);
 /* Replay: run the log in the window until it is closed. */
 void view_play(view_t *v);
 /* Replay: go to t_s (clamped to the log). */
