@@ -2,7 +2,7 @@
  * per part. Every key is required; a bad value is "FILE:LINE: section.key:
  * reason", a missing key "FILE:LINE: section.key: missing" (the section's
  * line; line 0 = no such section). */
-#include "board_int.h"
+#include "board.h"
 
 #include <ctype.h>
 #include <dirent.h>
