@@ -3,6 +3,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,10 +17,30 @@
 #include <simavr/sim_io.h>
 #include <simavr/sim_irq.h>
 
-#include "avrlog.h"
 #include "io/infile.h"
 
 static elf_firmware_t fw; /* the ELF between avrhost_read and avrhost_put (large: off the stack) */
+
+/* simavr's messages: errors kept for our one-line messages (the last one),
+ * never printed by simavr itself; the rest dropped */
+static char last_log[200];
+
+static void quiet_logger(avr_t *avr, const int level, const char *fmt, va_list ap)
+{
+    (void)avr;
+    if (level > LOG_ERROR) return;
+    vsnprintf(last_log, sizeof last_log, fmt, ap);
+    size_t n = strlen(last_log);
+    while (n > 0 && (last_log[n - 1] == '\n' || last_log[n - 1] == '\r')) last_log[--n] = '\0';
+}
+
+static void log_install(void) { avr_global_logger_set(quiet_logger); }
+static void log_clear(void) { last_log[0] = '\0'; }
+/* ": MESSAGE" if simavr said something since log_clear, else "" (to append to an error line) */
+static const char *log_sep(void) { return last_log[0] ? ": " : ""; }
+
+/* the core's sleep callback: the host never sleeps (time is cycles, not the wall clock) */
+static void no_sleep(avr_t *avr, avr_cycle_count_t how_long) { (void)avr, (void)how_long; }
 
 static int read_hex(avrhost_image_t *img, const char *path, int got, const uint8_t *h, char *err, size_t errn)
 {
@@ -47,7 +68,7 @@ int avrhost_read(avrhost_image_t *img, const char *path, int hex_ok, const char 
                  size_t errn)
 {
     memset(img, 0, sizeof *img);
-    avrlog_install(); /* simavr's messages about the file: ours, not printed */
+    log_install(); /* simavr's messages about the file: ours, not printed */
     size_t n = strlen(path);
     if (access(path, R_OK) != 0) return snprintf(err, errn, "%s: cannot read: %s", path, strerror(errno)), -1;
     FILE *f = infile_open(path, AVRHOST_IMAGE_MAX_BYTES, NULL, err, errn); /* a FIFO would hang the open */
@@ -60,9 +81,9 @@ int avrhost_read(avrhost_image_t *img, const char *path, int hex_ok, const char 
         return snprintf(err, errn, "%s: not an AVR ELF image%s", path, hex_ok ? " (or a .hex file)" : ""), -1;
     if (want_mcu && check_arch(path, want_mcu, board, err, errn) != 0) return -1;
     memset(&fw, 0, sizeof fw);
-    avrlog_clear();
+    log_clear();
     if (elf_read_firmware(path, &fw) != 0 || fw.flashsize == 0)
-        return snprintf(err, errn, "%s: not an AVR ELF image%s%s", path, avrlog_sep(), avrlog_last()), -1;
+        return snprintf(err, errn, "%s: not an AVR ELF image%s%s", path, log_sep(), last_log), -1;
     if (want_mcu && fw.mmcu[0] && strcmp(fw.mmcu, want_mcu))
         return snprintf(err, errn, "%s: built for the %s; the board %s has an %s", path, fw.mmcu, board, want_mcu), -1;
     snprintf(img->mcu, sizeof img->mcu, "%s", fw.mmcu);
@@ -72,7 +93,7 @@ int avrhost_read(avrhost_image_t *img, const char *path, int hex_ok, const char 
 
 int avrhost_make(avrhost_t *h, const char *mcu, const char *who, char *err, size_t errn)
 {
-    avrlog_install();
+    log_install();
     h->avr = avr_make_mcu_by_name(mcu);
     if (!h->avr) return snprintf(err, errn, "%s: simavr does not know the MCU '%s'", who, mcu), -1;
     avr_init(h->avr);
@@ -108,7 +129,7 @@ int avrhost_put(avrhost_t *h, avrhost_image_t *img, const char *path, const char
         avr_load_firmware(h->avr, &fw);
     }
     h->avr->frequency = f_cpu;
-    h->avr->sleep = avrlog_no_sleep;
+    h->avr->sleep = no_sleep;
     h->cycles_per_step = (uint64_t)llround((double)f_cpu * step_s);
     h->target = h->avr->cycle;
     return 0;
@@ -185,7 +206,7 @@ int avrhost_run_to(avrhost_t *h, uint64_t until, char *err, size_t errn)
         int state = avr_run(h->avr);
         if (state == cpu_Done || state == cpu_Crashed)
             return snprintf(err, errn, "AVR %s at cycle %llu%s%s", state == cpu_Crashed ? "crashed" : "halted",
-                            (unsigned long long)h->avr->cycle, avrlog_sep(), avrlog_last()), -1;
+                            (unsigned long long)h->avr->cycle, log_sep(), last_log), -1;
     }
     return 0;
 }

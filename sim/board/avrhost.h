@@ -1,10 +1,11 @@
 /* avrhost.h - one AVR core in simavr as both --avr (pil.c) and --board
  * (board.c) run it: the image read and checked (ELF, or Intel HEX where
- * the caller admits it), the core made quiet (simavr's messages kept by
- * avrlog, no host sleep), UART0 (simavr's own printing and polling sleep
- * off; each byte the firmware sends to a sink; typed bytes queued until
- * the receiver takes them, respecting its XON/XOFF), and the run up to a
- * cycle. Time is cycles: nothing here reads a clock.
+ * the caller admits it), the core made quiet (simavr's error messages kept
+ * for ours, never printed; no host sleep when the AVR sleeps), UART0
+ * (simavr's own printing and polling sleep off; each byte the firmware
+ * sends to a sink; typed bytes queued until the receiver takes them,
+ * respecting its XON/XOFF), and the run up to a cycle. Time is cycles:
+ * nothing here reads a clock.
  *
  * Order of use: avrhost_read, avrhost_make, avrhost_put (any order of the
  * first two: pil takes the MCU from the image, board from its board file),

@@ -1,9 +1,10 @@
-/* pil.h - processor in the loop: an AVR image (ELF) runs in simavr,
- * in-process and in lockstep with the physics: each physics step advances
- * the AVR by exactly that step's cycles (f_cpu x step). Its UART0 is one end
- * of a socketpair whose other end is the simulator's link (sim/link.h), so
- * the bytes obey the link's baud budget and simavr's cycle-timed UART. No
- * wall clock anywhere: the same ELF and inputs give the same run. */
+/* pil.h - processor in the loop: an AVR image (ELF) runs in simavr
+ * (avrhost.h), in-process and in lockstep with the physics: each physics
+ * step advances the AVR by exactly that step's cycles (f_cpu x step). Its
+ * UART0 is one end of a socketpair whose other end is the simulator's link
+ * (sim/link.h), so the bytes obey the link's baud budget and simavr's
+ * cycle-timed UART. No wall clock anywhere: the same ELF and inputs give
+ * the same run. */
 #ifndef PIL_H
 #define PIL_H
 
@@ -18,7 +19,7 @@ typedef struct {
     avrhost_t host;           /* the core, its image and UART0 */
     int fd;                   /* the AVR's end of the socketpair */
     uint64_t cycles;          /* AVR cycles run */
-    uint64_t bytes_in, bytes_out;
+    uint64_t bytes_in, bytes_out; /* UART0 bytes to and from the AVR */
     char mcu[64];
     uint32_t f_cpu;
 } pil_t;
