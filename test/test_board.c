@@ -5,7 +5,8 @@
  * (build/clients/board/NoinitReset.elf, `make board-sketches`; skipped
  * without it): power-on SRAM is zero, board_reset keeps SRAM (.noinit
  * survives), board_set_switches and board_button reach the ADC, board_send
- * reaches the UART. */
+ * reaches the UART; with the MotorPwm sketch: the motor part's H-bridge
+ * command in both Timer1 modes, stopped, and again after a reset. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -22,6 +23,7 @@
 
 #define BOARD_FILE "boards/ukmarsbot-v1.3.ini"
 #define SKETCH "build/clients/board/NoinitReset.elf"
+#define MOTOR_SKETCH "build/clients/board/MotorPwm.elf"
 
 /* mazerunner-core's decode (switches.h read(), config-ukmarsbot.h adc_thesholds) */
 static int decode(int adc)
@@ -110,11 +112,12 @@ static int last_sw(void)
     return p ? atoi(p + 3) : -1;
 }
 
-static void test_reset_switches_button(void **state)
+/* the rig with image on the UKMARSBOT board; 0 if the image is not built */
+static int rig_open(const char *image)
 {
     char err[400];
-    FILE *f = fopen(SKETCH, "rb");
-    if (!f) skip();
+    FILE *f = fopen(image, "rb");
+    if (!f) return 0;
     fclose(f);
     board_spec_t sp;
     config_defaults(&rig.cfg);
@@ -122,8 +125,14 @@ static void test_reset_switches_button(void **state)
         mazefile_load(&rig.maze, "mazes/gen-5x5-s1.txt", NULL, err, sizeof err))
         fail_msg("%s", err);
     assert_int_equal(sim_init(&rig.sim, &rig.cfg, &rig.maze, 1), 0);
-    rig.b = board_open(&sp, SKETCH, &rig.sim, err, sizeof err);
+    rig.b = board_open(&sp, image, &rig.sim, err, sizeof err);
     if (!rig.b) fail_msg("%s", err);
+    return 1;
+}
+
+static void test_reset_switches_button(void **state)
+{
+    if (!rig_open(SKETCH)) skip();
     steps(200);
     assert_non_null(strstr(board_console(rig.b, NULL), "BOOT 1\r\n")); /* power-on SRAM is zero */
     assert_int_equal(decode(last_sw()), 0);
@@ -147,12 +156,40 @@ static void test_reset_switches_button(void **state)
     sim_free(&rig.sim);
 }
 
+/* MotorPwm: duty 40/255 forward on both wheels for 400 ms in Timer1's
+ * phase correct mode 1, then 400 ms in fast PWM mode 14 (251/1600), then
+ * the pins low; the physics step is 1 ms. The H-bridge command is the
+ * duty x 1023. */
+static void test_motor_part(void **state)
+{
+    if (!rig_open(MOTOR_SKETCH)) skip();
+    steps(200);
+    assert_int_equal(rig.sim.cmd[0], 160); /* lround(40 / 255 x 1023) */
+    assert_int_equal(rig.sim.cmd[1], 160);
+    steps(400);
+    assert_int_equal(rig.sim.cmd[0], 160); /* lround(251 / 1600 x 1023) */
+    assert_int_equal(rig.sim.cmd[1], 160);
+    steps(400);
+    assert_int_equal(rig.sim.cmd[0], 0);
+    assert_int_equal(rig.sim.cmd[1], 0);
+    assert_true(board_stats(rig.b)->duty_max[0] > 0.156 && board_stats(rig.b)->duty_max[0] < 0.158);
+    assert_true(board_stats(rig.b)->duty_min[1] == 0.0);
+    /* a reset clears the ports and Timer1; the sketch starts again and drives again */
+    board_reset(rig.b);
+    steps(1);
+    assert_int_equal(rig.sim.cmd[0], 160);
+    assert_int_equal(rig.sim.cmd[1], 160);
+    board_close(rig.b);
+    sim_free(&rig.sim);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_switch_ladder_decodes),
         cmocka_unit_test(test_bad_files),
         cmocka_unit_test(test_reset_switches_button),
+        cmocka_unit_test(test_motor_part),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,20 +1,25 @@
 /* board.h - a whole board emulated at the pin and register level: an AVR
  * image (ELF or Intel HEX) runs in simavr, in lockstep with the physics,
- * its peripherals wired to the core through simavr's IRQs as a board file
- * (boards/NAME.ini, board_load) describes them:
+ * with the board's parts wired to the core through simavr's IRQs as a
+ * board file (boards/NAME.ini, board_load) describes them. Each part keeps
+ * its own state; board.c connects them:
  *
- *   board_motor.c    H-bridge: direction pins, PWM from Timer1's registers
- *                    (mode, TOP, OCR1A/B, COM bits) -> sim_t.cmd[]
+ *   avrhost.c        the core: image read and checked, simavr quiet and
+ *                    never sleeping the host, UART0's queues (shared with
+ *                    --avr, pil.c)
+ *   board_motor.c    H-bridge: direction pins (port IRQs) and Timer1's
+ *                    PWM (mode, TOP, OCR1A/B, COM bits) -> sim_t.cmd[]
  *   board_encoder.c  quadrature edges from the wheel angle, each at its
  *                    cycle inside the step: A xor B on the interrupt pin,
  *                    B on its own pin
  *   board_adc.c      analogue front end: at each conversion's start the
  *                    channel's voltage (IR detector with the emitters as
  *                    the pins are then, switch ladder, battery divider)
- *   board_console.c  UART0 captured (and echoed live), input injected;
- *                    LEDs and interrupts counted
- *   board.c          the core: loads the board file and the image, wires
- *                    the parts, steps the AVR exactly f_cpu x step cycles
+ *   board_switch.c   DIP switches and button on the ladder
+ *   board_led.c      LEDs and emitter pins followed by their pin IRQs
+ *   board_console.c  UART0's output kept as the console (and echoed live)
+ *   board.c          the core's step: exactly f_cpu x step cycles; counts
+ *                    each interrupt vector's services
  *
  * Time is cycles: no wall clock, the same image and inputs give the same
  * run. Power-on SRAM is zero (simavr's calloc); board_reset keeps SRAM as a
@@ -34,7 +39,6 @@
 #define BOARD_CONSOLE_MAX (1u << 20) /* bytes of UART output kept (the rest counted) */
 #define BOARD_IN_MAX 4096u        /* bytes waiting for the UART's receive FIFO */
 #define BOARD_MAX_BYTES (64u << 10) /* bytes of a board file */
-#define BOARD_IMAGE_MAX_BYTES (64u << 20) /* an ELF with its debug sections */
 
 /* A pin of the MCU: port letter 'B'/'C'/'D' (0: none) and bit 0..7. */
 typedef struct {
@@ -135,7 +139,5 @@ void board_set_echo(board_t *b, FILE *f);
 const board_stats_t *board_stats(const board_t *b);
 /* The A6-style ladder's voltage for switches n and the button, V. */
 double board_switch_volts(const board_spec_t *spec, unsigned n, int button);
-/* The AVR itself, for tests that look at its memory. */
-struct avr_t *board_avr(board_t *b);
 
 #endif

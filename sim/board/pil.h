@@ -1,33 +1,25 @@
-/* pil.h - processor in the loop: an AVR image (ELF) runs in simavr,
- * in-process and in lockstep with the physics: each physics step advances
- * the AVR by exactly that step's cycles (f_cpu x step). Its UART0 is one end
- * of a socketpair whose other end is the simulator's link (sim/link.h), so
- * the bytes obey the link's baud budget and simavr's cycle-timed UART. No
- * wall clock anywhere: the same ELF and inputs give the same run. */
+/* pil.h - processor in the loop: an AVR image (ELF) runs in simavr
+ * (avrhost.h), in-process and in lockstep with the physics: each physics
+ * step advances the AVR by exactly that step's cycles (f_cpu x step). Its
+ * UART0 is one end of a socketpair whose other end is the simulator's link
+ * (sim/link.h), so the bytes obey the link's baud budget and simavr's
+ * cycle-timed UART. No wall clock anywhere: the same ELF and inputs give
+ * the same run. */
 #ifndef PIL_H
 #define PIL_H
 
 #include <stddef.h>
 #include <stdint.h>
 
-struct avr_t;
-struct avr_irq_t;
+#include "avrhost.h"
 
-#define PIL_IN_MAX 4096u /* bytes waiting for the AVR's receive FIFO */
 #define PIL_PAINT 0xA5   /* SRAM fill before reset: untouched bytes keep it */
-#define PIL_ELF_MAX_BYTES (64u << 20) /* an AVR image with its debug sections; a Mega's flash is 256 KiB */
 
 typedef struct {
-    struct avr_t *avr;
-    struct avr_irq_t *uart_in;
+    avrhost_t host;           /* the core, its image and UART0 */
     int fd;                   /* the AVR's end of the socketpair */
-    int xoff;                 /* the UART's input FIFO is full */
-    uint8_t in[PIL_IN_MAX];   /* bytes from the link, not yet in the FIFO */
-    size_t in_head, in_len;
-    uint64_t cycles_per_step;
-    uint64_t target;          /* cycle count the AVR must reach */
     uint64_t cycles;          /* AVR cycles run */
-    uint64_t bytes_in, bytes_out;
+    uint64_t bytes_in, bytes_out; /* UART0 bytes to and from the AVR */
     char mcu[64];
     uint32_t f_cpu;
 } pil_t;

@@ -1,0 +1,219 @@
+/* avrhost.c - one AVR core in simavr (see avrhost.h). */
+#include "avrhost.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <simavr/avr_ioport.h>
+#include <simavr/avr_uart.h>
+#include <simavr/sim_avr.h>
+#include <simavr/sim_elf.h>
+#include <simavr/sim_hex.h>
+#include <simavr/sim_io.h>
+#include <simavr/sim_irq.h>
+
+#include "io/infile.h"
+
+static elf_firmware_t fw; /* the ELF between avrhost_read and avrhost_put (large: off the stack) */
+
+/* simavr's messages: errors kept for our one-line messages (the last one),
+ * never printed by simavr itself; the rest dropped */
+static char last_log[200];
+
+static void quiet_logger(avr_t *avr, const int level, const char *fmt, va_list ap)
+{
+    (void)avr;
+    if (level > LOG_ERROR) return;
+    vsnprintf(last_log, sizeof last_log, fmt, ap);
+    size_t n = strlen(last_log);
+    while (n > 0 && (last_log[n - 1] == '\n' || last_log[n - 1] == '\r')) last_log[--n] = '\0';
+}
+
+static void log_install(void) { avr_global_logger_set(quiet_logger); }
+static void log_clear(void) { last_log[0] = '\0'; }
+/* ": MESSAGE" if simavr said something since log_clear, else "" (to append to an error line) */
+static const char *log_sep(void) { return last_log[0] ? ": " : ""; }
+
+/* the core's sleep callback: the host never sleeps (time is cycles, not the wall clock) */
+static void no_sleep(avr_t *avr, avr_cycle_count_t how_long) { (void)avr, (void)how_long; }
+
+static int read_hex(avrhost_image_t *img, const char *path, int got, const uint8_t *h, char *err, size_t errn)
+{
+    img->hex = 1;
+    img->nchunks = got > 0 && h[0] == ':' ? read_ihex_chunks(path, &img->chunks) : -1;
+    if (img->nchunks <= 0) return snprintf(err, errn, "%s: not an Intel HEX image", path), -1;
+    return 0;
+}
+
+/* e_flags' low bits: the AVR architecture the image was built for (avr4: ATmega48/88, avr5: 168/328) */
+static int check_arch(const char *path, const char *want_mcu, const char *board, char *err, size_t errn)
+{
+    unsigned arch = 0, want = strstr(want_mcu, "168") || strstr(want_mcu, "328") ? 5u : 4u;
+    FILE *g = fopen(path, "rb");
+    uint8_t fl[4] = { 0 };
+    if (g && fseek(g, 36, SEEK_SET) == 0 && fread(fl, 1, 4, g) == 4) arch = fl[0] & 0x7Fu;
+    if (g) fclose(g);
+    if (arch && arch != want)
+        return snprintf(err, errn, "%s: built for another MCU (AVR architecture avr%u; the board %s has an %s: avr%u)", path,
+                        arch, board, want_mcu, want), -1;
+    return 0;
+}
+
+int avrhost_read(avrhost_image_t *img, const char *path, int hex_ok, const char *want_mcu, const char *board, char *err,
+                 size_t errn)
+{
+    memset(img, 0, sizeof *img);
+    log_install(); /* simavr's messages about the file: ours, not printed */
+    size_t n = strlen(path);
+    if (access(path, R_OK) != 0) return snprintf(err, errn, "%s: cannot read: %s", path, strerror(errno)), -1;
+    FILE *f = infile_open(path, AVRHOST_IMAGE_MAX_BYTES, NULL, err, errn); /* a FIFO would hang the open */
+    if (!f) return -1;
+    uint8_t h[20] = { 0 }; /* ELF magic and e_machine 83 = AVR: simavr prints its own errors otherwise */
+    size_t got = fread(h, 1, sizeof h, f);
+    fclose(f);
+    if (hex_ok && n > 4 && !strcmp(path + n - 4, ".hex")) return read_hex(img, path, (int)got, h, err, errn);
+    if (got < sizeof h || memcmp(h, "\x7f" "ELF", 4) != 0 || h[18] != 83 || h[19] != 0)
+        return snprintf(err, errn, "%s: not an AVR ELF image%s", path, hex_ok ? " (or a .hex file)" : ""), -1;
+    if (want_mcu && check_arch(path, want_mcu, board, err, errn) != 0) return -1;
+    memset(&fw, 0, sizeof fw);
+    log_clear();
+    if (elf_read_firmware(path, &fw) != 0 || fw.flashsize == 0)
+        return snprintf(err, errn, "%s: not an AVR ELF image%s%s", path, log_sep(), last_log), -1;
+    if (want_mcu && fw.mmcu[0] && strcmp(fw.mmcu, want_mcu))
+        return snprintf(err, errn, "%s: built for the %s; the board %s has an %s", path, fw.mmcu, board, want_mcu), -1;
+    snprintf(img->mcu, sizeof img->mcu, "%s", fw.mmcu);
+    img->f_cpu = fw.frequency;
+    return 0;
+}
+
+int avrhost_make(avrhost_t *h, const char *mcu, const char *who, char *err, size_t errn)
+{
+    log_install();
+    h->avr = avr_make_mcu_by_name(mcu);
+    if (!h->avr) return snprintf(err, errn, "%s: simavr does not know the MCU '%s'", who, mcu), -1;
+    avr_init(h->avr);
+    h->avr->log = LOG_NONE;
+    return 0;
+}
+
+static int put_hex(avrhost_t *h, avrhost_image_t *img, const char *path, const char *mcu, char *err, size_t errn)
+{
+    int rc = 0;
+    for (int i = 0; i < img->nchunks && rc == 0; i++) {
+        if (img->chunks[i].baseaddr + img->chunks[i].size > h->avr->flashend + 1u) {
+            snprintf(err, errn, "%s: larger than the %s's flash (%u bytes)", path, mcu, h->avr->flashend + 1u);
+            rc = -1;
+        } else avr_loadcode(h->avr, img->chunks[i].data, img->chunks[i].size, img->chunks[i].baseaddr);
+    }
+    free_ihex_chunks(img->chunks);
+    img->chunks = NULL;
+    return rc;
+}
+
+int avrhost_put(avrhost_t *h, avrhost_image_t *img, const char *path, const char *mcu, uint32_t f_cpu, double step_s,
+                char *err, size_t errn)
+{
+    if (img->hex) {
+        if (put_hex(h, img, path, mcu, err, errn) != 0) return -1;
+    } else {
+        if (fw.flashsize > h->avr->flashend + 1u)
+            return snprintf(err, errn, "%s: %u bytes of code: larger than the %s's flash (%u bytes): built for another MCU?", path,
+                            fw.flashsize, mcu, h->avr->flashend + 1u), -1;
+        snprintf(fw.mmcu, sizeof fw.mmcu, "%s", mcu);
+        fw.frequency = f_cpu;
+        avr_load_firmware(h->avr, &fw);
+    }
+    h->avr->frequency = f_cpu;
+    h->avr->sleep = no_sleep;
+    h->cycles_per_step = (uint64_t)llround((double)f_cpu * step_s);
+    h->target = h->avr->cycle;
+    return 0;
+}
+
+void avrhost_feed(avrhost_t *h)
+{
+    while (h->in_len > 0 && !h->xoff) {
+        uint8_t c = h->in[h->in_head];
+        h->in_head = (h->in_head + 1) % AVRHOST_IN_MAX;
+        h->in_len--;
+        h->bytes_in++;
+        avr_raise_irq(h->uart_in, c); /* may raise XOFF at once */
+    }
+}
+
+size_t avrhost_room(const avrhost_t *h) { return AVRHOST_IN_MAX - h->in_len; }
+
+void avrhost_queue(avrhost_t *h, const uint8_t *bytes, size_t n)
+{
+    for (size_t i = 0; i < n && h->in_len < AVRHOST_IN_MAX; i++) h->in[(h->in_head + h->in_len++) % AVRHOST_IN_MAX] = bytes[i];
+}
+
+static void on_out(struct avr_irq_t *irq, uint32_t value, void *param)
+{
+    avrhost_t *h = param;
+    (void)irq;
+    h->sink(h->sink_ctx, (uint8_t)value);
+}
+
+static void on_xon(struct avr_irq_t *irq, uint32_t value, void *param)
+{
+    avrhost_t *h = param;
+    (void)irq, (void)value;
+    h->xoff = 0;
+    avrhost_feed(h);
+}
+
+static void on_xoff(struct avr_irq_t *irq, uint32_t value, void *param)
+{
+    avrhost_t *h = param;
+    (void)irq, (void)value;
+    h->xoff = 1;
+}
+
+void avrhost_uart_flags(avrhost_t *h)
+{
+    uint32_t flags = 0; /* simavr would print UART lines itself, and usleep while the AVR polls the UART */
+    avr_ioctl(h->avr, AVR_IOCTL_UART_GET_FLAGS('0'), &flags);
+    flags &= ~(uint32_t)(AVR_UART_FLAG_STDIO | AVR_UART_FLAG_POLL_SLEEP);
+    avr_ioctl(h->avr, AVR_IOCTL_UART_SET_FLAGS('0'), &flags);
+}
+
+int avrhost_uart_open(avrhost_t *h, avrhost_sink_fn *sink, void *ctx, const char *who, char *err, size_t errn)
+{
+    h->sink = sink;
+    h->sink_ctx = ctx;
+    avrhost_uart_flags(h);
+    h->uart_in = avr_io_getirq(h->avr, AVR_IOCTL_UART_GETIRQ('0'), UART_IRQ_INPUT);
+    avr_irq_t *out = avr_io_getirq(h->avr, AVR_IOCTL_UART_GETIRQ('0'), UART_IRQ_OUTPUT);
+    avr_irq_t *xon = avr_io_getirq(h->avr, AVR_IOCTL_UART_GETIRQ('0'), UART_IRQ_OUT_XON);
+    avr_irq_t *xoff = avr_io_getirq(h->avr, AVR_IOCTL_UART_GETIRQ('0'), UART_IRQ_OUT_XOFF);
+    if (!h->uart_in || !out || !xon || !xoff)
+        return snprintf(err, errn, "%s%sthe MCU '%s' has no UART0 in simavr", who ? who : "", who ? ": " : "", h->avr->mmcu), -1;
+    avr_irq_register_notify(out, on_out, h);
+    avr_irq_register_notify(xon, on_xon, h);
+    avr_irq_register_notify(xoff, on_xoff, h);
+    return 0;
+}
+
+int avrhost_run_to(avrhost_t *h, uint64_t until, char *err, size_t errn)
+{
+    while (h->avr->cycle < until) {
+        int state = avr_run(h->avr);
+        if (state == cpu_Done || state == cpu_Crashed)
+            return snprintf(err, errn, "AVR %s at cycle %llu%s%s", state == cpu_Crashed ? "crashed" : "halted",
+                            (unsigned long long)h->avr->cycle, log_sep(), last_log), -1;
+    }
+    return 0;
+}
+
+void avrhost_close(avrhost_t *h)
+{
+    if (h->avr) avr_terminate(h->avr);
+}
+
+avr_irq_t *avrhost_pin_irq(avr_t *avr, char port, unsigned bit) { return avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ(port), (int)bit); }

@@ -1,0 +1,88 @@
+/* avrhost.h - one AVR core in simavr as both --avr (pil.c) and --board
+ * (board.c) run it: the image read and checked (ELF, or Intel HEX where
+ * the caller admits it), the core made quiet (simavr's error messages kept
+ * for ours, never printed; no host sleep when the AVR sleeps), UART0
+ * (simavr's own printing and polling sleep off; each byte the firmware
+ * sends to a sink; typed bytes queued until the receiver takes them,
+ * respecting its XON/XOFF), and the run up to a cycle. Time is cycles:
+ * nothing here reads a clock.
+ *
+ * Order of use: avrhost_read, avrhost_make, avrhost_put (any order of the
+ * first two: pil takes the MCU from the image, board from its board file),
+ * then avrhost_uart_open; avrhost_run_to each step. */
+#ifndef AVRHOST_H
+#define AVRHOST_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+struct avr_t;
+struct avr_irq_t;
+struct ihex_chunk_t;
+
+#define AVRHOST_IN_MAX 4096u              /* bytes waiting for the UART's receive FIFO */
+#define AVRHOST_IMAGE_MAX_BYTES (64u << 20) /* an ELF with its debug sections; a Mega's flash is 256 KiB */
+
+/* An image read from its file, not yet in a core. */
+typedef struct {
+    int hex;                      /* 1: Intel HEX chunks, 0: the ELF (kept inside avrhost.c) */
+    struct ihex_chunk_t *chunks;
+    int nchunks;
+    char mcu[64];                 /* the ELF's .mmcu MCU name ("" if none or HEX) */
+    uint32_t f_cpu;               /* the ELF's .mmcu clock, Hz (0 if none or HEX) */
+} avrhost_image_t;
+
+/* Where each byte the firmware sends on UART0 goes. */
+typedef void avrhost_sink_fn(void *ctx, uint8_t byte);
+
+typedef struct {
+    struct avr_t *avr;
+    struct avr_irq_t *uart_in;
+    avrhost_sink_fn *sink;
+    void *sink_ctx;
+    int xoff;                     /* the UART's receive FIFO is full */
+    uint8_t in[AVRHOST_IN_MAX];   /* typed bytes not yet in the FIFO */
+    size_t in_head, in_len;
+    uint64_t bytes_in;            /* bytes handed to the UART's receiver */
+    uint64_t cycles_per_step;     /* AVR cycles of one physics step */
+    uint64_t target;              /* the cycle the current step runs to */
+} avrhost_t;
+
+/* Read and check the image at path: readable, a regular file, an AVR ELF
+ * (or, if hex_ok and its name ends in .hex, Intel HEX). want_mcu (NULL: no
+ * check) is the MCU the image must be built for: its AVR architecture
+ * (ELF e_flags: avr4 for ATmega48/88, avr5 for 168/328) and its .mmcu name
+ * if it has one; board names the board in those messages. 0, or -1 with
+ * one line in err. Not reentrant: one ELF is held until avrhost_put. */
+int avrhost_read(avrhost_image_t *img, const char *path, int hex_ok, const char *want_mcu, const char *board, char *err,
+                 size_t errn);
+/* Make and initialise a core for mcu (simavr's logger installed, its own
+ * logging off). 0, or -1 with "WHO: simavr does not know the MCU 'MCU'". */
+int avrhost_make(avrhost_t *h, const char *mcu, const char *who, char *err, size_t errn);
+/* The image read by avrhost_read into h's core, clocked at f_cpu Hz, the
+ * host never sleeping when the AVR sleeps; then a step is step_s seconds
+ * of f_cpu cycles. Code larger than the flash is refused (HEX chunks freed
+ * either way). 0, or -1 with one line in err. */
+int avrhost_put(avrhost_t *h, avrhost_image_t *img, const char *path, const char *mcu, uint32_t f_cpu, double step_s,
+                char *err, size_t errn);
+/* UART0's bytes to sink(ctx, byte); who (NULL: none) prefixes the error
+ * line. 0, or -1: the MCU has no UART0 in simavr. */
+int avrhost_uart_open(avrhost_t *h, avrhost_sink_fn *sink, void *ctx, const char *who, char *err, size_t errn);
+/* Turn off simavr's UART printing and polling sleep again (a reset
+ * restores them). */
+void avrhost_uart_flags(avrhost_t *h);
+/* Room in the input queue, bytes. */
+size_t avrhost_room(const avrhost_t *h);
+/* Queue n bytes (at most avrhost_room) for the receiver. */
+void avrhost_queue(avrhost_t *h, const uint8_t *bytes, size_t n);
+/* Hand queued bytes to the receiver until it says XOFF. */
+void avrhost_feed(avrhost_t *h);
+/* Run the AVR up to cycle until. 0, or -1 with "AVR crashed|halted at
+ * cycle N: simavr's message". */
+int avrhost_run_to(avrhost_t *h, uint64_t until, char *err, size_t errn);
+/* Stop the core (simavr cannot free one: h->avr stays pointing at it). */
+void avrhost_close(avrhost_t *h);
+/* The ioport IRQ of pin bit (0..7) of port 'B', 'C', 'D', ... */
+struct avr_irq_t *avrhost_pin_irq(struct avr_t *avr, char port, unsigned bit);
+
+#endif

@@ -1,0 +1,36 @@
+/* board_adc.h - the analogue front end part: what each ADC channel sees
+ * when a conversion starts (an IR detector with the emitters as their pins
+ * are, the switch ladder, the battery through its divider). */
+#ifndef BOARD_ADC_H
+#define BOARD_ADC_H
+
+#include <stddef.h>
+
+#include "board.h"
+#include "board_led.h"
+#include "board_switch.h"
+
+struct avr_t;
+struct avr_irq_t;
+struct avr_adc_t;
+
+typedef struct {
+    struct avr_t *avr;
+    const struct avr_adc_t *adc;
+    const board_spec_t *spec;     /* VCC, the ladder's and the battery's channels, the emitters' groups */
+    sim_t *sim;                   /* IR detectors, emitters, battery */
+    const board_switches_t *sw;
+    const board_leds_t *emitters; /* spec's [emitter.*] pins, in its order */
+    int ir_of_channel[BOARD_ADC_CHANNELS]; /* the IR sensor on each channel (-1: none) */
+    struct avr_irq_t *in[BOARD_ADC_CHANNELS];
+    board_stats_t *st;            /* adc_conversions */
+} board_adc_t;
+
+/* Wire the part to avr's ADC. 0, or -1 with one line in err (a robot IR
+ * channel the board lacks, an MCU without an ADC in simavr). */
+int board_adc_init(board_adc_t *a, struct avr_t *avr, const board_spec_t *spec, sim_t *sim, const board_switches_t *sw,
+                   const board_leds_t *emitters, board_stats_t *st, char *err, size_t errn);
+/* 0, or -1 with a line in err: the firmware chose an auto-trigger simavr lacks. */
+int board_adc_check(const board_adc_t *a, char *err, size_t errn);
+
+#endif
