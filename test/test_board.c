@@ -89,7 +89,7 @@ static void test_bad_files(void **state)
 typedef struct {
     simcfg_t cfg;
     maze_t maze;
-    sim_t sim;
+    sim_state_t sim;
     board_t *b;
 } rig_t;
 
@@ -99,7 +99,7 @@ static void steps(int n)
 {
     char err[400];
     for (int i = 0; i < n; i++) {
-        sim_step(&rig.sim);
+        sim_step(rig.sim.model, &rig.sim);
         if (board_step(rig.b, err, sizeof err) != 0) fail_msg("%s", err);
     }
 }
@@ -124,7 +124,9 @@ static int rig_open(const char *image)
     if (board_load(&sp, BOARD_FILE, err, sizeof err) || robot_load(&rig.cfg, "robots/ukmarsbot.ini", err, sizeof err) ||
         mazefile_load(&rig.maze, "mazes/gen-5x5-s1.txt", NULL, err, sizeof err))
         fail_msg("%s", err);
-    assert_int_equal(sim_init(&rig.sim, &rig.cfg, &rig.maze, 1), 0);
+    static sim_model_t rig_sim_model;
+    sim_model_build(&rig_sim_model, &rig.cfg, 1);
+    assert_int_equal(sim_init(&rig.sim, &rig_sim_model, &rig.maze, 1), 0);
     rig.b = board_open(&sp, image, &rig.sim, err, sizeof err);
     if (!rig.b) fail_msg("%s", err);
     return 1;

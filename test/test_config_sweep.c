@@ -115,12 +115,14 @@ static void child(const char *cfg_path, const char *robot_path)
             _exit(2);
         }
         if (robot_count(&c, "ir") > 0 || robot_count(&c, "gyro") > 0) {
-            static sim_t s;
-            if (sim_init(&s, &c, &m, 1) != 0) _exit(3);
+            static sim_state_t s;
+            static sim_model_t s_model;
+            sim_model_build(&s_model, &c, 1);
+            if (sim_init(&s, &s_model, &m, 1) != 0) _exit(3);
             for (unsigned g = 0; g < SIM_EMITTER_GROUPS; g++) sim_emitter_set(&s, g, 1);
             for (int i = 0; i < 200 && !s.diverged; i++) {
                 s.cmd[0] = s.cmd[1] = 300;
-                sim_step(&s);
+                sim_step(s.model, &s);
                 for (int k = 0; k < sim_ir_count(&s); k++) {
                     int kk = robot_part_of_kind(s.model->cfg, "ir", (unsigned)k);
                     double bits = ((const ir_part_spec_t *)s.model->cfg->part[kk].spec)->model.adc_bits;

@@ -52,14 +52,16 @@ static double end_s;
 static int setup(void **state)
 {
     (void)state;
-    static sim_t sim;
+    static sim_state_t sim;
     static driver_t drv;
     static telem_t tel;
     static simcfg_t cfg; /* the sim's model reads it */
     char err[300];
     config_defaults(&cfg);
     if (mazegen_generate(&maze, 5, 5, 7) != 0) return -1;
-    if (sim_init(&sim, &cfg, &maze, 3) != 0) return -1;
+    static sim_model_t sim_model;
+    sim_model_build(&sim_model, &cfg, 3);
+    if (sim_init(&sim, &sim_model, &maze, 3) != 0) return -1;
     hal_sim_attach(&sim);
     driver_init(&drv, &maze, sim.model, 1);
     snprintf(log_path, sizeof log_path, "/tmp/test_replay_%d.lcmlog", (int)getpid());
@@ -71,7 +73,7 @@ static int setup(void **state)
     while (sim_time_s(&sim) < 3.2 - 1e-9) {
         driver_update(&drv, &sim);
         sim_emitter_set(&sim, 1, sim.step >= 1500 && sim.step < 2500);
-        sim_step(&sim);
+        sim_step(sim.model, &sim);
         telem_step(&tel, &sim);
         if (sim.step == 1000) hal_belief(&bmap, 1, MAZE_NORTH, 0); /* as fw_loop would */
         if (k < CHECK_AT && sim.step == (uint64_t)llround(CHECK_S[k] * 1000)) {
@@ -168,10 +170,12 @@ static void test_maze_ray_as_ode(void **state)
     (void)state;
     static simcfg_t c;
     static maze_t m;
-    static sim_t s;
+    static sim_state_t s;
     config_defaults(&c);
     assert_int_equal(mazegen_generate(&m, 6, 6, 11), 0);
-    assert_int_equal(sim_init(&s, &c, &m, 1), 0);
+    static sim_model_t s_model;
+    sim_model_build(&s_model, &c, 1);
+    assert_int_equal(sim_init(&s, &s_model, &m, 1), 0);
     static const double z_m[] = { 0.002, 0.02, 0.049, 0.06 }, pitch_deg[] = { 0, 8, -8, -60, 45 };
     int hits = 0, misses = 0;
     for (int post = 1; post >= 0; post--) {

@@ -225,19 +225,21 @@ static void test_more_sensors(void **state)
         "\n[ir.rf]\nx_mm = 40\ny_mm = 50\nz_mm = 15\nyaw_deg = -90\nemitter = 2\n";
     char *text = append(paper, more), err[600];
     static simcfg_t c;
-    static sim_t s;
+    static sim_state_t s;
     static maze_t m;
     config_defaults(&c);
     if (robot_load_string(&c, text, "more.ini", err, sizeof err) != 0) fail_msg("%s", err);
     free(text);
     assert_int_equal(c.nparts, 9);
     if (mazefile_load(&m, "mazes/gen-5x5-s1.txt", NULL, err, sizeof err) != 0) fail_msg("%s", err);
-    assert_int_equal(sim_init(&s, &c, &m, 1), 0);
+    static sim_model_t s_model;
+    sim_model_build(&s_model, &c, 1);
+    assert_int_equal(sim_init(&s, &s_model, &m, 1), 0);
     assert_int_equal(sim_ir_count(&s), 5);
     assert_int_equal(sim_has_gyro(&s), 1);
     for (int i = 0; i < 500; i++) { /* half a second driving forward */
         s.cmd[0] = s.cmd[1] = 200;
-        sim_step(&s);
+        sim_step(s.model, &s);
     }
     assert_false(s.diverged);
     unsigned dark[5], lit[5];
@@ -281,17 +283,19 @@ static int teardown(void **state)
 static void ukmarsbot_burst(double r_ohm, double *w, double *v, double *mah)
 {
     static simcfg_t c;
-    static sim_t s;
+    static sim_state_t s;
     static maze_t m;
     char err[600];
     config_defaults(&c);
     if (robot_load(&c, "robots/ukmarsbot.ini", err, sizeof err) != 0) fail_msg("%s", err);
     c.battery.r_ohm = r_ohm;
     if (mazefile_load(&m, "mazes/gen-5x5-s1.txt", NULL, err, sizeof err) != 0) fail_msg("%s", err);
-    assert_int_equal(sim_init(&s, &c, &m, 1), 0);
+    static sim_model_t s_model;
+    sim_model_build(&s_model, &c, 1);
+    assert_int_equal(sim_init(&s, &s_model, &m, 1), 0);
     for (int i = 0; i < 300; i++) {
         s.cmd[0] = s.cmd[1] = MOTOR_CMD_MAX;
-        sim_step(&s);
+        sim_step(s.model, &s);
     }
     *w = world_wheel_rate(s.world, 0);
     *v = sim_battery_v(&s);

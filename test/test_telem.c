@@ -113,7 +113,7 @@ static void drain(lcm_t *l)
 /* MM_PARTS with every MM_SENSORS: the paper robot's three ToF (left,
  * front, right) with the same readings as MM_SENSORS, the battery as the
  * simulation has it, the four emitter groups. */
-static void check_parts(const sim_t *sim)
+static void check_parts(const sim_state_t *sim)
 {
     static const char *names[3] = { "left", "front", "right" };
     assert_int_equal(seen.parts, seen.sensors);
@@ -142,13 +142,15 @@ static void test_memq_messages(void **state)
 {
     (void)state;
     static maze_t m;
-    static sim_t sim;
+    static sim_state_t sim;
     static telem_t t;
     simcfg_t cfg;
     char err[300];
     config_defaults(&cfg);
     open_maze(&m);
-    assert_int_equal(sim_init(&sim, &cfg, &m, 1), 0);
+    static sim_model_t sim_model;
+    sim_model_build(&sim_model, &cfg, 1);
+    assert_int_equal(sim_init(&sim, &sim_model, &m, 1), 0);
     hal_sim_attach(&sim);
     memset(&seen, 0, sizeof seen);
     telem_opts_t o = { "memq://", NULL, 100.0, NULL, NULL };
@@ -168,7 +170,7 @@ static void test_memq_messages(void **state)
     sim_emitter_set(&sim, 2, 1);
     for (int i = 0; i < 95; i++) {
         sim.cmd[0] = sim.cmd[1] = 300;
-        sim_step(&sim);
+        sim_step(sim.model, &sim);
         /* the robot stays in the start cell: a lap is written into the race
          * state by hand, after the step's own race_update */
         if (sim.step == 41) { /* a run starts */
@@ -263,13 +265,15 @@ static void test_open_errors(void **state)
 {
     (void)state;
     static maze_t m;
-    static sim_t sim;
+    static sim_state_t sim;
     static telem_t t;
     simcfg_t cfg;
     char err[300], path[64];
     config_defaults(&cfg);
     open_maze(&m);
-    assert_int_equal(sim_init(&sim, &cfg, &m, 1), 0);
+    static sim_model_t sim_model;
+    sim_model_build(&sim_model, &cfg, 1);
+    assert_int_equal(sim_init(&sim, &sim_model, &m, 1), 0);
     telem_opts_t o = { NULL, "/nonexistent-dir/x.lcmlog", 0, NULL, NULL };
     assert_int_equal(telem_open(&t, &o, &sim, err, sizeof err), -1);
     assert_non_null(strstr(err, "cannot write the LCM log"));

@@ -22,7 +22,7 @@
 #include "view/view.h"
 
 static maze_t maze;
-static sim_t sim;
+static sim_state_t sim;
 static view_t *view;
 static const view_opts_t opts = { 800, 600, 1, 1, "", 115200 };
 
@@ -35,7 +35,9 @@ static int setup(void **state)
     maze_close_unknown(&maze);
     for (uint16_t k = 0; k < 16; k++) /* open every inner wall so only posts stand */
         for (uint8_t d = 0; d < 4; d++) maze_set_wall(&maze, (maze_cell_t)k, d, MAZE_WALL_OPEN);
-    if (sim_init(&sim, &c, &maze, 1) != 0) return -1;
+    static sim_model_t sim_model;
+    sim_model_build(&sim_model, &c, 1);
+    if (sim_init(&sim, &sim_model, &maze, 1) != 0) return -1;
     view = view_new(&opts);
     return view ? 0 : -1;
 }
@@ -320,14 +322,14 @@ static void test_board_panel(void **state)
     want_hand(VIEW_HAND_BUTTON_DOWN, 0);
     while (sim_time_s(&sim) < t0 + 0.099) {
         assert_int_equal(view_hands_request(view, &h), 0);
-        sim_step(&sim);
+        sim_step(sim.model, &sim);
     }
-    while (sim_time_s(&sim) < t0 + 0.1 - 1e-9) sim_step(&sim);
+    while (sim_time_s(&sim) < t0 + 0.1 - 1e-9) sim_step(sim.model, &sim);
     want_hand(VIEW_HAND_BUTTON_UP, 0);
     /* held: up when released */
     click_board(HUD_BOARD_BUTTON);
     want_hand(VIEW_HAND_BUTTON_DOWN, 0);
-    for (int i = 0; i < 300; i++) sim_step(&sim);
+    for (int i = 0; i < 300; i++) sim_step(sim.model, &sim);
     assert_int_equal(view_hands_request(view, &h), 0);
     view_release(view);
     want_hand(VIEW_HAND_BUTTON_UP, 0);

@@ -26,7 +26,7 @@
 #define DIFF_M 0.002  /* right wheel's diameter minus the left's, m */
 
 /* Both wheels' lowest points at most SEATED_M from the floor. */
-static void seated(const sim_t *s, const char *where)
+static void seated(const sim_state_t *s, const char *where)
 {
     for (int side = 0; side < 2; side++) {
         double gap = world_wheel_floor_gap(s->world, side);
@@ -54,14 +54,16 @@ static void seated_snap(const snap_t *s, const double wheel_r_m[2], const char *
 static void place_reset_replay(const simcfg_t *c)
 {
     static maze_t m;
-    static sim_t s;
+    static sim_state_t s;
     static telem_t tel;
     static replay_t r;
     static snap_t snap;
     char err[600], log_path[64];
     double wheel_r_m[2];
     assert_int_equal(mazegen_generate(&m, 5, 5, 7), 0);
-    assert_int_equal(sim_init(&s, c, &m, 1), 0);
+    static sim_model_t s_model;
+    sim_model_build(&s_model, c, 1);
+    assert_int_equal(sim_init(&s, &s_model, &m, 1), 0);
     assert_true(fabs(s.model->wheel_r_m[WORLD_RIGHT] - s.model->wheel_r_m[WORLD_LEFT] - DIFF_M / 2) < 1e-9);
     seated(&s, "placed at the start");
     snprintf(log_path, sizeof log_path, "/tmp/test_wheels_%d.lcmlog", (int)getpid());
@@ -69,7 +71,7 @@ static void place_reset_replay(const simcfg_t *c)
     assert_int_equal(telem_open(&tel, &o, &s, err, sizeof err), 0);
     s.cmd[0] = s.cmd[1] = 300;
     for (int i = 0; i < 400; i++) {
-        sim_step(&s);
+        sim_step(s.model, &s);
         telem_step(&tel, &s);
     }
     telem_finish(&tel, &s);

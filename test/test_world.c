@@ -224,18 +224,20 @@ static void test_place(void **state)
 static double veer(const simcfg_t *c, uint64_t seed)
 {
     static maze_t m;
-    static sim_t s;
+    static sim_state_t s;
     maze_init(&m, 8, 8);
     maze_close_unknown(&m);
     for (uint16_t k = 0; k < 64; k++)
         for (uint8_t d = 0; d < 4; d++) maze_set_wall(&m, (maze_cell_t)k, d, MAZE_WALL_OPEN);
     m.start = maze_cell(&m, 4, 0);
     m.start_heading = MAZE_NORTH;
-    assert_int_equal(sim_init(&s, c, &m, seed), 0);
+    static sim_model_t s_model;
+    sim_model_build(&s_model, c, seed);
+    assert_int_equal(sim_init(&s, &s_model, &m, seed), 0);
     double x0, y0, h, x, y;
     world_pose(s.world, &x0, &y0, &h);
     s.cmd[0] = s.cmd[1] = MOTOR_CMD_MAX;
-    for (int i = 0; i < 2000; i++) sim_step(&s);
+    for (int i = 0; i < 2000; i++) sim_step(s.model, &s);
     world_pose(s.world, &x, &y, &h);
     sim_free(&s);
     return x - x0;

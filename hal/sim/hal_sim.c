@@ -7,12 +7,12 @@
 
 #include "world/sim.h"
 
-static sim_t *sim;
+static sim_state_t *sim;
 static FILE *log_out;
 static int32_t encoder_zero[2];
 static hal_sim_belief_t belief;
 
-void hal_sim_attach(struct sim_s *s)
+void hal_sim_attach(struct sim_state_s *s)
 {
     sim = s;
     encoder_zero[0] = encoder_zero[1] = 0;

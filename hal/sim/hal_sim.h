@@ -9,7 +9,7 @@
 
 #include "maze.h"
 
-struct sim_s;
+struct sim_state_s;
 
 /* The firmware's latest hal_belief call, copied (telemetry reads it). */
 typedef struct {
@@ -22,7 +22,7 @@ typedef struct {
 } hal_sim_belief_t;
 
 /* Serve the HAL from this simulation (NULL detaches). */
-void hal_sim_attach(struct sim_s *s);
+void hal_sim_attach(struct sim_state_s *s);
 /* Where hal_log lines go: a stream (NULL = dropped, the default). */
 void hal_sim_set_log(FILE *out);
 /* The latest belief the firmware reported (seq 0 until the first). */

@@ -30,7 +30,7 @@ _Static_assert(BOARD_LED_PINS_MAX >= BOARD_LEDS_MAX && BOARD_LED_PINS_MAX >= SIM
 
 struct board_s {
     board_spec_t spec;
-    sim_t *sim;
+    sim_state_t *sim;
     avrhost_t host;
     board_stats_t st;
     board_motor_t motor;
@@ -91,7 +91,7 @@ static int wire(board_t *b, char *err, size_t errn)
     return board_motor_init(&b->motor, avr, sp, &b->st, err, errn);
 }
 
-board_t *board_open(const board_spec_t *spec, const char *image, sim_t *s, char *err, size_t errn)
+board_t *board_open(const board_spec_t *spec, const char *image, sim_state_t *s, char *err, size_t errn)
 {
     board_t *b = calloc(1, sizeof *b);
     if (!b) return snprintf(err, errn, "out of memory"), NULL;
@@ -195,4 +195,6 @@ const char *board_console(const board_t *b, size_t *len)
 }
 
 void board_set_echo(board_t *b, FILE *f) { b->con.echo = f; }
+const board_spec_t *board_spec(const board_t *b) { return &b->spec; }
+
 const board_stats_t *board_stats(const board_t *b) { return &b->st; }

@@ -8,7 +8,7 @@
  *                    never sleeping the host, UART0's queues (shared with
  *                    --avr, pil.c)
  *   board_motor.c    H-bridge: direction pins (port IRQs) and Timer1's
- *                    PWM (mode, TOP, OCR1A/B, COM bits) -> sim_t.cmd[]
+ *                    PWM (mode, TOP, OCR1A/B, COM bits) -> sim_state_t.cmd[]
  *   board_encoder.c  quadrature edges from the wheel angle, each at its
  *                    cycle inside the step: A xor B on the interrupt pin,
  *                    B on its own pin
@@ -106,7 +106,7 @@ const char *board_vector_name(const board_t *b, unsigned vector);
  * (its motors, read from its wheels, IR sensors and battery). step_s: the
  * physics step. NULL with one line in err: an unreadable image, one for
  * another MCU, a robot whose IR channel the board lacks. */
-board_t *board_open(const board_spec_t *spec, const char *image, sim_t *s, char *err, size_t errn);
+board_t *board_open(const board_spec_t *spec, const char *image, sim_state_t *s, char *err, size_t errn);
 /* One physics step of AVR time (call after sim_step): encoder edges at
  * their cycles, ADC conversions as the firmware starts them, then the
  * motor commands into s->cmd. 0, or -1 with the reason in err (the AVR
@@ -137,6 +137,8 @@ const char *board_console(const board_t *b, size_t *len);
 /* Echo UART output to f as it comes (NULL: off), for --verbose. */
 void board_set_echo(board_t *b, FILE *f);
 const board_stats_t *board_stats(const board_t *b);
+/* The board file it was opened with (board_open's copy: resolved once). */
+const board_spec_t *board_spec(const board_t *b);
 /* The A6-style ladder's voltage for switches n and the button, V. */
 double board_switch_volts(const board_spec_t *spec, unsigned n, int button);
 

@@ -76,7 +76,7 @@ static int map_ir(board_adc_t *a, char *err, size_t errn)
     return 0;
 }
 
-int board_adc_init(board_adc_t *a, avr_t *avr, const board_spec_t *spec, sim_t *sim, const board_switches_t *sw,
+int board_adc_init(board_adc_t *a, avr_t *avr, const board_spec_t *spec, sim_state_t *sim, const board_switches_t *sw,
                    const board_leds_t *emitters, board_stats_t *st, char *err, size_t errn)
 {
     memset(a, 0, sizeof *a);

@@ -18,7 +18,7 @@ typedef struct {
     struct avr_t *avr;
     const struct avr_adc_t *adc;
     const board_spec_t *spec;     /* VCC, the ladder's and the battery's channels, the emitters' groups */
-    sim_t *sim;                   /* IR detectors, emitters, battery */
+    sim_state_t *sim;                   /* IR detectors, emitters, battery */
     const board_switches_t *sw;
     const board_leds_t *emitters; /* spec's [emitter.*] pins, in its order */
     int ir_of_channel[BOARD_ADC_CHANNELS]; /* the IR sensor on each channel (-1: none) */
@@ -28,7 +28,7 @@ typedef struct {
 
 /* Wire the part to avr's ADC. 0, or -1 with one line in err (a robot IR
  * channel the board lacks, an MCU without an ADC in simavr). */
-int board_adc_init(board_adc_t *a, struct avr_t *avr, const board_spec_t *spec, sim_t *sim, const board_switches_t *sw,
+int board_adc_init(board_adc_t *a, struct avr_t *avr, const board_spec_t *spec, sim_state_t *sim, const board_switches_t *sw,
                    const board_leds_t *emitters, board_stats_t *st, char *err, size_t errn);
 /* 0, or -1 with a line in err: the firmware chose an auto-trigger simavr lacks. */
 int board_adc_check(const board_adc_t *a, char *err, size_t errn);

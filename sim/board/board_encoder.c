@@ -28,7 +28,7 @@ static void put(board_encoder_t *e, int w, long q)
     avr_raise_irq(e->b_pin[w], (uint32_t)bch);
 }
 
-void board_encoder_init(board_encoder_t *e, avr_t *avr, const board_spec_t *spec, const sim_t *sim, board_stats_t *st)
+void board_encoder_init(board_encoder_t *e, avr_t *avr, const board_spec_t *spec, const sim_state_t *sim, board_stats_t *st)
 {
     e->sim = sim;
     e->st = st;

@@ -22,7 +22,7 @@ typedef struct {
 } board_edge_t;
 
 typedef struct {
-    const sim_t *sim;                     /* its wheels' angles */
+    const sim_state_t *sim;                     /* its wheels' angles */
     struct avr_irq_t *int_pin[2], *b_pin[2]; /* per wheel: A xor B, B */
     int a_leads[2];                       /* 1: A leads B when the wheel turns forward */
     double per_rad[2], last_rad[2], pos[2]; /* edges per wheel radian; the angle and position last seen */
@@ -33,7 +33,7 @@ typedef struct {
 } board_encoder_t;
 
 /* Wire the part to avr's pins as spec says, the wheels at edge 0. */
-void board_encoder_init(board_encoder_t *e, struct avr_t *avr, const board_spec_t *spec, const sim_t *sim, board_stats_t *st);
+void board_encoder_init(board_encoder_t *e, struct avr_t *avr, const board_spec_t *spec, const sim_state_t *sim, board_stats_t *st);
 /* This step's edges, from the wheel angles after sim_step: the angle taken
  * as moving linearly over the step's cycles from start_cycle, so each edge
  * gets its own cycle inside the step. */

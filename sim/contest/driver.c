@@ -46,7 +46,7 @@ void driver_init(driver_t *d, const maze_t *m, const sim_model_t *md, int runs)
 
 static double clamp(double v, double lo, double hi) { return v < lo ? lo : v > hi ? hi : v; }
 
-void driver_update(driver_t *d, sim_t *s)
+void driver_update(driver_t *d, sim_state_t *s)
 {
     double x, y, h, v, om;
     if (d->done || d->n < 2) {

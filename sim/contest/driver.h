@@ -26,6 +26,6 @@ typedef struct {
  * start-to-goal runs. */
 void driver_init(driver_t *d, const maze_t *m, const sim_model_t *md, int runs);
 /* Set s->cmd from the true pose; call once per physics step. */
-void driver_update(driver_t *d, sim_t *s);
+void driver_update(driver_t *d, sim_state_t *s);
 
 #endif

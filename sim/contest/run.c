@@ -159,7 +159,8 @@ static int setup(run_t *r)
     }
     config_hash(&r->cfg, r->hash);
     if (set_goal(r) != 0) return RUN_BAD_INPUT;
-    if (sim_init(&r->sim, &r->cfg, &r->maze, r->o->seed) != 0) {
+    sim_model_build(&r->model, &r->cfg, r->o->seed); /* once; const from here on */
+    if (sim_init(&r->sim, &r->model, &r->maze, r->o->seed) != 0) {
         fprintf(stderr, "%s: cannot set up the ODE world\n", r->maze_path);
         return RUN_EXTERNAL;
     }
@@ -212,7 +213,7 @@ typedef struct {
 static const char *after_step(run_t *r, watch_t *w)
 {
     const run_opts_t *o = r->o;
-    sim_t *s = &r->sim;
+    sim_state_t *s = &r->sim;
     const char *cport;
     long cbaud;
     if (s->diverged) {
@@ -257,7 +258,7 @@ static const char *step(run_t *r, watch_t *w)
     const run_driver_t *d = r->ctl;
     const char *why = d->before ? d->before(r, r->ctl_self) : NULL;
     if (why) return why;
-    sim_step(&r->sim);
+    sim_step(&r->model, &r->sim);
     if (d->exchange) d->exchange(r, r->ctl_self);
     if (r->tel_on) telem_step(&r->tel, &r->sim);
     why = d->after ? d->after(r, r->ctl_self) : NULL;

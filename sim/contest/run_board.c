@@ -163,11 +163,9 @@ static void board_results(run_t *r, void *self, json_t *j)
     const char *vnames[BOARD_VECTORS_MAX], *adc[BOARD_ADC_CHANNELS] = { "A0", "A1", "A2", "A3", "A4", "A5", "A6", "A7" };
     for (int v = 0; v < BOARD_VECTORS_MAX; v++) vnames[v] = board_vector_name(bd, (unsigned)v);
     json_t *leds = json_object();
-    board_spec_t spec;
-    char path[512], err[600];
-    if (board_find(r->o->board, path, sizeof path, err, sizeof err) == 0 && board_load(&spec, path, err, sizeof err) == 0)
-        for (int i = 0; i < spec.nleds; i++) json_object_set_new(leds, spec.led_name[i], json_integer(st->led_changes[i]));
-    json_t *b = json_pack("{s:s, s:s, s:I}", "file", path, "image", r->o->avr_elf, "cycles", (json_int_t)st->cycles);
+    const board_spec_t *spec = board_spec(bd);
+    for (int i = 0; i < spec->nleds; i++) json_object_set_new(leds, spec->led_name[i], json_integer(st->led_changes[i]));
+    json_t *b = json_pack("{s:s, s:s, s:I}", "file", spec->path, "image", r->o->avr_elf, "cycles", (json_int_t)st->cycles);
     json_object_set_new(b, "led_changes", leds);
     json_object_set_new(b, "interrupts", counts(vnames, st->interrupts, BOARD_VECTORS_MAX));
     json_object_set_new(b, "adc_conversions", counts(adc, st->adc_conversions, BOARD_ADC_CHANNELS));

@@ -60,10 +60,11 @@ typedef struct {
 struct run_s {
     const run_opts_t *o;
     const char *maze_path;
-    simcfg_t cfg;
-    char hash[65]; /* config_hash */
+    simcfg_t cfg;       /* the config and robot file as loaded (the model points into it) */
+    char hash[65];      /* config_hash */
     maze_t maze;
-    sim_t sim;
+    sim_model_t model;  /* the run's robot and world, built once from cfg and the seed: const after set-up */
+    sim_state_t sim;    /* all that changes as the run steps */
     /* the driver the run began with (its name, results, headline and exit code) and its state */
     const run_driver_t *drv;
     void *self;

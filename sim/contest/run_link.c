@@ -20,7 +20,7 @@ typedef struct {
  * names, then sample every IR sensor with them so. */
 static void ir_sample(void *ctx, uint8_t groups, uint16_t raw[WIRE_IR_MAX])
 {
-    sim_t *s = ctx;
+    sim_state_t *s = ctx;
     for (unsigned g = 0; g < SIM_EMITTER_GROUPS && g < WIRE_EMITTER_GROUPS; g++) sim_emitter_set(s, g, (groups >> g) & 1u);
     int n = sim_ir_count(s);
     for (int i = 0; i < n && i < WIRE_IR_MAX; i++) {
@@ -30,7 +30,7 @@ static void ir_sample(void *ctx, uint8_t groups, uint16_t raw[WIRE_IR_MAX])
 }
 
 /* The robot's other sensors for a version-2 MCU (docs/PROTOCOL.md) */
-static void link_v2_io(link_io_t *io, sim_t *s)
+static void link_v2_io(link_io_t *io, sim_state_t *s)
 {
     int n = sim_ir_count(s);
     io->ir_count = (uint8_t)(n < 0 ? 0 : n > WIRE_IR_MAX ? WIRE_IR_MAX : n);
@@ -47,7 +47,7 @@ static void link_v2_io(link_io_t *io, sim_t *s)
  * the ToF readings that are new since the last step and (to a version-2
  * MCU) gyro, battery and IR go to the MCU; the MCU's motor commands and
  * emitter switches come back. */
-static void link_exchange(link_t *l, sim_t *s)
+static void link_exchange(link_t *l, sim_state_t *s)
 {
     link_io_t io;
     memset(&io, 0, sizeof io);

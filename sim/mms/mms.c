@@ -133,7 +133,7 @@ void mms_init(mms_t *m, const mms_opts_t *o, const maze_t *truth)
  * Reset is pressed now (reset_on_idle), or the answer waits while the clock
  * runs (MOVE_WAIT: to the reset time, or the viewer's button), or nobody
  * will press it and the run ends (m->idle). Returns 1 when the answer waits. */
-static int answer_was_reset(mms_t *m, struct sim_s *s, char *resp, size_t len)
+static int answer_was_reset(mms_t *m, struct sim_state_s *s, char *resp, size_t len)
 {
     if (!m->was_reset && ++m->idle_polls >= MMS_IDLE_POLLS) {
         if (m->o.reset_on_idle) {
@@ -268,7 +268,7 @@ static int wall_query(const mms_t *m, int rel, int away)
     return semi_wall_ahead(m, x, y, (2 * mouse_status()->heading + rel) & 7, (long)away - 1);
 }
 
-static void place_at_start(const mms_t *m, struct sim_s *s)
+static void place_at_start(const mms_t *m, struct sim_state_s *s)
 {
     const maze_t *t = m->truth;
     double cell = s->model->cfg->cell_m;
@@ -327,7 +327,7 @@ static int start_forward(mms_t *m, long halves, char *resp, size_t len)
  * parameter. */
 typedef struct {
     mms_t *m;
-    struct sim_s *s;
+    struct sim_state_s *s;
     char **tok;
     int arg, param;
     char *resp;
@@ -514,7 +514,7 @@ static const struct {
     { "getStat", cmd_get_stat, 0, 2 },
 };
 
-int mms_execute(mms_t *m, struct sim_s *s, const char *line_in, char *resp, size_t len)
+int mms_execute(mms_t *m, struct sim_state_s *s, const char *line_in, char *resp, size_t len)
 {
     char line[MMS_LINE_MAX + 1], *tok[5];
     resp[0] = '\0';
@@ -666,7 +666,7 @@ static int child_gone(mms_t *m)
     return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' %s", m->o.command, how_it_ended(m, how, sizeof how));
 }
 
-static void trace(const mms_t *m, const struct sim_s *s, const char *dir, const char *text)
+static void trace(const mms_t *m, const struct sim_state_s *s, const char *dir, const char *text)
 {
     static char esc[IO_ESCAPE_MAX(MMS_LINE_MAX)]; /* the algorithm's line: escaped (sim/io/escape.h) */
     if (!m->o.trace) return;
@@ -751,7 +751,7 @@ enum { GO_ON = 2 };
 /* An idle algorithm (MOVE_WAIT): the clock runs, the robot at rest, until
  * Reset (--mms-reset-at, or the viewer's Reset button sets was_reset);
  * then wasReset's answer, "true". */
-static int wait_reset(mms_t *m, struct sim_s *s)
+static int wait_reset(mms_t *m, struct sim_state_s *s)
 {
     if (m->o.reset_at_s >= 0 && sim_time_s(s) >= m->o.reset_at_s) {
         m->was_reset = 1; /* the Reset button, pressed once */
@@ -767,7 +767,7 @@ static int wait_reset(mms_t *m, struct sim_s *s)
 /* A move under way: MMS_STEP while it runs; when it ends, its statistics
  * and its answer ("ack" or "crash"), or the end of the run if the robot is
  * stuck. */
-static int move_done(mms_t *m, struct sim_s *s)
+static int move_done(mms_t *m, struct sim_state_s *s)
 {
     uint8_t st = mouse_cmd_status();
     if (st == MOUSE_CMD_BUSY && sim_time_s(s) - m->move_start_s > MMS_MOVE_MAX_S) {
@@ -815,7 +815,7 @@ static int move_done(mms_t *m, struct sim_s *s)
     return GO_ON;
 }
 
-int mms_service(mms_t *m, struct sim_s *s)
+int mms_service(mms_t *m, struct sim_state_s *s)
 {
     char line[MMS_LINE_MAX + 1], resp[64];
     forward_stderr(m);

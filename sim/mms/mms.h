@@ -38,7 +38,7 @@
 #include "maze.h"
 #include "guard.h"
 
-struct sim_s;
+struct sim_state_s;
 
 #define MMS_LINE_MAX 1024         /* bytes per command line */
 #define MMS_FLOOD_LIMIT 1000000L  /* commands in a row without a move */
@@ -130,8 +130,8 @@ void mms_init(mms_t *m, const mms_opts_t *o, const maze_t *truth);
 int mms_start(mms_t *m, const mms_opts_t *o, const maze_t *truth, char *err, size_t len);
 /* Serve commands until a move needs the simulation to step (MMS_STEP: step
  * once, fw_tick, fw_loop, call again) or the run is over (MMS_END: m->reason,
- * m->message). s is the running simulation (struct sim_s). */
-int mms_service(mms_t *m, struct sim_s *s);
+ * m->message). s is the running simulation (struct sim_state_s). */
+int mms_service(mms_t *m, struct sim_state_s *s);
 /* End the algorithm: its guardian kills (SIGKILL) and reaps every process
  * the algorithm started (its group, and whatever left it: background
  * processes of a shell that has exited, new sessions, orphans); the rest of
@@ -141,7 +141,7 @@ void mms_stop(mms_t *m);
  * none. Returns 1 if a move was started or an idle wasReset waits for the
  * reset time (the answer comes later). Exposed for the unit tests; needs the
  * firmware in command mode only for moves. */
-int mms_execute(mms_t *m, struct sim_s *s, const char *line, char *resp, size_t len);
+int mms_execute(mms_t *m, struct sim_state_s *s, const char *line, char *resp, size_t len);
 /* The JSON object of the run's mms part (a json_t *, jansson). */
 void *mms_json(const mms_t *m);
 /* 1 if the algorithm failed (the run's exit code is then 3). */

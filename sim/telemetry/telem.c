@@ -107,7 +107,7 @@ static int publish_live(telem_t *t, const char *channel, int len)
 }
 
 /* The true maze, the seed and the config, once at the start. */
-static void pub_maze(telem_t *t, const sim_t *s, const char *path)
+static void pub_maze(telem_t *t, const sim_state_t *s, const char *path)
 {
     static int8_t walls[MAZE_MAX_CELLS];
     static int16_t goals[MAZE_MAX_CELLS];
@@ -196,7 +196,7 @@ static int open_log(telem_t *t, const char *path, char *err, size_t errlen)
     return 0;
 }
 
-int telem_open(telem_t *t, const telem_opts_t *o, const sim_t *s, char *err, size_t errlen)
+int telem_open(telem_t *t, const telem_opts_t *o, const sim_state_t *s, char *err, size_t errlen)
 {
     double hz = o->rate_hz > 0 ? o->rate_hz : TELEM_RATE_HZ;
     t->lcm = NULL;
@@ -282,11 +282,11 @@ static void emit(telem_t *t, const char *channel, int64_t utime, int len)
     t->published++;
 }
 
-static int64_t utime_of(const telem_t *t, const sim_t *s) { return (int64_t)(s->step * t->step_us); }
+static int64_t utime_of(const telem_t *t, const sim_state_t *s) { return (int64_t)(s->step * t->step_us); }
 
 /* Every sensor component's latest values (sim_part_values: no noise
  * drawn), the battery and the emitter groups. */
-static void pub_parts(telem_t *t, const sim_t *s, int64_t ut)
+static void pub_parts(telem_t *t, const sim_state_t *s, int64_t ut)
 {
     static mmlcm_part_t part[ROBOT_MAX_PARTS];
     static double values[ROBOT_MAX_PARTS][SENSOR_VALUES];
@@ -312,7 +312,7 @@ static void pub_parts(telem_t *t, const sim_t *s, int64_t ut)
     emit(t, "MM_PARTS", ut, mmlcm_parts_t_encode(t->buf, 0, TELEM_BUF_BYTES, &m));
 }
 
-static void pub_fast(telem_t *t, const sim_t *s)
+static void pub_fast(telem_t *t, const sim_state_t *s)
 {
     int64_t ut = utime_of(t, s);
     mmlcm_pose_t p;
@@ -345,7 +345,7 @@ static void pub_fast(telem_t *t, const sim_t *s)
     t->last_fast = s->step;
 }
 
-static void pub_race(telem_t *t, const sim_t *s)
+static void pub_race(telem_t *t, const sim_state_t *s)
 {
     const race_t *rc = &s->race;
     double now = sim_time_s(s);
@@ -364,7 +364,7 @@ static void pub_race(telem_t *t, const sim_t *s)
 }
 
 /* The link's counters; utilisation over the steps since the last MM_LINK. */
-static void pub_link(telem_t *t, const sim_t *s)
+static void pub_link(telem_t *t, const sim_state_t *s)
 {
     const link_t *l = t->link;
     mmlcm_link_t m;
@@ -387,7 +387,7 @@ static void pub_link(telem_t *t, const sim_t *s)
 }
 
 /* Lap starts and ends since the last step. */
-static void pub_events(telem_t *t, const sim_t *s)
+static void pub_events(telem_t *t, const sim_state_t *s)
 {
     const race_t *rc = &s->race;
     mmlcm_race_event_t e;
@@ -473,7 +473,7 @@ static void pub_belief(telem_t *t)
     t->belief_seq = b->seq;
 }
 
-void telem_step(telem_t *t, const sim_t *s)
+void telem_step(telem_t *t, const sim_state_t *s)
 {
     /* the belief reported during the last firmware loop comes first: its
      * time is the previous step's, so the log stays in time order */
@@ -484,7 +484,7 @@ void telem_step(telem_t *t, const sim_t *s)
     if (t->link && s->step % t->link_steps == 0) pub_link(t, s);
 }
 
-void telem_finish(telem_t *t, const sim_t *s)
+void telem_finish(telem_t *t, const sim_state_t *s)
 {
     if (hal_sim_belief()->seq != t->belief_seq) pub_belief(t);
     pub_events(t, s);

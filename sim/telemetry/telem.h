@@ -85,12 +85,12 @@ typedef struct {
 
 /* Open the outputs for a run of simulation s (its step sets the periods)
  * and publish MM_MAZE. Returns 0, or -1 with one line in err (nothing is left open or written). */
-int telem_open(telem_t *t, const telem_opts_t *o, const sim_t *s, char *err, size_t errlen);
+int telem_open(telem_t *t, const telem_opts_t *o, const sim_state_t *s, char *err, size_t errlen);
 /* After every physics step (and the firmware's tick and loop, if any). */
-void telem_step(telem_t *t, const sim_t *s);
+void telem_step(telem_t *t, const sim_state_t *s);
 /* At the end of the run: the last state of every periodic channel and any
  * belief not yet sent. */
-void telem_finish(telem_t *t, const sim_t *s);
+void telem_finish(telem_t *t, const sim_state_t *s);
 /* Close the outputs; the log's temporary becomes the log. Returns 0, or -1
  * with one line in err if a log write failed (the temporary is removed, an
  * older log at the path stays) or a tcpq hub was lost during the run. */

@@ -4,7 +4,7 @@
 
 #include <math.h>
 
-bench_t bench; /* one at a time; maze_t and sim_t are large */
+bench_t bench; /* one at a time; maze_t and sim_state_t are large */
 
 void bench_field(maze_t *m, uint8_t w, uint8_t h, uint8_t sx)
 {
@@ -27,6 +27,12 @@ void bench_corridor(maze_t *m, uint8_t n)
     for (uint8_t x = 0; x + 1 < n; x++) maze_set_wall(m, maze_cell(m, x, 0), MAZE_EAST, MAZE_WALL_OPEN);
     m->start = maze_cell(m, 0, 0);
     m->start_heading = MAZE_EAST;
+}
+
+int bench_init(const simcfg_t *c)
+{
+    sim_model_build(&bench.model, c, 1);
+    return sim_init(&bench.sim, &bench.model, &bench.maze, 1);
 }
 
 long bench_steps(const simcfg_t *c, double seconds) { return lround(seconds / c->step_s); }

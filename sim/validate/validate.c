@@ -15,19 +15,18 @@
 #define DATASHEET "Pololu micro metal gearmotors datasheet Rev 2.0 (May 2018), 30:1 LP 6V"
 #define ROBOT_MOTOR "the robot file's [motor.left] figures at rated_v"
 
-static sim_t *open_bench(const simcfg_t *c, int lift, int lock)
+static sim_state_t *open_bench(const simcfg_t *c, int lift, int lock)
 {
     if (lift || lock) bench_field(&bench.maze, 3, 3, 1);
-    if (sim_init(&bench.sim, c, &bench.maze, 1) != 0) return NULL;
+    if (bench_init(c) != 0) return NULL;
     if (lift) world_lift(bench.sim.world, lock);
     return &bench.sim;
 }
 
-static void run_steps(sim_t *s, long n)
+static void run_steps(sim_state_t *s, long n)
 {
-    for (long i = 0; i < n; i++) sim_step(s);
+    for (long i = 0; i < n; i++) sim_step(s->model, s);
 }
-
 
 /* ---- the motor on the bench (robot lifted) ---- */
 
@@ -40,12 +39,12 @@ typedef struct {
 static operating_t loaded(const simcfg_t *c, double load_nm, double settle_s)
 {
     operating_t op = { 0, 0, 0 };
-    sim_t *s = open_bench(c, 1, 0);
+    sim_state_t *s = open_bench(c, 1, 0);
     if (!s) return op;
     s->cmd[0] = s->cmd[1] = MOTOR_CMD_MAX;
     for (long i = 0; i < bench_steps(c, settle_s); i++) {
         world_brake(s->world, load_nm);
-        sim_step(s);
+        sim_step(s->model, s);
     }
     op.rpm = world_wheel_rate(s->world, WORLD_LEFT) * RPM_PER_RAD_S;
     op.current_a = s->motor[WORLD_LEFT].i_a;
@@ -58,7 +57,7 @@ static operating_t loaded(const simcfg_t *c, double load_nm, double settle_s)
 static operating_t stalled(const simcfg_t *c, double t_s)
 {
     operating_t op = { 0, 0, 0 };
-    sim_t *s = open_bench(c, 1, 1);
+    sim_state_t *s = open_bench(c, 1, 1);
     if (!s) return op;
     s->cmd[0] = s->cmd[1] = MOTOR_CMD_MAX;
     run_steps(s, bench_steps(c, t_s));
@@ -73,7 +72,7 @@ static operating_t stalled(const simcfg_t *c, double t_s)
 static operating_t dyno(const simcfg_t *c, double w_rad_s, double t_s)
 {
     operating_t op = { 0, 0, 0 };
-    sim_t *s = open_bench(c, 1, 0);
+    sim_state_t *s = open_bench(c, 1, 0);
     if (!s) return op;
     world_dyno(s->world, w_rad_s);
     s->cmd[0] = s->cmd[1] = MOTOR_CMD_MAX;
@@ -133,7 +132,7 @@ static double reference_response(const simcfg_t *c, double t_s, double *current_
 
 static double lifted_speed_at(const simcfg_t *c, double t_s)
 {
-    sim_t *s = open_bench(c, 1, 0);
+    sim_state_t *s = open_bench(c, 1, 0);
     if (!s) return 0;
     s->cmd[0] = s->cmd[1] = MOTOR_CMD_MAX;
     run_steps(s, bench_steps(c, t_s));
@@ -145,13 +144,13 @@ static double lifted_speed_at(const simcfg_t *c, double t_s)
 /* Encoder counts over ten wheel turns of the lifted robot, per turn. */
 static double counts_per_rev(const simcfg_t *c)
 {
-    sim_t *s = open_bench(c, 1, 0);
+    sim_state_t *s = open_bench(c, 1, 0);
     if (!s) return 0;
     s->cmd[0] = s->cmd[1] = 300;
     double turned = 0, last = world_wheel_angle(s->world, WORLD_LEFT);
     int32_t c0 = s->encoder[WORLD_LEFT].count;
     while (turned < 20 * M_PI && s->step < 1000000) {
-        sim_step(s);
+        sim_step(s->model, s);
         double a = world_wheel_angle(s->world, WORLD_LEFT);
         turned += remainder(a - last, 2 * M_PI);
         last = a;
@@ -167,7 +166,7 @@ static double counts_per_rev(const simcfg_t *c)
 static double creep_mm_per_min(const simcfg_t *c, double minutes)
 {
     bench_field(&bench.maze, 3, 3, 1);
-    sim_t *s = open_bench(c, 0, 0);
+    sim_state_t *s = open_bench(c, 0, 0);
     if (!s) return 1e9;
     double x0, y0, h, x, y;
     run_steps(s, bench_steps(c, 1.0)); /* settle on the floor */
@@ -183,13 +182,13 @@ static double creep_mm_per_min(const simcfg_t *c, double minutes)
 static double veer_mm_4m(const simcfg_t *c)
 {
     bench_field(&bench.maze, 32, 32, 16);
-    sim_t *s = open_bench(c, 0, 0);
+    sim_state_t *s = open_bench(c, 0, 0);
     if (!s) return 1e9;
     double x0, y0, h, x, y;
     world_pose(s->world, &x0, &y0, &h);
     s->cmd[0] = s->cmd[1] = MOTOR_CMD_MAX;
     do {
-        sim_step(s);
+        sim_step(s->model, s);
         world_pose(s->world, &x, &y, &h);
     } while (y - y0 < 4.0 && s->step < 100000);
     sim_free(s);
@@ -226,14 +225,14 @@ static tof_stats_t tof_facing(const simcfg_t *c, double true_m, double seconds)
     int f = front_tof(c);
     double sensor_y = c->part[robot_part_of_kind(c, "tof", (unsigned)f)].y_m;
     bench_corridor(&bench.maze, 16);
-    sim_t *s = open_bench(c, 0, 0);
+    sim_state_t *s = open_bench(c, 0, 0);
     if (!s) return st;
     double face = 16 * c->cell_m - c->wall_thick_m / 2;
     world_place(s->world, face - sensor_y - true_m, 0.5 * c->cell_m, 0.0, NULL);
     double sum = 0, sum2 = 0;
     uint32_t seen = s->tof_count[f];
     for (long i = 0; i < bench_steps(c, seconds); i++) {
-        sim_step(s);
+        sim_step(s->model, s);
         if (s->tof_count[f] == seen) continue;
         seen = s->tof_count[f];
         tof_reading_t r = s->tof_last[f];
@@ -259,12 +258,12 @@ static tof_stats_t tof_facing(const simcfg_t *c, double true_m, double seconds)
 static double tunnelling_mm(const simcfg_t *c)
 {
     bench_corridor(&bench.maze, 3);
-    sim_t *s = open_bench(c, 0, 0);
+    sim_state_t *s = open_bench(c, 0, 0);
     if (!s) return 1e9;
     double face = 3 * c->cell_m - c->wall_thick_m / 2, worst = 0;
     s->cmd[0] = s->cmd[1] = MOTOR_CMD_MAX;
     for (long i = 0; i < bench_steps(c, 3.0); i++) {
-        sim_step(s);
+        sim_step(s->model, s);
         for (int k = 0; k < 8; k++) { /* the body's corners: a robot that pitches leads with an edge */
             double p[3] = { (k & 1 ? 0.5 : -0.5) * c->body_w_m, (k & 2 ? 0.5 : -0.5) * c->body_l_m,
                             c->body_clearance_m + (k & 4 ? c->body_h_m : 0) }, q[3];

@@ -26,7 +26,7 @@ static const char *name_of(int n, const char *fmt, const char *sensor)
 }
 
 /* The command for v_volt on the motor with the battery as it is now. */
-static int volt_cmd(const sim_t *s, double v_volt)
+static int volt_cmd(const sim_state_t *s, double v_volt)
 {
     double b = sim_battery_v(s);
     long cmd = b > 0 ? lround(v_volt / b * MOTOR_CMD_MAX) : 0;
@@ -45,8 +45,8 @@ static step_t voltage_step(const simcfg_t *c, double v_volt, int rot)
 {
     step_t r = { 0, 0 };
     bench_field(&bench.maze, 10, 10, 4);
-    sim_t *s = &bench.sim;
-    if (sim_init(s, c, &bench.maze, 1) != 0) return r;
+    sim_state_t *s = &bench.sim;
+    if (bench_init(c) != 0) return r;
     if (rot) world_place(s->world, 4.5 * c->cell_m, 4.5 * c->cell_m, M_PI / 2, NULL); /* the field's middle */
     long n = bench_steps(c, 1.2), tail = bench_steps(c, 0.2);
     static double trace[20000];
@@ -54,7 +54,7 @@ static step_t voltage_step(const simcfg_t *c, double v_volt, int rot)
     for (long i = 0; i < n; i++) {
         s->cmd[WORLD_LEFT] = volt_cmd(s, rot ? -v_volt : v_volt);
         s->cmd[WORLD_RIGHT] = volt_cmd(s, v_volt);
-        sim_step(s);
+        sim_step(s->model, s);
         /* as the robot measures it: by its encoders (wheel turns x its calibrated wheel
          * radius), turning rate over its track (mazerunner-core: MOUSE_RADIUS) */
         double vl = world_wheel_rate(s->world, WORLD_LEFT) * c->wheel_left_d_m / 2;
@@ -118,9 +118,9 @@ static int motion_checks(const simcfg_t *run, validate_check_t *v, int n)
 static void counts_500mm(const simcfg_t *c, double counts[2])
 {
     bench_field(&bench.maze, 3, 8, 1);
-    sim_t *s = &bench.sim;
+    sim_state_t *s = &bench.sim;
     counts[0] = counts[1] = 0;
-    if (sim_init(s, c, &bench.maze, 1) != 0) return;
+    if (bench_init(c) != 0) return;
     double x0, y0, h0, x, y, h;
     world_pose(s->world, &x0, &y0, &h0);
     int32_t e0[2] = { s->encoder[0].count, s->encoder[1].count };
@@ -130,7 +130,7 @@ static void counts_500mm(const simcfg_t *c, double counts[2])
         double err = remainder(h - h0, 2 * M_PI), base = 0.6, k = 20.0; /* V, V/rad */
         s->cmd[WORLD_LEFT] = volt_cmd(s, base + k * err);
         s->cmd[WORLD_RIGHT] = volt_cmd(s, base - k * err);
-        sim_step(s);
+        sim_step(s->model, s);
     }
     world_pose(s->world, &x, &y, &h);
     double scale = 0.5 / hypot(x - x0, y - y0); /* the last step's overshoot, < 0.2 mm */
@@ -154,7 +154,7 @@ static int count_checks(const simcfg_t *c, validate_check_t *v, int n)
 }
 
 /* Sensor i's mean lit-minus-dark over 64 samples, the robot where it is. */
-static double lit_minus_dark(sim_t *s, unsigned i)
+static double lit_minus_dark(sim_state_t *s, unsigned i)
 {
     const robot_part_t *p = &s->model->cfg->part[robot_part_of_kind(s->model->cfg, "ir", i)];
     unsigned g = (unsigned)((const ir_part_spec_t *)p->spec)->emitter;
@@ -176,12 +176,12 @@ static double lit_minus_dark(sim_t *s, unsigned i)
  *   the body's rear against the cell's south wall, its north wall ahead. */
 static int ir_calibration(const simcfg_t *c, validate_check_t *v, int n)
 {
-    sim_t *s = &bench.sim;
+    sim_state_t *s = &bench.sim;
     unsigned nir = robot_count(c, "ir");
     for (int pose = 0; pose < 2; pose++) {
         if (pose == 0) bench_field(&bench.maze, 1, 4, 0);
         else bench_field(&bench.maze, 3, 1, 1);
-        if (sim_init(s, c, &bench.maze, 1) != 0) return n;
+        if (bench_init(c) != 0) return n;
         double y = pose == 0 ? 1.5 * c->cell_m : c->wall_thick_m / 2 + c->body_l_m / 2;
         world_place(s->world, pose == 0 ? 0.5 * c->cell_m : 1.5 * c->cell_m, y, M_PI / 2, NULL);
         for (unsigned i = 0; i < nir; i++) {
@@ -209,9 +209,9 @@ static int ir_model_checks(const simcfg_t *c, validate_check_t *v, int n)
     if (k < 0) return n;
     const robot_part_t *p = &c->part[k];
     const ir_spec_t *m = &((const ir_part_spec_t *)p->spec)->model;
-    sim_t *s = &bench.sim;
+    sim_state_t *s = &bench.sim;
     bench_corridor(&bench.maze, 4);
-    if (sim_init(s, c, &bench.maze, 1) != 0) return n;
+    if (bench_init(c) != 0) return n;
     double face = 4 * c->cell_m - c->wall_thick_m / 2, d = 0.12;
     /* heading so the sensor looks east: its yaw off the robot's forward */
     double h = -p->yaw_deg * M_PI / 180, ch = cos(h - M_PI / 2), sh = sin(h - M_PI / 2);
@@ -239,12 +239,12 @@ static int gyro_checks(const simcfg_t *c, validate_check_t *v, int n)
     if (k < 0) return n;
     const gyro_spec_t *g = (const gyro_spec_t *)c->part[k].spec;
     bench_field(&bench.maze, 3, 3, 1);
-    sim_t *s = &bench.sim;
-    if (sim_init(s, c, &bench.maze, 1) != 0) return n;
+    sim_state_t *s = &bench.sim;
+    if (bench_init(c) != 0) return n;
     double sum = 0, sum2 = 0, prev = NAN;
     long m = 0;
     for (long i = 0; i < bench_steps(c, 10.0); i++) {
-        sim_step(s);
+        sim_step(s->model, s);
         double r = sim_gyro_rad_s(s) * DEG_PER_RAD;
         if (r == prev) continue; /* a held sample */
         prev = r;

@@ -31,7 +31,7 @@ struct report {
     char text[MAZE_MAX_CELLS][12];
 };
 
-report_t *report_new(const sim_t *s)
+report_t *report_new(const sim_state_t *s)
 {
     report_t *r = calloc(1, sizeof *r);
     if (!r) return NULL;
@@ -58,7 +58,7 @@ void report_set_cells(report_t *r, const char *colours, const char *texts, size_
     }
 }
 
-void report_step(report_t *r, const sim_t *s)
+void report_step(report_t *r, const sim_state_t *s)
 {
     if (s->step % r->every) return;
     if (r->n == r->cap) {
@@ -289,7 +289,7 @@ static void draw_walls(canvas_t *c, const layout_t *L, const report_t *r, const 
 
 /* The trajectory coloured by speed, the last lap thicker; the robot's last
  * position as a dot. */
-static void draw_trajectory(canvas_t *c, const layout_t *L, const report_t *r, const sim_t *s)
+static void draw_trajectory(canvas_t *c, const layout_t *L, const report_t *r, const sim_state_t *s)
 {
     double cp = L->cp, cell_m = r->cell_m;
     const race_t *rc = &s->race;
@@ -328,7 +328,7 @@ static void draw_trajectory(canvas_t *c, const layout_t *L, const report_t *r, c
 }
 
 /* The text panel: title, lap table, totals, legend, speed scale. */
-static void draw_panel(canvas_t *c, const layout_t *L, const report_t *r, const sim_t *s, const maze_t *learned,
+static void draw_panel(canvas_t *c, const layout_t *L, const report_t *r, const sim_state_t *s, const maze_t *learned,
                        const solve_path_t *path, const char *title)
 {
     const race_t *rc = &s->race;
@@ -373,7 +373,7 @@ static void draw_panel(canvas_t *c, const layout_t *L, const report_t *r, const 
     c_text(c, bx + bw + 8, ty, C_TEXT, buf);
 }
 
-static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_t *s, const maze_t *learned,
+static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_state_t *s, const maze_t *learned,
                  const solve_path_t *path, const char *title)
 {
     c_rect(c, 0, 0, L->w, L->h, C_BG);
@@ -383,7 +383,7 @@ static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_t 
     draw_panel(c, L, r, s, learned, path, title);
 }
 
-static int layout_make(layout_t *L, const report_t *r, const sim_t *s, const char *title)
+static int layout_make(layout_t *L, const report_t *r, const sim_state_t *s, const char *title)
 {
     const maze_t *m = r->maze;
     int side = m->width > m->height ? m->width : m->height;
@@ -421,7 +421,7 @@ static int layout_make(layout_t *L, const report_t *r, const sim_t *s, const cha
 }
 
 /* The JSON file into f: 0, or -1. */
-static int write_json(const report_t *r, const sim_t *s, const solve_path_t *final, FILE *f, const char *png,
+static int write_json(const report_t *r, const sim_state_t *s, const solve_path_t *final, FILE *f, const char *png,
                       const char *svg, const char *title)
 {
     const race_t *rc = &s->race;
@@ -444,7 +444,7 @@ static int write_json(const report_t *r, const sim_t *s, const solve_path_t *fin
 }
 
 /* The three files' temporaries written and closed: 0, or -1 with one line in err. */
-static int write_three(outfile_t *o, const report_t *r, const sim_t *s, const maze_t *learned,
+static int write_three(outfile_t *o, const report_t *r, const sim_state_t *s, const maze_t *learned,
                        const solve_path_t *path, const char *title, char *err, size_t errlen)
 {
     layout_t L;
@@ -478,7 +478,7 @@ static int write_three(outfile_t *o, const report_t *r, const sim_t *s, const ma
     return rc;
 }
 
-int report_write(const report_t *r, const sim_t *s, const maze_t *learned, const maze_t *path_on, const char *png_path,
+int report_write(const report_t *r, const sim_state_t *s, const maze_t *learned, const maze_t *path_on, const char *png_path,
                  const char *title, char *err, size_t errlen)
 {
     static solve_path_t best;

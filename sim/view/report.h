@@ -18,10 +18,10 @@
 typedef struct report report_t;
 
 /* Start recording the run of s (already initialised). NULL out of memory. */
-report_t *report_new(const sim_t *s);
+report_t *report_new(const sim_state_t *s);
 void report_free(report_t *r);
 /* Call after every sim_step. */
-void report_step(report_t *r, const sim_t *s);
+void report_step(report_t *r, const sim_state_t *s);
 
 /* Cell colours and texts to draw (an mms algorithm's setColor/setText):
  * colours[k] is an mms colour letter (kbacgorwyBCAGRY, 0 = none) and
@@ -37,7 +37,7 @@ void report_set_cells(report_t *r, const char *colours, const char *texts, size_
  * JSON's final_path_cells is null). title is one line of text (maze, seed,
  * driver). Returns 0, or -1 with one line in err; nothing is left half
  * written. */
-int report_write(const report_t *r, const sim_t *s, const maze_t *learned, const maze_t *path_on, const char *png_path,
+int report_write(const report_t *r, const sim_state_t *s, const maze_t *learned, const maze_t *path_on, const char *png_path,
                  const char *title, char *err, size_t errlen);
 
 /* The .svg / .json path beside png_path, into out. */

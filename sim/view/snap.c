@@ -12,7 +12,7 @@ static int is_ir(const simcfg_t *c, int i) { return !strcmp(c->part[i].kind->nam
 /* The IR sensor i's beam reach (its model's max_m). */
 static double ir_max_m(const simcfg_t *c, int i) { return ((const ir_part_spec_t *)c->part[i].spec)->model.max_m; }
 
-void snap_from_sim(snap_t *out, const sim_t *s)
+void snap_from_sim(snap_t *out, const sim_state_t *s)
 {
     const simcfg_t *c = s->model->cfg;
     memset(out, 0, sizeof *out);

@@ -5,7 +5,7 @@
  * run's const model (model.h), a snapshot and the maze; they never read
  * the ODE world.
  *
- * A live run fills one from its sim_t before each frame (snap_from_sim:
+ * A live run fills one from its sim_state_t before each frame (snap_from_sim:
  * the world's own pose, rays and posts); a replay fills one from its log
  * (replay.h: the logged pose with snap_place, which casts the rays
  * against the maze's geometry with snap_maze_ray). */
@@ -43,7 +43,7 @@ typedef struct {
 /* The live run s now: its world's pose, wheels, sensor frames and rays
  * (world_ray_normal: no noise drawn, no state changed), emitters, post,
  * timers and time. */
-void snap_from_sim(snap_t *out, const sim_t *s);
+void snap_from_sim(snap_t *out, const sim_state_t *s);
 
 /* The pose part of a snapshot for a robot standing level on the floor of
  * maze m (model's config) with its body centre over (x_m, y_m) facing

@@ -37,7 +37,7 @@ struct view {
     int dragging;
     double drag_x, drag_y;
     char status[96];
-    sim_t *sim;              /* the simulation being shown (for callbacks); NULL in a replay */
+    sim_state_t *sim;              /* the simulation being shown (for callbacks); NULL in a replay */
     replay_t *rp;            /* a log replayed (mmview), or NULL */
     double rp_t;             /* replay time, s */
     int rp_drag;             /* the slider is being dragged */
@@ -130,7 +130,7 @@ static void replay_step(view_t *v, int dir)
     view_seek(v, replay_next_s(v->rp, v->rp_t, dir));
 }
 
-void view_button(view_t *v, sim_t *s, int button)
+void view_button(view_t *v, sim_state_t *s, int button)
 {
     if (v->rp) { /* replay: the run controls drive the log's clock */
         switch (button) {
@@ -240,7 +240,7 @@ void view_set_board(view_t *v, view_board_fill_t *fill, void *ctx)
     memset(&v->board, 0, sizeof v->board);
 }
 
-int view_click(view_t *v, sim_t *s, double x, double y)
+int view_click(view_t *v, sim_state_t *s, double x, double y)
 {
     if (s) v->sim = s;
     if (v->rp && hud_slider_hit(v->o.width, v->o.height, x, y)) {
@@ -331,7 +331,7 @@ int view_connect_request(view_t *v, const char **port, long *baud)
 
 void view_set_status(view_t *v, const char *text) { snprintf(v->status, sizeof v->status, "%s", text ? text : ""); }
 
-void view_key(view_t *v, sim_t *s, int key)
+void view_key(view_t *v, sim_state_t *s, int key)
 {
     if (v->editing >= 0) { /* typing in a field: the characters come through view_char */
         char *buf = v->editing == HUD_FIELD_PORT ? v->port : v->baud;
@@ -464,7 +464,7 @@ void view_free(view_t *v)
 }
 
 /* One frame of the live run s, or of the replay at its time (s NULL). */
-static void draw(view_t *v, sim_t *s)
+static void draw(view_t *v, sim_state_t *s)
 {
     int fw, fh;
     glfwGetFramebufferSize(v->win, &fw, &fh);
@@ -506,14 +506,14 @@ static void draw(view_t *v, sim_t *s)
     hud_draw(&snap, &in, v->o.width, v->o.height);
 }
 
-static void frame(view_t *v, sim_t *s)
+static void frame(view_t *v, sim_state_t *s)
 {
     draw(v, s);
     glfwSwapBuffers(v->win);
     v->next_frame = wall_now() + FRAME_S;
 }
 
-int view_step(view_t *v, sim_t *s)
+int view_step(view_t *v, sim_state_t *s)
 {
     if (!v->win) return 0;
     if (v->sim != s) {
@@ -552,7 +552,7 @@ int view_step(view_t *v, sim_t *s)
     }
 }
 
-void view_hold(view_t *v, sim_t *s)
+void view_hold(view_t *v, sim_state_t *s)
 {
     if (!v->win) return;
     v->sim = s;
@@ -587,7 +587,7 @@ void view_play(view_t *v)
     v->closed = 1;
 }
 
-int view_screenshot(view_t *v, sim_t *s, const char *path, char *err, size_t errlen)
+int view_screenshot(view_t *v, sim_state_t *s, const char *path, char *err, size_t errlen)
 {
     if (!v->win) {
         snprintf(err, errlen, "%s: no viewer window", path);

@@ -31,9 +31,9 @@
  *   Left / Right           one second back / forward; Home / End
  * (P or "Toggle post" shows or hides the centre post in the replay.)
  * The UI actions work without a window too (view_button, view_click,
- * view_key), which is how they are tested; their sim_t is NULL in a
+ * view_key), which is how they are tested; their sim_state_t is NULL in a
  * replay. Each frame is drawn from a snapshot (snap.h): a live run's
- * taken from its sim_t just before the frame. */
+ * taken from its sim_state_t just before the frame. */
 #ifndef VIEW_H
 #define VIEW_H
 
@@ -68,13 +68,13 @@ int view_open(view_t *v, int visible, char *err, size_t errlen);
 void view_free(view_t *v);
 
 /* Live: after every sim_step. Returns 1 once the window has been closed. */
-int view_step(view_t *v, sim_t *s);
+int view_step(view_t *v, sim_state_t *s);
 /* After the run: show the final state until the window is closed. */
-void view_hold(view_t *v, sim_t *s);
+void view_hold(view_t *v, sim_state_t *s);
 /* Draw one frame of s (a replay's: NULL; window opened hidden or not) and
  * write it as PNG of the window's size. Returns 0, or -1 with one line in
  * err. */
-int view_screenshot(view_t *v, sim_t *s, const char *path, char *err, size_t errlen);
+int view_screenshot(view_t *v, sim_state_t *s, const char *path, char *err, size_t errlen);
 
 /* HIL at run time: the port and baud typed into the HUD's fields when
  * Connect was pressed (or Enter in a field), once: returns 1 and sets
@@ -112,14 +112,14 @@ void view_seek(view_t *v, double t_s);
 double view_time(const view_t *v);
 
 /* UI actions. */
-void view_button(view_t *v, sim_t *s, int button);             /* HUD_BTN_* */
-int view_click(view_t *v, sim_t *s, double x, double y);       /* the button hit, VIEW_SLIDER, VIEW_FIELD + f, VIEW_BOARD + c, or -1 */
+void view_button(view_t *v, sim_state_t *s, int button);             /* HUD_BTN_* */
+int view_click(view_t *v, sim_state_t *s, double x, double y);       /* the button hit, VIEW_SLIDER, VIEW_FIELD + f, VIEW_BOARD + c, or -1 */
 void view_char(view_t *v, unsigned codepoint);                 /* a typed character (into the field being edited) */
 void view_drag(view_t *v, double x, double y);                 /* mouse moved (slider drag, or orbit after a click on the scene) */
 void view_release(view_t *v);                                  /* mouse button up */
 void view_scroll(view_t *v, double dy);                        /* scroll notches: zoom the current camera */
 const scene_orbit_t *view_orbit(const view_t *v);              /* the current camera's orbit */
-void view_key(view_t *v, sim_t *s, int key);                   /* GLFW_KEY_* */
+void view_key(view_t *v, sim_state_t *s, int key);                   /* GLFW_KEY_* */
 /* An mms run: the floor shows the algorithm's cell colours (mms letters per
  * cell, 0 none) and texts (text_stride bytes per cell; the arrays must
  * outlive the view), and the Reset button (or

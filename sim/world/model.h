@@ -8,7 +8,7 @@
  * and the body's centre of mass after this seed's [asymmetry] and
  * [variation]; the sensors' poses as vectors; the solver and the other
  * word and count keys as integers. Everything that changes during a run
- * is in sim_t (sim.h). */
+ * is in sim_state_t (sim.h). */
 #ifndef MODEL_H
 #define MODEL_H
 

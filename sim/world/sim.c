@@ -1,6 +1,7 @@
 /* sim.c - one run's state stepped through its model (see sim.h). */
 #include "sim.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,7 +16,7 @@ static double start_heading(uint8_t d)
     return a[d & 3];
 }
 
-static sensor_ctx_t ctx(const sim_t *s)
+static sensor_ctx_t ctx(const sim_state_t *s)
 {
     sensor_ctx_t x;
     double v;
@@ -29,7 +30,7 @@ static sensor_ctx_t ctx(const sim_t *s)
 }
 
 /* The sensors' states, each from its kind; ToF sensors also the HAL's. */
-static int parts_init(sim_t *s, uint64_t seed)
+static int parts_init(sim_state_t *s, uint64_t seed)
 {
     const simcfg_t *c = s->model->cfg;
     s->ntof = 0;
@@ -54,7 +55,7 @@ static int parts_init(sim_t *s, uint64_t seed)
 }
 
 /* The HAL's copy of the ToF sensors' state. */
-static void tof_mirror(sim_t *s)
+static void tof_mirror(sim_state_t *s)
 {
     for (int i = 0; i < s->ntof; i++) {
         tof_state_t *t = s->part_state[s->tof_part[i]];
@@ -64,14 +65,12 @@ static void tof_mirror(sim_t *s)
     }
 }
 
-int sim_init(sim_t *s, const simcfg_t *c, const maze_t *m, uint64_t seed)
+int sim_init(sim_state_t *s, const sim_model_t *model, const maze_t *m, uint64_t seed)
 {
-    sim_model_t *model = malloc(sizeof *model);
+    const simcfg_t *c = model->cfg;
     memset(s->part_state, 0, sizeof s->part_state);
     s->world = NULL;
     s->model = model;
-    if (!model) return -1;
-    sim_model_build(model, c, seed);
     double cell = c->cell_m;
     s->maze = m;
     s->seed = seed;
@@ -109,19 +108,17 @@ int sim_init(sim_t *s, const simcfg_t *c, const maze_t *m, uint64_t seed)
     return 0;
 }
 
-void sim_free(sim_t *s)
+void sim_free(sim_state_t *s)
 {
     world_destroy(s->world);
     s->world = NULL;
-    free((void *)s->model); /* sim_init's */
-    s->model = NULL;
     for (int i = 0; i < ROBOT_MAX_PARTS; i++) {
         free(s->part_state[i]);
         s->part_state[i] = NULL;
     }
 }
 
-double sim_time_s(const sim_t *s) { return (double)s->step * s->model->cfg->step_s; }
+double sim_time_s(const sim_state_t *s) { return (double)s->step * s->model->cfg->step_s; }
 
 /* The battery: each motor sees the open-circuit voltage less the other
  * motor's share of the sag (its own is solved in its circuit, motor.c);
@@ -130,7 +127,7 @@ double sim_time_s(const sim_t *s) { return (double)s->step * s->model->cfg->step
  * (v_applied = duty x the supply it saw). */
 static double bridge_in_a(const motor_t *m) { return fabs(m->v_applied * m->i_a) / (m->battery_v > 0 ? m->battery_v : 1); }
 
-static void battery_step(sim_t *s, double dt)
+static void battery_step(sim_state_t *s, double dt)
 {
     double i_in[2] = { bridge_in_a(&s->motor[0]), bridge_in_a(&s->motor[1]) };
     battery_draw(&s->battery, i_in[0] + i_in[1], dt);
@@ -138,9 +135,10 @@ static void battery_step(sim_t *s, double dt)
     for (int i = 0; i < 2; i++) s->motor[i].battery_v = ocv - r * i_in[1 - i];
 }
 
-void sim_step(sim_t *s)
+void sim_step(const sim_model_t *m, sim_state_t *s)
 {
-    double dt = s->model->cfg->step_s;
+    assert(m == s->model);
+    double dt = m->cfg->step_s;
     if (s->diverged) return;
     motor_drive_t d[2];
     for (int i = 0; i < 2; i++) d[i] = motor_drive(&s->motor[i], s->cmd[i], world_wheel_rate(s->world, i), dt);
@@ -155,24 +153,24 @@ void sim_step(sim_t *s)
     battery_step(s, dt);
     sensor_ctx_t x = ctx(s);
     for (int i = 0; i < s->ntof; i++) ((tof_state_t *)s->part_state[s->tof_part[i]])->enabled = s->tof_enabled;
-    for (int i = 0; i < s->model->cfg->nparts; i++)
-        if (s->model->cfg->part[i].kind->step) s->model->cfg->part[i].kind->step(s->part_state[i], &s->model->cfg->part[i], &x);
+    for (int i = 0; i < m->cfg->nparts; i++)
+        if (m->cfg->part[i].kind->step) m->cfg->part[i].kind->step(s->part_state[i], &m->cfg->part[i], &x);
     tof_mirror(s);
     double px, py, h;
     world_pose(s->world, &px, &py, &h);
     race_update(&s->race, sim_time_s(s), px, py);
 }
 
-int sim_ir_count(const sim_t *s) { return (int)robot_count(s->model->cfg, "ir"); }
+int sim_ir_count(const sim_state_t *s) { return (int)robot_count(s->model->cfg, "ir"); }
 
-void sim_emitter_set(sim_t *s, unsigned group, int on)
+void sim_emitter_set(sim_state_t *s, unsigned group, int on)
 {
     if (group < SIM_EMITTER_GROUPS) s->emitter[group] = on != 0;
 }
 
-int sim_emitter(const sim_t *s, unsigned group) { return group < SIM_EMITTER_GROUPS ? s->emitter[group] : 0; }
+int sim_emitter(const sim_state_t *s, unsigned group) { return group < SIM_EMITTER_GROUPS ? s->emitter[group] : 0; }
 
-unsigned sim_ir_read(sim_t *s, unsigned i)
+unsigned sim_ir_read(sim_state_t *s, unsigned i)
 {
     int k = robot_part_of_kind(s->model->cfg, "ir", i);
     if (k < 0) return 0;
@@ -180,7 +178,7 @@ unsigned sim_ir_read(sim_t *s, unsigned i)
     return (unsigned)ir_sample(s->part_state[k], &s->model->cfg->part[k], &x);
 }
 
-int sim_ir_occlude(sim_t *s, int side, double d_m, double dur_s)
+int sim_ir_occlude(sim_state_t *s, int side, double d_m, double dur_s)
 {
     for (int k = 0; k < s->model->cfg->nparts; k++) {
         const robot_part_t *p = &s->model->cfg->part[k];
@@ -193,29 +191,29 @@ int sim_ir_occlude(sim_t *s, int side, double d_m, double dur_s)
     return -1;
 }
 
-int sim_has_gyro(const sim_t *s) { return robot_count(s->model->cfg, "gyro") > 0; }
+int sim_has_gyro(const sim_state_t *s) { return robot_count(s->model->cfg, "gyro") > 0; }
 
-double sim_gyro_rad_s(const sim_t *s)
+double sim_gyro_rad_s(const sim_state_t *s)
 {
     int k = robot_part_of_kind(s->model->cfg, "gyro", 0);
     return k < 0 ? 0.0 : ((const gyro_t *)s->part_state[k])->held_rad_s;
 }
 
-double sim_battery_v(const sim_t *s)
+double sim_battery_v(const sim_state_t *s)
 {
     /* the terminal voltage: the open-circuit voltage less the sag of both motors' input currents */
     double i_in = bridge_in_a(&s->motor[0]) + bridge_in_a(&s->motor[1]);
     return battery_ocv(&s->battery) - s->model->cfg->battery.r_ohm * i_in;
 }
 
-void sim_tof_origin(const sim_t *s, int i, double pos_m[3], double *dir_rad)
+void sim_tof_origin(const sim_state_t *s, int i, double pos_m[3], double *dir_rad)
 {
     double axis[3], left[3], up[3];
     sensor_frame(s->world, &s->model->pose[s->tof_part[i]], pos_m, axis, left, up);
     *dir_rad = atan2(axis[1], axis[0]);
 }
 
-int sim_part_values(const sim_t *s, int i, double v[4])
+int sim_part_values(const sim_state_t *s, int i, double v[4])
 {
     if (i < 0 || i >= s->model->cfg->nparts) return 0;
     sensor_ctx_t x = ctx(s);

@@ -23,8 +23,8 @@
 
 /* A run's state: all that changes as it steps. The robot and world it
  * simulates are the const model it points to. */
-typedef struct sim_s {
-    const sim_model_t *model; /* built by sim_init, freed by sim_free */
+typedef struct sim_state_s {
+    const sim_model_t *model; /* the model it was made from (sim_init's m), never changed or freed here */
     const maze_t *maze;
     uint64_t seed;
     world_t *world;
@@ -47,19 +47,22 @@ typedef struct sim_s {
     uint64_t step;           /* physics steps done */
     int cmd[2];              /* motor commands, -1023..1023 */
     int diverged;            /* the physics diverged (world_sane): sim_step no longer steps */
-} sim_t;
+} sim_state_t;
 
-/* The model of config c (which must outlive the run) for this seed
- * (sim_model_build), and the robot placed in the start cell facing the
- * start heading. Returns 0, or -1 if ODE could not be set up. */
-int sim_init(sim_t *s, const simcfg_t *c, const maze_t *m, uint64_t seed);
-void sim_free(sim_t *s);
-/* One physics step: motor currents from the commands, ODE step, encoders,
- * due ToF readings (staggered by a third of a period each), timers.
- * Once the state is no longer sane (world_sane), it sets diverged and
- * does nothing more: the caller ends the run. */
-void sim_step(sim_t *s);
-double sim_time_s(const sim_t *s);
+/* A run's state for model m (sim_model_build; m and the maze must outlive
+ * the state), the robot placed in the start cell facing the start heading,
+ * the sensors' noise streams seeded from seed. Returns 0, or -1 if ODE
+ * could not be set up. */
+int sim_init(sim_state_t *s, const sim_model_t *m, const maze_t *maze, uint64_t seed);
+/* Release what the state holds (the world, the sensors' states); the model stays the caller's. */
+void sim_free(sim_state_t *s);
+/* One physics step of s through its model m (the one s was made from):
+ * motor currents from the commands, ODE step, encoders, due ToF readings
+ * (staggered by a third of a period each), timers. Once the state is no
+ * longer sane (world_sane), it sets diverged and does nothing more: the
+ * caller ends the run. */
+void sim_step(const sim_model_t *m, sim_state_t *s);
+double sim_time_s(const sim_state_t *s);
 
 /* The robot's other sensors (robot file components). IR sensors
  * count in the robot file's order; emitter groups 0..SIM_EMITTER_GROUPS-1
@@ -67,23 +70,23 @@ double sim_time_s(const sim_t *s);
  * they are (0..1023; 0 past the count). The gyro's z rate (rad/s, CCW
  * positive, as its sample rate holds it; 0 without a gyro) and the
  * battery's terminal voltage (V; 0 without one) are the latest step's. */
-int sim_ir_count(const sim_t *s);
-void sim_emitter_set(sim_t *s, unsigned group, int on);
-int sim_emitter(const sim_t *s, unsigned group);
-unsigned sim_ir_read(sim_t *s, unsigned i);
+int sim_ir_count(const sim_state_t *s);
+void sim_emitter_set(sim_state_t *s, unsigned group, int on);
+int sim_emitter(const sim_state_t *s, unsigned group);
+unsigned sim_ir_read(sim_state_t *s, unsigned i);
 /* An object held d_m in front of the robot's front-facing IR sensor on
  * the left (side 0) or right (1) from now for dur_s: its samples see the
  * object instead of the maze (a hand starting mazerunner-core). 0, or -1
  * if the robot has no such sensor (an IR sensor within 30 degrees of
  * straight ahead, left or right of the centre line). */
-int sim_ir_occlude(sim_t *s, int side, double d_m, double dur_s);
-int sim_has_gyro(const sim_t *s);
-double sim_gyro_rad_s(const sim_t *s);
-double sim_battery_v(const sim_t *s);
+int sim_ir_occlude(sim_state_t *s, int side, double d_m, double dur_s);
+int sim_has_gyro(const sim_state_t *s);
+double sim_gyro_rad_s(const sim_state_t *s);
+double sim_battery_v(const sim_state_t *s);
 /* Where ToF sensor i (0..ntof-1) sits and looks (world, m; heading rad). */
-void sim_tof_origin(const sim_t *s, int i, double pos_m[3], double *dir_rad);
+void sim_tof_origin(const sim_state_t *s, int i, double pos_m[3], double *dir_rad);
 /* Every sensor's latest values for telemetry (no noise drawn, no state
  * changed: a const read): part i's into v, how many (its kind's `units`). */
-int sim_part_values(const sim_t *s, int i, double v[4]);
+int sim_part_values(const sim_state_t *s, int i, double v[4]);
 
 #endif
