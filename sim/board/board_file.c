@@ -176,13 +176,10 @@ static int on_key(void *user, const char *section, const char *key, const char *
 static int fail(bload_t *l, int line, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 static int fail(bload_t *l, int line, const char *fmt, ...)
 {
-    char why[300];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(why, sizeof why, fmt, ap);
+    inifile_verror(l->err, l->errn, l->path, line, fmt, ap);
     va_end(ap);
-    if (line > 0) snprintf(l->err, l->errn, "%s:%d: %s", l->path, line, why);
-    else snprintf(l->err, l->errn, "%s: %s", l->path, why);
     return -1;
 }
 

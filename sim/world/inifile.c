@@ -28,17 +28,24 @@ typedef struct {
     GHashTable *keys;   /* "section\nkey" -> the line that gave it */
 } scan_t;
 
+int inifile_verror(char *err, size_t errlen, const char *name, int line, const char *fmt, va_list ap)
+{
+    char why[300];
+    vsnprintf(why, sizeof why, fmt, ap);
+    if (line > 0) snprintf(err, errlen, "%s:%d: %s", name, line, why);
+    else snprintf(err, errlen, "%s: %s", name, why);
+    return -1;
+}
+
 /* The scan's error at line (printf-style reason); returns -1. */
 static int scan_fail(scan_t *s, int line, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 static int scan_fail(scan_t *s, int line, const char *fmt, ...)
 {
-    char why[300];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(why, sizeof why, fmt, ap);
-    va_end(ap);
-    snprintf(s->err, sizeof s->err, "%s:%d: %s", s->name, line, why);
     s->err_line = line;
+    inifile_verror(s->err, sizeof s->err, s->name, line, fmt, ap);
+    va_end(ap);
     return -1;
 }
 

@@ -19,6 +19,7 @@
 #ifndef INIFILE_H
 #define INIFILE_H
 
+#include <stdarg.h>
 #include <stddef.h>
 
 /* bytes of a line without its CR LF: libinih's line buffer (INI_MAX_LINE,
@@ -42,6 +43,11 @@ typedef struct {
  * in err: "NAME:LINE: reason" (the first error in line order) or "NAME:
  * out of memory". */
 int inifile_parse(const inifile_t *r, const char *text, size_t len, const char *name, char *err, size_t errlen);
+
+/* One error line of a file into err: "NAME:LINE: reason" (LINE <= 0:
+ * "NAME: reason"), the reason printf-style (a va_list). Returns -1. */
+int inifile_verror(char *err, size_t errlen, const char *name, int line, const char *fmt, va_list ap)
+    __attribute__((format(printf, 5, 0)));
 
 /* Read the file at path (a regular file of at most max_bytes: io/infile.h)
  * and parse it as inifile_parse does, named by its path. */
