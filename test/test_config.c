@@ -20,7 +20,7 @@ static void test_defaults_are_the_papers_robot(void **state)
     (void)state;
     config_defaults(&c);
     assert_true(c.cell_m == 0.180 && c.body_w_m == 0.096 && c.body_l_m == 0.120 && c.body_mass_kg == 0.127);
-    assert_true(c.wheel_d_m == 0.032 && c.wheel_x_m == 0.048);
+    assert_true(c.wheel_left_d_m == 0.032 && c.wheel_right_d_m == 0.032 && c.wheel_x_m == 0.048);
     /* the Pololu 30:1 LP 6V datasheet's figures (the motor model derives R, Ke, eta from them), both sides */
     for (int i = 0; i < 2; i++) {
         const drive_spec_t *d = &c.drive[i];

@@ -105,10 +105,9 @@ static void test_robot_file_diameters(void **state)
     (void)state;
     static simcfg_t c;
     config_defaults(&c);
-    /* as a robot file's chassis gives them: each wheel's, and their mean */
+    /* as a robot file's chassis gives them: each wheel's */
     c.wheel_left_d_m -= DIFF_M / 2;
     c.wheel_right_d_m += DIFF_M / 2;
-    c.wheel_d_m = (c.wheel_left_d_m + c.wheel_right_d_m) / 2;
     place_reset_replay(&c);
 }
 

@@ -358,7 +358,7 @@ static simcfg_t bench_robot(const simcfg_t *c)
     b.battery.ocv_v[0] = c->drive[0].rated_v;
     b.battery.r_ohm = 0;
     for (int i = 0; i < 2; i++) b.drive[i].driver_r_ohm = 0;
-    b.wheel_right_d_m = b.wheel_left_d_m;
+    b.wheel_left_d_m = b.wheel_right_d_m = (c->wheel_left_d_m + c->wheel_right_d_m) / 2;
     return b;
 }
 

@@ -36,7 +36,7 @@ static const keytab_t keys[] = {
       "paper's Unity simulator: its TimeOfFlight asset has range 1.0 m, its Arduino library converts with 1.0 m"),
     /* Asymmetries: each 0 by default (a symmetric robot drives straight);
      * set one to see the veer it alone causes. */
-    K("asymmetry", wheel_d_diff_m, 0, -0.005, 0.005, "m", "right wheel diameter minus left (the mean stays robot.wheel_d_m)"),
+    K("asymmetry", wheel_d_diff_m, 0, -0.005, 0.005, "m", "right wheel diameter minus left (the mean stays the robot file's)"),
     K("asymmetry", motor_k_diff_pct, 0, -20, 20, "%", "right motor's constant (back-EMF and torque) relative to the left's, in per cent of the mean"),
     K("asymmetry", tyre_mu_diff, 0, -1, 1, "1", "right tyre's friction minus left's (the mean stays robot.tyre_mu)"),
     K("asymmetry", com_x_m, 0, -0.02, 0.02, "m", "body's centre of mass to the right of the centre line"),

@@ -78,7 +78,7 @@ typedef struct {
      * battery and the sensors. config_load never sets these. */
     double body_w_m, body_l_m, body_h_m, body_mass_kg;
     double body_clearance_m; /* floor to the underside of the body */
-    double wheel_d_m, wheel_w_m, wheel_mass_kg;
+    double wheel_w_m, wheel_mass_kg;
     double wheel_x_m;       /* wheel centre plane from the body's centre line */
     double axle_y_m;        /* axle position along the body, from its centre */
     double caster_r_m, caster_mass_kg, caster_y_m;
@@ -90,7 +90,7 @@ typedef struct {
     double start;           /* ROBOT_START_*: where the robot stands in the start cell */
     double body_com_y_m;    /* the body's centre of mass ahead of its centre (the robot file's) */
     double body_yaw_inertia_kgm2; /* the body's about its vertical axis; 0 = a uniform box's */
-    double wheel_left_d_m, wheel_right_d_m; /* the robot file's; wheel_d_m is their mean */
+    double wheel_left_d_m, wheel_right_d_m; /* the robot file's (the model derives each wheel's radius) */
     drive_spec_t drive[2];  /* WORLD_LEFT, WORLD_RIGHT */
     battery_spec_t battery;
     int nparts;             /* sensors, in the robot file's order */

@@ -27,12 +27,12 @@ static asym_t asymmetry(const simcfg_t *c, uint64_t seed)
     return a;
 }
 
-/* Each wheel from the robot file's mean diameter, its right-minus-left
- * difference and the config's asymmetry; each tyre's friction, at least
+/* Each wheel's radius from the robot file's two diameters (their mean,
+ * and their right-minus-left difference plus the config's asymmetry); each tyre's friction, at least
  * 0.01, its sliding friction in the same ratio to it as the file's. */
 static void wheels(sim_model_t *m, const simcfg_t *c, const asym_t *a)
 {
-    double rw = c->wheel_d_m / 2;
+    double rw = (c->wheel_left_d_m + c->wheel_right_d_m) / 2 / 2; /* the mean diameter's half */
     double diff = a->wheel_d_m + (c->wheel_right_d_m - c->wheel_left_d_m);
     for (int s = 0; s < 2; s++) {
         double half = s == 0 ? -0.5 : 0.5; /* left, right */

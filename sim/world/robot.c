@@ -359,7 +359,6 @@ static int load(simcfg_t *c, const char *text, const char *name, char *err, size
     const inifile_t r = { on_section, on_key, l, "want key = value or [KIND.NAME]" };
     int rc = text ? inifile_parse(&r, text, strlen(text), name, err, errlen) : inifile_load(&r, name, ROBOT_MAX_BYTES, err, errlen);
     if (rc == 0 && missing_keys(l) == 0 && required_parts(l) == 0 && part_checks(l) == 0 && physics_checks(l) == 0) {
-        l->work.wheel_d_m = (l->work.wheel_left_d_m + l->work.wheel_right_d_m) / 2;
         snprintf(l->work.robot_path, sizeof l->work.robot_path, "%s", name);
         *c = l->work;
     } else if (rc == 0) {
