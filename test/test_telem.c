@@ -185,11 +185,11 @@ static void test_memq_messages(void **state)
             sim.race.nlaps = 1;
             sim.race.best = 0;
         }
-        telem_step(&t, &sim);
+        telem_step(&t, &sim, hal_sim_belief());
         if (sim.step == 30) hal_belief(&map, 1, MAZE_EAST, 0); /* as fw_loop would */
         drain(l);
     }
-    telem_finish(&t, &sim);
+    telem_finish(&t, &sim, hal_sim_belief());
     drain(l);
 
     assert_int_equal(seen.pose, 10);
