@@ -65,6 +65,9 @@ plant hal/sim/hal_sim.c '#include "view/view.h"' "hal/sim may not include sim/vi
 plant sim/board/board_adc.c '#include "view/hud.h"' "sim/board may not include sim/view/hud.h"
 plant sim/board/board_motor.c '#include <GL/gl.h>' "sim/board may not include <GL/gl.h> (library gl)"
 plant sim/io/infile.c '#include "world/sim.h"' "sim/io may not include sim/world/sim.h"
+# the observers read the run's state, never the in-process backend's globals
+plant sim/telemetry/telem.c '#include "hal_sim.h"' "sim/telemetry may not include hal/sim/hal_sim.h"
+plant sim/view/view.c '#include "hal_sim.h"' "sim/view may not include hal/sim/hal_sim.h"
 # no two files that call each other: two sources; a header's static inline
 # (a source and its own header are one unit); a macro's body
 plant sim/maze/grid.c 'int planted_a(void) { return mazegen_generate(0, 1, 1, 1); }' \

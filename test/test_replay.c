@@ -74,7 +74,7 @@ static int setup(void **state)
         driver_update(&drv, &sim);
         sim_emitter_set(&sim, 1, sim.step >= 1500 && sim.step < 2500);
         sim_step(sim.model, &sim);
-        telem_step(&tel, &sim);
+        telem_step(&tel, &sim, hal_sim_belief());
         if (sim.step == 1000) hal_belief(&bmap, 1, MAZE_NORTH, 0); /* as fw_loop would */
         if (k < CHECK_AT && sim.step == (uint64_t)llround(CHECK_S[k] * 1000)) {
             snap_from_sim(&live[k].snap, &sim);
@@ -85,7 +85,7 @@ static int setup(void **state)
             k++;
         }
     }
-    telem_finish(&tel, &sim);
+    telem_finish(&tel, &sim, hal_sim_belief());
     end_s = sim_time_s(&sim);
     for (int i = 0; i < 2; i++) live_wheel_r_m[i] = sim.model->wheel_r_m[i];
     int rc = telem_close(&tel, err, sizeof err);

@@ -1,7 +1,8 @@
 /* test_telem.c - the telemetry publisher in-process over memq:// (LCM's
  * in-process provider): which messages go out on which steps, their
  * content decoded with the generated types, lap events, the belief from
- * hal_belief with its cost field and path; the cost field; open errors. */
+ * hal_belief with its cost field and path; a belief handed in by the
+ * caller (NULL: none); the cost field; open errors. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -185,11 +186,11 @@ static void test_memq_messages(void **state)
             sim.race.nlaps = 1;
             sim.race.best = 0;
         }
-        telem_step(&t, &sim);
+        telem_step(&t, &sim, hal_sim_belief());
         if (sim.step == 30) hal_belief(&map, 1, MAZE_EAST, 0); /* as fw_loop would */
         drain(l);
     }
-    telem_finish(&t, &sim);
+    telem_finish(&t, &sim, hal_sim_belief());
     drain(l);
 
     assert_int_equal(seen.pose, 10);
@@ -236,6 +237,49 @@ static void test_memq_messages(void **state)
     mmlcm_parts_t_unsubscribe(l, s7);
     assert_int_equal(telem_close(&t, err, sizeof err), 0);
     hal_sim_attach(NULL);
+    sim_free(&sim);
+}
+
+/* The belief is what the caller hands telem_step, no backend behind it:
+ * none while it is NULL or not yet reported (seq 0); a report is published
+ * once, with its own time; telem_finish sends one not yet sent. */
+static void test_belief_handed(void **state)
+{
+    (void)state;
+    static maze_t m;
+    static sim_state_t sim;
+    static telem_t t;
+    static sim_belief_t b;
+    simcfg_t cfg;
+    char err[300];
+    config_defaults(&cfg);
+    open_maze(&m);
+    static sim_model_t sim_model;
+    sim_model_build(&sim_model, &cfg, 1);
+    assert_int_equal(sim_init(&sim, &sim_model, &m, 1), 0);
+    memset(&seen, 0, sizeof seen);
+    telem_opts_t o = { "memq://", NULL, 100.0, NULL, NULL };
+    assert_int_equal(telem_open(&t, &o, &sim, err, sizeof err), 0);
+    lcm_t *l = t.lcm;
+    mmlcm_belief_t_subscription_t *sb = mmlcm_belief_t_subscribe(l, "MM_BELIEF", on_belief, NULL);
+    open_maze(&b.map);
+    int want[5] = { 0, 0, 1, 1, 2 }; /* beliefs seen after each step */
+    for (int i = 0; i < 5; i++) {
+        if (i == 2) b = (sim_belief_t){ 1, 1000, b.map, 2, MAZE_SOUTH, 0 }; /* the first report */
+        if (i == 4) b.seq = 2, b.t_us = 3000, b.cell = 3;                   /* a second one */
+        sim_step(sim.model, &sim);
+        telem_step(&t, &sim, i == 0 ? NULL : &b);
+        drain(l);
+        assert_int_equal(seen.belief, want[i]);
+    }
+    assert_int_equal(seen.belief_ut, 3000);
+    assert_int_equal(seen.belief_cell, 3);
+    b.seq = 3; /* reported during the last loop: sent at the end */
+    telem_finish(&t, &sim, &b);
+    drain(l);
+    assert_int_equal(seen.belief, 3);
+    mmlcm_belief_t_unsubscribe(l, sb);
+    assert_int_equal(telem_close(&t, err, sizeof err), 0);
     sim_free(&sim);
 }
 
@@ -291,6 +335,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_memq_messages),
+        cmocka_unit_test(test_belief_handed),
         cmocka_unit_test(test_cost_field),
         cmocka_unit_test(test_open_errors),
     };

@@ -72,9 +72,9 @@ static void place_reset_replay(const simcfg_t *c)
     s.cmd[0] = s.cmd[1] = 300;
     for (int i = 0; i < 400; i++) {
         sim_step(s.model, &s);
-        telem_step(&tel, &s);
+        telem_step(&tel, &s, NULL); /* no firmware: no belief */
     }
-    telem_finish(&tel, &s);
+    telem_finish(&tel, &s, NULL);
     assert_int_equal(telem_close(&tel, err, sizeof err), 0);
     double x, y, h;
     world_pose(s.world, &x, &y, &h);

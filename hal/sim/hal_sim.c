@@ -10,7 +10,7 @@
 static sim_state_t *sim;
 static FILE *log_out;
 static int32_t encoder_zero[2];
-static hal_sim_belief_t belief;
+static sim_belief_t belief;
 
 void hal_sim_attach(struct sim_state_s *s)
 {
@@ -63,7 +63,7 @@ void hal_log(const char *line)
 
 void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_t state)
 {
-    /* a copy for telemetry (sim/telemetry/telem.c); the simulation never reads it */
+    /* a copy for the contest's observers (hal_sim_belief); the simulation never reads it */
     belief.seq++;
     belief.t_us = sim ? sim->step * (uint64_t)llround(sim->model->cfg->step_s * 1e6) : 0;
     belief.map = *map;
@@ -72,7 +72,7 @@ void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_
     belief.state = state;
 }
 
-const hal_sim_belief_t *hal_sim_belief(void) { return &belief; }
+const sim_belief_t *hal_sim_belief(void) { return &belief; }
 
 uint8_t hal_ir_count(void) { return sim ? (uint8_t)sim_ir_count(sim) : 0; }
 void hal_emitter(uint8_t group, uint8_t on)

@@ -7,25 +7,17 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "maze.h"
+#include "world/belief.h"
 
 struct sim_state_s;
-
-/* The firmware's latest hal_belief call, copied (telemetry reads it). */
-typedef struct {
-    uint32_t seq;     /* calls since hal_sim_attach; 0 = none yet */
-    uint64_t t_us;    /* simulation time of the call, microseconds */
-    maze_t map;       /* the mouse's map */
-    uint16_t cell;    /* the cell it is in or heading into */
-    uint8_t heading;  /* MAZE_NORTH.. */
-    uint8_t state;    /* the firmware's state machine (mouse.h MOUSE_*) */
-} hal_sim_belief_t;
 
 /* Serve the HAL from this simulation (NULL detaches). */
 void hal_sim_attach(struct sim_state_s *s);
 /* Where hal_log lines go: a stream (NULL = dropped, the default). */
 void hal_sim_set_log(FILE *out);
-/* The latest belief the firmware reported (seq 0 until the first). */
-const hal_sim_belief_t *hal_sim_belief(void);
+/* The firmware's latest hal_belief call, copied (seq counts the calls since
+ * hal_sim_attach, 0 until the first). The pointer stays valid for the
+ * process; the contest hands it to its observers. */
+const sim_belief_t *hal_sim_belief(void);
 
 #endif

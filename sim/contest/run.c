@@ -73,6 +73,14 @@ static int fail_setup(run_t *r, int rc)
     return rc;
 }
 
+/* The firmware's belief the observers are handed: the one of the driver
+ * the run began with (after the HUD's Connect the firmware no longer runs
+ * and its last belief stays shown), NULL if that driver has none. */
+static const sim_belief_t *run_belief(const run_t *r)
+{
+    return r->drv->belief ? r->drv->belief(r->self) : NULL;
+}
+
 /* Telemetry, the report and the viewer, after the driver: 0 or RUN_EXTERNAL. */
 static int open_outputs(run_t *r)
 {
@@ -96,6 +104,7 @@ static int open_outputs(run_t *r)
     }
     snprintf(err, sizeof err, "out of memory");
     r->view = view_new(&vo);
+    if (r->view) view_set_belief(r->view, run_belief(r)); /* the overlay reads it each frame */
     if (r->view && r->drv->show) r->drv->show(r, r->self, r->view);
     if (!r->view || view_open(r->view, o->gui, err, sizeof err) != 0) {
         fprintf(stderr, "mmsim: %s\n", err);
@@ -260,7 +269,7 @@ static const char *step(run_t *r, watch_t *w)
     if (why) return why;
     sim_step(&r->model, &r->sim);
     if (d->exchange) d->exchange(r, r->ctl_self);
-    if (r->tel_on) telem_step(&r->tel, &r->sim);
+    if (r->tel_on) telem_step(&r->tel, &r->sim, run_belief(r));
     why = d->after ? d->after(r, r->ctl_self) : NULL;
     return why ? why : after_step(r, w);
 }
@@ -288,7 +297,7 @@ static int close_outputs(run_t *r)
     char err[600];
     int rc = 0;
     if (r->tel_on) {
-        telem_finish(&r->tel, &r->sim);
+        telem_finish(&r->tel, &r->sim, run_belief(r));
         if (telem_close(&r->tel, err, sizeof err) != 0) {
             fprintf(stderr, "mmsim: %s\n", err);
             rc = RUN_EXTERNAL;

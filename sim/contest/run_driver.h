@@ -23,6 +23,7 @@
 
 #include "contest/run.h"
 #include "view/report.h"
+#include "world/belief.h"
 #include "world/sim.h"
 
 typedef struct run_s run_t;
@@ -46,6 +47,10 @@ typedef struct {
     int (*exit_code)(const run_t *r, const void *self);
     /* the serial link it drives over, for MM_LINK and the HUD's port (NULL: none) */
     const link_t *(*link)(const void *self);
+    /* the belief its firmware last reported, for MM_BELIEF and the viewer's overlay: a pointer
+     * valid until close whose contents follow the reports (NULL hook or NULL: none, an MCU keeps
+     * its map to itself) */
+    const sim_belief_t *(*belief)(const void *self);
     /* its part of the report: the mms cells, the map it believes (NULL: none, an MCU keeps its
      * map to itself) and the maze its final path is drawn on (NULL: no path) */
     void (*report)(const run_t *r, void *self, report_t *rep, const maze_t **belief, const maze_t **path_on);

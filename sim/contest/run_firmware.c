@@ -91,6 +91,9 @@ static void fw_report(const run_t *r, void *self, report_t *rep, const maze_t **
     *belief = *path_on = mouse_map();
 }
 
+/* the belief the firmware reports through hal_belief, as hal/sim keeps it */
+static const sim_belief_t *fw_belief(const void *self) { return hal_sim_belief(); }
+
 static void fw_headline(const run_t *r, const void *self)
 {
     printf("%s: %ux%u, seed %llu, firmware\n", r->maze_path, r->maze.width, r->maze.height,
@@ -99,7 +102,7 @@ static void fw_headline(const run_t *r, const void *self)
 
 const run_driver_t run_firmware = {
     .name = "firmware", .open = fw_open, .after = fw_after, .results = fw_results, .close = fw_close,
-    .headline = fw_headline, .report = fw_report, .watch_stall = 1,
+    .headline = fw_headline, .report = fw_report, .belief = fw_belief, .watch_stall = 1,
 };
 
 /* ---- an mms algorithm drives the firmware's command mode ---- */
@@ -187,5 +190,5 @@ static int mms_exit(const run_t *r, const void *self)
 const run_driver_t run_mms = {
     .name = "mms", .open = mms_open, .before = mms_before, .after = mms_after, .stop = mms_end,
     .results = mms_results, .close = mms_close, .headline = mms_headline, .exit_code = mms_exit,
-    .report = mms_report, .show = mms_show,
+    .report = mms_report, .show = mms_show, .belief = fw_belief,
 };

@@ -12,7 +12,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "hal_sim.h"
 #include "link/link.h"
 #include "mmlcm_belief_t.h"
 #include "mmlcm_link_t.h"
@@ -440,9 +439,8 @@ void telem_cost_field(const maze_t *m, int16_t *cost)
     }
 }
 
-static void pub_belief(telem_t *t)
+static void pub_belief(telem_t *t, const sim_belief_t *b)
 {
-    const hal_sim_belief_t *b = hal_sim_belief();
     static int8_t walls[MAZE_MAX_CELLS];
     static int16_t cost[MAZE_MAX_CELLS], path[MAZE_MAX_CELLS + 1];
     static solve_path_t best;
@@ -473,20 +471,24 @@ static void pub_belief(telem_t *t)
     t->belief_seq = b->seq;
 }
 
-void telem_step(telem_t *t, const sim_state_t *s)
+/* A belief to publish: one the driver has, reported since the last one
+ * published (seq counts the firmware's reports). */
+static int belief_new(const telem_t *t, const sim_belief_t *b) { return b && b->seq != t->belief_seq; }
+
+void telem_step(telem_t *t, const sim_state_t *s, const sim_belief_t *b)
 {
     /* the belief reported during the last firmware loop comes first: its
      * time is the previous step's, so the log stays in time order */
-    if (hal_sim_belief()->seq != t->belief_seq) pub_belief(t);
+    if (belief_new(t, b)) pub_belief(t, b);
     pub_events(t, s);
     if (s->step % t->fast_steps == 0) pub_fast(t, s);
     if (s->step % t->race_steps == 0) pub_race(t, s);
     if (t->link && s->step % t->link_steps == 0) pub_link(t, s);
 }
 
-void telem_finish(telem_t *t, const sim_state_t *s)
+void telem_finish(telem_t *t, const sim_state_t *s, const sim_belief_t *b)
 {
-    if (hal_sim_belief()->seq != t->belief_seq) pub_belief(t);
+    if (belief_new(t, b)) pub_belief(t, b);
     pub_events(t, s);
     if (t->last_fast != s->step) pub_fast(t, s);
     if (t->last_race != s->step) pub_race(t, s);

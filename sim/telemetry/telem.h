@@ -9,6 +9,8 @@
  *   MM_RACE                         at TELEM_RACE_HZ
  *   MM_RACE_EVENT                   on the step a lap starts or ends
  *   MM_BELIEF                       when the firmware calls hal_belief
+ *                                   (in-process firmware only: the belief
+ *                                   the run's driver gives telem_step)
  *   MM_LINK                         at TELEM_LINK_HZ, HIL/PIL runs only (opts.link)
  *   MM_MAZE                         once, first (utime 0): the true maze,
  *                                   its file, the seed and the config, so
@@ -38,6 +40,7 @@
 #include <stdint.h>
 
 #include "io/outfile.h"
+#include "world/belief.h"
 #include "world/sim.h"
 
 #define TELEM_RATE_HZ 100.0 /* default rate of the high-rate channels, Hz */
@@ -86,11 +89,14 @@ typedef struct {
 /* Open the outputs for a run of simulation s (its step sets the periods)
  * and publish MM_MAZE. Returns 0, or -1 with one line in err (nothing is left open or written). */
 int telem_open(telem_t *t, const telem_opts_t *o, const sim_state_t *s, char *err, size_t errlen);
-/* After every physics step (and the firmware's tick and loop, if any). */
-void telem_step(telem_t *t, const sim_state_t *s);
+/* After every physics step (and the firmware's tick and loop, if any). b:
+ * the firmware's belief as the run's driver reports it (a new seq = a new
+ * report, published once), NULL if the driver has none (an MCU keeps its
+ * map to itself, the scripted driver has no map). */
+void telem_step(telem_t *t, const sim_state_t *s, const sim_belief_t *b);
 /* At the end of the run: the last state of every periodic channel and any
- * belief not yet sent. */
-void telem_finish(telem_t *t, const sim_state_t *s);
+ * belief in b not yet sent (b as for telem_step). */
+void telem_finish(telem_t *t, const sim_state_t *s, const sim_belief_t *b);
 /* Close the outputs; the log's temporary becomes the log. Returns 0, or -1
  * with one line in err if a log write failed (the temporary is removed, an
  * older log at the path stays) or a tcpq hub was lost during the run. */

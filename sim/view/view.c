@@ -9,7 +9,6 @@
 #include <string.h>
 #include <time.h>
 
-#include "hal_sim.h"
 #include "hud.h"
 #include "image.h"
 #include "replay.h"
@@ -48,6 +47,7 @@ struct view {
     const char *mms_texts;   /* and texts, mms_stride bytes per cell */
     size_t mms_stride;
     int *mms_reset;          /* set to 1 by the Reset button, or NULL */
+    const sim_belief_t *belief; /* view_set_belief: the firmware's belief, or NULL: none */
     view_board_fill_t *board_fill; /* view_set_board, or NULL: no board */
     void *board_ctx;
     view_board_t board;      /* as last filled */
@@ -469,7 +469,7 @@ static void draw(view_t *v, sim_state_t *s)
     int fw, fh;
     glfwGetFramebufferSize(v->win, &fw, &fh);
     scene_belief_t b = { NULL, 0, 0 };
-    const hal_sim_belief_t *hb = hal_sim_belief();
+    const sim_belief_t *hb = v->belief;
     static snap_t snap; /* what this frame draws */
     const sim_model_t *model;
     const maze_t *maze;
@@ -482,7 +482,7 @@ static void draw(view_t *v, sim_state_t *s)
         snap_from_sim(&snap, s);
         model = s->model;
         maze = s->maze;
-        if (hb->seq) {
+        if (hb && hb->seq) { /* the overlay once the firmware has reported a belief */
             b.map = &hb->map;
             b.cell = hb->cell;
             b.heading = hb->heading;
@@ -613,6 +613,8 @@ int view_screenshot(view_t *v, sim_state_t *s, const char *path, char *err, size
     free(px);
     return rc;
 }
+
+void view_set_belief(view_t *v, const sim_belief_t *b) { v->belief = b; }
 
 void view_set_mms(view_t *v, const char *colours, const char *texts, size_t text_stride, int *reset)
 {

@@ -42,6 +42,7 @@
 #include "hud.h"
 #include "replay.h"
 #include "scene.h"
+#include "world/belief.h"
 #include "world/sim.h"
 
 #define VIEW_SPEED_MAX 64.0
@@ -82,6 +83,12 @@ int view_screenshot(view_t *v, sim_state_t *s, const char *path, char *err, size
  * reports the outcome with view_set_status. */
 int view_connect_request(view_t *v, const char **port, long *baud);
 void view_set_status(view_t *v, const char *text);
+
+/* A live run's mouse belief for the overlay (walls discovered, planned
+ * path): b is read at each frame and must outlive the view; its contents
+ * are what the firmware last reported (seq 0: nothing yet, no overlay).
+ * NULL (the default): the run's driver has no belief to show. */
+void view_set_belief(view_t *v, const sim_belief_t *b);
 
 /* A board's panel (plain data: hud.h's hud_board_t). fill(ctx, out) is
  * called just before each frame is drawn (only then: nothing per step),
