@@ -107,7 +107,7 @@ void MMLink::poll()
         case WIRE_GYRO:
         case WIRE_BATTERY:
         case WIRE_ROBOT:
-            if (hal_wire_extra) hal_wire_extra(&m); /* linked in only if the firmware reads them */
+            if (hal_wire_extra) hal_wire_extra(&m, NULL); /* linked in only if the firmware reads them */
             break;
         default: break; /* commands are for the sim */
         }

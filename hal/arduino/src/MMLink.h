@@ -53,13 +53,15 @@ private:
 extern MMLink mmLink;
 
 /* The version-2 sensor messages (IR, GYRO, BATTERY, ROBOT) go here from
- * poll(); m == NULL: the runner's tick is done (send a queued EMITTER).
+ * poll(); m == NULL: the runner's tick is done: a queued EMITTER goes into
+ * *out and 1 is returned (the runner sends it), else 0. The sensors' file
+ * never sends itself, so the link and it do not call each other.
  * Defined in hal_arduino_sensors.cpp, which the linker takes from the
  * library only when the firmware calls hal_emitter, hal_ir_*, hal_gyro_*
  * or hal_battery_mv. The callers hold a weak reference (the linker pulls
  * no archive member for one; it is NULL without that file) and call it
  * only if it is there: a firmware without those calls keeps every byte
  * of SRAM (the Uno Mouse: 1,536 B, test/cli_pil.sh). */
-void hal_wire_extra(const wire_msg_t *m) __attribute__((weak));
+uint8_t hal_wire_extra(const wire_msg_t *m, wire_msg_t *out) __attribute__((weak));
 
 #endif

@@ -107,7 +107,7 @@ static void tick()
     m.u.motor.left = cmd[0];
     m.u.motor.right = cmd[1];
     mmLink.send(m);
-    if (hal_wire_extra) hal_wire_extra(NULL); /* a queued EMITTER (hal_arduino_sensors.cpp, if linked in) */
+    if (hal_wire_extra && hal_wire_extra(NULL, &m)) mmLink.send(m); /* a queued EMITTER (hal_arduino_sensors.cpp, if linked in) */
     if (log_state == 2) {
         memset(&m, 0, sizeof m);
         m.type = WIRE_LOG;

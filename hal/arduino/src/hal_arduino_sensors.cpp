@@ -1,9 +1,11 @@
 /* hal_arduino_sensors.cpp - hal/hal.h's IR, emitter, gyro and battery
- * functions over mmLink (protocol version 2, docs/PROTOCOL.md).
+ * functions from the link's messages (protocol version 2, docs/PROTOCOL.md).
  *
  * A file of its own: MMLink.cpp and the runner call hal_wire_extra through
- * a weak reference (MMLink.h), which makes the linker pull nothing; this
- * file, with its storage, is linked in only when the firmware calls one of
+ * a weak reference (MMLink.h), which makes the linker pull nothing; it
+ * takes the messages and hands the runner the EMITTER to send, so this
+ * file never calls the link. It is linked in, with its storage, only
+ * when the firmware calls one of
  * the functions below, so a firmware that does not (the example Mouse on
  * the Uno: 1,536 B) keeps every byte of SRAM.
  *
@@ -36,17 +38,15 @@ static void take_ir(const wire_msg_t *m)
     ir_seq = m->u.ir.seq;
 }
 
-void hal_wire_extra(const wire_msg_t *m)
+uint8_t hal_wire_extra(const wire_msg_t *m, wire_msg_t *out)
 {
     if (!m) {
-        if (!pending) return;
-        wire_msg_t e;
-        memset(&e, 0, sizeof e);
-        e.type = WIRE_EMITTER;
-        e.u.emitter.groups = lit;
+        if (!pending) return 0;
+        memset(out, 0, sizeof *out);
+        out->type = WIRE_EMITTER;
+        out->u.emitter.groups = lit;
         pending = 0;
-        mmLink.send(e); /* compat has no EMITTER: nothing goes, no IR comes */
-        return;
+        return 1; /* the runner sends it (compat has no EMITTER: nothing goes, no IR comes) */
     }
     switch (m->type) {
     case WIRE_IR: take_ir(m); break;
@@ -64,6 +64,7 @@ void hal_wire_extra(const wire_msg_t *m)
         break;
     default: break;
     }
+    return 0;
 }
 
 uint8_t hal_ir_count(void) { return ir_n; }
