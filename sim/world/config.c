@@ -13,12 +13,12 @@
 
 #define K(sec, name, def, min, max, unit, source) \
     { sec, #name, offsetof(simcfg_t, name), def, min, max, unit, source, NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL }
-/* a key whose value is a whole number */
+/* a key whose value is a whole number (an int) */
 #define KW(sec, name, def, min, max, unit, source) \
-    { sec, #name, offsetof(simcfg_t, name), def, min, max, unit, source, NULL, 1, 0, 0, KEYTAB_DOUBLE, 0, NULL }
-/* a key whose value is one of the words (stored as the word's index) */
+    { sec, #name, offsetof(simcfg_t, name), def, min, max, unit, source, NULL, 0, 0, 0, KEYTAB_INT, 0, NULL }
+/* a key whose value is one of the words (an int: the word's index) */
 #define W(sec, name, def, words, source) \
-    { sec, #name, offsetof(simcfg_t, name), def, 0, sizeof words / sizeof words[0] - 1, "word", source, words, 1, 0, 0, KEYTAB_DOUBLE, 0, NULL }
+    { sec, #name, offsetof(simcfg_t, name), def, 0, sizeof words / sizeof words[0] - 1, "word", source, words, 0, 0, 0, KEYTAB_INT, 0, NULL }
 
 static const char *const solvers[] = { "quickstep", "exact" };
 

@@ -22,16 +22,16 @@
 #include "battery.h"
 
 /* One wheel's drive: motor (datasheet figures at rated_v, output shaft),
- * gearbox, H-bridge and encoder. All doubles (keytab.h). */
+ * gearbox, H-bridge and encoder. */
 typedef struct {
-    double motor_model;     /* MOTOR_MODEL_PAPER or MOTOR_MODEL_DATASHEET */
+    int motor_model;        /* MOTOR_MODEL_PAPER or MOTOR_MODEL_DATASHEET */
     double rated_v, no_load_rpm, no_load_a, stall_torque_nm, stall_a;
     double l_h;
     double gear_ratio;
     double rotor_inertia_kgm2; /* at the motor shaft; 0 = ignored */
     double driver_r_ohm;    /* H-bridge on-resistance in series with the motor, ohm */
     double encoder_ppr;     /* encoder counts per motor-shaft revolution */
-    double encoder_channels; /* 1 (pulses) or 2 (quadrature) */
+    int encoder_channels;   /* 1 (pulses) or 2 (quadrature) */
 } drive_spec_t;
 
 /* Figures measured on the real robot that the file describes (a robot
@@ -71,7 +71,7 @@ typedef struct {
     double wall_thick_m;    /* wall thickness = post width */
     double wall_height_m;
     double post_m;          /* post side */
-    double centre_post;     /* 1 = the post in the middle of the goal is there */
+    int centre_post;        /* 1 = the post in the middle of the goal is there */
     double body_wall_mu;    /* robot body/wheel on a wall or post */
     double wall_reflectivity; /* of walls and posts to the IR sensors' light, 0..1 */
     /* The robot (robot file, robot.h): the chassis, both drives, the
@@ -82,12 +82,12 @@ typedef struct {
     double wheel_x_m;       /* wheel centre plane from the body's centre line */
     double axle_y_m;        /* axle position along the body, from its centre */
     double caster_r_m, caster_mass_kg, caster_y_m;
-    double casters;         /* 1, or 2: a second skid at caster2_y_m, as the first */
+    int casters;            /* 1, or 2: a second skid at caster2_y_m, as the first */
     double caster2_y_m;
     double tyre_mu;         /* Coulomb friction, tyre on floor */
     double tyre_mu_dynamic; /* sliding friction; <= tyre_mu */
     double tyre_slip_m_s;   /* contact slip speed above which tyre_mu_dynamic applies */
-    double start;           /* ROBOT_START_*: where the robot stands in the start cell */
+    int start;              /* ROBOT_START_*: where the robot stands in the start cell */
     double body_com_y_m;    /* the body's centre of mass ahead of its centre (the robot file's) */
     double body_yaw_inertia_kgm2; /* the body's about its vertical axis; 0 = a uniform box's */
     double wheel_left_d_m, wheel_right_d_m; /* the robot file's (the model derives each wheel's radius) */
@@ -107,8 +107,8 @@ typedef struct {
     double wheel_d_sigma_m, motor_k_sigma_pct, tyre_mu_sigma, com_sigma_m;
     /* [sim] */
     double step_s;          /* physics step */
-    double solver;          /* SIM_SOLVER_QUICKSTEP or SIM_SOLVER_EXACT */
-    double solver_iterations;
+    int solver;             /* SIM_SOLVER_QUICKSTEP or SIM_SOLVER_EXACT */
+    int solver_iterations;  /* quickstep's iterations per step */
     double contact_erp, contact_cfm; /* contact softness (ODE units) */
     double time_limit_s;    /* contest limit */
 } simcfg_t;

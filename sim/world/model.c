@@ -42,7 +42,7 @@ static void wheels(sim_model_t *m, const simcfg_t *c, const asym_t *a)
         m->tyre_mu_dynamic[s] = m->tyre_mu[s] * c->tyre_mu_dynamic / c->tyre_mu;
         /* right minus left, in per cent of the mean */
         m->motor_k_scale[s] = 1.0 + (s == 0 ? -0.005 : 0.005) * a->motor_k_pct;
-        m->motor_model[s] = (int)c->drive[s].motor_model;
+        m->motor_model[s] = c->drive[s].motor_model;
     }
 }
 
@@ -70,10 +70,10 @@ void sim_model_build(sim_model_t *m, const simcfg_t *c, uint64_t seed)
 {
     asym_t a = asymmetry(c, seed);
     m->cfg = c;
-    m->solver = (int)c->solver;
-    m->solver_iterations = (int)c->solver_iterations;
-    m->start = (int)c->start;
-    m->casters = (int)c->casters;
+    m->solver = c->solver;
+    m->solver_iterations = c->solver_iterations;
+    m->start = c->start;
+    m->casters = c->casters;
     wheels(m, c, &a);
     /* the body's mass may sit off its geometric centre (asymmetry, and the robot file's) */
     m->body_com_m[0] = 0.0 + a.com_x_m;

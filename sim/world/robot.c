@@ -39,14 +39,14 @@ static const keytab_t chassis_keys[] = {
     C(caster_mass_g, caster_mass_kg, 1000, 0.5, 500, "g", "caster's mass"),
     C(caster_y_mm, caster_y_m, 1000, -200, 200, "mm", "caster ahead of the body's centre (negative: behind)"),
     { NULL, "casters", offsetof(simcfg_t, casters), 1, 1, 2, "1", "1, or 2: a second skid at caster2_y_mm, as the first",
-      NULL, 1, 0, 0, KEYTAB_DOUBLE, 0, NULL },
+      NULL, 0, 0, 0, KEYTAB_INT, 0, NULL },
     { NULL, "caster2_y_mm", offsetof(simcfg_t, caster2_y_m), 0, -200, 200, "mm", "the second skid ahead of the body's centre",
       NULL, 0, 1000, 0, KEYTAB_DOUBLE, 0, NULL },
     C(tyre_mu, tyre_mu, 0, 0.01, 3, "1", "Coulomb friction, tyre on floor"),
     C(tyre_mu_dynamic, tyre_mu_dynamic, 0, 0.01, 3, "1", "sliding friction, <= tyre_mu"),
     C(tyre_slip_m_s, tyre_slip_m_s, 0, 0, 1, "m/s", "slip speed above which tyre_mu_dynamic applies"),
     { NULL, "start", offsetof(simcfg_t, start), 0, 0, 1, "word",
-      "centre: in the start cell's centre; back_to_wall: its rear against the cell's back wall (UKMARSBOT)", starts, 1, 0, 0, KEYTAB_DOUBLE, 0, NULL },
+      "centre: in the start cell's centre; back_to_wall: its rear against the cell's back wall (UKMARSBOT)", starts, 0, 0, 0, KEYTAB_INT, 0, NULL },
     { NULL, "body_com_y_mm", offsetof(simcfg_t, body_com_y_m), 0, -100, 100, "mm",
       "the body's centre of mass ahead of its centre (0 = at the box's centre)", NULL, 0, 1000, 0, KEYTAB_DOUBLE, 0, NULL },
     { NULL, "body_yaw_inertia_kgm2", offsetof(simcfg_t, body_yaw_inertia_kgm2), 0, 0, 0.1, "kg*m^2",
@@ -57,7 +57,7 @@ static const keytab_t chassis_keys[] = {
     { NULL, #name, offsetof(drive_spec_t, name), def, min, max, unit, src, NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL }
 static const keytab_t motor_keys[] = {
     { NULL, "model", offsetof(drive_spec_t, motor_model), KEYTAB_REQUIRED, 0, 1, "word",
-      "datasheet: losses and rotor inertia; paper: the paper's eq. 1-5", motor_models, 1, 0, 0, KEYTAB_DOUBLE, 0, NULL },
+      "datasheet: losses and rotor inertia; paper: the paper's eq. 1-5", motor_models, 0, 0, 0, KEYTAB_INT, 0, NULL },
     D(rated_v, KEYTAB_REQUIRED, 0.5, 50, "V", "the datasheet's figures below are at this voltage"),
     D(no_load_rpm, KEYTAB_REQUIRED, 1, 100000, "rpm", "output shaft, at rated_v"),
     D(no_load_a, KEYTAB_REQUIRED, 0, 10, "A", "at rated_v"),
@@ -70,13 +70,14 @@ static const keytab_t motor_keys[] = {
 };
 static const keytab_t encoder_keys[] = {
     D(encoder_ppr, KEYTAB_REQUIRED, 1, 100000, "counts/motor rev", "counts per motor-shaft turn, every edge counted"),
-    { NULL, "channels", offsetof(drive_spec_t, encoder_channels), 2, 1, 2, "1", "1: pulses only; 2: quadrature (direction)", NULL, 1, 0, 0, KEYTAB_DOUBLE, 0, NULL },
+    { NULL, "channels", offsetof(drive_spec_t, encoder_channels), 2, 1, 2, "1", "1: pulses only; 2: quadrature (direction)", NULL, 0, 0, 0, KEYTAB_INT, 0, NULL },
 };
 #define BT(name, def, min, max, unit, src) \
     { NULL, #name, offsetof(battery_spec_t, name), def, min, max, unit, src, NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL }
 static const keytab_t battery_keys[] = {
     { NULL, "ocv_v", offsetof(battery_spec_t, ocv_v), KEYTAB_REQUIRED, 0.5, 60, "V",
-      "open-circuit voltage, empty to full in even steps of charge (one value: constant)", NULL, 0, 0, BATTERY_OCV_MAX, KEYTAB_DOUBLE, 0, NULL },
+      "open-circuit voltage, empty to full in even steps of charge (one value: constant)", NULL, 0, 0, BATTERY_OCV_MAX, KEYTAB_DOUBLE,
+      offsetof(battery_spec_t, ocv_n), NULL },
     BT(r_ohm, KEYTAB_REQUIRED, 0, 100, "ohm", "internal resistance"),
     BT(capacity_mah, KEYTAB_REQUIRED, 1, 1e6, "mAh", "capacity"),
     BT(divider, 1, 0.01, 1, "1", "what the robot's ADC sees of the battery voltage"),
