@@ -40,10 +40,10 @@ static char *print(const simcfg_t *c)
 
 static void check_loaded(const simcfg_t *c, const char *name)
 {
-    check(c->nparts >= 0 && c->nparts <= ROBOT_MAX_PARTS, "more sensors than ROBOT_MAX_PARTS");
+    check(c->robot.nparts >= 0 && c->robot.nparts <= ROBOT_MAX_PARTS, "more sensors than ROBOT_MAX_PARTS");
     check(robot_count(c, "tof") <= WORLD_TOF_COUNT, "more ToF sensors than WORLD_TOF_COUNT");
     check(robot_count(c, "ir") <= ROBOT_MAX_IR, "more IR sensors than ROBOT_MAX_IR");
-    check(c->tyre_mu_dynamic <= c->tyre_mu, "tyre_mu_dynamic above tyre_mu");
+    check(c->robot.tyre_mu_dynamic <= c->robot.tyre_mu, "tyre_mu_dynamic above tyre_mu");
     char *text = print(c), err[600];
     simcfg_t again;
     config_defaults(&again);

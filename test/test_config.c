@@ -19,17 +19,17 @@ static void test_defaults_are_the_papers_robot(void **state)
 {
     (void)state;
     config_defaults(&c);
-    assert_true(c.cell_m == 0.180 && c.body_w_m == 0.096 && c.body_l_m == 0.120 && c.body_mass_kg == 0.127);
-    assert_true(c.wheel_left_d_m == 0.032 && c.wheel_right_d_m == 0.032 && c.wheel_x_m == 0.048);
+    assert_true(c.world.cell_m == 0.180 && c.robot.body_w_m == 0.096 && c.robot.body_l_m == 0.120 && c.robot.body_mass_kg == 0.127);
+    assert_true(c.robot.wheel_left_d_m == 0.032 && c.robot.wheel_right_d_m == 0.032 && c.robot.wheel_x_m == 0.048);
     /* the Pololu 30:1 LP 6V datasheet's figures (the motor model derives R, Ke, eta from them), both sides */
     for (int i = 0; i < 2; i++) {
-        const drive_spec_t *d = &c.drive[i];
+        const drive_spec_t *d = &c.robot.drive[i];
         assert_true(d->gear_ratio == 29.86 && d->rated_v == 6.0 && d->no_load_rpm == 450 && d->no_load_a == 0.02 &&
                     d->stall_torque_nm == 0.028439 && d->stall_a == 0.36 && d->rotor_inertia_kgm2 == 2.0e-8);
         assert_true(d->motor_model == MOTOR_MODEL_DATASHEET && d->l_h == 0.001 && d->encoder_ppr == 12 && d->driver_r_ohm == 0);
     }
-    assert_true(c.solver == SIM_SOLVER_EXACT && c.battery.ocv_n == 1 && c.battery.ocv_v[0] == 6.0 && c.battery.r_ohm == 0);
-    assert_true(c.nparts == 3 && c.step_s == 0.001 && c.time_limit_s == 600);
+    assert_true(c.sim.solver == SIM_SOLVER_EXACT && c.robot.battery.ocv_n == 1 && c.robot.battery.ocv_v[0] == 6.0 && c.robot.battery.r_ohm == 0);
+    assert_true(c.robot.nparts == 3 && c.sim.step_s == 0.001 && c.sim.time_limit_s == 600);
 }
 
 static void test_load_and_errors(void **state)
@@ -68,14 +68,14 @@ static void test_load_and_errors(void **state)
         config_defaults(&c);
         assert_int_equal(config_load_string(&c, bad[i].text, "c.ini", err, sizeof err), -1);
         if (strncmp(err, bad[i].want, strlen(bad[i].want)) != 0) fail_msg("case %zu: got \"%s\"", i, err);
-        assert_true(c.time_limit_s == 600 && c.body_wall_mu == 0.3); /* nothing applied */
+        assert_true(c.sim.time_limit_s == 600 && c.world.body_wall_mu == 0.3); /* nothing applied */
     }
     config_defaults(&c);
     assert_int_equal(config_load_string(&c, "; plastic on plastic\n[world]\nbody_wall_mu = 0.35\n", "p.ini", err, sizeof err), 0);
-    assert_true(c.body_wall_mu == 0.35);
+    assert_true(c.world.body_wall_mu == 0.35);
     /* an indented key straight after its section is a key (libinih's reading), and an indented comment a comment */
     assert_int_equal(config_load_string(&c, "[world]\n  body_wall_mu = 0.4\n  ; plastic\n", "p.ini", err, sizeof err), 0);
-    assert_true(c.body_wall_mu == 0.4);
+    assert_true(c.world.body_wall_mu == 0.4);
     assert_int_equal(config_load(&c, "/nonexistent/c.ini", err, sizeof err), -1);
     assert_string_equal(err, "/nonexistent/c.ini: cannot open: No such file or directory");
 }
@@ -100,7 +100,7 @@ static void test_long_lines_and_files(void **state)
             snprintf(want, sizeof want, "c.ini:2: line too long (%d bytes; at most 197)", len);
             assert_string_equal(err, want);
         }
-        assert_true(c.time_limit_s == 600);
+        assert_true(c.sim.time_limit_s == 600);
     }
     /* the same from a file, and a NUL byte (libinih stopped there in silence) */
     char path[] = "/tmp/test_config_XXXXXX";
@@ -124,7 +124,7 @@ static void test_long_lines_and_files(void **state)
     fputs("[sim]\ntime_limit_s = 7.5\n", f);
     fclose(f);
     assert_int_equal(config_load(&c, path, err, sizeof err), 0);
-    assert_true(c.time_limit_s == 7.5);
+    assert_true(c.sim.time_limit_s == 7.5);
     remove(path);
     /* a directory read as an empty file before: nothing was applied, no error */
     assert_int_equal(config_load(&c, "/tmp", err, sizeof err), -1);
@@ -154,7 +154,7 @@ static void test_print_exact(void **state)
     assert_memory_equal(&c, &d, sizeof c);
     free(text);
     config_hash(&c, h1);
-    d.wall_thick_m = 0.012;
+    d.world.wall_thick_m = 0.012;
     config_hash(&d, h2);
     assert_string_not_equal(h1, h2);
 }
@@ -165,7 +165,7 @@ static void test_print_round_trip_and_hash(void **state)
     simcfg_t d;
     char h1[65], h2[65];
     config_defaults(&c);
-    c.time_limit_s = 7.4;
+    c.sim.time_limit_s = 7.4;
     char *text = NULL;
     size_t len = 0;
     FILE *mem = open_memstream(&text, &len);
@@ -188,7 +188,7 @@ static void test_print_round_trip_and_hash(void **state)
     config_hash(&d, h2);
     assert_int_equal(strlen(h1), 64);
     assert_string_equal(h1, h2);
-    d.time_limit_s = 7.5;
+    d.sim.time_limit_s = 7.5;
     config_hash(&d, h2);
     assert_string_not_equal(h1, h2);
 }

@@ -125,7 +125,7 @@ static void child(const char *cfg_path, const char *robot_path)
                 sim_step(s.model, &s);
                 for (int k = 0; k < sim_ir_count(&s); k++) {
                     int kk = robot_part_of_kind(s.model->cfg, "ir", (unsigned)k);
-                    double bits = ((const ir_part_spec_t *)s.model->cfg->part[kk].spec)->model.adc_bits;
+                    double bits = ((const ir_part_spec_t *)s.model->cfg->robot.part[kk].spec)->model.adc_bits;
                     if (sim_ir_read(&s, (unsigned)k) > (unsigned)ldexp(1, (int)bits) - 1) _exit(10);
                 }
                 if (!isfinite(sim_gyro_rad_s(&s))) _exit(10);

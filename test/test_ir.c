@@ -40,7 +40,7 @@ static world_t *arena(int inner_wall)
     return w;
 }
 
-static double east_face(void) { return 4 * cfg.cell_m - cfg.wall_thick_m / 2; }
+static double east_face(void) { return 4 * cfg.world.cell_m - cfg.world.wall_thick_m / 2; }
 
 static ir_t quiet(void)
 {
@@ -58,7 +58,7 @@ static void test_ray_normal(void **state)
 {
     (void)state;
     world_t *w = arena(0);
-    double p[3] = { east_face() - 0.1, 1.5 * cfg.cell_m, cfg.wall_height_m / 2 }, n[3];
+    double p[3] = { east_face() - 0.1, 1.5 * cfg.world.cell_m, cfg.world.wall_height_m / 2 }, n[3];
     double east[3] = { 1, 0, 0 }, west[3] = { -2, 0, 0 }, up[3] = { 1, 0, 0.1 };
     assert_true(fabs(world_ray_normal(w, p, east, 1.0, n) - world_ray(w, p[0], p[1], p[2], 0, 1.0)) < 1e-9);
     assert_true(fabs(n[0] + 1) < 1e-9 && fabs(n[1]) < 1e-9 && fabs(n[2]) < 1e-9);
@@ -80,7 +80,7 @@ static void test_distance(void **state)
     world_t *w = arena(0);
     ir_t ir = quiet();
     const ir_spec_t *s = &ir.spec;
-    double y = 1.5 * cfg.cell_m, z = cfg.wall_height_m / 2;
+    double y = 1.5 * cfg.world.cell_m, z = cfg.world.wall_height_m / 2;
     for (double d = 0.02; d <= 0.2001; d += 0.01) {
         double p[3] = { east_face() - d, y, z };
         double r = ir_received(&ir, w, p, 0), want = s->reflectivity / (d * d);
@@ -107,7 +107,7 @@ static void test_angle(void **state)
     (void)state;
     world_t *w = arena(0);
     ir_t ir = quiet();
-    double y = 1.5 * cfg.cell_m, z = cfg.wall_height_m / 2, dist = 0.1, r0 = 0;
+    double y = 1.5 * cfg.world.cell_m, z = cfg.world.wall_height_m / 2, dist = 0.1, r0 = 0;
     for (int deg = 0; deg <= 60; deg += 10) {
         double a = deg * M_PI / 180;
         double p[3] = { east_face() - dist * cos(a), y - dist * sin(a), z };
@@ -130,7 +130,7 @@ static void test_dark(void **state)
     s.noise_counts = 5;
     ir_t ir;
     ir_init(&ir, &s, 7, 1);
-    double p[3] = { east_face() - 0.03, 1.5 * cfg.cell_m, cfg.wall_height_m / 2 };
+    double p[3] = { east_face() - 0.03, 1.5 * cfg.world.cell_m, cfg.world.wall_height_m / 2 };
     const int n = 20000;
     double sum = 0, sum2 = 0;
     for (int i = 0; i < n; i++) {
@@ -143,7 +143,7 @@ static void test_dark(void **state)
     ir_t a, b;
     ir_init(&a, &s, 9, 0);
     ir_init(&b, &s, 9, 0);
-    double open_p[3] = { east_face() - 0.6, 1.5 * cfg.cell_m, cfg.wall_height_m / 2 };
+    double open_p[3] = { east_face() - 0.6, 1.5 * cfg.world.cell_m, cfg.world.wall_height_m / 2 };
     for (int i = 0; i < 100; i++) assert_int_equal(ir_read(&a, w, p, 0, 0), ir_read(&b, w, open_p, M_PI, 0));
     assert_true(fabs(mean - 100) < 0.15);               /* 5 / sqrt(20000) = 0.035 */
     assert_true(fabs(sd / sqrt(25 + 1.0 / 12) - 1) < 0.03); /* ~0.5 % */
@@ -163,7 +163,7 @@ static void test_rails(void **state)
     ir_t ir;
     ir_init(&ir, &s, 3, 2);
     assert_int_equal(ir_full_scale(&ir), 1023);
-    double near[3] = { east_face() - 0.02, 1.5 * cfg.cell_m, cfg.wall_height_m / 2 };
+    double near[3] = { east_face() - 0.02, 1.5 * cfg.world.cell_m, cfg.world.wall_height_m / 2 };
     int zeros = 0;
     for (int i = 0; i < 2000; i++) {
         int lit = ir_read(&ir, w, near, 0, 1), dark = ir_read(&ir, w, near, 0, 0);
@@ -189,7 +189,7 @@ static void test_streams(void **state)
     ir_init(&b, &s, 42, 0);
     ir_init(&c, &s, 42, 1);
     ir_init(&d, &s, 43, 0);
-    double p[3] = { east_face() - 0.06, 1.5 * cfg.cell_m, cfg.wall_height_m / 2 };
+    double p[3] = { east_face() - 0.06, 1.5 * cfg.world.cell_m, cfg.world.wall_height_m / 2 };
     int diff_c = 0, diff_d = 0;
     for (int i = 0; i < 200; i++) {
         int on = i & 1, va = ir_read(&a, w, p, 0, on);
@@ -210,10 +210,10 @@ static void test_graze(void **state)
     (void)state;
     world_t *w = arena(1);
     ir_t ir = quiet();
-    double c = cfg.cell_m, face = 2 * c - cfg.wall_thick_m / 2, d = 0.08, z = cfg.wall_height_m / 2;
+    double c = cfg.world.cell_m, face = 2 * c - cfg.world.wall_thick_m / 2, d = 0.08, z = cfg.world.wall_height_m / 2;
     double full_p[3] = { face - d, 1.5 * c, z };
-    double edge_p[3] = { face - d, 2 * c + cfg.post_m / 2 + 0.0005, z };
-    double past_p[3] = { face - d, 2 * c + cfg.post_m / 2 + 0.03, z };
+    double edge_p[3] = { face - d, 2 * c + cfg.world.post_m / 2 + 0.0005, z };
+    double past_p[3] = { face - d, 2 * c + cfg.world.post_m / 2 + 0.03, z };
     double full = ir_received(&ir, w, full_p, 0);
     double edge = ir_received(&ir, w, edge_p, 0);
     double past = ir_received(&ir, w, past_p, 0);

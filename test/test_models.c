@@ -21,8 +21,8 @@ static int setup(void **state)
     (void)state;
     static simcfg_t full;
     config_defaults(&full);
-    cfg = full.drive[0];
-    tcfg = *(const tof_spec_t *)full.part[0].spec;
+    cfg = full.robot.drive[0];
+    tcfg = *(const tof_spec_t *)full.robot.part[0].spec;
     return 0;
 }
 

@@ -120,7 +120,7 @@ static void test_state_at_logged_times(void **state)
     assert_string_equal(r.path, "gen.txt");
     assert_memory_equal(r.maze.cell, maze.cell, maze_cells(&maze));
     for (int i = 0; i < 2; i++) assert_true(r.model.wheel_r_m[i] == live_wheel_r_m[i]); /* the same seed's model */
-    double count_rad = 2 * M_PI / (r.model.cfg->drive[0].encoder_ppr * r.model.cfg->drive[0].gear_ratio);
+    double count_rad = 2 * M_PI / (r.model.cfg->robot.drive[0].encoder_ppr * r.model.cfg->robot.drive[0].gear_ratio);
     assert_true(!live[0].snap.emitter[1] && live[1].snap.emitter[1]); /* the check times see both */
     for (int k = 0; k < CHECK_AT; k++) {
         const snap_t *lv = &live[k].snap;
@@ -186,7 +186,7 @@ static void test_maze_ray_as_ode(void **state)
                     for (int a = 0; a < 32; a++)
                         for (size_t ip = 0; ip < sizeof pitch_deg / sizeof *pitch_deg; ip++) {
                             double yaw = a * M_PI / 16 + 0.01, p = pitch_deg[ip] * M_PI / 180, n[3];
-                            double pos[3] = { (px * 0.5 + 0.25) * c.cell_m, (py * 0.5 + 0.25) * c.cell_m, z_m[iz] };
+                            double pos[3] = { (px * 0.5 + 0.25) * c.world.cell_m, (py * 0.5 + 0.25) * c.world.cell_m, z_m[iz] };
                             double dir[3] = { cos(p) * cos(yaw), cos(p) * sin(yaw), sin(p) };
                             double ode = world_ray_normal(s.world, pos, dir, 0.5, n);
                             double geo = snap_maze_ray(&c, &m, post, pos, dir, 0.5);
@@ -233,7 +233,7 @@ static void test_slider_and_keys(void **state)
     assert_int_equal(view_click(v, NULL, sl.x + sl.w * 0.25, sl.y + sl.h / 2.0), VIEW_SLIDER);
     assert_true(fabs(view_time(v) - 0.25 * end_s) < 1e-6);
     replay_snap(&r, view_time(v), &s);
-    assert_true(fabs(s.time_s - 0.25 * end_s) < r.model.cfg->step_s);
+    assert_true(fabs(s.time_s - 0.25 * end_s) < r.model.cfg->sim.step_s);
     view_drag(v, sl.x + sl.w * 0.5, sl.y + sl.h / 2.0);
     assert_true(fabs(view_time(v) - 0.5 * end_s) < 1e-6);
     view_drag(v, sl.x - 100.0, sl.y + sl.h / 2.0); /* past the left end: the start */

@@ -110,7 +110,7 @@ static void test_paper_file_is_the_builtin(void **state)
     assert_string_equal(ta, tb);
     free(ta);
     free(tb);
-    assert_int_equal(a.nparts, 3);
+    assert_int_equal(a.robot.nparts, 3);
     assert_int_equal(robot_count(&a, "tof"), 3);
 }
 
@@ -122,11 +122,11 @@ static void test_print_load_round_trip(void **state)
     config_defaults(&a);
     char *t1 = print(&a);
     config_defaults(&b);
-    assert_int_equal(robot_load_string(&b, t1, a.robot_path, err, sizeof err), 0);
+    assert_int_equal(robot_load_string(&b, t1, a.robot.path, err, sizeof err), 0);
     char *t2 = print(&b);
     assert_string_equal(t1, t2);
     /* the same robot, apart from where its sections stood */
-    for (int i = 0; i < b.nparts; i++) b.part[i].line = a.part[i].line;
+    for (int i = 0; i < b.robot.nparts; i++) b.robot.part[i].line = a.robot.part[i].line;
     assert_memory_equal(&a, &b, sizeof a);
     free(t1);
     free(t2);
@@ -230,7 +230,7 @@ static void test_more_sensors(void **state)
     config_defaults(&c);
     if (robot_load_string(&c, text, "more.ini", err, sizeof err) != 0) fail_msg("%s", err);
     free(text);
-    assert_int_equal(c.nparts, 9);
+    assert_int_equal(c.robot.nparts, 9);
     if (mazefile_load(&m, "mazes/gen-5x5-s1.txt", NULL, err, sizeof err) != 0) fail_msg("%s", err);
     static sim_model_t s_model;
     sim_model_build(&s_model, &c, 1);
@@ -288,7 +288,7 @@ static void ukmarsbot_burst(double r_ohm, double *w, double *v, double *mah)
     char err[600];
     config_defaults(&c);
     if (robot_load(&c, "robots/ukmarsbot.ini", err, sizeof err) != 0) fail_msg("%s", err);
-    c.battery.r_ohm = r_ohm;
+    c.robot.battery.r_ohm = r_ohm;
     if (mazefile_load(&m, "mazes/gen-5x5-s1.txt", NULL, err, sizeof err) != 0) fail_msg("%s", err);
     static sim_model_t s_model;
     sim_model_build(&s_model, &c, 1);
@@ -300,7 +300,7 @@ static void ukmarsbot_burst(double r_ohm, double *w, double *v, double *mah)
     *w = world_wheel_rate(s.world, 0);
     *v = sim_battery_v(&s);
     *mah = battery_drawn_mah(&s.battery);
-    assert_true(battery_ocv(&s.battery) <= battery_spec_full_v(&c.battery));
+    assert_true(battery_ocv(&s.battery) <= battery_spec_full_v(&c.robot.battery));
     sim_free(&s);
 }
 

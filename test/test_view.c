@@ -55,7 +55,7 @@ static int teardown(void **state)
  * (3,3). */
 static double ray_across_centre(void)
 {
-    double cell = sim.model->cfg->cell_m;
+    double cell = sim.model->cfg->world.cell_m;
     return world_ray(sim.world, 1.5 * cell, 1.5 * cell, 0.02, M_PI / 4, 1.0);
 }
 
@@ -77,7 +77,7 @@ static void click_button(int b)
 static void test_toggle_post_button(void **state)
 {
     (void)state;
-    double cell = sim.model->cfg->cell_m, half = sim.model->cfg->post_m / 2;
+    double cell = sim.model->cfg->world.cell_m, half = sim.model->cfg->world.post_m / 2;
     assert_true(world_has_centre_post(sim.world));
     assert_true(fabs(ray_across_centre() - M_SQRT2 * (0.5 * cell - half)) < 0.001);
     assert_true(now()->centre_post);
@@ -193,7 +193,7 @@ static void test_hud_timers(void **state)
     assert_false(over);
     sim.race.started = 1;
     sim.race.global_start_s = 0;
-    sim.step = (uint64_t)llround((sim.race.limit_s + 1.5) / sim.model->cfg->step_s);
+    sim.step = (uint64_t)llround((sim.race.limit_s + 1.5) / sim.model->cfg->sim.step_s);
     hud_timers(now(), g, l, &over);
     assert_true(over);
     sim.step = 0;

@@ -78,7 +78,7 @@ static void place_reset_replay(const simcfg_t *c)
     assert_int_equal(telem_close(&tel, err, sizeof err), 0);
     double x, y, h;
     world_pose(s.world, &x, &y, &h);
-    world_place(s.world, (maze_x(&m, m.start) + 0.5) * c->cell_m, (maze_y(&m, m.start) + 0.5) * c->cell_m, M_PI / 2, NULL);
+    world_place(s.world, (maze_x(&m, m.start) + 0.5) * c->world.cell_m, (maze_y(&m, m.start) + 0.5) * c->world.cell_m, M_PI / 2, NULL);
     seated(&s, "reset to the start");
     for (int side = 0; side < 2; side++) wheel_r_m[side] = s.model->wheel_r_m[side];
     sim_free(&s);
@@ -106,8 +106,8 @@ static void test_robot_file_diameters(void **state)
     static simcfg_t c;
     config_defaults(&c);
     /* as a robot file's chassis gives them: each wheel's */
-    c.wheel_left_d_m -= DIFF_M / 2;
-    c.wheel_right_d_m += DIFF_M / 2;
+    c.robot.wheel_left_d_m -= DIFF_M / 2;
+    c.robot.wheel_right_d_m += DIFF_M / 2;
     place_reset_replay(&c);
 }
 

@@ -41,7 +41,7 @@ static void test_rays_hit_maze_walls(void **state)
     maze_set_wall(&m, maze_cell(&m, 0, 1), MAZE_NORTH, MAZE_WALL_OPEN);
     world_t *w = world_create(&model, &m, 0.5, 0.5, M_PI / 2); /* robot out of the way */
     assert_non_null(w);
-    double c = cfg.cell_m, half = cfg.wall_thick_m / 2, z = 0.02;
+    double c = cfg.world.cell_m, half = cfg.world.wall_thick_m / 2, z = 0.02;
     /* from the centre of (0,0): east wall 90 - 6 mm away */
     assert_true(fabs(world_ray(w, c / 2, c / 2, z, 0, 1.0) - (c / 2 - half)) < 0.001);
     /* north: (0,0)->(0,1)->(0,2) open, wall north of (0,2) */
@@ -49,7 +49,7 @@ static void test_rays_hit_maze_walls(void **state)
     /* out of range: nothing */
     assert_true(world_ray(w, c / 2, c / 2, z, M_PI / 2, 0.3) < 0);
     /* above the walls: nothing */
-    assert_true(world_ray(w, c / 2, c / 2, cfg.wall_height_m + 0.01, 0, 1.0) < 0);
+    assert_true(world_ray(w, c / 2, c / 2, cfg.world.wall_height_m + 0.01, 0, 1.0) < 0);
     world_destroy(w);
 }
 
@@ -63,15 +63,15 @@ static void test_centre_post_toggle(void **state)
     for (uint16_t c = 0; c < 16; c++)
         for (uint8_t d = 0; d < 4; d++) maze_set_wall(&m, (maze_cell_t)c, d, MAZE_WALL_OPEN);
     world_t *w = world_create(&model, &m, 0.09, 0.09, M_PI / 2);
-    double c = cfg.cell_m, y = 2 * c, z = 0.02;
+    double c = cfg.world.cell_m, y = 2 * c, z = 0.02;
     /* along the post row y = 2 cells, from the west wall's inside: the first
      * post hit is (1,2), then (2,2) the centre; start just east of (1,2) */
     double x0 = c + 0.02;
     assert_true(world_has_centre_post(w));
-    assert_true(fabs(world_ray(w, x0, y, z, 0, 1.0) - (c - 0.02 - cfg.post_m / 2)) < 0.001);
+    assert_true(fabs(world_ray(w, x0, y, z, 0, 1.0) - (c - 0.02 - cfg.world.post_m / 2)) < 0.001);
     world_set_centre_post(w, 0);
     assert_false(world_has_centre_post(w));
-    assert_true(fabs(world_ray(w, x0, y, z, 0, 1.0) - (2 * c - 0.02 - cfg.post_m / 2)) < 0.001);
+    assert_true(fabs(world_ray(w, x0, y, z, 0, 1.0) - (2 * c - 0.02 - cfg.world.post_m / 2)) < 0.001);
     world_set_centre_post(w, 1);
     assert_true(world_has_centre_post(w));
     world_destroy(w);
@@ -87,9 +87,9 @@ static void motor_world_step(world_t *w, motor_t mo[2], int cmd_l, int cmd_r)
 {
     motor_drive_t d[2];
     int cmd[2] = { cmd_l, cmd_r };
-    for (int i = 0; i < 2; i++) d[i] = motor_drive(&mo[i], cmd[i], world_wheel_rate(w, i), cfg.step_s);
+    for (int i = 0; i < 2; i++) d[i] = motor_drive(&mo[i], cmd[i], world_wheel_rate(w, i), cfg.sim.step_s);
     world_step(w, d);
-    for (int i = 0; i < 2; i++) motor_after(&mo[i], &d[i], world_wheel_rate(w, i), cfg.step_s);
+    for (int i = 0; i < 2; i++) motor_after(&mo[i], &d[i], world_wheel_rate(w, i), cfg.sim.step_s);
 }
 
 /* Drive with constant commands for seconds; motors per motor.c. */
@@ -97,10 +97,10 @@ static run_t drive(const maze_t *m, double x0, double y0, double h0, int cmd_l, 
 {
     world_t *w = world_create(&model, m, x0, y0, h0);
     motor_t mo[2];
-    motor_init(&mo[0], &cfg.drive[0], 6.0, 0, 1.0);
-    motor_init(&mo[1], &cfg.drive[0], 6.0, 0, 1.0);
+    motor_init(&mo[0], &cfg.robot.drive[0], 6.0, 0, 1.0);
+    motor_init(&mo[1], &cfg.robot.drive[0], 6.0, 0, 1.0);
     run_t r = { 0, 0, 0, 0, 1, -1, 0 };
-    int steps = (int)lround(seconds / cfg.step_s);
+    int steps = (int)lround(seconds / cfg.sim.step_s);
     for (int i = 0; i < steps; i++) {
         motor_world_step(w, mo, cmd_l, cmd_r);
         double z = world_body_z(w);
@@ -126,7 +126,7 @@ static void test_straight_speed(void **state)
     for (uint8_t x = 0; x + 1 < 16; x++) maze_set_wall(&m, maze_cell(&m, x, 0), MAZE_EAST, MAZE_WALL_OPEN);
     /* 1.5 s: steady after ~0.6 s (the rotors' inertia) */
     run_t r = drive(&m, 0.09, 0.09, 0.0, 512, 512, 1.5);
-    double want = motor_free_speed(&cfg.drive[0], 512.0 / 1023 * 6.0) * model.wheel_r_m[WORLD_LEFT];
+    double want = motor_free_speed(&cfg.robot.drive[0], 512.0 / 1023 * 6.0) * model.wheel_r_m[WORLD_LEFT];
     if (fabs(r.v - want) > 0.03 * want) fail_msg("speed %.4f m/s, want %.4f", r.v, want);
     assert_true(r.x > 0.09 + 0.3);                        /* it went east */
     /* the exact solver keeps a symmetric robot straight */
@@ -145,9 +145,9 @@ static void test_no_tunnelling(void **state)
     maze_set_wall(&m, maze_cell(&m, 0, 0), MAZE_EAST, MAZE_WALL_OPEN);
     maze_set_wall(&m, maze_cell(&m, 1, 0), MAZE_EAST, MAZE_WALL_OPEN);
     run_t r = drive(&m, 0.09, 0.09, 0.0, 1023, 1023, 3.0);
-    double wall_x = 3 * cfg.cell_m - cfg.wall_thick_m / 2;
-    assert_true(r.x + cfg.body_l_m / 2 <= wall_x + 0.002); /* front of the body at the wall */
-    assert_true(r.x > wall_x - cfg.body_l_m / 2 - 0.03);    /* and it got there */
+    double wall_x = 3 * cfg.world.cell_m - cfg.world.wall_thick_m / 2;
+    assert_true(r.x + cfg.robot.body_l_m / 2 <= wall_x + 0.002); /* front of the body at the wall */
+    assert_true(r.x > wall_x - cfg.robot.body_l_m / 2 - 0.03);    /* and it got there */
     assert_true(r.collisions >= 1);
 }
 
@@ -164,7 +164,7 @@ static void test_stays_on_floor(void **state)
     /* circle between posts: post-free interior only exists between posts, so
      * drive slowly round the centre post on a ~0.3 m radius */
     run_t r = drive(&m, 4 * 0.18 - 0.3, 4 * 0.18, M_PI / 2, 300, 200, 60.0);
-    double z0 = cfg.body_clearance_m + cfg.body_h_m / 2;
+    double z0 = cfg.robot.body_clearance_m + cfg.robot.body_h_m / 2;
     assert_true(r.z_min > z0 - 0.004 && r.z_max < z0 + 0.004);
 }
 
@@ -194,8 +194,8 @@ static void test_place(void **state)
     maze_set_wall(&m, maze_cell(&m, 0, 0), MAZE_NORTH, MAZE_WALL_OPEN);
     world_t *w = world_create(&model, &m, 0.09, 0.09, M_PI / 2);
     motor_t mo[2];
-    motor_init(&mo[0], &cfg.drive[0], 6.0, 0, 1.0);
-    motor_init(&mo[1], &cfg.drive[0], 6.0, 0, 1.0);
+    motor_init(&mo[0], &cfg.robot.drive[0], 6.0, 0, 1.0);
+    motor_init(&mo[1], &cfg.robot.drive[0], 6.0, 0, 1.0);
     for (int i = 0; i < 300; i++) motor_world_step(w, mo, 900, 700); /* drive off north, turning a little */
     double a0 = world_wheel_angle(w, WORLD_LEFT), a1 = world_wheel_angle(w, WORLD_RIGHT), x, y, h, v, om;
     assert_true(fabs(a0) > 0.5 && fabs(a0 - a1) > 0.05);
@@ -210,8 +210,8 @@ static void test_place(void **state)
     assert_true(fabs(x - 0.27) < 1e-9 && fabs(y - 0.09) < 1e-9 && fabs(h) < 1e-9);
     assert_true(fabs(world_wheel_angle(w, WORLD_LEFT) - 0.25) < 1e-9 && fabs(world_wheel_angle(w, WORLD_RIGHT) + 1.5) < 1e-9);
     unsigned before = world_collisions(w);
-    motor_init(&mo[0], &cfg.drive[0], 6.0, 0, 1.0); /* carried: no current left in the motors */
-    motor_init(&mo[1], &cfg.drive[0], 6.0, 0, 1.0);
+    motor_init(&mo[0], &cfg.robot.drive[0], 6.0, 0, 1.0); /* carried: no current left in the motors */
+    motor_init(&mo[1], &cfg.robot.drive[0], 6.0, 0, 1.0);
     for (int i = 0; i < 200; i++) motor_world_step(w, mo, 0, 0); /* it settles where it was put */
     world_pose(w, &x, &y, &h);
     if (!(fabs(x - 0.27) < 0.002 && fabs(y - 0.09) < 0.002 && world_collisions(w) == before))
@@ -251,15 +251,15 @@ static void test_asymmetry_and_variation(void **state)
     (void)state;
     simcfg_t c = cfg;
     assert_true(fabs(veer(&c, 1)) < 1e-4);
-    c.wheel_d_diff_m = 0.0002;
+    c.asym.wheel_d_diff_m = 0.0002;
     double left = veer(&c, 1);
     if (!(left < -0.002)) fail_msg("right wheel 0.2 mm larger: %.4f m sideways, want left", left);
     c = cfg;
-    c.motor_k_diff_pct = 2; /* a right motor with a 2 % larger constant tops out 2 % slower: right */
+    c.asym.motor_k_diff_pct = 2; /* a right motor with a 2 % larger constant tops out 2 % slower: right */
     double right = veer(&c, 1);
     if (!(right > 0.002)) fail_msg("right motor constant +2 %%: %.4f m sideways, want right", right);
     c = cfg;
-    c.wheel_d_sigma_m = 0.0002;
+    c.var.wheel_d_sigma_m = 0.0002;
     double a = veer(&c, 1), b = veer(&c, 2), a2 = veer(&c, 1);
     assert_true(a == a2 && a != b && fabs(a) > 1e-4);
 }

@@ -22,7 +22,7 @@ void hal_sim_set_log(FILE *out) { log_out = out; }
 
 uint32_t hal_micros(void)
 {
-    if (sim) return (uint32_t)(sim->step * (uint64_t)llround(sim->model->cfg->step_s * 1e6));
+    if (sim) return (uint32_t)(sim->step * (uint64_t)llround(sim->model->cfg->sim.step_s * 1e6));
     return 0; /* no simulation attached: time stands at 0 */
 }
 
@@ -65,7 +65,7 @@ void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_
 {
     /* a copy for the contest's observers (hal_sim_belief); the simulation never reads it */
     belief.seq++;
-    belief.t_us = sim ? sim->step * (uint64_t)llround(sim->model->cfg->step_s * 1e6) : 0;
+    belief.t_us = sim ? sim->step * (uint64_t)llround(sim->model->cfg->sim.step_s * 1e6) : 0;
     belief.map = *map;
     belief.cell = cell;
     belief.heading = heading;

@@ -100,7 +100,7 @@ board_t *board_open(const board_spec_t *spec, const char *image, sim_state_t *s,
     avrhost_image_t img;
     if (avrhost_make(&b->host, spec->mcu, spec->path, err, errn) != 0) return open_fail(b);
     if (avrhost_read(&img, image, 1, spec->mcu, spec->name, err, errn) != 0 ||
-        avrhost_put(&b->host, &img, image, spec->mcu, spec->f_cpu, s->model->cfg->step_s, err, errn) != 0)
+        avrhost_put(&b->host, &img, image, spec->mcu, spec->f_cpu, s->model->cfg->sim.step_s, err, errn) != 0)
         return open_fail(b);
     avr_t *avr = b->host.avr;
     avr->vcc = avr->avcc = avr->aref = (uint32_t)lround(spec->vcc_v * 1000.0);

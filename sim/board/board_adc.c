@@ -63,12 +63,12 @@ static int map_ir(board_adc_t *a, char *err, size_t errn)
     int nir = sim_ir_count(a->sim);
     for (int i = 0; i < nir; i++) {
         int k = robot_part_of_kind(c, "ir", (unsigned)i);
-        const ir_part_spec_t *ps = (const ir_part_spec_t *)(const void *)c->part[k].spec;
+        const ir_part_spec_t *ps = (const ir_part_spec_t *)(const void *)c->robot.part[k].spec;
         int ch = (int)ps->adc_channel;
         if (ch < 0) continue;
         if (ch >= BOARD_ADC_CHANNELS || ch == a->spec->sw_channel || ch == a->spec->bat_channel) {
             snprintf(err, errn, "%s: ir.%s.adc_channel %d: the board %s has no free ADC channel %d (switches on %d, battery on %d)",
-                     c->robot_path, c->part[k].name, ch, a->spec->name, ch, a->spec->sw_channel, a->spec->bat_channel);
+                     c->robot.path, c->robot.part[k].name, ch, a->spec->name, ch, a->spec->sw_channel, a->spec->bat_channel);
             return -1;
         }
         a->ir_of_channel[ch] = i;

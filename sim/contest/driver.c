@@ -15,9 +15,9 @@ void driver_init(driver_t *d, const maze_t *m, const sim_model_t *md, int runs)
     const simcfg_t *c = md->cfg;
     double wheel_r_m = (md->wheel_r_m[WORLD_LEFT] + md->wheel_r_m[WORLD_RIGHT]) / 2; /* the wheels' mean */
     /* m/s per command step at no load: V/1023 / Kt * wheel radius */
-    d->v_per_cmd = motor_free_speed(&c->drive[0], battery_spec_full_v(&c->battery)) / 1023.0 * wheel_r_m;
-    double cell_m = c->cell_m;
-    d->decel_m_s2 = fmin(2.0, DECEL_G * c->tyre_mu_dynamic * 9.81);
+    d->v_per_cmd = motor_free_speed(&c->robot.drive[0], battery_spec_full_v(&c->robot.battery)) / 1023.0 * wheel_r_m;
+    double cell_m = c->world.cell_m;
+    d->decel_m_s2 = fmin(2.0, DECEL_G * c->robot.tyre_mu_dynamic * 9.81);
     d->n = 0;
     d->idx = 1;
     d->vref = 0;
@@ -77,7 +77,7 @@ void driver_update(driver_t *d, sim_state_t *s)
     double fwd = 0, turn;
     if (fabs(e) > TURN_IN_PLACE) {
         /* on the spot, yaw rate damped; gentler on slippery tyres */
-        double lim = 450 * fmin(1.0, s->model->cfg->tyre_mu_dynamic);
+        double lim = 450 * fmin(1.0, s->model->cfg->robot.tyre_mu_dynamic);
         turn = clamp(900 * e - 60 * om, -lim, lim);
         d->vref = 0;
     } else {
@@ -85,7 +85,7 @@ void driver_update(driver_t *d, sim_state_t *s)
          * feed-forward from the motor's no-load speed plus a speed loop */
         double vref = fmin(CRUISE_M_S, sqrt(2 * d->decel_m_s2 * dist));
         /* and accelerate no harder than we brake, or the tyres spin */
-        vref = fmin(vref, d->vref + d->decel_m_s2 * s->model->cfg->step_s);
+        vref = fmin(vref, d->vref + d->decel_m_s2 * s->model->cfg->sim.step_s);
         d->vref = vref;
         fwd = clamp(vref / d->v_per_cmd + 3000 * (vref - v), -1023, 1023);
         turn = clamp(1200 * e - 40 * om, -300, 300);

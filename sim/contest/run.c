@@ -37,12 +37,12 @@ int run_load_config(const run_opts_t *o, simcfg_t *c)
         fprintf(stderr, "%s: %s\n", o->config_path ? o->config_path : o->robot_path ? o->robot_path : "robots/paper.ini", err);
         return -1;
     }
-    if (o->time_limit_s > 0) c->time_limit_s = o->time_limit_s;
-    if (o->centre_post >= 0) c->centre_post = o->centre_post;
+    if (o->time_limit_s > 0) c->sim.time_limit_s = o->time_limit_s;
+    if (o->centre_post >= 0) c->world.centre_post = o->centre_post;
     if (o->paper_friction) {
         /* the paper's shipped Unity values: static 0.35, dynamic 0.25 */
-        c->tyre_mu = 0.35;
-        c->tyre_mu_dynamic = 0.25;
+        c->robot.tyre_mu = 0.35;
+        c->robot.tyre_mu_dynamic = 0.25;
     }
     return 0;
 }
@@ -227,7 +227,7 @@ static const char *after_step(run_t *r, watch_t *w)
     long cbaud;
     if (s->diverged) {
         fprintf(stderr, "%s: the physics diverged at %.6g s (more than ODE integrates in steps of %g s with this config)\n",
-                r->maze_path, sim_time_s(s), r->cfg.step_s);
+                r->maze_path, sim_time_s(s), r->cfg.sim.step_s);
         return "physics_diverged";
     }
     if (r->rep) report_step(r->rep, s);
@@ -277,7 +277,7 @@ static const char *step(run_t *r, watch_t *w)
 /* The contest loop: the hands, then a step, until something ends the run. */
 static void contest_loop(run_t *r)
 {
-    watch_t w = { 0, 0, 0, r->cfg.time_limit_s + 60.0 }; /* a lap under way may finish over time, flagged */
+    watch_t w = { 0, 0, 0, r->cfg.sim.time_limit_s + 60.0 }; /* a lap under way may finish over time, flagged */
     double h;
     r->t0 = wall_now();
     world_pose(r->sim.world, &w.last_x, &w.last_y, &h);

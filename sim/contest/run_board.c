@@ -143,7 +143,7 @@ static const char *board_after(run_t *r, void *self)
         fprintf(stderr, "mmsim: %s: %s\n", o->avr_elf, err);
         return strstr(err, "auto-trigger") ? "board_unsupported" : "avr_stopped";
     }
-    if (sim_time_s(&r->sim) >= r->cfg.time_limit_s) return "time_limit";
+    if (sim_time_s(&r->sim) >= r->cfg.sim.time_limit_s) return "time_limit";
     return NULL;
 }
 

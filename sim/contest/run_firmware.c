@@ -43,7 +43,7 @@ static void fw_start(run_t *r, fw_t *f)
     fw_set_speed_runs((uint8_t)r->o->runs);
     fw_setup();
     /* a build with -DHAL_TICK_HZ=250 ticks every 4th step, as on the AVR */
-    f->steps_per_tick = lround(1.0 / (HAL_TICK_HZ * r->cfg.step_s));
+    f->steps_per_tick = lround(1.0 / (HAL_TICK_HZ * r->cfg.sim.step_s));
     if (f->steps_per_tick < 1) f->steps_per_tick = 1;
     f->tick_steps = f->steps_per_tick - 1; /* the first step ticks */
 }

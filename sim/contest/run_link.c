@@ -51,7 +51,7 @@ static void link_exchange(link_t *l, sim_state_t *s)
 {
     link_io_t io;
     memset(&io, 0, sizeof io);
-    io.t_us = (uint32_t)(s->step * (uint64_t)llround(s->model->cfg->step_s * 1e6));
+    io.t_us = (uint32_t)(s->step * (uint64_t)llround(s->model->cfg->sim.step_s * 1e6));
     io.encoder[0] = s->encoder[WORLD_LEFT].count;
     io.encoder[1] = s->encoder[WORLD_RIGHT].count;
     for (int i = 0; i < 3; i++) { /* a new reading bumped the sensor's count */
@@ -76,10 +76,14 @@ static uint16_t tof_range_mm(const run_t *r) { return (uint16_t)lround(robot_tof
 static link_opts_t link_opts(const run_t *r)
 {
     link_opts_t lo = r->o->link;
-    lo.compat_range_m = r->cfg.compat_range_m;
+    lo.compat_range_m = r->cfg.link.compat_range_m;
     return lo;
 }
-static uint32_t counts_x100(const run_t *r) { return (uint32_t)lround(r->cfg.drive[0].encoder_ppr * r->cfg.drive[0].gear_ratio * 100.0); }
+static uint32_t counts_x100(const run_t *r)
+{
+    const drive_spec_t *d = &r->cfg.robot.drive[0];
+    return (uint32_t)lround(d->encoder_ppr * d->gear_ratio * 100.0);
+}
 
 static void link_exchange_run(run_t *r, void *self) { link_exchange(&((link_run_t *)self)->lnk, &r->sim); }
 
@@ -87,7 +91,7 @@ static void link_exchange_run(run_t *r, void *self) { link_exchange(&((link_run_
 static const char *link_after(run_t *r, void *self)
 {
     if (((link_run_t *)self)->lnk.st.stops) return "mcu_stopped";
-    if (sim_time_s(&r->sim) >= r->cfg.time_limit_s) return "time_limit";
+    if (sim_time_s(&r->sim) >= r->cfg.sim.time_limit_s) return "time_limit";
     return NULL;
 }
 
@@ -123,7 +127,7 @@ int run_link_connect(run_t *r, const char *port, long baud, void **self, char *e
     lo.pty = 0;
     lo.baud = (uint32_t)baud;
     link_run_t *l = new_self(self);
-    return link_open(&l->lnk, &lo, r->cfg.step_s, tof_range_mm(r), counts_x100(r), stderr, err, errlen) == 0 ? 0 : -1;
+    return link_open(&l->lnk, &lo, r->cfg.sim.step_s, tof_range_mm(r), counts_x100(r), stderr, err, errlen) == 0 ? 0 : -1;
 }
 
 static void link_results(run_t *r, void *self, json_t *j)
@@ -150,7 +154,7 @@ static int serial_open(run_t *r, void **self)
     char err[400];
     link_opts_t lo = link_opts(r);
     link_run_t *l = new_self(self);
-    if (link_open(&l->lnk, &lo, r->cfg.step_s, tof_range_mm(r), counts_x100(r), stderr, err, sizeof err) == 0) return 0;
+    if (link_open(&l->lnk, &lo, r->cfg.sim.step_s, tof_range_mm(r), counts_x100(r), stderr, err, sizeof err) == 0) return 0;
     fprintf(stderr, "mmsim: %s\n", err);
     return RUN_EXTERNAL;
 }
@@ -162,12 +166,12 @@ static int avr_open(run_t *r, void **self)
     char err[400];
     int fd;
     link_run_t *l = new_self(self);
-    if (pil_open(&l->pil, r->o->avr_elf, r->o->avr_mcu, r->o->avr_f_cpu, r->cfg.step_s, &fd, err, sizeof err) != 0) {
+    if (pil_open(&l->pil, r->o->avr_elf, r->o->avr_mcu, r->o->avr_f_cpu, r->cfg.sim.step_s, &fd, err, sizeof err) != 0) {
         fprintf(stderr, "mmsim: %s\n", err);
         return RUN_EXTERNAL;
     }
     link_opts_t lo = link_opts(r);
-    link_open_fd(&l->lnk, fd, "simavr UART0", &lo, r->cfg.step_s, tof_range_mm(r), counts_x100(r),
+    link_open_fd(&l->lnk, fd, "simavr UART0", &lo, r->cfg.sim.step_s, tof_range_mm(r), counts_x100(r),
                  r->o->verbose ? stderr : NULL);
     return 0;
 }

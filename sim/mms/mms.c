@@ -271,7 +271,7 @@ static int wall_query(const mms_t *m, int rel, int away)
 static void place_at_start(const mms_t *m, struct sim_state_s *s)
 {
     const maze_t *t = m->truth;
-    double cell = s->model->cfg->cell_m;
+    double cell = s->model->cfg->world.cell_m;
     world_place(s->world, (maze_x(t, t->start) + 0.5) * cell, (maze_y(t, t->start) + 0.5) * cell,
                 M_PI / 2 - t->start_heading * (M_PI / 2), NULL);
 }

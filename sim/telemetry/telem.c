@@ -208,10 +208,10 @@ int telem_open(telem_t *t, const telem_opts_t *o, const sim_state_t *s, char *er
     t->live_lost_s = 0;
     t->live_errno = 0;
     t->quiet_fd = t->tcpq ? open("/dev/null", O_WRONLY | O_CLOEXEC) : -1;
-    t->step_us = (uint64_t)llround(s->model->cfg->step_s * 1e6);
-    t->fast_steps = period_steps(hz, s->model->cfg->step_s);
-    t->race_steps = period_steps(TELEM_RACE_HZ, s->model->cfg->step_s);
-    t->link_steps = period_steps(TELEM_LINK_HZ, s->model->cfg->step_s);
+    t->step_us = (uint64_t)llround(s->model->cfg->sim.step_s * 1e6);
+    t->fast_steps = period_steps(hz, s->model->cfg->sim.step_s);
+    t->race_steps = period_steps(TELEM_RACE_HZ, s->model->cfg->sim.step_s);
+    t->link_steps = period_steps(TELEM_LINK_HZ, s->model->cfg->sim.step_s);
     t->last_fast = t->last_race = t->last_link = NONE;
     t->link = o->link;
     t->link_tx0 = t->link_rx0 = t->link_steps0 = 0;
@@ -293,8 +293,8 @@ static void pub_parts(telem_t *t, const sim_state_t *s, int64_t ut)
     mmlcm_parts_t m;
     m.utime = ut;
     m.nparts = 0;
-    for (int i = 0; i < s->model->cfg->nparts && i < ROBOT_MAX_PARTS; i++) {
-        const robot_part_t *p = &s->model->cfg->part[i];
+    for (int i = 0; i < s->model->cfg->robot.nparts && i < ROBOT_MAX_PARTS; i++) {
+        const robot_part_t *p = &s->model->cfg->robot.part[i];
         mmlcm_part_t *q = &part[m.nparts++];
         q->kind = (char *)p->kind->name;
         q->name = (char *)p->name;

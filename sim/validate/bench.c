@@ -35,7 +35,7 @@ int bench_init(const simcfg_t *c)
     return sim_init(&bench.sim, &bench.model, &bench.maze, 1);
 }
 
-long bench_steps(const simcfg_t *c, double seconds) { return lround(seconds / c->step_s); }
+long bench_steps(const simcfg_t *c, double seconds) { return lround(seconds / c->sim.step_s); }
 
 void bench_add(validate_check_t *v, int *n, const char *name, double expected, double measured, const char *unit,
                 double tol_pct, int bound, const char *source)

@@ -88,7 +88,7 @@ static operating_t dyno(const simcfg_t *c, double w_rad_s, double t_s)
  * simulator's own response). */
 static operating_t at_current(const simcfg_t *c, double current_a)
 {
-    double lo = 0, hi = c->drive[0].stall_torque_nm;
+    double lo = 0, hi = c->robot.drive[0].stall_torque_nm;
     operating_t op = { 0, 0, 0 };
     for (int i = 0; i < 30; i++) {
         op = loaded(c, 0.5 * (lo + hi), 1.0);
@@ -103,18 +103,18 @@ static operating_t at_current(const simcfg_t *c, double current_a)
  * at t_s (rad/s), and the current (A). */
 static double reference_response(const simcfg_t *c, double t_s, double *current_a)
 {
-    double r, ke, eta, n = c->drive[0].gear_ratio, v = battery_spec_full_v(&c->battery), i0 = c->drive[0].no_load_a;
-    motor_constants(&c->drive[0], &r, &ke, &eta);
+    double r, ke, eta, n = c->robot.drive[0].gear_ratio, v = battery_spec_full_v(&c->robot.battery), i0 = c->robot.drive[0].no_load_a;
+    motor_constants(&c->robot.drive[0], &r, &ke, &eta);
     sim_model_t md; /* the bench's robot (open_bench's seed), for its left wheel's radius */
     sim_model_build(&md, c, 1);
     double rw = md.wheel_r_m[WORLD_LEFT];
-    double j = 0.5 * c->wheel_mass_kg * rw * rw + c->drive[0].rotor_inertia_kgm2 * n * n; /* the wheel's axle inertia */
+    double j = 0.5 * c->robot.wheel_mass_kg * rw * rw + c->robot.drive[0].rotor_inertia_kgm2 * n * n; /* the wheel's axle inertia */
     double i = 0, w = 0, h = 1e-7;
     long k = lround(t_s / h);
     for (long s = 0; s < k; s++) {
         double di[4], dw[4], ii = i, ww = w;
         for (int q = 0; q < 4; q++) {
-            di[q] = (v - r * ii - ke * n * ww) / c->drive[0].l_h;
+            di[q] = (v - r * ii - ke * n * ww) / c->robot.drive[0].l_h;
             double drive = n * eta * ke * (ii - i0);
             dw[q] = (ww > 0 || drive > 0) ? drive / j : 0; /* stiction holds it until the drive beats the friction */
             double f = q < 2 ? 0.5 * h : h;
@@ -209,26 +209,26 @@ static int front_tof(const simcfg_t *c)
 {
     for (unsigned i = 0; i < WORLD_TOF_COUNT; i++) {
         int k = robot_part_of_kind(c, "tof", i);
-        if (k >= 0 && c->part[k].yaw_deg == 0) return (int)i;
+        if (k >= 0 && c->robot.part[k].yaw_deg == 0) return (int)i;
     }
     return -1;
 }
 
 static const tof_spec_t *tof_spec(const simcfg_t *c, int i)
 {
-    return (const tof_spec_t *)c->part[robot_part_of_kind(c, "tof", (unsigned)i)].spec;
+    return (const tof_spec_t *)c->robot.part[robot_part_of_kind(c, "tof", (unsigned)i)].spec;
 }
 
 static tof_stats_t tof_facing(const simcfg_t *c, double true_m, double seconds)
 {
     tof_stats_t st = { 0, 0, 0, 0, 0 };
     int f = front_tof(c);
-    double sensor_y = c->part[robot_part_of_kind(c, "tof", (unsigned)f)].y_m;
+    double sensor_y = c->robot.part[robot_part_of_kind(c, "tof", (unsigned)f)].y_m;
     bench_corridor(&bench.maze, 16);
     sim_state_t *s = open_bench(c, 0, 0);
     if (!s) return st;
-    double face = 16 * c->cell_m - c->wall_thick_m / 2;
-    world_place(s->world, face - sensor_y - true_m, 0.5 * c->cell_m, 0.0, NULL);
+    double face = 16 * c->world.cell_m - c->world.wall_thick_m / 2;
+    world_place(s->world, face - sensor_y - true_m, 0.5 * c->world.cell_m, 0.0, NULL);
     double sum = 0, sum2 = 0;
     uint32_t seen = s->tof_count[f];
     for (long i = 0; i < bench_steps(c, seconds); i++) {
@@ -260,13 +260,13 @@ static double tunnelling_mm(const simcfg_t *c)
     bench_corridor(&bench.maze, 3);
     sim_state_t *s = open_bench(c, 0, 0);
     if (!s) return 1e9;
-    double face = 3 * c->cell_m - c->wall_thick_m / 2, worst = 0;
+    double face = 3 * c->world.cell_m - c->world.wall_thick_m / 2, worst = 0;
     s->cmd[0] = s->cmd[1] = MOTOR_CMD_MAX;
     for (long i = 0; i < bench_steps(c, 3.0); i++) {
         sim_step(s->model, s);
         for (int k = 0; k < 8; k++) { /* the body's corners: a robot that pitches leads with an edge */
-            double p[3] = { (k & 1 ? 0.5 : -0.5) * c->body_w_m, (k & 2 ? 0.5 : -0.5) * c->body_l_m,
-                            c->body_clearance_m + (k & 4 ? c->body_h_m : 0) }, q[3];
+            double p[3] = { (k & 1 ? 0.5 : -0.5) * c->robot.body_w_m, (k & 2 ? 0.5 : -0.5) * c->robot.body_l_m,
+                            c->robot.body_clearance_m + (k & 4 ? c->robot.body_h_m : 0) }, q[3];
             world_body_point(s->world, p, q);
             worst = fmax(worst, q[0] - face);
         }
@@ -286,20 +286,21 @@ static int pololu_30_lp(const drive_spec_t *d)
 
 static int motor_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
-    operating_t nl = loaded(c, 0, 3.0), st = stalled(c, 1.0), first = stalled(c, c->step_s);
-    int pololu = pololu_30_lp(&c->drive[0]);
-    bench_add(v, &n, "no_load_speed", c->drive[0].no_load_rpm, nl.rpm, "rpm", 2, VALIDATE_NEAR,
+    const drive_spec_t *d = &c->robot.drive[0];
+    operating_t nl = loaded(c, 0, 3.0), st = stalled(c, 1.0), first = stalled(c, c->sim.step_s);
+    int pololu = pololu_30_lp(d);
+    bench_add(v, &n, "no_load_speed", d->no_load_rpm, nl.rpm, "rpm", 2, VALIDATE_NEAR,
               pololu ? DATASHEET ": no load" : ROBOT_MOTOR ": no load");
-    bench_add(v, &n, "no_load_current", c->drive[0].no_load_a, nl.current_a, "A", 2, VALIDATE_NEAR,
+    bench_add(v, &n, "no_load_current", d->no_load_a, nl.current_a, "A", 2, VALIDATE_NEAR,
               pololu ? DATASHEET ": no load" : ROBOT_MOTOR ": no load");
-    bench_add(v, &n, "stall_torque", c->drive[0].stall_torque_nm, st.torque_nm, "N*m", 2, VALIDATE_NEAR,
+    bench_add(v, &n, "stall_torque", d->stall_torque_nm, st.torque_nm, "N*m", 2, VALIDATE_NEAR,
               pololu ? DATASHEET ": stall 2.9 kg*mm" : ROBOT_MOTOR ": stall");
-    bench_add(v, &n, "stall_current", c->drive[0].stall_a, st.current_a, "A", 2, VALIDATE_NEAR,
+    bench_add(v, &n, "stall_current", d->stall_a, st.current_a, "A", 2, VALIDATE_NEAR,
               pololu ? DATASHEET ": stall" : ROBOT_MOTOR ": stall");
-    double r = c->drive[0].rated_v / c->drive[0].stall_a;
-    bench_add(v, &n, "first_step_current", battery_spec_full_v(&c->battery) / r * (1 - exp(-c->step_s * r / c->drive[0].l_h)), first.current_a, "A", 2,
-        VALIDATE_NEAR, "analytic: V/R*(1 - exp(-t*R/L)) one step after stall");
-    if (!pololu_30_lp(&c->drive[0])) return n;
+    double r = d->rated_v / d->stall_a;
+    bench_add(v, &n, "first_step_current", battery_spec_full_v(&c->robot.battery) / r * (1 - exp(-c->sim.step_s * r / d->l_h)),
+        first.current_a, "A", 2, VALIDATE_NEAR, "analytic: V/R*(1 - exp(-t*R/L)) one step after stall");
+    if (!pololu_30_lp(d)) return n;
     /* the datasheet's maximum-efficiency point: 320 rpm, 0.66 kg*mm, 0.11 A */
     operating_t me = at_current(c, 0.11);
     bench_add(v, &n, "max_efficiency_speed", 320, me.rpm, "rpm", 8, VALIDATE_NEAR, DATASHEET ": max efficiency, at its 0.11 A");
@@ -313,6 +314,7 @@ static int motor_checks(const simcfg_t *c, validate_check_t *v, int n)
 
 static int response_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
+    const drive_spec_t *d = &c->robot.drive[0];
     static const struct {
         const char *name;
         double t_s;
@@ -322,7 +324,7 @@ static int response_checks(const simcfg_t *c, validate_check_t *v, int n)
         bench_add(v, &n, at[k].name, w_ref, lifted_speed_at(c, at[k].t_s), "rad/s", 2, VALIDATE_NEAR,
             "analytic: the motor's L-R circuit and the wheel's inertia (rotor reflected), RK4 at 0.1 us");
     }
-    bench_add(v, &n, "encoder_counts_per_rev", c->drive[0].encoder_ppr * c->drive[0].gear_ratio, counts_per_rev(c), "counts", 0.5,
+    bench_add(v, &n, "encoder_counts_per_rev", d->encoder_ppr * d->gear_ratio, counts_per_rev(c), "counts", 0.5,
         VALIDATE_NEAR, "encoder PPR x gear ratio (paper: 12 x 29.86 = 358.32)");
     return n;
 }
@@ -354,11 +356,11 @@ static int floor_checks(const simcfg_t *c, validate_check_t *v, int n)
 static simcfg_t bench_robot(const simcfg_t *c)
 {
     simcfg_t b = *c;
-    b.battery.ocv_n = 1;
-    b.battery.ocv_v[0] = c->drive[0].rated_v;
-    b.battery.r_ohm = 0;
-    for (int i = 0; i < 2; i++) b.drive[i].driver_r_ohm = 0;
-    b.wheel_left_d_m = b.wheel_right_d_m = (c->wheel_left_d_m + c->wheel_right_d_m) / 2;
+    b.robot.battery.ocv_n = 1;
+    b.robot.battery.ocv_v[0] = c->robot.drive[0].rated_v;
+    b.robot.battery.r_ohm = 0;
+    for (int i = 0; i < 2; i++) b.robot.drive[i].driver_r_ohm = 0;
+    b.robot.wheel_left_d_m = b.robot.wheel_right_d_m = (c->robot.wheel_left_d_m + c->robot.wheel_right_d_m) / 2;
     return b;
 }
 

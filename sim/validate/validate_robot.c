@@ -47,7 +47,7 @@ static step_t voltage_step(const simcfg_t *c, double v_volt, int rot)
     bench_field(&bench.maze, 10, 10, 4);
     sim_state_t *s = &bench.sim;
     if (bench_init(c) != 0) return r;
-    if (rot) world_place(s->world, 4.5 * c->cell_m, 4.5 * c->cell_m, M_PI / 2, NULL); /* the field's middle */
+    if (rot) world_place(s->world, 4.5 * c->world.cell_m, 4.5 * c->world.cell_m, M_PI / 2, NULL); /* the field's middle */
     long n = bench_steps(c, 1.2), tail = bench_steps(c, 0.2);
     static double trace[20000];
     if (n > 20000) n = 20000;
@@ -57,15 +57,15 @@ static step_t voltage_step(const simcfg_t *c, double v_volt, int rot)
         sim_step(s->model, s);
         /* as the robot measures it: by its encoders (wheel turns x its calibrated wheel
          * radius), turning rate over its track (mazerunner-core: MOUSE_RADIUS) */
-        double vl = world_wheel_rate(s->world, WORLD_LEFT) * c->wheel_left_d_m / 2;
-        double vr = world_wheel_rate(s->world, WORLD_RIGHT) * c->wheel_right_d_m / 2;
-        trace[i] = rot ? (vr - vl) / (2 * c->wheel_x_m) : (vr + vl) / 2;
+        double vl = world_wheel_rate(s->world, WORLD_LEFT) * c->robot.wheel_left_d_m / 2;
+        double vr = world_wheel_rate(s->world, WORLD_RIGHT) * c->robot.wheel_right_d_m / 2;
+        trace[i] = rot ? (vr - vl) / (2 * c->robot.wheel_x_m) : (vr + vl) / 2;
     }
     for (long i = n - tail; i < n; i++) r.steady += trace[i] / tail;
     for (long i = 0; i < n; i++)
         if (trace[i] >= 0.632 * r.steady) {
             double prev = i ? trace[i - 1] : 0, f = (0.632 * r.steady - prev) / (trace[i] - prev);
-            r.tm_s = (i + f) * c->step_s; /* trace[i] is after step i + 1 */
+            r.tm_s = (i + f) * c->sim.step_s; /* trace[i] is after step i + 1 */
             break;
         }
     sim_free(s);
@@ -82,9 +82,9 @@ static int motion_checks(const simcfg_t *run, validate_check_t *v, int n)
 {
     static simcfg_t fine; /* large */
     fine = *run;
-    if (fine.step_s > FINE_STEP_S) fine.step_s = FINE_STEP_S;
+    if (fine.sim.step_s > FINE_STEP_S) fine.sim.step_s = FINE_STEP_S;
     const simcfg_t *c = &fine;
-    const robot_measured_t *m = &c->measured;
+    const robot_measured_t *m = &c->robot.measured;
     /* two voltages: the slope leaves out the voltage friction takes (mazerunner-core's BIAS_FF);
      * spins at 1 and 2 V: faster, a robot whose mass sits ahead of its axle skids (its centre of
      * mass needs more centripetal force than the tyres give) */
@@ -104,7 +104,7 @@ static int motion_checks(const simcfg_t *run, validate_check_t *v, int n)
                       10, VALIDATE_NEAR, MEASURED " (motors at -V/+V; slope at 1 and 2 V)");
         if (m->rot_tm_s > 0)
             bench_add(v, &n, "rotation_tm", m->rot_tm_s, b.tm_s, "s", 10, VALIDATE_NEAR, MEASURED " (a 2 V step from rest)");
-        if (m->rot_km_deg_s_v > 0 && run->step_s > FINE_STEP_S) {
+        if (m->rot_km_deg_s_v > 0 && run->sim.step_s > FINE_STEP_S) {
             a = voltage_step(run, r1, 1), b = voltage_step(run, r2, 1);
             bench_add(v, &n, "rotation_km_at_step", m->rot_km_deg_s_v, (b.steady - a.steady) / (r2 - r1) * DEG_PER_RAD,
                       "deg/s/V", 0, VALIDATE_REPORT, "rotation_km at the config's step_s (the above at 0.2 ms)");
@@ -140,7 +140,7 @@ static void counts_500mm(const simcfg_t *c, double counts[2])
 
 static int count_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
-    const robot_measured_t *m = &c->measured;
+    const robot_measured_t *m = &c->robot.measured;
     if (m->counts_500mm_left <= 0 && m->counts_500mm_right <= 0) return n;
     double counts[2];
     counts_500mm(c, counts);
@@ -156,7 +156,7 @@ static int count_checks(const simcfg_t *c, validate_check_t *v, int n)
 /* Sensor i's mean lit-minus-dark over 64 samples, the robot where it is. */
 static double lit_minus_dark(sim_state_t *s, unsigned i)
 {
-    const robot_part_t *p = &s->model->cfg->part[robot_part_of_kind(s->model->cfg, "ir", i)];
+    const robot_part_t *p = &s->model->cfg->robot.part[robot_part_of_kind(s->model->cfg, "ir", i)];
     unsigned g = (unsigned)((const ir_part_spec_t *)p->spec)->emitter;
     double sum = 0;
     for (int k = 0; k < 64; k++) {
@@ -182,10 +182,10 @@ static int ir_calibration(const simcfg_t *c, validate_check_t *v, int n)
         if (pose == 0) bench_field(&bench.maze, 1, 4, 0);
         else bench_field(&bench.maze, 3, 1, 1);
         if (bench_init(c) != 0) return n;
-        double y = pose == 0 ? 1.5 * c->cell_m : c->wall_thick_m / 2 + c->body_l_m / 2;
-        world_place(s->world, pose == 0 ? 0.5 * c->cell_m : 1.5 * c->cell_m, y, M_PI / 2, NULL);
+        double y = pose == 0 ? 1.5 * c->world.cell_m : c->world.wall_thick_m / 2 + c->robot.body_l_m / 2;
+        world_place(s->world, pose == 0 ? 0.5 * c->world.cell_m : 1.5 * c->world.cell_m, y, M_PI / 2, NULL);
         for (unsigned i = 0; i < nir; i++) {
-            const robot_part_t *p = &c->part[robot_part_of_kind(c, "ir", i)];
+            const robot_part_t *p = &c->robot.part[robot_part_of_kind(c, "ir", i)];
             const ir_part_spec_t *sp = (const ir_part_spec_t *)p->spec;
             double want = pose == 0 ? sp->measured_centred : sp->measured_backed;
             if (want < 0) continue;
@@ -207,17 +207,17 @@ static int ir_model_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
     int k = robot_part_of_kind(c, "ir", 0);
     if (k < 0) return n;
-    const robot_part_t *p = &c->part[k];
+    const robot_part_t *p = &c->robot.part[k];
     const ir_spec_t *m = &((const ir_part_spec_t *)p->spec)->model;
     sim_state_t *s = &bench.sim;
     bench_corridor(&bench.maze, 4);
     if (bench_init(c) != 0) return n;
-    double face = 4 * c->cell_m - c->wall_thick_m / 2, d = 0.12;
+    double face = 4 * c->world.cell_m - c->world.wall_thick_m / 2, d = 0.12;
     /* heading so the sensor looks east: its yaw off the robot's forward */
     double h = -p->yaw_deg * M_PI / 180, ch = cos(h - M_PI / 2), sh = sin(h - M_PI / 2);
     double sx = ch * p->x_m - sh * p->y_m, sy = sh * p->x_m + ch * p->y_m; /* the sensor from the body centre */
-    world_place(s->world, face - d - sx, 0.5 * c->cell_m - sy, h, NULL);
-    double want = m->gain_counts * c->wall_reflectivity * (m->ref_m / d) * (m->ref_m / d);
+    world_place(s->world, face - d - sx, 0.5 * c->world.cell_m - sy, h, NULL);
+    double want = m->gain_counts * c->world.wall_reflectivity * (m->ref_m / d) * (m->ref_m / d);
     bench_add(v, &n, "ir_far_field_120mm", want, lit_minus_dark(s, 0), "counts", 5, VALIDATE_NEAR,
               "IR model: gain * reflectivity * (ref/d)^2 for a wall straight on in the far field (ir.h)");
     double dark = 0;
@@ -237,7 +237,7 @@ static int gyro_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
     int k = robot_part_of_kind(c, "gyro", 0);
     if (k < 0) return n;
-    const gyro_spec_t *g = (const gyro_spec_t *)c->part[k].spec;
+    const gyro_spec_t *g = (const gyro_spec_t *)c->robot.part[k].spec;
     bench_field(&bench.maze, 3, 3, 1);
     sim_state_t *s = &bench.sim;
     if (bench_init(c) != 0) return n;

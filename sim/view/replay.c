@@ -248,7 +248,7 @@ void replay_snap(const replay_t *r, double t_s, snap_t *out)
 {
     const simcfg_t *c = &r->cfg;
     int64_t t_us = clamp_us(r, t_s);
-    double cpr = c->drive[0].encoder_ppr * c->drive[0].gear_ratio; /* encoder counts per wheel turn */
+    double cpr = c->robot.drive[0].encoder_ppr * c->robot.drive[0].gear_ratio; /* encoder counts per wheel turn */
     long i = LAST_AT(r->pose, r->npose, t_us);
     long j = LAST_AT(r->sensors, r->nsensors, t_us);
     double wheel[2] = { 0, 0 };
@@ -260,14 +260,14 @@ void replay_snap(const replay_t *r, double t_s, snap_t *out)
     } else { /* before the first pose: at the start cell's centre */
         static const double a[4] = { M_PI / 2, 0.0, -M_PI / 2, M_PI };
         const maze_t *m = &r->maze;
-        snap_place(out, &r->model, m, r->centre_post, (maze_x(m, m->start) + 0.5) * c->cell_m,
-                   (maze_y(m, m->start) + 0.5) * c->cell_m, a[m->start_heading & 3], wheel);
+        snap_place(out, &r->model, m, r->centre_post, (maze_x(m, m->start) + 0.5) * c->world.cell_m,
+                   (maze_y(m, m->start) + 0.5) * c->world.cell_m, a[m->start_heading & 3], wheel);
     }
     for (int k = 0; k < out->ntof; k++) out->tof[k].hit_m = j >= 0 ? r->sensors[j].tof_true_m[k] : -1;
     long e = LAST_AT(r->parts, r->nparts, t_us);
     for (unsigned g = 0; g < SIM_EMITTER_GROUPS; g++) out->emitter[g] = e >= 0 && (r->parts[e].emitters >> g & 1);
-    out->time_s = (double)llround((double)t_us * 1e-6 / c->step_s) * c->step_s; /* whole steps, as sim_time_s */
-    race_init(&out->race, &r->maze, c->cell_m, c->time_limit_s);
+    out->time_s = (double)llround((double)t_us * 1e-6 / c->sim.step_s) * c->sim.step_s; /* whole steps, as sim_time_s */
+    race_init(&out->race, &r->maze, c->world.cell_m, c->sim.time_limit_s);
     rebuild_race(r, &out->race, t_us);
 }
 

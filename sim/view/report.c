@@ -36,8 +36,8 @@ report_t *report_new(const sim_state_t *s)
     report_t *r = calloc(1, sizeof *r);
     if (!r) return NULL;
     r->maze = s->maze;
-    r->cell_m = s->model->cfg->cell_m;
-    r->every = (uint64_t)llround(REPORT_SAMPLE_S / s->model->cfg->step_s);
+    r->cell_m = s->model->cfg->world.cell_m;
+    r->every = (uint64_t)llround(REPORT_SAMPLE_S / s->model->cfg->sim.step_s);
     if (r->every == 0) r->every = 1;
     r->visited[s->maze->start] = 1;
     return r;

@@ -24,14 +24,14 @@ void scene_camera(const sim_model_t *model, const maze_t *m, const snap_t *s, in
                   double eye[3], double target[3], double up[3])
 {
     const simcfg_t *c = model->cfg;
-    double cell = c->cell_m, W = m->width * cell, H = m->height * cell;
+    double cell = c->world.cell_m, W = m->width * cell, H = m->height * cell;
     double x = s->x_m, y = s->y_m, h = s->heading_rad;
     double yaw, pitch, dist;
     up[0] = up[1] = 0;
     up[2] = 1;
     if (cam == SCENE_FOLLOW) {
         /* behind the robot, looking at its body centre */
-        target[0] = x, target[1] = y, target[2] = c->body_clearance_m + c->body_h_m / 2;
+        target[0] = x, target[1] = y, target[2] = c->robot.body_clearance_m + c->robot.body_h_m / 2;
         yaw = h + M_PI, pitch = 22 * M_PI / 180, dist = 0.32;
     } else if (cam == SCENE_TOP) {
         target[0] = x, target[1] = y, target[2] = 0;
@@ -129,7 +129,7 @@ static void wheel(double r, double w, double angle)
 
 static void floor_and_cells(const simcfg_t *c, const maze_t *m)
 {
-    double cell = c->cell_m, W = m->width * cell, H = m->height * cell, pad = cell;
+    double cell = c->world.cell_m, W = m->width * cell, H = m->height * cell, pad = cell;
     glNormal3d(0, 0, 1);
     glBegin(GL_QUADS);
     colour(SCENE_FLOOR, 1);
@@ -147,7 +147,7 @@ static void floor_and_cells(const simcfg_t *c, const maze_t *m)
 
 static void walls(const simcfg_t *c, const maze_t *m, int centre_post)
 {
-    double cell = c->cell_m, post = c->post_m, th = c->wall_thick_m, hh = c->wall_height_m;
+    double cell = c->world.cell_m, post = c->world.post_m, th = c->world.wall_thick_m, hh = c->world.wall_height_m;
     int cx = m->width % 2 == 0 ? m->width / 2 : -1, cy = m->height % 2 == 0 ? m->height / 2 : -1;
     for (int py = 0; py <= m->height; py++)
         for (int px = 0; px <= m->width; px++)
@@ -170,19 +170,19 @@ static void walls(const simcfg_t *c, const maze_t *m, int centre_post)
 /* The robot standing level at the snapshot's pose. */
 static void robot(const sim_model_t *model, const snap_t *s)
 {
-    const simcfg_t *c = model->cfg;
+    const simcfg_robot_t *rb = &model->cfg->robot;
     glPushMatrix();
     glTranslated(s->x_m, s->y_m, 0);
     glRotated((s->heading_rad - M_PI / 2) * 180 / M_PI, 0, 0, 1); /* robot frame: x right, y forward */
-    box(0, 0, c->body_clearance_m + c->body_h_m / 2, c->body_w_m, c->body_l_m, c->body_h_m, SCENE_ROBOT, SCENE_ROBOT);
+    box(0, 0, rb->body_clearance_m + rb->body_h_m / 2, rb->body_w_m, rb->body_l_m, rb->body_h_m, SCENE_ROBOT, SCENE_ROBOT);
     /* a white nose so the heading shows from above */
-    box(0, c->body_l_m / 2 - 0.006, c->body_clearance_m + c->body_h_m + 0.001, c->body_w_m * 0.5, 0.01, 0.002,
+    box(0, rb->body_l_m / 2 - 0.006, rb->body_clearance_m + rb->body_h_m + 0.001, rb->body_w_m * 0.5, 0.01, 0.002,
         0xF0F0F0u, 0xF0F0F0u);
     for (int side = 0; side < 2; side++) {
         glPushMatrix();
-        glTranslated(side == WORLD_LEFT ? -c->wheel_x_m : c->wheel_x_m, c->axle_y_m, s->wheel_hub_z_m[side]);
+        glTranslated(side == WORLD_LEFT ? -rb->wheel_x_m : rb->wheel_x_m, rb->axle_y_m, s->wheel_hub_z_m[side]);
         /* hinge angle positive = forward roll: about -x in the robot frame */
-        wheel(model->wheel_r_m[side], c->wheel_w_m, -s->wheel_rad[side]);
+        wheel(model->wheel_r_m[side], rb->wheel_w_m, -s->wheel_rad[side]);
         glPopMatrix();
     }
     glPopMatrix();
@@ -222,7 +222,7 @@ static void rays(const snap_t *s)
 static void ir_beam(const simcfg_t *cf, const snap_t *s, int part)
 {
     enum { SEG = 16 };
-    const ir_part_spec_t *sp = (const ir_part_spec_t *)cf->part[part].spec;
+    const ir_part_spec_t *sp = (const ir_part_spec_t *)cf->robot.part[part].spec;
     const snap_ray_t *bm = &s->part[part];
     const double *pos = bm->pos_m, *ax = bm->axis, *lf = bm->left, *up = bm->up;
     double d = bm->hit_m, len = d >= 0 ? d : sp->model.max_m;
@@ -254,8 +254,8 @@ static void ir_beams(const simcfg_t *c, const snap_t *s)
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);
     glLineWidth(2);
-    for (int i = 0; i < c->nparts; i++)
-        if (!strcmp(c->part[i].kind->name, "ir")) ir_beam(c, s, i);
+    for (int i = 0; i < c->robot.nparts; i++)
+        if (!strcmp(c->robot.part[i].kind->name, "ir")) ir_beam(c, s, i);
     glLineWidth(1);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
@@ -268,7 +268,7 @@ static void overlay(const simcfg_t *cf, const maze_t *m, const scene_belief_t *b
 {
     const maze_t *k = b->map;
     if (k->width != m->width || k->height != m->height) return;
-    double cell = cf->cell_m, z = cf->wall_height_m + 0.003;
+    double cell = cf->world.cell_m, z = cf->world.wall_height_m + 0.003;
     glDisable(GL_LIGHTING);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -351,7 +351,7 @@ void scene_draw(const sim_model_t *model, const maze_t *m, const snap_t *s, int 
 
 void scene_draw_cells(const sim_model_t *model, const maze_t *m, const char *colours, const char *texts, size_t stride)
 {
-    double cell = model->cfg->cell_m;
+    double cell = model->cfg->world.cell_m;
     glEnable(GL_DEPTH_TEST);
     glBegin(GL_QUADS);
     for (uint16_t k = 0; k < maze_cells(m); k++) {

@@ -7,10 +7,10 @@
 #include "world/sensors/ir.h"
 #include "world/sensors/sensor.h"
 
-static int is_ir(const simcfg_t *c, int i) { return !strcmp(c->part[i].kind->name, "ir"); }
+static int is_ir(const simcfg_t *c, int i) { return !strcmp(c->robot.part[i].kind->name, "ir"); }
 
 /* The IR sensor i's beam reach (its model's max_m). */
-static double ir_max_m(const simcfg_t *c, int i) { return ((const ir_part_spec_t *)c->part[i].spec)->model.max_m; }
+static double ir_max_m(const simcfg_t *c, int i) { return ((const ir_part_spec_t *)c->robot.part[i].spec)->model.max_m; }
 
 void snap_from_sim(snap_t *out, const sim_state_t *s)
 {
@@ -29,7 +29,7 @@ void snap_from_sim(snap_t *out, const sim_state_t *s)
         sensor_frame(s->world, &s->model->pose[s->tof_part[i]], t->pos_m, t->axis, t->left, t->up);
         t->hit_m = s->tof_true_m[i];
     }
-    for (int i = 0; i < c->nparts; i++)
+    for (int i = 0; i < c->robot.nparts; i++)
         if (is_ir(c, i)) {
             snap_ray_t *b = &out->part[i];
             double n[3];
@@ -75,12 +75,12 @@ void snap_place(snap_t *out, const sim_model_t *model, const maze_t *m, int cent
     /* the ToF sensors as sim_init counts them: the robot file's first WORLD_TOF_COUNT */
     out->ntof = 0;
     out->tof_range_m = 1.2; /* m: the link's distance scale without a ToF sensor (sim.h) */
-    for (int i = 0; i < c->nparts && out->ntof < WORLD_TOF_COUNT; i++)
-        if (c->part[i].kind == sensor_kind("tof")) {
-            if (out->ntof == 0) out->tof_range_m = ((const tof_spec_t *)c->part[i].spec)->range_m;
+    for (int i = 0; i < c->robot.nparts && out->ntof < WORLD_TOF_COUNT; i++)
+        if (c->robot.part[i].kind == sensor_kind("tof")) {
+            if (out->ntof == 0) out->tof_range_m = ((const tof_spec_t *)c->robot.part[i].spec)->range_m;
             level_frame(x_m, y_m, heading_rad, &model->pose[i], &out->tof[out->ntof++]);
         }
-    for (int i = 0; i < c->nparts; i++)
+    for (int i = 0; i < c->robot.nparts; i++)
         if (is_ir(c, i)) {
             snap_ray_t *b = &out->part[i];
             level_frame(x_m, y_m, heading_rad, &model->pose[i], b);
@@ -129,7 +129,7 @@ double snap_maze_ray(const simcfg_t *cf, const maze_t *m, int centre_post, const
 {
     double n = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
     maze_ray_t r = { { pos_m[0], pos_m[1], pos_m[2] }, { dir[0] / n, dir[1] / n, dir[2] / n }, max_m, -1 };
-    double cell = cf->cell_m, post = cf->post_m, th = cf->wall_thick_m, hz = cf->wall_height_m / 2;
+    double cell = cf->world.cell_m, post = cf->world.post_m, th = cf->world.wall_thick_m, hz = cf->world.wall_height_m / 2;
     int cx = m->width % 2 == 0 ? m->width / 2 : -1, cy = m->height % 2 == 0 ? m->height / 2 : -1;
     /* the same boxes as world.c's build_maze: every post, then each wall once */
     for (int py = 0; py <= m->height; py++)

@@ -44,7 +44,7 @@ double battery_ocv(const battery_t *b)
     if (s->ocv_n <= 1) return s->ocv_v[0];
     double x = battery_soc(b) * (s->ocv_n - 1);
     int i = (int)x;
-    int last = (int)s->ocv_n - 1;
+    int last = s->ocv_n - 1;
     if (i >= last) return s->ocv_v[last];
     return s->ocv_v[i] + (x - i) * (s->ocv_v[i + 1] - s->ocv_v[i]);
 }
@@ -61,4 +61,4 @@ void battery_draw(battery_t *b, double current_a, double dt_s)
 
 double battery_drawn_mah(const battery_t *b) { return b->drawn_c / COULOMB_PER_MAH; }
 
-double battery_spec_full_v(const battery_spec_t *s) { return s->ocv_v[s->ocv_n >= 1 ? (int)s->ocv_n - 1 : 0]; }
+double battery_spec_full_v(const battery_spec_t *s) { return s->ocv_v[s->ocv_n >= 1 ? s->ocv_n - 1 : 0]; }

@@ -17,7 +17,7 @@
 #define BATTERY_OCV_MAX 11  /* ours: 11 points = every 10 % of charge */
 
 typedef struct {
-    double ocv_n;                    /* points in ocv_v, 1..BATTERY_OCV_MAX (a double: keytab.h lists) */
+    int ocv_n;                       /* points in ocv_v, 1..BATTERY_OCV_MAX */
     double ocv_v[BATTERY_OCV_MAX];   /* open-circuit voltage at soc = i/(ocv_n-1), V */
     double r_ohm;                    /* internal resistance, ohm */
     double capacity_mah;             /* capacity, mAh */

@@ -11,52 +11,53 @@
 #include "keytab.h"
 #include "robot.h"
 
-#define K(sec, name, def, min, max, unit, source) \
-    { sec, #name, offsetof(simcfg_t, name), def, min, max, unit, source, NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL }
-/* a key whose value is a whole number */
-#define KW(sec, name, def, min, max, unit, source) \
-    { sec, #name, offsetof(simcfg_t, name), def, min, max, unit, source, NULL, 1, 0, 0, KEYTAB_DOUBLE, 0, NULL }
-/* a key whose value is one of the words (stored as the word's index) */
-#define W(sec, name, def, words, source) \
-    { sec, #name, offsetof(simcfg_t, name), def, 0, sizeof words / sizeof words[0] - 1, "word", source, words, 1, 0, 0, KEYTAB_DOUBLE, 0, NULL }
+/* A key of section sec, stored in the group grp of simcfg_t. */
+#define K(sec, grp, name, def, min, max, unit, source) \
+    { sec, #name, offsetof(simcfg_t, grp.name), def, min, max, unit, source, NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL }
+/* a key whose value is a whole number (an int) */
+#define KW(sec, grp, name, def, min, max, unit, source) \
+    { sec, #name, offsetof(simcfg_t, grp.name), def, min, max, unit, source, NULL, 0, 0, 0, KEYTAB_INT, 0, NULL }
+/* a key whose value is one of the words (an int: the word's index) */
+#define W(sec, grp, name, def, words, source) \
+    { sec, #name, offsetof(simcfg_t, grp.name), def, 0, sizeof words / sizeof words[0] - 1, "word", source, words, 0, 0, 0, KEYTAB_INT, 0, NULL }
 
 static const char *const solvers[] = { "quickstep", "exact" };
 
 static const keytab_t keys[] = {
-    K("world", cell_m, 0.180, 0.05, 0.5, "m", "classic rules: 180 mm cells (half-size: 90 mm)"),
-    K("world", wall_thick_m, 0.012, 0.001, 0.05, "m", "classic rules: 12 mm walls"),
-    K("world", wall_height_m, 0.050, 0.005, 0.2, "m", "classic rules: 50 mm walls"),
-    K("world", post_m, 0.012, 0.001, 0.05, "m", "classic rules: 12x12 mm posts"),
-    KW("world", centre_post, 1, 0, 1, "0/1", "classic rules allow the goal's centre post"),
-    K("world", body_wall_mu, 0.3, 0, 3, "1", "ours: plastic on painted wood; only matters in a crash"),
-    K("world", wall_reflectivity, 0.85, 0, 1, "1", "ours: matt white wall faces (IR sensors; their gains in the robot file are for reflectivity 1)"),
+    K("world", world, cell_m, 0.180, 0.05, 0.5, "m", "classic rules: 180 mm cells (half-size: 90 mm)"),
+    K("world", world, wall_thick_m, 0.012, 0.001, 0.05, "m", "classic rules: 12 mm walls"),
+    K("world", world, wall_height_m, 0.050, 0.005, 0.2, "m", "classic rules: 50 mm walls"),
+    K("world", world, post_m, 0.012, 0.001, 0.05, "m", "classic rules: 12x12 mm posts"),
+    KW("world", world, centre_post, 1, 0, 1, "0/1", "classic rules allow the goal's centre post"),
+    K("world", world, body_wall_mu, 0.3, 0, 3, "1", "ours: plastic on painted wood; only matters in a crash"),
+    K("world", world, wall_reflectivity, 0.85, 0, 1, "1", "ours: matt white wall faces (IR sensors; their gains in the robot file are for reflectivity 1)"),
     /* the u16 65535 of compat distances stands for this; a reading at or beyond it goes as a timeout
      * (inih reads lines of at most 200 characters: the printed line must fit) */
-    K("link", compat_range_m, 1.0, 0.05, 10, "m",
+    K("link", link, compat_range_m, 1.0, 0.05, 10, "m",
       "paper's Unity simulator: its TimeOfFlight asset has range 1.0 m, its Arduino library converts with 1.0 m"),
     /* Asymmetries: each 0 by default (a symmetric robot drives straight);
      * set one to see the veer it alone causes. */
-    K("asymmetry", wheel_d_diff_m, 0, -0.005, 0.005, "m", "right wheel diameter minus left (the mean stays the robot file's)"),
-    K("asymmetry", motor_k_diff_pct, 0, -20, 20, "%", "right motor's constant (back-EMF and torque) relative to the left's, in per cent of the mean"),
-    K("asymmetry", tyre_mu_diff, 0, -1, 1, "1", "right tyre's friction minus left's (the mean stays robot.tyre_mu)"),
-    K("asymmetry", com_x_m, 0, -0.02, 0.02, "m", "body's centre of mass to the right of the centre line"),
-    K("asymmetry", com_y_m, 0, -0.02, 0.02, "m", "body's centre of mass ahead of the body's centre"),
+    K("asymmetry", asym, wheel_d_diff_m, 0, -0.005, 0.005, "m", "right wheel diameter minus left (the mean stays the robot file's)"),
+    K("asymmetry", asym, motor_k_diff_pct, 0, -20, 20, "%", "right motor's constant (back-EMF and torque) relative to the left's, in per cent of the mean"),
+    K("asymmetry", asym, tyre_mu_diff, 0, -1, 1, "1", "right tyre's friction minus left's (the mean stays robot.tyre_mu)"),
+    K("asymmetry", asym, com_x_m, 0, -0.02, 0.02, "m", "body's centre of mass to the right of the centre line"),
+    K("asymmetry", asym, com_y_m, 0, -0.02, 0.02, "m", "body's centre of mass ahead of the body's centre"),
     /* Per-seed variation of the asymmetries (Monte Carlo robustness runs):
      * each run adds a draw from N(0, sigma^2), from its own stream seeded by
      * the run's seed; 0 = none. */
-    K("variation", wheel_d_sigma_m, 0, 0, 0.002, "m", "spread of wheel_d_diff_m between robots (tyres differ by ~0.1 mm when trimmed by hand)"),
-    K("variation", motor_k_sigma_pct, 0, 0, 10, "%", "spread of motor_k_diff_pct (motors of one batch differ by a few per cent)"),
-    K("variation", tyre_mu_sigma, 0, 0, 0.5, "1", "spread of tyre_mu_diff"),
-    K("variation", com_sigma_m, 0, 0, 0.01, "m", "spread of com_x_m and com_y_m"),
+    K("variation", var, wheel_d_sigma_m, 0, 0, 0.002, "m", "spread of wheel_d_diff_m between robots (tyres differ by ~0.1 mm when trimmed by hand)"),
+    K("variation", var, motor_k_sigma_pct, 0, 0, 10, "%", "spread of motor_k_diff_pct (motors of one batch differ by a few per cent)"),
+    K("variation", var, tyre_mu_sigma, 0, 0, 0.5, "1", "spread of tyre_mu_diff"),
+    K("variation", var, com_sigma_m, 0, 0, 0.01, "m", "spread of com_x_m and com_y_m"),
     /* The firmware's control tick is no key: it is hal.h's HAL_TICK_HZ,
      * compiled into the firmware (the contest calls fw_tick every
      * 1/HAL_TICK_HZ s of simulation time). */
-    K("sim", step_s, 0.001, 1e-5, 0.01, "s", "1 kHz physics"),
-    W("sim", solver, 1, solvers, "exact: dWorldStep, no creep at rest, drives straight (README); quickstep slid a resting robot 10 mm/min"),
-    KW("sim", solver_iterations, 10, 1, 200, "1", "solver = quickstep only: at 5 the wheel hinges give and a straight run crabs 1.4 degrees"),
-    K("sim", contact_erp, 0.4, 0.01, 1, "1", "ours: contact error reduction; stiff enough that the robot rests within 0.1 mm"),
-    K("sim", contact_cfm, 1e-5, 0, 1, "m/N", "ours: contact softness"),
-    K("sim", time_limit_s, 600, 1, 86400, "s", "contest rules: 10 minutes"),
+    K("sim", sim, step_s, 0.001, 1e-5, 0.01, "s", "1 kHz physics"),
+    W("sim", sim, solver, 1, solvers, "exact: dWorldStep, no creep at rest, drives straight (README); quickstep slid a resting robot 10 mm/min"),
+    KW("sim", sim, solver_iterations, 10, 1, 200, "1", "solver = quickstep only: at 5 the wheel hinges give and a straight run crabs 1.4 degrees"),
+    K("sim", sim, contact_erp, 0.4, 0.01, 1, "1", "ours: contact error reduction; stiff enough that the robot rests within 0.1 mm"),
+    K("sim", sim, contact_cfm, 1e-5, 0, 1, "m/N", "ours: contact softness"),
+    K("sim", sim, time_limit_s, 600, 1, 86400, "s", "contest rules: 10 minutes"),
 };
 
 #define NKEYS (sizeof keys / sizeof keys[0])
@@ -105,7 +106,7 @@ static int on_key(void *user, const char *section, const char *name, const char 
 /* Cross-key checks that one key's range cannot express. */
 static int check(const simcfg_t *c, char *reason, size_t len)
 {
-    if (c->post_m < c->wall_thick_m) {
+    if (c->world.post_m < c->world.wall_thick_m) {
         snprintf(reason, len, "world.post_m: posts thinner than walls");
         return -1;
     }

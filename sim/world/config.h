@@ -22,16 +22,16 @@
 #include "battery.h"
 
 /* One wheel's drive: motor (datasheet figures at rated_v, output shaft),
- * gearbox, H-bridge and encoder. All doubles (keytab.h). */
+ * gearbox, H-bridge and encoder. */
 typedef struct {
-    double motor_model;     /* MOTOR_MODEL_PAPER or MOTOR_MODEL_DATASHEET */
+    int motor_model;        /* MOTOR_MODEL_PAPER or MOTOR_MODEL_DATASHEET */
     double rated_v, no_load_rpm, no_load_a, stall_torque_nm, stall_a;
     double l_h;
     double gear_ratio;
     double rotor_inertia_kgm2; /* at the motor shaft; 0 = ignored */
     double driver_r_ohm;    /* H-bridge on-resistance in series with the motor, ohm */
     double encoder_ppr;     /* encoder counts per motor-shaft revolution */
-    double encoder_channels; /* 1 (pulses) or 2 (quadrature) */
+    int encoder_channels;   /* 1 (pulses) or 2 (quadrature) */
 } drive_spec_t;
 
 /* Figures measured on the real robot that the file describes (a robot
@@ -65,52 +65,85 @@ typedef struct {
     double spec[ROBOT_SPEC_MAX];
 } robot_part_t;
 
+/* The arena (config [world]). */
 typedef struct {
-    /* [world] */
     double cell_m;          /* cell pitch, post centre to post centre */
     double wall_thick_m;    /* wall thickness = post width */
     double wall_height_m;
     double post_m;          /* post side */
-    double centre_post;     /* 1 = the post in the middle of the goal is there */
+    int centre_post;        /* 1 = the post in the middle of the goal is there */
     double body_wall_mu;    /* robot body/wheel on a wall or post */
     double wall_reflectivity; /* of walls and posts to the IR sensors' light, 0..1 */
-    /* The robot (robot file, robot.h): the chassis, both drives, the
-     * battery and the sensors. config_load never sets these. */
+} simcfg_world_t;
+
+/* The robot (the robot file, robot.h): its [chassis.NAME], [motor.*] and
+ * [encoder.*] (drive[]), [battery.NAME], [measured.NAME] and sensors.
+ * config_load never sets these. */
+typedef struct {
+    /* [chassis.NAME] */
     double body_w_m, body_l_m, body_h_m, body_mass_kg;
     double body_clearance_m; /* floor to the underside of the body */
     double wheel_w_m, wheel_mass_kg;
     double wheel_x_m;       /* wheel centre plane from the body's centre line */
     double axle_y_m;        /* axle position along the body, from its centre */
     double caster_r_m, caster_mass_kg, caster_y_m;
-    double casters;         /* 1, or 2: a second skid at caster2_y_m, as the first */
+    int casters;            /* 1, or 2: a second skid at caster2_y_m, as the first */
     double caster2_y_m;
     double tyre_mu;         /* Coulomb friction, tyre on floor */
     double tyre_mu_dynamic; /* sliding friction; <= tyre_mu */
     double tyre_slip_m_s;   /* contact slip speed above which tyre_mu_dynamic applies */
-    double start;           /* ROBOT_START_*: where the robot stands in the start cell */
+    int start;              /* ROBOT_START_*: where the robot stands in the start cell */
     double body_com_y_m;    /* the body's centre of mass ahead of its centre (the robot file's) */
     double body_yaw_inertia_kgm2; /* the body's about its vertical axis; 0 = a uniform box's */
     double wheel_left_d_m, wheel_right_d_m; /* the robot file's (the model derives each wheel's radius) */
+    char chassis_name[ROBOT_NAME_MAX];
+    /* [motor.left] [encoder.left], [motor.right] [encoder.right] */
     drive_spec_t drive[2];  /* WORLD_LEFT, WORLD_RIGHT */
+    /* [battery.NAME] */
     battery_spec_t battery;
-    int nparts;             /* sensors, in the robot file's order */
-    robot_part_t part[ROBOT_MAX_PARTS];
-    char robot_path[256];   /* the robot file as given (the paper robot's is built in) */
-    char chassis_name[ROBOT_NAME_MAX], battery_name[ROBOT_NAME_MAX];
+    char battery_name[ROBOT_NAME_MAX];
+    /* [measured.NAME] */
     robot_measured_t measured;
     char measured_name[ROBOT_NAME_MAX]; /* "" = no [measured.NAME] */
-    /* [link] */
+    /* the sensors: [tof.NAME], [ir.NAME], [gyro.NAME], ... */
+    int nparts;             /* sensors, in the robot file's order */
+    robot_part_t part[ROBOT_MAX_PARTS];
+    char path[256];         /* the robot file as given (the paper robot's is built in) */
+} simcfg_robot_t;
+
+/* The serial link to an MCU (config [link]). */
+typedef struct {
     double compat_range_m;  /* compat protocol's distance scale: 65535 = this distance (--protocol compat) */
-    /* [asymmetry]: right minus left, 0 = symmetric */
+} simcfg_link_t;
+
+/* The robot's asymmetries (config [asymmetry]): right minus left, 0 = symmetric. */
+typedef struct {
     double wheel_d_diff_m, motor_k_diff_pct, tyre_mu_diff, com_x_m, com_y_m;
-    /* [variation]: per-seed spread of the asymmetries */
+} simcfg_asym_t;
+
+/* Per-seed spread of the asymmetries (config [variation]). */
+typedef struct {
     double wheel_d_sigma_m, motor_k_sigma_pct, tyre_mu_sigma, com_sigma_m;
-    /* [sim] */
+} simcfg_var_t;
+
+/* The physics engine and the contest's limit (config [sim]). */
+typedef struct {
     double step_s;          /* physics step */
-    double solver;          /* SIM_SOLVER_QUICKSTEP or SIM_SOLVER_EXACT */
-    double solver_iterations;
+    int solver;             /* SIM_SOLVER_QUICKSTEP or SIM_SOLVER_EXACT */
+    int solver_iterations;  /* quickstep's iterations per step */
     double contact_erp, contact_cfm; /* contact softness (ODE units) */
     double time_limit_s;    /* contest limit */
+} simcfg_sim_t;
+
+/* Everything a run is built from: the config file's sections and the
+ * robot file's robot. */
+typedef struct {
+    simcfg_world_t world;
+    simcfg_robot_t robot;
+    simcfg_link_t link;
+    simcfg_asym_t asym;
+    simcfg_var_t var;
+    simcfg_sim_t sim;
 } simcfg_t;
 
 enum { MOTOR_MODEL_PAPER = 0, MOTOR_MODEL_DATASHEET = 1 };

@@ -8,6 +8,9 @@
 static double per(const keytab_t *k) { return k->per > 0 ? k->per : 1.0; }
 static void *at(const keytab_t *k, void *t) { return (char *)t + k->offset; }
 static double *field(const keytab_t *k, void *t) { return at(k, t); }
+/* A list key's count of numbers given (keytab.h). */
+static int *count(const keytab_t *k, void *t) { return (int *)(void *)((char *)t + k->size); }
+static int count_of(const keytab_t *k, const void *t) { return *(const int *)(const void *)((const char *)t + k->size); }
 
 /* A number or word (already divided by per) into k's field, by its type. */
 static void store(const keytab_t *k, void *t, double v)
@@ -38,7 +41,7 @@ void keytab_defaults(const keytab_t *tab, size_t n, void *target)
         } else if (k->type == KEYTAB_DOUBLES) {
             for (int j = 0; j < k->list; j++) field(k, target)[j] = d / per(k);
         } else if (k->list) {
-            field(k, target)[-1] = isnan(k->def) ? 0 : 1;
+            *count(k, target) = isnan(k->def) ? 0 : 1;
             for (int j = 0; j < k->list; j++) field(k, target)[j] = j ? 0.0 : d / per(k);
         } else {
             store(k, target, d / per(k));
@@ -157,7 +160,7 @@ int keytab_set(const keytab_t *k, void *t, const char *where, const char *val, c
         store(k, t, v[0]);
         return 0;
     }
-    field(k, t)[-1] = n;
+    *count(k, t) = n;
     for (int i = 0; i < cap; i++) field(k, t)[i] = i < n ? v[i] : 0.0;
     return 0;
 }
@@ -188,7 +191,7 @@ void keytab_print(const keytab_t *k, const void *t, FILE *out)
     } else if (k->choices) {
         fputs(k->choices[(int)load(k, t)], out);
     } else if (k->list) {
-        int n = k->type == KEYTAB_DOUBLES ? k->list : (int)f[-1];
+        int n = k->type == KEYTAB_DOUBLES ? k->list : count_of(k, t);
         for (int i = 0; i < n; i++) {
             if (i) fputc(' ', out);
             number(f[i], per(k), out);

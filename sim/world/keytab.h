@@ -9,7 +9,9 @@
  * A field is a double unless the key's type says otherwise: an int or a
  * uint32_t (whole numbers, or a word's index), a char array (text), an
  * array of exactly `list` doubles, or what the key's own parse function
- * makes of the text (a board's pin "D11"). */
+ * makes of the text (a board's pin "D11"). A double key with `list` > 0
+ * takes up to `list` numbers and stores how many in an int of the same
+ * struct (at offset `size`). */
 #ifndef KEYTAB_H
 #define KEYTAB_H
 
@@ -21,7 +23,7 @@
 #define KEYTAB_REQUIRED NAN
 
 typedef enum {
-    KEYTAB_DOUBLE = 0, /* a double; with list > 0 up to `list` numbers, their count in the double before them */
+    KEYTAB_DOUBLE = 0, /* a double; with list > 0 up to `list` numbers, their count in the int at offset `size` */
     KEYTAB_INT,        /* an int: a whole number, or a word's index */
     KEYTAB_U32,        /* a uint32_t: a whole number */
     KEYTAB_TEXT,       /* a char array of `size` bytes: 1 to size - 1 characters */
@@ -42,9 +44,9 @@ typedef struct {
     const char *const *choices; /* a word key: its words, the value is the index */
     int whole;                  /* 1: a whole number (a count, or 0/1) */
     double per;                 /* file units per stored unit (mm per m: 1000): stored = value / per; 0 means 1 */
-    int list;                   /* KEYTAB_DOUBLE: >0: up to this many numbers, space-separated, into consecutive doubles; the count goes to the double before them. KEYTAB_DOUBLES: exactly this many */
+    int list;                   /* KEYTAB_DOUBLE: >0: up to this many numbers, space-separated, into consecutive doubles; the count goes to the int at `size`. KEYTAB_DOUBLES: exactly this many */
     keytab_type_t type;
-    size_t size;                /* KEYTAB_TEXT, KEYTAB_PARSED: bytes of the field */
+    size_t size;                /* KEYTAB_TEXT, KEYTAB_PARSED: bytes of the field; a KEYTAB_DOUBLE list: the offset of its count (an int) in the target struct */
     keytab_parse_fn parse;      /* KEYTAB_PARSED */
 } keytab_t;
 

@@ -18,12 +18,12 @@ static asym_t asymmetry(const simcfg_t *c, uint64_t seed)
     rng_init(&r, seed, RNG_STREAM_VARIATION);
     double g[5];
     for (int i = 0; i < 5; i++) g[i] = rng_gauss(&r);
-    asym_t a = { c->wheel_d_diff_m, c->motor_k_diff_pct, c->tyre_mu_diff, c->com_x_m, c->com_y_m };
-    a.wheel_d_m += c->wheel_d_sigma_m * g[0];
-    a.motor_k_pct += c->motor_k_sigma_pct * g[1];
-    a.tyre_mu += c->tyre_mu_sigma * g[2];
-    a.com_x_m += c->com_sigma_m * g[3];
-    a.com_y_m += c->com_sigma_m * g[4];
+    asym_t a = { c->asym.wheel_d_diff_m, c->asym.motor_k_diff_pct, c->asym.tyre_mu_diff, c->asym.com_x_m, c->asym.com_y_m };
+    a.wheel_d_m += c->var.wheel_d_sigma_m * g[0];
+    a.motor_k_pct += c->var.motor_k_sigma_pct * g[1];
+    a.tyre_mu += c->var.tyre_mu_sigma * g[2];
+    a.com_x_m += c->var.com_sigma_m * g[3];
+    a.com_y_m += c->var.com_sigma_m * g[4];
     return a;
 }
 
@@ -32,24 +32,24 @@ static asym_t asymmetry(const simcfg_t *c, uint64_t seed)
  * 0.01, its sliding friction in the same ratio to it as the file's. */
 static void wheels(sim_model_t *m, const simcfg_t *c, const asym_t *a)
 {
-    double rw = (c->wheel_left_d_m + c->wheel_right_d_m) / 2 / 2; /* the mean diameter's half */
-    double diff = a->wheel_d_m + (c->wheel_right_d_m - c->wheel_left_d_m);
+    double rw = (c->robot.wheel_left_d_m + c->robot.wheel_right_d_m) / 2 / 2; /* the mean diameter's half */
+    double diff = a->wheel_d_m + (c->robot.wheel_right_d_m - c->robot.wheel_left_d_m);
     for (int s = 0; s < 2; s++) {
         double half = s == 0 ? -0.5 : 0.5; /* left, right */
         m->wheel_r_m[s] = rw + (s == 0 ? -0.25 : 0.25) * diff;
-        m->tyre_mu[s] = c->tyre_mu + half * a->tyre_mu;
+        m->tyre_mu[s] = c->robot.tyre_mu + half * a->tyre_mu;
         if (m->tyre_mu[s] < 0.01) m->tyre_mu[s] = 0.01;
-        m->tyre_mu_dynamic[s] = m->tyre_mu[s] * c->tyre_mu_dynamic / c->tyre_mu;
+        m->tyre_mu_dynamic[s] = m->tyre_mu[s] * c->robot.tyre_mu_dynamic / c->robot.tyre_mu;
         /* right minus left, in per cent of the mean */
         m->motor_k_scale[s] = 1.0 + (s == 0 ? -0.005 : 0.005) * a->motor_k_pct;
-        m->motor_model[s] = (int)c->drive[s].motor_model;
+        m->motor_model[s] = c->robot.drive[s].motor_model;
     }
 }
 
 static void sensor_poses(sim_model_t *m, const simcfg_t *c)
 {
-    for (int i = 0; i < c->nparts; i++) {
-        const robot_part_t *p = &c->part[i];
+    for (int i = 0; i < c->robot.nparts; i++) {
+        const robot_part_t *p = &c->robot.part[i];
         sim_pose_t *q = &m->pose[i];
         /* the robot frame's forward is +y: a yaw a turns it to (cos(pi/2 + a), sin(pi/2 + a)) */
         double yaw = M_PI / 2 + p->yaw_deg * M_PI / 180, pitch = p->pitch_deg * M_PI / 180;
@@ -70,14 +70,14 @@ void sim_model_build(sim_model_t *m, const simcfg_t *c, uint64_t seed)
 {
     asym_t a = asymmetry(c, seed);
     m->cfg = c;
-    m->solver = (int)c->solver;
-    m->solver_iterations = (int)c->solver_iterations;
-    m->start = (int)c->start;
-    m->casters = (int)c->casters;
+    m->solver = c->sim.solver;
+    m->solver_iterations = c->sim.solver_iterations;
+    m->start = c->robot.start;
+    m->casters = c->robot.casters;
     wheels(m, c, &a);
     /* the body's mass may sit off its geometric centre (asymmetry, and the robot file's) */
     m->body_com_m[0] = 0.0 + a.com_x_m;
-    m->body_com_m[1] = 0.0 + a.com_y_m + c->body_com_y_m;
-    m->body_com_m[2] = c->body_clearance_m + c->body_h_m / 2;
+    m->body_com_m[1] = 0.0 + a.com_y_m + c->robot.body_com_y_m;
+    m->body_com_m[2] = c->robot.body_clearance_m + c->robot.body_h_m / 2;
     sensor_poses(m, c);
 }

@@ -6,8 +6,8 @@
  * holds what is derived from them, once, in the unit the physics uses:
  * each wheel's radius, each motor's constant factor, each tyre's friction
  * and the body's centre of mass after this seed's [asymmetry] and
- * [variation]; the sensors' poses as vectors; the solver and the other
- * word and count keys as integers. Everything that changes during a run
+ * [variation]; the sensors' poses as vectors; the solver, the start and
+ * the casters as the config gives them. Everything that changes during a run
  * is in sim_state_t (sim.h). */
 #ifndef MODEL_H
 #define MODEL_H
@@ -37,9 +37,9 @@ typedef struct sim_model_s {
     double wheel_r_m[2];        /* each wheel's radius, m */
     double motor_k_scale[2];    /* each motor's constant (back-EMF and torque) relative to the file's, 1 */
     double tyre_mu[2];          /* each tyre's static friction on the floor (Coulomb, 1) */
-    double tyre_mu_dynamic[2];  /* each tyre's sliding friction, above cfg->tyre_slip_m_s (1) */
+    double tyre_mu_dynamic[2];  /* each tyre's sliding friction, above cfg->robot.tyre_slip_m_s (1) */
     double body_com_m[3];       /* the body's centre of mass in the chassis frame, before the casters' mass, m */
-    sim_pose_t pose[ROBOT_MAX_PARTS]; /* each sensor's, in cfg->part's order (cfg->nparts of them) */
+    sim_pose_t pose[ROBOT_MAX_PARTS]; /* each sensor's, in cfg->robot.part's order (cfg->robot.nparts of them) */
 } sim_model_t;
 
 /* Build m from the loaded c (which must outlive m) and the run's seed:

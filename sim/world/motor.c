@@ -28,7 +28,7 @@ double motor_free_speed(const drive_spec_t *c, double v_volt)
 
 void motor_init(motor_t *m, const drive_spec_t *c, double battery_v, double battery_r_ohm, double scale)
 {
-    m->model = (int)c->motor_model;
+    m->model = c->motor_model;
     m->n = c->gear_ratio;
     m->l_h = c->l_h;
     m->battery_v = battery_v;

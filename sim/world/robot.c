@@ -22,7 +22,7 @@ static const char *const starts[] = { "centre", "back_to_wall" };
 /* ---- the schemas of the robot's fixed parts ---- */
 
 #define C(name, field, per, min, max, unit, src) \
-    { NULL, #name, offsetof(simcfg_t, field), KEYTAB_REQUIRED, min, max, unit, src, NULL, 0, per, 0, KEYTAB_DOUBLE, 0, NULL }
+    { NULL, #name, offsetof(simcfg_robot_t, field), KEYTAB_REQUIRED, min, max, unit, src, NULL, 0, per, 0, KEYTAB_DOUBLE, 0, NULL }
 static const keytab_t chassis_keys[] = {
     C(body_w_mm, body_w_m, 1000, 10, 300, "mm", "the body's width"),
     C(body_l_mm, body_l_m, 1000, 10, 300, "mm", "the body's length"),
@@ -38,18 +38,18 @@ static const keytab_t chassis_keys[] = {
     C(caster_r_mm, caster_r_m, 1000, 1, 50, "mm", "caster sphere's radius"),
     C(caster_mass_g, caster_mass_kg, 1000, 0.5, 500, "g", "caster's mass"),
     C(caster_y_mm, caster_y_m, 1000, -200, 200, "mm", "caster ahead of the body's centre (negative: behind)"),
-    { NULL, "casters", offsetof(simcfg_t, casters), 1, 1, 2, "1", "1, or 2: a second skid at caster2_y_mm, as the first",
-      NULL, 1, 0, 0, KEYTAB_DOUBLE, 0, NULL },
-    { NULL, "caster2_y_mm", offsetof(simcfg_t, caster2_y_m), 0, -200, 200, "mm", "the second skid ahead of the body's centre",
+    { NULL, "casters", offsetof(simcfg_robot_t, casters), 1, 1, 2, "1", "1, or 2: a second skid at caster2_y_mm, as the first",
+      NULL, 0, 0, 0, KEYTAB_INT, 0, NULL },
+    { NULL, "caster2_y_mm", offsetof(simcfg_robot_t, caster2_y_m), 0, -200, 200, "mm", "the second skid ahead of the body's centre",
       NULL, 0, 1000, 0, KEYTAB_DOUBLE, 0, NULL },
     C(tyre_mu, tyre_mu, 0, 0.01, 3, "1", "Coulomb friction, tyre on floor"),
     C(tyre_mu_dynamic, tyre_mu_dynamic, 0, 0.01, 3, "1", "sliding friction, <= tyre_mu"),
     C(tyre_slip_m_s, tyre_slip_m_s, 0, 0, 1, "m/s", "slip speed above which tyre_mu_dynamic applies"),
-    { NULL, "start", offsetof(simcfg_t, start), 0, 0, 1, "word",
-      "centre: in the start cell's centre; back_to_wall: its rear against the cell's back wall (UKMARSBOT)", starts, 1, 0, 0, KEYTAB_DOUBLE, 0, NULL },
-    { NULL, "body_com_y_mm", offsetof(simcfg_t, body_com_y_m), 0, -100, 100, "mm",
+    { NULL, "start", offsetof(simcfg_robot_t, start), 0, 0, 1, "word",
+      "centre: in the start cell's centre; back_to_wall: its rear against the cell's back wall (UKMARSBOT)", starts, 0, 0, 0, KEYTAB_INT, 0, NULL },
+    { NULL, "body_com_y_mm", offsetof(simcfg_robot_t, body_com_y_m), 0, -100, 100, "mm",
       "the body's centre of mass ahead of its centre (0 = at the box's centre)", NULL, 0, 1000, 0, KEYTAB_DOUBLE, 0, NULL },
-    { NULL, "body_yaw_inertia_kgm2", offsetof(simcfg_t, body_yaw_inertia_kgm2), 0, 0, 0.1, "kg*m^2",
+    { NULL, "body_yaw_inertia_kgm2", offsetof(simcfg_robot_t, body_yaw_inertia_kgm2), 0, 0, 0.1, "kg*m^2",
       "the body's own about its vertical axis through its centre; 0 = a uniform box's", NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL },
 };
 
@@ -57,7 +57,7 @@ static const keytab_t chassis_keys[] = {
     { NULL, #name, offsetof(drive_spec_t, name), def, min, max, unit, src, NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL }
 static const keytab_t motor_keys[] = {
     { NULL, "model", offsetof(drive_spec_t, motor_model), KEYTAB_REQUIRED, 0, 1, "word",
-      "datasheet: losses and rotor inertia; paper: the paper's eq. 1-5", motor_models, 1, 0, 0, KEYTAB_DOUBLE, 0, NULL },
+      "datasheet: losses and rotor inertia; paper: the paper's eq. 1-5", motor_models, 0, 0, 0, KEYTAB_INT, 0, NULL },
     D(rated_v, KEYTAB_REQUIRED, 0.5, 50, "V", "the datasheet's figures below are at this voltage"),
     D(no_load_rpm, KEYTAB_REQUIRED, 1, 100000, "rpm", "output shaft, at rated_v"),
     D(no_load_a, KEYTAB_REQUIRED, 0, 10, "A", "at rated_v"),
@@ -70,13 +70,14 @@ static const keytab_t motor_keys[] = {
 };
 static const keytab_t encoder_keys[] = {
     D(encoder_ppr, KEYTAB_REQUIRED, 1, 100000, "counts/motor rev", "counts per motor-shaft turn, every edge counted"),
-    { NULL, "channels", offsetof(drive_spec_t, encoder_channels), 2, 1, 2, "1", "1: pulses only; 2: quadrature (direction)", NULL, 1, 0, 0, KEYTAB_DOUBLE, 0, NULL },
+    { NULL, "channels", offsetof(drive_spec_t, encoder_channels), 2, 1, 2, "1", "1: pulses only; 2: quadrature (direction)", NULL, 0, 0, 0, KEYTAB_INT, 0, NULL },
 };
 #define BT(name, def, min, max, unit, src) \
     { NULL, #name, offsetof(battery_spec_t, name), def, min, max, unit, src, NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL }
 static const keytab_t battery_keys[] = {
     { NULL, "ocv_v", offsetof(battery_spec_t, ocv_v), KEYTAB_REQUIRED, 0.5, 60, "V",
-      "open-circuit voltage, empty to full in even steps of charge (one value: constant)", NULL, 0, 0, BATTERY_OCV_MAX, KEYTAB_DOUBLE, 0, NULL },
+      "open-circuit voltage, empty to full in even steps of charge (one value: constant)", NULL, 0, 0, BATTERY_OCV_MAX, KEYTAB_DOUBLE,
+      offsetof(battery_spec_t, ocv_n), NULL },
     BT(r_ohm, KEYTAB_REQUIRED, 0, 100, "ohm", "internal resistance"),
     BT(capacity_mah, KEYTAB_REQUIRED, 1, 1e6, "mAh", "capacity"),
     BT(divider, 1, 0.01, 1, "1", "what the robot's ADC sees of the battery voltage"),
@@ -152,24 +153,24 @@ static int add_section(load_t *l, const char *kind, const char *name, int line)
     s->line = line;
     int side = side_of(name);
     if (!strcmp(kind, "chassis")) {
-        s->keys[1] = chassis_keys, s->nkeys[1] = N(chassis_keys), s->target[1] = c;
-        snprintf(c->chassis_name, sizeof c->chassis_name, "%.15s", name); /* checked: at most 15 */
+        s->keys[1] = chassis_keys, s->nkeys[1] = N(chassis_keys), s->target[1] = &c->robot;
+        snprintf(c->robot.chassis_name, sizeof c->robot.chassis_name, "%.15s", name); /* checked: at most 15 */
     } else if (!strcmp(kind, "motor") || !strcmp(kind, "encoder")) {
         if (side < 0) return fail(l, line, "%s.%s: the %s is named left or right", kind, name, kind);
         int motor = !strcmp(kind, "motor");
         s->keys[1] = motor ? motor_keys : encoder_keys, s->nkeys[1] = motor ? N(motor_keys) : N(encoder_keys);
-        s->target[1] = &c->drive[side];
+        s->target[1] = &c->robot.drive[side];
     } else if (!strcmp(kind, "measured")) {
-        s->keys[1] = measured_keys, s->nkeys[1] = N(measured_keys), s->target[1] = &c->measured;
-        snprintf(c->measured_name, sizeof c->measured_name, "%.15s", name); /* checked: at most 15 */
+        s->keys[1] = measured_keys, s->nkeys[1] = N(measured_keys), s->target[1] = &c->robot.measured;
+        snprintf(c->robot.measured_name, sizeof c->robot.measured_name, "%.15s", name); /* checked: at most 15 */
     } else if (!strcmp(kind, "battery")) {
-        s->keys[1] = battery_keys, s->nkeys[1] = N(battery_keys), s->target[1] = &c->battery;
-        snprintf(c->battery_name, sizeof c->battery_name, "%.15s", name); /* checked: at most 15 */
+        s->keys[1] = battery_keys, s->nkeys[1] = N(battery_keys), s->target[1] = &c->robot.battery;
+        snprintf(c->robot.battery_name, sizeof c->robot.battery_name, "%.15s", name); /* checked: at most 15 */
     } else {
         const sensor_kind_t *k = sensor_kind(kind);
         if (!k) return fail(l, line, "%s.%s: unknown kind (chassis motor encoder battery measured tof ir gyro)", kind, name);
-        if (c->nparts == ROBOT_MAX_PARTS) return fail(l, line, "%s.%s: more than 16 sensors", kind, name);
-        robot_part_t *p = &c->part[c->nparts++];
+        if (c->robot.nparts == ROBOT_MAX_PARTS) return fail(l, line, "%s.%s: more than 16 sensors", kind, name);
+        robot_part_t *p = &c->robot.part[c->robot.nparts++];
         memset(p, 0, sizeof *p);
         p->kind = k;
         p->line = line;
@@ -302,16 +303,16 @@ static int required_parts(load_t *l)
 static int part_checks(load_t *l)
 {
     const simcfg_t *c = l->c;
-    double top = c->body_clearance_m + c->body_h_m;
-    for (int i = 0; i < c->nparts; i++) {
-        const robot_part_t *p = &c->part[i];
+    double top = c->robot.body_clearance_m + c->robot.body_h_m;
+    for (int i = 0; i < c->robot.nparts; i++) {
+        const robot_part_t *p = &c->robot.part[i];
         const char *k = p->kind->name, *key = NULL;
-        if (fabs(p->x_m) > c->body_w_m / 2) key = "x_mm";
-        else if (fabs(p->y_m) > c->body_l_m / 2) key = "y_mm";
+        if (fabs(p->x_m) > c->robot.body_w_m / 2) key = "x_mm";
+        else if (fabs(p->y_m) > c->robot.body_l_m / 2) key = "y_mm";
         else if (p->z_m > top) key = "z_mm";
         if (key)
             return fail(l, p->line, "%s.%s.%s: pose outside the chassis (body %g x %g mm, %g mm high above the floor)", k,
-                        p->name, key, c->body_w_m * 1000, c->body_l_m * 1000, top * 1000);
+                        p->name, key, c->robot.body_w_m * 1000, c->robot.body_l_m * 1000, top * 1000);
         char why[160];
         if (p->kind->check && p->kind->check(p, why, sizeof why) != 0)
             return fail(l, p->line, "%s.%s.%s", k, p->name, why);
@@ -322,17 +323,18 @@ static int part_checks(load_t *l)
 static int physics_checks(load_t *l)
 {
     simcfg_t *c = l->c;
-    if (c->tyre_mu_dynamic > c->tyre_mu)
-        return fail(l, 0, "chassis.%s.tyre_mu_dynamic: %g is above tyre_mu %g", c->chassis_name, c->tyre_mu_dynamic, c->tyre_mu);
+    if (c->robot.tyre_mu_dynamic > c->robot.tyre_mu)
+        return fail(l, 0, "chassis.%s.tyre_mu_dynamic: %g is above tyre_mu %g", c->robot.chassis_name, c->robot.tyre_mu_dynamic,
+                    c->robot.tyre_mu);
     for (int s = 0; s < 2; s++)
-        if (c->drive[s].no_load_a >= c->drive[s].stall_a)
+        if (c->robot.drive[s].no_load_a >= c->robot.drive[s].stall_a)
             return fail(l, 0, "motor.%s.no_load_a: not below stall_a", s ? "right" : "left");
     return 0;
 }
 
 int robot_fits(const simcfg_t *c, char *reason, size_t len)
 {
-    double wide = 2 * c->wheel_x_m + c->wheel_w_m, corridor = c->cell_m - c->wall_thick_m;
+    double wide = 2 * c->robot.wheel_x_m + c->robot.wheel_w_m, corridor = c->world.cell_m - c->world.wall_thick_m;
     if (wide < corridor) return 0;
     snprintf(reason, len, "world.cell_m: the robot is wider than a corridor (%g mm over its tyres, the corridor %g mm)",
              wide * 1000, corridor * 1000);
@@ -351,15 +353,15 @@ static int load(simcfg_t *c, const char *text, const char *name, char *err, size
         return -1;
     }
     l->work = *c;
-    l->work.nparts = 0;
-    l->work.measured_name[0] = '\0';
-    keytab_defaults(measured_keys, N(measured_keys), &l->work.measured);
+    l->work.robot.nparts = 0;
+    l->work.robot.measured_name[0] = '\0';
+    keytab_defaults(measured_keys, N(measured_keys), &l->work.robot.measured);
     l->c = &l->work;
     l->name = name;
     const inifile_t r = { on_section, on_key, l, "want key = value or [KIND.NAME]" };
     int rc = text ? inifile_parse(&r, text, strlen(text), name, err, errlen) : inifile_load(&r, name, ROBOT_MAX_BYTES, err, errlen);
     if (rc == 0 && missing_keys(l) == 0 && required_parts(l) == 0 && part_checks(l) == 0 && physics_checks(l) == 0) {
-        snprintf(l->work.robot_path, sizeof l->work.robot_path, "%s", name);
+        snprintf(l->work.robot.path, sizeof l->work.robot.path, "%s", name);
         *c = l->work;
     } else if (rc == 0) {
         if (l->err_line > 0) snprintf(err, errlen, "%s:%d: %s", name, l->err_line, l->reason);
@@ -396,22 +398,22 @@ static void print_keys(const keytab_t *k, size_t n, const void *target, FILE *ou
 void robot_print(const simcfg_t *c, FILE *out)
 {
     static const char *const sides[2] = { "left", "right" };
-    fprintf(out, "; robot: %s\n[chassis.%s]\n", c->robot_path, c->chassis_name);
-    print_keys(chassis_keys, N(chassis_keys), c, out);
+    fprintf(out, "; robot: %s\n[chassis.%s]\n", c->robot.path, c->robot.chassis_name);
+    print_keys(chassis_keys, N(chassis_keys), &c->robot, out);
     for (int s = 0; s < 2; s++) {
         fprintf(out, "\n[motor.%s]\n", sides[s]);
-        print_keys(motor_keys, N(motor_keys), &c->drive[s], out);
+        print_keys(motor_keys, N(motor_keys), &c->robot.drive[s], out);
         fprintf(out, "\n[encoder.%s]\n", sides[s]);
-        print_keys(encoder_keys, N(encoder_keys), &c->drive[s], out);
+        print_keys(encoder_keys, N(encoder_keys), &c->robot.drive[s], out);
     }
-    fprintf(out, "\n[battery.%s]\n", c->battery_name);
-    print_keys(battery_keys, N(battery_keys), &c->battery, out);
-    if (c->measured_name[0]) {
-        fprintf(out, "\n[measured.%s]\n", c->measured_name);
-        print_keys(measured_keys, N(measured_keys), &c->measured, out);
+    fprintf(out, "\n[battery.%s]\n", c->robot.battery_name);
+    print_keys(battery_keys, N(battery_keys), &c->robot.battery, out);
+    if (c->robot.measured_name[0]) {
+        fprintf(out, "\n[measured.%s]\n", c->robot.measured_name);
+        print_keys(measured_keys, N(measured_keys), &c->robot.measured, out);
     }
-    for (int i = 0; i < c->nparts; i++) {
-        const robot_part_t *p = &c->part[i];
+    for (int i = 0; i < c->robot.nparts; i++) {
+        const robot_part_t *p = &c->robot.part[i];
         fprintf(out, "\n[%s.%s]\n", p->kind->name, p->name);
         print_keys(pose_keys, N(pose_keys), p, out);
         print_keys(p->kind->keys, p->kind->nkeys, p->spec, out);
@@ -432,22 +434,22 @@ int robot_section(const char *section)
 
 int robot_part_of_kind(const simcfg_t *c, const char *kind, unsigned i)
 {
-    for (int k = 0; k < c->nparts; k++)
-        if (!strcmp(c->part[k].kind->name, kind) && i-- == 0) return k;
+    for (int k = 0; k < c->robot.nparts; k++)
+        if (!strcmp(c->robot.part[k].kind->name, kind) && i-- == 0) return k;
     return -1;
 }
 
 unsigned robot_count(const simcfg_t *c, const char *kind)
 {
     unsigned n = 0;
-    for (int k = 0; k < c->nparts; k++) n += !strcmp(c->part[k].kind->name, kind);
+    for (int k = 0; k < c->robot.nparts; k++) n += !strcmp(c->robot.part[k].kind->name, kind);
     return n;
 }
 
 double robot_tof_range_m(const simcfg_t *c)
 {
     int k = robot_part_of_kind(c, "tof", 0);
-    return k < 0 ? 1.2 : ((const tof_spec_t *)c->part[k].spec)->range_m;
+    return k < 0 ? 1.2 : ((const tof_spec_t *)c->robot.part[k].spec)->range_m;
 }
 
 /* ---- the key list (tests) ---- */

@@ -31,7 +31,7 @@
  * the robot is wider than a corridor (...)" in reason: checked once both
  * the config and the robot are known (run_load_config). */
 int robot_fits(const simcfg_t *c, char *reason, size_t len);
-/* The built-in paper robot into c's robot fields (aborts if the built-in
+/* The built-in paper robot into c->robot (aborts if the built-in
  * text does not load: a build error, caught by test_robot). */
 void robot_defaults(simcfg_t *c);
 /* Replace c's robot by the one in the file (its world numbers are
@@ -45,7 +45,7 @@ void robot_print(const simcfg_t *c, FILE *out);
  * sections that held the robot before robot files). */
 int robot_section(const char *section);
 /* The i-th part of kind `kind` (in the file's order), its index in
- * c->part, or -1. */
+ * c->robot.part, or -1. */
 int robot_part_of_kind(const simcfg_t *c, const char *kind, unsigned i);
 /* The first ToF sensor's range, m (1.2 if the robot has none: the link's
  * distance scale). */

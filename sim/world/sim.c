@@ -35,13 +35,13 @@ static int parts_init(sim_state_t *s, uint64_t seed)
     const simcfg_t *c = s->model->cfg;
     s->ntof = 0;
     s->tof_range_m = 1.2;
-    for (int i = 0; i < c->nparts; i++) {
-        const robot_part_t *p = &c->part[i];
+    for (int i = 0; i < c->robot.nparts; i++) {
+        const robot_part_t *p = &c->robot.part[i];
         const sensor_kind_t *k = p->kind;
         unsigned n = 0, kind_index = 0;
-        for (int j = 0; j < c->nparts; j++) {
-            n += c->part[j].kind == k;
-            kind_index += j < i && c->part[j].kind == k;
+        for (int j = 0; j < c->robot.nparts; j++) {
+            n += c->robot.part[j].kind == k;
+            kind_index += j < i && c->robot.part[j].kind == k;
         }
         s->part_state[i] = calloc(1, k->state_size);
         if (!s->part_state[i]) return -1;
@@ -71,21 +71,21 @@ int sim_init(sim_state_t *s, const sim_model_t *model, const maze_t *m, uint64_t
     memset(s->part_state, 0, sizeof s->part_state);
     s->world = NULL;
     s->model = model;
-    double cell = c->cell_m;
+    double cell = c->world.cell_m;
     s->maze = m;
     s->seed = seed;
     double h = start_heading(m->start_heading), back = 0; /* m behind the cell's centre */
-    if (model->start == ROBOT_START_BACK_TO_WALL) back = cell / 2 - c->wall_thick_m / 2 - c->body_l_m / 2 - ROBOT_START_GAP_M;
+    if (model->start == ROBOT_START_BACK_TO_WALL) back = cell / 2 - c->world.wall_thick_m / 2 - c->robot.body_l_m / 2 - ROBOT_START_GAP_M;
     s->world = world_create(model, m, (maze_x(m, m->start) + 0.5) * cell - back * cos(h),
                             (maze_y(m, m->start) + 0.5) * cell - back * sin(h), h);
     if (!s->world) {
         sim_free(s);
         return -1;
     }
-    battery_init(&s->battery, &c->battery);
+    battery_init(&s->battery, &c->robot.battery);
     for (int i = 0; i < 2; i++) {
-        const drive_spec_t *d = &c->drive[i];
-        motor_init(&s->motor[i], d, battery_ocv(&s->battery), c->battery.r_ohm, model->motor_k_scale[i]);
+        const drive_spec_t *d = &c->robot.drive[i];
+        motor_init(&s->motor[i], d, battery_ocv(&s->battery), c->robot.battery.r_ohm, model->motor_k_scale[i]);
         encoder_init(&s->encoder[i], d->encoder_ppr * d->gear_ratio, world_wheel_angle(s->world, i));
         s->cmd[i] = 0;
     }
@@ -104,7 +104,7 @@ int sim_init(sim_state_t *s, const sim_model_t *model, const maze_t *m, uint64_t
         return -1;
     }
     tof_mirror(s);
-    race_init(&s->race, m, cell, c->time_limit_s);
+    race_init(&s->race, m, cell, c->sim.time_limit_s);
     return 0;
 }
 
@@ -118,7 +118,7 @@ void sim_free(sim_state_t *s)
     }
 }
 
-double sim_time_s(const sim_state_t *s) { return (double)s->step * s->model->cfg->step_s; }
+double sim_time_s(const sim_state_t *s) { return (double)s->step * s->model->cfg->sim.step_s; }
 
 /* The battery: each motor sees the open-circuit voltage less the other
  * motor's share of the sag (its own is solved in its circuit, motor.c);
@@ -131,14 +131,14 @@ static void battery_step(sim_state_t *s, double dt)
 {
     double i_in[2] = { bridge_in_a(&s->motor[0]), bridge_in_a(&s->motor[1]) };
     battery_draw(&s->battery, i_in[0] + i_in[1], dt);
-    double ocv = battery_ocv(&s->battery), r = s->model->cfg->battery.r_ohm;
+    double ocv = battery_ocv(&s->battery), r = s->model->cfg->robot.battery.r_ohm;
     for (int i = 0; i < 2; i++) s->motor[i].battery_v = ocv - r * i_in[1 - i];
 }
 
 void sim_step(const sim_model_t *m, sim_state_t *s)
 {
     assert(m == s->model);
-    double dt = m->cfg->step_s;
+    double dt = m->cfg->sim.step_s;
     if (s->diverged) return;
     motor_drive_t d[2];
     for (int i = 0; i < 2; i++) d[i] = motor_drive(&s->motor[i], s->cmd[i], world_wheel_rate(s->world, i), dt);
@@ -153,8 +153,8 @@ void sim_step(const sim_model_t *m, sim_state_t *s)
     battery_step(s, dt);
     sensor_ctx_t x = ctx(s);
     for (int i = 0; i < s->ntof; i++) ((tof_state_t *)s->part_state[s->tof_part[i]])->enabled = s->tof_enabled;
-    for (int i = 0; i < m->cfg->nparts; i++)
-        if (m->cfg->part[i].kind->step) m->cfg->part[i].kind->step(s->part_state[i], &m->cfg->part[i], &x);
+    for (int i = 0; i < m->cfg->robot.nparts; i++)
+        if (m->cfg->robot.part[i].kind->step) m->cfg->robot.part[i].kind->step(s->part_state[i], &m->cfg->robot.part[i], &x);
     tof_mirror(s);
     double px, py, h;
     world_pose(s->world, &px, &py, &h);
@@ -175,13 +175,13 @@ unsigned sim_ir_read(sim_state_t *s, unsigned i)
     int k = robot_part_of_kind(s->model->cfg, "ir", i);
     if (k < 0) return 0;
     sensor_ctx_t x = ctx(s);
-    return (unsigned)ir_sample(s->part_state[k], &s->model->cfg->part[k], &x);
+    return (unsigned)ir_sample(s->part_state[k], &s->model->cfg->robot.part[k], &x);
 }
 
 int sim_ir_occlude(sim_state_t *s, int side, double d_m, double dur_s)
 {
-    for (int k = 0; k < s->model->cfg->nparts; k++) {
-        const robot_part_t *p = &s->model->cfg->part[k];
+    for (int k = 0; k < s->model->cfg->robot.nparts; k++) {
+        const robot_part_t *p = &s->model->cfg->robot.part[k];
         if (strcmp(p->kind->name, "ir") != 0 || fabs(p->yaw_deg) > 30 || (side ? p->x_m <= 0 : p->x_m >= 0)) continue;
         ir_state_t *st = s->part_state[k];
         st->object_m = d_m;
@@ -203,7 +203,7 @@ double sim_battery_v(const sim_state_t *s)
 {
     /* the terminal voltage: the open-circuit voltage less the sag of both motors' input currents */
     double i_in = bridge_in_a(&s->motor[0]) + bridge_in_a(&s->motor[1]);
-    return battery_ocv(&s->battery) - s->model->cfg->battery.r_ohm * i_in;
+    return battery_ocv(&s->battery) - s->model->cfg->robot.battery.r_ohm * i_in;
 }
 
 void sim_tof_origin(const sim_state_t *s, int i, double pos_m[3], double *dir_rad)
@@ -215,7 +215,7 @@ void sim_tof_origin(const sim_state_t *s, int i, double pos_m[3], double *dir_ra
 
 int sim_part_values(const sim_state_t *s, int i, double v[4])
 {
-    if (i < 0 || i >= s->model->cfg->nparts) return 0;
+    if (i < 0 || i >= s->model->cfg->robot.nparts) return 0;
     sensor_ctx_t x = ctx(s);
-    return s->model->cfg->part[i].kind->read(s->part_state[i], &s->model->cfg->part[i], &x, v);
+    return s->model->cfg->robot.part[i].kind->read(s->part_state[i], &s->model->cfg->robot.part[i], &x, v);
 }

@@ -39,7 +39,7 @@ static int ode_ready;
 
 static dGeomID static_box(world_t *w, double x, double y, double lx, double ly)
 {
-    double h = w->model->cfg->wall_height_m;
+    double h = w->model->cfg->world.wall_height_m;
     dGeomID g = dCreateBox(w->statics, lx, ly, h);
     dGeomSetPosition(g, x, y, h / 2);
     dGeomSetCategoryBits(g, CAT_STATIC);
@@ -50,7 +50,7 @@ static dGeomID static_box(world_t *w, double x, double y, double lx, double ly)
 static void build_maze(world_t *w, const maze_t *m)
 {
     const simcfg_t *cf = w->model->cfg;
-    double cell = cf->cell_m, post = cf->post_m, thick = cf->wall_thick_m;
+    double cell = cf->world.cell_m, post = cf->world.post_m, thick = cf->world.wall_thick_m;
     int cx = m->width % 2 == 0 ? m->width / 2 : -1, cy = m->height % 2 == 0 ? m->height / 2 : -1;
     for (int py = 0; py <= m->height; py++)
         for (int px = 0; px <= m->width; px++) {
@@ -88,12 +88,12 @@ static void chassis_mass(const world_t *w, dMass *mb, double com[3])
     const simcfg_t *c = w->model->cfg;
     const double *bc = w->model->body_com_m;
     dMass mc;
-    dMassSetBoxTotal(mb, c->body_mass_kg, c->body_w_m, c->body_l_m, c->body_h_m);
-    if (c->body_yaw_inertia_kgm2 > 0) mb->I[2 * 4 + 2] = c->body_yaw_inertia_kgm2;
+    dMassSetBoxTotal(mb, c->robot.body_mass_kg, c->robot.body_w_m, c->robot.body_l_m, c->robot.body_h_m);
+    if (c->robot.body_yaw_inertia_kgm2 > 0) mb->I[2 * 4 + 2] = c->robot.body_yaw_inertia_kgm2;
     dMassTranslate(mb, bc[0], bc[1], bc[2]);
     for (int k = 0; k < w->model->casters && k < 2; k++) {
-        dMassSetSphereTotal(&mc, c->caster_mass_kg, c->caster_r_m);
-        dMassTranslate(&mc, 0, k == 0 ? c->caster_y_m : c->caster2_y_m, c->caster_r_m);
+        dMassSetSphereTotal(&mc, c->robot.caster_mass_kg, c->robot.caster_r_m);
+        dMassTranslate(&mc, 0, k == 0 ? c->robot.caster_y_m : c->robot.caster2_y_m, c->robot.caster_r_m);
         dMassAdd(mb, &mc);
     }
     for (int k = 0; k < 3; k++) com[k] = mb->c[k];
@@ -103,7 +103,7 @@ static void chassis_mass(const world_t *w, dMass *mb, double com[3])
 /* A skid: a sphere on the chassis at y_m along it, touching the floor. */
 static dGeomID caster_geom(world_t *w, double y_m)
 {
-    double r = w->model->cfg->caster_r_m;
+    double r = w->model->cfg->robot.caster_r_m;
     dGeomID g = dCreateSphere(w->robot, r);
     dGeomSetBody(g, w->chassis);
     dGeomSetOffsetPosition(g, 0 - w->com[0], y_m - w->com[1], r - w->com[2]);
@@ -117,7 +117,7 @@ static dGeomID caster_geom(world_t *w, double y_m)
 static void build_chassis(world_t *w, double x, double y, double heading)
 {
     const simcfg_t *c = w->model->cfg;
-    double box_z = c->body_clearance_m + c->body_h_m / 2, com_w[3];
+    double box_z = c->robot.body_clearance_m + c->robot.body_h_m / 2, com_w[3];
     dMass mb;
     dMatrix3 rot;
     chassis_mass(w, &mb, w->com);
@@ -131,13 +131,13 @@ static void build_chassis(world_t *w, double x, double y, double heading)
     w->box_offset[1] = 0 - w->com[1];
     w->box_offset[2] = box_z - w->com[2];
 
-    w->box = dCreateBox(w->robot, c->body_w_m, c->body_l_m, c->body_h_m);
+    w->box = dCreateBox(w->robot, c->robot.body_w_m, c->robot.body_l_m, c->robot.body_h_m);
     dGeomSetBody(w->box, w->chassis);
     dGeomSetOffsetPosition(w->box, w->box_offset[0], w->box_offset[1], w->box_offset[2]);
     dGeomSetCategoryBits(w->box, CAT_ROBOT);
     dGeomSetCollideBits(w->box, CAT_STATIC | CAT_FLOOR);
-    w->caster = caster_geom(w, c->caster_y_m);
-    w->caster2 = w->model->casters > 1 ? caster_geom(w, c->caster2_y_m) : NULL;
+    w->caster = caster_geom(w, c->robot.caster_y_m);
+    w->caster2 = w->model->casters > 1 ? caster_geom(w, c->robot.caster2_y_m) : NULL;
 }
 
 /* Where wheel s's centre is in the chassis frame (its own radius above
@@ -145,8 +145,8 @@ static void build_chassis(world_t *w, double x, double y, double heading)
 static void wheel_point(const world_t *w, int s, double p[3])
 {
     const simcfg_t *c = w->model->cfg;
-    p[0] = s == WORLD_LEFT ? -c->wheel_x_m : c->wheel_x_m;
-    p[1] = c->axle_y_m;
+    p[0] = s == WORLD_LEFT ? -c->robot.wheel_x_m : c->robot.wheel_x_m;
+    p[1] = c->robot.axle_y_m;
     p[2] = w->model->wheel_r_m[s];
 }
 
@@ -169,12 +169,12 @@ static void wheel_rotation(double heading, const double *angle_rad, dMatrix3 out
 static void wheel_body(world_t *w, int s, const double at_w[3], double heading)
 {
     const simcfg_t *c = w->model->cfg;
-    const drive_spec_t *dr = &c->drive[s];
+    const drive_spec_t *dr = &c->robot.drive[s];
     dMass m;
     dMatrix3 r;
     w->wheel[s] = dBodyCreate(w->world);
     /* cylinder axis along z: the mass is set in the wheel frame */
-    dMassSetCylinderTotal(&m, c->wheel_mass_kg, 3, w->model->wheel_r_m[s], c->wheel_w_m);
+    dMassSetCylinderTotal(&m, c->robot.wheel_mass_kg, 3, w->model->wheel_r_m[s], c->robot.wheel_w_m);
     if (dr->rotor_inertia_kgm2 > 0 && w->model->motor_model[s] != MOTOR_MODEL_PAPER)
         m.I[2 * 4 + 2] += dr->rotor_inertia_kgm2 * dr->gear_ratio * dr->gear_ratio;
     dBodySetMass(w->wheel[s], &m);
@@ -196,7 +196,7 @@ static void wheel_geoms(world_t *w, int s)
     dGeomSetBody(w->wheel_geom[s], w->wheel[s]);
     dGeomSetCategoryBits(w->wheel_geom[s], CAT_TYRE);
     dGeomSetCollideBits(w->wheel_geom[s], CAT_FLOOR);
-    w->wheel_side[s] = dCreateCylinder(w->robot, r, w->model->cfg->wheel_w_m);
+    w->wheel_side[s] = dCreateCylinder(w->robot, r, w->model->cfg->robot.wheel_w_m);
     dGeomSetBody(w->wheel_side[s], w->wheel[s]);
     dGeomSetCategoryBits(w->wheel_side[s], CAT_WHEEL_SIDE);
     dGeomSetCollideBits(w->wheel_side[s], CAT_STATIC);
@@ -268,7 +268,7 @@ world_t *world_create(const sim_model_t *model, const maze_t *m, double x_m, dou
     dWorldSetCFM(w->world, 1e-6); /* joints (hinges): near rigid */
     dWorldSetERP(w->world, 0.4);  /* joint drift corrected in ~2 steps */
     w->top = dSimpleSpaceCreate(0);
-    double wx = m->width * c->cell_m, wy = m->height * c->cell_m, ext = fmax(wx, wy) + 0.1;
+    double wx = m->width * c->world.cell_m, wy = m->height * c->world.cell_m, ext = fmax(wx, wy) + 0.1;
     dVector3 centre = { wx / 2, wy / 2, 0, 0 }, extents = { ext, ext, ext, 0 };
     w->statics = dQuadTreeSpaceCreate(w->top, centre, extents, 5);
     dGeomSetCategoryBits((dGeomID)w->statics, CAT_STATIC);
@@ -286,7 +286,7 @@ world_t *world_create(const sim_model_t *model, const maze_t *m, double x_m, dou
     dGeomSetCategoryBits(w->ray, CAT_RAY);
     dGeomSetCollideBits(w->ray, CAT_STATIC);
     dGeomRaySetClosestHit(w->ray, 1);
-    if (!c->centre_post) world_set_centre_post(w, 0);
+    if (!c->world.centre_post) world_set_centre_post(w, 0);
     return w;
 }
 
@@ -314,7 +314,7 @@ static unsigned contact_kind(const world_t *w, dGeomID a, const dReal *p)
     if (a != w->box) return a == w->caster || a == w->caster2 ? 1u << WORLD_CONTACT_FRONT : 1u << WORLD_CONTACT_SIDE;
     dVector3 q;
     dBodyGetPosRelPoint(w->chassis, p[0], p[1], p[2], q);
-    double y = q[1] + w->com[1], half = w->model->cfg->body_l_m / 2, edge = 0.002; /* m */
+    double y = q[1] + w->com[1], half = w->model->cfg->robot.body_l_m / 2, edge = 0.002; /* m */
     if (y > half - edge) return 1u << WORLD_CONTACT_FRONT;
     if (y >= -half + edge) return 1u << WORLD_CONTACT_SIDE;
     double v, om;
@@ -340,7 +340,7 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
         w->step_kinds |= contact_kind(w, a, c[0].geom.pos);
     }
     for (int i = 0; i < n; i++) {
-        double mu = w->model->cfg->body_wall_mu;
+        double mu = w->model->cfg->world.body_wall_mu;
         if (a == w->caster || a == w->caster2) {
             mu = 0.0; /* the paper's caster: frictionless */
         } else if (!wall && (a == w->wheel_geom[0] || a == w->wheel_geom[1])) {
@@ -348,7 +348,7 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
             dBodyGetPointVel(dGeomGetBody(a), c[i].geom.pos[0], c[i].geom.pos[1], c[i].geom.pos[2], v);
             double slip = hypot(v[0], v[1]);
             int side = a == w->wheel_geom[WORLD_LEFT] ? WORLD_LEFT : WORLD_RIGHT;
-            mu = slip > w->model->cfg->tyre_slip_m_s ? w->model->tyre_mu_dynamic[side] : w->model->tyre_mu[side];
+            mu = slip > w->model->cfg->robot.tyre_slip_m_s ? w->model->tyre_mu_dynamic[side] : w->model->tyre_mu[side];
         }
         c[i].surface.mode = dContactApprox1 | dContactSoftERP | dContactSoftCFM;
         if (!wall && (a == w->wheel_geom[0] || a == w->wheel_geom[1])) {
@@ -363,8 +363,8 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
             c[i].fdir1[2] = 0;
         }
         c[i].surface.mu = mu;
-        c[i].surface.soft_erp = w->model->cfg->contact_erp;
-        c[i].surface.soft_cfm = w->model->cfg->contact_cfm;
+        c[i].surface.soft_erp = w->model->cfg->sim.contact_erp;
+        c[i].surface.soft_cfm = w->model->cfg->sim.contact_cfm;
         dJointID j = dJointCreateContact(w->world, w->contacts, &c[i]);
         dJointAttach(j, dGeomGetBody(c[i].geom.g1), dGeomGetBody(c[i].geom.g2));
     }
@@ -416,8 +416,8 @@ void world_step(world_t *w, const motor_drive_t drive[2])
     w->touching = 0;
     w->step_kinds = 0;
     dSpaceCollide(w->top, w, near_cb);
-    if (w->model->solver == SIM_SOLVER_EXACT) dWorldStep(w->world, w->model->cfg->step_s);
-    else dWorldQuickStep(w->world, w->model->cfg->step_s);
+    if (w->model->solver == SIM_SOLVER_EXACT) dWorldStep(w->world, w->model->cfg->sim.step_s);
+    else dWorldQuickStep(w->world, w->model->cfg->sim.step_s);
     dJointGroupEmpty(w->contacts);
     if (w->touching && !w->touched_last) w->collisions++;
     if (w->touching) w->episode_kinds |= w->step_kinds;

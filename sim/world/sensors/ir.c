@@ -178,7 +178,7 @@ static void part_init(void *state, const robot_part_t *p, const sim_model_t *md,
 {
     ir_state_t *st = state;
     ir_spec_t m = ((const ir_part_spec_t *)p->spec)->model;
-    m.reflectivity = md->cfg->wall_reflectivity;
+    m.reflectivity = md->cfg->world.wall_reflectivity;
     ir_init(&st->ir, &m, seed, index);
     st->last[0] = st->last[1] = -1;
     st->count = 0;
