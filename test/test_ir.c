@@ -44,11 +44,11 @@ static double east_face(void) { return 4 * cfg.world.cell_m - cfg.world.wall_thi
 
 static ir_t quiet(void)
 {
-    ir_spec_t s;
+    static ir_spec_t s; /* the sensor keeps it by pointer */
     ir_spec_default(&s);
     s.noise_counts = 0;
     ir_t ir;
-    ir_init(&ir, &s, 1, 0);
+    ir_init(&ir, &s, cfg.world.wall_reflectivity, 1, 0);
     return ir;
 }
 
@@ -79,14 +79,14 @@ static void test_distance(void **state)
     (void)state;
     world_t *w = arena(0);
     ir_t ir = quiet();
-    const ir_spec_t *s = &ir.spec;
+    const ir_spec_t *s = ir.spec;
     double y = 1.5 * cfg.world.cell_m, z = cfg.world.wall_height_m / 2;
     for (double d = 0.02; d <= 0.2001; d += 0.01) {
         double p[3] = { east_face() - d, y, z };
-        double r = ir_received(&ir, w, p, 0), want = s->reflectivity / (d * d);
+        double r = ir_received(&ir, w, p, 0), want = ir.reflectivity / (d * d);
         assert_true(fabs(r / want - 1) < 0.02);
         double counts = ir_read(&ir, w, p, 0, 1) - s->ambient_counts;
-        double want_counts = s->gain_counts * s->reflectivity * (s->ref_m / d) * (s->ref_m / d);
+        double want_counts = s->gain_counts * ir.reflectivity * (s->ref_m / d) * (s->ref_m / d);
         if (want_counts + s->ambient_counts < ir_full_scale(&ir)) /* else the ADC's rail: test_rails */
             assert_true(fabs(counts - want_counts) < 0.02 * want_counts + 0.5);
     }
@@ -95,7 +95,7 @@ static void test_distance(void **state)
     double p3[3] = { east_face() - 0.030, y, z };
     double r1 = ir_received(&ir, w, p1, 0), r2 = ir_received(&ir, w, p2, 0);
     assert_true(fabs(r1 / r2 - 1) < 1e-9);
-    assert_true(fabs(r1 / (s->reflectivity / (s->near_m * s->near_m)) - 1) < 0.02);
+    assert_true(fabs(r1 / (ir.reflectivity / (s->near_m * s->near_m)) - 1) < 0.02);
     assert_true(r1 > ir_received(&ir, w, p3, 0));
     world_destroy(w);
 }
@@ -129,7 +129,7 @@ static void test_dark(void **state)
     s.ambient_counts = 100;
     s.noise_counts = 5;
     ir_t ir;
-    ir_init(&ir, &s, 7, 1);
+    ir_init(&ir, &s, cfg.world.wall_reflectivity, 7, 1);
     double p[3] = { east_face() - 0.03, 1.5 * cfg.world.cell_m, cfg.world.wall_height_m / 2 };
     const int n = 20000;
     double sum = 0, sum2 = 0;
@@ -141,8 +141,8 @@ static void test_dark(void **state)
     double mean = sum / n, sd = sqrt(sum2 / n - mean * mean);
     /* dark is dark: the same stream at a wall or in the open reads the same */
     ir_t a, b;
-    ir_init(&a, &s, 9, 0);
-    ir_init(&b, &s, 9, 0);
+    ir_init(&a, &s, cfg.world.wall_reflectivity, 9, 0);
+    ir_init(&b, &s, cfg.world.wall_reflectivity, 9, 0);
     double open_p[3] = { east_face() - 0.6, 1.5 * cfg.world.cell_m, cfg.world.wall_height_m / 2 };
     for (int i = 0; i < 100; i++) assert_int_equal(ir_read(&a, w, p, 0, 0), ir_read(&b, w, open_p, M_PI, 0));
     assert_true(fabs(mean - 100) < 0.15);               /* 5 / sqrt(20000) = 0.035 */
@@ -161,7 +161,7 @@ static void test_rails(void **state)
     s.noise_counts = 50;
     s.ambient_counts = 0;
     ir_t ir;
-    ir_init(&ir, &s, 3, 2);
+    ir_init(&ir, &s, cfg.world.wall_reflectivity, 3, 2);
     assert_int_equal(ir_full_scale(&ir), 1023);
     double near[3] = { east_face() - 0.02, 1.5 * cfg.world.cell_m, cfg.world.wall_height_m / 2 };
     int zeros = 0;
@@ -185,10 +185,10 @@ static void test_streams(void **state)
     ir_spec_default(&s);
     s.noise_counts = 3;
     ir_t a, b, c, d;
-    ir_init(&a, &s, 42, 0);
-    ir_init(&b, &s, 42, 0);
-    ir_init(&c, &s, 42, 1);
-    ir_init(&d, &s, 43, 0);
+    ir_init(&a, &s, cfg.world.wall_reflectivity, 42, 0);
+    ir_init(&b, &s, cfg.world.wall_reflectivity, 42, 0);
+    ir_init(&c, &s, cfg.world.wall_reflectivity, 42, 1);
+    ir_init(&d, &s, cfg.world.wall_reflectivity, 43, 0);
     double p[3] = { east_face() - 0.06, 1.5 * cfg.world.cell_m, cfg.world.wall_height_m / 2 };
     int diff_c = 0, diff_d = 0;
     for (int i = 0; i < 200; i++) {
@@ -217,7 +217,7 @@ static void test_graze(void **state)
     double full = ir_received(&ir, w, full_p, 0);
     double edge = ir_received(&ir, w, edge_p, 0);
     double past = ir_received(&ir, w, past_p, 0);
-    assert_true(fabs(full / (ir.spec.reflectivity / (d * d)) - 1) < 0.02);
+    assert_true(fabs(full / (ir.reflectivity / (d * d)) - 1) < 0.02);
     assert_true(edge > 0.25 * full && edge < 0.6 * full);
     assert_true(past < 0.1 * full);
     world_destroy(w);

@@ -24,7 +24,6 @@ void ir_spec_default(ir_spec_t *s)
     s->cone_deg = 6.0;
     s->rings = 2;          /* ours: 1 + 2 x 8 = 17 rays */
     s->rays_per_ring = 8;
-    s->reflectivity = 0.85; /* ours: matt white wall faces */
     /* counts for reflectivity 1 at 50 mm: mazerunner-core's ORION reads
      * FRONT_REFERENCE = 850 (config-robot-orion.h) centred in a cell facing
      * a wall; ours: that sensor-to-wall distance taken as 50 mm, so
@@ -60,12 +59,13 @@ static void add_ray(ir_t *ir, double th_deg, double phi_rad, double solid_sr)
     ir->off[i][0] = cos(th);
     ir->off[i][1] = sin(th) * cos(phi_rad);
     ir->off[i][2] = sin(th) * sin(phi_rad);
-    ir->weight[i] = profile(th_deg, ir->spec.half_angle_deg) * profile(th_deg, ir->spec.det_half_angle_deg) * solid_sr;
+    ir->weight[i] = profile(th_deg, ir->spec->half_angle_deg) * profile(th_deg, ir->spec->det_half_angle_deg) * solid_sr;
 }
 
-void ir_init(ir_t *ir, const ir_spec_t *s, uint64_t seed, unsigned index)
+void ir_init(ir_t *ir, const ir_spec_t *s, double reflectivity, uint64_t seed, unsigned index)
 {
-    ir->spec = *s;
+    ir->spec = s;
+    ir->reflectivity = reflectivity;
     ir->nrays = 0;
     /* a cone of 0 degrees is the axis alone, however many rings are asked for */
     int rings = s->rings < 0 || s->cone_deg <= 0 ? 0 : s->rings > IR_MAX_RINGS ? IR_MAX_RINGS : (int)s->rings;
@@ -85,12 +85,12 @@ void ir_init(ir_t *ir, const ir_spec_t *s, uint64_t seed, unsigned index)
     rng_init(&ir->rng, seed, RNG_STREAM_IR + index);
 }
 
-int ir_full_scale(const ir_t *ir) { return (1 << (int)ir->spec.adc_bits) - 1; }
+int ir_full_scale(const ir_t *ir) { return (1 << (int)ir->spec->adc_bits) - 1; }
 
 double ir_received_frame(const ir_t *ir, world_t *w, const double pos_m[3], const double axis[3], const double left[3],
                          const double up[3])
 {
-    const ir_spec_t *s = &ir->spec;
+    const ir_spec_t *s = ir->spec;
     double sum = 0;
     for (int i = 0; i < ir->nrays; i++) {
         const double *o = ir->off[i];
@@ -101,7 +101,7 @@ double ir_received_frame(const ir_t *ir, world_t *w, const double pos_m[3], cons
         double cosi = -(n[0] * u[0] + n[1] * u[1] + n[2] * u[2]);
         if (cosi <= 0) continue;
         double dd = d < s->near_m ? s->near_m : d;
-        sum += ir->weight[i] * s->reflectivity * cosi / (dd * dd);
+        sum += ir->weight[i] * ir->reflectivity * cosi / (dd * dd);
     }
     return sum;
 }
@@ -125,7 +125,7 @@ double ir_received(const ir_t *ir, world_t *w, const double pos_m[3], double dir
 int ir_read_frame(ir_t *ir, world_t *w, const double pos_m[3], const double axis[3], const double left[3], const double up[3],
                   int emitter_on)
 {
-    const ir_spec_t *s = &ir->spec;
+    const ir_spec_t *s = ir->spec;
     double v = s->ambient_counts + s->noise_counts * rng_gauss(&ir->rng);
     if (emitter_on) v += s->gain_counts * s->ref_m * s->ref_m * ir_received_frame(ir, w, pos_m, axis, left, up);
     double top = ir_full_scale(ir);
@@ -135,7 +135,7 @@ int ir_read_frame(ir_t *ir, world_t *w, const double pos_m[3], const double axis
 
 int ir_read_object(ir_t *ir, double d_m, int emitter_on)
 {
-    const ir_spec_t *s = &ir->spec;
+    const ir_spec_t *s = ir->spec;
     double d = d_m < s->near_m ? s->near_m : d_m;
     double v = s->ambient_counts + s->noise_counts * rng_gauss(&ir->rng);
     if (emitter_on) v += s->gain_counts * s->ref_m * s->ref_m / (d * d);
@@ -177,9 +177,7 @@ static const keytab_t keys[] = {
 static void part_init(void *state, const robot_part_t *p, const sim_model_t *md, uint64_t seed, unsigned index, unsigned count)
 {
     ir_state_t *st = state;
-    ir_spec_t m = ((const ir_part_spec_t *)p->spec)->model;
-    m.reflectivity = md->cfg->world.wall_reflectivity;
-    ir_init(&st->ir, &m, seed, index);
+    ir_init(&st->ir, &((const ir_part_spec_t *)p->spec)->model, md->cfg->world.wall_reflectivity, seed, index);
     st->last[0] = st->last[1] = -1;
     st->count = 0;
 }

@@ -55,7 +55,6 @@ typedef struct {
     double cone_deg;           /* the outermost ring's angle off the axis, deg */
     double rings;              /* rings of rays about the centre ray, 0..IR_MAX_RINGS */
     double rays_per_ring;      /* 1..IR_MAX_PER_RING */
-    double reflectivity;       /* of the walls and posts, 0..1 */
     double gain_counts;        /* lit minus dark, counts, for reflectivity 1 straight on at ref_m */
     double ref_m;              /* the gain's reference distance, m */
     double near_m;             /* below this distance the response saturates, m */
@@ -65,8 +64,12 @@ typedef struct {
     double adc_bits;           /* 10: full scale 1023 */
 } ir_spec_t;
 
+/* One sensor: its spec (the robot file's, never copied: it outlives the
+ * sensor), the walls' reflectivity it sees (the world's), the rays derived
+ * from the spec, and its noise stream. */
 typedef struct {
-    ir_spec_t spec;
+    const ir_spec_t *spec;
+    double reflectivity;       /* of the walls and posts, 0..1 ([world] wall_reflectivity) */
     int nrays;
     double off[IR_MAX_RAYS][3]; /* ray directions in the sensor's frame: x along the axis, y left, z up */
     double weight[IR_MAX_RAYS]; /* normalised: a plane straight on in the far field sums to 1 */
@@ -75,7 +78,7 @@ typedef struct {
 
 /* The robot file's [ir.NAME]: the model and where it is wired. */
 typedef struct {
-    ir_spec_t model;           /* reflectivity comes from the config ([world] wall_reflectivity) */
+    ir_spec_t model;           /* the walls' reflectivity is the world's ([world] wall_reflectivity) */
     double emitter;            /* the emitter group that lights it, 0..3 (hal_emitter) */
     double adc_channel;        /* the MCU's ADC channel its detector feeds (a board's business) */
     double measured_centred;   /* lit minus dark on the real robot centred in a cell between side walls, no wall ahead; -1 none */
@@ -92,9 +95,10 @@ typedef struct {
 
 /* UKMARSBOT's sensor (values and sources in ir.c). */
 void ir_spec_default(ir_spec_t *s);
-/* The sensor with this spec, its noise stream from the run's seed and the
- * sensor's index. */
-void ir_init(ir_t *ir, const ir_spec_t *s, uint64_t seed, unsigned index);
+/* The sensor with spec s (kept by pointer: s must outlive ir) among walls
+ * of this reflectivity (0..1), its noise stream from the run's seed and
+ * the sensor's index. */
+void ir_init(ir_t *ir, const ir_spec_t *s, double reflectivity, uint64_t seed, unsigned index);
 /* The light returned to the detector with the emitter on, 1/m^2 (see
  * above: rho/d^2 for a wall straight on at d >= near_m), for a sensor at
  * pos_m (world, m) looking horizontally along dir_rad. */
