@@ -7,9 +7,7 @@
 
 void tof_init(tof_t *t, const tof_spec_t *s, uint64_t seed, unsigned index)
 {
-    t->range_m = s->range_m;
-    t->blind_m = s->blind_m;
-    t->cv = s->cv;
+    t->spec = s;
     rng_init(&t->rng, seed, RNG_STREAM_TOF + index);
 }
 
@@ -17,12 +15,12 @@ double tof_gauss(tof_t *t) { return rng_gauss(&t->rng); }
 
 tof_reading_t tof_measure(tof_t *t, double true_m)
 {
-    tof_reading_t out = { t->range_m, 1 };
-    if (true_m < 0.0 || true_m >= t->range_m) return out;
-    double d = true_m < t->blind_m ? t->blind_m : true_m;
-    d += t->cv * d * tof_gauss(t);
+    tof_reading_t out = { t->spec->range_m, 1 };
+    if (true_m < 0.0 || true_m >= t->spec->range_m) return out;
+    double d = true_m < t->spec->blind_m ? t->spec->blind_m : true_m;
+    d += t->spec->cv * d * tof_gauss(t);
     if (d < 0.0) d = 0.0;
-    if (d >= t->range_m) return out; /* at or beyond the range: a timeout, as the paper's Unity sensor */
+    if (d >= t->spec->range_m) return out; /* at or beyond the range: a timeout, as the paper's Unity sensor */
     out.dist_m = d;
     out.timeout = 0;
     return out;
@@ -69,7 +67,7 @@ static void step(void *state, const robot_part_t *p, const sensor_ctx_t *x)
     t->next_step += t->period_steps;
     if (!t->enabled) return;
     /* rays only when the sensor updates: one ray per 30 ms, not per step */
-    t->true_m = ray(sensor_pose(x->model, p), x->world, t->tof.range_m);
+    t->true_m = ray(sensor_pose(x->model, p), x->world, t->tof.spec->range_m);
     t->last = tof_measure(&t->tof, t->true_m);
     t->count++;
 }

@@ -27,8 +27,10 @@ typedef struct {
     double period_s;  /* between readings */
 } tof_spec_t;
 
+/* One sensor: its spec (the robot file's, kept by pointer: it outlives
+ * the sensor) and its noise stream. */
 typedef struct {
-    double range_m, blind_m, cv;
+    const tof_spec_t *spec;
     rng_t rng;
 } tof_t;
 
