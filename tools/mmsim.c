@@ -48,7 +48,7 @@ static void usage(FILE *out)
           "       mmsim --maze FILE --board NAME|FILE --avr FIRMWARE.elf|.hex [--robot FILE] [--input \"T ACTION; ...\"]\n"
           "             [--goal X,Y]   (the image on an emulated board, boards/NAME-*.ini: pins, PWM, encoders, ADC,\n"
           "             UART; --verbose echoes its console; --input: a person's hands, T in sim seconds: switches=N,\n"
-          "             button, button=down|up, reset, occlude=left|right, send=TEXT, end)\n"
+          "             button, button=down|up, reset, occlude=left|right, send=TEXT, end; several --input add up)\n"
           "       mmsim --maze FILE --mms COMMAND [--mms-ideal-walls] [--mms-timeout-ms N] [--mms-reset-at S|idle]\n"
           "             (an mms algorithm drives the robot through the mms text API, docs/MMS.md)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
@@ -73,7 +73,7 @@ static int f_seed(const char *prog, void *o, const char *arg)
 static int f_input(const char *prog, void *o, const char *arg)
 {
     char err[300];
-    if (input_parse(&run_of(o)->input, arg, err, sizeof err) != 0) return bad("%s", err);
+    if (input_add(&run_of(o)->input, arg, err, sizeof err) != 0) return bad("%s", err);
     return 0;
 }
 
