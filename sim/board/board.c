@@ -122,6 +122,7 @@ int board_step(board_t *b, char *err, size_t errn)
     }
     if (rc == 0) rc = avrhost_run_to(h, h->target, err, errn);
     b->st.uart_bytes_in = h->bytes_in;
+    b->st.uart_bytes_dropped = h->bytes_dropped;
     if (rc != 0) return -1;
     b->st.cycles = h->avr->cycle;
     if (board_adc_check(&b->adc, err, errn) != 0) return -1;
@@ -185,6 +186,7 @@ int board_send(board_t *b, const char *text)
     avrhost_queue(&b->host, (const uint8_t *)text, n);
     avrhost_feed(&b->host);
     b->st.uart_bytes_in = b->host.bytes_in;
+    b->st.uart_bytes_dropped = b->host.bytes_dropped;
     return 0;
 }
 

@@ -87,7 +87,9 @@ typedef struct {
     uint64_t adc_conversions[BOARD_ADC_CHANNELS];
     double duty_min[2], duty_max[2];       /* signed H-bridge duty per motor, -1..1 */
     uint64_t encoder_edges[2];
-    uint64_t uart_bytes_out, uart_bytes_in, console_dropped;
+    uint64_t uart_bytes_out, uart_bytes_in;
+    uint64_t uart_bytes_dropped;           /* typed before the firmware enabled its receiver: lost */
+    uint64_t console_dropped;              /* sent after the console held BOARD_CONSOLE_MAX bytes: not kept */
     uint32_t resets;
 } board_stats_t;
 

@@ -180,6 +180,10 @@ static void board_results(run_t *r, void *self, json_t *j)
     json_object_set_new(b, "uart_bytes_out", json_integer((json_int_t)st->uart_bytes_out));
     json_object_set_new(b, "uart_bytes_in", json_integer((json_int_t)st->uart_bytes_in));
     json_object_set_new(b, "resets", json_integer(st->resets));
+    /* what was lost, present only when something was: the console past its limit, bytes typed before the receiver was on */
+    if (st->console_dropped) json_object_set_new(b, "console_dropped", json_integer((json_int_t)st->console_dropped));
+    if (st->uart_bytes_dropped)
+        json_object_set_new(b, "uart_bytes_dropped", json_integer((json_int_t)st->uart_bytes_dropped));
     json_object_set_new(j, "board", b);
     size_t n;
     const char *con = board_console(bd, &n);
@@ -195,7 +199,14 @@ static void board_results(run_t *r, void *self, json_t *j)
     json_object_set_new(j, "console", cj ? cj : json_null());
 }
 
-static void board_stop(run_t *r, void *self) { console_pump(self); /* the last words */ }
+static void board_stop(run_t *r, void *self)
+{
+    console_pump(self); /* the last words */
+    const board_stats_t *st = board_stats(((board_run_t *)self)->board);
+    if (st->console_dropped)
+        fprintf(stderr, "mmsim: the console kept its first %u bytes; %llu more not kept (board.console_dropped)\n",
+                BOARD_CONSOLE_MAX - 1, (unsigned long long)st->console_dropped);
+}
 
 static void board_headline(const run_t *r, const void *self)
 {

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# cli_board_hands.sh - the person's side of a board run, with our sketches
+# (test/arduino/board, `make periph-sketches`) on boards/ukmarsbot-v1.3.ini:
+# several --input flags add up in time order; bytes typed before the
+# firmware enables its receiver are lost and reported as
+# board.uart_bytes_dropped (not in uart_bytes_in).
+set -u
+B=${BUILD:-build}
+MMSIM=${MMSIM:-$B/mmsim}
+SK=$B/arduino/nano/board
+ROBOT=robots/ukmarsbot.ini
+T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
+. "$(dirname "$0")/lib.sh"
+mk() { env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory B="$B" "$@"; }
+for s in UartEcho Persist; do
+  [ -s "$SK/$s.elf" ] || { mk periph-sketches >"$T/make.out" 2>&1 || bad "make periph-sketches: $(tail -3 "$T/make.out")"; break; }
+done
+# An open 16x16 maze (the outer walls only)
+python3 - >"$T/open16.txt" <<'PY'
+n = 16
+rows = ["o" + "---o" * n]
+for y in range(n - 1, -1, -1):
+    rows.append("|" + "".join((" S " if (x, y) == (0, 0) else "   ") + ("|" if x == n - 1 else " ") for x in range(n)))
+    rows.append("o" + ("---o" if y == 0 else "   o") * n)
+print("\n".join(rows))
+PY
+MAZE=$T/open16.txt
+# jv FILE EXPR: a Python expression over d, the last JSON line of FILE
+jv() { python3 -c 'import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1]); print(eval(sys.argv[2]))' "$1" "$2" 2>/dev/null; }
+board() { "$MMSIM" --board ukmarsbot --robot "$ROBOT" --maze "$MAZE" --time-limit 2 --json "$@"; }
+
+# ---- several --input flags: merged in time order, each one's actions kept
+want_rc 1 "two --input flags run" board --avr "$SK/UartEcho.elf" --input "0.6 send=second; 0.9 end" --input "0.3 send=first"
+cp "$T/out" "$T/two.json"
+[ "$(jv "$T/two.json" "[l for l in d['console'].replace(chr(13), '').splitlines() if l.startswith('ECHO')]")" = "['ECHO first', 'ECHO second']" ] \
+  && ok "two --input flags: both lines echoed, in time order" || bad "two --input flags: console $(jv "$T/two.json" "repr(d.get('console'))")"
+[ "$(jv "$T/two.json" "(d['sim_time_s'], d['exit_reason'])")" = "(0.9, 'input_end')" ] && ok "two --input flags: the first flag's end stops the run at 0.9 s" \
+  || bad "two --input flags: $(jv "$T/two.json" "(d.get('sim_time_s'), d.get('exit_reason'))")"
+ONE_ERROR_LINE=1 want_rc 2 "a bad second --input: exit 2" board --avr "$SK/UartEcho.elf" --input "0.3 end" --input "1 wave"
+grep -q -- "--input:2:3: unknown action" "$T/err" && ok "a bad second --input: its number and column" || bad "bad second --input: $(cat "$T/err")"
+
+# ---- typed before the receiver is on: lost, and said so
+want_rc 1 "send at t = 0 runs" board --avr "$SK/UartEcho.elf" --input "0 send=AB; 0.4 send=hi; 0.7 end"
+cp "$T/out" "$T/early.json"
+[ "$(jv "$T/early.json" "(d['board'].get('uart_bytes_dropped'), d['board']['uart_bytes_in'])")" = "(3, 3)" ] \
+  && ok "send at t = 0: 3 bytes (AB and the newline) dropped, 3 (hi) taken" \
+  || bad "send at t = 0: board $(jv "$T/early.json" "d.get('board')")"
+[ "$(jv "$T/early.json" "[l for l in d['console'].replace(chr(13), '').splitlines() if l.startswith('ECHO')]")" = "['ECHO hi']" ] \
+  && ok "send at t = 0: only the later line echoed" || bad "send at t = 0: console $(jv "$T/early.json" "repr(d.get('console'))")"
+[ "$(jv "$T/two.json" "'uart_bytes_dropped' in d['board'] or 'console_dropped' in d['board']")" = False ] \
+  && ok "nothing lost: no *_dropped keys" || bad "nothing lost, yet: $(jv "$T/two.json" "d.get('board')")"
+
+[ $fails -eq 0 ]
