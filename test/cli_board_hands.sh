@@ -3,7 +3,9 @@
 # (test/arduino/board, `make periph-sketches`) on boards/ukmarsbot-v1.3.ini:
 # several --input flags add up in time order; bytes typed before the
 # firmware enables its receiver are lost and reported as
-# board.uart_bytes_dropped (not in uart_bytes_in).
+# board.uart_bytes_dropped (not in uart_bytes_in); --eeprom FILE keeps the
+# EEPROM across runs (Persist counts its boots at address 0: EE 1, then 2),
+# a missing file is a blank chip, a file of the wrong size one line, exit 2.
 set -u
 B=${BUILD:-build}
 MMSIM=${MMSIM:-$B/mmsim}
@@ -49,5 +51,29 @@ cp "$T/out" "$T/early.json"
   && ok "send at t = 0: only the later line echoed" || bad "send at t = 0: console $(jv "$T/early.json" "repr(d.get('console'))")"
 [ "$(jv "$T/two.json" "'uart_bytes_dropped' in d['board'] or 'console_dropped' in d['board']")" = False ] \
   && ok "nothing lost: no *_dropped keys" || bad "nothing lost, yet: $(jv "$T/two.json" "d.get('board')")"
+
+# ---- --eeprom FILE: a round trip across two runs
+EE=$T/persist.eeprom
+for n in 1 2; do
+  want_rc 1 "Persist with --eeprom, run $n" board --avr "$SK/Persist.elf" --input "0.5 end" --eeprom "$EE"
+  cp "$T/out" "$T/ee$n.json"
+  [ "$(jv "$T/ee$n.json" "[l for l in d['console'].replace(chr(13), '').splitlines() if l.startswith('EE ')]")" = "['EE $n']" ] \
+    && ok "Persist with --eeprom, run $n: EE $n" || bad "Persist run $n: console $(jv "$T/ee$n.json" "repr(d.get('console'))")"
+  [ "$(jv "$T/ee$n.json" "d['board']['eeprom']")" = "{'file': '$EE', 'written': True, 'changed': True, 'saved': True}" ] \
+    && ok "Persist run $n: the JSON says the firmware wrote the EEPROM" || bad "Persist run $n: $(jv "$T/ee$n.json" "d['board'].get('eeprom')")"
+done
+[ "$(stat -c %s "$EE" 2>/dev/null)" = 1024 ] && [ "$(od -An -tx1 -N4 "$EE" | tr -d ' ')" = 0200ffff ] \
+  && ok "--eeprom: the file is the whole 1024-byte EEPROM, the count 2 at address 0, the rest erased" \
+  || bad "--eeprom file: $(stat -c %s "$EE" 2>&1) bytes, starts $(od -An -tx1 -N4 "$EE" 2>&1)"
+want_rc 1 "UartEcho with --eeprom (a missing file)" board --avr "$SK/UartEcho.elf" --input "0.5 end" --eeprom "$T/blank.eeprom"
+[ "$(jv "$T/out" "d['board']['eeprom']['written'], d['board']['eeprom']['changed']")" = "(False, False)" ] \
+  && ok "--eeprom: a firmware that never writes it: written false" || bad "UartEcho --eeprom: $(jv "$T/out" "d['board'].get('eeprom')")"
+[ "$(od -An -tx1 -v "$T/blank.eeprom" | tr -s ' \n' ' ' | tr -d ' ' | tr -d f | wc -c)" = 0 ] && [ "$(stat -c %s "$T/blank.eeprom")" = 1024 ] \
+  && ok "--eeprom: a missing file is a blank chip (1024 bytes of 0xFF saved)" || bad "--eeprom blank: $(od -An -tx1 "$T/blank.eeprom" | head -2)"
+head -c 10 "$EE" >"$T/short.eeprom"
+ONE_ERROR_LINE=1 want_rc 2 "--eeprom: a 10-byte file: exit 2" board --avr "$SK/Persist.elf" --eeprom "$T/short.eeprom"
+grep -q "short.eeprom: 10 bytes, the atmega328p's EEPROM holds 1024" "$T/err" && ok "--eeprom: the wrong size said in one line" || bad "--eeprom short: $(cat "$T/err")"
+[ "$(stat -c %s "$T/short.eeprom")" = 10 ] && ok "--eeprom: a refused file is left as it was" || bad "--eeprom: the short file was changed"
+ONE_ERROR_LINE=1 want_rc 2 "--eeprom without --board: exit 2" "$MMSIM" --maze "$MAZE" --eeprom "$EE"
 
 [ $fails -eq 0 ]

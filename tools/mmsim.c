@@ -48,7 +48,8 @@ static void usage(FILE *out)
           "       mmsim --maze FILE --board NAME|FILE --avr FIRMWARE.elf|.hex [--robot FILE] [--input \"T ACTION; ...\"]\n"
           "             [--goal X,Y]   (the image on an emulated board, boards/NAME-*.ini: pins, PWM, encoders, ADC,\n"
           "             UART; --verbose echoes its console; --input: a person's hands, T in sim seconds: switches=N,\n"
-          "             button, button=down|up, reset, occlude=left|right, send=TEXT, end; several --input add up)\n"
+          "             button, button=down|up, reset, occlude=left|right, send=TEXT, end; several --input add up;\n"
+          "             --eeprom FILE: the MCU's EEPROM, a raw image, loaded at power-on and saved at the end)\n"
           "       mmsim --maze FILE --mms COMMAND [--mms-ideal-walls] [--mms-timeout-ms N] [--mms-reset-at S|idle]\n"
           "             (an mms algorithm drives the robot through the mms text API, docs/MMS.md)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
@@ -245,6 +246,7 @@ static const cli_opt_t flags[] = {
     { .name = "avr", .kind = CLI_STR, .off = RUN(avr_elf) },
     { .name = "mcu", .kind = CLI_STR, .off = RUN(avr_mcu) },
     { .name = "board", .kind = CLI_STR, .off = RUN(board) },
+    { .name = "eeprom", .kind = CLI_STR, .off = RUN(eeprom_path) },
     { .name = "f-cpu", .kind = CLI_FN, .fn = f_f_cpu, .has_arg = 1 },
     { .name = "mms", .kind = CLI_FN, .fn = f_mms, .has_arg = 1 },
     { .name = "mms-ideal-walls", .kind = CLI_SET, .off = RUN(mms.ideal_walls) },
@@ -277,6 +279,7 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (o->serial && !o->avr_elf) o->realtime = 1; /* a real MCU runs in real time; simavr in lockstep */
     if (m->batch && m->maze) return bad("%s", "--maze and --batch: one at a time (a batch runs every maze in DIR)");
     if (o->console_pty && !o->board) return bad("%s", "--console pty needs --board NAME");
+    if (o->eeprom_path && !o->board) return bad("%s", "--eeprom FILE needs --board NAME");
     if (o->console_pty) o->realtime = 1; /* a person at a serial monitor: in real time */
     if (o->print_config || o->print_robot || m->validate) return 0;
     if (m->batch && (o->telem.url || o->telem.log_path)) return bad("%s", "--lcm and --lcm-log work on one maze, not with --batch");
