@@ -5,7 +5,10 @@
 # firmware enables its receiver are lost and reported as
 # board.uart_bytes_dropped (not in uart_bytes_in); --eeprom FILE keeps the
 # EEPROM across runs (Persist counts its boots at address 0: EE 1, then 2),
-# a missing file is a blank chip, a file of the wrong size one line, exit 2.
+# a missing file is a blank chip, a file of the wrong size one line, exit 2;
+# --board NAME and --robot NAME are found from any working directory (the
+# source tree the program was built from; after `make install PREFIX=DIR`,
+# DIR/share/mmsim).
 set -u
 B=${BUILD:-build}
 MMSIM=${MMSIM:-$B/mmsim}
@@ -75,5 +78,25 @@ ONE_ERROR_LINE=1 want_rc 2 "--eeprom: a 10-byte file: exit 2" board --avr "$SK/P
 grep -q "short.eeprom: 10 bytes, the atmega328p's EEPROM holds 1024" "$T/err" && ok "--eeprom: the wrong size said in one line" || bad "--eeprom short: $(cat "$T/err")"
 [ "$(stat -c %s "$T/short.eeprom")" = 10 ] && ok "--eeprom: a refused file is left as it was" || bad "--eeprom: the short file was changed"
 ONE_ERROR_LINE=1 want_rc 2 "--eeprom without --board: exit 2" "$MMSIM" --maze "$MAZE" --eeprom "$EE"
+
+# ---- boards and robots by name, from another working directory
+REPO=$PWD; ABS_MMSIM=$(cd "$(dirname "$MMSIM")" && pwd)/$(basename "$MMSIM")
+mkdir -p "$T/elsewhere"
+(cd "$T/elsewhere" && "$ABS_MMSIM" --board ukmarsbot --robot ukmarsbot --avr "$REPO/$SK/UartEcho.elf" --maze "$MAZE" \
+  --time-limit 1 --input "0.5 end" --json >"$T/out" 2>"$T/err"); rc=$?
+[ $rc = 1 ] && [ "$(jv "$T/out" "d['board']['file'], d['robot']")" = "('$REPO/boards/ukmarsbot-v1.3.ini', '$REPO/robots/ukmarsbot.ini')" ] \
+  && ok "from another directory: --board ukmarsbot and --robot ukmarsbot found in the source tree" \
+  || bad "from another directory: exit $rc, $(jv "$T/out" "d['board']['file'], d['robot']") $(head -2 "$T/err")"
+(cd "$T/elsewhere" && ONE_ERROR_LINE=1 want_rc 2 "--board nosuch: exit 2" "$ABS_MMSIM" --board nosuch --avr "$REPO/$SK/UartEcho.elf" --maze "$MAZE")
+(cd "$T/elsewhere" && ONE_ERROR_LINE=1 want_rc 2 "--robot nosuch: exit 2" "$ABS_MMSIM" --robot nosuch --print-robot)
+if mk install PREFIX="$T/prefix" >"$T/make.out" 2>&1; then
+  (cd "$T/elsewhere" && "$T/prefix/bin/mmsim" --board ukmarsbot --robot ukmarsbot --avr "$REPO/$SK/UartEcho.elf" --maze "$MAZE" \
+    --time-limit 1 --input "0.5 end" --json >"$T/out" 2>"$T/err")
+  [ "$(jv "$T/out" "d['board']['file'], d['robot']")" = "('$T/prefix/share/mmsim/boards/ukmarsbot-v1.3.ini', '$T/prefix/share/mmsim/robots/ukmarsbot.ini')" ] \
+    && ok "make install PREFIX: the installed mmsim finds its board and robot files in PREFIX/share/mmsim" \
+    || bad "installed mmsim: $(jv "$T/out" "d['board']['file'], d['robot']") $(head -2 "$T/err")"
+else
+  bad "make install PREFIX=...: $(tail -3 "$T/make.out")"
+fi
 
 [ $fails -eq 0 ]

@@ -16,6 +16,7 @@
 #include "cli.h"
 #include "contest/batch.h"
 #include "contest/run.h"
+#include "io/datadir.h"
 #include "io/outfile.h"
 #include "io/stdstream.h"
 #include "link/serial.h"
@@ -333,6 +334,21 @@ static int validate(const run_opts_t *o)
     return failed ? RUN_NOT_REACHED : RUN_OK;
 }
 
+/* --robot NAME (no '/', no .ini): robots/NAME.ini in the working directory,
+ * an installed tree or the source tree (io/datadir.h). 0, or CLI_BAD_INPUT
+ * after one line. */
+static int find_robot(run_opts_t *o)
+{
+    static char path[DATADIR_PATH_MAX + 64];
+    char rel[300];
+    if (!o->robot_path || strchr(o->robot_path, '/') || strstr(o->robot_path, ".ini")) return 0;
+    if (snprintf(rel, sizeof rel, "robots/%s.ini", o->robot_path) >= (int)sizeof rel || datadir_find(rel, path, sizeof path) != 0)
+        return bad("--robot %s: no robots/NAME.ini of that name here, installed or in the source tree (give the robot file's path)",
+                   o->robot_path);
+    o->robot_path = path;
+    return 0;
+}
+
 static int run(int argc, char **argv)
 {
     mmsim_opts_t m = { .run = { /* the mouse's own firmware by default, 3 speed runs after the search */
@@ -348,7 +364,7 @@ static int run(int argc, char **argv)
         return RUN_OK;
     }
     if (first != argc) return bad("unexpected argument '%s'", argv[first]);
-    if (check_combinations(&m, seen)) return RUN_BAD_INPUT;
+    if (check_combinations(&m, seen) || find_robot(&m.run)) return RUN_BAD_INPUT;
     if (m.validate) return validate(&m.run);
     if (m.run.print_config || m.run.print_robot) {
         simcfg_t cfg;
