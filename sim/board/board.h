@@ -78,6 +78,7 @@ typedef struct {
     /* the battery through its divider, [battery] */
     int bat_channel;
     double bat_r_top_ohm, bat_r_bottom_ohm;
+    double bat_diode_drop_v;  /* V: a series (reverse-polarity) diode between the battery and the divider */
 } board_spec_t;
 
 /* What the board saw during the run (the JSON's "board"). */

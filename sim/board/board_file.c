@@ -81,6 +81,8 @@ static const keytab_t keys[] = {
     NUM("battery", "adc_channel", KEYTAB_INT, bat_channel, 0, 7, "1", "the divider's ADC channel"),
     NUM("battery", "r_top_ohm", KEYTAB_DOUBLE, bat_r_top_ohm, 0, 1e7, "ohm", "battery to the ADC pin"),
     NUM("battery", "r_bottom_ohm", KEYTAB_DOUBLE, bat_r_bottom_ohm, 1, 1e7, "ohm", "the ADC pin to ground"),
+    { "battery", "diode_drop_v", OFF(bat_diode_drop_v), 0.0, 0, 2, "V", "a series diode's forward drop before the divider (0: none)",
+      NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL },
 };
 #define N(t) (sizeof t / sizeof t[0])
 static const char *const fixed[] = { "board", "motor.left", "motor.right", "encoder.left", "encoder.right", "switches", "battery" };
