@@ -70,11 +70,30 @@ static void test_errors(void **state)
     assert_non_null(strstr(err, "more than 64 actions"));
 }
 
+/* Several --input flags add up: merged in time order, equal times in the order given. */
+static void test_several_add_up(void **state)
+{
+    (void)state;
+    static input_t in;
+    char err[300];
+    assert_int_equal(input_parse(&in, "2 send=B; 0.5 switches=3", err, sizeof err), 0);
+    assert_int_equal(input_add(&in, "1 reset; 2 end", err, sizeof err), 0);
+    assert_int_equal(in.n, 4);
+    assert_true(in.a[0].kind == INPUT_SWITCHES && in.a[0].value == 3);
+    assert_true(in.a[1].kind == INPUT_RESET);
+    assert_true(in.a[2].kind == INPUT_SEND && !strcmp(in.a[2].text, "B"));
+    assert_true(in.a[3].kind == INPUT_END);
+    assert_int_equal(input_add(&in, "3 wave", err, sizeof err), -1);
+    assert_string_equal(err, "--input:3:3: unknown action (switches=N, button, button=down, button=up, reset, "
+                             "occlude=left, occlude=right, send=TEXT, end): wave");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_parse_and_order),
         cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_several_add_up),
     };
     return cmocka_run_group_tests_name("input", tests, NULL, NULL);
 }

@@ -16,6 +16,7 @@
 #include "cli.h"
 #include "contest/batch.h"
 #include "contest/run.h"
+#include "io/datadir.h"
 #include "io/outfile.h"
 #include "io/stdstream.h"
 #include "link/serial.h"
@@ -48,7 +49,8 @@ static void usage(FILE *out)
           "       mmsim --maze FILE --board NAME|FILE --avr FIRMWARE.elf|.hex [--robot FILE] [--input \"T ACTION; ...\"]\n"
           "             [--goal X,Y]   (the image on an emulated board, boards/NAME-*.ini: pins, PWM, encoders, ADC,\n"
           "             UART; --verbose echoes its console; --input: a person's hands, T in sim seconds: switches=N,\n"
-          "             button, button=down|up, reset, occlude=left|right, send=TEXT, end)\n"
+          "             button, button=down|up, reset, occlude=left|right, send=TEXT, end; several --input add up;\n"
+          "             --eeprom FILE: the MCU's EEPROM, a raw image, loaded at power-on and saved at the end)\n"
           "       mmsim --maze FILE --mms COMMAND [--mms-ideal-walls] [--mms-timeout-ms N] [--mms-reset-at S|idle]\n"
           "             (an mms algorithm drives the robot through the mms text API, docs/MMS.md)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
@@ -73,7 +75,7 @@ static int f_seed(const char *prog, void *o, const char *arg)
 static int f_input(const char *prog, void *o, const char *arg)
 {
     char err[300];
-    if (input_parse(&run_of(o)->input, arg, err, sizeof err) != 0) return bad("%s", err);
+    if (input_add(&run_of(o)->input, arg, err, sizeof err) != 0) return bad("%s", err);
     return 0;
 }
 
@@ -245,6 +247,7 @@ static const cli_opt_t flags[] = {
     { .name = "avr", .kind = CLI_STR, .off = RUN(avr_elf) },
     { .name = "mcu", .kind = CLI_STR, .off = RUN(avr_mcu) },
     { .name = "board", .kind = CLI_STR, .off = RUN(board) },
+    { .name = "eeprom", .kind = CLI_STR, .off = RUN(eeprom_path) },
     { .name = "f-cpu", .kind = CLI_FN, .fn = f_f_cpu, .has_arg = 1 },
     { .name = "mms", .kind = CLI_FN, .fn = f_mms, .has_arg = 1 },
     { .name = "mms-ideal-walls", .kind = CLI_SET, .off = RUN(mms.ideal_walls) },
@@ -277,6 +280,7 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (o->serial && !o->avr_elf) o->realtime = 1; /* a real MCU runs in real time; simavr in lockstep */
     if (m->batch && m->maze) return bad("%s", "--maze and --batch: one at a time (a batch runs every maze in DIR)");
     if (o->console_pty && !o->board) return bad("%s", "--console pty needs --board NAME");
+    if (o->eeprom_path && !o->board) return bad("%s", "--eeprom FILE needs --board NAME");
     if (o->console_pty) o->realtime = 1; /* a person at a serial monitor: in real time */
     if (o->print_config || o->print_robot || m->validate) return 0;
     if (m->batch && (o->telem.url || o->telem.log_path)) return bad("%s", "--lcm and --lcm-log work on one maze, not with --batch");
@@ -330,6 +334,21 @@ static int validate(const run_opts_t *o)
     return failed ? RUN_NOT_REACHED : RUN_OK;
 }
 
+/* --robot NAME (no '/', no .ini): robots/NAME.ini in the working directory,
+ * an installed tree or the source tree (io/datadir.h). 0, or CLI_BAD_INPUT
+ * after one line. */
+static int find_robot(run_opts_t *o)
+{
+    static char path[DATADIR_PATH_MAX + 64];
+    char rel[300];
+    if (!o->robot_path || strchr(o->robot_path, '/') || strstr(o->robot_path, ".ini")) return 0;
+    if (snprintf(rel, sizeof rel, "robots/%s.ini", o->robot_path) >= (int)sizeof rel || datadir_find(rel, path, sizeof path) != 0)
+        return bad("--robot %s: no robots/NAME.ini of that name here, installed or in the source tree (give the robot file's path)",
+                   o->robot_path);
+    o->robot_path = path;
+    return 0;
+}
+
 static int run(int argc, char **argv)
 {
     mmsim_opts_t m = { .run = { /* the mouse's own firmware by default, 3 speed runs after the search */
@@ -345,7 +364,7 @@ static int run(int argc, char **argv)
         return RUN_OK;
     }
     if (first != argc) return bad("unexpected argument '%s'", argv[first]);
-    if (check_combinations(&m, seen)) return RUN_BAD_INPUT;
+    if (check_combinations(&m, seen) || find_robot(&m.run)) return RUN_BAD_INPUT;
     if (m.validate) return validate(&m.run);
     if (m.run.print_config || m.run.print_robot) {
         simcfg_t cfg;

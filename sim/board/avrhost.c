@@ -141,6 +141,10 @@ void avrhost_feed(avrhost_t *h)
         uint8_t c = h->in[h->in_head];
         h->in_head = (h->in_head + 1) % AVRHOST_IN_MAX;
         h->in_len--;
+        if (h->uart && !avr_regbit_get(h->avr, h->uart->rxen)) { /* simavr ignores it too; counted apart */
+            h->bytes_dropped++;
+            continue;
+        }
         h->bytes_in++;
         avr_raise_irq(h->uart_in, c); /* may raise XOFF at once */
     }
@@ -194,6 +198,8 @@ int avrhost_uart_open(avrhost_t *h, avrhost_sink_fn *sink, void *ctx, const char
     avr_irq_t *xoff = avr_io_getirq(h->avr, AVR_IOCTL_UART_GETIRQ('0'), UART_IRQ_OUT_XOFF);
     if (!h->uart_in || !out || !xon || !xoff)
         return snprintf(err, errn, "%s%sthe MCU '%s' has no UART0 in simavr", who ? who : "", who ? ": " : "", h->avr->mmcu), -1;
+    for (avr_io_t *io = h->avr->io_port; io; io = io->next)
+        if (!strcmp(io->kind, "uart") && ((avr_uart_t *)io)->name == '0') h->uart = (avr_uart_t *)io;
     avr_irq_register_notify(out, on_out, h);
     avr_irq_register_notify(xon, on_xon, h);
     avr_irq_register_notify(xoff, on_xoff, h);

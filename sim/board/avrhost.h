@@ -38,12 +38,14 @@ typedef void avrhost_sink_fn(void *ctx, uint8_t byte);
 typedef struct {
     struct avr_t *avr;
     struct avr_irq_t *uart_in;
+    struct avr_uart_t *uart;      /* UART0 (its receiver-enable bit), NULL before avrhost_uart_open */
     avrhost_sink_fn *sink;
     void *sink_ctx;
     int xoff;                     /* the UART's receive FIFO is full */
     uint8_t in[AVRHOST_IN_MAX];   /* typed bytes not yet in the FIFO */
     size_t in_head, in_len;
-    uint64_t bytes_in;            /* bytes handed to the UART's receiver */
+    uint64_t bytes_in;            /* bytes the UART's receiver took */
+    uint64_t bytes_dropped;       /* bytes that arrived with the receiver off (RXEN0 = 0): lost, as on the chip */
     uint64_t cycles_per_step;     /* AVR cycles of one physics step */
     uint64_t target;              /* the cycle the current step runs to */
 } avrhost_t;

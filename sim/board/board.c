@@ -20,6 +20,7 @@
 #include "avrhost.h"
 #include "board_adc.h"
 #include "board_console.h"
+#include "board_eeprom.h"
 #include "board_encoder.h"
 #include "board_led.h"
 #include "board_motor.h"
@@ -39,6 +40,7 @@ struct board_s {
     board_switches_t sw;
     board_leds_t leds, emitters;
     board_console_t con;
+    board_eeprom_t eeprom;
 };
 
 static const char *VECTORS_X8[26] = { "RESET", "INT0", "INT1", "PCINT0", "PCINT1", "PCINT2", "WDT", "TIMER2_COMPA",
@@ -122,6 +124,7 @@ int board_step(board_t *b, char *err, size_t errn)
     }
     if (rc == 0) rc = avrhost_run_to(h, h->target, err, errn);
     b->st.uart_bytes_in = h->bytes_in;
+    b->st.uart_bytes_dropped = h->bytes_dropped;
     if (rc != 0) return -1;
     b->st.cycles = h->avr->cycle;
     if (board_adc_check(&b->adc, err, errn) != 0) return -1;
@@ -185,6 +188,7 @@ int board_send(board_t *b, const char *text)
     avrhost_queue(&b->host, (const uint8_t *)text, n);
     avrhost_feed(&b->host);
     b->st.uart_bytes_in = b->host.bytes_in;
+    b->st.uart_bytes_dropped = b->host.bytes_dropped;
     return 0;
 }
 
@@ -195,6 +199,18 @@ const char *board_console(const board_t *b, size_t *len)
 }
 
 void board_set_echo(board_t *b, FILE *f) { b->con.echo = f; }
+
+int board_eeprom_keep(board_t *b, const char *path, char *err, size_t errn)
+{
+    return board_eeprom_load(&b->eeprom, b->host.avr, b->spec.mcu, path, err, errn);
+}
+
+int board_eeprom_end(board_t *b, int *written, int *changed, char *err, size_t errn)
+{
+    *changed = board_eeprom_changed(&b->eeprom);
+    *written = b->eeprom.written || *changed;
+    return board_eeprom_save(&b->eeprom, err, errn);
+}
 const board_spec_t *board_spec(const board_t *b) { return &b->spec; }
 
 const board_stats_t *board_stats(const board_t *b) { return &b->st; }

@@ -18,6 +18,7 @@
  *   board_switch.c   DIP switches and button on the ladder
  *   board_led.c      LEDs and emitter pins followed by their pin IRQs
  *   board_console.c  UART0's output kept as the console (and echoed live)
+ *   board_eeprom.c   the EEPROM kept in a file across runs (--eeprom)
  *   board.c          the core's step: exactly f_cpu x step cycles; counts
  *                    each interrupt vector's services
  *
@@ -77,6 +78,7 @@ typedef struct {
     /* the battery through its divider, [battery] */
     int bat_channel;
     double bat_r_top_ohm, bat_r_bottom_ohm;
+    double bat_diode_drop_v;  /* V: a series (reverse-polarity) diode between the battery and the divider */
 } board_spec_t;
 
 /* What the board saw during the run (the JSON's "board"). */
@@ -87,7 +89,9 @@ typedef struct {
     uint64_t adc_conversions[BOARD_ADC_CHANNELS];
     double duty_min[2], duty_max[2];       /* signed H-bridge duty per motor, -1..1 */
     uint64_t encoder_edges[2];
-    uint64_t uart_bytes_out, uart_bytes_in, console_dropped;
+    uint64_t uart_bytes_out, uart_bytes_in;
+    uint64_t uart_bytes_dropped;           /* typed before the firmware enabled its receiver: lost */
+    uint64_t console_dropped;              /* sent after the console held BOARD_CONSOLE_MAX bytes: not kept */
     uint32_t resets;
 } board_stats_t;
 
@@ -136,6 +140,14 @@ int board_send(board_t *b, const char *text);
 const char *board_console(const board_t *b, size_t *len);
 /* Echo UART output to f as it comes (NULL: off), for --verbose. */
 void board_set_echo(board_t *b, FILE *f);
+/* Keep the MCU's EEPROM in the file at path (board_eeprom.h): loaded now
+ * (call right after board_open: power-on), saved by board_eeprom_end.
+ * 0, or -1 with one line in err (a file of the wrong size, not writable). */
+int board_eeprom_keep(board_t *b, const char *path, char *err, size_t errn);
+/* At the end of the run: *written 1 if the firmware wrote the EEPROM,
+ * *changed 1 if its contents differ from power-on; then the file saved
+ * (if board_eeprom_keep gave one). 0, or -1 with one line in err. */
+int board_eeprom_end(board_t *b, int *written, int *changed, char *err, size_t errn);
 const board_stats_t *board_stats(const board_t *b);
 /* The board file it was opened with (board_open's copy: resolved once). */
 const board_spec_t *board_spec(const board_t *b);

@@ -14,6 +14,7 @@
 
 #include "world/inifile.h"
 #include "world/keytab.h"
+#include "io/datadir.h"
 
 /* "D7", "A0" (Arduino Nano names) or "PB1" into a board_pin_t */
 static int parse_pin(const char *v, void *field, char *why, size_t len)
@@ -80,6 +81,8 @@ static const keytab_t keys[] = {
     NUM("battery", "adc_channel", KEYTAB_INT, bat_channel, 0, 7, "1", "the divider's ADC channel"),
     NUM("battery", "r_top_ohm", KEYTAB_DOUBLE, bat_r_top_ohm, 0, 1e7, "ohm", "battery to the ADC pin"),
     NUM("battery", "r_bottom_ohm", KEYTAB_DOUBLE, bat_r_bottom_ohm, 1, 1e7, "ohm", "the ADC pin to ground"),
+    { "battery", "diode_drop_v", OFF(bat_diode_drop_v), 0.0, 0, 2, "V", "a series diode's forward drop before the divider (0: none)",
+      NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL },
 };
 #define N(t) (sizeof t / sizeof t[0])
 static const char *const fixed[] = { "board", "motor.left", "motor.right", "encoder.left", "encoder.right", "switches", "battery" };
@@ -290,27 +293,44 @@ int board_load(board_spec_t *spec, const char *path, char *err, size_t errn)
 
 static int cmp_str(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
 
-int board_find(const char *name, char *out, size_t outn, char *err, size_t errn)
+/* The board file NAME-*.ini in dir/boards that sorts first into best, or "". */
+static void find_in(const char *dir, const char *name, char *best, size_t bestn)
 {
-    if (strchr(name, '/') || strstr(name, ".ini")) { /* a path */
-        snprintf(out, outn, "%s", name);
-        return 0;
-    }
-    DIR *d = opendir("boards");
-    char best[256] = "";
+    char path[DATADIR_PATH_MAX + 8];
+    best[0] = '\0';
+    if (snprintf(path, sizeof path, "%s%sboards", dir, dir[0] ? "/" : "") >= (int)sizeof path) return;
+    DIR *d = opendir(path);
     size_t n = strlen(name);
     struct dirent *e;
     while (d && (e = readdir(d)) != NULL) {
         size_t k = strlen(e->d_name);
         if (strncmp(e->d_name, name, n) || e->d_name[n] != '-' || k < 5 || strcmp(e->d_name + k - 4, ".ini")) continue;
         const char *c = e->d_name;
-        if (!best[0] || cmp_str(&c, &(const char *){ best }) < 0) snprintf(best, sizeof best, "%s", e->d_name);
+        if (!best[0] || cmp_str(&c, &(const char *){ best }) < 0) snprintf(best, bestn, "%s", e->d_name);
     }
     if (d) closedir(d);
-    if (!best[0]) {
-        snprintf(err, errn, "--board %s: no boards/%s-*.ini here (give the board file's path)", name, name);
-        return -1;
+}
+
+int board_find(const char *name, char *out, size_t outn, char *err, size_t errn)
+{
+    if (strchr(name, '/') || strstr(name, ".ini")) { /* a path */
+        snprintf(out, outn, "%s", name);
+        return 0;
     }
-    snprintf(out, outn, "boards/%s", best);
-    return 0;
+    char dirs[DATADIR_MAX][DATADIR_PATH_MAX], best[256], where[600] = "";
+    int nd = datadir_list(dirs);
+    for (int i = 0; i < nd; i++) {
+        find_in(dirs[i], name, best, sizeof best);
+        if (best[0]) {
+            if (snprintf(out, outn, "%s%sboards/%s", dirs[i], dirs[i][0] ? "/" : "", best) < (int)outn) return 0;
+            snprintf(err, errn, "--board %s: the path of %s in %s is too long", name, best, dirs[i]);
+            return -1;
+        }
+        size_t w = strlen(where);
+        if (snprintf(where + w, sizeof where - w, "%s%s%sboards", i ? ", " : "", dirs[i], dirs[i][0] ? "/" : "") >=
+            (int)(sizeof where - w))
+            where[sizeof where - 1] = '\0'; /* cut: the message stays one line */
+    }
+    snprintf(err, errn, "--board %s: no %s-*.ini in %s (give the board file's path)", name, name, where);
+    return -1;
 }

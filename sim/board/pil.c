@@ -66,6 +66,7 @@ int pil_step(pil_t *p, char *err, size_t errn)
     p->host.target += p->host.cycles_per_step;
     int rc = avrhost_run_to(&p->host, p->host.target, err, errn);
     p->bytes_in = p->host.bytes_in;
+    p->bytes_dropped = p->host.bytes_dropped;
     if (rc != 0) return -1;
     p->cycles = p->host.avr->cycle;
     return 0;

@@ -20,6 +20,7 @@ typedef struct {
     int fd;                   /* the AVR's end of the socketpair */
     uint64_t cycles;          /* AVR cycles run */
     uint64_t bytes_in, bytes_out; /* UART0 bytes to and from the AVR */
+    uint64_t bytes_dropped;       /* sent before the AVR enabled its receiver: lost, as on the chip */
     char mcu[64];
     uint32_t f_cpu;
 } pil_t;

@@ -7,9 +7,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* "COL: reason" (COL counted from 1); input_add puts "--input:N:" before it. */
 static int fail(char *err, size_t errlen, size_t col, const char *what, const char *word)
 {
-    snprintf(err, errlen, "--input:1:%zu: %s%s%s", col + 1, what, word ? ": " : "", word ? word : "");
+    snprintf(err, errlen, "%zu: %s%s%s", col + 1, what, word ? ": " : "", word ? word : "");
     return -1;
 }
 
@@ -58,6 +59,28 @@ static int action(input_t *in, double t, const char *w, size_t n, char *err, siz
 int input_parse(input_t *in, const char *spec, char *err, size_t errlen)
 {
     memset(in, 0, sizeof *in);
+    return input_add(in, spec, err, errlen);
+}
+
+/* Sort in->a by time; equal times keep the order they were added in. */
+static void sort_by_time(input_t *in)
+{
+    input_action_t tmp[INPUT_MAX];
+    int idx[INPUT_MAX];
+    for (int i = 0; i < in->n; i++) idx[i] = i;
+    for (int i = 1; i < in->n; i++) /* insertion sort: stable, at most 64 */
+        for (int j = i; j > 0 && in->a[idx[j - 1]].t_s > in->a[idx[j]].t_s; j--) {
+            int t = idx[j];
+            idx[j] = idx[j - 1];
+            idx[j - 1] = t;
+        }
+    for (int i = 0; i < in->n; i++) tmp[i] = in->a[idx[i]];
+    memcpy(in->a, tmp, sizeof(input_action_t) * (size_t)in->n);
+}
+
+/* Parse spec's actions onto the end of in->a: 0, or -1 with "COL: reason" in err. */
+static int add_spec(input_t *in, const char *spec, char *err, size_t errlen)
+{
     for (const char *p = spec; *p;) {
         while (*p == ' ' || *p == ';') p++;
         if (!*p) break;
@@ -76,18 +99,18 @@ int input_parse(input_t *in, const char *spec, char *err, size_t errlen)
         if (action(in, t, p, n, err, errlen, (size_t)(p - spec)) != 0) return -1;
         p = semi ? semi + 1 : p + strlen(p);
     }
-    /* in time order; equal times keep the order given */
-    input_action_t tmp[INPUT_MAX];
-    int idx[INPUT_MAX];
-    for (int i = 0; i < in->n; i++) idx[i] = i;
-    for (int i = 1; i < in->n; i++) /* insertion sort: stable, at most 64 */
-        for (int j = i; j > 0 && in->a[idx[j - 1]].t_s > in->a[idx[j]].t_s; j--) {
-            int t = idx[j];
-            idx[j] = idx[j - 1];
-            idx[j - 1] = t;
-        }
-    for (int i = 0; i < in->n; i++) tmp[i] = in->a[idx[i]];
-    memcpy(in->a, tmp, sizeof(input_action_t) * (size_t)in->n);
+    return 0;
+}
+
+int input_add(input_t *in, const char *spec, char *err, size_t errlen)
+{
+    char why[300];
+    in->specs++;
+    if (add_spec(in, spec, why, sizeof why) != 0) {
+        snprintf(err, errlen, "--input:%d:%s", in->specs, why);
+        return -1;
+    }
+    sort_by_time(in);
     return 0;
 }
 

@@ -8,7 +8,10 @@
  *   occlude=right
  *   send=TEXT       TEXT and a newline typed on the console (to ';' or the end)
  *   end             the run stops there
- * Errors: "--input:1:COL: reason" (COL: the action's first character). */
+ * Several --input flags add up: their actions merged in time order (equal times
+ * in the order given).
+ * Errors: "--input:N:COL: reason" (N: the flag's number, 1 for the first; COL:
+ * the action's first character). */
 #ifndef INPUT_H
 #define INPUT_H
 
@@ -34,10 +37,13 @@ typedef struct {
 typedef struct {
     input_action_t a[INPUT_MAX]; /* in time order (stable for equal times) */
     int n, next;
+    int specs;                   /* --input texts added so far */
 } input_t;
 
 /* Parse spec into in: 0, or -1 with one line in err. */
 int input_parse(input_t *in, const char *spec, char *err, size_t errlen);
+/* Add spec's actions to in's (several --input flags): 0, or -1 with one line in err. */
+int input_add(input_t *in, const char *spec, char *err, size_t errlen);
 /* The next action due at t_s (and advance), or NULL. */
 const input_action_t *input_due(input_t *in, double t_s);
 /* 1 if any action needs a board (all but occlude and end). */

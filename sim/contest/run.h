@@ -50,6 +50,7 @@ typedef struct {
     int goal_x, goal_y;            /* --goal X,Y: laps scored to this cell, not the maze's goal (-1: the maze's) */
     const char *board;             /* --board NAME|FILE: the image (--avr) on an emulated board (sim/board) */
     int console_pty;               /* --console pty: the board's UART0 on a pseudo-terminal (a person's serial monitor) */
+    const char *eeprom_path;       /* --eeprom FILE: the board's EEPROM loaded at power-on, saved at the end (NULL: blank, not kept) */
 } run_opts_t;
 
 /* The defaults, then --config's file, --robot's file, then the flags that

@@ -19,6 +19,9 @@ typedef struct {
     board_t *board;
     int console_fd;      /* --console pty: the pty's master, -1 none */
     size_t console_sent; /* console bytes written to it so far */
+    int eeprom_written;  /* the firmware wrote its EEPROM (--eeprom) */
+    int eeprom_changed;  /* ... and its contents differ from power-on */
+    int eeprom_failed;   /* --eeprom's file could not be saved */
 } board_run_t;
 
 /* One contest per process (run_one): the driver's state is static, as
@@ -125,6 +128,11 @@ static int board_open_run(run_t *r, void **self)
         fprintf(stderr, "mmsim: %s\n", err);
         return RUN_BAD_INPUT;
     }
+    if (r->o->eeprom_path && board_eeprom_keep(b->board, r->o->eeprom_path, err, sizeof err) != 0) {
+        fprintf(stderr, "mmsim: %s\n", err);
+        board_close(b->board);
+        return RUN_BAD_INPUT;
+    }
     if (r->o->verbose) board_set_echo(b->board, stderr);
     *self = b;
     int rc = console_open(r, b);
@@ -180,6 +188,15 @@ static void board_results(run_t *r, void *self, json_t *j)
     json_object_set_new(b, "uart_bytes_out", json_integer((json_int_t)st->uart_bytes_out));
     json_object_set_new(b, "uart_bytes_in", json_integer((json_int_t)st->uart_bytes_in));
     json_object_set_new(b, "resets", json_integer(st->resets));
+    /* what was lost, present only when something was: the console past its limit, bytes typed before the receiver was on */
+    if (st->console_dropped) json_object_set_new(b, "console_dropped", json_integer((json_int_t)st->console_dropped));
+    if (st->uart_bytes_dropped)
+        json_object_set_new(b, "uart_bytes_dropped", json_integer((json_int_t)st->uart_bytes_dropped));
+    const board_run_t *br = self;
+    if (r->o->eeprom_path)
+        json_object_set_new(b, "eeprom", json_pack("{s:s, s:b, s:b, s:b}", "file", r->o->eeprom_path, "written",
+                                                   br->eeprom_written, "changed", br->eeprom_changed, "saved",
+                                                   !br->eeprom_failed));
     json_object_set_new(j, "board", b);
     size_t n;
     const char *con = board_console(bd, &n);
@@ -195,7 +212,20 @@ static void board_results(run_t *r, void *self, json_t *j)
     json_object_set_new(j, "console", cj ? cj : json_null());
 }
 
-static void board_stop(run_t *r, void *self) { console_pump(self); /* the last words */ }
+static void board_stop(run_t *r, void *self)
+{
+    board_run_t *b = self;
+    char err[600];
+    console_pump(b); /* the last words */
+    if (board_eeprom_end(b->board, &b->eeprom_written, &b->eeprom_changed, err, sizeof err) != 0) {
+        fprintf(stderr, "mmsim: --eeprom: %s\n", err);
+        b->eeprom_failed = 1;
+    }
+    const board_stats_t *st = board_stats(b->board);
+    if (st->console_dropped)
+        fprintf(stderr, "mmsim: the console kept its first %u bytes; %llu more not kept (board.console_dropped)\n",
+                BOARD_CONSOLE_MAX - 1, (unsigned long long)st->console_dropped);
+}
 
 static void board_headline(const run_t *r, const void *self)
 {
@@ -208,7 +238,7 @@ static void board_headline(const run_t *r, const void *self)
 /* the AVR stopped: external; an ADC mode simavr lacks: the image's (bad input); else was a lap made */
 static int board_exit(const run_t *r, const void *self)
 {
-    if (!strcmp(r->reason, "avr_stopped")) return RUN_EXTERNAL;
+    if (!strcmp(r->reason, "avr_stopped") || ((const board_run_t *)self)->eeprom_failed) return RUN_EXTERNAL;
     if (!strcmp(r->reason, "board_unsupported")) return RUN_BAD_INPUT;
     return r->sim.race.nlaps > 0 ? RUN_OK : RUN_NOT_REACHED;
 }

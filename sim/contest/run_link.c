@@ -147,6 +147,8 @@ static void avr_results(run_t *r, void *self, json_t *j)
                                             "uart_bytes_in", (json_int_t)p->bytes_in, "uart_bytes_out",
                                             (json_int_t)p->bytes_out, "stack_max_bytes", (json_int_t)stack_max,
                                             "sram_free_min_bytes", (json_int_t)free_min));
+    if (p->bytes_dropped) /* present only when something was lost */
+        json_object_set_new(json_object_get(j, "avr"), "uart_bytes_dropped", json_integer((json_int_t)p->bytes_dropped));
 }
 
 static int serial_open(run_t *r, void **self)
