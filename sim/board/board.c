@@ -196,5 +196,6 @@ const char *board_console(const board_t *b, size_t *len)
 
 void board_set_echo(board_t *b, FILE *f) { b->con.echo = f; }
 const board_spec_t *board_spec(const board_t *b) { return &b->spec; }
+const avrhost_t *board_host(const board_t *b) { return &b->host; }
 
 const board_stats_t *board_stats(const board_t *b) { return &b->st; }
