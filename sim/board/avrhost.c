@@ -118,11 +118,13 @@ static void on_reset(avr_io_t *io)
     }
 }
 
-/* SPH written (the core writes SPL then SPH for every push, pop, call and
- * return; firmware writes SPH then SPL): the stack pointer checked against
- * SRAM. Where SRAM starts on a 256-byte boundary (ATmega88/168/328/2560),
- * SPH decides alone; elsewhere only a high byte that no low byte can make
- * valid counts (a firmware's SPH-then-SPL is briefly odd). */
+/* SPH written through simavr's IO write hooks (the firmware's out and sts:
+ * it writes SPH, then SPL; pushes and calls move SP without the hook, for
+ * those see sp_check): the stack pointer checked against SRAM before the
+ * next instruction can push. Where SRAM starts on a 256-byte boundary
+ * (ATmega88/168/328/2560) the new SPH decides alone; elsewhere only a high
+ * byte that no low byte can make valid counts (between the two writes SP
+ * holds the new SPH with the old SPL). */
 static void on_sph(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param)
 {
     avrhost_t *h = param;
@@ -307,7 +309,7 @@ int avrhost_run_to(avrhost_t *h, uint64_t until, char *err, size_t errn)
         h->running = 1;
         int state = avr_run(h->avr);
         h->running = 0;
-        if (state == cpu_Running) sp_check(h);
+        sp_check(h);
         if (h->crash || state == cpu_Done || state == cpu_Crashed) {
             crash_cause(h, state, pc_was);
             return crash_line(h, err, errn);
