@@ -102,5 +102,12 @@ import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1]); a=d[sy
 print(d['exit_reason'], a.get('watchdog_resets'), a.get('crash'))" "$T/out" $key 2>&1)
   [ "$got" = "time_limit 1 None" ] && ok "$mode wdt_once: one watchdog reset counted, no crash" || bad "$mode wdt_once: $got"
 done
+# the reset button is no watchdog reset: it clears MCUSR, so the firmware resets itself once more
+want_rc 1 "board wdt_once with the reset button" "$MMSIM" --maze $MAZE --board ukmarsbot --robot robots/ukmarsbot.ini \
+  --avr "$T/wdt_once.elf" --time-limit 1 --input "0.5 reset" --json
+got=$(python3 -c "
+import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1]); b=d['board']
+print(d['exit_reason'], b['resets'], b.get('watchdog_resets'), b.get('crash'))" "$T/out" 2>&1)
+[ "$got" = "time_limit 1 2 None" ] && ok "reset button: 1 reset, 2 watchdog resets, no crash" || bad "reset button: $got"
 
 [ $fails -eq 0 ] && echo "cli_crash: all passed" || { echo "cli_crash: $fails failed"; exit 1; }
