@@ -91,6 +91,66 @@ int avrhost_read(avrhost_image_t *img, const char *path, int hex_ok, const char 
     return 0;
 }
 
+/* An IO module of ours in the core's list: its reset hook counts the
+ * watchdog's resets (simavr resets the core inside avr_run only for the
+ * watchdog; the host's resets come between runs), and a write hook on the
+ * stack pointer's high byte catches the stack leaving SRAM. */
+struct avrhost_watch_t {
+    avr_io_t io;
+    avrhost_t *h;
+};
+
+static void on_reset(avr_io_t *io)
+{
+    avrhost_t *h = ((struct avrhost_watch_t *)io)->h;
+    uint64_t now = h->avr->cycle, second = h->avr->frequency; /* cycles of one second */
+    if (!h->running) {
+        h->wdt_in_row = 0;
+        return;
+    }
+    h->wdt_resets++;
+    h->wdt_in_row = h->wdt_in_row > 0 && now - h->wdt_last_cycle <= second ? h->wdt_in_row + 1u : 1u;
+    h->wdt_last_cycle = now;
+    if (h->wdt_in_row >= AVRHOST_WDT_LOOP_RESETS && !h->crash) {
+        h->crash = "watchdog_reset_loop";
+        h->crash_pc = h->avr->pc;
+        h->avr->state = cpu_Crashed; /* avr_run returns; the core is not run again */
+    }
+}
+
+/* SPH written through simavr's IO write hooks (the firmware's out and sts:
+ * it writes SPH, then SPL; pushes and calls move SP without the hook, for
+ * those see sp_check): the stack pointer checked against SRAM before the
+ * next instruction can push. Where SRAM starts on a 256-byte boundary
+ * (ATmega88/168/328/2560) the new SPH decides alone; elsewhere only a high
+ * byte that no low byte can make valid counts (between the two writes SP
+ * holds the new SPH with the old SPL). */
+static void on_sph(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param)
+{
+    avrhost_t *h = param;
+    avr->data[addr] = v;
+    uint32_t lo = avr->ioend + 1u, hi = avr->ramend, sp = (uint32_t)v << 8 | avr->data[R_SPL];
+    int low = (lo & 0xFFu) == 0 ? sp < lo : ((uint32_t)v << 8 | 0xFFu) < lo;
+    if ((low || ((uint32_t)v << 8) > hi) && !h->crash) {
+        h->crash = "stack_overflow";
+        h->crash_pc = avr->pc;
+        h->crash_sp = sp;
+        avr->state = cpu_Crashed; /* avr_run returns after this instruction */
+    }
+}
+
+static int watch_install(avrhost_t *h, char *err, size_t errn)
+{
+    h->watch = calloc(1, sizeof *h->watch);
+    if (!h->watch) return snprintf(err, errn, "out of memory"), -1;
+    h->watch->h = h;
+    h->watch->io.kind = "mmsim-watch";
+    h->watch->io.reset = on_reset;
+    avr_register_io(h->avr, &h->watch->io);
+    avr_register_io_write(h->avr, R_SPH, on_sph, h);
+    return 0;
+}
+
 int avrhost_make(avrhost_t *h, const char *mcu, const char *who, char *err, size_t errn)
 {
     log_install();
@@ -98,7 +158,7 @@ int avrhost_make(avrhost_t *h, const char *mcu, const char *who, char *err, size
     if (!h->avr) return snprintf(err, errn, "%s: simavr does not know the MCU '%s'", who, mcu), -1;
     avr_init(h->avr);
     h->avr->log = LOG_NONE;
-    return 0;
+    return watch_install(h, err, errn);
 }
 
 static int put_hex(avrhost_t *h, avrhost_image_t *img, const char *path, const char *mcu, char *err, size_t errn)
@@ -206,13 +266,60 @@ int avrhost_uart_open(avrhost_t *h, avrhost_sink_fn *sink, void *ctx, const char
     return 0;
 }
 
+/* The crash's cause when simavr stopped the core on its own (cpu_Done:
+ * asleep with interrupts off; cpu_Crashed: a PC past the flash, before the
+ * run (pc_was) or after it, or simavr's reason). */
+static void crash_cause(avrhost_t *h, int state, uint32_t pc_was)
+{
+    if (h->crash) return;
+    h->crash_pc = h->avr->pc;
+    if (state == cpu_Done) h->crash = "sleep_with_interrupts_off";
+    else if (h->avr->pc > h->avr->flashend) h->crash = "pc_outside_flash";
+    else if (pc_was > h->avr->flashend) h->crash = "pc_outside_flash", h->crash_pc = pc_was;
+    else h->crash = "crashed";
+}
+
+/* The stack pointer outside SRAM after a run: pushes and calls move it
+ * without the SPH hook (simavr writes it directly); the next push would
+ * write into the IO registers, then past simavr's data array. */
+static void sp_check(avrhost_t *h)
+{
+    const avr_t *avr = h->avr;
+    uint32_t sp = (uint32_t)avr->data[R_SPH] << 8 | avr->data[R_SPL];
+    if (h->crash || (sp >= avr->ioend + 1u && sp <= avr->ramend)) return;
+    h->crash = "stack_overflow";
+    h->crash_pc = avr->pc;
+    h->crash_sp = sp;
+}
+
+static int crash_line(const avrhost_t *h, char *err, size_t errn)
+{
+    char detail[260] = "";
+    if (!strcmp(h->crash, "stack_overflow"))
+        snprintf(detail, sizeof detail, " (SP 0x%04X outside SRAM 0x%04X..0x%04X)", h->crash_sp, h->avr->ioend + 1u,
+                 h->avr->ramend);
+    else if (!strcmp(h->crash, "pc_outside_flash"))
+        snprintf(detail, sizeof detail, " (flash ends at 0x%04X)", h->avr->flashend);
+    else if (!strcmp(h->crash, "watchdog_reset_loop"))
+        snprintf(detail, sizeof detail, " (%u watchdog resets in a row)", h->wdt_in_row);
+    else if (last_log[0]) snprintf(detail, sizeof detail, " (simavr: %s)", last_log);
+    return snprintf(err, errn, "firmware crashed at cycle %llu, PC 0x%04X: %s%s", (unsigned long long)h->avr->cycle,
+                    h->crash_pc, h->crash, detail), -1;
+}
+
 int avrhost_run_to(avrhost_t *h, uint64_t until, char *err, size_t errn)
 {
+    if (h->crash) return crash_line(h, err, errn);
     while (h->avr->cycle < until) {
+        uint32_t pc_was = h->avr->pc;
+        h->running = 1;
         int state = avr_run(h->avr);
-        if (state == cpu_Done || state == cpu_Crashed)
-            return snprintf(err, errn, "AVR %s at cycle %llu%s%s", state == cpu_Crashed ? "crashed" : "halted",
-                            (unsigned long long)h->avr->cycle, log_sep(), last_log), -1;
+        h->running = 0;
+        sp_check(h);
+        if (h->crash || state == cpu_Done || state == cpu_Crashed) {
+            crash_cause(h, state, pc_was);
+            return crash_line(h, err, errn);
+        }
     }
     return 0;
 }
@@ -220,6 +327,8 @@ int avrhost_run_to(avrhost_t *h, uint64_t until, char *err, size_t errn)
 void avrhost_close(avrhost_t *h)
 {
     if (h->avr) avr_terminate(h->avr);
+    free(h->watch); /* after the core, whose IO list held it */
+    h->watch = NULL;
 }
 
 avr_irq_t *avrhost_pin_irq(avr_t *avr, char port, unsigned bit) { return avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ(port), (int)bit); }

@@ -22,6 +22,9 @@ struct ihex_chunk_t;
 
 #define AVRHOST_IN_MAX 4096u              /* bytes waiting for the UART's receive FIFO */
 #define AVRHOST_IMAGE_MAX_BYTES (64u << 20) /* an ELF with its debug sections; a Mega's flash is 256 KiB */
+#define AVRHOST_WDT_LOOP_RESETS 8u        /* watchdog resets in a row, each within a second of the last: a reset loop */
+
+struct avrhost_watch_t;
 
 /* An image read from its file, not yet in a core. */
 typedef struct {
@@ -48,6 +51,14 @@ typedef struct {
     uint64_t bytes_dropped;       /* bytes that arrived with the receiver off (RXEN0 = 0): lost, as on the chip */
     uint64_t cycles_per_step;     /* AVR cycles of one physics step */
     uint64_t target;              /* the cycle the current step runs to */
+    struct avrhost_watch_t *watch; /* the stack pointer's guard and the reset counter (in the core's IO list) */
+    int running;                  /* inside avr_run: a reset now is the watchdog's (simavr's only own reset) */
+    uint64_t wdt_resets;          /* watchdog resets so far */
+    uint32_t wdt_in_row;          /* watchdog resets since the last other reset, each within a second of the last */
+    uint64_t wdt_last_cycle;      /* the cycle of the last watchdog reset */
+    const char *crash;            /* why the firmware crashed (NULL: it has not): see avrhost_run_to */
+    uint32_t crash_pc;            /* the program counter then, a byte address in flash */
+    uint32_t crash_sp;            /* the stack pointer then */
 } avrhost_t;
 
 /* Read and check the image at path: readable, a regular file, an AVR ELF
@@ -79,8 +90,14 @@ size_t avrhost_room(const avrhost_t *h);
 void avrhost_queue(avrhost_t *h, const uint8_t *bytes, size_t n);
 /* Hand queued bytes to the receiver until it says XOFF. */
 void avrhost_feed(avrhost_t *h);
-/* Run the AVR up to cycle until. 0, or -1 with "AVR crashed|halted at
- * cycle N: simavr's message". */
+/* Run the AVR up to cycle until. 0, or -1 with "firmware crashed at cycle
+ * N, PC 0xPC: CAUSE (detail)" in err and h->crash set to the cause:
+ * "stack_overflow" (the stack pointer left SRAM: the run ends before the
+ * next push, which simavr would write past its data array), "pc_outside_flash",
+ * "sleep_with_interrupts_off" (simavr's cpu_Done: nothing can wake it),
+ * "watchdog_reset_loop" (AVRHOST_WDT_LOOP_RESETS in a row) or "crashed"
+ * (simavr's cpu_Crashed for another reason). The core is never run again
+ * after a crash: later calls return -1 at once. */
 int avrhost_run_to(avrhost_t *h, uint64_t until, char *err, size_t errn);
 /* Stop the core (simavr cannot free one: h->avr stays pointing at it). */
 void avrhost_close(avrhost_t *h);

@@ -212,5 +212,6 @@ int board_eeprom_end(board_t *b, int *written, int *changed, char *err, size_t e
     return board_eeprom_save(&b->eeprom, err, errn);
 }
 const board_spec_t *board_spec(const board_t *b) { return &b->spec; }
+const avrhost_t *board_host(const board_t *b) { return &b->host; }
 
 const board_stats_t *board_stats(const board_t *b) { return &b->st; }

@@ -32,6 +32,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "board/avrhost.h"
 #include "world/sim.h"
 
 #define BOARD_ADC_CHANNELS 8
@@ -151,6 +152,8 @@ int board_eeprom_end(board_t *b, int *written, int *changed, char *err, size_t e
 const board_stats_t *board_stats(const board_t *b);
 /* The board file it was opened with (board_open's copy: resolved once). */
 const board_spec_t *board_spec(const board_t *b);
+/* The AVR core (read only): its crash (h->crash) and watchdog resets. */
+const avrhost_t *board_host(const board_t *b);
 /* The A6-style ladder's voltage for switches n and the button, V. */
 double board_switch_volts(const board_spec_t *spec, unsigned n, int button);
 

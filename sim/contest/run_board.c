@@ -149,6 +149,7 @@ static const char *board_after(run_t *r, void *self)
     if (r->sim.step % 10 == 0) console_pump(b);
     if (board_step(b->board, err, sizeof err) != 0) {
         fprintf(stderr, "mmsim: %s: %s\n", o->avr_elf, err);
+        if (board_host(b->board)->crash) return "firmware_crashed";
         return strstr(err, "auto-trigger") ? "board_unsupported" : "avr_stopped";
     }
     if (sim_time_s(&r->sim) >= r->cfg.sim.time_limit_s) return "time_limit";
@@ -197,6 +198,9 @@ static void board_results(run_t *r, void *self, json_t *j)
         json_object_set_new(b, "eeprom", json_pack("{s:s, s:b, s:b, s:b}", "file", r->o->eeprom_path, "written",
                                                    br->eeprom_written, "changed", br->eeprom_changed, "saved",
                                                    !br->eeprom_failed));
+    const avrhost_t *h = board_host(bd);
+    if (h->wdt_resets) json_object_set_new(b, "watchdog_resets", json_integer((json_int_t)h->wdt_resets));
+    if (h->crash) json_object_set_new(b, "crash", json_pack("{s:I, s:s}", "pc", (json_int_t)h->crash_pc, "cause", h->crash));
     json_object_set_new(j, "board", b);
     size_t n;
     const char *con = board_console(bd, &n);
@@ -235,9 +239,11 @@ static void board_headline(const run_t *r, const void *self)
            (unsigned long long)st->uart_bytes_out, (unsigned long long)st->uart_bytes_in);
 }
 
-/* the AVR stopped: external; an ADC mode simavr lacks: the image's (bad input); else was a lap made */
+/* the firmware crashed: not reached; the AVR stopped otherwise: external; an ADC mode simavr lacks: the
+ * image's (bad input); else was a lap made */
 static int board_exit(const run_t *r, const void *self)
 {
+    if (!strcmp(r->reason, "firmware_crashed")) return RUN_NOT_REACHED;
     if (!strcmp(r->reason, "avr_stopped") || ((const board_run_t *)self)->eeprom_failed) return RUN_EXTERNAL;
     if (!strcmp(r->reason, "board_unsupported")) return RUN_BAD_INPUT;
     return r->sim.race.nlaps > 0 ? RUN_OK : RUN_NOT_REACHED;

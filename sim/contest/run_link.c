@@ -101,7 +101,7 @@ static const char *avr_after(run_t *r, void *self)
     char err[400];
     if (pil_step(&((link_run_t *)self)->pil, err, sizeof err) != 0) {
         fprintf(stderr, "mmsim: %s: %s\n", r->o->avr_elf, err);
-        return "avr_stopped";
+        return ((link_run_t *)self)->pil.host.crash ? "firmware_crashed" : "avr_stopped";
     }
     return link_after(r, self);
 }
@@ -142,13 +142,16 @@ static void avr_results(run_t *r, void *self, json_t *j)
     uint32_t stack_max, free_min;
     const pil_t *p = &((link_run_t *)self)->pil;
     pil_stack(p, &stack_max, &free_min);
-    json_object_set_new(j, "avr", json_pack("{s:s, s:s, s:I, s:I, s:I, s:I, s:I, s:I}", "elf", r->o->avr_elf, "mcu",
-                                            p->mcu, "f_cpu_hz", (json_int_t)p->f_cpu, "cycles", (json_int_t)p->cycles,
-                                            "uart_bytes_in", (json_int_t)p->bytes_in, "uart_bytes_out",
-                                            (json_int_t)p->bytes_out, "stack_max_bytes", (json_int_t)stack_max,
-                                            "sram_free_min_bytes", (json_int_t)free_min));
+    json_t *a = json_pack("{s:s, s:s, s:I, s:I, s:I, s:I, s:I, s:I}", "elf", r->o->avr_elf, "mcu", p->mcu, "f_cpu_hz",
+                          (json_int_t)p->f_cpu, "cycles", (json_int_t)p->cycles, "uart_bytes_in", (json_int_t)p->bytes_in,
+                          "uart_bytes_out", (json_int_t)p->bytes_out, "stack_max_bytes", (json_int_t)stack_max,
+                          "sram_free_min_bytes", (json_int_t)free_min);
+    const avrhost_t *h = &p->host;
+    if (h->wdt_resets) json_object_set_new(a, "watchdog_resets", json_integer((json_int_t)h->wdt_resets));
+    if (h->crash) json_object_set_new(a, "crash", json_pack("{s:I, s:s}", "pc", (json_int_t)h->crash_pc, "cause", h->crash));
     if (p->bytes_dropped) /* present only when something was lost */
-        json_object_set_new(json_object_get(j, "avr"), "uart_bytes_dropped", json_integer((json_int_t)p->bytes_dropped));
+        json_object_set_new(a, "uart_bytes_dropped", json_integer((json_int_t)p->bytes_dropped));
+    json_object_set_new(j, "avr", a);
 }
 
 static int serial_open(run_t *r, void **self)
@@ -185,9 +188,10 @@ static void avr_close(run_t *r, void *self)
     pil_close(&l->pil);
 }
 
-/* the processor stopped: an external failure; else as every MCU */
+/* the firmware crashed: not reached; the processor stopped otherwise: an external failure; else as every MCU */
 static int avr_exit(const run_t *r, const void *self)
 {
+    if (!strcmp(r->reason, "firmware_crashed")) return RUN_NOT_REACHED;
     return !strcmp(r->reason, "avr_stopped") ? RUN_EXTERNAL : run_exit_laps(r, "done", "mcu_stopped");
 }
 
