@@ -12,6 +12,7 @@
 #include <simavr/avr_ioport.h>
 #include <simavr/avr_uart.h>
 #include <simavr/sim_avr.h>
+#include <simavr/sim_cycle_timers.h>
 #include <simavr/sim_elf.h>
 #include <simavr/sim_hex.h>
 #include <simavr/sim_io.h>
@@ -39,8 +40,32 @@ static void log_clear(void) { last_log[0] = '\0'; }
 /* ": MESSAGE" if simavr said something since log_clear, else "" (to append to an error line) */
 static const char *log_sep(void) { return last_log[0] ? ": " : ""; }
 
-/* the core's sleep callback: the host never sleeps (time is cycles, not the wall clock) */
-static void no_sleep(avr_t *avr, avr_cycle_count_t how_long) { (void)avr, (void)how_long; }
+/* The host's stop: a cycle timer that does nothing. simavr runs
+ * instructions in a batch (avr_run_one loops while the cycles left before
+ * the next cycle timer, run_cycle_count, exceed the instruction's; no
+ * interrupt pending; the core running) and ends the batch at the first
+ * instruction boundary at or past the next timer's cycle. Without this
+ * timer a batch would run past the step; with it, the AVR stops at the
+ * same boundary as running one instruction per avr_run call. */
+static avr_cycle_count_t on_stop(avr_t *avr, avr_cycle_count_t when, void *param)
+{
+    (void)avr, (void)when, (void)param;
+    return 0;
+}
+
+/* The core's sleep callback: the host never sleeps (time is cycles, not the
+ * wall clock). A sleeping core jumps to the next cycle timer; when that is
+ * the host's stop, the jump is made as long as it is without the stop (to
+ * the next other timer, or simavr's 1000 cycles when none), so a sleeping
+ * firmware wakes at the cycle it wakes at without the stop. */
+static void no_sleep(avr_t *avr, avr_cycle_count_t how_long)
+{
+    avr_cycle_timer_slot_p t = avr->cycle_timers.timer;
+    if (!t || t->timer != on_stop) return;
+    while (t && t->timer == on_stop) t = t->next;
+    avr_cycle_count_t plain = t ? t->when - avr->cycle : AVRHOST_NO_TIMER_SLEEP_CYCLES;
+    if (plain > how_long) avr->cycle += plain - how_long; /* simavr adds 1 + how_long after this call */
+}
 
 static int read_hex(avrhost_image_t *img, const char *path, int got, const uint8_t *h, char *err, size_t errn)
 {
@@ -202,12 +227,19 @@ int avrhost_uart_open(avrhost_t *h, avrhost_sink_fn *sink, void *ctx, const char
 
 int avrhost_run_to(avrhost_t *h, uint64_t until, char *err, size_t errn)
 {
-    while (h->avr->cycle < until) {
-        int state = avr_run(h->avr);
-        if (state == cpu_Done || state == cpu_Crashed)
-            return snprintf(err, errn, "AVR %s at cycle %llu%s%s", state == cpu_Crashed ? "crashed" : "halted",
-                            (unsigned long long)h->avr->cycle, log_sep(), last_log), -1;
+    avr_t *avr = h->avr;
+    if (avr->cycle >= until) return 0;
+    avr->run_cycle_limit = AVRHOST_BATCH_MAX_CYCLES; /* a reset (avr_reset) sets it back to 1 */
+    avr_cycle_timer_register(avr, until - avr->cycle, on_stop, h);
+    int state = cpu_Running;
+    while (avr->cycle < until) {
+        state = avr_run(avr);
+        if (state == cpu_Done || state == cpu_Crashed) break;
     }
+    avr_cycle_timer_cancel(avr, on_stop, h); /* still there if a sleep jumped past it */
+    if (state == cpu_Done || state == cpu_Crashed)
+        return snprintf(err, errn, "AVR %s at cycle %llu%s%s", state == cpu_Crashed ? "crashed" : "halted",
+                        (unsigned long long)avr->cycle, log_sep(), last_log), -1;
     return 0;
 }
 

@@ -21,6 +21,8 @@ struct avr_irq_t;
 struct ihex_chunk_t;
 
 #define AVRHOST_IN_MAX 4096u              /* bytes waiting for the UART's receive FIFO */
+#define AVRHOST_BATCH_MAX_CYCLES 100000u /* AVR cycles simavr may run in one avr_run call (its run_cycle_limit) */
+#define AVRHOST_NO_TIMER_SLEEP_CYCLES 1000u /* AVR cycles simavr lets a core sleep when no cycle timer is set */
 #define AVRHOST_IMAGE_MAX_BYTES (64u << 20) /* an ELF with its debug sections; a Mega's flash is 256 KiB */
 
 /* An image read from its file, not yet in a core. */
