@@ -118,6 +118,20 @@ assert b['pwm_duty']['left'] == [-60 / 255, 1.0] or abs(b['pwm_duty']['left'][0]
 print('L %d R %d (physics %d %d), %d + %d edges' % (l, r, s['left'], s['right'], el, er))
 " >"$T/e.txt" 2>&1 && ok "encoders: every edge counted at full speed ($(cat "$T/e.txt"))" || bad "encoders: $(tail -3 "$T/e.txt")"
 
+# ---- INT0/INT1 in low-level mode: the behaviour of simavr's own per-cycle check ----
+# (sim/board/extint_level.h); the console and INT0 count below are what
+# simavr's check gives (recorded with it on): EIFR's flags with interrupts on
+# and off, and INT0's ISR running again and again while D2 is low, its
+# timing folded into the last number of each INT0 line
+want_rc 1 "LevelInt runs" "$MMSIM" --board ukmarsbot --avr $SK/LevelInt.elf --robot robots/ukmarsbot.ini \
+  --maze mazes/gen-16x16-s1.txt --time-limit 1.5 --json
+js "$T/out" "
+want = 'FLAGS low 1004 on 1496 off 0 after 1497\r\nINT0 4 0 47382\r\nINT0 2513 12 31517\r\nINT0 5000 25 26800\r\nINT0 7502 37 63745\r\nINT0 10000 50 27565\r\n'
+assert j['console'] == want, (j['console'], want)
+assert j['board']['interrupts'].get('INT0') == 11894, j['board']['interrupts']
+print(want.split(chr(13))[0])
+" >"$T/l.txt" 2>&1 && ok "level-mode INT0/INT1 as simavr's own check gives them ($(cat "$T/l.txt"))" || bad "level mode: $(tail -3 "$T/l.txt")"
+
 # ---- ADC ----
 for m in open east; do
   want_rc 1 "AdcProbe on the $m maze" run $SK/AdcProbe.elf "$T/$m.txt" --time-limit 1

@@ -155,6 +155,7 @@ int avrhost_put(avrhost_t *h, avrhost_image_t *img, const char *path, const char
     }
     h->avr->frequency = f_cpu;
     h->avr->sleep = no_sleep;
+    extint_level_init(&h->lvl, h->avr);
     h->cycles_per_step = (uint64_t)llround((double)f_cpu * step_s);
     h->target = h->avr->cycle;
     return 0;

@@ -16,6 +16,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "extint_level.h"
+
 struct avr_t;
 struct avr_irq_t;
 struct ihex_chunk_t;
@@ -48,6 +50,7 @@ typedef struct {
     uint64_t bytes_in;            /* bytes handed to the UART's receiver */
     uint64_t cycles_per_step;     /* AVR cycles of one physics step */
     uint64_t target;              /* the cycle the current step runs to */
+    extint_level_t lvl;           /* INT0/INT1's low-level mode at edge-mode cost */
 } avrhost_t;
 
 /* Read and check the image at path: readable, a regular file, an AVR ELF
