@@ -132,6 +132,16 @@ assert j['board']['interrupts'].get('INT0') == 11894, j['board']['interrupts']
 print(want.split(chr(13))[0])
 " >"$T/l.txt" 2>&1 && ok "level-mode INT0/INT1 as simavr's own check gives them ($(cat "$T/l.txt"))" || bad "level mode: $(tail -3 "$T/l.txt")"
 
+# a sleeping firmware with INT0 low in level mode wakes at the cycles simavr's own check gives
+want_rc 1 "SleepLevel runs" "$MMSIM" --board ukmarsbot --avr $SK/SleepLevel.elf --robot robots/ukmarsbot.ini \
+  --maze mazes/gen-16x16-s1.txt --time-limit 1.5 --json
+js "$T/out" "
+want = 'WAKES 779 550 46121\r\nWAKES 1614 1169 60104\r\nWAKES 2182 1508 48124\r\nWAKES 2752 1848 5729\r\nWAKES 3322 2187 31815\r\n'
+assert j['console'] == want, (j['console'], want)
+assert j['board']['interrupts'] == {'INT1': 2525, 'TIMER0_OVF': 1464, 'USART_UDRE': 108}, j['board']['interrupts']
+print(want.split(chr(13))[-2].strip())
+" >"$T/l.txt" 2>&1 && ok "sleeping with level-mode INT0 as in simavr alone ($(cat "$T/l.txt"))" || bad "sleep, level mode: $(tail -3 "$T/l.txt")"
+
 # ---- ADC ----
 for m in open east; do
   want_rc 1 "AdcProbe on the $m maze" run $SK/AdcProbe.elf "$T/$m.txt" --time-limit 1

@@ -54,17 +54,18 @@ static avr_cycle_count_t on_stop(avr_t *avr, avr_cycle_count_t when, void *param
 }
 
 /* The core's sleep callback: the host never sleeps (time is cycles, not the
- * wall clock). A sleeping core jumps to the next cycle timer; when that is
- * the host's stop, the jump is made as long as it is without the stop (to
- * the next other timer, or simavr's 1000 cycles when none), so a sleeping
- * firmware wakes at the cycle it wakes at without the stop. */
+ * wall clock). A sleeping core jumps how_long cycles, to its next cycle
+ * timer; the jump is made as long as simavr makes it without the host's
+ * stop and with its own level check (extint_level.h): to the next other
+ * timer, or simavr's 1000 cycles when none, or 1 cycle while simavr's check
+ * would run, so a sleeping firmware wakes at the cycle it wakes at in
+ * simavr alone. */
 static void no_sleep(avr_t *avr, avr_cycle_count_t how_long)
 {
     avr_cycle_timer_slot_p t = avr->cycle_timers.timer;
-    if (!t || t->timer != on_stop) return;
     while (t && t->timer == on_stop) t = t->next;
-    avr_cycle_count_t plain = t ? t->when - avr->cycle : AVRHOST_NO_TIMER_SLEEP_CYCLES;
-    if (plain > how_long) avr->cycle += plain - how_long; /* simavr adds 1 + how_long after this call */
+    avr_cycle_count_t plain = extint_level_sleep(avr, t ? t->when - avr->cycle : AVRHOST_NO_TIMER_SLEEP_CYCLES);
+    avr->cycle += plain - how_long; /* modulo 2^64: a shorter jump too; simavr adds 1 + how_long after this call */
 }
 
 static int read_hex(avrhost_image_t *img, const char *path, int got, const uint8_t *h, char *err, size_t errn)

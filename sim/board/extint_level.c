@@ -12,6 +12,13 @@
 #include <simavr/sim_io.h>
 #include <simavr/sim_irq.h>
 
+/* each core's level state, found from the core by the host's sleep callback
+ * (simavr passes it the core only); simavr never frees a core, so a core's
+ * address names one state for the whole process */
+#define EXTINT_LEVEL_CORES_MAX 64
+static extint_level_t *known[EXTINT_LEVEL_CORES_MAX];
+static unsigned nknown;
+
 static int level_mode(avr_t *avr, avr_extint_t *p, int n) { return avr_regbit_get_array(avr, p->eint[n].isc, 2) == 0; }
 
 static int pin_low(avr_t *avr, const avr_extint_t *p, int n)
@@ -107,6 +114,19 @@ static void on_write(avr_t *avr, uint16_t addr, avr_irq_notify_t fn, void *param
     avr_irq_register_notify(w, fn, param);
 }
 
+avr_cycle_count_t extint_level_sleep(avr_t *avr, avr_cycle_count_t plain)
+{
+    for (unsigned i = 0; i < nknown && i < EXTINT_LEVEL_CORES_MAX; i++) {
+        extint_level_t *x = known[i];
+        if (x->avr != avr) continue;
+        after_reset(x);
+        for (int n = 0; n < EXTINT_LEVEL_MAX; n++)
+            if (x->in[n].alive && !avr_cycle_timer_status(avr, check, &x->in[n])) return 1; /* simavr's check: due next cycle */
+        return plain;
+    }
+    return plain;
+}
+
 void extint_level_init(extint_level_t *x, avr_t *avr)
 {
     memset(x, 0, sizeof *x);
@@ -116,6 +136,7 @@ void extint_level_init(extint_level_t *x, avr_t *avr)
     for (int n = 0; x->ext && n < EXTINT_LEVEL_MAX; n++)
         if (!x->ext->eint[n].port_ioctl || !x->ext->eint[n].isc[1].reg) x->ext = NULL; /* not INT0/INT1 with level mode */
     if (!x->ext) return;
+    known[nknown++ % EXTINT_LEVEL_CORES_MAX] = x;
     for (int n = 0; n < EXTINT_LEVEL_MAX; n++) {
         x->in[n] = (extint_level_in_t){ x, n, 0 };
         avr_extint_set_strict_lvl_trig(avr, (uint8_t)n, 0);

@@ -21,6 +21,8 @@
 #ifndef EXTINT_LEVEL_H
 #define EXTINT_LEVEL_H
 
+#include <stdint.h>
+
 struct avr_t;
 struct avr_extint_t;
 struct extint_level_s;
@@ -41,5 +43,9 @@ typedef struct extint_level_s {
 
 /* Take over the level check of avr's INT0/INT1 (after the image is loaded). */
 void extint_level_init(extint_level_t *x, struct avr_t *avr);
+/* The AVR cycles a sleeping avr would sleep with simavr's own check: 1
+ * while that check would run but ours sleeps (simavr's is due each
+ * cycle), else plain (the cycles to its next timer). */
+uint64_t extint_level_sleep(struct avr_t *avr, uint64_t plain);
 
 #endif
