@@ -4,7 +4,9 @@
 # Our sketches (test/arduino/board, built for the Nano with the Debian
 # Arduino core) check each part against the physics: motor PWM and
 # direction (two Timer1 modes), both encoders at full speed (every edge an
-# interrupt, the decoded count = the physics' count), the ADC (single,
+# interrupt, the decoded count = the physics' count), INT0/INT1 in
+# low-level mode (flags, a re-firing ISR, a sleeping core: what simavr's own
+# per-cycle check gives, recorded with it on), the ADC (single,
 # free-running and interrupt-driven conversions, emitters off and on, the
 # switch ladder, the battery), an auto-trigger simavr lacks; bad board files
 # and images. Then mazerunner-core (if ../shared has it): banner and RDY,
