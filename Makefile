@@ -390,7 +390,7 @@ docs-img: $(B)/mmsim $(B)/mmview
 bench: deps
 	@$(MAKE) --no-print-directory bench-run
 bench-run: $(B)/mmmaze $(B)/mmsim $(B)/bench_flood $(B)/simavr_cycles $(B)/avr/flood.elf \
-	$(B)/avr/tick0.elf $(B)/avr/tick100.elf arduino
+	$(B)/avr/tick0.elf $(B)/avr/tick100.elf arduino $(B)/clients/board/EncPollLevel.elf $(B)/clients/board/EncPollEdge.elf
 	BENCH_MAZE=$(BENCH_MAZE) bash bench/run.sh
 $(B)/simavr_cycles: bench/simavr_cycles.c | deps
 	$(CC) -O2 $< $$(pkg-config --cflags --libs simavr) -o $@

@@ -88,6 +88,28 @@ if command -v valgrind >/dev/null; then
 else
   echo "SKIP telemetry instruction counts: no valgrind"
 fi
+# The board emulation in host instructions per simulated ms (callgrind: the
+# same count every run): mazerunner-core's search (the issue-23 command, 5 s)
+# and the sketch pair that polls the encoders with INT0/INT1 in low-level
+# mode (their reset default) and in edge mode (3 s each)
+if command -v valgrind >/dev/null; then
+  board_ir() { # SECONDS IMAGE [ARGS...]: callgrind's count / simulated ms
+    local s=$1 img=$2; shift 2
+    valgrind --tool=callgrind --callgrind-out-file=/dev/null $B/mmsim --board ukmarsbot --avr "$img" --robot robots/ukmarsbot.ini \
+      --maze mazes/gen-16x16-s1.txt --time-limit "$s" --json "$@" 2>&1 >/dev/null | sed -n 's/.*Collected : //p' |
+      awk -v s="$s" '{ printf "%.3f", $1 / (s * 1000) / 1e6 }'
+  }
+  if [ -f $B/clients/mazerunner-core-uk.elf ]; then
+    mrc=$(board_ir 5 $B/clients/mazerunner-core-uk.elf --input "0.2 send=X; 0.5 switches=2; 1.0 button; 2.0 occlude=left")
+    echo "board: mazerunner-core-uk search, 5 s: $mrc M host instructions per simulated ms"
+  else
+    echo "SKIP board mazerunner-core search: no $B/clients/mazerunner-core-uk.elf (make mrc-images)"
+  fi
+  lvl=$(board_ir 3 $B/clients/board/EncPollLevel.elf); edg=$(board_ir 3 $B/clients/board/EncPollEdge.elf)
+  awk -v l="$lvl" -v e="$edg" 'BEGIN { printf "board: encoders polled, INT0/INT1 low-level mode %s M, edge mode %s M host instructions per simulated ms (%.2fx)\n", l, e, l / e }'
+else
+  echo "SKIP board instruction counts: no valgrind"
+fi
 make -s firmware-size
 # Processor in the loop: the whole mouse (make arduino) in simavr, a full
 # 16x16 contest each on the Uno and the Mega 2560 image: real-time factor

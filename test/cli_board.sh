@@ -4,7 +4,9 @@
 # Our sketches (test/arduino/board, built for the Nano with the Debian
 # Arduino core) check each part against the physics: motor PWM and
 # direction (two Timer1 modes), both encoders at full speed (every edge an
-# interrupt, the decoded count = the physics' count), the ADC (single,
+# interrupt, the decoded count = the physics' count), INT0/INT1 in
+# low-level mode (flags, a re-firing ISR, a sleeping core: what simavr's own
+# per-cycle check gives, recorded with it on), the ADC (single,
 # free-running and interrupt-driven conversions, emitters off and on, the
 # switch ladder, the battery), an auto-trigger simavr lacks; bad board files
 # and images. Then mazerunner-core (if ../shared has it): banner and RDY,
@@ -117,6 +119,30 @@ assert l > 2000 and r > 2000 and el > l + 1000, (l, r, el)
 assert b['pwm_duty']['left'] == [-60 / 255, 1.0] or abs(b['pwm_duty']['left'][0] + 60 / 255) < 1e-6, b['pwm_duty']
 print('L %d R %d (physics %d %d), %d + %d edges' % (l, r, s['left'], s['right'], el, er))
 " >"$T/e.txt" 2>&1 && ok "encoders: every edge counted at full speed ($(cat "$T/e.txt"))" || bad "encoders: $(tail -3 "$T/e.txt")"
+
+# ---- INT0/INT1 in low-level mode: the behaviour of simavr's own per-cycle check ----
+# (sim/board/extint_level.h); the console and INT0 count below are what
+# simavr's check gives (recorded with it on): EIFR's flags with interrupts on
+# and off, and INT0's ISR running again and again while D2 is low, its
+# timing folded into the last number of each INT0 line
+want_rc 1 "LevelInt runs" "$MMSIM" --board ukmarsbot --avr $SK/LevelInt.elf --robot robots/ukmarsbot.ini \
+  --maze mazes/gen-16x16-s1.txt --time-limit 1.5 --json
+js "$T/out" "
+want = 'FLAGS low 1004 on 1496 off 0 after 1497\r\nINT0 4 0 47382\r\nINT0 2513 12 31517\r\nINT0 5000 25 26800\r\nINT0 7502 37 63745\r\nINT0 10000 50 27565\r\n'
+assert j['console'] == want, (j['console'], want)
+assert j['board']['interrupts'].get('INT0') == 11894, j['board']['interrupts']
+print(want.split(chr(13))[0])
+" >"$T/l.txt" 2>&1 && ok "level-mode INT0/INT1 as simavr's own check gives them ($(cat "$T/l.txt"))" || bad "level mode: $(tail -3 "$T/l.txt")"
+
+# a sleeping firmware with INT0 low in level mode wakes at the cycles simavr's own check gives
+want_rc 1 "SleepLevel runs" "$MMSIM" --board ukmarsbot --avr $SK/SleepLevel.elf --robot robots/ukmarsbot.ini \
+  --maze mazes/gen-16x16-s1.txt --time-limit 1.5 --json
+js "$T/out" "
+want = 'WAKES 779 550 46121\r\nWAKES 1614 1169 60104\r\nWAKES 2182 1508 48124\r\nWAKES 2752 1848 5729\r\nWAKES 3322 2187 31815\r\n'
+assert j['console'] == want, (j['console'], want)
+assert j['board']['interrupts'] == {'INT1': 2525, 'TIMER0_OVF': 1464, 'USART_UDRE': 108}, j['board']['interrupts']
+print(want.split(chr(13))[-2].strip())
+" >"$T/l.txt" 2>&1 && ok "sleeping with level-mode INT0 as in simavr alone ($(cat "$T/l.txt"))" || bad "sleep, level mode: $(tail -3 "$T/l.txt")"
 
 # ---- ADC ----
 # A7 reads the battery after the board's series diode D1 (the board file's battery.diode_drop_v)

@@ -86,7 +86,7 @@ print(d['exit_reason'], c.get('cause'), c.get('pc') if sys.argv[3] == '' else c.
 
 for mode in board avr; do
   if [ $mode = board ]; then args=(--board ukmarsbot --robot robots/ukmarsbot.ini); key=board; else args=(); key=avr; fi
-  for p in recursion:stack_overflow: call:stack_overflow: jump:pc_outside_flash:0xFFE0 sleep:sleep_with_interrupts_off: \
+  for p in recursion:stack_overflow: call:stack_overflow: jump:bad_jump: sleep:sleep_with_interrupts_off: \
            wdt:watchdog_reset_loop:; do
     IFS=: read -r name cause pc <<<"$p"
     want_rc 1 "$mode $name: exit 1" "$MMSIM" --maze $MAZE "${args[@]}" --avr "$T/$name.elf" --time-limit 3 --json

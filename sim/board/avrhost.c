@@ -12,6 +12,7 @@
 #include <simavr/avr_ioport.h>
 #include <simavr/avr_uart.h>
 #include <simavr/sim_avr.h>
+#include <simavr/sim_cycle_timers.h>
 #include <simavr/sim_elf.h>
 #include <simavr/sim_hex.h>
 #include <simavr/sim_io.h>
@@ -39,8 +40,33 @@ static void log_clear(void) { last_log[0] = '\0'; }
 /* ": MESSAGE" if simavr said something since log_clear, else "" (to append to an error line) */
 static const char *log_sep(void) { return last_log[0] ? ": " : ""; }
 
-/* the core's sleep callback: the host never sleeps (time is cycles, not the wall clock) */
-static void no_sleep(avr_t *avr, avr_cycle_count_t how_long) { (void)avr, (void)how_long; }
+/* The host's stop: a cycle timer that does nothing. simavr runs
+ * instructions in a batch (avr_run_one loops while the cycles left before
+ * the next cycle timer, run_cycle_count, exceed the instruction's; no
+ * interrupt pending; the core running) and ends the batch at the first
+ * instruction boundary at or past the next timer's cycle. Without this
+ * timer a batch would run past the step; with it, the AVR stops at the
+ * same boundary as running one instruction per avr_run call. */
+static avr_cycle_count_t on_stop(avr_t *avr, avr_cycle_count_t when, void *param)
+{
+    (void)avr, (void)when, (void)param;
+    return 0;
+}
+
+/* The core's sleep callback: the host never sleeps (time is cycles, not the
+ * wall clock). A sleeping core jumps how_long cycles, to its next cycle
+ * timer; the jump is made as long as simavr makes it without the host's
+ * stop and with its own level check (extint_level.h): to the next other
+ * timer, or simavr's 1000 cycles when none, or 1 cycle while simavr's check
+ * would run, so a sleeping firmware wakes at the cycle it wakes at in
+ * simavr alone. */
+static void no_sleep(avr_t *avr, avr_cycle_count_t how_long)
+{
+    avr_cycle_timer_slot_p t = avr->cycle_timers.timer;
+    while (t && t->timer == on_stop) t = t->next;
+    avr_cycle_count_t plain = extint_level_sleep(avr, t ? t->when - avr->cycle : AVRHOST_NO_TIMER_SLEEP_CYCLES);
+    avr->cycle += plain - how_long; /* modulo 2^64: a shorter jump too; simavr adds 1 + how_long after this call */
+}
 
 static int read_hex(avrhost_image_t *img, const char *path, int got, const uint8_t *h, char *err, size_t errn)
 {
@@ -190,6 +216,7 @@ int avrhost_put(avrhost_t *h, avrhost_image_t *img, const char *path, const char
     }
     h->avr->frequency = f_cpu;
     h->avr->sleep = no_sleep;
+    extint_level_init(&h->lvl, h->avr);
     h->cycles_per_step = (uint64_t)llround((double)f_cpu * step_s);
     h->target = h->avr->cycle;
     return 0;
@@ -266,16 +293,19 @@ int avrhost_uart_open(avrhost_t *h, avrhost_sink_fn *sink, void *ctx, const char
     return 0;
 }
 
-/* The crash's cause when simavr stopped the core on its own (cpu_Done:
- * asleep with interrupts off; cpu_Crashed: a PC past the flash, before the
- * run (pc_was) or after it, or simavr's reason). */
+/* The crash's cause when simavr stopped the core on its own. cpu_Done:
+ * asleep with interrupts off. cpu_Crashed with the PC past the flash (now,
+ * or at the batch's start: pc_was) or back at 0: simavr's check for a bad
+ * jump (a PC past the program's code, or a jump to 0 after the start) has
+ * stopped it; inside a batch of instructions the jump's target is not
+ * known, so the PC is 0 then. Anything else: simavr's own reason. */
 static void crash_cause(avrhost_t *h, int state, uint32_t pc_was)
 {
     if (h->crash) return;
     h->crash_pc = h->avr->pc;
     if (state == cpu_Done) h->crash = "sleep_with_interrupts_off";
-    else if (h->avr->pc > h->avr->flashend) h->crash = "pc_outside_flash";
-    else if (pc_was > h->avr->flashend) h->crash = "pc_outside_flash", h->crash_pc = pc_was;
+    else if (h->avr->pc > h->avr->flashend || h->avr->pc == 0) h->crash = "bad_jump";
+    else if (pc_was > h->avr->flashend) h->crash = "bad_jump", h->crash_pc = pc_was;
     else h->crash = "crashed";
 }
 
@@ -298,8 +328,9 @@ static int crash_line(const avrhost_t *h, char *err, size_t errn)
     if (!strcmp(h->crash, "stack_overflow"))
         snprintf(detail, sizeof detail, " (SP 0x%04X outside SRAM 0x%04X..0x%04X)", h->crash_sp, h->avr->ioend + 1u,
                  h->avr->ramend);
-    else if (!strcmp(h->crash, "pc_outside_flash"))
-        snprintf(detail, sizeof detail, " (flash ends at 0x%04X)", h->avr->flashend);
+    else if (!strcmp(h->crash, "bad_jump"))
+        snprintf(detail, sizeof detail, " (the program counter left the program: past its code, flash ending at 0x%04X, or to 0)",
+                 h->avr->flashend);
     else if (!strcmp(h->crash, "watchdog_reset_loop"))
         snprintf(detail, sizeof detail, " (%u watchdog resets in a row)", h->wdt_in_row);
     else if (last_log[0]) snprintf(detail, sizeof detail, " (simavr: %s)", last_log);
@@ -310,17 +341,23 @@ static int crash_line(const avrhost_t *h, char *err, size_t errn)
 int avrhost_run_to(avrhost_t *h, uint64_t until, char *err, size_t errn)
 {
     if (h->crash) return crash_line(h, err, errn);
-    while (h->avr->cycle < until) {
-        uint32_t pc_was = h->avr->pc;
+    avr_t *avr = h->avr;
+    if (avr->cycle >= until) return 0;
+    avr->run_cycle_limit = AVRHOST_BATCH_MAX_CYCLES; /* a reset (avr_reset) sets it back to 1 */
+    avr_cycle_timer_register(avr, until - avr->cycle, on_stop, h);
+    while (avr->cycle < until) {
+        uint32_t pc_was = avr->pc;
         h->running = 1;
-        int state = avr_run(h->avr);
+        int state = avr_run(avr);
         h->running = 0;
         sp_check(h);
         if (h->crash || state == cpu_Done || state == cpu_Crashed) {
+            avr_cycle_timer_cancel(avr, on_stop, h);
             crash_cause(h, state, pc_was);
             return crash_line(h, err, errn);
         }
     }
+    avr_cycle_timer_cancel(avr, on_stop, h); /* still there if a sleep jumped past it */
     return 0;
 }
 

@@ -16,11 +16,15 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "extint_level.h"
+
 struct avr_t;
 struct avr_irq_t;
 struct ihex_chunk_t;
 
 #define AVRHOST_IN_MAX 4096u              /* bytes waiting for the UART's receive FIFO */
+#define AVRHOST_BATCH_MAX_CYCLES 100000u /* AVR cycles simavr may run in one avr_run call (its run_cycle_limit) */
+#define AVRHOST_NO_TIMER_SLEEP_CYCLES 1000u /* AVR cycles simavr lets a core sleep when no cycle timer is set */
 #define AVRHOST_IMAGE_MAX_BYTES (64u << 20) /* an ELF with its debug sections; a Mega's flash is 256 KiB */
 #define AVRHOST_WDT_LOOP_RESETS 8u        /* watchdog resets in a row, each within a second of the last: a reset loop */
 
@@ -59,6 +63,7 @@ typedef struct {
     const char *crash;            /* why the firmware crashed (NULL: it has not): see avrhost_run_to */
     uint32_t crash_pc;            /* the program counter then, a byte address in flash */
     uint32_t crash_sp;            /* the stack pointer then */
+    extint_level_t lvl;           /* INT0/INT1's low-level mode at edge-mode cost */
 } avrhost_t;
 
 /* Read and check the image at path: readable, a regular file, an AVR ELF
@@ -93,7 +98,8 @@ void avrhost_feed(avrhost_t *h);
 /* Run the AVR up to cycle until. 0, or -1 with "firmware crashed at cycle
  * N, PC 0xPC: CAUSE (detail)" in err and h->crash set to the cause:
  * "stack_overflow" (the stack pointer left SRAM: the run ends before the
- * next push, which simavr would write past its data array), "pc_outside_flash",
+ * next push, which simavr would write past its data array), "bad_jump" (the
+ * PC past the program's code or back to 0: simavr stops there),
  * "sleep_with_interrupts_off" (simavr's cpu_Done: nothing can wake it),
  * "watchdog_reset_loop" (AVRHOST_WDT_LOOP_RESETS in a row) or "crashed"
  * (simavr's cpu_Crashed for another reason). The core is never run again
