@@ -18,6 +18,7 @@
 #define SHT_STRTAB_TYPE 3u
 #define SHT_NOBITS_TYPE 8u
 #define SHN_LORESERVE_INDEX 0xFF00u
+#define SHF_COMPRESSED_FLAG 0x800u /* libelf would inflate the section: simavr reads such a name table as none */
 
 /* .mmcu tags (simavr's avr_mcu_section.h) and the bytes simavr reads of each */
 enum { TAG_NAME = 1, TAG_FREQUENCY = 2, TAG_VCC = 3, TAG_AVCC = 4, TAG_AREF = 5, TAG_COMMAND = 10, TAG_CONSOLE = 11,
@@ -95,6 +96,9 @@ static int check_sections(elf_t *e)
         if (type != SHT_NOBITS_TYPE && type != SHT_NULL_TYPE && !within(off, size, e->n))
             return snprintf(m, sizeof m, "section %u (%u bytes at byte %u) is not within the file (%zu bytes)", i, size,
                             off, e->n), fail(e, m);
+        if (le32(s + 8) & SHF_COMPRESSED_FLAG)
+            return snprintf(m, sizeof m, "section %u is compressed (SHF_COMPRESSED): an AVR image's sections are not", i),
+                   fail(e, m);
     }
     for (uint32_t i = 0; i < e->shnum; i++)
         if (!str_at(e, e->shstr, le32(shdr(e, i))))
