@@ -172,6 +172,8 @@ static void test_elf_sections(void **state)
     fresh(), t = find(".text"), wr32(shdr(t) + 20, (uint32_t)base_n), refused("size.elf", "is not within the file");
     fresh(), t = find(".data"), wr32(shdr(t) + 20, 0xFFFFFFFFu), refused("size-max.elf", "is not within the file");
     fresh(), t = find(".text"), wr32(shdr(t) + 4, 8), refused("nobits.elf", "section .text has no bytes in the file");
+    fresh(), t = find(".data"), wr32(shdr(t) + 4, 4), refused("rela-data.elf", "section .data is of type 4, not program bytes");
+    fresh(), t = find(".bss"), wr32(shdr(t) + 4, 11), refused("dynsym-bss.elf", "section .bss is of type 11, not NOBITS");
     /* libelf inflates a compressed section: simavr then finds no section names */
     fresh(), t = rd16(buf + 50), wr32(shdr(t) + 8, 0x4900), refused("compressed.elf", "is compressed (SHF_COMPRESSED)");
     fresh(), t = find(".symtab"), wr32(shdr(t) + 36, 0), refused("entsize.elf", "entries of 0 bytes");

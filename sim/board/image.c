@@ -14,6 +14,7 @@
 #define SYM_BYTES 16u
 #define EM_AVR_MACHINE 83u
 #define SHT_NULL_TYPE 0u
+#define SHT_PROGBITS_TYPE 1u
 #define SHT_SYMTAB_TYPE 2u
 #define SHT_STRTAB_TYPE 3u
 #define SHT_NOBITS_TYPE 8u
@@ -192,9 +193,15 @@ static int check_named(elf_t *e, uint32_t i, image_elf_t *out)
     const uint8_t *s = shdr(e, i);
     const char *name = str_at(e, e->shstr, le32(s));
     char m[200];
-    for (size_t k = 0; k < sizeof copied / sizeof copied[0]; k++)
-        if (!strcmp(name, copied[k]) && le32(s + 4) == SHT_NOBITS_TYPE)
-            return snprintf(m, sizeof m, "section %s has no bytes in the file (NOBITS)", name), fail(e, m);
+    uint32_t type = le32(s + 4);
+    for (size_t k = 0; k < sizeof copied / sizeof copied[0]; k++) {
+        if (strcmp(name, copied[k])) continue;
+        if (type == SHT_NOBITS_TYPE) return snprintf(m, sizeof m, "section %s has no bytes in the file (NOBITS)", name), fail(e, m);
+        if (type != SHT_PROGBITS_TYPE) /* libelf would convert other types' bytes, or fail and give simavr none */
+            return snprintf(m, sizeof m, "section %s is of type %u, not program bytes (PROGBITS)", name, type), fail(e, m);
+    }
+    if (!strcmp(name, ".bss") && type != SHT_NOBITS_TYPE && type != SHT_PROGBITS_TYPE)
+        return snprintf(m, sizeof m, "section .bss is of type %u, not NOBITS", type), fail(e, m);
     if (!strcmp(name, ".fuse")) {
         e->has_fuse = 1;
         if (le32(s + 20) > IMAGE_FUSE_MAX_BYTES)
