@@ -225,12 +225,14 @@ static void test_mmcu(void **state)
     assert_non_null(strstr(err, "built for a 8000000 Hz clock (.mmcu), run at 12000000 Hz"));
     mmcu_name_clock(BOARD_MCU, F_CPU_HZ), assert_int_equal(load(put("ok.elf", buf, buf_n), BOARD_MCU, 0, err, NULL), 0);
     mmcu("\x01\x04" "atme", 6), refused("unended.elf", "its MCU name does not end within its tag");
+    mmcu_name_clock("atm\nega", 0), refused("newline.elf", "its MCU name has a byte 0x0A");
     mmcu("\x01\xc8" "atmega328p", 12), refused("past.elf", "the tag at byte 0 runs past its section (12 bytes)");
     mmcu("\x00\x00\x00", 3), refused("odd.elf", "the tag at byte 2 runs past its section");
     mmcu("\x02\x02\x00\x24", 4), refused("short-clock.elf", "tag 2 has 2 bytes (simavr reads 4)");
     uint8_t traces[33 * 6];
     for (int i = 0; i < 33; i++) memcpy(traces + 6 * i, "\x0e\x04\xff\x25\x00\x00", 6);
     mmcu(traces, sizeof traces), refused("traces.elf", "more than 32 trace tags");
+    mmcu("\x0f\x05\x42\x05\x00" "PB", 7), refused("portpin.elf", "its trace name does not end within its tag");
     char tag[300];
     tag[0] = 12, tag[1] = 201, memset(tag + 2, 'v', 200), tag[202] = '\0';
     mmcu(tag, 203), refused("tracename.elf", "its trace file name is 200 characters (at most 127)");
@@ -375,7 +377,7 @@ static uint32_t rnd(uint64_t *s)
 }
 
 /* random bytes in the ELF header, the section header table, the section
- * names and the symbol table, with and without a .mmcu: each image loads
+ * names and the symbol table, and in a .mmcu's tags: each image loads
  * or is refused with one line, never a signal (its code is not run: a
  * random jump is the run path's concern, not the loader's) */
 static void test_elf_random_bytes(void **state)
@@ -389,9 +391,11 @@ static void test_elf_random_bytes(void **state)
         if (k % 2) mmcu_name_clock(BOARD_MCU, F_CPU_HZ);
         else fresh();
         uint32_t shoff = rd32(buf + 32), sym = rd32(shdr(find(".symtab")) + 16), str = rd32(shdr(rd16(buf + 50)) + 16);
-        uint32_t from[4] = { 0, shoff, str, sym }, span[4] = { 52, nsec() * 40u, 64, 256 };
+        uint32_t mm = k % 2 ? find(".mmcu") : 0;
+        uint32_t from[5] = { 0, shoff, str, sym, mm ? rd32(shdr(mm) + 16) : 0 };
+        uint32_t span[5] = { 52, nsec() * 40u, 64, 256, mm ? rd32(shdr(mm) + 20) : 0 };
         for (int i = 0; i < FUZZ_BYTES; i++) {
-            int r = (int)(rnd(&seed) % 4u);
+            int r = (int)(rnd(&seed) % (mm ? 5u : 4u));
             buf[from[r] + rnd(&seed) % span[r]] = (uint8_t)rnd(&seed);
         }
         char name[40];

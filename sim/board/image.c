@@ -22,8 +22,9 @@
 #define SHF_COMPRESSED_FLAG 0x800u /* libelf would inflate the section: simavr reads such a name table as none */
 
 /* .mmcu tags (simavr's avr_mcu_section.h) and the bytes simavr reads of each */
-enum { TAG_NAME = 1, TAG_FREQUENCY = 2, TAG_VCC = 3, TAG_AVCC = 4, TAG_AREF = 5, TAG_COMMAND = 10, TAG_CONSOLE = 11,
-       TAG_VCD_FILENAME = 12, TAG_VCD_PERIOD = 13, TAG_VCD_TRACE = 14, TAG_EXTERNAL_PULL = 17 };
+enum { TAG_NAME = 1, TAG_FREQUENCY = 2, TAG_VCC = 3, TAG_AVCC = 4, TAG_AREF = 5, TAG_LFUSE = 6, TAG_HFUSE = 7, TAG_EFUSE = 8,
+       TAG_SIGNATURE = 9, TAG_COMMAND = 10, TAG_CONSOLE = 11, TAG_VCD_FILENAME = 12, TAG_VCD_PERIOD = 13, TAG_VCD_TRACE = 14,
+       TAG_VCD_PORTPIN = 15, TAG_VCD_IRQ = 16, TAG_EXTERNAL_PULL = 17 };
 
 static uint32_t le16(const uint8_t *p) { return (uint32_t)p[0] | (uint32_t)p[1] << 8; }
 static uint32_t le32(const uint8_t *p) { return le16(p) | le16(p + 2) << 16; }
@@ -142,9 +143,11 @@ static int tag_string(const elf_t *e, const uint8_t *v, uint32_t n, uint32_t max
 static uint32_t tag_min_bytes(unsigned tag)
 {
     switch (tag) {
-    case TAG_FREQUENCY: case TAG_VCC: case TAG_AVCC: case TAG_AREF: case TAG_VCD_PERIOD: case TAG_EXTERNAL_PULL: return 4;
+    case TAG_FREQUENCY: case TAG_VCC: case TAG_AVCC: case TAG_AREF: case TAG_VCD_PERIOD: case TAG_EXTERNAL_PULL:
+    case TAG_SIGNATURE: return 4;
     case TAG_COMMAND: case TAG_CONSOLE: return 2;
-    case TAG_VCD_TRACE: return 4; /* mask, address, a name of at least its NUL */
+    case TAG_LFUSE: case TAG_HFUSE: case TAG_EFUSE: return 1;
+    case TAG_VCD_TRACE: case TAG_VCD_PORTPIN: case TAG_VCD_IRQ: return 4; /* mask, address, a name of at least its NUL */
     default: return 0;
     }
 }
@@ -157,12 +160,16 @@ static int check_tag(elf_t *e, unsigned tag, const uint8_t *v, uint32_t len, ima
                fail(e, m);
     if (tag == TAG_NAME) {
         if (tag_string(e, v, len, IMAGE_MCU_NAME_BYTES, "MCU name") != 0) return -1;
+        for (const uint8_t *c = v; *c; c++) /* the name goes into our one-line messages */
+            if (*c < 0x21 || *c > 0x7E)
+                return snprintf(m, sizeof m, ".mmcu: its MCU name has a byte 0x%02X (letters, digits and marks only)", *c),
+                       fail(e, m);
         snprintf(out->mcu, sizeof out->mcu, "%s", (const char *)v);
     } else if (tag == TAG_FREQUENCY) {
         out->f_cpu = le32(v);
     } else if (tag == TAG_VCD_FILENAME) {
         return tag_string(e, v, len, IMAGE_TRACE_NAME_BYTES, "trace file name");
-    } else if (tag == TAG_VCD_TRACE) {
+    } else if (tag == TAG_VCD_TRACE || tag == TAG_VCD_PORTPIN || tag == TAG_VCD_IRQ) { /* each takes one of simavr's trace slots */
         if (++e->traces > IMAGE_TRACES_MAX)
             return snprintf(m, sizeof m, ".mmcu: more than %d trace tags", IMAGE_TRACES_MAX), fail(e, m);
         return tag_string(e, v + 3, len - 3, len - 2, "trace name");
