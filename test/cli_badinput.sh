@@ -29,9 +29,9 @@ for f in "$T/fifo.lcmlog" /dev/zero "$T/dir.txt"; do
   want_rc 2 "mmlog $f" $G "$L" "$f"; says "mmlog $f" "not a regular file"
   want_rc 2 "mmview $f" $G "$V" "$f"; says "mmview $f" "not a regular file"
 done
-# an AVR image (--avr) the same way; an image mmsim cannot use is exit 3 (cli_pil.sh)
+# an AVR image (--avr) the same way: bad input, exit 2, as any image mmsim cannot use (cli_pil.sh)
 mkfifo "$T/fifo.elf"
-want_rc 3 "mmsim --avr FIFO" $G "$S" --maze $M --avr "$T/fifo.elf"; says "mmsim --avr FIFO" "fifo.elf: not a regular file (a FIFO)"
+want_rc 2 "mmsim --avr FIFO" $G "$S" --maze $M --avr "$T/fifo.elf"; says "mmsim --avr FIFO" "fifo.elf: not a regular file (a FIFO)"
 # a maze on a pipe through stdin is still read (bounded by the maze size limit)
 want_rc 0 "mmmaze check from a pipe" $G bash -c "cat $M | $Z check -"
 

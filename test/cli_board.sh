@@ -76,6 +76,44 @@ if avr-gcc -mmcu=atmega2560 -Os "$T/m.c" -o "$T/mega.elf" 2>/dev/null; then
 fi
 printf 'not an image\n' >"$T/x.elf"
 want_rc 2 "not an image" run "$T/x.elf" "$T/open.txt" --time-limit 1
+# image checks before simavr reads the image (sim/board/image.h; the whole corpus: test_image)
+if avr-gcc -mmcu=attiny85 -Os "$T/m.c" -o "$T/tiny.elf" 2>/dev/null; then
+  want_rc 2 "an image for the ATtiny85" run "$T/tiny.elf" "$T/open.txt" --time-limit 1
+  grep -q 'built for another MCU (AVR architecture avr25' "$T/err" && ok "  ... says so" || bad "  attiny85: $(cat "$T/err")"
+fi
+python3 - "$SK/MotorPwm.elf" "$T" <<'PY'
+import struct, sys
+b = bytearray(open(sys.argv[1], "rb").read()); T = sys.argv[2]
+shoff, = struct.unpack_from("<I", b, 32); shnum, shstr = struct.unpack_from("<HH", b, 48)
+tab, = struct.unpack_from("<I", b, shoff + shstr * 40 + 16)
+def sec(want):
+    for i in range(shnum):
+        h = shoff + i * 40; name, = struct.unpack_from("<I", b, h)
+        if b[tab + name:b.index(b"\0", tab + name)] == want: return h, name
+text, = [struct.unpack_from("<II", b, sec(n)[0] + 16) for n in (b".text",)]
+data = struct.unpack_from("<II", b, sec(b".data")[0] + 16)
+flash = bytes(b[text[0]:text[0] + text[1]] + b[data[0]:data[0] + data[1]])
+def rec(t, a, d): r = bytes([len(d), a >> 8, a & 255, t]) + d; return ":" + (r + bytes([-sum(r) & 255])).hex().upper()
+lines = [rec(0, a, flash[a:a + 16]) for a in range(0, len(flash), 16)]
+open(T + "/good.hex", "w").write("\n".join(lines + [rec(1, 0, b"")]) + "\n")
+bad = list(lines); bad[2] = bad[2][:-2] + ("00" if bad[2][-2:] != "00" else "01")
+open(T + "/sum.hex", "w").write("\n".join(bad + [rec(1, 0, b"")]) + "\n")
+open(T + "/cut.hex", "w").write("\n".join(lines[:5]) + "\n")
+# .debug_info renamed .mmcu: a VCD trace of PORTB to a file in T, its period, command and console registers
+h, name = sec(b".debug_info"); off, size = struct.unpack_from("<II", b, h + 16)
+vcd = (T + "/trace.vcd").encode() + b"\0"
+tags = bytes([12, len(vcd)]) + vcd + bytes([13, 4]) + struct.pack("<I", 1000) + bytes([14, 6, 255, 0x25, 0]) + b"PB\0"
+tags += bytes([10, 2, 0x31, 0, 11, 2, 0x32, 0])
+b[tab + name:tab + name + 6] = b".mmcu\0"; b[off:off + len(tags)] = tags; struct.pack_into("<I", b, h + 20, len(tags))
+open(T + "/vcd.elf", "wb").write(b)
+PY
+want_rc 1 "the sketch as Intel HEX runs" run "$T/good.hex" "$T/open.txt" --time-limit 1
+want_rc 2 "HEX with a bad checksum on line 3" run "$T/sum.hex" "$T/open.txt" --time-limit 1
+grep -q "^mmsim: $T/sum.hex:3: bad checksum" "$T/err" && ok "  ... FILE:LINE: bad checksum" || bad "  checksum: $(cat "$T/err")"
+want_rc 2 "HEX without its end record" run "$T/cut.hex" "$T/open.txt" --time-limit 1
+grep -q "cut.hex: no end record" "$T/err" && ok "  ... says so" || bad "  cut HEX: $(cat "$T/err")"
+want_rc 1 "an image whose .mmcu names a VCD trace runs" run "$T/vcd.elf" "$T/open.txt" --time-limit 1
+[ ! -e "$T/trace.vcd" ] && [ ! -e gtkwave_trace.vcd ] && ok "  ... and writes no trace file" || bad "  a VCD trace was written"
 want_rc 2 "ADC auto-trigger from Timer0: exit 2" run $SK/AdcTimerTrigger.elf "$T/open.txt" --time-limit 1
 grep -q 'ADC auto-trigger source 4 (timer0 overflow.*simavr 1.6 does not emulate' "$T/err" && ok "  ... one clear line" \
   || bad "  auto-trigger: $(cat "$T/err")"

@@ -170,14 +170,35 @@ print(len(re.findall(r'^mcu: IrProbe: no sample, ir 0 raw0 0$', e, re.M)), 'mcu:
 [ "$got" = "6 True 0 0" ] && ok "IrProbe, compat: no sample, all zero, no errors" || bad "IrProbe compat: $got $(grep '^mcu:' "$T/err")"
 
 # bad images and flags
-want_rc 3 "missing ELF" "$S" --maze $M --avr "$T/none.elf"
+want_rc 2 "missing ELF" "$S" --maze $M --avr "$T/none.elf"
 grep -q "none.elf: cannot read" "$T/err" && ok "missing ELF line" || bad "missing ELF line: $(cat "$T/err")"
 printf 'not an elf\n' >"$T/bad.elf"
-want_rc 3 "not an ELF" "$S" --maze $M --avr "$T/bad.elf"
-want_rc 3 "unknown MCU" "$S" --maze $M --avr "$WALL" --mcu atmega9999
+want_rc 2 "not an ELF" "$S" --maze $M --avr "$T/bad.elf"
+want_rc 2 "unknown MCU" "$S" --maze $M --avr "$WALL" --mcu atmega9999
 grep -q "does not know the MCU 'atmega9999'" "$T/err" && ok "unknown MCU line" || bad "unknown MCU line: $(cat "$T/err")"
 want_rc 2 "--mcu without --avr" "$S" --maze $M --mcu atmega328p
 want_rc 2 "--avr with --pty" "$S" --maze $M --avr "$WALL" --pty
 want_rc 2 "bad --f-cpu" "$S" --maze $M --avr "$WALL" --f-cpu fast
+want_rc 2 "--f-cpu of 100 Hz (1 to 32 MHz)" "$S" --maze $M --avr "$WALL" --f-cpu 100
+want_rc 2 "--f-cpu of 40 MHz (1 to 32 MHz)" "$S" --maze $M --avr "$WALL" --f-cpu 40e6
+# image checks before simavr reads the image (sim/board/image.h; the whole corpus: test_image)
+want_rc 2 "ATmega2560 image as --avr's default atmega328p" "$S" --maze $M --avr "$MOUSE"
+grep -q "Mouse-5x5.elf: built for another MCU (AVR architecture avr6; --avr runs an atmega328p: avr5" "$T/err" \
+  && ok "  ... says so" || bad "  2560 as 328p: $(cat "$T/err")"
+want_rc 2 "ATmega2560 image with --mcu atmega328p" "$S" --maze $M --avr "$MOUSE" --mcu atmega328p
+# .text's section name offset 0xFFFF (simavr's reader followed it out of its table)
+python3 - "$WALL" "$T/name.elf" <<'PY'
+import struct, sys
+b = bytearray(open(sys.argv[1], "rb").read())
+shoff, = struct.unpack_from("<I", b, 32); shnum, shstr = struct.unpack_from("<HH", b, 48)
+tab, = struct.unpack_from("<I", b, shoff + shstr * 40 + 16)
+for i in range(shnum):
+    name, = struct.unpack_from("<I", b, shoff + i * 40)
+    if b[tab + name:tab + name + 6] == b".text\0": struct.pack_into("<I", b, shoff + i * 40, 0xFFFF)
+open(sys.argv[2], "wb").write(b)
+PY
+want_rc 2 "a section name offset of 0xFFFF" "$S" --maze $M --avr "$T/name.elf"
+grep -q "name.elf: section [0-9]*'s name (at 0xffff) is not within the section name table" "$T/err" \
+  && ok "  ... one clear line" || bad "  name offset: $(cat "$T/err")"
 
 [ $fails -eq 0 ] || exit 1

@@ -178,7 +178,7 @@ static int f_silence(const char *prog, void *o, const char *arg)
 static int f_f_cpu(const char *prog, void *o, const char *arg)
 {
     double v;
-    if (cli_number(prog, "--f-cpu", arg, 1000, 100e6, &v)) return CLI_BAD_INPUT;
+    if (cli_number(prog, "--f-cpu", arg, 1e6, 32e6, &v)) return CLI_BAD_INPUT; /* Hz: the clocks AVRs run at */
     run_of(o)->avr_f_cpu = (uint32_t)v;
     return 0;
 }

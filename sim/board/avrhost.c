@@ -14,7 +14,6 @@
 #include <simavr/sim_avr.h>
 #include <simavr/sim_cycle_timers.h>
 #include <simavr/sim_elf.h>
-#include <simavr/sim_hex.h>
 #include <simavr/sim_io.h>
 #include <simavr/sim_irq.h>
 
@@ -68,25 +67,40 @@ static void no_sleep(avr_t *avr, avr_cycle_count_t how_long)
     avr->cycle += plain - how_long; /* modulo 2^64: a shorter jump too; simavr adds 1 + how_long after this call */
 }
 
-static int read_hex(avrhost_image_t *img, const char *path, int got, const uint8_t *h, char *err, size_t errn)
+/* e_flags' AVR architecture arch (0: none) that of the MCU want, where image_mcu_arch knows it */
+static int check_arch(const char *path, unsigned arch, const char *want, const char *board, char *err, size_t errn)
 {
-    img->hex = 1;
-    img->nchunks = got > 0 && h[0] == ':' ? read_ihex_chunks(path, &img->chunks) : -1;
-    if (img->nchunks <= 0) return snprintf(err, errn, "%s: not an Intel HEX image", path), -1;
-    return 0;
+    unsigned need = image_mcu_arch(want);
+    if (!arch || !need || arch == need) return 0;
+    if (board)
+        return snprintf(err, errn, "%s: built for another MCU (AVR architecture avr%u; the board %s has an %s: avr%u)", path,
+                        arch, board, want, need), -1;
+    return snprintf(err, errn, "%s: built for another MCU (AVR architecture avr%u; --avr runs an %s: avr%u; see --mcu)", path,
+                    arch, want, need), -1;
 }
 
-/* e_flags' low bits: the AVR architecture the image was built for (avr4: ATmega48/88, avr5: 168/328) */
-static int check_arch(const char *path, const char *want_mcu, const char *board, char *err, size_t errn)
+/* the ELF checked by our reader, its MCU matched, then read by simavr with the tags that would act dropped */
+static int read_elf(avrhost_image_t *img, const char *path, const char *want_mcu, const char *board, char *err, size_t errn)
 {
-    unsigned arch = 0, want = strstr(want_mcu, "168") || strstr(want_mcu, "328") ? 5u : 4u;
-    FILE *g = fopen(path, "rb");
-    uint8_t fl[4] = { 0 };
-    if (g && fseek(g, 36, SEEK_SET) == 0 && fread(fl, 1, 4, g) == 4) arch = fl[0] & 0x7Fu;
-    if (g) fclose(g);
-    if (arch && arch != want)
-        return snprintf(err, errn, "%s: built for another MCU (AVR architecture avr%u; the board %s has an %s: avr%u)", path,
-                        arch, board, want_mcu, want), -1;
+    image_elf_t ie;
+    if (image_check_elf(path, AVRHOST_IMAGE_MAX_BYTES, &ie, err, errn) != 0) return -1;
+    const char *want = want_mcu ? want_mcu : ie.mcu[0] ? ie.mcu : AVRHOST_DEFAULT_MCU;
+    if (check_arch(path, ie.arch, want, board, err, errn) != 0) return -1;
+    if (ie.mcu[0] && strcmp(ie.mcu, want))
+        return board ? snprintf(err, errn, "%s: built for the %s; the board %s has an %s", path, ie.mcu, board, want)
+                     : snprintf(err, errn, "%s: built for the %s; --mcu says %s", path, ie.mcu, want), -1;
+    memset(&fw, 0, sizeof fw);
+    log_clear();
+    if (elf_read_firmware(path, &fw) != 0 || fw.flashsize == 0)
+        return snprintf(err, errn, "%s: not an AVR ELF image%s%s", path, log_sep(), last_log), -1;
+    /* an image never makes the simulator write a file or take commands: no VCD trace, command or console register */
+    fw.tracename[0] = '\0';
+    fw.tracecount = 0;
+    fw.traceperiod = 0;
+    fw.command_register_addr = 0;
+    fw.console_register_addr = 0;
+    snprintf(img->mcu, sizeof img->mcu, "%s", ie.mcu);
+    img->f_cpu = ie.f_cpu;
     return 0;
 }
 
@@ -99,22 +113,16 @@ int avrhost_read(avrhost_image_t *img, const char *path, int hex_ok, const char 
     if (access(path, R_OK) != 0) return snprintf(err, errn, "%s: cannot read: %s", path, strerror(errno)), -1;
     FILE *f = infile_open(path, AVRHOST_IMAGE_MAX_BYTES, NULL, err, errn); /* a FIFO would hang the open */
     if (!f) return -1;
-    uint8_t h[20] = { 0 }; /* ELF magic and e_machine 83 = AVR: simavr prints its own errors otherwise */
+    uint8_t h[4] = { 0 }; /* the ELF magic */
     size_t got = fread(h, 1, sizeof h, f);
     fclose(f);
-    if (hex_ok && n > 4 && !strcmp(path + n - 4, ".hex")) return read_hex(img, path, (int)got, h, err, errn);
-    if (got < sizeof h || memcmp(h, "\x7f" "ELF", 4) != 0 || h[18] != 83 || h[19] != 0)
+    if (hex_ok && n > 4 && !strcmp(path + n - 4, ".hex")) {
+        img->hex = 1;
+        return image_read_hex(path, AVRHOST_IMAGE_MAX_BYTES, &img->bytes, err, errn);
+    }
+    if (got < sizeof h || memcmp(h, "\x7f" "ELF", 4) != 0)
         return snprintf(err, errn, "%s: not an AVR ELF image%s", path, hex_ok ? " (or a .hex file)" : ""), -1;
-    if (want_mcu && check_arch(path, want_mcu, board, err, errn) != 0) return -1;
-    memset(&fw, 0, sizeof fw);
-    log_clear();
-    if (elf_read_firmware(path, &fw) != 0 || fw.flashsize == 0)
-        return snprintf(err, errn, "%s: not an AVR ELF image%s%s", path, log_sep(), last_log), -1;
-    if (want_mcu && fw.mmcu[0] && strcmp(fw.mmcu, want_mcu))
-        return snprintf(err, errn, "%s: built for the %s; the board %s has an %s", path, fw.mmcu, board, want_mcu), -1;
-    snprintf(img->mcu, sizeof img->mcu, "%s", fw.mmcu);
-    img->f_cpu = fw.frequency;
-    return 0;
+    return read_elf(img, path, want_mcu, board, err, errn);
 }
 
 /* An IO module of ours in the core's list: its reset hook counts the
@@ -187,29 +195,52 @@ int avrhost_make(avrhost_t *h, const char *mcu, const char *who, char *err, size
     return watch_install(h, err, errn);
 }
 
+/* the HEX bytes our reader parsed into the core's flash, run by run */
 static int put_hex(avrhost_t *h, avrhost_image_t *img, const char *path, const char *mcu, char *err, size_t errn)
 {
+    image_hex_t *x = &img->bytes;
     int rc = 0;
-    for (int i = 0; i < img->nchunks && rc == 0; i++) {
-        if (img->chunks[i].baseaddr + img->chunks[i].size > h->avr->flashend + 1u) {
-            snprintf(err, errn, "%s: larger than the %s's flash (%u bytes)", path, mcu, h->avr->flashend + 1u);
-            rc = -1;
-        } else avr_loadcode(h->avr, img->chunks[i].data, img->chunks[i].size, img->chunks[i].baseaddr);
+    if (x->end > h->avr->flashend + 1u) {
+        snprintf(err, errn, "%s: bytes up to 0x%X: larger than the %s's flash (%u bytes)", path, x->end - 1u, mcu,
+                 h->avr->flashend + 1u);
+        rc = -1;
     }
-    free_ihex_chunks(img->chunks);
-    img->chunks = NULL;
+    for (int i = 0; i < x->nchunks && rc == 0; i++)
+        avr_loadcode(h->avr, x->flash + x->chunks[i].base, x->chunks[i].size, x->chunks[i].base);
+    image_hex_free(x);
     return rc;
+}
+
+/* the ELF's code and data within the flash, its variables within the SRAM, its .eeprom within the EEPROM */
+static int check_elf_sizes(const avrhost_t *h, const char *path, const char *mcu, char *err, size_t errn)
+{
+    const struct avr_t *avr = h->avr;
+    uint64_t code = (uint64_t)fw.flashbase + fw.flashsize, vars = (uint64_t)fw.datasize + fw.bsssize;
+    if (code > avr->flashend + 1u)
+        return snprintf(err, errn, "%s: %llu bytes of code: larger than the %s's flash (%u bytes): built for another MCU?",
+                        path, (unsigned long long)code, mcu, avr->flashend + 1u), -1;
+    if (vars > (uint64_t)avr->ramend - avr->ioend)
+        return snprintf(err, errn, "%s: %llu bytes of variables (.data and .bss): more than the %s's SRAM (%u bytes)", path,
+                        (unsigned long long)vars, mcu, avr->ramend - avr->ioend), -1;
+    if (fw.eesize > avr->e2end + 1u)
+        return snprintf(err, errn, "%s: %u bytes of .eeprom: more than the %s's EEPROM (%u bytes)", path, fw.eesize, mcu,
+                        avr->e2end + 1u), -1;
+    return 0;
 }
 
 int avrhost_put(avrhost_t *h, avrhost_image_t *img, const char *path, const char *mcu, uint32_t f_cpu, double step_s,
                 char *err, size_t errn)
 {
+    if (f_cpu < AVRHOST_F_CPU_MIN_HZ || f_cpu > AVRHOST_F_CPU_MAX_HZ || (img->f_cpu && img->f_cpu != f_cpu)) {
+        if (img->hex) image_hex_free(&img->bytes);
+        if (img->f_cpu && img->f_cpu != f_cpu)
+            return snprintf(err, errn, "%s: built for a %u Hz clock (.mmcu), run at %u Hz", path, img->f_cpu, f_cpu), -1;
+        return snprintf(err, errn, "%s: a clock of %u Hz (an AVR runs at 1 to 32 MHz)", path, f_cpu), -1;
+    }
     if (img->hex) {
         if (put_hex(h, img, path, mcu, err, errn) != 0) return -1;
     } else {
-        if (fw.flashsize > h->avr->flashend + 1u)
-            return snprintf(err, errn, "%s: %u bytes of code: larger than the %s's flash (%u bytes): built for another MCU?", path,
-                            fw.flashsize, mcu, h->avr->flashend + 1u), -1;
+        if (check_elf_sizes(h, path, mcu, err, errn) != 0) return -1;
         snprintf(fw.mmcu, sizeof fw.mmcu, "%s", mcu);
         fw.frequency = f_cpu;
         avr_load_firmware(h->avr, &fw);

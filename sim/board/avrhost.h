@@ -17,25 +17,27 @@
 #include <stdint.h>
 
 #include "extint_level.h"
+#include "image.h"
 
 struct avr_t;
 struct avr_irq_t;
-struct ihex_chunk_t;
 
 #define AVRHOST_IN_MAX 4096u              /* bytes waiting for the UART's receive FIFO */
 #define AVRHOST_BATCH_MAX_CYCLES 100000u /* AVR cycles simavr may run in one avr_run call (its run_cycle_limit) */
 #define AVRHOST_NO_TIMER_SLEEP_CYCLES 1000u /* AVR cycles simavr lets a core sleep when no cycle timer is set */
 #define AVRHOST_IMAGE_MAX_BYTES (64u << 20) /* an ELF with its debug sections; a Mega's flash is 256 KiB */
+#define AVRHOST_F_CPU_MIN_HZ 1000000u      /* the clocks an AVR is run at: 1 to 32 MHz */
+#define AVRHOST_F_CPU_MAX_HZ 32000000u
+#define AVRHOST_DEFAULT_MCU "atmega328p"  /* --avr's MCU when neither --mcu nor the image names one */
 #define AVRHOST_WDT_LOOP_RESETS 8u        /* watchdog resets in a row, each within a second of the last: a reset loop */
 
 struct avrhost_watch_t;
 
 /* An image read from its file, not yet in a core. */
 typedef struct {
-    int hex;                      /* 1: Intel HEX chunks, 0: the ELF (kept inside avrhost.c) */
-    struct ihex_chunk_t *chunks;
-    int nchunks;
-    char mcu[64];                 /* the ELF's .mmcu MCU name ("" if none or HEX) */
+    int hex;                      /* 1: Intel HEX bytes, 0: the ELF (kept inside avrhost.c) */
+    image_hex_t bytes;            /* the HEX file's bytes as our reader parsed them */
+    char mcu[IMAGE_MCU_NAME_BYTES]; /* the ELF's .mmcu MCU name ("" if none or HEX) */
     uint32_t f_cpu;               /* the ELF's .mmcu clock, Hz (0 if none or HEX) */
 } avrhost_image_t;
 
@@ -66,12 +68,15 @@ typedef struct {
     extint_level_t lvl;           /* INT0/INT1's low-level mode at edge-mode cost */
 } avrhost_t;
 
-/* Read and check the image at path: readable, a regular file, an AVR ELF
- * (or, if hex_ok and its name ends in .hex, Intel HEX). want_mcu (NULL: no
- * check) is the MCU the image must be built for: its AVR architecture
- * (ELF e_flags: avr4 for ATmega48/88, avr5 for 168/328) and its .mmcu name
- * if it has one; board names the board in those messages. 0, or -1 with
- * one line in err. Not reentrant: one ELF is held until avrhost_put. */
+/* Read and check the image at path before simavr reads it (image.h): a
+ * regular file, an AVR ELF of sound structure (or, if hex_ok and its name
+ * ends in .hex, strict Intel HEX). want_mcu is the MCU the image must be
+ * built for (NULL: --avr's, the image's .mmcu name or AVRHOST_DEFAULT_MCU):
+ * its AVR architecture (ELF e_flags, where image_mcu_arch knows the MCU)
+ * and its .mmcu name if it has one; board (NULL: --avr) names the board in
+ * those messages. The .mmcu tags that make simavr act (a VCD trace file,
+ * command and console registers) are dropped. 0, or -1 with one line in
+ * err. Not reentrant: one ELF is held until avrhost_put. */
 int avrhost_read(avrhost_image_t *img, const char *path, int hex_ok, const char *want_mcu, const char *board, char *err,
                  size_t errn);
 /* Make and initialise a core for mcu (simavr's logger installed, its own
@@ -79,8 +84,10 @@ int avrhost_read(avrhost_image_t *img, const char *path, int hex_ok, const char 
 int avrhost_make(avrhost_t *h, const char *mcu, const char *who, char *err, size_t errn);
 /* The image read by avrhost_read into h's core, clocked at f_cpu Hz, the
  * host never sleeping when the AVR sleeps; then a step is step_s seconds
- * of f_cpu cycles. Code larger than the flash is refused (HEX chunks freed
- * either way). 0, or -1 with one line in err. */
+ * of f_cpu cycles. Refused: f_cpu outside 1-32 MHz or not the clock the
+ * image declares, code beyond the flash, variables beyond the SRAM, an
+ * .eeprom beyond the EEPROM (HEX bytes freed either way). 0, or -1 with
+ * one line in err. */
 int avrhost_put(avrhost_t *h, avrhost_image_t *img, const char *path, const char *mcu, uint32_t f_cpu, double step_s,
                 char *err, size_t errn);
 /* UART0's bytes to sink(ctx, byte); who (NULL: none) prefixes the error

@@ -31,11 +31,11 @@ int pil_open(pil_t *p, const char *elf, const char *mcu, uint32_t f_cpu, double 
     memset(p, 0, sizeof *p);
     p->fd = -1;
     avrhost_image_t img;
-    if (avrhost_read(&img, elf, 0, NULL, NULL, err, errn) != 0) return -1;
-    snprintf(p->mcu, sizeof p->mcu, "%s", mcu ? mcu : img.mcu[0] ? img.mcu : "atmega328p");
+    if (avrhost_read(&img, elf, 0, mcu, NULL, err, errn) != 0) return -2;
+    snprintf(p->mcu, sizeof p->mcu, "%s", mcu ? mcu : img.mcu[0] ? img.mcu : AVRHOST_DEFAULT_MCU);
     p->f_cpu = f_cpu ? f_cpu : img.f_cpu ? img.f_cpu : 16000000u;
-    if (avrhost_make(&p->host, p->mcu, elf, err, errn) != 0) return -1;
-    if (avrhost_put(&p->host, &img, elf, p->mcu, p->f_cpu, step_s, err, errn) != 0) return open_fail(p);
+    if (avrhost_make(&p->host, p->mcu, elf, err, errn) != 0) return -2;
+    if (avrhost_put(&p->host, &img, elf, p->mcu, p->f_cpu, step_s, err, errn) != 0) return open_fail(p), -2;
     avr_t *avr = p->host.avr;
     for (uint32_t a = avr->ioend + 1u; a <= avr->ramend; a++) avr->data[a] = PIL_PAINT; /* for pil_stack */
     if (avrhost_uart_open(&p->host, to_link, p, elf, err, errn) != 0) return open_fail(p);

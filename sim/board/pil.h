@@ -26,8 +26,10 @@ typedef struct {
 } pil_t;
 
 /* Load elf into simavr. mcu / f_cpu: NULL / 0 = the ELF's .mmcu section,
- * else atmega328p / 16 MHz. On success *link_fd is the simulator's end of
- * the serial line (for link_open_fd) and 0 is returned; else -1 and a
+ * else atmega328p / 16 MHz; the image is checked first (avrhost_read,
+ * image.h). On success *link_fd is the simulator's end of the serial line
+ * (for link_open_fd) and 0 is returned; else -2 (bad input: the image, its
+ * MCU or clock) or -1 (the host could not make the serial line), and a
  * one-line message in err. */
 int pil_open(pil_t *p, const char *elf, const char *mcu, uint32_t f_cpu, double step_s, int *link_fd, char *err,
              size_t errn);

@@ -171,9 +171,10 @@ static int avr_open(run_t *r, void **self)
     char err[400];
     int fd;
     link_run_t *l = new_self(self);
-    if (pil_open(&l->pil, r->o->avr_elf, r->o->avr_mcu, r->o->avr_f_cpu, r->cfg.sim.step_s, &fd, err, sizeof err) != 0) {
+    int rc = pil_open(&l->pil, r->o->avr_elf, r->o->avr_mcu, r->o->avr_f_cpu, r->cfg.sim.step_s, &fd, err, sizeof err);
+    if (rc != 0) {
         fprintf(stderr, "mmsim: %s\n", err);
-        return RUN_EXTERNAL;
+        return rc == -2 ? RUN_BAD_INPUT : RUN_EXTERNAL;
     }
     link_opts_t lo = link_opts(r);
     link_open_fd(&l->lnk, fd, "simavr UART0", &lo, r->cfg.sim.step_s, tof_range_mm(r), counts_x100(r),
