@@ -308,6 +308,11 @@ $(B)/clients/board/%.elf: test/arduino/board/%.ino $(NANO_CORE)
 	@mkdir -p $(dir $@)
 	avr-g++ $(ARD_nano) $(ARD_BASE) $(ARD_CXX) -Wall -x c++ -include Arduino.h -c $< -o $@.o
 	avr-gcc $(ARD_nano) -Os -Wl,--gc-sections $@.o $(NANO_CORE) -lm -o $@
+# EncPoll with INT0/INT1 in edge mode: the other half of the benchmark pair (bench/run.sh)
+$(B)/clients/board/EncPollEdge.elf: test/arduino/board/EncPoll.ino $(NANO_CORE)
+	@mkdir -p $(dir $@)
+	avr-g++ $(ARD_nano) $(ARD_BASE) $(ARD_CXX) -DENCPOLL_EDGE -Wall -x c++ -include Arduino.h -c $< -o $@.o
+	avr-gcc $(ARD_nano) -Os -Wl,--gc-sections $@.o $(NANO_CORE) -lm -o $@
 $(B)/clients/mazerunner-core.elf: $(MRC_FILES) $(NANO_CORE)
 	$(call MRC_BUILD,$(MRC_SRC),$@)
 $(B)/clients/mazerunner-core-uk/mazerunner-core/config.h: $(MRC_FILES)
@@ -390,7 +395,7 @@ docs-img: $(B)/mmsim $(B)/mmview
 bench: deps
 	@$(MAKE) --no-print-directory bench-run
 bench-run: $(B)/mmmaze $(B)/mmsim $(B)/bench_flood $(B)/simavr_cycles $(B)/avr/flood.elf \
-	$(B)/avr/tick0.elf $(B)/avr/tick100.elf arduino $(B)/clients/board/EncPollLevel.elf $(B)/clients/board/EncPollEdge.elf
+	$(B)/avr/tick0.elf $(B)/avr/tick100.elf arduino $(B)/clients/board/EncPoll.elf $(B)/clients/board/EncPollEdge.elf
 	BENCH_MAZE=$(BENCH_MAZE) bash bench/run.sh
 $(B)/simavr_cycles: bench/simavr_cycles.c | deps
 	$(CC) -O2 $< $$(pkg-config --cflags --libs simavr) -o $@

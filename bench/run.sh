@@ -105,7 +105,7 @@ if command -v valgrind >/dev/null; then
   else
     echo "SKIP board mazerunner-core search: no $B/clients/mazerunner-core-uk.elf (make mrc-images)"
   fi
-  lvl=$(board_ir 3 $B/clients/board/EncPollLevel.elf); edg=$(board_ir 3 $B/clients/board/EncPollEdge.elf)
+  lvl=$(board_ir 3 $B/clients/board/EncPoll.elf); edg=$(board_ir 3 $B/clients/board/EncPollEdge.elf)
   awk -v l="$lvl" -v e="$edg" 'BEGIN { printf "board: encoders polled, INT0/INT1 low-level mode %s M, edge mode %s M host instructions per simulated ms (%.2fx)\n", l, e, l / e }'
 else
   echo "SKIP board instruction counts: no valgrind"

@@ -1,12 +1,17 @@
-// EncPollEdge - a benchmark sketch for the board emulation (bench/run.sh,
+// EncPoll - a benchmark sketch for the board emulation (bench/run.sh,
 // docs/BENCHMARKS.md), built for the Nano: drives both motors forward and
 // back at 120/255 (1 s each way, 2 s in all) and counts the encoders' edges
 // by reading D2..D5 in loop(), as many example sketches do, printing
-// "EDGES L R" once a second. INT0/INT1 are set to "any change" (EICRA),
-// not enabled in EIMSK: the edge-mode half of the pair with
-// EncPollLevel.ino, which leaves them in their reset low-level mode.
+// "EDGES L R" once a second. INT0/INT1 are left as reset leaves them
+// (EICRA = 0: low level, not enabled in EIMSK); built with -DENCPOLL_EDGE
+// (EncPollEdge.elf, the Makefile) they are set to "any change" instead: the
+// pair measures what the level mode costs the simulator.
 const uint8_t L_DIR = 7, R_DIR = 8, L_PWM = 9, R_PWM = 10;
+#ifdef ENCPOLL_EDGE
 const bool EDGE_MODE = true;
+#else
+const bool EDGE_MODE = false;
+#endif
 long edges_l, edges_r;
 uint8_t last_l, last_r;
 unsigned long t0_ms, last_print_ms;
