@@ -132,6 +132,7 @@ int avrhost_read(avrhost_image_t *img, const char *path, int hex_ok, const char 
 struct avrhost_watch_t {
     avr_io_t io;
     avrhost_t *h;
+    uint8_t sph_bad[256]; /* per SPH value: the stack outside SRAM (see on_sph) */
 };
 
 static void on_reset(avr_io_t *io)
@@ -152,24 +153,34 @@ static void on_reset(avr_io_t *io)
     }
 }
 
-/* SPH written through simavr's IO write hooks (the firmware's out and sts:
- * it writes SPH, then SPL; pushes and calls move SP without the hook, for
- * those see sp_check): the stack pointer checked against SRAM before the
- * next instruction can push. Where SRAM starts on a 256-byte boundary
- * (ATmega88/168/328/2560) the new SPH decides alone; elsewhere only a high
- * byte that no low byte can make valid counts (between the two writes SP
- * holds the new SPH with the old SPL). */
+/* SPH written through simavr's IO write hooks: the firmware's out and sts,
+ * and every push, pop, call and return (simavr sets SP through the same
+ * path): the stack pointer checked against SRAM before the next
+ * instruction can push. The check is a table by SPH value (sph_guard), as
+ * this runs a few million times a simulated second. */
 static void on_sph(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param)
 {
     avrhost_t *h = param;
     avr->data[addr] = v;
-    uint32_t lo = avr->ioend + 1u, hi = avr->ramend, sp = (uint32_t)v << 8 | avr->data[R_SPL];
-    int low = (lo & 0xFFu) == 0 ? sp < lo : ((uint32_t)v << 8 | 0xFFu) < lo;
-    if ((low || ((uint32_t)v << 8) > hi) && !h->crash) {
+    if (h->watch->sph_bad[v] && !h->crash) {
         h->crash = "stack_overflow";
         h->crash_pc = avr->pc;
-        h->crash_sp = sp;
+        h->crash_sp = (uint32_t)v << 8 | avr->data[R_SPL];
         avr->state = cpu_Crashed; /* avr_run returns after this instruction */
+    }
+}
+
+/* Which SPH values put the stack outside SRAM. Where SRAM starts on a
+ * 256-byte boundary (ATmega88/168/328/2560) the high byte decides alone;
+ * elsewhere only a high byte that no low byte can make valid counts
+ * (between the two writes of an out pair SP holds the new SPH with the old
+ * SPL). */
+static void sph_guard(avrhost_t *h)
+{
+    uint32_t lo = h->avr->ioend + 1u, hi = h->avr->ramend;
+    for (uint32_t v = 0; v < 256; v++) {
+        int low = (lo & 0xFFu) == 0 ? (v << 8) < lo : ((v << 8) | 0xFFu) < lo;
+        h->watch->sph_bad[v] = low || (v << 8) > hi;
     }
 }
 
@@ -181,6 +192,7 @@ static int watch_install(avrhost_t *h, char *err, size_t errn)
     h->watch->io.kind = "mmsim-watch";
     h->watch->io.reset = on_reset;
     avr_register_io(h->avr, &h->watch->io);
+    sph_guard(h);
     avr_register_io_write(h->avr, R_SPH, on_sph, h);
     return 0;
 }
@@ -340,9 +352,10 @@ static void crash_cause(avrhost_t *h, int state, uint32_t pc_was)
     else h->crash = "crashed";
 }
 
-/* The stack pointer outside SRAM after a run: pushes and calls move it
- * without the SPH hook (simavr writes it directly); the next push would
- * write into the IO registers, then past simavr's data array. */
+/* The stack pointer outside SRAM after a run, whole: where SRAM does not
+ * start on a 256-byte boundary the SPH hook lets pass a high byte that
+ * only some low bytes make valid; the next push would write into the IO
+ * registers, then past simavr's data array. */
 static void sp_check(avrhost_t *h)
 {
     const avr_t *avr = h->avr;

@@ -1,5 +1,6 @@
 /* world.c - ODE scene and robot (see world.h). */
 #include "world.h"
+#include "wallgrid.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -27,6 +28,10 @@ struct world {
     dJointID hinge[2];
     dJointID friction[2];  /* the gearbox's stiction on each wheel (an angular motor, target speed 0) */
     dJointID lift, lock[2]; /* world_lift: chassis held above the floor, wheels locked */
+    dGeomID *wall;          /* the maze's boxes (posts and walls), by wallgrid id */
+    double (*wall_bounds)[4]; /* their floor bounds: min x, max x, min y, max y, m */
+    int nwalls;
+    wallgrid_t *grid;       /* the boxes by cell, for rays */
     double box_offset[3];  /* chassis box centre in the chassis body frame */
     double com[3];         /* chassis centre of mass in the robot frame (world_place) */
     int touching, touched_last;
@@ -44,12 +49,21 @@ static dGeomID static_box(world_t *w, double x, double y, double lx, double ly)
     dGeomSetPosition(g, x, y, h / 2);
     dGeomSetCategoryBits(g, CAT_STATIC);
     dGeomSetCollideBits(g, CAT_ROBOT | CAT_RAY | CAT_WHEEL_SIDE);
+    double *b = w->wall_bounds[w->nwalls];
+    b[0] = x - lx / 2, b[1] = x + lx / 2, b[2] = y - ly / 2, b[3] = y + ly / 2;
+    w->wall[w->nwalls++] = g;
     return g;
 }
 
-static void build_maze(world_t *w, const maze_t *m)
+/* The maze's boxes, each filed in the cells it lies in (wallgrid). -1 when
+ * out of memory. */
+static int build_maze(world_t *w, const maze_t *m)
 {
     const simcfg_t *cf = w->model->cfg;
+    size_t most = (size_t)(m->width + 1) * (size_t)(m->height + 1) * 3u; /* posts, and two walls a post at most */
+    w->wall = malloc(sizeof *w->wall * most);
+    w->wall_bounds = malloc(sizeof *w->wall_bounds * most);
+    if (!w->wall || !w->wall_bounds) return -1;
     double cell = cf->world.cell_m, post = cf->world.post_m, thick = cf->world.wall_thick_m;
     int cx = m->width % 2 == 0 ? m->width / 2 : -1, cy = m->height % 2 == 0 ? m->height / 2 : -1;
     for (int py = 0; py <= m->height; py++)
@@ -68,6 +82,8 @@ static void build_maze(world_t *w, const maze_t *m)
             if (x == m->width - 1 && !maze_passable(m, c, MAZE_EAST, 0))
                 static_box(w, (x + 1) * cell, (y + 0.5) * cell, thick, cell - post);
         }
+    w->grid = wallgrid_build(cell, m->width, m->height, w->nwalls, (const double (*)[4])w->wall_bounds);
+    return w->grid ? 0 : -1;
 }
 
 /* Robot-frame point -> world point for a robot at (x, y) facing heading. */
@@ -280,7 +296,10 @@ world_t *world_create(const sim_model_t *model, const maze_t *m, double x_m, dou
     dGeomSetCategoryBits(w->floor, CAT_FLOOR);
     dGeomSetCollideBits(w->floor, CAT_ROBOT | CAT_TYRE);
     w->contacts = dJointGroupCreate(0);
-    build_maze(w, m);
+    if (build_maze(w, m) != 0) {
+        world_destroy(w);
+        return NULL;
+    }
     build_robot(w, x_m, y_m, heading_rad);
     w->ray = dCreateRay(0, 1.0);
     dGeomSetCategoryBits(w->ray, CAT_RAY);
@@ -293,7 +312,10 @@ world_t *world_create(const sim_model_t *model, const maze_t *m, double x_m, dou
 void world_destroy(world_t *w)
 {
     if (!w) return;
-    dGeomDestroy(w->ray);
+    if (w->ray) dGeomDestroy(w->ray);
+    wallgrid_free(w->grid);
+    free(w->wall);
+    free(w->wall_bounds);
     dJointGroupDestroy(w->contacts);
     dSpaceDestroy(w->top); /* and every geom in it */
     dWorldDestroy(w->world);
@@ -504,32 +526,35 @@ double world_wheel_floor_gap(const world_t *w, int side)
 double world_wheel_angle(const world_t *w, int side) { return dJointGetHingeAngle(w->hinge[side]); }
 double world_wheel_rate(const world_t *w, int side) { return dJointGetHingeAngleRate(w->hinge[side]); }
 
-/* world_ray_normal: the nearest hit of one ray and its surface normal. */
+/* world_ray_normal: the nearest hit of one ray and its surface normal,
+ * the ray tested exactly (ODE's ray-box) against the boxes along its path
+ * (wallgrid). */
 typedef struct {
-    double best, normal[3];
+    world_t *w;
+    double best, normal[3], max_m;
 } ray_hit_t;
 
-static void ray_normal_cb(void *data, dGeomID a, dGeomID b)
+static double ray_box(void *data, int id)
 {
     ray_hit_t *h = data;
-    if (dGeomIsSpace(a) || dGeomIsSpace(b)) {
-        dSpaceCollide2(a, b, data, ray_normal_cb);
-        return;
-    }
+    dGeomID g = h->w->wall[id];
     dContactGeom cg;
-    if (dCollide(a, b, 1, &cg, sizeof cg) != 1 || (h->best >= 0 && cg.depth >= h->best)) return;
-    h->best = cg.depth;
-    for (int k = 0; k < 3; k++) h->normal[k] = cg.normal[k];
+    if (dGeomIsEnabled(g) && dCollide(h->w->ray, g, 1, &cg, sizeof cg) == 1 && (h->best < 0 || cg.depth < h->best)) {
+        h->best = cg.depth;
+        for (int k = 0; k < 3; k++) h->normal[k] = cg.normal[k];
+    }
+    return h->best < 0 ? INFINITY : h->best / h->max_m;
 }
 
 double world_ray_normal(world_t *w, const double pos_m[3], const double dir[3], double max_m, double normal[3])
 {
     double n = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
     double u[3] = { dir[0] / n, dir[1] / n, dir[2] / n };
-    ray_hit_t h = { -1, { 0, 0, 0 } };
+    ray_hit_t h = { w, -1, { 0, 0, 0 }, max_m };
     dGeomRaySetLength(w->ray, max_m);
     dGeomRaySet(w->ray, pos_m[0], pos_m[1], pos_m[2], u[0], u[1], u[2]);
-    dSpaceCollide2(w->ray, (dGeomID)w->statics, &h, ray_normal_cb);
+    const double p[2] = { pos_m[0], pos_m[1] }, d[2] = { u[0] * max_m, u[1] * max_m };
+    wallgrid_ray(w->grid, p, d, ray_box, &h);
     /* ODE's sign depends on the order of the pair: face the ray */
     double s = h.normal[0] * u[0] + h.normal[1] * u[1] + h.normal[2] * u[2] > 0 ? -1.0 : 1.0;
     for (int k = 0; k < 3; k++) normal[k] = s * h.normal[k];
