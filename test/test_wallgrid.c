@@ -4,7 +4,9 @@
  * maze, along cell edges, through post centres, straight up), every box
  * the segment truly meets (an exact slab test over all boxes) is visited,
  * each box at most once; and when the caller reports its nearest hit, the
- * walk that stops early still finds the nearest box of all. */
+ * walk that stops early still finds the nearest box of all; and the
+ * rectangle query that lets a robot far from every wall skip the maze's
+ * collision tree answers as a test of every box would. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -152,11 +154,40 @@ static void test_early_stop_keeps_nearest(void **state)
     wallgrid_free(g);
 }
 
+/* wallgrid_any: true whenever a box truly overlaps the rectangle, false
+ * when every box is more than a micrometre away. */
+static void test_any_overlap(void **state)
+{
+    (void)state;
+    layout();
+    wallgrid_t *g = wallgrid_build(CELL_M, SIDE, SIDE, nbox, (const double (*)[4])box);
+    assert_non_null(g);
+    int near = 0, clear = 0;
+    for (int r = 0; r < RAYS; r++) {
+        double span = (SIDE + 2) * CELL_M, x = uniform() * span - CELL_M, y = uniform() * span - CELL_M;
+        double w = uniform() * 0.12, h = uniform() * 0.12;
+        const double rect[4] = { x, x + w, y, y + h };
+        int hit = 0, close = 0;
+        for (int i = 0; i < nbox; i++) {
+            hit |= box[i][0] <= rect[1] && rect[0] <= box[i][1] && box[i][2] <= rect[3] && rect[2] <= box[i][3];
+            close |= box[i][0] - 1e-6 <= rect[1] && rect[0] <= box[i][1] + 1e-6 && box[i][2] - 1e-6 <= rect[3] &&
+                     rect[2] <= box[i][3] + 1e-6;
+        }
+        int any = wallgrid_any(g, rect);
+        if (hit && !any) fail_msg("rect %d: a box overlaps, wallgrid_any says none", r);
+        if (!close && any) fail_msg("rect %d: no box near, wallgrid_any says one", r);
+        near += any, clear += !any;
+    }
+    assert_true(near > 0 && clear > 0);
+    wallgrid_free(g);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_no_box_missed),
         cmocka_unit_test(test_early_stop_keeps_nearest),
+        cmocka_unit_test(test_any_overlap),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

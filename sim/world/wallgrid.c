@@ -164,3 +164,19 @@ void wallgrid_ray(wallgrid_t *g, const double p[2], const double d[2], wallgrid_
         best = visit_cell(g, ix, iy, &s, visit, ctx, best);
     }
 }
+
+int wallgrid_any(const wallgrid_t *g, const double r[4])
+{
+    if (!(r[0] <= r[1] && r[2] <= r[3])) return 1; /* not finite or empty: let the caller's full test decide */
+    int c[4];
+    span(g, r, c);
+    for (int y = c[2]; y <= c[3]; y++)
+        for (int x = c[0]; x <= c[1]; x++) {
+            int k = y * g->nx + x;
+            for (int j = g->start[k]; j < g->start[k + 1]; j++) {
+                const double *b = g->bound[g->id[j]];
+                if (b[0] <= r[1] && r[0] <= b[1] && b[2] <= r[3] && r[2] <= b[3]) return 1;
+            }
+        }
+    return 0;
+}

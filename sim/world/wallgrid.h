@@ -28,4 +28,8 @@ typedef double (*wallgrid_visit_fn)(void *ctx, int id);
  * walk ends once the nearest hit lies in the cells walked. */
 void wallgrid_ray(wallgrid_t *g, const double p[2], const double d[2], wallgrid_visit_fn visit, void *ctx);
 
+/* Whether any box's floor bounds (grown as above) overlap the rectangle
+ * r = { min x, max x, min y, max y }, m. */
+int wallgrid_any(const wallgrid_t *g, const double r[4]);
+
 #endif
