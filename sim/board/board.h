@@ -118,7 +118,8 @@ const char *board_vector_name(const board_t *b, unsigned vector);
 /* The image (ELF, or Intel HEX by its .hex name) on the board, driving s
  * (its motors, read from its wheels, IR sensors and battery). step_s: the
  * physics step. NULL with one line in err: an unreadable image, one for
- * another MCU, a robot whose IR channel the board lacks. */
+ * another MCU, a robot whose IR channel the board lacks, a board whose
+ * emitters and the robot's IR sensors do not match (board_fits_robot). */
 board_t *board_open(const board_spec_t *spec, const char *image, sim_state_t *s, char *err, size_t errn);
 /* One physics step of AVR time (call after sim_step): encoder edges at
  * their cycles, ADC conversions as the firmware starts them, then the
