@@ -99,6 +99,7 @@ board_t *board_open(const board_spec_t *spec, const char *image, sim_state_t *s,
     if (!b) return snprintf(err, errn, "out of memory"), NULL;
     b->spec = *spec;
     b->sim = s;
+    if (board_fits_robot(spec, s->model->cfg, err, errn) != 0) return free(b), NULL; /* no core made yet */
     avrhost_image_t img;
     if (avrhost_make(&b->host, spec->mcu, spec->path, err, errn) != 0) return open_fail(b);
     if (avrhost_read(&img, image, 1, spec->mcu, spec->name, err, errn) != 0 ||

@@ -67,6 +67,8 @@ typedef struct {
     int nemitters;
     board_pin_t emitter_pin[SIM_EMITTER_GROUPS];
     int emitter_group[SIM_EMITTER_GROUPS];
+    char emitter_name[SIM_EMITTER_GROUPS][16]; /* [emitter.NAME] */
+    int emitter_line[SIM_EMITTER_GROUPS];      /* its section's line */
     /* LEDs, [led.NAME] */
     int nleds;
     board_pin_t led_pin[BOARD_LEDS_MAX];
@@ -98,19 +100,26 @@ typedef struct {
 
 typedef struct board_s board_t;
 
-/* NAME (boards/NAME-*.ini: the first in sorted order) or a path into out.
+/* NAME (boards/NAME-VERSION.ini, VERSION without '-': the first in sorted
+ * order) or a path into out.
  * 0, or -1 with one line in err. */
 int board_find(const char *name, char *out, size_t outn, char *err, size_t errn);
 /* Read a board file. 0, or -1 with one line "FILE:LINE: section.key:
  * reason" (or "FILE: section.key: missing") in err. */
 int board_load(board_spec_t *spec, const char *path, char *err, size_t errn);
+/* 0 if the board's emitters and the robot's IR sensors match: each [ir.*]
+ * emitter group lit by an emitter pin, each emitter's group lighting a
+ * sensor of the robot. Else -1 with one line in err ("BOARD:LINE:
+ * emitter.NAME.group ..." or "ROBOT:LINE: ir.NAME.emitter ..."). */
+int board_fits_robot(const board_spec_t *spec, const simcfg_t *c, char *err, size_t errn);
 /* The vector name of the spec's MCU ("INT0", "ADC", ...; NULL: unnamed). */
 const char *board_vector_name(const board_t *b, unsigned vector);
 
 /* The image (ELF, or Intel HEX by its .hex name) on the board, driving s
  * (its motors, read from its wheels, IR sensors and battery). step_s: the
  * physics step. NULL with one line in err: an unreadable image, one for
- * another MCU, a robot whose IR channel the board lacks. */
+ * another MCU, a robot whose IR channel the board lacks, a board whose
+ * emitters and the robot's IR sensors do not match (board_fits_robot). */
 board_t *board_open(const board_spec_t *spec, const char *image, sim_state_t *s, char *err, size_t errn);
 /* One physics step of AVR time (call after sim_step): encoder edges at
  * their cycles, ADC conversions as the firmware starts them, then the

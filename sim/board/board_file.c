@@ -14,6 +14,8 @@
 
 #include "world/inifile.h"
 #include "world/keytab.h"
+#include "world/robot.h"
+#include "world/sensors/ir.h"
 #include "io/datadir.h"
 
 /* "D7", "A0" (Arduino Nano names) or "PB1" into a board_pin_t */
@@ -206,6 +208,8 @@ static int missing(bload_t *l)
             return fail(l, p->line, "emitter.%s.%s: missing", p->name, k->key);
         sp->emitter_pin[i] = p->pin;
         sp->emitter_group[i] = p->group;
+        snprintf(sp->emitter_name[i], sizeof sp->emitter_name[i], "%s", p->name);
+        sp->emitter_line[i] = p->line;
     }
     for (int i = 0; i < l->nleds; i++) {
         part_t *p = &l->led[i];
@@ -291,9 +295,37 @@ int board_load(board_spec_t *spec, const char *path, char *err, size_t errn)
     return rc;
 }
 
+int board_fits_robot(const board_spec_t *sp, const simcfg_t *c, char *err, size_t errn)
+{
+    int lights[SIM_EMITTER_GROUPS] = { 0 }; /* the robot's IR sensors per emitter group */
+    for (unsigned i = 0, n = robot_count(c, "ir"); i < n; i++) {
+        int k = robot_part_of_kind(c, "ir", i), e = 0;
+        const robot_part_t *p = &c->robot.part[k];
+        int g = (int)((const ir_part_spec_t *)(const void *)p->spec)->emitter;
+        while (e < sp->nemitters && sp->emitter_group[e] != g) e++;
+        if (e == sp->nemitters) {
+            snprintf(err, errn, "%s:%d: ir.%s.emitter %d: the board %s (%s) has no emitter pin for group %d: this robot's sensors "
+                     "are not on that board (docs/ROBOTS.md: which robot file fits which board)", c->robot.path, p->line, p->name, g,
+                     sp->name, sp->path, g);
+            return -1;
+        }
+        lights[g]++;
+    }
+    for (int e = 0; e < sp->nemitters; e++)
+        if (!lights[sp->emitter_group[e]]) {
+            snprintf(err, errn, "%s:%d: emitter.%s.group %d: the robot %s has no [ir.*] sensor with emitter = %d: the board's "
+                     "sensors are not on this robot (docs/ROBOTS.md: which robot file fits which board)", sp->path,
+                     sp->emitter_line[e], sp->emitter_name[e], sp->emitter_group[e], c->robot.path, sp->emitter_group[e]);
+            return -1;
+        }
+    return 0;
+}
+
 static int cmp_str(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
 
-/* The board file NAME-*.ini in dir/boards that sorts first into best, or "". */
+/* The board file NAME-VERSION.ini in dir/boards that sorts first into best,
+ * or "". VERSION has no '-': boards/ukmarsbot-basic-v1.3.ini is the board
+ * ukmarsbot-basic's, never --board ukmarsbot's. */
 static void find_in(const char *dir, const char *name, char *best, size_t bestn)
 {
     char path[DATADIR_PATH_MAX + 8];
@@ -304,7 +336,8 @@ static void find_in(const char *dir, const char *name, char *best, size_t bestn)
     struct dirent *e;
     while (d && (e = readdir(d)) != NULL) {
         size_t k = strlen(e->d_name);
-        if (strncmp(e->d_name, name, n) || e->d_name[n] != '-' || k < 5 || strcmp(e->d_name + k - 4, ".ini")) continue;
+        if (strncmp(e->d_name, name, n) || e->d_name[n] != '-' || k < n + 6 || strcmp(e->d_name + k - 4, ".ini")) continue;
+        if (memchr(e->d_name + n + 1, '-', k - 4 - (n + 1))) continue; /* a longer NAME's board */
         const char *c = e->d_name;
         if (!best[0] || cmp_str(&c, &(const char *){ best }) < 0) snprintf(best, bestn, "%s", e->d_name);
     }
