@@ -21,12 +21,14 @@ static void test_parse_and_order(void **state)
         input_kind_t k;
         int v;
     } want[] = { { 0.2, INPUT_SEND, 0 }, { 0.5, INPUT_SWITCHES, 2 }, { 0.9, INPUT_RESET, 0 }, { 1.0, INPUT_BUTTON_DOWN, 0 },
-                 { 1.1, INPUT_BUTTON_UP, 0 }, { 2.0, INPUT_OCCLUDE, 0 }, { 3.0, INPUT_END, 0 } };
+                 { 1.1, INPUT_BUTTON_UP, 0 }, { 2.0, INPUT_OCCLUDE, -1 }, { 3.0, INPUT_END, 0 } };
     assert_int_equal(in.n, 7);
     for (int i = 0; i < 7; i++) {
         assert_true(fabs(in.a[i].t_s - want[i].t) < 1e-12 && in.a[i].kind == want[i].k && in.a[i].value == want[i].v);
     }
     assert_string_equal(in.a[0].text, "X");
+    assert_string_equal(in.a[5].text, "left"); /* the sensor's name: resolved against the robot in run.c */
+    assert_true(in.a[5].spec == 1 && in.a[5].col == 45);
     assert_int_equal(input_needs_board(&in), 1);
     /* due in order, each once */
     assert_null(input_due(&in, 0.1));
@@ -39,7 +41,9 @@ static void test_parse_and_order(void **state)
     /* equal times keep the order given */
     assert_int_equal(input_parse(&in, "1 button=down; 1 button=up; 1 occlude=right", err, sizeof err), 0);
     assert_true(in.a[0].kind == INPUT_BUTTON_DOWN && in.a[1].kind == INPUT_BUTTON_UP && in.a[2].kind == INPUT_OCCLUDE &&
-                in.a[2].value == 1);
+                !strcmp(in.a[2].text, "right"));
+    assert_int_equal(input_parse(&in, "1 occlude=front", err, sizeof err), 0); /* any name: a centred [tof.front] */
+    assert_string_equal(in.a[0].text, "front");
     assert_int_equal(input_parse(&in, "1 occlude=left; 2 end", err, sizeof err), 0);
     assert_int_equal(input_needs_board(&in), 0);
 }
@@ -59,6 +63,8 @@ static void test_errors(void **state)
         { "1 end; -2 end", "--input:1:8: want 'T ACTION'" },
         { "1 ", "--input:1:3: missing action" },
         { "1 end;2  ;", "--input:1:10: missing action" },
+        { "1 occlude=", "--input:1:3: occlude=NAME wants a sensor's name from the robot file" },
+        { "1 occlude=abcdefghijklmnop", "--input:1:3: occlude=NAME wants a sensor's name" },
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         assert_int_equal(input_parse(&in, bad[i].spec, err, sizeof err), -1);
@@ -85,7 +91,7 @@ static void test_several_add_up(void **state)
     assert_true(in.a[3].kind == INPUT_END);
     assert_int_equal(input_add(&in, "3 wave", err, sizeof err), -1);
     assert_string_equal(err, "--input:3:3: unknown action (switches=N, button, button=down, button=up, reset, "
-                             "occlude=left, occlude=right, send=TEXT, end): wave");
+                             "occlude=NAME, send=TEXT, end): wave");
 }
 
 int main(void)

@@ -264,6 +264,29 @@ static void test_asymmetry_and_variation(void **state)
     assert_true(a == a2 && a != b && fabs(a) > 1e-4);
 }
 
+/* occlude=NAME: any IR or ToF sensor by its robot-file name, the centred
+ * [tof.front] too: its readings see the object; an unknown name is -1. */
+static void test_occlude_by_name(void **state)
+{
+    (void)state;
+    static maze_t m;
+    static sim_state_t s;
+    closed(&m, 4, 4);
+    assert_int_equal(sim_init(&s, &model, &m, 1), 0);
+    int k = sim_occlude_find(&s, "front");
+    assert_true(k >= 0 && cfg.robot.part[k].x_m == 0);
+    assert_int_equal(sim_occlude_find(&s, "nope"), -1);
+    char names[100];
+    sim_occlude_names(&s, names, sizeof names);
+    assert_string_equal(names, "left, front, right");
+    sim_occlude(&s, k, 0.02, 0.3);
+    for (int i = 0; i < 100; i++) sim_step(s.model, &s);
+    assert_true(fabs(s.tof_true_m[WORLD_TOF_FRONT] - 0.02) < 1e-12);
+    for (int i = 0; i < 300; i++) sim_step(s.model, &s); /* the hand gone: the wall ahead again (~25 mm) */
+    assert_true(s.tof_true_m[WORLD_TOF_FRONT] > 0.021);
+    sim_free(&s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -275,6 +298,7 @@ int main(void)
         cmocka_unit_test(test_deterministic),
         cmocka_unit_test(test_place),
         cmocka_unit_test(test_asymmetry_and_variation),
+        cmocka_unit_test(test_occlude_by_name),
     };
     return cmocka_run_group_tests_name("world", tests, setup, NULL);
 }

@@ -21,6 +21,8 @@ static int add(input_t *in, double t, input_kind_t k, int v, const char *text, c
     a->t_s = t;
     a->kind = k;
     a->value = v;
+    a->spec = in->specs;
+    a->col = (int)col + 1;
     snprintf(a->text, sizeof a->text, "%.79s", text ? text : "");
     return 0;
 }
@@ -48,11 +50,13 @@ static int action(input_t *in, double t, const char *w, size_t n, char *err, siz
     if (!strcmp(word, "button=down")) return add(in, t, INPUT_BUTTON_DOWN, 0, NULL, err, errlen, col);
     if (!strcmp(word, "button=up")) return add(in, t, INPUT_BUTTON_UP, 0, NULL, err, errlen, col);
     if (!strcmp(word, "reset")) return add(in, t, INPUT_RESET, 0, NULL, err, errlen, col);
-    if (!strcmp(word, "occlude=left")) return add(in, t, INPUT_OCCLUDE, 0, NULL, err, errlen, col);
-    if (!strcmp(word, "occlude=right")) return add(in, t, INPUT_OCCLUDE, 1, NULL, err, errlen, col);
+    if (!strncmp(word, "occlude=", 8)) {
+        if (!word[8] || n - 8 >= INPUT_NAME_MAX) return fail(err, errlen, col, "occlude=NAME wants a sensor's name from the robot file", word);
+        return add(in, t, INPUT_OCCLUDE, -1, word + 8, err, errlen, col);
+    }
     if (!strcmp(word, "end")) return add(in, t, INPUT_END, 0, NULL, err, errlen, col);
     return fail(err, errlen, col,
-                "unknown action (switches=N, button, button=down, button=up, reset, occlude=left, occlude=right, send=TEXT, end)",
+                "unknown action (switches=N, button, button=down, button=up, reset, occlude=NAME, send=TEXT, end)",
                 word);
 }
 

@@ -4,8 +4,12 @@
  *   button          pressed for 100 ms (a down now and an up 0.1 s later)
  *   button=down     button=up
  *   reset           the reset button
- *   occlude=left    an object ~20 mm ahead of that front IR sensor for 0.3 s
- *   occlude=right
+ *   occlude=NAME    an object ~20 mm ahead of the robot file's [ir.NAME] or
+ *                   [tof.NAME] sensor for 0.3 s; `left` and `right` (when no
+ *                   sensor has that name) mean the forward-facing IR sensor
+ *                   left or right of the centre line. Checked against the
+ *                   robot before the run starts (run.c): an unknown name is
+ *                   an error there, as the parser has no robot.
  *   send=TEXT       TEXT and a newline typed on the console (to ';' or the end)
  *   end             the run stops there
  * Several --input flags add up: their actions merged in time order (equal times
@@ -19,6 +23,7 @@
 
 #define INPUT_MAX 64          /* actions after expanding `button` */
 #define INPUT_TEXT_MAX 80     /* bytes of a send's text */
+#define INPUT_NAME_MAX 16     /* bytes of an occluded sensor's name with the NUL (as the robot file's names) */
 #define INPUT_BUTTON_S 0.1    /* s a `button` press lasts */
 #define INPUT_OCCLUDE_S 0.3   /* s an occlusion lasts */
 #define INPUT_OCCLUDE_M 0.020 /* m from the sensor to the object */
@@ -30,8 +35,9 @@ typedef enum {
 typedef struct {
     double t_s;
     input_kind_t kind;
-    int value;                 /* switches: N; occlude: 0 left, 1 right */
-    char text[INPUT_TEXT_MAX]; /* send */
+    int value;                 /* switches: N; occlude: the robot part's index once run.c resolved text */
+    char text[INPUT_TEXT_MAX]; /* send: the text; occlude: the sensor's name */
+    int spec, col;             /* where it was written: the --input flag's number and column (from 1) */
 } input_action_t;
 
 typedef struct {

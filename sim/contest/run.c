@@ -138,7 +138,7 @@ static const char *hands(run_t *r)
     input_t *in = &r->input;
     while ((a = input_due(in, sim_time_s(&r->sim))) != NULL) {
         if (a->kind == INPUT_END) return "input_end";
-        if (a->kind == INPUT_OCCLUDE) sim_ir_occlude(&r->sim, a->value, INPUT_OCCLUDE_M, INPUT_OCCLUDE_S);
+        if (a->kind == INPUT_OCCLUDE) sim_occlude(&r->sim, a->value, INPUT_OCCLUDE_M, INPUT_OCCLUDE_S);
         else if (r->drv->hands) r->drv->hands(r, r->self, a);
     }
     return NULL;
@@ -152,9 +152,28 @@ static void gui_hands(run_t *r)
                                           [VIEW_HAND_BUTTON_UP] = INPUT_BUTTON_UP, [VIEW_HAND_RESET] = INPUT_RESET };
     view_hand_t h;
     while (view_hands_request(r->view, &h)) {
-        input_action_t a = { sim_time_s(&r->sim), kinds[h.kind], (int)h.switches, "" };
+        input_action_t a = { sim_time_s(&r->sim), kinds[h.kind], (int)h.switches, "", 0, 0 };
         r->drv->hands(r, r->self, &a);
     }
+}
+
+/* Each occlude's sensor found in the robot (its part index into the
+ * action's value): 0, or -1 after one line naming the input and the
+ * sensors there are. The parser has no robot, so this waits for the model. */
+static int resolve_occlusions(run_t *r)
+{
+    for (int i = 0; i < r->input.n; i++) {
+        input_action_t *a = &r->input.a[i];
+        if (a->kind != INPUT_OCCLUDE) continue;
+        a->value = sim_occlude_find(&r->sim, a->text);
+        if (a->value >= 0) continue;
+        char names[200];
+        sim_occlude_names(&r->sim, names, sizeof names);
+        fprintf(stderr, "--input:%d:%d: occlude=%s: the robot has no IR or ToF sensor of that name (its sensors: %s)\n", a->spec,
+                a->col, a->text, names);
+        return -1;
+    }
+    return 0;
 }
 
 /* The config, the maze, the world, the driver and the outputs: 0 or the exit code. */
@@ -177,6 +196,10 @@ static int setup(run_t *r)
     r->tel_on = r->o->telem.url || r->o->telem.log_path;
     r->reason = "done";
     r->input = r->o->input;
+    if (resolve_occlusions(r) != 0) {
+        sim_free(&r->sim);
+        return RUN_BAD_INPUT;
+    }
     int orc = r->drv->open(r, &r->self);
     if (orc != 0) {
         sim_free(&r->sim);

@@ -178,17 +178,50 @@ unsigned sim_ir_read(sim_state_t *s, unsigned i)
     return (unsigned)ir_sample(s->part_state[k], &s->model->cfg->robot.part[k], &x);
 }
 
-int sim_ir_occlude(sim_state_t *s, int side, double d_m, double dur_s)
+/* A sensor an object can be held before: IR or ToF. */
+static int occludable(const robot_part_t *p) { return !strcmp(p->kind->name, "ir") || !strcmp(p->kind->name, "tof"); }
+
+int sim_occlude_find(const sim_state_t *s, const char *name)
 {
-    for (int k = 0; k < s->model->cfg->robot.nparts; k++) {
-        const robot_part_t *p = &s->model->cfg->robot.part[k];
+    const simcfg_robot_t *rc = &s->model->cfg->robot;
+    for (int k = 0; k < rc->nparts; k++)
+        if (occludable(&rc->part[k]) && !strcmp(rc->part[k].name, name)) return k;
+    int side = !strcmp(name, "left") ? 0 : !strcmp(name, "right") ? 1 : -1;
+    for (int k = 0; side >= 0 && k < rc->nparts; k++) { /* the aliases: a forward IR sensor off the centre line */
+        const robot_part_t *p = &rc->part[k];
         if (strcmp(p->kind->name, "ir") != 0 || fabs(p->yaw_deg) > 30 || (side ? p->x_m <= 0 : p->x_m >= 0)) continue;
-        ir_state_t *st = s->part_state[k];
-        st->object_m = d_m;
-        st->object_until_s = sim_time_s(s) + dur_s;
-        return 0;
+        return k;
     }
     return -1;
+}
+
+void sim_occlude_names(const sim_state_t *s, char *out, size_t len)
+{
+    const simcfg_robot_t *rc = &s->model->cfg->robot;
+    size_t used = 0;
+    out[0] = '\0';
+    for (int k = 0; k < rc->nparts && used < len; k++)
+        if (occludable(&rc->part[k])) {
+            int n = snprintf(out + used, len - used, "%s%s", used ? ", " : "", rc->part[k].name);
+            if (n > 0) used += (size_t)n;
+        }
+    if (!out[0]) snprintf(out, len, "none");
+}
+
+void sim_occlude(sim_state_t *s, int part, double d_m, double dur_s)
+{
+    if (part < 0 || part >= s->model->cfg->robot.nparts) return;
+    const robot_part_t *p = &s->model->cfg->robot.part[part];
+    double until_s = sim_time_s(s) + dur_s;
+    if (!strcmp(p->kind->name, "ir")) {
+        ir_state_t *st = s->part_state[part];
+        st->object_m = d_m;
+        st->object_until_s = until_s;
+    } else if (!strcmp(p->kind->name, "tof")) {
+        tof_state_t *st = s->part_state[part];
+        st->object_m = d_m;
+        st->object_until_s = until_s;
+    }
 }
 
 int sim_has_gyro(const sim_state_t *s) { return robot_count(s->model->cfg, "gyro") > 0; }

@@ -6,6 +6,7 @@
 #ifndef SIM_H
 #define SIM_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "config.h"
@@ -74,12 +75,17 @@ int sim_ir_count(const sim_state_t *s);
 void sim_emitter_set(sim_state_t *s, unsigned group, int on);
 int sim_emitter(const sim_state_t *s, unsigned group);
 unsigned sim_ir_read(sim_state_t *s, unsigned i);
-/* An object held d_m in front of the robot's front-facing IR sensor on
- * the left (side 0) or right (1) from now for dur_s: its samples see the
- * object instead of the maze (a hand starting mazerunner-core). 0, or -1
- * if the robot has no such sensor (an IR sensor within 30 degrees of
- * straight ahead, left or right of the centre line). */
-int sim_ir_occlude(sim_state_t *s, int side, double d_m, double dur_s);
+/* The robot part an `occlude=NAME` holds an object before: the IR or ToF
+ * sensor of that name in the robot file, else for "left"/"right" the
+ * forward-facing IR sensor (within 30 degrees of straight ahead) left or
+ * right of the centre line; -1 if none. */
+int sim_occlude_find(const sim_state_t *s, const char *name);
+/* The names an occlude may take ("lfs, lds, ..." or "none"), into out. */
+void sim_occlude_names(const sim_state_t *s, char *out, size_t len);
+/* An object held d_m in front of sensor part (sim_occlude_find) from now
+ * for dur_s: its readings see the object instead of the maze (a hand
+ * starting mazerunner-core). */
+void sim_occlude(sim_state_t *s, int part, double d_m, double dur_s);
 int sim_has_gyro(const sim_state_t *s);
 double sim_gyro_rad_s(const sim_state_t *s);
 double sim_battery_v(const sim_state_t *s);
