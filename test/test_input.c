@@ -63,6 +63,13 @@ static void test_errors(void **state)
         { "1 end; -2 end", "--input:1:8: want 'T ACTION'" },
         { "1 ", "--input:1:3: missing action" },
         { "1 end;2  ;", "--input:1:10: missing action" },
+        { "1 push=", "--input:1:3: push=DX_MM[,DYAW_DEG[,SECONDS]] wants 1 to 3 numbers" },
+        { "1 push=10,x", "--input:1:3: push=DX_MM[,DYAW_DEG[,SECONDS]] wants numbers: 10,x" },
+        { "1 push=1,2,3,4", "--input:1:3: push=DX_MM[,DYAW_DEG[,SECONDS]] wants 1 to 3 numbers: 1,2,3,4" },
+        { "1 push=6000", "--input:1:3: push: DX_MM within +-5000 mm" },
+        { "1 push=10,0,0.01", "--input:1:3: push: SECONDS within 0.05..60 s" },
+        { "1 push=1000,0,1", "--input:1:3: push: faster than a hand" },
+        { "1 push=0,900,1", "--input:1:3: push: faster than a hand" },
         { "1 occlude=", "--input:1:3: occlude=NAME wants a sensor's name from the robot file" },
         { "1 occlude=abcdefghijklmnop", "--input:1:3: occlude=NAME wants a sensor's name" },
     };
@@ -91,7 +98,23 @@ static void test_several_add_up(void **state)
     assert_true(in.a[3].kind == INPUT_END);
     assert_int_equal(input_add(&in, "3 wave", err, sizeof err), -1);
     assert_string_equal(err, "--input:3:3: unknown action (switches=N, button, button=down, button=up, reset, "
-                             "occlude=NAME, send=TEXT, end): wave");
+                             "occlude=NAME, push=DX_MM[,DYAW_DEG[,SECONDS]], lift, place, send=TEXT, end): wave");
+}
+
+/* push, lift and place: the numbers with their defaults; they act on the
+ * world, so they need no board. */
+static void test_push_lift_place(void **state)
+{
+    (void)state;
+    static input_t in;
+    char err[300];
+    assert_int_equal(input_parse(&in, "1 push=180; 2 push=-20.5,90; 3 lift; 3.5 push=10,0,0.5; 4 place", err, sizeof err), 0);
+    assert_int_equal(in.n, 5);
+    assert_true(in.a[0].kind == INPUT_PUSH && in.a[0].push[0] == 180 && in.a[0].push[1] == 0 && in.a[0].push[2] == INPUT_PUSH_S);
+    assert_true(in.a[1].push[0] == -20.5 && in.a[1].push[1] == 90 && in.a[1].push[2] == INPUT_PUSH_S);
+    assert_true(in.a[2].kind == INPUT_LIFT && in.a[4].kind == INPUT_PLACE);
+    assert_true(in.a[3].push[0] == 10 && in.a[3].push[2] == 0.5);
+    assert_int_equal(input_needs_board(&in), 0);
 }
 
 int main(void)
@@ -100,6 +123,7 @@ int main(void)
         cmocka_unit_test(test_parse_and_order),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_several_add_up),
+        cmocka_unit_test(test_push_lift_place),
     };
     return cmocka_run_group_tests_name("input", tests, NULL, NULL);
 }

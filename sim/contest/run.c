@@ -130,7 +130,8 @@ static int set_goal(run_t *r)
     return 0;
 }
 
-/* The hands' actions due now: occlude and end here, the rest on the board
+/* The hands' actions due now: occlude, push, lift, place and end here (on
+ * the world, any driver), the rest on the board
  * (the driver's hands). NULL, or why the run ends. */
 static const char *hands(run_t *r)
 {
@@ -139,6 +140,9 @@ static const char *hands(run_t *r)
     while ((a = input_due(in, sim_time_s(&r->sim))) != NULL) {
         if (a->kind == INPUT_END) return "input_end";
         if (a->kind == INPUT_OCCLUDE) sim_occlude(&r->sim, a->value, INPUT_OCCLUDE_M, INPUT_OCCLUDE_S);
+        else if (a->kind == INPUT_PUSH) sim_push(&r->sim, a->push[0] / 1000.0, a->push[1] * M_PI / 180.0, a->push[2]);
+        else if (a->kind == INPUT_LIFT) sim_lift(&r->sim);
+        else if (a->kind == INPUT_PLACE) sim_place(&r->sim);
         else if (r->drv->hands) r->drv->hands(r, r->self, a);
     }
     return NULL;
@@ -152,7 +156,11 @@ static void gui_hands(run_t *r)
                                           [VIEW_HAND_BUTTON_UP] = INPUT_BUTTON_UP, [VIEW_HAND_RESET] = INPUT_RESET };
     view_hand_t h;
     while (view_hands_request(r->view, &h)) {
-        input_action_t a = { sim_time_s(&r->sim), kinds[h.kind], (int)h.switches, "", 0, 0 };
+        input_action_t a;
+        memset(&a, 0, sizeof a);
+        a.t_s = sim_time_s(&r->sim);
+        a.kind = kinds[h.kind];
+        a.value = (int)h.switches;
         r->drv->hands(r, r->self, &a);
     }
 }

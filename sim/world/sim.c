@@ -99,6 +99,8 @@ int sim_init(sim_state_t *s, const sim_model_t *model, const maze_t *m, uint64_t
     s->tof_enabled = 1;
     s->diverged = 0;
     s->step = 0;
+    s->push_from = s->push_steps = 0;
+    s->push_m = s->push_rad = 0;
     if (parts_init(s, seed) != 0) {
         sim_free(s);
         return -1;
@@ -135,6 +137,39 @@ static void battery_step(sim_state_t *s, double dt)
     for (int i = 0; i < 2; i++) s->motor[i].battery_v = ocv - r * i_in[1 - i];
 }
 
+int sim_push(sim_state_t *s, double dx_m, double dyaw_rad, double dur_s)
+{
+    if (world_carried(s->world)) return -1;
+    double n = round(dur_s / s->model->cfg->sim.step_s);
+    s->push_from = s->step;
+    s->push_steps = n < 1 ? 1 : (uint64_t)n;
+    s->push_m = dx_m;
+    s->push_rad = dyaw_rad;
+    return 0;
+}
+
+void sim_lift(sim_state_t *s)
+{
+    s->push_steps = 0;
+    world_carry(s->world, 1);
+}
+
+void sim_place(sim_state_t *s) { world_carry(s->world, 0); }
+
+/* The hand's grip for this step of a push (sim_push), or let go after it. */
+static void hand_step(sim_state_t *s, double dt)
+{
+    if (!s->push_steps) return;
+    if (s->step >= s->push_from + s->push_steps) {
+        world_hand(s->world, 0, 0, 0);
+        s->push_steps = 0;
+        return;
+    }
+    double T = (double)s->push_steps * dt, t = ((double)(s->step - s->push_from) + 0.5) * dt;
+    double shape = 1 - cos(2 * M_PI * t / T); /* averages 1 over the push */
+    world_hand(s->world, 1, s->push_m / T * shape, s->push_rad / T * shape);
+}
+
 void sim_step(const sim_model_t *m, sim_state_t *s)
 {
     assert(m == s->model);
@@ -142,6 +177,7 @@ void sim_step(const sim_model_t *m, sim_state_t *s)
     if (s->diverged) return;
     motor_drive_t d[2];
     for (int i = 0; i < 2; i++) d[i] = motor_drive(&s->motor[i], s->cmd[i], world_wheel_rate(s->world, i), dt);
+    hand_step(s, dt);
     world_step(s->world, d);
     s->step++;
     if (!world_sane(s->world)) {

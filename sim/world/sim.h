@@ -48,6 +48,9 @@ typedef struct sim_state_s {
     uint64_t step;           /* physics steps done */
     int cmd[2];              /* motor commands, -1023..1023 */
     int diverged;            /* the physics diverged (world_sane): sim_step no longer steps */
+    /* A push by hand (sim_push): from step push_from for push_steps steps */
+    uint64_t push_from, push_steps;
+    double push_m, push_rad;  /* the axle's middle forward, m; the turn counter-clockwise, rad */
 } sim_state_t;
 
 /* A run's state for model m (sim_model_build; m and the maze must outlive
@@ -86,6 +89,24 @@ void sim_occlude_names(const sim_state_t *s, char *out, size_t len);
  * for dur_s: its readings see the object instead of the maze (a hand
  * starting mazerunner-core). */
 void sim_occlude(sim_state_t *s, int part, double d_m, double dur_s);
+/* A person's hands on the robot (--input push, lift, place).
+ * sim_push: from the next step the robot is rolled by hand along the floor,
+ * its axle's middle dx_m forward and its heading turned dyaw_rad
+ * counter-clockwise over dur_s (whole steps, at least one), at the speed
+ * (dx_m / dur_s)(1 - cos(2 pi t / dur_s)): from rest to rest, peaking at
+ * twice the mean; the step's speed taken at its middle so the steps add up
+ * to dx_m at any step size. The wheels roll on the floor and the encoders
+ * count as they turn; the motors stay as the firmware drives them (a
+ * firmware that drives none is a robot pushed with its motors unpowered, the
+ * H-bridge's short brake and the gearbox turning with the wheels; the hand's
+ * force, world.h, beats a driven one). -1 (ignored) while carried.
+ * sim_lift: carried 50 mm up and held still there (a push stops); the
+ * wheels turn free; the sensors see what they see from there (the IR and ToF
+ * rays pass over the 50 mm walls: nothing near). sim_place: put back down
+ * where it was lifted, level and resting, the wheels as they are. */
+int sim_push(sim_state_t *s, double dx_m, double dyaw_rad, double dur_s);
+void sim_lift(sim_state_t *s);
+void sim_place(sim_state_t *s);
 int sim_has_gyro(const sim_state_t *s);
 double sim_gyro_rad_s(const sim_state_t *s);
 double sim_battery_v(const sim_state_t *s);
