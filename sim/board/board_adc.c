@@ -53,9 +53,8 @@ static double channel_volts(board_adc_t *a, unsigned ch)
 {
     const board_spec_t *sp = a->spec;
     if ((int)ch == sp->sw_channel) return board_switches_volts(a->sw);
-    if ((int)ch == sp->bat_channel) /* the battery less the diode's drop (none below it: the diode blocks), divided */
-        return fmax(sim_battery_v(a->sim) - sp->bat_diode_drop_v, 0.0) * sp->bat_r_bottom_ohm /
-               (sp->bat_r_top_ohm + sp->bat_r_bottom_ohm);
+    if ((int)ch == sp->bat_channel) /* the supply after the diode (board.c sets its drop on the sim), divided */
+        return sim_supply_v(a->sim) * sp->bat_r_bottom_ohm / (sp->bat_r_top_ohm + sp->bat_r_bottom_ohm);
     int ir = a->ir_of_channel[ch];
     if (ir < 0) return undriven_volts(a, ch);
     for (int e = 0; e < sp->nemitters; e++) sim_emitter_set(a->sim, (unsigned)sp->emitter_group[e], board_leds_level(a->emitters, e));

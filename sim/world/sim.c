@@ -101,6 +101,7 @@ int sim_init(sim_state_t *s, const sim_model_t *model, const maze_t *m, uint64_t
     s->step = 0;
     s->push_from = s->push_steps = 0;
     s->push_m = s->push_rad = 0;
+    s->supply_drop_v = 0;
     if (parts_init(s, seed) != 0) {
         sim_free(s);
         return -1;
@@ -134,8 +135,16 @@ static void battery_step(sim_state_t *s, double dt)
     double i_in[2] = { bridge_in_a(&s->motor[0]), bridge_in_a(&s->motor[1]) };
     battery_draw(&s->battery, i_in[0] + i_in[1], dt);
     double ocv = battery_ocv(&s->battery), r = s->model->cfg->robot.battery.r_ohm;
-    for (int i = 0; i < 2; i++) s->motor[i].battery_v = ocv - r * i_in[1 - i];
+    for (int i = 0; i < 2; i++) s->motor[i].battery_v = fmax(ocv - r * i_in[1 - i] - s->supply_drop_v, 0.0);
 }
+
+void sim_set_supply_drop(sim_state_t *s, double drop_v)
+{
+    s->supply_drop_v = drop_v > 0 ? drop_v : 0;
+    for (int i = 0; i < 2; i++) s->motor[i].battery_v = fmax(battery_ocv(&s->battery) - s->supply_drop_v, 0.0);
+}
+
+double sim_supply_v(const sim_state_t *s) { return fmax(sim_battery_v(s) - s->supply_drop_v, 0.0); }
 
 int sim_push(sim_state_t *s, double dx_m, double dyaw_rad, double dur_s)
 {

@@ -51,6 +51,7 @@ typedef struct sim_state_s {
     /* A push by hand (sim_push): from step push_from for push_steps steps */
     uint64_t push_from, push_steps;
     double push_m, push_rad;  /* the axle's middle forward, m; the turn counter-clockwise, rad */
+    double supply_drop_v;     /* V: a series diode between the battery and all it feeds (sim_set_supply_drop) */
 } sim_state_t;
 
 /* A run's state for model m (sim_model_build; m and the maze must outlive
@@ -110,6 +111,15 @@ void sim_place(sim_state_t *s);
 int sim_has_gyro(const sim_state_t *s);
 double sim_gyro_rad_s(const sim_state_t *s);
 double sim_battery_v(const sim_state_t *s);
+/* A series diode's forward drop (V, >= 0) between the battery and all it
+ * feeds: the H-bridges' supply and a board's battery divider (UKMARSBOT's
+ * D1). A constant drop while current flows: the motors see the battery's
+ * terminal voltage less drop_v; 0 (the default) is a robot without one.
+ * The diode blocks reverse current, which the battery model never has
+ * (the bridges only draw). Set before the first step. */
+void sim_set_supply_drop(sim_state_t *s, double drop_v);
+/* The supply after that diode, V (>= 0): what the bridges and a divider see. */
+double sim_supply_v(const sim_state_t *s);
 /* Where ToF sensor i (0..ntof-1) sits and looks (world, m; heading rad). */
 void sim_tof_origin(const sim_state_t *s, int i, double pos_m[3], double *dir_rad);
 /* Every sensor's latest values for telemetry (no noise drawn, no state
