@@ -109,5 +109,9 @@ got=$(python3 -c "
 import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1]); b=d['board']
 print(d['exit_reason'], b['resets'], b.get('watchdog_resets'), b.get('crash'))" "$T/out" 2>&1)
 [ "$got" = "time_limit 1 2 None" ] && ok "reset button: 1 reset, 2 watchdog resets, no crash" || bad "reset button: $got"
+got=$(python3 -c "
+import json,sys; print(sorted(json.loads(open(sys.argv[1]).read().splitlines()[-1])['board'].get('reset_causes', {}).items()))" "$T/out" 2>&1)
+[ "$got" = "[('brown_out', 0), ('external', 1), ('power_on', 1), ('watchdog', 2)]" ] \
+  && ok "reset button: the resets by cause (power-on 1, external 1, watchdog 2)" || bad "reset causes: $got"
 
 [ $fails -eq 0 ] && echo "cli_crash: all passed" || { echo "cli_crash: $fails failed"; exit 1; }

@@ -264,6 +264,66 @@ static void test_asymmetry_and_variation(void **state)
     assert_true(a == a2 && a != b && fabs(a) > 1e-4);
 }
 
+/* occlude=NAME: any IR or ToF sensor by its robot-file name, the centred
+ * [tof.front] too: its readings see the object; an unknown name is -1. */
+static void test_occlude_by_name(void **state)
+{
+    (void)state;
+    static maze_t m;
+    static sim_state_t s;
+    closed(&m, 4, 4);
+    assert_int_equal(sim_init(&s, &model, &m, 1), 0);
+    int k = sim_occlude_find(&s, "front");
+    assert_true(k >= 0 && cfg.robot.part[k].x_m == 0);
+    assert_int_equal(sim_occlude_find(&s, "nope"), -1);
+    char names[100];
+    sim_occlude_names(&s, names, sizeof names);
+    assert_string_equal(names, "left, front, right");
+    sim_occlude(&s, k, 0.02, 0.3);
+    for (int i = 0; i < 100; i++) sim_step(s.model, &s);
+    assert_true(fabs(s.tof_true_m[WORLD_TOF_FRONT] - 0.02) < 1e-12);
+    for (int i = 0; i < 300; i++) sim_step(s.model, &s); /* the hand gone: the wall ahead again (~25 mm) */
+    assert_true(s.tof_true_m[WORLD_TOF_FRONT] > 0.021);
+    sim_free(&s);
+}
+
+/* A series diode's drop (sim_set_supply_drop) on the motors' supply and
+ * the divider's alike: the bridges see the terminal voltage less it, and
+ * the robot at full command is slower by about the drop's share. */
+static double top_speed(double drop_v, double *supply_v, double *terminal_v, double *motor_v)
+{
+    static maze_t m;
+    static sim_state_t s;
+    maze_init(&m, 8, 8);
+    maze_close_unknown(&m);
+    for (uint16_t k = 0; k < 64; k++)
+        for (uint8_t d = 0; d < 4; d++) maze_set_wall(&m, (maze_cell_t)k, d, MAZE_WALL_OPEN);
+    m.start = maze_cell(&m, 4, 0);
+    m.start_heading = MAZE_NORTH;
+    assert_int_equal(sim_init(&s, &model, &m, 1), 0);
+    sim_set_supply_drop(&s, drop_v);
+    s.cmd[0] = s.cmd[1] = MOTOR_CMD_MAX;
+    for (int i = 0; i < 500; i++) sim_step(s.model, &s);
+    double v, w;
+    world_velocity(s.world, &v, &w);
+    *supply_v = sim_supply_v(&s);
+    *terminal_v = sim_battery_v(&s);
+    *motor_v = s.motor[0].battery_v;
+    sim_free(&s);
+    return v;
+}
+
+static void test_supply_drop(void **state)
+{
+    (void)state;
+    double sup0, term0, mot0, sup1, term1, mot1;
+    double v0 = top_speed(0.0, &sup0, &term0, &mot0), v1 = top_speed(1.0, &sup1, &term1, &mot1);
+    assert_true(sup0 == term0 && fabs(sup1 - (term1 - 1.0)) < 1e-12);
+    assert_true(fabs(mot0 - mot1 - 1.0) < 0.05); /* each motor's supply: 1 V lower (the sag differs a little) */
+    double want = v0 * (mot1 / mot0);
+    if (!(v1 < v0 && fabs(v1 - want) < 0.1 * want)) fail_msg("speed %.4f m/s with a 1 V drop, %.4f without (want ~%.4f)", v1, v0, want);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -275,6 +335,8 @@ int main(void)
         cmocka_unit_test(test_deterministic),
         cmocka_unit_test(test_place),
         cmocka_unit_test(test_asymmetry_and_variation),
+        cmocka_unit_test(test_occlude_by_name),
+        cmocka_unit_test(test_supply_drop),
     };
     return cmocka_run_group_tests_name("world", tests, setup, NULL);
 }

@@ -108,6 +108,7 @@ board_t *board_open(const board_spec_t *spec, const char *image, sim_state_t *s,
     avr_t *avr = b->host.avr;
     avr->vcc = avr->avcc = avr->aref = (uint32_t)lround(spec->vcc_v * 1000.0);
     if (wire(b, err, errn) != 0) return open_fail(b);
+    sim_set_supply_drop(s, spec->bat_diode_drop_v); /* the diode feeds the H-bridges and the divider alike */
     return b;
 }
 

@@ -48,6 +48,16 @@ typedef struct {
     uint8_t bit;
 } board_pin_t;
 
+/* What an ADC pin with no other part is wired to ([analog] a4/a5): open
+ * (wired 0, the file's `open`: board_adc.c's model of a floating input) or
+ * a fixed voltage v (V). */
+typedef struct {
+    int wired;
+    double v;
+} board_analog_t;
+#define BOARD_ANALOG_FIRST 4 /* [analog] names ADC channels 4 (a4) and 5 (a5): PC4/PC5 of the ATmega328P */
+#define BOARD_ANALOG_N 2
+
 /* The board file (see boards/ukmarsbot-v1.3.ini for every key and source). */
 typedef struct {
     char path[256];
@@ -82,6 +92,8 @@ typedef struct {
     int bat_channel;
     double bat_r_top_ohm, bat_r_bottom_ohm;
     double bat_diode_drop_v;  /* V: a series (reverse-polarity) diode between the battery and the divider */
+    /* A4/A5 when no IR sensor of the robot is on them, [analog] (optional: open) */
+    board_analog_t analog[BOARD_ANALOG_N];
 } board_spec_t;
 
 /* What the board saw during the run (the JSON's "board"). */

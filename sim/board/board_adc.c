@@ -6,7 +6,15 @@
  *   - an IR detector (the robot file's [ir.*] adc_channel): sim_ir_read with
  *     the emitter groups lit as their pins are at that moment;
  *   - the switch ladder: the voltage for the switches and button now;
- *   - the battery: its terminal voltage through the divider.
+ *   - the battery: its terminal voltage through the divider;
+ *   - A4/A5 with no IR sensor on them: the board file's [analog] voltage,
+ *     or for an `open` (unconnected) pin its own state: driven as an output,
+ *     its level; input with the pull-up on, VCC (the pull-up's 20-50 kohm
+ *     against the ADC's ~100 Mohm input); floating, the last conversion's
+ *     input, whatever channel it was, held on the sample-and-hold capacitor
+ *     (ATmega328P datasheet 24.6.1, analog input circuitry: the 14 pF
+ *     capacitor is all a floating pin offers; 0 V after power-on). A
+ *     deterministic stand-in for a real floating pin's drifting reading.
  * simavr 1.6 has no timer or external auto-trigger: a firmware that selects
  * one is stopped with one line (board_adc_check). No IRQ tells the
  * auto-trigger bits: they are read through simavr's description of the
@@ -18,6 +26,7 @@
 #include <string.h>
 
 #include <simavr/avr_adc.h>
+#include <simavr/avr_ioport.h>
 #include <simavr/sim_avr.h>
 #include <simavr/sim_io.h>
 #include <simavr/sim_irq.h>
@@ -25,16 +34,29 @@
 
 #include "world/sensors/ir.h"
 
+/* An ADC pin no part drives (channel ch, see the top of the file), V. */
+static double undriven_volts(board_adc_t *a, unsigned ch)
+{
+    int i = (int)ch - BOARD_ANALOG_FIRST;
+    if (i < 0 || i >= BOARD_ANALOG_N) return 0.0;
+    if (a->spec->analog[i].wired) return a->spec->analog[i].v;
+    avr_ioport_state_t st;
+    if (avr_ioctl(a->avr, AVR_IOCTL_IOPORT_GETSTATE('C'), &st) < 0) return a->held_mv / 1000.0;
+    unsigned bit = 1u << ch; /* ADC4/ADC5 are PC4/PC5 */
+    if (st.ddr & bit) return st.port & bit ? a->spec->vcc_v : 0.0;
+    if (st.port & bit) return a->spec->vcc_v;
+    return a->held_mv / 1000.0;
+}
+
 /* channel ch's voltage now, V */
 static double channel_volts(board_adc_t *a, unsigned ch)
 {
     const board_spec_t *sp = a->spec;
     if ((int)ch == sp->sw_channel) return board_switches_volts(a->sw);
-    if ((int)ch == sp->bat_channel) /* the battery less the diode's drop (none below it: the diode blocks), divided */
-        return fmax(sim_battery_v(a->sim) - sp->bat_diode_drop_v, 0.0) * sp->bat_r_bottom_ohm /
-               (sp->bat_r_top_ohm + sp->bat_r_bottom_ohm);
+    if ((int)ch == sp->bat_channel) /* the supply after the diode (board.c sets its drop on the sim), divided */
+        return sim_supply_v(a->sim) * sp->bat_r_bottom_ohm / (sp->bat_r_top_ohm + sp->bat_r_bottom_ohm);
     int ir = a->ir_of_channel[ch];
-    if (ir < 0) return 0.0;
+    if (ir < 0) return undriven_volts(a, ch);
     for (int e = 0; e < sp->nemitters; e++) sim_emitter_set(a->sim, (unsigned)sp->emitter_group[e], board_leds_level(a->emitters, e));
     /* counts -> the voltage that converts back to the same count (rounded up to the mV) */
     unsigned c = sim_ir_read(a->sim, (unsigned)ir);
@@ -55,6 +77,7 @@ static void on_trigger(struct avr_irq_t *irq, uint32_t value, void *param)
     double mv = ceil(channel_volts(a, ch) * 1000.0 - 1e-9);
     if (mv < 0) mv = 0;
     if (mv > a->spec->vcc_v * 1000.0) mv = a->spec->vcc_v * 1000.0;
+    a->held_mv = mv;
     avr_raise_irq(a->in[ch], (uint32_t)mv);
 }
 

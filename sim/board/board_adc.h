@@ -24,6 +24,7 @@ typedef struct {
     int ir_of_channel[BOARD_ADC_CHANNELS]; /* the IR sensor on each channel (-1: none) */
     struct avr_irq_t *in[BOARD_ADC_CHANNELS];
     board_stats_t *st;            /* adc_conversions */
+    double held_mv;               /* the sample-and-hold capacitor: the last conversion's input, mV (0 at power-on) */
 } board_adc_t;
 
 /* Wire the part to avr's ADC. 0, or -1 with one line in err (a robot IR

@@ -40,7 +40,10 @@ void board_encoder_init(board_encoder_t *e, avr_t *avr, const board_spec_t *spec
         e->a_leads[w] = spec->enc_a_leads[w];
         e->per_rad[w] = d->encoder_ppr * d->gear_ratio / (2.0 * M_PI);
         e->last_rad[w] = world_wheel_angle(sim->world, w);
-        e->pos[w] = 0.0;
+        /* at rest mid-way between two edges, as a real disc almost always is:
+         * at exactly an edge (0.0) the hinge angle's rounding noise at rest
+         * (~1e-14 counts) crossed it back and forth, 2-3 edges at t = 0 */
+        e->pos[w] = BOARD_ENCODER_REST_POS;
         e->q[w] = 0;
         put(e, w, 0);
     }

@@ -14,6 +14,7 @@ struct avr_t;
 struct avr_irq_t;
 
 #define BOARD_EDGES_MAX 512 /* encoder edges in one step, both wheels (~1.5 at full speed) */
+#define BOARD_ENCODER_REST_POS 0.5 /* edges (counts): where the position starts, between edge 0 and edge 1 */
 
 typedef struct {
     uint64_t cycle; /* when, AVR cycles */

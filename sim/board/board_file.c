@@ -46,6 +46,24 @@ static int parse_pin(const char *v, void *field, char *why, size_t len)
     return -1;
 }
 
+/* "open" or a voltage in V (0..vcc_v, checked with the rest) into a board_analog_t */
+static int parse_analog(const char *v, void *field, char *why, size_t len)
+{
+    board_analog_t *a = field;
+    char *end;
+    if (!strcmp(v, "open")) {
+        *a = (board_analog_t){ 0, 0.0 };
+        return 0;
+    }
+    double x = strtod(v, &end);
+    if (end == v || *end || !(x >= 0 && x <= 5.5)) {
+        snprintf(why, len, "expected 'open' or a voltage 0-5.5 V, got '%s'", v);
+        return -1;
+    }
+    *a = (board_analog_t){ 1, x };
+    return 0;
+}
+
 static const char *const leads[] = { "b_leads", "a_leads" }; /* the index is enc_a_leads */
 
 #define OFF(f) offsetof(board_spec_t, f)
@@ -85,9 +103,13 @@ static const keytab_t keys[] = {
     NUM("battery", "r_bottom_ohm", KEYTAB_DOUBLE, bat_r_bottom_ohm, 1, 1e7, "ohm", "the ADC pin to ground"),
     { "battery", "diode_drop_v", OFF(bat_diode_drop_v), 0.0, 0, 2, "V", "a series diode's forward drop before the divider (0: none)",
       NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL },
+    { "analog", "a4", OFF(analog[0]), 0.0, 0, 0, "open|V", "what A4 is wired to when no IR sensor is: open (floating) or a fixed voltage",
+      NULL, 0, 0, 0, KEYTAB_PARSED, sizeof(board_analog_t), parse_analog },
+    { "analog", "a5", OFF(analog[1]), 0.0, 0, 0, "open|V", "what A5 is wired to when no IR sensor is: open (floating) or a fixed voltage",
+      NULL, 0, 0, 0, KEYTAB_PARSED, sizeof(board_analog_t), parse_analog },
 };
 #define N(t) (sizeof t / sizeof t[0])
-static const char *const fixed[] = { "board", "motor.left", "motor.right", "encoder.left", "encoder.right", "switches", "battery" };
+static const char *const fixed[] = { "board", "motor.left", "motor.right", "encoder.left", "encoder.right", "switches", "battery", "analog" };
 
 /* [emitter.NAME] and [led.NAME]: as many as the board has */
 typedef struct {
@@ -141,7 +163,7 @@ static int on_section(void *user, const char *section, int line, char *why, size
     int led;
     if (named(l, section, &led) || led < 0) {
         if (led >= 0) return 0; /* the part's section again */
-        snprintf(why, len, "[%s]: unknown section (board, motor.left, motor.right, encoder.left, encoder.right, switches, battery, "
+        snprintf(why, len, "[%s]: unknown section (board, motor.left, motor.right, encoder.left, encoder.right, switches, battery, analog, "
                  "emitter.NAME, led.NAME)", section);
         return -1;
     }
@@ -269,6 +291,9 @@ static int check(bload_t *l)
             if (sp->emitter_group[j] == sp->emitter_group[i])
                 return fail(l, l->emitter[i].line, "emitter.%s.group: another emitter lights that group", l->emitter[i].name);
     if (sp->sw_channel == sp->bat_channel) return fail(l, line_of(l, "battery"), "battery.adc_channel: the switches' channel too");
+    for (int i = 0; i < BOARD_ANALOG_N; i++)
+        if (sp->analog[i].wired && sp->analog[i].v > sp->vcc_v)
+            return fail(l, line_of(l, "analog"), "analog.a%d: %g V is above vcc_v (%g V)", BOARD_ANALOG_FIRST + i, sp->analog[i].v, sp->vcc_v);
     return check_pins(l);
 }
 

@@ -21,7 +21,39 @@ static int add(input_t *in, double t, input_kind_t k, int v, const char *text, c
     a->t_s = t;
     a->kind = k;
     a->value = v;
+    memset(a->push, 0, sizeof a->push);
+    a->spec = in->specs;
+    a->col = (int)col + 1;
     snprintf(a->text, sizeof a->text, "%.79s", text ? text : "");
+    return 0;
+}
+
+/* One number of push's list at p (up to ',' or the end) into v: 0 or -1. */
+static int push_number(const char **p, double *v)
+{
+    char *end;
+    errno = 0;
+    *v = strtod(*p, &end);
+    if (end == *p || errno || !isfinite(*v) || (*end && *end != ',')) return -1;
+    *p = *end ? end + 1 : end;
+    return 0;
+}
+
+/* "push=DX_MM[,DYAW_DEG[,SECONDS]]" (args: after the '='). */
+static int push(input_t *in, double t, const char *args, char *err, size_t errlen, size_t col)
+{
+    double v[3] = { 0, 0, INPUT_PUSH_S };
+    const char *p = args;
+    for (int i = 0; i < 3 && *p; i++)
+        if (push_number(&p, &v[i]) != 0) return fail(err, errlen, col, "push=DX_MM[,DYAW_DEG[,SECONDS]] wants numbers", args);
+    if (p == args || *p) return fail(err, errlen, col, "push=DX_MM[,DYAW_DEG[,SECONDS]] wants 1 to 3 numbers", args);
+    if (fabs(v[0]) > INPUT_PUSH_MAX_MM || fabs(v[1]) > INPUT_PUSH_MAX_DEG)
+        return fail(err, errlen, col, "push: DX_MM within +-5000 mm and DYAW_DEG within +-3600 deg", args);
+    if (v[2] < INPUT_PUSH_MIN_S || v[2] > INPUT_PUSH_MAX_S) return fail(err, errlen, col, "push: SECONDS within 0.05..60 s", args);
+    if (2 * fabs(v[0]) / 1000 / v[2] > INPUT_PUSH_MAX_M_S || 2 * fabs(v[1]) / v[2] > INPUT_PUSH_MAX_DEG_S)
+        return fail(err, errlen, col, "push: faster than a hand (peak 2*DX/SECONDS <= 1 m/s, 2*DYAW/SECONDS <= 1440 deg/s)", args);
+    if (add(in, t, INPUT_PUSH, 0, NULL, err, errlen, col) != 0) return -1;
+    memcpy(in->a[in->n - 1].push, v, sizeof v);
     return 0;
 }
 
@@ -48,11 +80,16 @@ static int action(input_t *in, double t, const char *w, size_t n, char *err, siz
     if (!strcmp(word, "button=down")) return add(in, t, INPUT_BUTTON_DOWN, 0, NULL, err, errlen, col);
     if (!strcmp(word, "button=up")) return add(in, t, INPUT_BUTTON_UP, 0, NULL, err, errlen, col);
     if (!strcmp(word, "reset")) return add(in, t, INPUT_RESET, 0, NULL, err, errlen, col);
-    if (!strcmp(word, "occlude=left")) return add(in, t, INPUT_OCCLUDE, 0, NULL, err, errlen, col);
-    if (!strcmp(word, "occlude=right")) return add(in, t, INPUT_OCCLUDE, 1, NULL, err, errlen, col);
+    if (!strncmp(word, "occlude=", 8)) {
+        if (!word[8] || n - 8 >= INPUT_NAME_MAX) return fail(err, errlen, col, "occlude=NAME wants a sensor's name from the robot file", word);
+        return add(in, t, INPUT_OCCLUDE, -1, word + 8, err, errlen, col);
+    }
     if (!strcmp(word, "end")) return add(in, t, INPUT_END, 0, NULL, err, errlen, col);
+    if (!strncmp(word, "push=", 5)) return push(in, t, word + 5, err, errlen, col);
+    if (!strcmp(word, "lift")) return add(in, t, INPUT_LIFT, 0, NULL, err, errlen, col);
+    if (!strcmp(word, "place")) return add(in, t, INPUT_PLACE, 0, NULL, err, errlen, col);
     return fail(err, errlen, col,
-                "unknown action (switches=N, button, button=down, button=up, reset, occlude=left, occlude=right, send=TEXT, end)",
+                "unknown action (switches=N, button, button=down, button=up, reset, occlude=NAME, push=DX_MM[,DYAW_DEG[,SECONDS]], lift, place, send=TEXT, end)",
                 word);
 }
 
@@ -123,6 +160,9 @@ const input_action_t *input_due(input_t *in, double t_s)
 int input_needs_board(const input_t *in)
 {
     for (int i = 0; i < in->n; i++)
-        if (in->a[i].kind != INPUT_OCCLUDE && in->a[i].kind != INPUT_END) return 1;
+        switch (in->a[i].kind) {
+        case INPUT_OCCLUDE: case INPUT_END: case INPUT_PUSH: case INPUT_LIFT: case INPUT_PLACE: break; /* on the world */
+        default: return 1;
+        }
     return 0;
 }

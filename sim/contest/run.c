@@ -130,7 +130,8 @@ static int set_goal(run_t *r)
     return 0;
 }
 
-/* The hands' actions due now: occlude and end here, the rest on the board
+/* The hands' actions due now: occlude, push, lift, place and end here (on
+ * the world, any driver), the rest on the board
  * (the driver's hands). NULL, or why the run ends. */
 static const char *hands(run_t *r)
 {
@@ -138,7 +139,10 @@ static const char *hands(run_t *r)
     input_t *in = &r->input;
     while ((a = input_due(in, sim_time_s(&r->sim))) != NULL) {
         if (a->kind == INPUT_END) return "input_end";
-        if (a->kind == INPUT_OCCLUDE) sim_ir_occlude(&r->sim, a->value, INPUT_OCCLUDE_M, INPUT_OCCLUDE_S);
+        if (a->kind == INPUT_OCCLUDE) sim_occlude(&r->sim, a->value, INPUT_OCCLUDE_M, INPUT_OCCLUDE_S);
+        else if (a->kind == INPUT_PUSH) sim_push(&r->sim, a->push[0] / 1000.0, a->push[1] * M_PI / 180.0, a->push[2]);
+        else if (a->kind == INPUT_LIFT) sim_lift(&r->sim);
+        else if (a->kind == INPUT_PLACE) sim_place(&r->sim);
         else if (r->drv->hands) r->drv->hands(r, r->self, a);
     }
     return NULL;
@@ -152,9 +156,32 @@ static void gui_hands(run_t *r)
                                           [VIEW_HAND_BUTTON_UP] = INPUT_BUTTON_UP, [VIEW_HAND_RESET] = INPUT_RESET };
     view_hand_t h;
     while (view_hands_request(r->view, &h)) {
-        input_action_t a = { sim_time_s(&r->sim), kinds[h.kind], (int)h.switches, "" };
+        input_action_t a;
+        memset(&a, 0, sizeof a);
+        a.t_s = sim_time_s(&r->sim);
+        a.kind = kinds[h.kind];
+        a.value = (int)h.switches;
         r->drv->hands(r, r->self, &a);
     }
+}
+
+/* Each occlude's sensor found in the robot (its part index into the
+ * action's value): 0, or -1 after one line naming the input and the
+ * sensors there are. The parser has no robot, so this waits for the model. */
+static int resolve_occlusions(run_t *r)
+{
+    for (int i = 0; i < r->input.n; i++) {
+        input_action_t *a = &r->input.a[i];
+        if (a->kind != INPUT_OCCLUDE) continue;
+        a->value = sim_occlude_find(&r->sim, a->text);
+        if (a->value >= 0) continue;
+        char names[200];
+        sim_occlude_names(&r->sim, names, sizeof names);
+        fprintf(stderr, "--input:%d:%d: occlude=%s: the robot has no IR or ToF sensor of that name (its sensors: %s)\n", a->spec,
+                a->col, a->text, names);
+        return -1;
+    }
+    return 0;
 }
 
 /* The config, the maze, the world, the driver and the outputs: 0 or the exit code. */
@@ -177,6 +204,10 @@ static int setup(run_t *r)
     r->tel_on = r->o->telem.url || r->o->telem.log_path;
     r->reason = "done";
     r->input = r->o->input;
+    if (resolve_occlusions(r) != 0) {
+        sim_free(&r->sim);
+        return RUN_BAD_INPUT;
+    }
     int orc = r->drv->open(r, &r->self);
     if (orc != 0) {
         sim_free(&r->sim);

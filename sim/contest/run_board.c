@@ -200,6 +200,10 @@ static void board_results(run_t *r, void *self, json_t *j)
                                                    !br->eeprom_failed));
     const avrhost_t *h = board_host(bd);
     if (h->wdt_resets) json_object_set_new(b, "watchdog_resets", json_integer((json_int_t)h->wdt_resets));
+    /* every reset by its cause: the run's power-on, the reset button (--input reset, the HUD), the
+     * watchdog; brown-out never (the board's VCC is its file's vcc_v, held by the regulator) */
+    json_object_set_new(b, "reset_causes", json_pack("{s:i, s:I, s:I, s:i}", "power_on", 1, "external", (json_int_t)st->resets,
+                                                     "watchdog", (json_int_t)h->wdt_resets, "brown_out", 0));
     if (h->crash) json_object_set_new(b, "crash", json_pack("{s:I, s:s}", "pc", (json_int_t)h->crash_pc, "cause", h->crash));
     json_object_set_new(j, "board", b);
     size_t n;

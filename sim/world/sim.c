@@ -99,6 +99,9 @@ int sim_init(sim_state_t *s, const sim_model_t *model, const maze_t *m, uint64_t
     s->tof_enabled = 1;
     s->diverged = 0;
     s->step = 0;
+    s->push_from = s->push_steps = 0;
+    s->push_m = s->push_rad = 0;
+    s->supply_drop_v = 0;
     if (parts_init(s, seed) != 0) {
         sim_free(s);
         return -1;
@@ -132,7 +135,48 @@ static void battery_step(sim_state_t *s, double dt)
     double i_in[2] = { bridge_in_a(&s->motor[0]), bridge_in_a(&s->motor[1]) };
     battery_draw(&s->battery, i_in[0] + i_in[1], dt);
     double ocv = battery_ocv(&s->battery), r = s->model->cfg->robot.battery.r_ohm;
-    for (int i = 0; i < 2; i++) s->motor[i].battery_v = ocv - r * i_in[1 - i];
+    for (int i = 0; i < 2; i++) s->motor[i].battery_v = fmax(ocv - r * i_in[1 - i] - s->supply_drop_v, 0.0);
+}
+
+void sim_set_supply_drop(sim_state_t *s, double drop_v)
+{
+    s->supply_drop_v = drop_v > 0 ? drop_v : 0;
+    for (int i = 0; i < 2; i++) s->motor[i].battery_v = fmax(battery_ocv(&s->battery) - s->supply_drop_v, 0.0);
+}
+
+double sim_supply_v(const sim_state_t *s) { return fmax(sim_battery_v(s) - s->supply_drop_v, 0.0); }
+
+int sim_push(sim_state_t *s, double dx_m, double dyaw_rad, double dur_s)
+{
+    if (world_carried(s->world)) return -1;
+    double n = round(dur_s / s->model->cfg->sim.step_s);
+    s->push_from = s->step;
+    s->push_steps = n < 1 ? 1 : (uint64_t)n;
+    s->push_m = dx_m;
+    s->push_rad = dyaw_rad;
+    return 0;
+}
+
+void sim_lift(sim_state_t *s)
+{
+    s->push_steps = 0;
+    world_carry(s->world, 1);
+}
+
+void sim_place(sim_state_t *s) { world_carry(s->world, 0); }
+
+/* The hand's grip for this step of a push (sim_push), or let go after it. */
+static void hand_step(sim_state_t *s, double dt)
+{
+    if (!s->push_steps) return;
+    if (s->step >= s->push_from + s->push_steps) {
+        world_hand(s->world, 0, 0, 0);
+        s->push_steps = 0;
+        return;
+    }
+    double T = (double)s->push_steps * dt, t = ((double)(s->step - s->push_from) + 0.5) * dt;
+    double shape = 1 - cos(2 * M_PI * t / T); /* averages 1 over the push */
+    world_hand(s->world, 1, s->push_m / T * shape, s->push_rad / T * shape);
 }
 
 void sim_step(const sim_model_t *m, sim_state_t *s)
@@ -142,6 +186,7 @@ void sim_step(const sim_model_t *m, sim_state_t *s)
     if (s->diverged) return;
     motor_drive_t d[2];
     for (int i = 0; i < 2; i++) d[i] = motor_drive(&s->motor[i], s->cmd[i], world_wheel_rate(s->world, i), dt);
+    hand_step(s, dt);
     world_step(s->world, d);
     s->step++;
     if (!world_sane(s->world)) {
@@ -178,17 +223,50 @@ unsigned sim_ir_read(sim_state_t *s, unsigned i)
     return (unsigned)ir_sample(s->part_state[k], &s->model->cfg->robot.part[k], &x);
 }
 
-int sim_ir_occlude(sim_state_t *s, int side, double d_m, double dur_s)
+/* A sensor an object can be held before: IR or ToF. */
+static int occludable(const robot_part_t *p) { return !strcmp(p->kind->name, "ir") || !strcmp(p->kind->name, "tof"); }
+
+int sim_occlude_find(const sim_state_t *s, const char *name)
 {
-    for (int k = 0; k < s->model->cfg->robot.nparts; k++) {
-        const robot_part_t *p = &s->model->cfg->robot.part[k];
+    const simcfg_robot_t *rc = &s->model->cfg->robot;
+    for (int k = 0; k < rc->nparts; k++)
+        if (occludable(&rc->part[k]) && !strcmp(rc->part[k].name, name)) return k;
+    int side = !strcmp(name, "left") ? 0 : !strcmp(name, "right") ? 1 : -1;
+    for (int k = 0; side >= 0 && k < rc->nparts; k++) { /* the aliases: a forward IR sensor off the centre line */
+        const robot_part_t *p = &rc->part[k];
         if (strcmp(p->kind->name, "ir") != 0 || fabs(p->yaw_deg) > 30 || (side ? p->x_m <= 0 : p->x_m >= 0)) continue;
-        ir_state_t *st = s->part_state[k];
-        st->object_m = d_m;
-        st->object_until_s = sim_time_s(s) + dur_s;
-        return 0;
+        return k;
     }
     return -1;
+}
+
+void sim_occlude_names(const sim_state_t *s, char *out, size_t len)
+{
+    const simcfg_robot_t *rc = &s->model->cfg->robot;
+    size_t used = 0;
+    out[0] = '\0';
+    for (int k = 0; k < rc->nparts && used < len; k++)
+        if (occludable(&rc->part[k])) {
+            int n = snprintf(out + used, len - used, "%s%s", used ? ", " : "", rc->part[k].name);
+            if (n > 0) used += (size_t)n;
+        }
+    if (!out[0]) snprintf(out, len, "none");
+}
+
+void sim_occlude(sim_state_t *s, int part, double d_m, double dur_s)
+{
+    if (part < 0 || part >= s->model->cfg->robot.nparts) return;
+    const robot_part_t *p = &s->model->cfg->robot.part[part];
+    double until_s = sim_time_s(s) + dur_s;
+    if (!strcmp(p->kind->name, "ir")) {
+        ir_state_t *st = s->part_state[part];
+        st->object_m = d_m;
+        st->object_until_s = until_s;
+    } else if (!strcmp(p->kind->name, "tof")) {
+        tof_state_t *st = s->part_state[part];
+        st->object_m = d_m;
+        st->object_until_s = until_s;
+    }
 }
 
 int sim_has_gyro(const sim_state_t *s) { return robot_count(s->model->cfg, "gyro") > 0; }

@@ -32,6 +32,9 @@ struct world {
     double (*wall_bounds)[4]; /* their floor bounds: min x, max x, min y, max y, m */
     int nwalls;
     wallgrid_t *grid;       /* the boxes by cell, for rays */
+    dJointID hand_lin, hand_yaw; /* world_hand: a hand's grip on the chassis (made on first use) */
+    double carry_pose[3];   /* world_carry: where it was lifted from (x m, y m, heading rad) */
+    int carried;
     double box_offset[3];  /* chassis box centre in the chassis body frame */
     double com[3];         /* chassis centre of mass in the robot frame (world_place) */
     int touching, touched_last;
@@ -484,23 +487,82 @@ void world_dyno(world_t *w, double rate_rad_s)
     }
 }
 
-void world_lift(world_t *w, int lock_wheels)
+/* The chassis and wheels raised WORLD_CARRY_M and the chassis fixed to the world there. */
+static void hold_up(world_t *w)
 {
     const dReal *p = dBodyGetPosition(w->chassis);
-    double up = 0.05; /* m: the wheels clear the floor */
-    dBodySetPosition(w->chassis, p[0], p[1], p[2] + up);
+    dBodySetPosition(w->chassis, p[0], p[1], p[2] + WORLD_CARRY_M);
     for (int s = 0; s < 2; s++) {
         const dReal *q = dBodyGetPosition(w->wheel[s]);
-        dBodySetPosition(w->wheel[s], q[0], q[1], q[2] + up);
+        dBodySetPosition(w->wheel[s], q[0], q[1], q[2] + WORLD_CARRY_M);
     }
     w->lift = dJointCreateFixed(w->world, 0);
     dJointAttach(w->lift, w->chassis, 0);
     dJointSetFixed(w->lift);
+}
+
+void world_lift(world_t *w, int lock_wheels)
+{
+    hold_up(w);
     for (int s = 0; s < 2 && lock_wheels; s++) {
         w->lock[s] = dJointCreateFixed(w->world, 0);
         dJointAttach(w->lock[s], w->chassis, w->wheel[s]);
         dJointSetFixed(w->lock[s]);
     }
+}
+
+void world_carry(world_t *w, int on)
+{
+    if (on == w->carried) return;
+    if (on) {
+        world_hand(w, 0, 0, 0);
+        world_pose(w, &w->carry_pose[0], &w->carry_pose[1], &w->carry_pose[2]);
+        hold_up(w);
+    } else {
+        dJointDestroy(w->lift);
+        w->lift = 0;
+        world_place(w, w->carry_pose[0], w->carry_pose[1], w->carry_pose[2], NULL);
+    }
+    w->carried = on;
+}
+
+int world_carried(const world_t *w) { return w->carried; }
+
+/* The hand's grip: a linear motor on the chassis' centre of mass along the
+ * world's x and y (its height free: it rests on its wheels) and an angular
+ * motor about the world's z, each against the world. */
+static void hand_make(world_t *w)
+{
+    w->hand_lin = dJointCreateLMotor(w->world, 0);
+    dJointAttach(w->hand_lin, w->chassis, 0);
+    dJointSetLMotorNumAxes(w->hand_lin, 2);
+    dJointSetLMotorAxis(w->hand_lin, 0, 0, 1, 0, 0); /* rel 0: the world's axes */
+    dJointSetLMotorAxis(w->hand_lin, 1, 0, 0, 1, 0);
+    w->hand_yaw = dJointCreateAMotor(w->world, 0);
+    dJointAttach(w->hand_yaw, w->chassis, 0);
+    dJointSetAMotorNumAxes(w->hand_yaw, 1);
+    dJointSetAMotorAxis(w->hand_yaw, 0, 0, 0, 0, 1);
+}
+
+void world_hand(world_t *w, int on, double v_m_s, double omega_rad_s)
+{
+    if (!w->hand_lin && !on) return;
+    if (!w->hand_lin) hand_make(w);
+    double f_n = on ? WORLD_HAND_FORCE_N : 0, t_nm = on ? WORLD_HAND_TORQUE_NM : 0;
+    dVector3 fwd, axle;
+    double r_w = (w->model->wheel_r_m[0] + w->model->wheel_r_m[1]) / 2;
+    dBodyVectorToWorld(w->chassis, 0, 1, 0, fwd);
+    /* the axle's middle, from the centre of mass (the body's origin) */
+    dBodyGetRelPointPos(w->chassis, -w->com[0], w->model->cfg->robot.axle_y_m - w->com[1], r_w - w->com[2], axle);
+    const dReal *c = dBodyGetPosition(w->chassis);
+    double n = hypot(fwd[0], fwd[1]), rx = c[0] - axle[0], ry = c[1] - axle[1];
+    /* the centre of mass's velocity when the axle's middle goes v_m_s ahead and the chassis turns omega_rad_s */
+    dJointSetLMotorParam(w->hand_lin, dParamVel, v_m_s * fwd[0] / n - omega_rad_s * ry);
+    dJointSetLMotorParam(w->hand_lin, dParamVel2, v_m_s * fwd[1] / n + omega_rad_s * rx);
+    dJointSetLMotorParam(w->hand_lin, dParamFMax, f_n);
+    dJointSetLMotorParam(w->hand_lin, dParamFMax2, f_n);
+    dJointSetAMotorParam(w->hand_yaw, dParamVel, omega_rad_s);
+    dJointSetAMotorParam(w->hand_yaw, dParamFMax, t_nm);
 }
 
 void world_pose(const world_t *w, double *x_m, double *y_m, double *heading_rad)

@@ -37,6 +37,20 @@ void world_step(world_t *w, const motor_drive_t drive[2]);
 /* For the validation bench: the chassis held 50 mm above the floor (the
  * wheels spin free), and with lock_wheels the wheels fixed to it (stall). */
 void world_lift(world_t *w, int lock_wheels);
+/* A person's hands. world_hand: the chassis gripped (on) so that its
+ * axle's middle moves v_m_s along its heading and it turns omega_rad_s
+ * counter-clockwise, over the floor on its own wheels (they roll, and the
+ * encoders count as they turn), with at most WORLD_HAND_FORCE_N and
+ * WORLD_HAND_TORQUE_NM (a wall stops it); on = 0 lets go. Set again each
+ * step as the heading turns. world_carry: lifted WORLD_CARRY_M and held
+ * still there, the wheels free (on), or put back down level, resting where
+ * it was lifted, its wheel angles kept (off). */
+#define WORLD_HAND_FORCE_N 20.0   /* N: a firm push; the robot weighs ~1.5 N */
+#define WORLD_HAND_TORQUE_NM 1.0  /* N*m: a firm twist */
+#define WORLD_CARRY_M 0.05        /* m: the wheels clear the floor */
+void world_hand(world_t *w, int on, double v_m_s, double omega_rad_s);
+void world_carry(world_t *w, int on);
+int world_carried(const world_t *w);
 /* For the bench: a brake of load_nm against each wheel's motion, this step. */
 void world_brake(world_t *w, double load_nm);
 /* For the bench: a dynamometer that holds each wheel at rate_rad_s

@@ -90,7 +90,7 @@ typedef struct {
     ir_t ir;
     int last[2];               /* the latest sample with its emitter off [0] and on [1], counts; -1 none */
     uint32_t count;            /* samples taken */
-    double object_m, object_until_s; /* an object held object_m ahead of it until then (sim_ir_occlude) */
+    double object_m, object_until_s; /* an object held object_m ahead of it until then (sim_occlude) */
 } ir_state_t;
 
 /* UKMARSBOT's sensor (values and sources in ir.c). */

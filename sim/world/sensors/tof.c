@@ -67,7 +67,8 @@ static void step(void *state, const robot_part_t *p, const sensor_ctx_t *x)
     t->next_step += t->period_steps;
     if (!t->enabled) return;
     /* rays only when the sensor updates: one ray per 30 ms, not per step */
-    t->true_m = ray(sensor_pose(x->model, p), x->world, t->tof.spec->range_m);
+    if (x->t_s < t->object_until_s) t->true_m = t->object_m; /* a hand before it */
+    else t->true_m = ray(sensor_pose(x->model, p), x->world, t->tof.spec->range_m);
     t->last = tof_measure(&t->tof, t->true_m);
     t->count++;
 }

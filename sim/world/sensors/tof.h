@@ -43,6 +43,7 @@ typedef struct {
     double true_m;       /* the ray behind the last reading, m; -1 none */
     uint32_t count;      /* readings taken */
     int enabled;         /* 0: readings paused (a link that sends none) */
+    double object_m, object_until_s; /* an object held object_m ahead of it until then, m and s (sim_occlude) */
 } tof_state_t;
 
 
