@@ -9,7 +9,8 @@
 # JSON equals the run's without --gdb (but wall_time_s / real_time_factor):
 # the whole simulation waited in lockstep. Also: the stub listens on the
 # loopback interface only; a `kill` from gdb and the same image as a link
-# MCU (--avr alone) end with the same JSON; bad ports are one line and
+# MCU (--avr alone) end with the same JSON, and so does a gdb killed by a
+# signal at a breakpoint; halted, mmsim uses next to no CPU; bad ports are one line and
 # exit 2, a port in use one line and exit 3. Every process under timeout:
 # the test never hangs. SKIP only without avr-gdb (Debian's gdb-avr).
 set -u
@@ -73,8 +74,24 @@ addrs = [l.split()[1].split(":")[0] for l in open("/proc/net/tcp").read().splitl
          if l.split()[1].endswith(":" + port) and l.split()[3] == "0A"]
 sys.exit(0 if addrs == ["0100007F"] else 1)
 PY
+  # halted, waiting for gdb: no busy loop (CPU time of mmsim over a second of wall time)
+  if [ "$name" = board ]; then
+    local pid t0 t1
+    pid=$(pgrep -P "$MPID" | head -1)
+    t0=$(awk '{print $14 + $15}' "/proc/$pid/stat" 2>/dev/null || echo 0); sleep 1
+    t1=$(awk '{print $14 + $15}' "/proc/$pid/stat" 2>/dev/null || echo 999)
+    [ $((t1 - t0)) -le 20 ] && ok "$name: halted, mmsim used $((t1 - t0)) clock ticks of CPU in 1 s (no busy loop)" \
+      || bad "$name: halted, mmsim used $((t1 - t0)) clock ticks of CPU in 1 s"
+  fi
   printf 'set confirm off\nset pagination off\ntarget remote :%s\n%s\n' "$port" "$cmds" >"$T/$name.cmds"
-  timeout 60 avr-gdb -batch -nx -x "$T/$name.cmds" "$ELF" >"$T/$name.gdb" 2>&1
+  if [ "$name" = gone ]; then # gdb killed by a signal at the breakpoint: its socket closes
+    timeout 60 avr-gdb -batch -nx -x "$T/$name.cmds" "$ELF" >"$T/$name.gdb" 2>&1 &
+    local gpid=$!
+    for _ in $(seq 300); do grep -q '^Breakpoint 1,' "$T/$name.gdb" 2>/dev/null && break; sleep 0.1; done
+    kill -9 $(pgrep -P $gpid) 2>/dev/null; wait $gpid 2>/dev/null
+  else
+    timeout 60 avr-gdb -batch -nx -x "$T/$name.cmds" "$ELF" >"$T/$name.gdb" 2>&1
+  fi
   echo $? >"$T/$name.gdbrc"
   wait $MPID
   echo $? >"$T/$name.rc"
@@ -117,6 +134,13 @@ continue
 kill" "${BOARD[@]}"
 grep -q "killed" "$T/kill.gdb" && ok "kill: gdb killed the session" || bad "kill: $(tail -2 "$T/kill.gdb")"
 same kill plain
+
+# ---- gdb killed by a signal while the firmware is halted: the run goes on to its end ----
+session gone "break probe_tick
+continue
+python import time; time.sleep(30)" "${BOARD[@]}"
+grep -q '^Breakpoint 1,' "$T/gone.gdb" && ok "gone: gdb was at the breakpoint when killed" || bad "gone: $(tail -2 "$T/gone.gdb")"
+same gone plain
 
 # ---- the same image as a link MCU (--avr alone, pil.c): continue, stepi, disconnect ----
 PIL=(--maze "$T/open.txt" --avr "$ELF" --time-limit 1 --json)
