@@ -9,7 +9,7 @@ DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev l
 	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev \
 	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev \
 	liblcm-java default-jdk-headless default-jre libjchart2d-java xvfb iproute2 \
-	libpng-dev libglfw3-dev libgl-dev python3-venv libx11-dev libxtst-dev
+	libpng-dev libglfw3-dev libgl-dev python3-venv libx11-dev libxtst-dev gdb-avr
 
 CC      ?= gcc
 STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
@@ -302,11 +302,12 @@ define MRC_BUILD
 	avr-gcc $(ARD_nano) -Os -Wl,--gc-sections $(2).o $(NANO_CORE) -lm -o $(2)
 endef
 # Our test sketches for the board emulation (test/cli_board.sh), built for the
-# Nano with the same core archive (no ../shared needed).
+# Nano with the same core archive (no ../shared needed); with DWARF debug info
+# (avr-gcc 5.4's plain -g is stabs) for avr-gdb (test/cli_gdb.sh).
 board-sketches: $(BOARD_SKETCHES)
 $(B)/clients/board/%.elf: test/arduino/board/%.ino $(NANO_CORE)
 	@mkdir -p $(dir $@)
-	avr-g++ $(ARD_nano) $(ARD_BASE) $(ARD_CXX) -Wall -x c++ -include Arduino.h -c $< -o $@.o
+	avr-g++ $(ARD_nano) $(ARD_BASE) $(ARD_CXX) -gdwarf-4 -Wall -x c++ -include Arduino.h -c $< -o $@.o
 	avr-gcc $(ARD_nano) -Os -Wl,--gc-sections $@.o $(NANO_CORE) -lm -o $@
 # EncPoll with INT0/INT1 in edge mode: the other half of the benchmark pair (bench/run.sh)
 $(B)/clients/board/EncPollEdge.elf: test/arduino/board/EncPoll.ino $(NANO_CORE)

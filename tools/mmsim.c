@@ -46,6 +46,9 @@ static void usage(FILE *out)
           "             motors off after N ms without a message: framed 100 by default, compat never; 0 never)\n"
           "       mmsim --maze FILE --avr ELF [--mcu NAME] [--f-cpu HZ] [--baud N] [--protocol P] [--silence-ms N]\n"
           "             (processor in the loop: the AVR image runs in simavr, in lockstep)\n"
+          "       --gdb PORT with --avr (and --board): simavr's gdb stub on 127.0.0.1:PORT; the firmware and the\n"
+          "             whole simulation halt until avr-gdb attaches (target remote :PORT) and continues, and at each\n"
+          "             breakpoint or step; the JSON is the run's without --gdb (sim/board/README.md)\n"
           "       mmsim --maze FILE --board NAME|FILE --avr FIRMWARE.elf|.hex [--robot FILE] [--input \"T ACTION; ...\"]\n"
           "             [--goal X,Y]   (the image on an emulated board, boards/NAME-*.ini: pins, PWM, encoders, ADC,\n"
           "             UART; --verbose echoes its console; --input: a person's hands, T in sim seconds: switches=N,\n"
@@ -184,6 +187,16 @@ static int f_f_cpu(const char *prog, void *o, const char *arg)
     return 0;
 }
 
+/* --gdb PORT: a TCP port on 127.0.0.1 for avr-gdb */
+static int f_gdb(const char *prog, void *o, const char *arg)
+{
+    double v;
+    if (cli_number(prog, "--gdb", arg, 1, 65535, &v)) return CLI_BAD_INPUT;
+    if (v != floor(v)) return bad("--gdb: expected a TCP port, a whole number from 1 to 65535, got '%s'", arg);
+    run_of(o)->gdb_port = (unsigned)v;
+    return 0;
+}
+
 static int f_mms(const char *prog, void *o, const char *arg)
 {
     if (!*arg) return bad("%s", "--mms: expected a command, e.g. --mms 'python3 main.py'");
@@ -250,6 +263,7 @@ static const cli_opt_t flags[] = {
     { .name = "board", .kind = CLI_STR, .off = RUN(board) },
     { .name = "eeprom", .kind = CLI_STR, .off = RUN(eeprom_path) },
     { .name = "f-cpu", .kind = CLI_FN, .fn = f_f_cpu, .has_arg = 1 },
+    { .name = "gdb", .kind = CLI_FN, .fn = f_gdb, .has_arg = 1 },
     { .name = "mms", .kind = CLI_FN, .fn = f_mms, .has_arg = 1 },
     { .name = "mms-ideal-walls", .kind = CLI_SET, .off = RUN(mms.ideal_walls) },
     { .name = "mms-timeout-ms", .kind = CLI_INT, .off = RUN(mms.timeout_ms), .lo = 1, .hi = 3600000 },
@@ -271,6 +285,7 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (!!o->link.device + o->link.pty + !!o->avr_elf > 1) return bad("%s", "--serial/--port, --pty and --avr exclude each other");
     if (!o->serial && link_flags) return bad("%s", "--protocol and --silence-ms need --serial DEV, --pty or --avr ELF");
     if (!o->avr_elf && (o->avr_mcu || o->avr_f_cpu)) return bad("%s", "--mcu and --f-cpu need --avr ELF");
+    if (o->gdb_port && !o->avr_elf) return bad("%s", "--gdb PORT needs --avr FIRMWARE (with or without --board): the AVR runs in simavr");
     if (!o->mms.command && mms_flags) return bad("%s", "--mms-ideal-walls, --mms-timeout-ms and --mms-reset-at need --mms COMMAND");
     if (o->mms.command && o->verbose) o->mms.trace = stderr; /* --verbose: the mms dialogue too */
     if (o->mms.command && o->gui) o->mms.idle_wait = 1; /* an idle algorithm waits for the viewer's Reset button */

@@ -24,6 +24,10 @@ static elf_firmware_t fw; /* the ELF between avrhost_read and avrhost_put (large
 /* simavr's messages: errors kept for our one-line messages (the last one),
  * never printed by simavr itself; the rest dropped */
 static char last_log[200];
+/* simavr's avr_sadly_crashed said its name (its log line) since the last
+ * run: with gdb's stub on it halts the core (cpu_Stopped) instead of
+ * cpu_Crashed, to wait for gdb; the host ends the run as without gdb */
+static int sadly_crashed;
 
 static void quiet_logger(avr_t *avr, const int level, const char *fmt, va_list ap)
 {
@@ -32,6 +36,7 @@ static void quiet_logger(avr_t *avr, const int level, const char *fmt, va_list a
     vsnprintf(last_log, sizeof last_log, fmt, ap);
     size_t n = strlen(last_log);
     while (n > 0 && (last_log[n - 1] == '\n' || last_log[n - 1] == '\r')) last_log[--n] = '\0';
+    if (!strcmp(last_log, "avr_sadly_crashed")) sadly_crashed = 1;
 }
 
 static void log_install(void) { avr_global_logger_set(quiet_logger); }
@@ -382,18 +387,45 @@ static int crash_line(const avrhost_t *h, char *err, size_t errn)
                     h->crash_pc, h->crash, detail), -1;
 }
 
+int avrhost_gdb(avrhost_t *h, unsigned port, char *err, size_t errn)
+{
+    void (*keep)(avr_t *, avr_cycle_count_t) = h->avr->sleep;
+    if (avrgdb_start(&h->stub, h->avr, port, err, errn) != 0) return -1;
+    h->avr->sleep = keep; /* the stub's sleep waits on its socket in wall time; ours jumps the cycles */
+    h->gdb = 1;
+    sadly_crashed = 0;
+    return 0;
+}
+
+/* One call into the core. With gdb's stub on: halted, it serves gdb (the
+ * caller's cycle stays, so nothing else advances); else it runs (one
+ * instruction while gdb is attached), and a crash simavr halted for gdb
+ * ends the firmware as it does without gdb. */
+static int run_once(avrhost_t *h)
+{
+    avr_t *avr = h->avr;
+    if (h->gdb && avr->state == cpu_Stopped && !sadly_crashed) {
+        avrgdb_wait(&h->stub, avr);
+        return avr->state;
+    }
+    h->running = 1;
+    int state = h->gdb ? avrgdb_run(&h->stub, avr) : avr_run(avr);
+    h->running = 0;
+    if (h->gdb && sadly_crashed) state = avr->state = cpu_Crashed;
+    return state;
+}
+
 int avrhost_run_to(avrhost_t *h, uint64_t until, char *err, size_t errn)
 {
     if (h->crash) return crash_line(h, err, errn);
     avr_t *avr = h->avr;
     if (avr->cycle >= until) return 0;
-    avr->run_cycle_limit = AVRHOST_BATCH_MAX_CYCLES; /* a reset (avr_reset) sets it back to 1 */
+    /* a reset (avr_reset) sets it back to 1; 1 while gdb is attached: simavr checks breakpoints between avr_run calls */
+    avr->run_cycle_limit = h->gdb && avrgdb_attached(&h->stub, avr) ? 1 : AVRHOST_BATCH_MAX_CYCLES;
     avr_cycle_timer_register(avr, until - avr->cycle, on_stop, h);
     while (avr->cycle < until) {
         uint32_t pc_was = avr->pc;
-        h->running = 1;
-        int state = avr_run(avr);
-        h->running = 0;
+        int state = run_once(h);
         sp_check(h);
         if (h->crash || state == cpu_Done || state == cpu_Crashed) {
             avr_cycle_timer_cancel(avr, on_stop, h);
@@ -407,6 +439,8 @@ int avrhost_run_to(avrhost_t *h, uint64_t until, char *err, size_t errn)
 
 void avrhost_close(avrhost_t *h)
 {
+    if (h->avr && h->gdb) avrgdb_stop(h->avr); /* its sockets closed: a gdb still attached sees the connection close */
+    h->gdb = 0;
     if (h->avr) avr_terminate(h->avr);
     free(h->watch); /* after the core, whose IO list held it */
     h->watch = NULL;

@@ -16,6 +16,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "avrgdb.h"
 #include "extint_level.h"
 #include "image.h"
 
@@ -66,6 +67,8 @@ typedef struct {
     uint32_t crash_pc;            /* the program counter then, a byte address in flash */
     uint32_t crash_sp;            /* the stack pointer then */
     extint_level_t lvl;           /* INT0/INT1's low-level mode at edge-mode cost */
+    int gdb;                      /* simavr's gdb stub is on (avrhost_gdb) */
+    avrgdb_t stub;                /* its sockets */
 } avrhost_t;
 
 /* Read and check the image at path before simavr reads it (image.h): a
@@ -102,6 +105,16 @@ size_t avrhost_room(const avrhost_t *h);
 void avrhost_queue(avrhost_t *h, const uint8_t *bytes, size_t n);
 /* Hand queued bytes to the receiver until it says XOFF. */
 void avrhost_feed(avrhost_t *h);
+/* Start simavr's gdb stub on 127.0.0.1:port (avrgdb.h), after
+ * avrhost_put: the core halts until gdb continues or steps. From then on
+ * avrhost_run_to runs one instruction per avr_run call while gdb is
+ * attached (simavr checks breakpoints between calls), in batches while it
+ * is not, and while the core is halted serves gdb without advancing its
+ * cycle: it returns only when the cycle is reached, so the caller's
+ * physics and clock wait with it. A crash that simavr halts for gdb ends
+ * the firmware as without gdb. 0, or -1 with "cannot listen on
+ * 127.0.0.1:PORT: REASON" in err. */
+int avrhost_gdb(avrhost_t *h, unsigned port, char *err, size_t errn);
 /* Run the AVR up to cycle until. 0, or -1 with "firmware crashed at cycle
  * N, PC 0xPC: CAUSE (detail)" in err and h->crash set to the cause:
  * "stack_overflow" (the stack pointer left SRAM: the run ends before the

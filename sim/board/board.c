@@ -215,5 +215,6 @@ int board_eeprom_end(board_t *b, int *written, int *changed, char *err, size_t e
 }
 const board_spec_t *board_spec(const board_t *b) { return &b->spec; }
 const avrhost_t *board_host(const board_t *b) { return &b->host; }
+int board_gdb(board_t *b, unsigned port, char *err, size_t errn) { return avrhost_gdb(&b->host, port, err, errn); }
 
 const board_stats_t *board_stats(const board_t *b) { return &b->st; }

@@ -175,6 +175,9 @@ const board_stats_t *board_stats(const board_t *b);
 const board_spec_t *board_spec(const board_t *b);
 /* The AVR core (read only): its crash (h->crash) and watchdog resets. */
 const avrhost_t *board_host(const board_t *b);
+/* --gdb: simavr's gdb stub on 127.0.0.1:port, the firmware halted until
+ * gdb continues (avrhost_gdb). 0, or -1 with the reason in err. */
+int board_gdb(board_t *b, unsigned port, char *err, size_t errn);
 /* The A6-style ladder's voltage for switches n and the button, V. */
 double board_switch_volts(const board_spec_t *spec, unsigned n, int button);
 

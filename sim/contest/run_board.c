@@ -136,6 +136,8 @@ static int board_open_run(run_t *r, void **self)
     if (r->o->verbose) board_set_echo(b->board, stderr);
     *self = b;
     int rc = console_open(r, b);
+    if (!rc && r->o->gdb_port)
+        rc = run_gdb_said(r->o->gdb_port, board_gdb(b->board, r->o->gdb_port, err, sizeof err) ? err : NULL);
     if (rc) board_close_run(r, b);
     return rc;
 }

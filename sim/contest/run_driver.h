@@ -19,6 +19,7 @@
 #ifndef RUN_DRIVER_H
 #define RUN_DRIVER_H
 
+#include <stdio.h>
 #include <string.h>
 
 #include "contest/run.h"
@@ -91,6 +92,18 @@ extern const run_driver_t run_firmware, run_mms, run_scripted, run_serial, run_a
  * under way (run_link.c), its run_serial state in *self. 0, or -1 with
  * the reason in err. */
 int run_link_connect(run_t *r, const char *port, long baud, void **self, char *err, size_t errlen);
+/* --gdb PORT: after the stub's start (err NULL) the line that says where
+ * it waits, else the reason it did not start; RUN_OK or RUN_EXTERNAL. */
+static inline int run_gdb_said(unsigned port, const char *err)
+{
+    if (err) {
+        fprintf(stderr, "mmsim: --gdb %u: %s\n", port, err);
+        return RUN_EXTERNAL;
+    }
+    fprintf(stderr, "mmsim: --gdb: the firmware is halted until avr-gdb attaches to 127.0.0.1:%u (target remote :%u) and continues\n",
+            port, port);
+    return RUN_OK;
+}
 /* RUN_OK if a lap was completed and the run ended for one of the two
  * reasons given (or NULL), else RUN_NOT_REACHED. */
 static inline int run_exit_laps(const run_t *r, const char *ok1, const char *ok2)

@@ -179,7 +179,13 @@ static int avr_open(run_t *r, void **self)
     link_opts_t lo = link_opts(r);
     link_open_fd(&l->lnk, fd, "simavr UART0", &lo, r->cfg.sim.step_s, tof_range_mm(r), counts_x100(r),
                  r->o->verbose ? stderr : NULL);
-    return 0;
+    if (!r->o->gdb_port) return 0;
+    rc = run_gdb_said(r->o->gdb_port, avrhost_gdb(&l->pil.host, r->o->gdb_port, err, sizeof err) ? err : NULL);
+    if (rc) {
+        link_close(&l->lnk);
+        pil_close(&l->pil);
+    }
+    return rc;
 }
 
 static void avr_close(run_t *r, void *self)
