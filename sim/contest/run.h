@@ -51,6 +51,7 @@ typedef struct {
     const char *board;             /* --board NAME|FILE: the image (--avr) on an emulated board (sim/board) */
     int console_pty;               /* --console pty: the board's UART0 on a pseudo-terminal (a person's serial monitor) */
     const char *eeprom_path;       /* --eeprom FILE: the board's EEPROM loaded at power-on, saved at the end (NULL: blank, not kept) */
+    const char *watch;             /* --watch NAME[,NAME...]: the firmware's globals on MM_WATCH and in the report (NULL: none) */
 } run_opts_t;
 
 /* The defaults, then --config's file, --robot's file, then the flags that
