@@ -114,6 +114,29 @@ grep -q "'history' in .*: its type is an array: --watch reads 8/16/32-bit intege
 want_rc 2 "a variable in flash" run --avr "$IMG" --watch banner
 grep -q "'banner' in .* is not in SRAM" "$T/err" && ok "flash: its line" || bad "flash: $(cat "$T/err")"
 want_rc 2 "an empty name" run --avr "$IMG" --watch ticks,,ratio
+# crafted images: bytes of the symbol table, its strings and the DWARF changed
+# (a fixed seed); each run looks up two names (the DWARF walked) then one that
+# is not there: exit 2 with one line, never a signal or a sanitizer's report
+python3 - "$IMG" "$T" <<'PY'
+import random, struct, sys
+b = open(sys.argv[1], "rb").read()
+shoff, = struct.unpack_from("<I", b, 0x20)
+shentsize, shnum, shstrndx = struct.unpack_from("<HHH", b, 0x2E)
+sh = [struct.unpack_from("<IIIIII", b, shoff + i * shentsize) for i in range(shnum)]
+strs = b[sh[shstrndx][4]:]
+secs = {strs[h[0]:strs.index(b"\0", h[0])].decode(): (h[4], h[5]) for h in sh}
+rng = random.Random(23)
+for k in range(40):
+    off, size = secs[[".symtab", ".strtab", ".debug_info", ".debug_abbrev", ".debug_str"][k % 5]]
+    m = bytearray(b)
+    for _ in range(1 + k % 4):
+        m[off + rng.randrange(size)] = rng.randrange(256)
+    open("%s/mut%02d.elf" % (sys.argv[2], k), "wb").write(m)
+PY
+for f in "$T"/mut*.elf; do
+  want_rc 2 "crafted image $(basename "$f")" run --avr "$f" --watch ratio,offset,nope
+  grep -q "AddressSanitizer\|runtime error" "$T/err" && bad "$(basename "$f"): a sanitizer's report"
+done
 want_rc 2 "--watch without --board" "$MMSIM" --maze mazes/gen-5x5-s1.txt --avr "$IMG" --watch ticks
 echo "$fails failed"
 [ "$fails" -eq 0 ]

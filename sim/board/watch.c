@@ -90,8 +90,8 @@ static void type_word(watch_var_t *v)
 }
 
 /* One name looked up and typed: 0, or -1 with err. */
-static int look_up(const elfsyms_t *e, char *buf, const char *image, uint32_t ram_bytes, watch_var_t *v, FILE *note,
-                   char *err, size_t errn)
+static int look_up(const elfsyms_t *e, char *buf, const char *image, uint32_t ram_bytes, watch_var_t *v, char *err,
+                   size_t errn)
 {
     uint32_t value = 0, size = 0;
     int f = find_sym(e, v->name, &value, &size);
@@ -118,9 +118,6 @@ static int look_up(const elfsyms_t *e, char *buf, const char *image, uint32_t ra
         return snprintf(err, errn, "--watch: '%s' in %s lies outside the MCU's %u bytes of data space", v->name, image,
                         (unsigned)ram_bytes), -1;
     type_word(v);
-    if (!typed && note)
-        fprintf(note, "mmsim: --watch: %s has no DWARF type for '%s': read as %s (an unsigned integer of its size)\n",
-                image, v->name, v->type);
     return 0;
 }
 
@@ -163,8 +160,12 @@ int watch_open(watch_list_t *w, const char *image, const char *list, const struc
         snprintf(err, errn, "--watch: %s has no symbol table (a stripped image?): --watch needs one", image);
         rc = -1;
     }
-    for (int i = 0; i < w->n && rc == 0; i++) rc = look_up(&e, buf, image, ram_bytes, &w->v[i], note, err, errn);
+    for (int i = 0; i < w->n && rc == 0; i++) rc = look_up(&e, buf, image, ram_bytes, &w->v[i], err, errn);
     free(buf);
+    for (int i = 0; i < w->n && rc == 0 && note; i++) /* once every name is good: an error stays one line */
+        if (!w->v[i].typed)
+            fprintf(note, "mmsim: --watch: %s has no DWARF type for '%s': read as %s (an unsigned integer of its size)\n",
+                    image, w->v[i].name, w->v[i].type);
     return rc;
 }
 

@@ -42,7 +42,8 @@ typedef struct {
 
 /* Look up each name of list ("a,b,c") in the ELF at image, run on avr:
  * each variable must lie in its data space (simavr's ramend + 1 bytes).
- * note (may be NULL) gets a line per variable typed by its size alone.
+ * note (may be NULL) gets a line per variable typed by its size alone
+ * (when every name was found).
  * 0, or -1 with one line in err: "--watch: no global variable 'foo' in
  * IMAGE", a HEX image or an ELF without a symbol table, a type or size
  * that is not an 8/16/32-bit integer or a float, a bad list. */
