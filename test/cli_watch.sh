@@ -7,9 +7,10 @@
 # and one millis() tick of the millis() printed with it; the float, the
 # int32 and the int8 derived from it decode exactly (types from DWARF); the
 # run's JSON is the same with and without --watch; the report's table
-# holds the variables beside the pose. An image without DWARF is read by
-# size (one note line, the same ticks); bad names and images: one line,
-# exit 2.
+# holds the variables beside the pose. The same with --avr alone
+# (processor in the loop). An image without DWARF is read by size (one note
+# line, the same ticks); bad names and images, crafted symbol tables and
+# DWARF: one line, exit 2.
 set -u
 B=${BUILD:-build}
 SHARED=${SHARED:-../shared}
@@ -82,6 +83,24 @@ for f in fails: print("  " + f)
 sys.exit(1 if fails else 0)
 EOF
 
+# ---- --avr without a board (processor in the loop): the same sampling ----
+pil() { "$MMSIM" --maze mazes/gen-5x5-s1.txt --avr "$IMG" --time-limit 1 --json "$@"; }
+want_rc 1 "--avr --watch" pil --watch ticks,ratio --lcm-log "$T/p.lcmlog" --lcm-rate 1000
+cp "$T/out" "$T/pil.json"
+want_rc 1 "--avr without --watch" pil
+[ "$(strip "$T/pil.json")" = "$(strip "$T/out")" ] && ok "--avr: the JSON is the same with and without --watch" \
+  || bad "--avr: the JSON differs with --watch"
+"$MMLOG" --dump MM_WATCH "$T/p.lcmlog" >"$T/p.jsonl"
+python3 - "$T" <<'PY' && ok "--avr: ticks each step, by one, the float with it" || bad "--avr: watched values"
+import json, sys
+m = [json.loads(l) for l in open(sys.argv[1] + "/p.jsonl")]
+t = [x["value"][0] for x in m]
+ok = len(m) == 1000 and [x["utime"] for x in m] == [1000 * (i + 1) for i in range(1000)]
+ok = ok and all(b - a in (0, 1) for a, b in zip(t, t[1:])) and 97 <= t[-1] <= 100
+ok = ok and all(x["value"][1] in (x["value"][0] / 8, (x["value"][0] - 1) / 8) for x in m)
+sys.exit(0 if ok else 1)
+PY
+
 # ---- no DWARF: read by size, said once per variable on stderr ----
 avr-objcopy --strip-debug "$IMG" "$T/nodwarf.elf"
 want_rc 1 "an image without DWARF" run --avr "$T/nodwarf.elf" --watch ticks,ratio --lcm-log "$T/n.lcmlog" --lcm-rate 1000
@@ -137,6 +156,6 @@ for f in "$T"/mut*.elf; do
   want_rc 2 "crafted image $(basename "$f")" run --avr "$f" --watch ratio,offset,nope
   grep -q "AddressSanitizer\|runtime error" "$T/err" && bad "$(basename "$f"): a sanitizer's report"
 done
-want_rc 2 "--watch without --board" "$MMSIM" --maze mazes/gen-5x5-s1.txt --avr "$IMG" --watch ticks
+want_rc 2 "--watch without --avr" "$MMSIM" --maze mazes/gen-5x5-s1.txt --watch ticks
 echo "$fails failed"
 [ "$fails" -eq 0 ]

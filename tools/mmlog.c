@@ -207,8 +207,8 @@ static const decoder_t decoders[] = {
     { "MM_RACE_EVENT", dec_race_event },
     { "MM_BELIEF", dec_belief },
     { "MM_LINK", dec_link },
-    { "MM_MAZE", dec_maze },
     { "MM_WATCH", dec_watch },
+    { "MM_MAZE", dec_maze },
 };
 
 /* Decode one message of a known channel: its utime in *ut and, if j is not

@@ -45,7 +45,8 @@ static void usage(FILE *out)
           "             in real time; --pty creates a pseudo-terminal and prints its path; docs/PROTOCOL.md;\n"
           "             motors off after N ms without a message: framed 100 by default, compat never; 0 never)\n"
           "       mmsim --maze FILE --avr ELF [--mcu NAME] [--f-cpu HZ] [--baud N] [--protocol P] [--silence-ms N]\n"
-          "             (processor in the loop: the AVR image runs in simavr, in lockstep)\n"
+          "             [--watch NAME[,NAME...]]   (processor in the loop: the AVR image runs in simavr, in lockstep;\n"
+          "             --watch as for --board)\n"
           "       mmsim --maze FILE --board NAME|FILE --avr FIRMWARE.elf|.hex [--robot FILE] [--input \"T ACTION; ...\"]\n"
           "             [--goal X,Y]   (the image on an emulated board, boards/NAME-*.ini: pins, PWM, encoders, ADC,\n"
           "             UART; --verbose echoes its console; --input: a person's hands, T in sim seconds: switches=N,\n"
@@ -295,7 +296,7 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (m->batch && m->maze) return bad("%s", "--maze and --batch: one at a time (a batch runs every maze in DIR)");
     if (o->console_pty && !o->board) return bad("%s", "--console pty needs --board NAME");
     if (o->eeprom_path && !o->board) return bad("%s", "--eeprom FILE needs --board NAME");
-    if (o->watch && !o->board) return bad("%s", "--watch NAME needs --board NAME (the image's variables on the emulated board)");
+    if (o->watch && !o->avr_elf) return bad("%s", "--watch NAME needs --avr IMAGE.elf (with or without --board NAME): the image's variables");
     if (o->console_pty) o->realtime = 1; /* a person at a serial monitor: in real time */
     if (o->print_config || o->print_robot || m->validate) return 0;
     if (m->batch && (o->telem.url || o->telem.log_path)) return bad("%s", "--lcm and --lcm-log work on one maze, not with --batch");

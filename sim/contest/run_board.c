@@ -1,7 +1,8 @@
 /* run_board.c - an AVR image on an emulated board (--board NAME --avr
  * FIRMWARE.elf|.hex, sim/board): the board file's MCU in simavr, in
  * lockstep with the physics, its pins and ADC wired to the robot. The run
- * lasts the time limit (or until the AVR stops); --input's hands act on
+ * lasts the time limit (or until the AVR stops); --watch reads its
+ * variables (run_watch.c); --input's hands act on
  * its switches, button, reset and console; the JSON gets "board" (what its parts saw) and
  * "console" (everything the firmware printed). */
 #include "run_driver.h"
@@ -13,7 +14,6 @@
 #include <unistd.h>
 
 #include "board/board.h"
-#include "board/watch.h"
 #include "link/serial.h"
 
 typedef struct {
@@ -23,8 +23,7 @@ typedef struct {
     int eeprom_written;  /* the firmware wrote its EEPROM (--eeprom) */
     int eeprom_changed;  /* ... and its contents differ from power-on */
     int eeprom_failed;   /* --eeprom's file could not be saved */
-    watch_list_t watch;  /* --watch: the firmware's variables (watch.n 0: none) */
-    double watch_v[WATCH_MAX]; /* their values after the last step */
+    run_watch_t watch;   /* --watch: the firmware's variables */
 } board_run_t;
 
 /* One contest per process (run_one): the driver's state is static, as
@@ -136,9 +135,7 @@ static int board_open_run(run_t *r, void **self)
         board_close(b->board);
         return RUN_BAD_INPUT;
     }
-    if (r->o->watch && watch_open(&b->watch, r->o->avr_elf, r->o->watch, board_host(b->board)->avr, stderr, err,
-                                  sizeof err) != 0) {
-        fprintf(stderr, "mmsim: %s\n", err);
+    if (run_watch_open(r, &b->watch, board_host(b->board)->avr) != 0) {
         board_close(b->board);
         return RUN_BAD_INPUT;
     }
@@ -147,15 +144,6 @@ static int board_open_run(run_t *r, void **self)
     int rc = console_open(r, b);
     if (rc) board_close_run(r, b);
     return rc;
-}
-
-/* --watch: the firmware's variables after the AVR's cycles of the step, to
- * the telemetry (MM_WATCH) and the report; reading them changes nothing. */
-static void watch_out(run_t *r, board_run_t *b)
-{
-    watch_sample(&b->watch, board_host(b->board)->avr, b->watch_v);
-    if (r->tel_on) telem_watch(&r->tel, &r->sim, b->watch.n, b->watch.names, b->watch.types, b->watch_v);
-    if (r->rep) report_watch(r->rep, b->watch.n, b->watch.names, b->watch_v);
 }
 
 /* after the step: the console every 10 ms, then the AVR's cycles of the step */
@@ -170,7 +158,7 @@ static const char *board_after(run_t *r, void *self)
         if (board_host(b->board)->crash) return "firmware_crashed";
         return strstr(err, "auto-trigger") ? "board_unsupported" : "avr_stopped";
     }
-    if (b->watch.n) watch_out(r, b);
+    run_watch_step(r, &b->watch, board_host(b->board)->avr); /* --watch: after the AVR's cycles */
     if (sim_time_s(&r->sim) >= r->cfg.sim.time_limit_s) return "time_limit";
     return NULL;
 }

@@ -17,7 +17,7 @@
  *                                   the log alone replays (mmview)
  *   MM_WATCH                        with MM_POSE, when the run's driver
  *                                   hands telem_watch the firmware's
- *                                   variables (mmsim --watch: board runs)
+ *                                   variables (mmsim --watch: --board, --avr)
  * A channel's messages go out on the physics steps that are multiples of its
  * period (rate rounded to a whole number of steps), and once more at the end
  * (telem_finish) unless the last step was one of them.
