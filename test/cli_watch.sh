@@ -5,7 +5,8 @@
 # by millis() and prints "TICK n ms". Sampled every step (--lcm-rate 1000):
 # ticks never goes back nor jumps, takes each printed value within one step
 # and one millis() tick of the millis() printed with it; the float, the
-# int32 and the int8 derived from it decode exactly (types from DWARF); the
+# int32, the int8 and a C++ static's int16 derived from it decode exactly
+# (types from DWARF); the
 # run's JSON is the same with and without --watch; the report's table
 # holds the variables beside the pose. The same with --avr alone
 # (processor in the loop). An image without DWARF is read by size (one note
@@ -21,7 +22,7 @@ T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
 mk() { env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory B="$B" SHARED="$SHARED" "$@"; }
 SK=$B/clients/board
 IMG=$SK/WatchProbe.elf
-VARS=ticks,ratio,offset,small
+VARS=ticks,ratio,offset,small,down
 
 want_rc 0 "WatchProbe builds for the Nano" mk "$IMG"
 run() { "$MMSIM" --maze mazes/gen-5x5-s1.txt --board ukmarsbot --robot robots/ukmarsbot.ini --time-limit 2 --json "$@"; }
@@ -50,8 +51,8 @@ def check(cond, what):
 steps = round(run["sim_time_s"] * 1000)  # 1 ms physics steps, all sampled at --lcm-rate 1000
 check(summ["MM_WATCH"]["count"] == steps and summ["MM_WATCH"]["bad"] == 0, "MM_WATCH %s, want %d" % (summ["MM_WATCH"], steps))
 check([m["utime"] for m in msgs] == [1000 * (i + 1) for i in range(steps)], "one MM_WATCH per step, at the step's time")
-check(all(m["name"] == ["ticks", "ratio", "offset", "small"] for m in msgs), "names")
-check(all(m["type"] == ["u16", "f32", "i32", "i8"] for m in msgs), "types from DWARF: %s" % msgs[0]["type"])
+check(all(m["name"] == ["ticks", "ratio", "offset", "small", "down"] for m in msgs), "names")
+check(all(m["type"] == ["u16", "f32", "i32", "i8", "i16"] for m in msgs), "types from DWARF: %s" % msgs[0]["type"])
 ticks = [m["value"][0] for m in msgs]
 check(ticks[0] in (0, 1) and all(b - a in (0, 1) for a, b in zip(ticks, ticks[1:])), "ticks monotonic by one")
 printed = [tuple(int(x) for x in l.split()[1:3]) for l in run["console"].splitlines() if l.startswith("TICK ")]
@@ -65,7 +66,7 @@ for n, ms in printed:
           "ticks %d printed at millis %d, first sampled at %s us" % (n, ms, first.get(n)))
 check(int(ticks[-1]) in (printed[-1][0], printed[-1][0] + 1), "the last sample %d, the last print %d" % (ticks[-1], printed[-1][0]))
 check(set(first) - {0} <= {n for n, _ in printed} | {printed[-1][0] + 1}, "a sampled value the firmware never printed")
-def derived(t): return [t / 8.0, -100000.0 - 3 * t, float(-(t % 100))]
+def derived(t): return [t / 8.0, -100000.0 - 3 * t, float(-(t % 100)), float(-t)]
 exact = sum(m["value"][1:] == derived(m["value"][0]) for m in msgs)
 # a step may end between the firmware's writes of ticks and of the rest: then the rest not yet written is the last count's
 def plausible(v):
@@ -74,7 +75,7 @@ def plausible(v):
 check(all(plausible(m["value"]) for m in msgs), "derived values: %s" % [m for m in msgs if not plausible(m["value"])][:2])
 check(exact >= 0.95 * len(msgs), "derived values exact in %d of %d samples" % (exact, len(msgs)))
 w = rep.get("watch", {})
-check(w.get("columns") == ["t_s", "x_m", "y_m", "heading_rad", "ticks", "ratio", "offset", "small"], "report columns %s" % w.get("columns"))
+check(w.get("columns") == ["t_s", "x_m", "y_m", "heading_rad", "ticks", "ratio", "offset", "small", "down"], "report columns %s" % w.get("columns"))
 rows = w.get("rows", [])
 check(len(rows) == rep["trajectory_samples"] and len(rows) > 300, "report rows %d" % len(rows))
 by_t = {round(m["utime"] * 1e-6, 6): m["value"] for m in msgs}

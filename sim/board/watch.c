@@ -94,7 +94,10 @@ static int look_up(const elfsyms_t *e, char *buf, const char *image, uint32_t ra
                    size_t errn)
 {
     uint32_t value = 0, size = 0;
+    char zl[WATCH_NAME_BYTES + 8];
+    snprintf(zl, sizeof zl, "_ZL%zu%s", strlen(v->name), v->name); /* C++'s name for a file-scope static */
     int f = find_sym(e, v->name, &value, &size);
+    if (f == 0) f = find_sym(e, zl, &value, &size);
     if (f == 0) return snprintf(err, errn, "--watch: no global variable '%s' in %s", v->name, image), -1;
     if (f < 0) return snprintf(err, errn, "--watch: '%s' names two static variables in %s", v->name, image), -1;
     if (value < WATCH_DATA_OFFSET || value >= WATCH_EEPROM_OFFSET)

@@ -1,6 +1,7 @@
 /* watch.h - a firmware's global variables read by name (mmsim --watch
  * NAME[,NAME...]): each name looked up in the ELF image's symbol table (an
- * object symbol in the AVR data space: its SRAM address and size), its
+ * object symbol in the AVR data space: its SRAM address and size; a C++
+ * file-scope static by its _ZL name as g++ writes it), its
  * type from the image's DWARF (.debug_info's base type behind typedefs,
  * volatile and const: signed or unsigned 8/16/32-bit integer, float) when
  * the image has it, else from its size (an unsigned integer of 1, 2 or 4
