@@ -1,9 +1,9 @@
 // WatchProbe - a test sketch for mmsim --watch (test/cli_watch.sh), built
 // for the Nano: every 10 ms by millis() it counts `ticks` up by one, sets
 // the variables derived from it (a float, a negative 32-bit, an 8-bit
-// signed integer, and a file-scope static 16-bit one), and prints "TICK ticks ms" with the millis() it counted
-// at. Also holds what --watch must refuse: an array in SRAM and a string in
-// flash (PROGMEM).
+// signed integer, and a file-scope static 16-bit one), and prints
+// "TICK ticks ms" with the millis() it counted at. Also holds what --watch
+// must refuse: an array in SRAM and a string in flash (PROGMEM).
 #include <avr/pgmspace.h>
 
 volatile uint16_t ticks;      // u16: 10 ms counts since the start
