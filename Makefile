@@ -303,6 +303,7 @@ define MRC_BUILD
 endef
 # Our test sketches for the board emulation (test/cli_board.sh), built for the
 # Nano with the same core archive (no ../shared needed).
+# -gdwarf-4: types for mmsim --watch (Debian's avr-gcc 5.4 writes stabs for a plain -g).
 board-sketches: $(BOARD_SKETCHES)
 $(B)/clients/board/%.elf: test/arduino/board/%.ino $(NANO_CORE)
 	@mkdir -p $(dir $@)
