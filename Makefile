@@ -6,7 +6,7 @@ SHELL := /bin/bash
 # default-jre: lcm-spy is a Swing window (the headless JDK has no AWT);
 # iproute2: `ip` for the udpm test's network namespace.
 DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev libinih-dev \
-	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev \
+	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev libdw-dev \
 	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev \
 	liblcm-java default-jdk-headless default-jre libjchart2d-java xvfb iproute2 \
 	libpng-dev libglfw3-dev libgl-dev python3-venv libx11-dev libxtst-dev gdb-avr
@@ -17,7 +17,7 @@ WARN    := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wno-unused-parameter
 INC      = -Ifirmware -Ihal -Ihal/sim -Ihal/wire -Isim -I$(B)/lcmgen $(shell pkg-config --cflags glib-2.0 ode libpng 2>/dev/null)
 CFLAGS  ?= -O2 -g
 SAN     := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
-LIBS     = -ljansson -linih -llcm $(shell pkg-config --libs glib-2.0 ode libpng glfw3 gl 2>/dev/null) -lsimavr -lelf -lm
+LIBS     = -ljansson -linih -llcm $(shell pkg-config --libs glib-2.0 ode libpng glfw3 gl 2>/dev/null) -lsimavr -ldw -lelf -lm
 B       := build
 # ../shared: the maze database and the real clients (tests skip what is absent)
 SHARED  ?= ../shared
@@ -303,7 +303,8 @@ define MRC_BUILD
 endef
 # Our test sketches for the board emulation (test/cli_board.sh), built for the
 # Nano with the same core archive (no ../shared needed); with DWARF debug info
-# (avr-gcc 5.4's plain -g is stabs) for avr-gdb (test/cli_gdb.sh).
+# (Debian's avr-gcc 5.4 writes stabs for a plain -g): avr-gdb (test/cli_gdb.sh) and
+# mmsim --watch's types (test/cli_watch.sh) need it.
 board-sketches: $(BOARD_SKETCHES)
 $(B)/clients/board/%.elf: test/arduino/board/%.ino $(NANO_CORE)
 	@mkdir -p $(dir $@)

@@ -73,6 +73,13 @@ static void decode_all(const lcm_eventlog_event_t *ev)
             check(pt.parts[i].nvalues >= 0 && strlen(pt.parts[i].units) < (size_t)ev->datalen, "part values and units");
         mmlcm_parts_t_decode_cleanup(&pt);
     }
+    mmlcm_watch_t wt;
+    if (lcmlog_decode_watch(ev->data, ev->datalen, &wt) == 0) {
+        check(wt.nvars >= 0, "watch count");
+        for (int i = 0; i < wt.nvars; i++)
+            check(strlen(wt.name[i]) < (size_t)ev->datalen && strlen(wt.type[i]) < (size_t)ev->datalen, "watch strings");
+        mmlcm_watch_t_decode_cleanup(&wt);
+    }
 }
 
 static int on_event(void *ctx, const lcm_eventlog_event_t *ev)

@@ -292,6 +292,44 @@ static void test_parts(void **state)
     mmlcm_parts_t_decode_cleanup(&out);
 }
 
+/* MM_WATCH (lcm/watch_t.lcm): decoded whole; a bad count, a string
+ * without its NUL, bytes missing or left over refused before lcm-gen's
+ * decoder mallocs. */
+static void test_watch(void **state)
+{
+    (void)state;
+    char *names[2] = { (char *)"ticks", (char *)"ratio" }, *types[2] = { (char *)"u16", (char *)"f32" };
+    double v[2] = { 199, 24.875 };
+    mmlcm_watch_t m = { 5000, 2, names, types, v };
+    static uint8_t buf[256];
+    int n = mmlcm_watch_t_encode(buf, 0, sizeof buf, &m);
+    assert_true(n > 0);
+    mmlcm_watch_t out;
+    assert_int_equal(lcmlog_decode_watch(buf, n, &out), 0);
+    assert_true(out.utime == 5000 && out.nvars == 2 && out.value[0] == 199 && out.value[1] == 24.875);
+    assert_string_equal(out.name[1], "ratio");
+    assert_string_equal(out.type[0], "u16");
+    mmlcm_watch_t_decode_cleanup(&out);
+    /* bytes: hash 0..7, utime 8..15, nvars 16..17, name[0]'s length 18..21 and "ticks" 22..27 */
+    static const struct { int at; uint8_t byte; } bad[] = {
+        { 16, 0xFF }, { 16, 0x40 }, /* nvars -1 (with byte 17), 0x4002 */
+        { 18, 0x7F }, { 21, 0xF0 }, { 27, 'x' }, /* name's length huge, 240; its NUL gone */
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        uint8_t b[256];
+        memcpy(b, buf, (size_t)n);
+        b[bad[i].at] = bad[i].byte;
+        if (i == 0) b[17] = 0xFF;
+        assert_int_equal(lcmlog_decode_watch(b, n, &out), -1);
+        assert_null(out.name);
+    }
+    assert_int_equal(lcmlog_decode_watch(buf, n - 1, &out), -1);
+    assert_int_equal(lcmlog_decode_watch(buf, n + 1, &out), -1);
+    buf[0] ^= 1; /* another type's fingerprint */
+    assert_int_equal(lcmlog_decode_watch(buf, n, &out), -1);
+    assert_null(out.name);
+}
+
 static int setup(void **state)
 {
     (void)state;
@@ -315,6 +353,7 @@ int main(void)
         cmocka_unit_test(test_liblcm_round_trip),
         cmocka_unit_test(test_messages_with_arrays),
         cmocka_unit_test(test_parts),
+        cmocka_unit_test(test_watch),
     };
     return cmocka_run_group_tests_name("lcmlog", tests, setup, teardown);
 }

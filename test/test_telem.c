@@ -2,7 +2,8 @@
  * in-process provider): which messages go out on which steps, their
  * content decoded with the generated types, lap events, the belief from
  * hal_belief with its cost field and path; a belief handed in by the
- * caller (NULL: none); the cost field; open errors. */
+ * caller (NULL: none); the firmware's variables handed in (MM_WATCH); the
+ * cost field; open errors. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -24,6 +25,7 @@
 #include "mmlcm_race_event_t.h"
 #include "mmlcm_race_t.h"
 #include "mmlcm_sensors_t.h"
+#include "mmlcm_watch_t.h"
 #include "world/sim.h"
 #include "telemetry/telem.h"
 
@@ -283,6 +285,66 @@ static void test_belief_handed(void **state)
     sim_free(&sim);
 }
 
+static struct {
+    int n;
+    int64_t ut[8];
+    double v[8];
+    char name[16], type[8];
+} watched;
+
+static void on_watch(const lcm_recv_buf_t *rb, const char *ch, const mmlcm_watch_t *m, void *u)
+{
+    if (watched.n < 8 && m->nvars == 1) {
+        watched.ut[watched.n] = m->utime;
+        watched.v[watched.n] = m->value[0];
+        snprintf(watched.name, sizeof watched.name, "%s", m->name[0]);
+        snprintf(watched.type, sizeof watched.type, "%s", m->type[0]);
+    }
+    watched.n++;
+}
+
+/* MM_WATCH: the values the caller hands telem_watch after the step, sent
+ * on the steps the high-rate channels go out (100 Hz: every 10th 1 ms step)
+ * with their utime, and at the end with the last step's. */
+static void test_watch_handed(void **state)
+{
+    (void)state;
+    static maze_t m;
+    static sim_state_t sim;
+    static telem_t t;
+    simcfg_t cfg;
+    char err[300];
+    config_defaults(&cfg);
+    open_maze(&m);
+    static sim_model_t sim_model;
+    sim_model_build(&sim_model, &cfg, 1);
+    assert_int_equal(sim_init(&sim, &sim_model, &m, 1), 0);
+    memset(&watched, 0, sizeof watched);
+    telem_opts_t o = { "memq://", NULL, 100.0, NULL, NULL };
+    assert_int_equal(telem_open(&t, &o, &sim, err, sizeof err), 0);
+    lcm_t *l = t.lcm;
+    mmlcm_watch_t_subscription_t *sw = mmlcm_watch_t_subscribe(l, "MM_WATCH", on_watch, NULL);
+    static const char *const names[1] = { "ticks" }, *const types[1] = { "u16" };
+    for (int i = 0; i < 25; i++) {
+        sim_step(sim.model, &sim);
+        telem_step(&t, &sim, NULL);
+        double v = (double)sim.step; /* the firmware's counter after this step */
+        telem_watch(&t, &sim, 1, names, types, &v);
+        drain(l);
+    }
+    assert_int_equal(watched.n, 2);
+    telem_finish(&t, &sim, NULL);
+    drain(l);
+    assert_int_equal(watched.n, 3);
+    assert_true(watched.ut[0] == 10000 && watched.ut[1] == 20000 && watched.ut[2] == 25000);
+    assert_true(watched.v[0] == 10 && watched.v[1] == 20 && watched.v[2] == 25);
+    assert_string_equal(watched.name, "ticks");
+    assert_string_equal(watched.type, "u16");
+    mmlcm_watch_t_unsubscribe(l, sw);
+    assert_int_equal(telem_close(&t, err, sizeof err), 0);
+    sim_free(&sim);
+}
+
 /* Walls known closed stop the flood; unknown walls count open. */
 static void test_cost_field(void **state)
 {
@@ -336,6 +398,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_memq_messages),
         cmocka_unit_test(test_belief_handed),
+        cmocka_unit_test(test_watch_handed),
         cmocka_unit_test(test_cost_field),
         cmocka_unit_test(test_open_errors),
     };

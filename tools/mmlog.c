@@ -26,6 +26,7 @@
 #include "mmlcm_race_event_t.h"
 #include "mmlcm_race_t.h"
 #include "mmlcm_sensors_t.h"
+#include "mmlcm_watch_t.h"
 
 #define MAX_CHANNELS 256
 
@@ -173,6 +174,25 @@ static int dec_maze(const void *data, int len, int64_t *ut, json_t **j)
     return 0;
 }
 
+/* MM_WATCH through the checked decoder: the names, types and values as arrays in --watch's order. */
+static int dec_watch(const void *data, int len, int64_t *ut, json_t **j)
+{
+    mmlcm_watch_t m;
+    if (lcmlog_decode_watch(data, len, &m) != 0) return -1;
+    *ut = m.utime;
+    if (j) {
+        json_t *names = json_array(), *types = json_array();
+        for (int i = 0; i < m.nvars; i++) {
+            json_array_append_new(names, json_string(m.name[i]));
+            json_array_append_new(types, json_string(m.type[i]));
+        }
+        *j = json_pack("{s:I, s:o, s:o, s:o}", "utime", (json_int_t)m.utime, "name", names, "type", types, "value",
+                      darr(m.value, m.nvars));
+    }
+    mmlcm_watch_t_decode_cleanup(&m);
+    return 0;
+}
+
 typedef struct {
     const char *channel;
     int (*decode)(const void *data, int len, int64_t *ut, json_t **j);
@@ -187,6 +207,7 @@ static const decoder_t decoders[] = {
     { "MM_RACE_EVENT", dec_race_event },
     { "MM_BELIEF", dec_belief },
     { "MM_LINK", dec_link },
+    { "MM_WATCH", dec_watch },
     { "MM_MAZE", dec_maze },
 };
 

@@ -45,7 +45,8 @@ static void usage(FILE *out)
           "             in real time; --pty creates a pseudo-terminal and prints its path; docs/PROTOCOL.md;\n"
           "             motors off after N ms without a message: framed 100 by default, compat never; 0 never)\n"
           "       mmsim --maze FILE --avr ELF [--mcu NAME] [--f-cpu HZ] [--baud N] [--protocol P] [--silence-ms N]\n"
-          "             (processor in the loop: the AVR image runs in simavr, in lockstep)\n"
+          "             [--watch NAME[,NAME...]]   (processor in the loop: the AVR image runs in simavr, in lockstep;\n"
+          "             --watch as for --board)\n"
           "       --gdb PORT with --avr (and --board): simavr's gdb stub on 127.0.0.1:PORT; the firmware and the\n"
           "             whole simulation halt until avr-gdb attaches (target remote :PORT) and continues, and at each\n"
           "             breakpoint or step; the JSON is the run's without --gdb (sim/board/README.md)\n"
@@ -54,7 +55,9 @@ static void usage(FILE *out)
           "             UART; --verbose echoes its console; --input: a person's hands, T in sim seconds: switches=N,\n"
           "             button, button=down|up, reset, occlude=SENSOR (a robot-file [ir.*]/[tof.*] name, or left|right),\n"
           "             push=DX_MM[,DYAW_DEG[,SECONDS]], lift, place, send=TEXT, end; several --input add up;\n"
-          "             --eeprom FILE: the MCU's EEPROM, a raw image, loaded at power-on and saved at the end)\n"
+          "             --eeprom FILE: the MCU's EEPROM, a raw image, loaded at power-on and saved at the end;\n"
+          "             --watch NAME[,NAME...]: the firmware's global variables, by the ELF's symbols and DWARF,\n"
+          "             each step on LCM channel MM_WATCH and in --report beside the true pose)\n"
           "       mmsim --maze FILE --mms COMMAND [--mms-ideal-walls] [--mms-timeout-ms N] [--mms-reset-at S|idle]\n"
           "             (an mms algorithm drives the robot through the mms text API, docs/MMS.md)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
@@ -220,6 +223,17 @@ static int f_mms_reset_at(const char *prog, void *o, const char *arg)
 }
 
 
+/* --watch NAME[,NAME...]: several --watch add up */
+static int f_watch(const char *prog, void *o, const char *arg)
+{
+    static char names[1024];
+    size_t at = strlen(names);
+    if (at + 1 + strlen(arg) >= sizeof names) return bad("--watch: the names are longer than %s", "1023 characters");
+    snprintf(names + at, sizeof names - at, "%s%s", at ? "," : "", arg);
+    run_of(o)->watch = names;
+    return 0;
+}
+
 static const cli_opt_t flags[] = {
     { .name = "maze", .kind = CLI_STR, .off = offsetof(mmsim_opts_t, maze) },
     { .name = "batch", .kind = CLI_STR, .off = offsetof(mmsim_opts_t, batch) },
@@ -262,6 +276,7 @@ static const cli_opt_t flags[] = {
     { .name = "mcu", .kind = CLI_STR, .off = RUN(avr_mcu) },
     { .name = "board", .kind = CLI_STR, .off = RUN(board) },
     { .name = "eeprom", .kind = CLI_STR, .off = RUN(eeprom_path) },
+    { .name = "watch", .kind = CLI_FN, .fn = f_watch, .has_arg = 1 },
     { .name = "f-cpu", .kind = CLI_FN, .fn = f_f_cpu, .has_arg = 1 },
     { .name = "gdb", .kind = CLI_FN, .fn = f_gdb, .has_arg = 1 },
     { .name = "mms", .kind = CLI_FN, .fn = f_mms, .has_arg = 1 },
@@ -297,6 +312,7 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (m->batch && m->maze) return bad("%s", "--maze and --batch: one at a time (a batch runs every maze in DIR)");
     if (o->console_pty && !o->board) return bad("%s", "--console pty needs --board NAME");
     if (o->eeprom_path && !o->board) return bad("%s", "--eeprom FILE needs --board NAME");
+    if (o->watch && !o->avr_elf) return bad("%s", "--watch NAME needs --avr IMAGE.elf (with or without --board NAME): the image's variables");
     if (o->console_pty) o->realtime = 1; /* a person at a serial monitor: in real time */
     if (o->print_config || o->print_robot || m->validate) return 0;
     if (m->batch && (o->telem.url || o->telem.log_path)) return bad("%s", "--lcm and --lcm-log work on one maze, not with --batch");

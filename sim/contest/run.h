@@ -52,6 +52,7 @@ typedef struct {
     int console_pty;               /* --console pty: the board's UART0 on a pseudo-terminal (a person's serial monitor) */
     const char *eeprom_path;       /* --eeprom FILE: the board's EEPROM loaded at power-on, saved at the end (NULL: blank, not kept) */
     unsigned gdb_port;             /* --gdb PORT: simavr's gdb stub on 127.0.0.1:PORT, the firmware halted until gdb continues (0: none) */
+    const char *watch;             /* --watch NAME[,NAME...]: the firmware's globals on MM_WATCH and in the report (NULL: none) */
 } run_opts_t;
 
 /* The defaults, then --config's file, --robot's file, then the flags that

@@ -1,7 +1,8 @@
 /* run_board.c - an AVR image on an emulated board (--board NAME --avr
  * FIRMWARE.elf|.hex, sim/board): the board file's MCU in simavr, in
  * lockstep with the physics, its pins and ADC wired to the robot. The run
- * lasts the time limit (or until the AVR stops); --input's hands act on
+ * lasts the time limit (or until the AVR stops); --watch reads its
+ * variables (run_watch.c); --input's hands act on
  * its switches, button, reset and console; the JSON gets "board" (what its parts saw) and
  * "console" (everything the firmware printed). */
 #include "run_driver.h"
@@ -22,6 +23,7 @@ typedef struct {
     int eeprom_written;  /* the firmware wrote its EEPROM (--eeprom) */
     int eeprom_changed;  /* ... and its contents differ from power-on */
     int eeprom_failed;   /* --eeprom's file could not be saved */
+    run_watch_t watch;   /* --watch: the firmware's variables */
 } board_run_t;
 
 /* One contest per process (run_one): the driver's state is static, as
@@ -133,6 +135,10 @@ static int board_open_run(run_t *r, void **self)
         board_close(b->board);
         return RUN_BAD_INPUT;
     }
+    if (run_watch_open(r, &b->watch, board_host(b->board)->avr) != 0) {
+        board_close(b->board);
+        return RUN_BAD_INPUT;
+    }
     if (r->o->verbose) board_set_echo(b->board, stderr);
     *self = b;
     int rc = console_open(r, b);
@@ -154,6 +160,7 @@ static const char *board_after(run_t *r, void *self)
         if (board_host(b->board)->crash) return "firmware_crashed";
         return strstr(err, "auto-trigger") ? "board_unsupported" : "avr_stopped";
     }
+    run_watch_step(r, &b->watch, board_host(b->board)->avr); /* --watch: after the AVR's cycles */
     if (sim_time_s(&r->sim) >= r->cfg.sim.time_limit_s) return "time_limit";
     return NULL;
 }

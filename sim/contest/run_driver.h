@@ -22,6 +22,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "board/watch.h"
 #include "contest/run.h"
 #include "view/report.h"
 #include "world/belief.h"
@@ -104,6 +105,19 @@ static inline int run_gdb_said(unsigned port, const char *err)
             port, port);
     return RUN_OK;
 }
+
+/* --watch (run_watch.c): the firmware's variables and their latest values. */
+typedef struct {
+    watch_list_t list;         /* list.n 0: no --watch */
+    double values[WATCH_MAX];
+} run_watch_t;
+/* --watch's names looked up in the image r->o->avr_elf run on avr: 0 (also
+ * without --watch), or RUN_BAD_INPUT after one line. */
+int run_watch_open(run_t *r, run_watch_t *w, const struct avr_t *avr);
+/* After the AVR's cycles of the step: the variables read, to the telemetry
+ * and the report (nothing without --watch). */
+void run_watch_step(run_t *r, run_watch_t *w, const struct avr_t *avr);
+
 /* RUN_OK if a lap was completed and the run ended for one of the two
  * reasons given (or NULL), else RUN_NOT_REACHED. */
 static inline int run_exit_laps(const run_t *r, const char *ok1, const char *ok2)

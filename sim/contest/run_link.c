@@ -14,6 +14,7 @@
 typedef struct {
     link_t lnk;
     pil_t pil; /* --avr: the image in simavr whose UART0 is the link */
+    run_watch_t watch; /* --avr --watch: the firmware's variables */
 } link_run_t;
 
 /* An EMITTER from the MCU (link_step_io calls it): light the groups it
@@ -103,6 +104,7 @@ static const char *avr_after(run_t *r, void *self)
         fprintf(stderr, "mmsim: %s: %s\n", r->o->avr_elf, err);
         return ((link_run_t *)self)->pil.host.crash ? "firmware_crashed" : "avr_stopped";
     }
+    run_watch_step(r, &((link_run_t *)self)->watch, ((link_run_t *)self)->pil.host.avr); /* --watch */
     return link_after(r, self);
 }
 
@@ -179,6 +181,11 @@ static int avr_open(run_t *r, void **self)
     link_opts_t lo = link_opts(r);
     link_open_fd(&l->lnk, fd, "simavr UART0", &lo, r->cfg.sim.step_s, tof_range_mm(r), counts_x100(r),
                  r->o->verbose ? stderr : NULL);
+    if (run_watch_open(r, &l->watch, l->pil.host.avr) != 0) {
+        link_close(&l->lnk);
+        pil_close(&l->pil);
+        return RUN_BAD_INPUT;
+    }
     if (!r->o->gdb_port) return 0;
     rc = run_gdb_said(r->o->gdb_port, avrhost_gdb(&l->pil.host, r->o->gdb_port, err, sizeof err) ? err : NULL);
     if (rc) {

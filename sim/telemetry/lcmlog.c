@@ -128,8 +128,9 @@ int lcmlog_each(const char *path, lcmlog_fn fn, void *ctx, long *events, char *e
  * before checking it against the data (a negative count asks for ~2^64
  * bytes), leave what they allocated when they fail half way, and do not
  * check that a string ends in its NUL. So the layout of these types is
- * checked here first, field by field as lcm/belief_t.lcm, lcm/maze_t.lcm
- * and lcm/parts_t.lcm (with lcm/part_t.lcm) declare them (keep in step). */
+ * checked here first, field by field as lcm/belief_t.lcm, lcm/maze_t.lcm,
+ * lcm/parts_t.lcm (with lcm/part_t.lcm) and lcm/watch_t.lcm declare them
+ * (keep in step). */
 typedef struct {
     const unsigned char *d;
     int64_t len, at;
@@ -211,6 +212,16 @@ static int parts_layout_ok(const void *data, int len)
     return c.ok && c.at == len;
 }
 
+static int watch_layout_ok(const void *data, int len)
+{
+    cursor_t c = { data, len, 0, 1 };
+    skip(&c, 8 + 8); /* hash, utime */
+    int64_t n = count16(&c);
+    for (int64_t i = 0; i < 2 * n && c.ok; i++) string(&c); /* name[], then type[] */
+    skip(&c, n * 8);                                        /* value */
+    return c.ok && c.at == len;
+}
+
 int lcmlog_decode_belief(const void *data, int len, mmlcm_belief_t *m)
 {
     memset(m, 0, sizeof *m);
@@ -237,6 +248,16 @@ int lcmlog_decode_parts(const void *data, int len, mmlcm_parts_t *m)
     if (!parts_layout_ok(data, len)) return -1;
     if (mmlcm_parts_t_decode(data, 0, len, m) == len) return 0;
     mmlcm_parts_t_decode_cleanup(m);
+    memset(m, 0, sizeof *m);
+    return -1;
+}
+
+int lcmlog_decode_watch(const void *data, int len, mmlcm_watch_t *m)
+{
+    memset(m, 0, sizeof *m);
+    if (!watch_layout_ok(data, len)) return -1;
+    if (mmlcm_watch_t_decode(data, 0, len, m) == len) return 0;
+    mmlcm_watch_t_decode_cleanup(m);
     memset(m, 0, sizeof *m);
     return -1;
 }

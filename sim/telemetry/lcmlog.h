@@ -12,6 +12,7 @@
 #include "mmlcm_belief_t.h"
 #include "mmlcm_maze_t.h"
 #include "mmlcm_parts_t.h"
+#include "mmlcm_watch_t.h"
 
 /* A 10-minute contest logged at --lcm-rate 1000 is ~200 MB. */
 #define LCMLOG_MAX_BYTES (1ull << 32) /* bytes */
@@ -30,7 +31,7 @@ typedef int (*lcmlog_fn)(void *ctx, const lcm_eventlog_event_t *ev);
  * *events (if not NULL) = whole events read. */
 int lcmlog_each(const char *path, lcmlog_fn fn, void *ctx, long *events, char *err, size_t errlen);
 
-/* An MM_BELIEF, MM_MAZE or MM_PARTS message from a log, decoded whole or not at all:
+/* An MM_BELIEF, MM_MAZE, MM_PARTS or MM_WATCH message from a log, decoded whole or not at all:
  * 0 (free it with mmlcm_*_decode_cleanup), or -1 with nothing allocated if
  * the data is not exactly one such message (a count below 0, a string
  * without its NUL, bytes missing or left over). The types with fixed
@@ -38,5 +39,6 @@ int lcmlog_each(const char *path, lcmlog_fn fn, void *ctx, long *events, char *e
 int lcmlog_decode_belief(const void *data, int len, mmlcm_belief_t *m);
 int lcmlog_decode_maze(const void *data, int len, mmlcm_maze_t *m);
 int lcmlog_decode_parts(const void *data, int len, mmlcm_parts_t *m);
+int lcmlog_decode_watch(const void *data, int len, mmlcm_watch_t *m);
 
 #endif

@@ -21,6 +21,7 @@
 #include "mmlcm_pose_t.h"
 #include "mmlcm_race_event_t.h"
 #include "mmlcm_race_t.h"
+#include "mmlcm_watch_t.h"
 #include "mmlcm_sensors_t.h"
 #include "maze/solve.h"
 #include "world/sensors/sensor.h"
@@ -486,11 +487,38 @@ void telem_step(telem_t *t, const sim_state_t *s, const sim_belief_t *b)
     if (t->link && s->step % t->link_steps == 0) pub_link(t, s);
 }
 
+/* The firmware's variables as telem_watch last had them. */
+static void pub_watch(telem_t *t, const sim_state_t *s)
+{
+    int64_t ut = utime_of(t, s);
+    mmlcm_watch_t m;
+    m.utime = ut;
+    m.nvars = (int16_t)t->watch_n;
+    m.name = (char **)t->watch_names;
+    m.type = (char **)t->watch_types;
+    m.value = t->watch_v;
+    emit(t, "MM_WATCH", ut, mmlcm_watch_t_encode(t->buf, 0, TELEM_BUF_BYTES, &m));
+}
+
+void telem_watch(telem_t *t, const sim_state_t *s, int n, const char *const *names, const char *const *types,
+                 const double *values)
+{
+    t->watch_n = n < 0 ? 0 : n > TELEM_WATCH_MAX ? TELEM_WATCH_MAX : n;
+    t->watch_names = names;
+    t->watch_types = types;
+    memcpy(t->watch_v, values, (size_t)t->watch_n * sizeof *values);
+    t->watch_step = s->step;
+    if (t->watch_n && t->last_fast == s->step) pub_watch(t, s);
+}
+
 void telem_finish(telem_t *t, const sim_state_t *s, const sim_belief_t *b)
 {
     if (belief_new(t, b)) pub_belief(t, b);
     pub_events(t, s);
-    if (t->last_fast != s->step) pub_fast(t, s);
+    if (t->last_fast != s->step) {
+        pub_fast(t, s);
+        if (t->watch_n && t->watch_step == s->step) pub_watch(t, s); /* read after this last step */
+    }
     if (t->last_race != s->step) pub_race(t, s);
     if (t->link && t->last_link != s->step) pub_link(t, s);
 }

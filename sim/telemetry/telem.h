@@ -15,6 +15,9 @@
  *   MM_MAZE                         once, first (utime 0): the true maze,
  *                                   its file, the seed and the config, so
  *                                   the log alone replays (mmview)
+ *   MM_WATCH                        with MM_POSE, when the run's driver
+ *                                   hands telem_watch the firmware's
+ *                                   variables (mmsim --watch: --board, --avr)
  * A channel's messages go out on the physics steps that are multiples of its
  * period (rate rounded to a whole number of steps), and once more at the end
  * (telem_finish) unless the last step was one of them.
@@ -46,6 +49,7 @@
 #define TELEM_RATE_HZ 100.0 /* default rate of the high-rate channels, Hz */
 #define TELEM_RACE_HZ 10.0  /* rate of MM_RACE, Hz */
 #define TELEM_LINK_HZ 10.0  /* rate of MM_LINK, Hz */
+#define TELEM_WATCH_MAX 16   /* variables on MM_WATCH */
 #define TELEM_BUF_BYTES 16384 /* one encoded message, bytes (a 32x32 belief is ~5.2 KB) */
 
 typedef struct {
@@ -80,6 +84,10 @@ typedef struct {
     int in_run;           /* the run under way was announced */
     double run_start_s;
     uint32_t belief_seq;  /* last belief published */
+    int watch_n;          /* variables on MM_WATCH (0: no channel) */
+    const char *const *watch_names, *const *watch_types; /* theirs (telem_watch), valid to telem_finish */
+    double watch_v[TELEM_WATCH_MAX]; /* their latest values */
+    uint64_t watch_step;  /* the step they were read after */
     int failed;           /* a log write or an encoding failed */
     uint64_t live_errors; /* live messages lcm_publish could not send */
     uint64_t published;   /* messages published (per output) */
@@ -94,6 +102,13 @@ int telem_open(telem_t *t, const telem_opts_t *o, const sim_state_t *s, char *er
  * report, published once), NULL if the driver has none (an MCU keeps its
  * map to itself, the scripted driver has no map). */
 void telem_step(telem_t *t, const sim_state_t *s, const sim_belief_t *b);
+/* After the driver's part of the step (an AVR's cycles run to the step's
+ * end): the firmware's variables now, n names with their types and values
+ * (n at most TELEM_WATCH_MAX; the strings are the caller's and must live
+ * until telem_finish). Published on MM_WATCH if the high-rate channels went
+ * out this step, and kept for telem_finish. */
+void telem_watch(telem_t *t, const sim_state_t *s, int n, const char *const *names, const char *const *types,
+                 const double *values);
 /* At the end of the run: the last state of every periodic channel and any
  * belief in b not yet sent (b as for telem_step). */
 void telem_finish(telem_t *t, const sim_state_t *s, const sim_belief_t *b);

@@ -29,6 +29,11 @@ struct report {
     uint8_t visited[MAZE_MAX_CELLS];
     char colour[MAZE_MAX_CELLS]; /* report_set_cells: mms colour letters */
     char text[MAZE_MAX_CELLS][12];
+    int watch_n;                      /* report_watch: variables (0 none) */
+    const char *const *watch_names;
+    double watch_now[REPORT_WATCH_MAX]; /* their latest values */
+    double *wrows;                    /* per sample: t, x, y, heading, then the values */
+    size_t wn, wcap;                  /* rows kept, rows allocated */
 };
 
 report_t *report_new(const sim_state_t *s)
@@ -47,6 +52,7 @@ void report_free(report_t *r)
 {
     if (!r) return;
     free(r->s);
+    free(r->wrows);
     free(r);
 }
 
@@ -56,6 +62,32 @@ void report_set_cells(report_t *r, const char *colours, const char *texts, size_
         r->colour[k] = colours[k];
         snprintf(r->text[k], sizeof r->text[k], "%s", texts + k * text_stride);
     }
+}
+
+void report_watch(report_t *r, int n, const char *const *names, const double *values)
+{
+    r->watch_n = n < 0 ? 0 : n > REPORT_WATCH_MAX ? REPORT_WATCH_MAX : n;
+    r->watch_names = names;
+    memcpy(r->watch_now, values, (size_t)r->watch_n * sizeof *values);
+}
+
+/* One row of the watch table: the time, the true pose, the variables. */
+static void watch_row(report_t *r, double t, double x, double y, double h)
+{
+    size_t cols = 4 + (size_t)r->watch_n;
+    if (r->wn == r->wcap) {
+        size_t cap = r->wcap ? r->wcap * 2 : 4096;
+        double *p = realloc(r->wrows, cap * cols * sizeof *p);
+        if (!p) return; /* out of memory: the table just stops */
+        r->wrows = p;
+        r->wcap = cap;
+    }
+    double *row = r->wrows + r->wn++ * cols;
+    row[0] = t;
+    row[1] = x;
+    row[2] = y;
+    row[3] = h;
+    memcpy(row + 4, r->watch_now, (size_t)r->watch_n * sizeof *row);
 }
 
 void report_step(report_t *r, const sim_state_t *s)
@@ -72,6 +104,7 @@ void report_step(report_t *r, const sim_state_t *s)
     world_pose(s->world, &x, &y, &h);
     world_velocity(s->world, &v, &w);
     r->s[r->n++] = (sample_t){ (float)x, (float)y, (float)v, sim_time_s(s) };
+    if (r->watch_n) watch_row(r, sim_time_s(s), x, y, h);
     if (fabs(v) > r->vmax) r->vmax = fabs(v);
     double fx = floor(x / r->cell_m), fy = floor(y / r->cell_m);
     if (fx >= 0 && fy >= 0 && fx < r->maze->width && fy < r->maze->height)
@@ -327,7 +360,31 @@ static void draw_trajectory(canvas_t *c, const layout_t *L, const report_t *r, c
     }
 }
 
-/* The text panel: title, lap table, totals, legend, speed scale. */
+/* "Watch at the end: NAME=VALUE ..." (mmsim --watch) in lines of at most
+ * WATCH_LINE_CHARS (the panel's narrowest width), a name that does not fit
+ * beginning the next: the number of lines (0 without a watch). */
+#define WATCH_LINE_CHARS 62
+#define WATCH_LINES_MAX (REPORT_WATCH_MAX + 1)
+static int watch_lines(const report_t *r, char lines[WATCH_LINES_MAX][WATCH_LINE_CHARS + 1])
+{
+    if (!r->watch_n) return 0;
+    int n = 0;
+    snprintf(lines[0], WATCH_LINE_CHARS + 1, "Watch at the end:");
+    for (int i = 0; i < r->watch_n; i++) {
+        char item[WATCH_LINE_CHARS + 1];
+        snprintf(item, sizeof item, " %s=%.6g", r->watch_names[i], r->watch_now[i]);
+        size_t used = strlen(lines[n]);
+        if (used + strlen(item) > WATCH_LINE_CHARS && n + 1 < WATCH_LINES_MAX) {
+            n++;
+            used = 0;
+            lines[n][0] = '\0';
+        }
+        snprintf(lines[n] + used, WATCH_LINE_CHARS + 1 - used, "%s", item);
+    }
+    return n + 1;
+}
+
+/* The text panel: title, lap table, totals, watched variables, legend, speed scale. */
 static void draw_panel(canvas_t *c, const layout_t *L, const report_t *r, const sim_state_t *s, const maze_t *learned,
                        const solve_path_t *path, const char *title)
 {
@@ -347,6 +404,11 @@ static void draw_panel(canvas_t *c, const layout_t *L, const report_t *r, const 
              world_collisions(s->world), r->vmax);
     ty += LINE_PX / 2;
     c_text(c, MARGIN_PX, ty, C_TEXT, buf);
+    char wl[WATCH_LINES_MAX][WATCH_LINE_CHARS + 1];
+    for (int i = 0, n = watch_lines(r, wl); i < n; i++) {
+        ty += LINE_PX;
+        c_text(c, MARGIN_PX, ty, C_TEXT, wl[i]);
+    }
     ty += LINE_PX + LINE_PX / 2;
     const struct { uint32_t col; const char *name; } legend[] = {
         { C_VISITED, "visited" }, { C_LEARNED, "learned wall" }, { C_TRUE_WALL, learned ? "unlearned wall" : "wall" },
@@ -416,8 +478,25 @@ static int layout_make(layout_t *L, const report_t *r, const sim_state_t *s, con
     L->ox = (L->w - mw) / 2;
     L->oy = MARGIN_PX + mh;
     L->text_y = MARGIN_PX + mh + MARGIN_PX;
-    L->h = L->text_y + (L->table_lines + 8) * LINE_PX + MARGIN_PX;
+    char wl[WATCH_LINES_MAX][WATCH_LINE_CHARS + 1];
+    L->h = L->text_y + (L->table_lines + 8 + watch_lines(r, wl)) * LINE_PX + MARGIN_PX;
     return 0;
+}
+
+/* {"columns": ["t_s", "x_m", "y_m", "heading_rad", NAME...], "rows": [[...], ...]} */
+static json_t *watch_json(const report_t *r)
+{
+    static const char *const pose[] = { "t_s", "x_m", "y_m", "heading_rad" };
+    size_t cols = 4 + (size_t)r->watch_n;
+    json_t *c = json_array(), *rows = json_array();
+    for (size_t k = 0; k < cols; k++)
+        json_array_append_new(c, json_string(k < 4 ? pose[k] : r->watch_names[k - 4]));
+    for (size_t i = 0; i < r->wn; i++) {
+        json_t *row = json_array();
+        for (size_t k = 0; k < cols; k++) json_array_append_new(row, json_real(r->wrows[i * cols + k]));
+        json_array_append_new(rows, row);
+    }
+    return json_pack("{s:o, s:o}", "columns", c, "rows", rows);
 }
 
 /* The JSON file into f: 0, or -1. */
@@ -438,6 +517,7 @@ static int write_json(const report_t *r, const sim_state_t *s, const solve_path_
     json_object_set_new(j, "final_path_cells", final ? json_integer(final->len) : json_null()); /* null: none drawn */
     json_object_set_new(j, "best_run_s", rc->best >= 0 ? json_real(rc->laps[rc->best].end_s - rc->laps[rc->best].start_s)
                                                        : json_null());
+    if (r->watch_n) json_object_set_new(j, "watch", watch_json(r));
     int rcode = j && json_dumpf(j, f, JSON_INDENT(2) | JSON_REAL_PRECISION(10)) == 0 && fputc('\n', f) != EOF ? 0 : -1;
     json_decref(j);
     return rcode;

@@ -14,6 +14,7 @@
 #include "world/sim.h"
 
 #define REPORT_SAMPLE_S 0.005 /* trajectory sample period, s of sim time */
+#define REPORT_WATCH_MAX 16   /* the firmware's variables beside the pose (mmsim --watch) */
 
 typedef struct report report_t;
 
@@ -22,6 +23,13 @@ report_t *report_new(const sim_state_t *s);
 void report_free(report_t *r);
 /* Call after every sim_step. */
 void report_step(report_t *r, const sim_state_t *s);
+
+/* The firmware's variables now (mmsim --watch), before report_step: n
+ * names (the caller's strings, valid until report_write) and values. The
+ * JSON gets them beside the true pose at every trajectory sample ("watch":
+ * columns t_s, x_m, y_m, heading_rad, then the names; one row a sample) and
+ * the picture their last values. */
+void report_watch(report_t *r, int n, const char *const *names, const double *values);
 
 /* Cell colours and texts to draw (an mms algorithm's setColor/setText):
  * colours[k] is an mms colour letter (kbacgorwyBCAGRY, 0 = none) and

@@ -1,0 +1,19 @@
+/* watch_dwarf.h - a global variable's type from an ELF image's DWARF
+ * (.debug_info, read with elfutils' libdw), for watch.c. */
+#ifndef WATCH_DWARF_H
+#define WATCH_DWARF_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "watch.h"
+
+/* The type of the variable v->name at ELF data address elf_addr in the
+ * image's bytes (buf, len: the whole file, already checked as an AVR ELF).
+ * 1 with v->kind and v->size set from its base type (through typedefs,
+ * volatile, const, enums and pointers); 0 if the image has no DWARF entry
+ * for it; -1 with one line in err if it has one of a type --watch cannot
+ * read (a struct, an array, a 64-bit number). */
+int watch_dwarf_type(char *buf, size_t len, uint32_t elf_addr, watch_var_t *v, char *err, size_t errn);
+
+#endif
