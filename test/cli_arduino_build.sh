@@ -17,9 +17,8 @@ SK=test/arduino/board
 ROBOT=robots/ukmarsbot.ini
 T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
 . "$(dirname "$0")/lib.sh"
-for tool in avr-gcc ctags; do
-  command -v $tool >/dev/null || { echo "SKIP cli_arduino_build: $tool not installed"; exit 77; }
-done
+command -v avr-gcc >/dev/null || { echo "SKIP cli_arduino_build: avr-gcc not installed"; exit 77; }
+command -v ctags-universal >/dev/null || command -v ctags >/dev/null || { echo "SKIP cli_arduino_build: universal-ctags not installed"; exit 77; }
 [ -f /usr/share/arduino/hardware/arduino/avr/platform.txt ] || { echo "SKIP cli_arduino_build: arduino-core-avr not installed"; exit 77; }
 ab() { $AB "$@" --cache "$B/arduino-build"; }
 # jv FILE EXPR: a Python expression over d, the last JSON line of FILE
