@@ -182,6 +182,10 @@ $(B)/avr/wire_selftest.elf: test/avr_wire.c test/wire_vectors.c hal/wire/wire.c 
 # ---- Arduino builds: hal/arduino + firmware/ + Debian's arduino-core-avr, for the
 # Uno (ATmega328P) and the Mega 2560, every example sketch; flags as the core's
 # platform.txt/boards.txt. `make arduino` (part of `make firmware`) prints avr-size.
+# These keep their own rules rather than tools/arduino-build: they build for
+# the Mega 2560 too, link our library from hal/ and firmware/ as one archive
+# without -flto (the Uno's RAM budget and the PIL runs' timing are measured on
+# these images), and need no `make arduino-lib` copy (hal/arduino/README.md).
 ARD_DIR      := /usr/share/arduino/hardware/arduino/avr
 ARD_CORE     := $(ARD_DIR)/cores/arduino
 ARD_BOARDS   := uno mega2560
