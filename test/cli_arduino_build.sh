@@ -5,9 +5,9 @@
 # before its definition, a .cpp/.h in the folder and in src/util, a table
 # that only -flto drops) prints what its code says; EepromRoundTrip (the
 # core's EEPROM library) run twice on one `mmsim --eeprom FILE` prints boot
-# 0 then 1; a library folder given with --library; the Uno; bad input (a
-# missing folder, no .ino, no main tab, an unknown board) is one line and
-# exit 2; a compile error names the .ino tab and line, exit 1.
+# 0 then 1; the core's Wire, SPI and SoftwareSerial; a library folder given
+# with --library; the Uno; bad input (a missing folder, no .ino, no main
+# tab, an unknown board) is one line and exit 2; a compile error names the .ino tab and line, exit 1.
 # Without avr-gcc, Debian's Arduino core or Universal Ctags: one SKIP line.
 set -u
 B=${BUILD:-build}
@@ -75,6 +75,18 @@ want_rc 0 "a sketch using a --library folder builds" ab "$T/UseTiny" --library "
 grep -q "^UseTiny: library Tiny ($T/libs/Tiny/src)" "$T/out" && ok "the --library folder used" || bad "UseTiny: $(cat "$T/out")"
 want_rc 1 "the --library sketch runs" board --avr "$T/tiny/UseTiny.elf"
 [ "$(con "$T/out")" = 42 ] && ok "the --library sketch prints the library's 42" || bad "UseTiny console: $(con "$T/out" | cat -v)"
+mkdir -p "$T/Libs"
+cat >"$T/Libs/Libs.ino" <<'INO'
+#include <Wire.h>
+#include <SPI.h>
+#include <SoftwareSerial.h>
+SoftwareSerial soft(10, 11);
+void setup() { Wire.begin(); SPI.begin(); soft.begin(9600); }
+void loop() { Wire.beginTransmission(8); Wire.write(1); Wire.endTransmission(); SPI.transfer(0x55); soft.write('x'); }
+INO
+want_rc 0 "a sketch using Wire, SPI and SoftwareSerial builds" ab "$T/Libs" -o "$T/libs-out/Libs.elf"
+[ "$(grep -c '^Libs: library \(Wire\|SPI\|SoftwareSerial\) (/usr/share/arduino/hardware/arduino/avr/libraries/' "$T/out")" = 3 ] \
+  && ok "Wire, SPI and SoftwareSerial: the core's libraries added" || bad "core libraries: $(cat "$T/out")"
 want_rc 0 "EepromRoundTrip builds for the Uno" ab $SK/EepromRoundTrip --board uno -o "$T/uno/EepromRoundTrip.elf"
 grep -q '^EepromRoundTrip: program [0-9]* bytes of 32256' "$T/out" && ok "the Uno's flash limit (32256 bytes)" || bad "Uno size line: $(cat "$T/out")"
 
