@@ -4,12 +4,13 @@ SHELL := /bin/bash
 
 # Debian packages the build and tests need; `make deps` installs the missing ones.
 # default-jre: lcm-spy is a Swing window (the headless JDK has no AWT);
-# iproute2: `ip` for the udpm test's network namespace.
+# iproute2: `ip` for the udpm test's network namespace; universal-ctags: the
+# function prototypes tools/arduino-build generates for a sketch's tabs.
 DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev libinih-dev \
 	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev libdw-dev \
 	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev \
 	liblcm-java default-jdk-headless default-jre libjchart2d-java xvfb iproute2 \
-	libpng-dev libglfw3-dev libgl-dev python3-venv libx11-dev libxtst-dev gdb-avr
+	libpng-dev libglfw3-dev libgl-dev python3-venv libx11-dev libxtst-dev gdb-avr universal-ctags
 
 CC      ?= gcc
 STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
@@ -181,6 +182,10 @@ $(B)/avr/wire_selftest.elf: test/avr_wire.c test/wire_vectors.c hal/wire/wire.c 
 # ---- Arduino builds: hal/arduino + firmware/ + Debian's arduino-core-avr, for the
 # Uno (ATmega328P) and the Mega 2560, every example sketch; flags as the core's
 # platform.txt/boards.txt. `make arduino` (part of `make firmware`) prints avr-size.
+# These keep their own rules rather than tools/arduino-build: they build for
+# the Mega 2560 too, link our library from hal/ and firmware/ as one archive
+# without -flto (the Uno's RAM budget and the PIL runs' timing are measured on
+# these images), and need no `make arduino-lib` copy (hal/arduino/README.md).
 ARD_DIR      := /usr/share/arduino/hardware/arduino/avr
 ARD_CORE     := $(ARD_DIR)/cores/arduino
 ARD_BOARDS   := uno mega2560
@@ -196,8 +201,6 @@ ARD_COMMON   := $(ARD_BASE) -DMAZE_MAX_SIZE=16 $(ARD_RAM) -Ihal -Ihal/wire -Ihal
 ARD_CXX      := -std=gnu++11 -fno-exceptions -fno-threadsafe-statics -fpermissive -DDECIMAL_DIG=__DECIMAL_DIG__
 ARD_uno      := -mmcu=atmega328p -DARDUINO_AVR_UNO -I$(ARD_DIR)/variants/standard
 ARD_mega2560 := -mmcu=atmega2560 -DARDUINO_AVR_MEGA2560 -I$(ARD_DIR)/variants/mega
-# The Nano: the Uno's ATmega328P at 16 MHz with two more analogue inputs (A6, A7)
-ARD_nano     := -mmcu=atmega328p -DARDUINO_AVR_NANO -I$(ARD_DIR)/variants/eightanaloginputs
 ARD_LIB_SRC  := $(wildcard hal/arduino/src/*.cpp) hal/wire/wire.c $(FW_SRC)
 ARD_CORE_SRC := $(wildcard $(ARD_CORE)/*.c $(ARD_CORE)/*.cpp) $(ARD_CORE)/wiring_pulse.S
 ARD_HDRS     := $(wildcard hal/arduino/src/*.h firmware/*.h) hal/hal.h hal/wire/wire.h
@@ -267,9 +270,10 @@ arduino-lib:
 
 # ---- real clients: firmware that others wrote, built from its own folder
 # (../shared/clients or a clone: never copied into the repo) into $(B)/clients.
-# mazerunner-core, UKMARSBOT's contest firmware for the Arduino Nano, as the
-# Arduino IDE builds it: the .ino as C++ with Arduino.h included, the core in
-# an archive (so Tone.cpp, which also defines TIMER2_COMPA_vect, stays out).
+# mazerunner-core, UKMARSBOT's contest firmware for the Arduino Nano, built by
+# tools/arduino-build as the Arduino IDE builds it (its .ino with prototypes,
+# the core in an archive so Tone.cpp, which also defines TIMER2_COMPA_vect,
+# stays out; -flto).
 # Two images: as shipped (config.h: EVENT_HOME, goal (1,0)) and -uk, set up
 # for a contest as its README says (config.h's EVENT = EVENT_UK, goal (7,7)),
 # on a copy in $(B). MRC_DIR: a clone of github.com/ukmars/mazerunner-core.
@@ -278,50 +282,32 @@ MRC_SKETCH := $(firstword $(wildcard $(MRC_DIR)/mazerunner-core/mazerunner-core.
 MRC_SRC    := $(dir $(MRC_SKETCH))
 MRC_FILES  := $(wildcard $(MRC_SRC)*.h $(MRC_SRC)*.ino)
 MRC_ELFS   := $(B)/clients/mazerunner-core.elf $(B)/clients/mazerunner-core-uk.elf
-NANO_CORE  := $(B)/clients/nano/core.a
 client-mazerunner: | deps
 	@if [ -z "$(MRC_SKETCH)" ]; then echo "SKIP client-mazerunner: $(MRC_DIR) not found"; exit 0; fi; \
 	$(MAKE) --no-print-directory mrc-images && avr-size $(MRC_ELFS) && \
 	for e in $(MRC_ELFS); do echo "$$e: $$(avr-size -C --mcu=atmega328p $$e | grep '^Program:\|^Data:' | tr -s ' ' | paste -sd' ')"; done
 mrc-images: $(MRC_ELFS) $(MRC_ELFS:.elf=.hex) $(B)/clients/mazerunner-core-uk-mended.elf
 	@:
-$(B)/clients/nano/core/%.c.o: $(ARD_CORE)/%.c | deps
-	@mkdir -p $(dir $@)
-	@avr-gcc $(ARD_nano) $(ARD_BASE) -std=gnu11 -c $< -o $@
-$(B)/clients/nano/core/%.cpp.o: $(ARD_CORE)/%.cpp | deps
-	@mkdir -p $(dir $@)
-	@avr-g++ $(ARD_nano) $(ARD_BASE) $(ARD_CXX) -c $< -o $@
-$(B)/clients/nano/core/%.S.o: $(ARD_CORE)/%.S | deps
-	@mkdir -p $(dir $@)
-	@avr-gcc $(ARD_nano) $(ARD_BASE) -x assembler-with-cpp -c $< -o $@
-$(NANO_CORE): $(patsubst $(ARD_CORE)/%,$(B)/clients/nano/core/%.o,$(ARD_CORE_SRC))
-	@rm -f $@; avr-ar rcs $@ $^
-# MRC_BUILD (sketch folder, image): the .ino compiled where it is, then linked.
-define MRC_BUILD
-	avr-g++ $(ARD_nano) $(ARD_BASE) $(ARD_CXX) -w -x c++ -include Arduino.h -c $(1)mazerunner-core.ino -o $(2).o
-	avr-gcc $(ARD_nano) -Os -Wl,--gc-sections $(2).o $(NANO_CORE) -lm -o $(2)
-endef
-# Our test sketches for the board emulation (test/cli_board.sh), built for the
-# Nano with the same core archive (no ../shared needed); with DWARF debug info
-# (Debian's avr-gcc 5.4 writes stabs for a plain -g): avr-gdb (test/cli_gdb.sh) and
-# mmsim --watch's types (test/cli_watch.sh) need it.
+# SKETCH_BUILD (sketch folder or .ino, image, more arguments): tools/arduino-build
+# for the Nano, the core kept in $(B)/arduino-build. It also writes the .hex.
+SKETCH_BUILD = python3 tools/arduino-build $(1) --board nano -o $(2) --cache $(B)/arduino-build $(3)
+# MRC_BUILD (sketch folder, image): quiet (-w) as the IDE's default.
+MRC_BUILD = $(call SKETCH_BUILD,$(1),$(2),)
+# Our test sketches for the board emulation (test/cli_board.sh), one .ino each,
+# built for the Nano with -Wall.
 board-sketches: $(BOARD_SKETCHES)
-$(B)/clients/board/%.elf: test/arduino/board/%.ino $(NANO_CORE)
-	@mkdir -p $(dir $@)
-	avr-g++ $(ARD_nano) $(ARD_BASE) $(ARD_CXX) -gdwarf-4 -Wall -x c++ -include Arduino.h -c $< -o $@.o
-	avr-gcc $(ARD_nano) -Os -Wl,--gc-sections $@.o $(NANO_CORE) -lm -o $@
+$(B)/clients/board/%.elf: test/arduino/board/%.ino tools/arduino-build | deps
+	$(call SKETCH_BUILD,$<,$@,--warnings more)
 # EncPoll with INT0/INT1 in edge mode: the other half of the benchmark pair (bench/run.sh)
-$(B)/clients/board/EncPollEdge.elf: test/arduino/board/EncPoll.ino $(NANO_CORE)
-	@mkdir -p $(dir $@)
-	avr-g++ $(ARD_nano) $(ARD_BASE) $(ARD_CXX) -DENCPOLL_EDGE -Wall -x c++ -include Arduino.h -c $< -o $@.o
-	avr-gcc $(ARD_nano) -Os -Wl,--gc-sections $@.o $(NANO_CORE) -lm -o $@
-$(B)/clients/mazerunner-core.elf: $(MRC_FILES) $(NANO_CORE)
+$(B)/clients/board/EncPollEdge.elf: test/arduino/board/EncPoll.ino tools/arduino-build | deps
+	$(call SKETCH_BUILD,$<,$@,--warnings more -DENCPOLL_EDGE)
+$(B)/clients/mazerunner-core.elf: $(MRC_FILES) tools/arduino-build | deps
 	$(call MRC_BUILD,$(MRC_SRC),$@)
 $(B)/clients/mazerunner-core-uk/mazerunner-core/config.h: $(MRC_FILES)
 	@rm -rf $(dir $@); mkdir -p $(dir $@); cp $(MRC_FILES) $(dir $@)
 	sed -i 's/^#define EVENT EVENT_HOME\b/#define EVENT EVENT_UK/' $@
 	@grep -q '^#define EVENT EVENT_UK' $@ || { echo "client-mazerunner: no '#define EVENT EVENT_HOME' line in config.h to set to EVENT_UK" >&2; exit 1; }
-$(B)/clients/mazerunner-core-uk.elf: $(B)/clients/mazerunner-core-uk/mazerunner-core/config.h $(NANO_CORE)
+$(B)/clients/mazerunner-core-uk.elf: $(B)/clients/mazerunner-core-uk/mazerunner-core/config.h tools/arduino-build
 	$(call MRC_BUILD,$(dir $<),$@)
 # For tests only, never shipped: the EVENT_UK copy with one firmware bug
 # mended. search_to() checks heading_to_smallest() for BLOCKED before it
@@ -334,23 +320,22 @@ $(B)/clients/mazerunner-core-uk-mended/mazerunner-core/mouse.h: $(B)/clients/maz
 	@rm -rf $(dir $@); mkdir -p $(dir $@); cp $(dir $<)*.h $(dir $<)*.ino $(dir $@)
 	sed -i 's/^\( *\)if (newHeading == BLOCKED) {/\1if (newHeading == BLOCKED \&\& m_location != target) {/' $@
 	@grep -q 'newHeading == BLOCKED && m_location != target' $@ || { echo "client-mazerunner: search_to's BLOCKED check not found in mouse.h" >&2; exit 1; }
-$(B)/clients/mazerunner-core-uk-mended.elf: $(B)/clients/mazerunner-core-uk-mended/mazerunner-core/mouse.h $(NANO_CORE)
+$(B)/clients/mazerunner-core-uk-mended.elf: $(B)/clients/mazerunner-core-uk-mended/mazerunner-core/mouse.h tools/arduino-build
 	$(call MRC_BUILD,$(dir $<),$@)
 $(B)/clients/%.hex: $(B)/clients/%.elf
 	avr-objcopy -O ihex -R .eeprom $< $@
 
 # ---- our sketches for the UKMARSBOT board's peripherals (test/arduino/board,
-# test/cli_board_periph.sh): built for the Nano as the mazerunner-core images
-# are, with the same core archive. UartEcho9600: UartEcho at 9600 baud.
+# test/cli_board_periph.sh): sketch folders built for the Nano by
+# tools/arduino-build, as the mazerunner-core images are. UartEcho9600:
+# UartEcho at 9600 baud.
 .PHONY: periph-sketches
 periph-sketches: $(PERIPH_ELFS)
 	@avr-size $(PERIPH_ELFS)
 # PERIPH_SKETCH (image name, sketch folder, extra flags)
 define PERIPH_SKETCH
-$(B)/arduino/nano/board/$(1).elf: test/arduino/board/$(2)/$(2).ino $(NANO_CORE)
-	@mkdir -p $$(dir $$@)
-	avr-g++ $(ARD_nano) $(ARD_BASE) $(ARD_CXX) $(3) -Wall -x c++ -include Arduino.h -c $$< -o $$@.o
-	avr-gcc $(ARD_nano) -Os -Wl,--gc-sections $$@.o $(NANO_CORE) -lm -o $$@
+$(B)/arduino/nano/board/$(1).elf: $(wildcard test/arduino/board/$(2)/*) tools/arduino-build | deps
+	$$(call SKETCH_BUILD,test/arduino/board/$(2),$$@,--warnings more $(3))
 endef
 $(foreach s,$(PERIPH_SKETCHES),$(eval $(call PERIPH_SKETCH,$(s),$(s),)))
 $(eval $(call PERIPH_SKETCH,UartEcho9600,UartEcho,-DECHO_BAUD=9600))

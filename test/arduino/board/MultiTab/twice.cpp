@@ -1,0 +1,4 @@
+// twice.cpp - x * 2
+#include "twice.h"
+
+int twice(int x) { return x * 2; }
