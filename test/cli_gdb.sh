@@ -3,7 +3,8 @@
 # starts simavr's gdb stub on 127.0.0.1:PORT and a scripted avr-gdb (batch
 # mode) attaches. Our sketch GdbProbe (test/arduino/board, built with
 # debug info) on the emulated board: break on probe_tick, read
-# probe_count (0), `next` over its increment and read it again (1), `step`,
+# probe_count (0), `next` over its increment and read it again (1), `next`
+# to the println, `step` into the core's Print::println (its DWARF too),
 # continue to the next hit (1 still: the firmware waited for gdb), wall
 # time passes while it is halted, then disconnect; the run finishes and its
 # JSON equals the run's without --gdb (but wall_time_s / real_time_factor):
@@ -112,7 +113,9 @@ session board "break probe_tick
 continue
 print probe_count
 next
+next
 print probe_count
+next
 step
 continue
 print probe_count
@@ -120,11 +123,13 @@ shell sleep 1
 delete
 disconnect" "${BOARD[@]}"
 [ "$(cat "$T/board.gdbrc")" = 0 ] && ok "board: avr-gdb's script ran (exit 0)" || bad "board: avr-gdb exit $(cat "$T/board.gdbrc"): $(tail -3 "$T/board.gdb")"
-[ "$(grep -c '^Breakpoint 1, probe_tick () at test/arduino/board/GdbProbe.ino:12' "$T/board.gdb")" = 2 ] \
+[ "$(grep -c '^Breakpoint 1, probe_tick () at test/arduino/board/GdbProbe.ino:11' "$T/board.gdb")" = 2 ] \
   && ok "board: stopped at probe_tick twice, by file and line" || bad "board: breakpoint hits: $(grep -m3 'Breakpoint' "$T/board.gdb")"
 grep -q '^\$1 = 0$' "$T/board.gdb" && ok "board: probe_count 0 at the first hit" || bad "board: \$1: $(grep -m1 '^\$1' "$T/board.gdb")"
-grep -q '^\$2 = 1$' "$T/board.gdb" && ok "board: 1 after next" || bad "board: \$2: $(grep -m1 '^\$2' "$T/board.gdb")"
-grep -q '^14	  Serial.println(probe_count);$' "$T/board.gdb" && ok "board: step went to line 14" || bad "board: step: $(cat "$T/board.gdb")"
+grep -q '^\$2 = 1$' "$T/board.gdb" && ok "board: 1 after next over its increment" || bad "board: \$2: $(grep -m1 '^\$2' "$T/board.gdb")"
+grep -q '^14	  Serial.println(probe_count);$' "$T/board.gdb" && ok "board: next went to line 14" || bad "board: next: $(cat "$T/board.gdb")"
+grep -q '^println (.*) at .*/cores/arduino/Print.cpp:[0-9]*$' "$T/board.gdb" && ok "board: step went into the core's Print::println" \
+  || bad "board: step: $(cat "$T/board.gdb")"
 grep -q '^\$3 = 1$' "$T/board.gdb" && ok "board: 1 at the second hit (before its increment)" || bad "board: \$3: $(grep -m1 '^\$3' "$T/board.gdb")"
 same board plain
 
