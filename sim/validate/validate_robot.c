@@ -200,9 +200,9 @@ static int ir_calibration(const simcfg_t *c, validate_check_t *v, int n)
 }
 
 /* The first IR sensor facing a wall straight on at d_m (the robot turned so
- * the sensor's axis is normal to the end wall of a corridor): the model's
- * far field is gain * reflectivity * (ref / d)^2 (ir.h), the dark reading
- * the ambient level. */
+ * the sensor's axis is normal to the end wall of a corridor): the rays cast
+ * in the world give what the model gives for an ideal plane
+ * (ir_received_plane), the dark reading the ambient level. */
 static int ir_model_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
     int k = robot_part_of_kind(c, "ir", 0);
@@ -217,9 +217,10 @@ static int ir_model_checks(const simcfg_t *c, validate_check_t *v, int n)
     double h = -p->yaw_deg * M_PI / 180, ch = cos(h - M_PI / 2), sh = sin(h - M_PI / 2);
     double sx = ch * p->x_m - sh * p->y_m, sy = sh * p->x_m + ch * p->y_m; /* the sensor from the body centre */
     world_place(s->world, face - d - sx, 0.5 * c->world.cell_m - sy, h, NULL);
-    double want = m->gain_counts * c->world.wall_reflectivity * (m->ref_m / d) * (m->ref_m / d);
+    const ir_t *ir = &((const ir_state_t *)s->part_state[k])->ir;
+    double want = m->gain_counts * m->ref_m * m->ref_m * ir_received_plane(ir, d, 0, ir->reflectivity, ir->gloss);
     bench_add(v, &n, "ir_far_field_120mm", want, lit_minus_dark(s, 0), "counts", 5, VALIDATE_NEAR,
-              "IR model: gain * reflectivity * (ref/d)^2 for a wall straight on in the far field (ir.h)");
+              "IR model: the rays cast in the world against the model's ideal plane straight on (ir.h)");
     double dark = 0;
     unsigned g = (unsigned)((const ir_part_spec_t *)p->spec)->emitter;
     sim_emitter_set(s, g, 0);
@@ -261,11 +262,63 @@ static int gyro_checks(const simcfg_t *c, validate_check_t *v, int n)
     return n;
 }
 
+static int ir_front_sum_checks(const simcfg_t *c, validate_check_t *v, int n);
+
 int validate_robot_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
     n = motion_checks(c, v, n);
     n = count_checks(c, v, n);
     n = ir_calibration(c, v, n);
     n = ir_model_checks(c, v, n);
-    return gyro_checks(c, v, n);
+    n = gyro_checks(c, v, n);
+    return ir_front_sum_checks(c, v, n);
+}
+
+/* The forward pair's normalised sum (mazerunner-core's get_front_sum: each
+ * sensor's lit minus dark x 100 / its measured_backed) with the robot
+ * heading east in a corridor, its axle axle_to_wall_m from the end wall's
+ * face. */
+static double front_sum_at(const simcfg_t *c, double axle_to_wall_m)
+{
+    sim_state_t *s = &bench.sim;
+    double face = 4 * c->world.cell_m - c->world.wall_thick_m / 2, sum = 0;
+    world_place(s->world, face - axle_to_wall_m - c->robot.axle_y_m, 0.5 * c->world.cell_m, 0, NULL);
+    for (unsigned i = 0; i < robot_count(c, "ir"); i++) {
+        const ir_part_spec_t *sp = (const ir_part_spec_t *)c->robot.part[robot_part_of_kind(c, "ir", i)].spec;
+        if (sp->measured_backed > 0 && sp->measured_facing_sum > 0) sum += 100 * lit_minus_dark(s, i) / sp->measured_backed;
+    }
+    return sum;
+}
+
+/* The forward pair against the published front sums of mazerunner-core's
+ * config-robot-*.h (the robot file's measured_facing_sum and
+ * measured_turn_sum on the pair):
+ * - facing: FRONT_REFERENCE, centred in a cell facing its wall, the axle
+ *   half a cell less half a wall from it (84 mm): fitted (the pair's
+ *   detector offset is fitted to it: sim/world/sensors/README.md);
+ * - turn: TURN_THRESHOLD_SS90E, "set for when the robot is 20mm past the
+ *   cell boundary", the wall ahead a cell less half a wall less 20 mm from
+ *   the axle (154 mm; ORION l.73-76): predicted: not used by the fit.
+ *   Reported, not graded: the model's far field is 1/d^2 from its
+ *   geometry and misses it by +11 % (ORION) and +49 % (OSMIUM, whose
+ *   published 82 against ORION's 110 in the same pose shows the spread). */
+static int ir_front_sum_checks(const simcfg_t *c, validate_check_t *v, int n)
+{
+    double facing = -1, turn = -1;
+    for (unsigned i = 0; i < robot_count(c, "ir"); i++) {
+        const ir_part_spec_t *sp = (const ir_part_spec_t *)c->robot.part[robot_part_of_kind(c, "ir", i)].spec;
+        if (sp->measured_backed > 0 && sp->measured_facing_sum > 0) facing = sp->measured_facing_sum, turn = sp->measured_turn_sum;
+    }
+    if (facing < 0) return n;
+    bench_corridor(&bench.maze, 4);
+    if (bench_init(c) != 0) return n;
+    double cell = c->world.cell_m, wall = c->world.wall_thick_m;
+    bench_add(v, &n, "ir_front_sum_facing", facing, front_sum_at(c, cell / 2 - wall / 2), "1", 10, VALIDATE_NEAR,
+              "fitted: the robot file's measured_facing_sum (FRONT_REFERENCE), centred facing a wall; det_offset_mm fitted to it");
+    if (turn > 0)
+        bench_add(v, &n, "ir_front_sum_turn", turn, front_sum_at(c, cell - wall / 2 - 0.020), "1", 10, VALIDATE_REPORT,
+                  "predicted: not used by the fit: measured_turn_sum (TURN_THRESHOLD_SS90E), wall 154 mm from the axle; reported, not "
+                  "graded: the model misses it (sim/world/sensors/README.md)");
+    sim_free(&bench.sim);
+    return n;
 }
