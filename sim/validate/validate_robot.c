@@ -294,14 +294,15 @@ static double front_sum_at(const simcfg_t *c, double axle_to_wall_m)
  * config-robot-*.h (the robot file's measured_facing_sum and
  * measured_turn_sum on the pair):
  * - facing: FRONT_REFERENCE, centred in a cell facing its wall, the axle
- *   half a cell less half a wall from it (84 mm): fitted (the pair's
- *   detector offset is fitted to it: sim/world/sensors/README.md);
+ *   half a cell less half a wall from it (84 mm): predicted: not used by
+ *   the fit (the gains are fitted backed up at 132 mm; the near-field
+ *   fall-off that sets this one comes from the parts' detector offset);
  * - turn: TURN_THRESHOLD_SS90E, "set for when the robot is 20mm past the
  *   cell boundary", the wall ahead a cell less half a wall less 20 mm from
  *   the axle (154 mm; ORION l.73-76): predicted: not used by the fit.
- *   Reported, not graded: the model's far field is 1/d^2 from its
- *   geometry and misses it by +11 % (ORION) and +49 % (OSMIUM, whose
- *   published 82 against ORION's 110 in the same pose shows the spread). */
+ *   Reported, not graded: the model's far field tends to 1/d^2 and misses
+ *   it by +11 % (ORION) and +49 % (OSMIUM, whose published 82 against
+ *   ORION's 110 in the same pose shows the spread between robots). */
 static int ir_front_sum_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
     double facing = -1, turn = -1;
@@ -314,7 +315,7 @@ static int ir_front_sum_checks(const simcfg_t *c, validate_check_t *v, int n)
     if (bench_init(c) != 0) return n;
     double cell = c->world.cell_m, wall = c->world.wall_thick_m;
     bench_add(v, &n, "ir_front_sum_facing", facing, front_sum_at(c, cell / 2 - wall / 2), "1", 10, VALIDATE_NEAR,
-              "fitted: the robot file's measured_facing_sum (FRONT_REFERENCE), centred facing a wall; det_offset_mm fitted to it");
+              "predicted: not used by the fit: measured_facing_sum (FRONT_REFERENCE), centred facing a wall (the near field)");
     if (turn > 0)
         bench_add(v, &n, "ir_front_sum_turn", turn, front_sum_at(c, cell - wall / 2 - 0.020), "1", 10, VALIDATE_REPORT,
                   "predicted: not used by the fit: measured_turn_sum (TURN_THRESHOLD_SS90E), wall 154 mm from the axle; reported, not "

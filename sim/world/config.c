@@ -31,7 +31,7 @@ static const keytab_t keys[] = {
     KW("world", world, centre_post, 1, 0, 1, "0/1", "classic rules allow the goal's centre post"),
     K("world", world, body_wall_mu, 0.3, 0, 3, "1", "ours: plastic on painted wood; only matters in a crash"),
     K("world", world, wall_reflectivity, 0.85, 0, 1, "1", "ours: matt white wall faces (IR sensors; their gains in the robot file are for reflectivity 1)"),
-    K("world", world, wall_gloss, 0.04, 0, 1, "1", "Fresnel: (n-1)^2/(n+1)^2 = 0.04 for paint's binder, n = 1.5, straight on (IR sensors)"),
+    K("world", world, wall_gloss, 0, 0, 1, "1", "ours: matt (ORION fits matt walls); gloss paint: 0.04, Fresnel (n-1)^2/(n+1)^2, n = 1.5 (IR sensors)"),
     K("world", world, wall_gloss_exp, 100, 1, 10000, "1", "ours: satin paint's lobe, half power 6.7 deg off the mirror (IR sensors; sim/world/sensors/README.md)"),
     /* the u16 65535 of compat distances stands for this; a reading at or beyond it goes as a timeout
      * (inih reads lines of at most 200 characters: the printed line must fit) */
