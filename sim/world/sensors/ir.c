@@ -24,10 +24,8 @@ void ir_spec_default(ir_spec_t *s)
     s->cone_deg = 6.0;
     s->rings = 2;          /* ours: 1 + 2 x 8 = 17 rays */
     s->rays_per_ring = 8;
-    /* counts for reflectivity 1 at 50 mm: mazerunner-core's ORION reads
-     * FRONT_REFERENCE = 850 (config-robot-orion.h) centred in a cell facing
-     * a wall; ours: that sensor-to-wall distance taken as 50 mm, so
-     * 850 / 0.85 */
+    /* counts for a matt reflectivity-1 wall straight on at 50 mm; ours: of
+     * the order of ORION's fitted gains (242 to 1046, robots/ukmarsbot.ini) */
     s->gain_counts = 1000.0;
     s->ref_m = 0.050;
     /* ours: a guard against 1/0 only; the near field comes from the
