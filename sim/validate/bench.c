@@ -48,7 +48,15 @@ void bench_add(validate_check_t *v, int *n, const char *name, double expected, d
     k->tolerance_pct = tol_pct;
     k->bound = bound;
     k->source = source;
+    k->kind = VALIDATE_PREDICTED;
     if (bound == VALIDATE_NEAR) k->pass = fabs(measured - expected) <= tol_pct / 100.0 * fabs(expected);
     else if (bound == VALIDATE_MAX) k->pass = measured <= expected;
     else k->pass = 1;
+}
+
+void bench_fit(validate_check_t *v, int *n, const char *name, double expected, double measured, const char *unit,
+               const char *source)
+{
+    bench_add(v, n, name, expected, measured, unit, 0, VALIDATE_REPORT, source);
+    v[*n - 1].kind = VALIDATE_FITTED;
 }
