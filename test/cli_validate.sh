@@ -14,7 +14,8 @@ d = json.loads(open(sys.argv[1]).read().splitlines()[-1])
 names = {c["name"]: c for c in d["checks"]}
 need = ["no_load_speed", "no_load_current", "stall_torque", "stall_current", "step_response_1ms", "step_response_5ms",
         "encoder_counts_per_rev", "rest_creep_mm_per_min", "straight_veer_mm_4m", "tof_noise_cv",
-        "tof_timeout_beyond_range", "wall_no_tunnelling", "max_efficiency_speed", "max_efficiency_current"]
+        "tof_timeout_beyond_range", "wall_no_tunnelling", "max_efficiency_speed", "max_efficiency_current",
+        "max_efficiency", "max_power", "mid_torque_current"]
 missing = [n for n in need if n not in names]
 failing = [n for n, c in names.items() if not c["pass"]]
 fields = {"name", "expected", "measured", "unit", "tolerance_pct", "source", "pass"}
@@ -35,6 +36,16 @@ python3 -c "
 import json,sys; d=json.loads(open('$T/out').read().splitlines()[-1]); c={k['name']:k for k in d['checks']}
 assert not c['no_load_speed']['pass'] and abs(c['no_load_speed']['measured']-725)<10, c['no_load_speed']
 " && ok "paper motor: no-load speed 725 rpm flagged" || bad "paper motor: $(head -c 600 "$T/out")"
+
+# a constant friction (friction_load_a removed): the curve's predictions fail, exit 1
+grep -v '^friction_load_a' robots/paper.ini >"$T/constfric.ini"
+want_rc 1 "a constant friction fails the curve's predictions" "$S" --validate --json --robot "$T/constfric.ini"
+python3 -c "
+import json; d=json.loads(open('$T/out').read().splitlines()[-1]); c={k['name']:k for k in d['checks']}
+bad = [n for n in ('max_efficiency_speed', 'max_efficiency_current', 'max_efficiency', 'mid_torque_current') if not c[n]['pass']]
+assert bad == ['max_efficiency_speed', 'max_efficiency_current', 'max_efficiency', 'mid_torque_current'], bad
+assert c['no_load_speed']['pass'] and c['stall_torque']['pass']
+" && ok "constant friction: the four predictions flagged" || bad "constant friction: $(head -c 600 "$T/out")"
 
 # quickstep slides a resting robot: the creep check catches it
 printf '[sim]\nsolver = quickstep\n' >"$T/qs.ini"
