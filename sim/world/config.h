@@ -26,6 +26,7 @@
 typedef struct {
     int motor_model;        /* MOTOR_MODEL_PAPER or MOTOR_MODEL_DATASHEET */
     double rated_v, no_load_rpm, no_load_a, stall_torque_nm, stall_a;
+    double friction_load_a; /* friction's rise under load, A of motor current (motor.h); 0 = constant friction */
     double l_h;
     double gear_ratio;
     double rotor_inertia_kgm2; /* at the motor shaft; 0 = ignored */

@@ -67,6 +67,7 @@ static const keytab_t motor_keys[] = {
     D(gear_ratio, KEYTAB_REQUIRED, 1, 1000, "1", "motor turns per wheel turn"),
     D(rotor_inertia_kgm2, 0, 0, 1e-3, "kg*m^2", "at the motor shaft (x N^2 at the wheel); 0 = ignored"),
     D(driver_r_ohm, 0, 0, 100, "ohm", "the H-bridge's on-resistance, in series with the motor"),
+    D(friction_load_a, 0, 0, 10, "A", "the friction's rise under load, in amperes of motor current (motor.h); 0 = constant"),
 };
 static const keytab_t encoder_keys[] = {
     D(encoder_ppr, KEYTAB_REQUIRED, 1, 100000, "counts/motor rev", "counts per motor-shaft turn, every edge counted"),
@@ -329,6 +330,8 @@ static int physics_checks(load_t *l)
     for (int s = 0; s < 2; s++)
         if (c->robot.drive[s].no_load_a >= c->robot.drive[s].stall_a)
             return fail(l, 0, "motor.%s.no_load_a: not below stall_a", s ? "right" : "left");
+        else if (c->robot.drive[s].no_load_a + c->robot.drive[s].friction_load_a >= c->robot.drive[s].stall_a)
+            return fail(l, 0, "motor.%s.friction_load_a: no_load_a + friction_load_a not below stall_a", s ? "right" : "left");
     return 0;
 }
 
