@@ -72,10 +72,9 @@ static step_t voltage_step(const simcfg_t *c, double v_volt, int rot)
     return r;
 }
 
-/* The robot's own figures are measured on a converged integration (a
- * 0.2 ms step): at the contest's 1 ms a spin runs ~2 % slower (the tyres'
- * friction rows hold their direction through a step while the robot turns
- * 0.02 rad), which the rotation_km_at_step line reports. */
+/* The robot's own figures are measured on a 0.2 ms step; the
+ * rotation_km_at_step line reports the spin at the config's step (within
+ * 0.1 % of it: test/test_step.c). */
 #define FINE_STEP_S 0.0002
 
 static int motion_checks(const simcfg_t *run, validate_check_t *v, int n)
