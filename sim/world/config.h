@@ -75,6 +75,11 @@ typedef struct {
     int centre_post;        /* 1 = the post in the middle of the goal is there */
     double body_wall_mu;    /* robot body/wheel on a wall or post */
     double wall_reflectivity; /* of walls and posts to the IR sensors' light, 0..1 */
+    /* contact springs and dampers, per kind (world.c turns them into ODE's
+     * ERP and CFM for the step in use) */
+    double tyre_kp_n_m, tyre_kd_n_s_m;     /* tyre on the floor */
+    double wall_kp_n_m, wall_kd_n_s_m;     /* robot body or wheel on a wall or post (and the body on the floor) */
+    double caster_kp_n_m, caster_kd_n_s_m; /* caster or skid on the floor */
 } simcfg_world_t;
 
 /* The robot (the robot file, robot.h): its [chassis.NAME], [motor.*] and
@@ -132,7 +137,6 @@ typedef struct {
     double step_s;          /* physics step */
     int solver;             /* SIM_SOLVER_QUICKSTEP or SIM_SOLVER_EXACT */
     int solver_iterations;  /* quickstep's iterations per step */
-    double contact_erp, contact_cfm; /* contact softness (ODE units) */
     double time_limit_s;    /* contest limit */
 } simcfg_sim_t;
 
