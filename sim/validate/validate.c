@@ -190,9 +190,23 @@ static const tof_spec_t *tof_spec(const simcfg_t *c, int i)
     return (const tof_spec_t *)c->robot.part[robot_part_of_kind(c, "tof", (unsigned)i)].spec;
 }
 
-static tof_stats_t tof_facing(const simcfg_t *c, double true_m, double seconds)
+/* The robot with its front ToF sensor as one ray (fov 0) and noise cv_or_keep
+ * (< 0: the robot file's): the ranging along its axis, which a cone in a
+ * corridor would mix with the side walls. One bench at a time. */
+static const simcfg_t *one_ray(const simcfg_t *c, double cv_or_keep)
+{
+    static simcfg_t b;
+    b = *c;
+    tof_spec_t *ts = (tof_spec_t *)b.robot.part[robot_part_of_kind(c, "tof", (unsigned)front_tof(c))].spec;
+    ts->fov_rad = 0.0;
+    if (cv_or_keep >= 0.0) ts->cv = cv_or_keep;
+    return &b;
+}
+
+static tof_stats_t tof_facing(const simcfg_t *cfg, double true_m, double seconds)
 {
     tof_stats_t st = { 0, 0, 0, 0, 0 };
+    const simcfg_t *c = one_ray(cfg, -1.0);
     int f = front_tof(c);
     double sensor_y = c->robot.part[robot_part_of_kind(c, "tof", (unsigned)f)].y_m;
     bench_corridor(&bench.maze, 16);
@@ -222,6 +236,41 @@ static tof_stats_t tof_facing(const simcfg_t *c, double true_m, double seconds)
     }
     sim_free(s);
     return st;
+}
+
+/* The front ToF sensor's first noise-free reading with the end wall of a
+ * 16-cell corridor ahead_m ahead of it (the robot on the corridor's centre
+ * line), m; -1 = a timeout. */
+static double tof_corridor_reading(const simcfg_t *c, double ahead_m)
+{
+    static simcfg_t b;
+    b = *c;
+    int f = front_tof(c), k = robot_part_of_kind(c, "tof", (unsigned)f);
+    ((tof_spec_t *)b.robot.part[k].spec)->cv = 0.0;
+    bench_corridor(&bench.maze, 16);
+    sim_state_t *s = open_bench(&b, 0, 0);
+    if (!s) return -1;
+    double face = 16 * c->world.cell_m - c->world.wall_thick_m / 2;
+    world_place(s->world, face - c->robot.part[k].y_m - ahead_m, 0.5 * c->world.cell_m, 0.0, NULL);
+    uint32_t seen = s->tof_count[f];
+    for (long i = 0; i < bench_steps(c, 1.0) && s->tof_count[f] == seen; i++) sim_step(s->model, s);
+    double d = s->tof_last[f].timeout ? -1.0 : s->tof_last[f].dist_m;
+    sim_free(s);
+    return d;
+}
+
+/* The end wall's distance ahead beyond which the front ToF's cone reaches
+ * the corridor's side walls first (its reading falls short of the end
+ * wall by more than 1 mm), m, by bisection to 0.5 mm between 0.1 and 1 m. */
+static double tof_side_wall_onset_m(const simcfg_t *c)
+{
+    double lo = 0.1, hi = 1.0;
+    while (hi - lo > 0.0005) {
+        double mid = 0.5 * (lo + hi), d = tof_corridor_reading(c, mid);
+        if (d >= 0.0 && d < mid - 0.001) hi = mid;
+        else lo = mid;
+    }
+    return 0.5 * (lo + hi);
 }
 
 /* Full command into the end wall of a corridor for 3 s: how far the body's
@@ -387,6 +436,24 @@ static int response_checks(const simcfg_t *c, validate_check_t *v, int n)
     return n;
 }
 
+/* The cone (predicted: the datasheet's field of view and the maze's
+ * geometry, not fitted to anything): on a 168 mm corridor's centre line,
+ * with h = (cell - wall) / 2 to either side wall, a cone of full angle fov
+ * meets the side walls h / tan(fov / 2) ahead (0.379 m at 25 deg), at a
+ * slant distance of h / sin(fov / 2) (0.388 m): the nearest surface in the
+ * cone is the side wall, and the reading falls short of the end wall, once
+ * the end wall is farther than that. */
+static int tof_cone_check(const simcfg_t *c, validate_check_t *v, int n)
+{
+    const tof_spec_t *ts = tof_spec(c, front_tof(c));
+    if (ts->fov_rad <= 0.0) return n;
+    double half_w = 0.5 * (c->world.cell_m - c->world.wall_thick_m);
+    bench_add(v, &n, "tof_cone_side_wall_onset", half_w / sin(0.5 * ts->fov_rad), tof_side_wall_onset_m(c), "m", 1,
+        VALIDATE_NEAR, "predicted (data: VL53L0X datasheet DocID029104, 25 deg field of view; the maze's 180 mm cell, "
+        "12 mm wall): the end-wall distance beyond which the cone sees a corridor's side walls first");
+    return n;
+}
+
 static int floor_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
     bench_add(v, &n, "rest_creep_mm_per_min", 0.1, creep_mm_per_min(c, 10.0), "mm/min", 0, VALIDATE_MAX,
@@ -406,7 +473,7 @@ static int floor_checks(const simcfg_t *c, validate_check_t *v, int n)
     bench_add(v, &n, "tof_timeout_beyond_range", 0, (double)edge.beyond_valid, "readings", 0, VALIDATE_MAX,
         "VL53L0X datasheet and the paper's Unity simulator: at or beyond the range is a timeout (a wall at 0.98 x range, "
         "noise)");
-    return n;
+    return tof_cone_check(c, v, n);
 }
 
 /* The robot as a lab benches its motors and the physics: its motors on a

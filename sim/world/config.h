@@ -95,6 +95,7 @@ typedef struct {
     double caster_r_m, caster_mass_kg, caster_y_m;
     int casters;            /* 1, or 2: a second skid at caster2_y_m, as the first */
     double caster2_y_m;
+    double skid_mu;         /* Coulomb friction, caster (skid) on floor; 0 = frictionless */
     double tyre_mu;         /* Coulomb friction, tyre on floor */
     double tyre_mu_dynamic; /* sliding friction; <= tyre_mu */
     double tyre_slip_m_s;   /* contact slip speed above which tyre_mu_dynamic applies */

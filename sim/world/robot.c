@@ -42,6 +42,8 @@ static const keytab_t chassis_keys[] = {
       NULL, 0, 0, 0, KEYTAB_INT, 0, NULL },
     { NULL, "caster2_y_mm", offsetof(simcfg_robot_t, caster2_y_m), 0, -200, 200, "mm", "the second skid ahead of the body's centre",
       NULL, 0, 1000, 0, KEYTAB_DOUBLE, 0, NULL },
+    { NULL, "skid_mu", offsetof(simcfg_robot_t, skid_mu), 0, 0, 3, "1",
+      "Coulomb friction, caster (skid) sliding on the floor; 0 = frictionless", NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL },
     C(tyre_mu, tyre_mu, 0, 0.01, 3, "1", "Coulomb friction, tyre on floor"),
     C(tyre_mu_dynamic, tyre_mu_dynamic, 0, 0.01, 3, "1", "sliding friction, <= tyre_mu"),
     C(tyre_slip_m_s, tyre_slip_m_s, 0, 0, 1, "m/s", "slip speed above which tyre_mu_dynamic applies"),

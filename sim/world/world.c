@@ -409,7 +409,7 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
     for (int i = 0; i < n; i++) {
         double mu = w->model->cfg->world.body_wall_mu;
         if (a == w->caster || a == w->caster2) {
-            mu = 0.0; /* the paper's caster: frictionless */
+            mu = w->model->cfg->robot.skid_mu; /* a skid slides: Coulomb friction */
         } else if (!wall && (a == w->wheel_geom[0] || a == w->wheel_geom[1])) {
             dVector3 v;
             dBodyGetPointVel(dGeomGetBody(a), c[i].geom.pos[0], c[i].geom.pos[1], c[i].geom.pos[2], v);
