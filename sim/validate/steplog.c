@@ -11,6 +11,7 @@
 #include "world/sensors/ir.h"
 
 #define STEP_LOG_S 1.2   /* s: as validate_robot.c's voltage_step, motorlab's step length */
+#define OFF_MAZE_M 4.0   /* m west of the maze: more than a 12 V step covers in 1.2 s (~3 m) */
 #define ROW_EVERY_S 1e-3 /* s: one row a millisecond, a firmware's control tick */
 
 /* The command for v_volt on the motor with the battery as it is now. */
@@ -31,10 +32,13 @@ static int step_log(const simcfg_t *run, double v_volt, int rot, FILE *out)
     fine = *run;
     if (fine.sim.step_s > FINE_STEP_S) fine.sim.step_s = FINE_STEP_S;
     const simcfg_t *c = &fine;
-    bench_field(&bench.maze, 10, 10, 4);
+    /* on open floor: a field's posts stand at every cell corner, and a robot with
+     * unequal wheels veers into them; the floor is an infinite plane, so the robot
+     * starts west of a one-cell maze, facing further west */
+    bench_field(&bench.maze, 1, 1, 0);
     sim_state_t *s = &bench.sim;
     if (bench_init(c) != 0) return -1;
-    if (rot) world_place(s->world, 4.5 * c->world.cell_m, 4.5 * c->world.cell_m, M_PI / 2, NULL); /* the field's middle */
+    world_place(s->world, -OFF_MAZE_M, 0.5 * c->world.cell_m, M_PI, NULL);
     long n = bench_steps(c, STEP_LOG_S), every = lround(ROW_EVERY_S / c->sim.step_s);
     if (every < 1) every = 1;
     int32_t e0[2] = { s->encoder[0].count, s->encoder[1].count };
