@@ -121,6 +121,9 @@ grep -q "^$T/word.csv:50: left_counts: 'lots' is not a number" "$T/err" && ok "a
 sed '2s/,mm,/,cm,/' "$T/counts.csv" >"$T/cm.csv"
 want_rc 2 "counts in cm" "${FIT[@]}" --base $B --counts "$T/cm.csv" -o "$T/x.ini"
 grep -q "^$T/cm.csv:2: unit 'cm' for straight" "$T/err" && ok "counts unit: FILE:LINE" || bad "counts unit: $(cat "$T/err")"
+sed 's/^body_w_mm = 65$/body_w_mm = 5/' $B >"$T/badbase.ini"
+want_rc 2 "a bad base robot file" "${FIT[@]}" --base "$T/badbase.ini" --counts "$T/counts.csv" -o "$T/x.ini"
+grep -q "^$T/badbase.ini:[0-9]*: chassis.body.body_w_mm: " "$T/err" && ok "bad base: mmsim's FILE:LINE" || bad "bad base: $(cat "$T/err")"
 ONE_ERROR_LINE=0
 
 # ORION: its published figures ([measured.orion], BIAS_FF 0.340 V: config-robot-orion.h l.282) and
