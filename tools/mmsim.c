@@ -20,12 +20,13 @@
 #include "io/outfile.h"
 #include "io/stdstream.h"
 #include "link/serial.h"
+#include "validate/steplog.h"
 #include "validate/validate.h"
 #include "view/report.h"
 
 typedef struct {
     run_opts_t run;
-    const char *maze, *batch;
+    const char *maze, *batch, *bench_log;
     int help, validate;
 } mmsim_opts_t;
 
@@ -63,6 +64,7 @@ static void usage(FILE *out)
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
           "       mmsim --print-config [--config FILE]   mmsim --print-robot [--robot FILE]   (robot files: docs/ROBOTS.md)\n"
           "       mmsim --validate [--config FILE] [--robot FILE] [--json]   (fitted figures and graded predictions, each with its source; 0 iff every prediction passes)\n"
+          "       mmsim --bench-log fwd:V|rot:V|ir:NAME:D_MM:DEG [--robot FILE]   (a step or IR log as CSV, for tools/mmfit)\n"
           "Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure.\n",
           out);
 }
@@ -239,6 +241,7 @@ static const cli_opt_t flags[] = {
     { .name = "batch", .kind = CLI_STR, .off = offsetof(mmsim_opts_t, batch) },
     { .name = "help", .kind = CLI_SET, .off = offsetof(mmsim_opts_t, help) },
     { .name = "validate", .kind = CLI_SET, .off = offsetof(mmsim_opts_t, validate) },
+    { .name = "bench-log", .kind = CLI_STR, .off = offsetof(mmsim_opts_t, bench_log) },
     { .name = "config", .kind = CLI_STR, .off = RUN(config_path) },
     { .name = "robot", .kind = CLI_STR, .off = RUN(robot_path) },
     { .name = "input", .kind = CLI_FN, .fn = f_input, .has_arg = 1 },
@@ -314,7 +317,7 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (o->eeprom_path && !o->board) return bad("%s", "--eeprom FILE needs --board NAME");
     if (o->watch && !o->avr_elf) return bad("%s", "--watch NAME needs --avr IMAGE.elf (with or without --board NAME): the image's variables");
     if (o->console_pty) o->realtime = 1; /* a person at a serial monitor: in real time */
-    if (o->print_config || o->print_robot || m->validate) return 0;
+    if (o->print_config || o->print_robot || m->validate || m->bench_log) return 0;
     if (m->batch && (o->telem.url || o->telem.log_path)) return bad("%s", "--lcm and --lcm-log work on one maze, not with --batch");
     if (m->batch && (o->report || o->gui || o->shot)) return bad("%s", "--report, --gui and --screenshot need --maze (one run), not --batch");
     if (o->gui && o->shot) return bad("%s", "--gui and --screenshot: one at a time");
@@ -398,6 +401,11 @@ static int run(int argc, char **argv)
     if (first != argc) return bad("unexpected argument '%s'", argv[first]);
     if (check_combinations(&m, seen) || find_robot(&m.run)) return RUN_BAD_INPUT;
     if (m.validate) return validate(&m.run);
+    if (m.bench_log) {
+        simcfg_t cfg;
+        if (run_load_config(&m.run, &cfg) != 0) return RUN_BAD_INPUT;
+        return steplog_run(&cfg, m.bench_log, stdout) ? RUN_BAD_INPUT : RUN_OK;
+    }
     if (m.run.print_config || m.run.print_robot) {
         simcfg_t cfg;
         if (run_load_config(&m.run, &cfg) != 0) return RUN_BAD_INPUT;
