@@ -370,6 +370,13 @@ view: $(B)/mmview
 # make docs-img: the README's three pictures, with the README's commands
 # (after a firmware change they go stale). Without a display: under xvfb-run.
 X_RUN = $(if $(DISPLAY),,xvfb-run -a -s '-screen 0 1024x768x24 -nolisten tcp')
+# The figures the docs quote, written by the programs that make them:
+# docs/VALIDATION.md's --validate tables (tools/docs-validation; test/cli_validate.sh
+# checks them)
+.PHONY: docs
+docs: $(B)/mmsim
+	python3 tools/docs-validation --mmsim $(B)/mmsim
+
 docs-img: $(B)/mmsim $(B)/mmview
 	@tmp=$$(mktemp -d); trap 'rm -rf "$$tmp"' EXIT; \
 	$(X_RUN) $(B)/mmsim --maze mazes/gen-16x16-s1.txt --driver firmware --screenshot docs/img/viewer.png --at 40 --size 800x600 >/dev/null && \

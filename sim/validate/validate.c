@@ -534,7 +534,7 @@ void validate_print(const validate_check_t *v, int n, FILE *out)
     }
     validate_summary_t s = validate_summary(v, n);
     fprintf(out, "%d of %d predicted checks pass; %d fitted figures reported", s.passed, s.graded, s.fitted);
-    if (s.reported) fprintf(out, "; %d predictions reported with no bar", s.reported);
+    if (s.reported) fprintf(out, "; %d prediction%s reported with no bar", s.reported, s.reported == 1 ? "" : "s");
     fprintf(out, "\n");
 }
 
