@@ -93,7 +93,7 @@ static void table_kind_column_and_summary_line(void **state)
     fclose(f);
     assert_non_null(strstr(buf, "check                      kind "));
     assert_non_null(strstr(buf, "\nfit_far_off                fitted "));
-    assert_non_null(strstr(buf, "\n2 of 3 predicted checks pass; 1 fitted figures reported; 1 predictions reported with no bar\n"));
+    assert_non_null(strstr(buf, "\n2 of 3 predicted checks pass; 1 fitted figures reported; 1 prediction reported with no bar\n"));
 }
 
 int main(void)
