@@ -76,7 +76,8 @@ errmsg() { local desc=$1 want=$2; shift 2
   grep -qF -- "$want" "$T/err" && ok "$desc: '$want'" || bad "$desc: $(cat "$T/err")"; }
 errmsg "the paper robot on --board ukmarsbot" "boards/ukmarsbot-v1.3.ini:67: emitter.front.group 0: the robot robots/paper.ini has no [ir.*] sensor with emitter = 0" --board ukmarsbot
 errmsg "the basic robot on the advanced board" "emitter.diagonal.group 1: the robot robots/ukmarsbot-basic-12.ini has no [ir.*] sensor" --board ukmarsbot --robot robots/ukmarsbot-basic-12.ini
-errmsg "the advanced robot on the basic board" "robots/ukmarsbot.ini:206: ir.lds.emitter 1: the board ukmarsbot-basic-v1.3" --board ukmarsbot-basic --robot robots/ukmarsbot.ini
+L=$(awk '/^\[ir.lds\]/ { print NR; exit }' robots/ukmarsbot.ini) # the sensor's section line
+errmsg "the advanced robot on the basic board" "robots/ukmarsbot.ini:$L: ir.lds.emitter 1: the board ukmarsbot-basic-v1.3" --board ukmarsbot-basic --robot robots/ukmarsbot.ini
 
 # ---- BasicSensors: which channel sees which wall. walls NAME: "right front left",
 # the medians of the sketch's 40 WALLS lines
