@@ -16,10 +16,10 @@ S=${MMSIM:-build/mmsim}
 # paper: none (the load-dependent gearbox friction predicts the datasheet's max-efficiency point
 #   and the current at 0.66 kg*mm within 5 %).
 FAIL_paper=""
-# ukmarsbot (ORION): the 11:1 sheet's no-load 1950 rpm (1563: Ke was fitted to ORION's KM) and
-#   0.08 A (0.039: fitted to BIAS_FF); ROT_KM/FWD_KM 1.632 deg/mm (1.462: the nylon skids' friction
-#   slows a spin more than a straight run).
-FAIL_ukmarsbot="sheet_no_load_speed sheet_no_load_current rotation_per_forward_km"
+# ukmarsbot (ORION): the 11:1 sheet's no-load 1950 rpm (1607: Ke was fitted to ORION's KM by
+#   tools/mmfit) and 0.08 A (0.0212: fitted to BIAS_FF, the nylon skids taking part of it).
+#   ROT_KM/FWD_KM 1.632 deg/mm passes at its edge: 1.470 (-9.9 %, the bar 10 %).
+FAIL_ukmarsbot="sheet_no_load_speed sheet_no_load_current"
 
 # check FILE ROBOT "NAMES NEEDED" "NAMES FAILING": the JSON's structure and its failing set
 check() {

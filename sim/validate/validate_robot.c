@@ -97,11 +97,11 @@ static double km_slope(const simcfg_t *c, int rot, step_t *high)
              "firmware's MOUSE_RADIUS)"
 
 /* The robot's [measured] step responses at the config's step_s (the step a
- * contest runs). bench/fit_ukmarsbot.py built the robot from ORION's
- * forward KM and TM and rotation TM, and the file's no_load_rpm splits the
- * gap between forward and rotation KM (docs/robots/ukmarsbot-sources.md
- * section 8b): all four are fitted figures. Their ratio is not: it is
- * graded. */
+ * contest runs). tools/mmfit fitted the robot's mass, yaw inertia and motor
+ * to ORION's forward KM and TM, rotation KM and TM and BIAS_FF, its
+ * no_load_rpm splitting the gap between forward and rotation KM
+ * (docs/robots/ukmarsbot-sources.md section 8b): all four are fitted
+ * figures. Their ratio is not: it is graded. */
 static int motion_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
     const robot_measured_t *m = &c->robot.measured;
