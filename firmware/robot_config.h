@@ -135,14 +135,24 @@
  * below 481 mm/s (RC_CMD_FF_MAX), braking always */
 #define RC_ACCEL_MM_S2 3000.0f
 #define RC_RUN_ACCEL_MM_S2 3000.0f   /* speed runs: 5000 crashed on japan2019 (wheel slip in the stops) */
-/* in-place turns: a quarter turn peaks at 520 deg/s (wheels 436 mm/s),
- * feed-forward 57 + 558 + 199 (52 rad/s^2 of wheel arc) = 814 */
-#define RC_TURN_DEG_S 600.0f
-#define RC_TURN_ACCEL_DEG_S2 3000.0f
+/* in-place turns: a quarter turn peaks at 424 deg/s (wheels 355 mm/s),
+ * feed-forward 57 + 455 + 133 (35 rad/s^2 of wheel arc) = 645. At 600
+ * deg/s and 3,000 deg/s^2 (peak 520 deg/s) with the contacts as springs
+ * and the load-dependent gearbox friction, 12 of the 479 reachable classic
+ * mazes (seed 1) touched a wall, every time a body corner in a turn on the
+ * spot; with this and RC_PIVOT_MAX_MM 4, none of those 12 and none of 30
+ * clean others did (each change alone left 1 of the 12). A U-turn takes
+ * ~0.15 s longer. */
+#define RC_TURN_DEG_S 450.0f
+#define RC_TURN_ACCEL_DEG_S2 2000.0f
 /* On the spot the body's corners sweep 77 mm about the pivot and the cell
  * leaves 84 mm: 7 mm off the centre line touches a wall. Off-centre stops
- * turn about the cell's centre instead (up to this far from the robot's). */
-#define RC_PIVOT_MAX_MM 8.0f
+ * turn about a point up to this far towards the cell's centre. Turning
+ * about a point p to the side puts the outer corners sqrt(60^2 + (48 +
+ * p)^2) mm from it: 82.3 at 8 mm (1.7 mm for the stop's error along the
+ * heading and the offset estimate's), 79.6 at 4 mm (4.4 mm); an offset
+ * beyond 4 mm is left partly, which touches only past 8.6 mm. */
+#define RC_PIVOT_MAX_MM 4.0f
 /* The offset for that is a running average of the straight's centring
  * estimates (each new reading moves it by this share): a single one has
  * ~2 mm of noise, and a pivot set from a wrong one moves the robot off
