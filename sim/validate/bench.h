@@ -27,6 +27,10 @@ int bench_init(const simcfg_t *c);
 long bench_steps(const simcfg_t *c, double seconds);
 /* Append a predicted check to v (at *n): graded as its bound says
  * (validate.h); source names the data the model was not built from. */
+/* IR sensor i's (the robot file's i-th [ir.*]) mean lit-minus-dark reading
+ * over 64 samples, its emitter group lit and dark in turn, the robot where
+ * it is. */
+double bench_lit_minus_dark(sim_state_t *s, unsigned i);
 void bench_add(validate_check_t *v, int *n, const char *name, double expected, double measured, const char *unit,
          double tol_pct, int bound, const char *source);
 /* Append a fitted figure: the model was built from `expected` (source

@@ -55,20 +55,6 @@ static int step_log(const simcfg_t *run, double v_volt, int rot, FILE *out)
     return 0;
 }
 
-/* Mean lit minus dark of sensor i over 64 samples, the robot where it is. */
-static double lit_minus_dark(sim_state_t *s, unsigned i, unsigned g)
-{
-    double sum = 0;
-    for (int k = 0; k < 64; k++) {
-        sim_emitter_set(s, g, 0);
-        double dark = sim_ir_read(s, i);
-        sim_emitter_set(s, g, 1);
-        sum += sim_ir_read(s, i) - dark;
-    }
-    sim_emitter_set(s, g, 0);
-    return sum / 64;
-}
-
 /* Sensor `name` looking east at the end wall of a corridor, d_m from the
  * wall along its axis, its axis angle_rad off the wall's normal. */
 static int ir_log(const simcfg_t *c, const char *name, double d_m, double angle_rad, FILE *out)
@@ -93,9 +79,8 @@ static int ir_log(const simcfg_t *c, const char *name, double d_m, double angle_
     double sx = ch * p->x_m - sh * p->y_m, sy = sh * p->x_m + ch * p->y_m; /* the sensor from the body centre */
     double ax = d_m * cos(angle_rad); /* the axis meets the wall d_m away: east offset */
     world_place(s->world, face - ax - sx, 0.5 * c->world.cell_m - sy, h, NULL);
-    unsigned g = (unsigned)((const ir_part_spec_t *)p->spec)->emitter;
     fprintf(out, "sensor,distance_mm,angle_deg,counts\n%s,%g,%g,%.3f\n", name, d_m * 1000, angle_rad * 180 / M_PI,
-            lit_minus_dark(s, i, g));
+            bench_lit_minus_dark(s, i));
     sim_free(s);
     return 0;
 }

@@ -179,22 +179,6 @@ static int count_checks(const simcfg_t *c, validate_check_t *v, int n)
     return n;
 }
 
-/* Sensor i's mean lit-minus-dark over 64 samples, the robot where it is. */
-static double lit_minus_dark(sim_state_t *s, unsigned i)
-{
-    const robot_part_t *p = &s->model->cfg->robot.part[robot_part_of_kind(s->model->cfg, "ir", i)];
-    unsigned g = (unsigned)((const ir_part_spec_t *)p->spec)->emitter;
-    double sum = 0;
-    for (int k = 0; k < 64; k++) {
-        sim_emitter_set(s, g, 0);
-        double dark = sim_ir_read(s, i);
-        sim_emitter_set(s, g, 1);
-        sum += sim_ir_read(s, i) - dark;
-    }
-    sim_emitter_set(s, g, 0);
-    return sum / 64;
-}
-
 /* The two calibration poses of mazerunner-core's config-robot-*.h:
  * centred: in the middle cell of a corridor 1 cell wide running north,
  *   facing north, side walls left and right, no wall ahead for 2 cells;
@@ -215,7 +199,7 @@ static int ir_calibration(const simcfg_t *c, validate_check_t *v, int n)
             const ir_part_spec_t *sp = (const ir_part_spec_t *)p->spec;
             double want = pose == 0 ? sp->measured_centred : sp->measured_backed;
             if (want < 0) continue;
-            bench_fit(v, &n, name_of(n, pose == 0 ? "ir_%s_centred" : "ir_%s_backed", p->name), want, lit_minus_dark(s, i),
+            bench_fit(v, &n, name_of(n, pose == 0 ? "ir_%s_centred" : "ir_%s_backed", p->name), want, bench_lit_minus_dark(s, i),
                       "counts",
                       pose == 0 ? "the robot file's measured_centred: the real robot centred between side walls, no wall "
                                   "ahead (the sensor's gain is fitted to it)"
@@ -246,7 +230,7 @@ static int ir_model_checks(const simcfg_t *c, validate_check_t *v, int n)
     double sx = ch * p->x_m - sh * p->y_m, sy = sh * p->x_m + ch * p->y_m; /* the sensor from the body centre */
     world_place(s->world, face - d - sx, 0.5 * c->world.cell_m - sy, h, NULL);
     double want = m->gain_counts * c->world.wall_reflectivity * (m->ref_m / d) * (m->ref_m / d);
-    bench_fit(v, &n, "ir_far_field_120mm", want, lit_minus_dark(s, 0), "counts",
+    bench_fit(v, &n, "ir_far_field_120mm", want, bench_lit_minus_dark(s, 0), "counts",
               "IR model: gain * reflectivity * (ref/d)^2 for a wall straight on in the far field (ir.h): the model's own "
               "formula from the robot file's gain, no outside data");
     double dark = 0;
