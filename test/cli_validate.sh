@@ -12,7 +12,7 @@ T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
 S=${MMSIM:-build/mmsim}
 
 # The predictions each shipped robot fails today, with the figure
-# (docs/VALIDATION.md; issue 24 is to make them pass):
+# (docs/VALIDATION.md; a model that makes one pass takes it off its list):
 # paper: none (the load-dependent gearbox friction predicts the datasheet's max-efficiency point
 #   and the current at 0.66 kg*mm within 5 %).
 FAIL_paper=""
