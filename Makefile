@@ -5,12 +5,14 @@ SHELL := /bin/bash
 # Debian packages the build and tests need; `make deps` installs the missing ones.
 # default-jre: lcm-spy is a Swing window (the headless JDK has no AWT);
 # iproute2: `ip` for the udpm test's network namespace; universal-ctags: the
-# function prototypes tools/arduino-build generates for a sketch's tabs.
+# function prototypes tools/arduino-build generates for a sketch's tabs;
+# gdb: avr-gdb (gdb-avr) reads its Python scripts from gdb's data directory
+# (/usr/share/gdb), without which it prints a Python error at every stop.
 DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev libinih-dev \
 	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev libdw-dev \
 	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev \
 	liblcm-java default-jdk-headless default-jre libjchart2d-java xvfb iproute2 \
-	libpng-dev libglfw3-dev libgl-dev python3-venv libx11-dev libxtst-dev gdb-avr universal-ctags
+	libpng-dev libglfw3-dev libgl-dev python3-venv libx11-dev libxtst-dev gdb-avr gdb universal-ctags
 
 CC      ?= gcc
 STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
@@ -370,6 +372,13 @@ view: $(B)/mmview
 # make docs-img: the README's three pictures, with the README's commands
 # (after a firmware change they go stale). Without a display: under xvfb-run.
 X_RUN = $(if $(DISPLAY),,xvfb-run -a -s '-screen 0 1024x768x24 -nolisten tcp')
+# The figures the docs quote, written by the programs that make them:
+# docs/VALIDATION.md's --validate tables (tools/docs-validation; test/cli_validate.sh
+# checks them)
+.PHONY: docs
+docs: $(B)/mmsim
+	python3 tools/docs-validation --mmsim $(B)/mmsim
+
 docs-img: $(B)/mmsim $(B)/mmview
 	@tmp=$$(mktemp -d); trap 'rm -rf "$$tmp"' EXIT; \
 	$(X_RUN) $(B)/mmsim --maze mazes/gen-16x16-s1.txt --driver firmware --screenshot docs/img/viewer.png --at 40 --size 800x600 >/dev/null && \

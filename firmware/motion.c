@@ -81,11 +81,13 @@ void motion_smooth_geometry(float v_mm_s, float *offset_mm, float *length_mm)
 
 float motion_wall_angle(float left_mm, float right_mm)
 {
-    const float c = 0.7071f; /* the diagonal rays are 45 degrees off the heading: cos = sin */
-    /* the rays' end points on the wall, in the robot's frame (x right, y
-     * ahead): (-X - l c, Y + l c) and (X + r c, Y + r c); the wall runs
-     * through both, and the robot's turn from its normal is the wall's slope */
-    return atan2f((left_mm - right_mm) * c, 2.0f * RC_TOF_SIDE_X_MM + (left_mm + right_mm) * c);
+    /* each sensor reads the wall along its cone's inner edge, 32.5 degrees
+     * off the heading (RC_DIAG_EDGE_*): the nearest of its rays to the
+     * wall's normal. The readings' end points on the wall, in the robot's
+     * frame (x right, y ahead): (-X - l s, Y + l c) and (X + r s, Y + r c);
+     * the wall runs through both, and the robot's turn from its normal is
+     * the wall's slope */
+    return atan2f((left_mm - right_mm) * RC_DIAG_EDGE_COS, 2.0f * RC_TOF_SIDE_X_MM + (left_mm + right_mm) * RC_DIAG_EDGE_SIN);
 }
 
 /* Busy until the profiles are done AND the robot has caught up with them:

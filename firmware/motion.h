@@ -55,9 +55,11 @@ void motion_turn_smooth(motion_t *m, float degrees);
  * discrete profile the control tick runs. */
 void motion_smooth_geometry(float v_mm_s, float *offset_mm, float *length_mm);
 /* Standing before a flat wall that both diagonal rays hit (at a cell
- * centre, the rays meet the wall ahead 10 mm from its ends): how far the
- * robot is turned counter-clockwise from the wall's normal, rad, from the
- * two readings (mm along each ray). Exact for any angle and distance. */
+ * centre, each cone's inner edge meets the wall ahead 22 mm from its ends):
+ * how far the robot is turned counter-clockwise from the wall's normal,
+ * rad, from the two readings (mm along each cone's inner edge). Exact for
+ * any angle and distance while the inner edge is the ray nearest the
+ * wall's normal (turned less than 32.5 degrees). */
 float motion_wall_angle(float left_mm, float right_mm);
 int motion_busy(const motion_t *m);
 void motion_stop(motion_t *m);

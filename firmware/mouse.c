@@ -30,14 +30,19 @@ static mouse_status_t st;
 /* what the loop is waiting for */
 enum { WAIT_NONE, WAIT_MOVE, WAIT_TURN, WAIT_SMOOTH };
 static uint8_t waiting;
-static uint8_t sensed;        /* walls of the cell ahead read during this move */
+/* the walls of the cell ahead during this move: not read yet, readings
+ * marked at RC_SENSE_FROM_MM (tof_seq), read */
+enum { SENSE_NONE, SENSE_MARKED, SENSE_DONE };
+static uint8_t sensed;
 static int8_t next_dir;       /* heading to take at the end of the move, -1 none */
 static uint8_t wall_ahead;    /* the move ends facing a wall */
 static int8_t turn_pending;   /* +-1: a smooth turn starts when the straight ends */
 static uint8_t uturn_stage;   /* 0, or the step of a U-turn under way */
 static uint32_t stage_us;     /* when the current U-turn step began */
 static uint8_t fix_stage;     /* 0, or the step of a front-wall fix under way */
-static uint8_t tof_seq[HAL_TOF_COUNT]; /* readings' seq when the current move began */
+/* readings' seq when the current move began, or (sense_point) when it
+ * came within RC_SENSE_FROM_MM of the cell ahead */
+static uint8_t tof_seq[HAL_TOF_COUNT];
 static float smooth_offset_mm; /* a smooth turn starts this far before the turn cell's centre */
 static float smooth_length_mm; /* and drives this far along its arc */
 static float run_offset_mm;   /* speed runs: how far past st.cell's centre the robot is */
@@ -82,7 +87,7 @@ void fw_setup(void)
     st.cell = ex.cell;
     st.heading = ex.heading;
     waiting = WAIT_NONE;
-    sensed = 0;
+    sensed = SENSE_NONE;
     next_dir = -1;
     uturn_stage = 0;
     fix_stage = 0;
@@ -129,8 +134,9 @@ static float along_cell(void)
 
 /* Wall centring from the diagonal sensors: the robot's offset right of
  * the centre line, mm, when a side wall is seen (sets mo.lateral_*). A
- * diagonal ray meets the wall at 45 degrees, so 1 mm sideways is 1.41 mm
- * along the ray. A reading is judged where it arrived: between
+ * diagonal sensor reads a side wall along its cone's edge, 32.5 degrees
+ * off the wall's normal, so 1 mm sideways is 1 / RC_DIAG_EDGE_COS = 1.19 mm
+ * of reading. A reading is judged where it arrived: between
  * RC_SIDE_BLIND_FROM_MM before a cell centre and RC_SIDE_BLIND_TO_MM past
  * it the rays can meet the wall across the end of the cell (or the next
  * one's, where the side wall is missing), which looks like a near side
@@ -150,7 +156,8 @@ static void centring(void)
         side_ok[i] = usable && !d.timeout && d.mm < RC_CENTRING_MAX_MM;
         side_mm[i] = d.mm;
     }
-    float el = 0.7071f * ((float)side_mm[0] - RC_SIDE_WALL_MM), er = 0.7071f * ((float)side_mm[1] - RC_SIDE_WALL_MM);
+    float el = RC_DIAG_EDGE_COS * ((float)side_mm[0] - RC_SIDE_WALL_MM),
+          er = RC_DIAG_EDGE_COS * ((float)side_mm[1] - RC_SIDE_WALL_MM);
     mo.lateral_mm = side_ok[0] && side_ok[1] ? 0.5f * (el - er) : side_ok[0] ? el : side_ok[1] ? -er : 0.0f;
     mo.lateral_valid = (uint8_t)(side_ok[0] || side_ok[1]);
     if (mo.lateral_valid && news) { /* averaged over the last few readings for start_turn */
@@ -262,11 +269,17 @@ static int fresh(void)
 }
 
 /* A move reached the point where the walls of the cell ahead are read:
- * within RC_SENSE_BEFORE_MM of the move's end with a reading taken since
- * the move began, or RC_SENSE_LATEST_MM at the latest; once per move. */
+ * within RC_SENSE_BEFORE_MM of the move's end with readings taken within
+ * RC_SENSE_FROM_MM of it, or RC_SENSE_LATEST_MM at the latest; once per
+ * cell. */
 static int sense_point(float left_mm)
 {
-    return !sensed && left_mm <= RC_SENSE_BEFORE_MM && (fresh() || left_mm <= RC_SENSE_LATEST_MM);
+    if (sensed == SENSE_DONE) return 0;
+    if (sensed == SENSE_NONE && left_mm <= RC_SENSE_FROM_MM) {
+        for (uint8_t i = 0; i < HAL_TOF_COUNT; i++) tof_seq[i] = hal_distance(i).seq;
+        sensed = SENSE_MARKED;
+    }
+    return left_mm <= RC_SENSE_BEFORE_MM && (fresh() || left_mm <= RC_SENSE_LATEST_MM);
 }
 
 /* Read the walls of the cell ahead (its centre to_centre mm away) into the
@@ -274,7 +287,7 @@ static int sense_point(float left_mm)
  * walls (EXPLORE_WALL_*). */
 static uint8_t sense_cell_ahead(float to_centre)
 {
-    sensed = 1;
+    sensed = SENSE_DONE;
     uint8_t walls = read_walls(to_centre);
     explore_moved(&ex, st.heading); /* committed to the cell ahead */
     explore_sense(&ex, walls);
@@ -285,7 +298,7 @@ static void start_forward(float mm, float speed, float v_end, float accel)
 {
     motion_forward_accel(&mo, mm, speed, v_end, accel);
     waiting = WAIT_MOVE;
-    sensed = 0;
+    sensed = SENSE_NONE;
     wall_ahead = 0;
     turn_pending = 0;
     move_shift_mm = 0;
@@ -381,7 +394,7 @@ static void search_decide(float left)
     if (d >= 0 && (uint8_t)d == st.heading && mo.fwd.active) {
         mo.fwd.v_end = v_end;
         profile_set_remaining(&mo.fwd, left + RC_CELL_MM);
-        sensed = 0;
+        sensed = SENSE_NONE;
         return;
     }
     int8_t q = d >= 0 ? quarter(st.heading, (uint8_t)d) : 0;
@@ -445,8 +458,8 @@ static void search_step(void)
         search_decide(left);
         return;
     }
-    if (sensed && wall_ahead && mo.fwd.active) align_to_front_wall(0);
-    if (sensed && !motion_busy(&mo)) {
+    if (sensed == SENSE_DONE && wall_ahead && mo.fwd.active) align_to_front_wall(0);
+    if (sensed == SENSE_DONE && !motion_busy(&mo)) {
         no_centring();
         if (wall_ahead && !front_fix()) return;
         if (next_dir < 0) {
@@ -677,7 +690,7 @@ int mouse_cmd_forward(uint16_t halves)
     cmd_kind = CMD_FORWARD;
     if (cmd_left == 0) { /* from the boundary to ex.cell's centre: nothing new to sense */
         start_forward(RC_CELL_MM / 2, RC_SEARCH_MM_S, 0, RC_ACCEL_MM_S2);
-        sensed = 1;
+        sensed = SENSE_DONE;
         wall_ahead = maze_wall(&ex.map, ex.cell, st.heading) == MAZE_WALL_CLOSED;
     } else if (cmd_left == 1 && (end & 1u)) { /* to the next boundary */
         start_forward(half ? RC_CELL_MM : RC_CELL_MM / 2, RC_SEARCH_MM_S, 0, RC_ACCEL_MM_S2);
@@ -734,7 +747,7 @@ static void cmd_forward_step(void)
     float to_centre = left + move_shift_mm; /* the centre of the cell ahead */
     /* a move ending on a boundary may stop before a fresh reading: sense
      * with the last one then */
-    if (cmd_left > 0 && (sense_point(to_centre) || (!sensed && !mo.fwd.active))) {
+    if (cmd_left > 0 && (sense_point(to_centre) || (sensed != SENSE_DONE && !mo.fwd.active))) {
         uint8_t walls = sense_cell_ahead(to_centre);
         st.cell = ex.cell;
         hal_belief(&ex.map, ex.cell, st.heading, st.mode);
@@ -749,15 +762,15 @@ static void cmd_forward_step(void)
             } else {
                 profile_set_remaining(&mo.fwd, left + RC_CELL_MM);
             }
-            sensed = 0;
+            sensed = SENSE_NONE;
             return;
         }
         if (cmd_left > 0) cmd_flags |= CF_BLOCKED;
         mo.fwd.v_end = 0; /* stop in the cell ahead (or on its boundary) */
         return;
     }
-    if (sensed && wall_ahead && mo.fwd.active) align_to_front_wall(move_shift_mm);
-    if (sensed && !motion_busy(&mo)) {
+    if (sensed == SENSE_DONE && wall_ahead && mo.fwd.active) align_to_front_wall(move_shift_mm);
+    if (sensed == SENSE_DONE && !motion_busy(&mo)) {
         no_centring();
         uint8_t on_edge = (cmd_flags & (CF_END_HALF | CF_BLOCKED)) == CF_END_HALF;
         if (!on_edge && wall_ahead && !front_fix()) return;

@@ -65,23 +65,44 @@
 #define RC_TOF_FRONT_Y_MM 55.0f      /* front sensor ahead of the body centre */
 #define RC_TOF_SIDE_X_MM 40.0f       /* diagonal sensors' offset from the centre line */
 #define RC_TOF_SIDE_Y_MM 50.0f       /* diagonal sensors ahead of the body centre */
-/* A diagonal sensor at 45 degrees sees a side wall 84 - 40 = 44 mm away
- * sideways, 62 mm along the ray; without that wall the ray runs on to a
- * wall one cell further out (~310 mm) or to a post. */
-#define RC_SIDE_WALL_MM 62.0f
-#define RC_SIDE_THRESHOLD_MM 110.0f  /* nearer = wall present */
+/* The VL53L0X reports the nearest surface in its 25 deg field of view
+ * (datasheet DocID029104; robots/paper.ini [tof.*] fov_deg). A flat wall
+ * 45 degrees off a diagonal sensor's axis (a side wall, or the wall ahead
+ * of a cell centre) is therefore read along the cone's edge nearest the
+ * wall's normal, 45 - 12.5 = 32.5 degrees off it, not along the axis; the
+ * cosine and sine of that angle turn a reading into distances. */
+#define RC_TOF_FOV_DEG 25.0f
+#define RC_DIAG_EDGE_COS 0.8434f     /* cos(32.5 deg) */
+#define RC_DIAG_EDGE_SIN 0.5373f     /* sin(32.5 deg) */
+/* A diagonal sensor sees a side wall 84 - 40 = 44 mm away sideways:
+ * 44 / cos(32.5 deg) = 52.2 mm (one ray along the 45 degree axis read 62);
+ * 1 mm sideways is 1.19 mm of reading. Without that wall the cone runs on
+ * to a wall one cell further out (~200 mm) or to a post. */
+#define RC_SIDE_WALL_MM 52.2f
+/* nearer = wall present: the side wall up to 32 mm further out than
+ * centred ((44 + 32) / cos(32.5 deg) = 90 mm), the reach 110 mm had with
+ * the one ray. Kept that short because the cone's inner edge reaches the
+ * post or wall ahead of the next cell through its missing side wall at
+ * ~110 mm when the walls are read late (RC_SENSE_LATEST_MM: the sensor
+ * 10 mm short of the centre). 110 passed the 30 first failing mazes of
+ * the classic folder alike (seed 1), once the walls were read with fresh
+ * readings (RC_SENSE_FROM_MM). */
+#define RC_SIDE_THRESHOLD_MM 90.0f
 /* Centring uses a diagonal reading only below this: 20 mm off the centre
- * line. Between it and RC_SIDE_THRESHOLD_MM the ray has met a post or a
- * wall through a gap (a 107 mm reading put a U-turn's pivot 8 mm off on
- * japan2019 seed 6 and its corner into the wall). */
-#define RC_CENTRING_MAX_MM 90.0f
+ * line ((44 + 20) / cos(32.5 deg) = 76 mm). Between it and
+ * RC_SIDE_THRESHOLD_MM the cone has met a post or a wall through a gap (a
+ * reading of that kind put a U-turn's pivot 8 mm off on japan2019 seed 6
+ * and its corner into the wall). */
+#define RC_CENTRING_MAX_MM 76.0f
 /* and only while moving faster than this: a creep of more than 4 mm back
  * from a wall ahead took readings of that wall for side walls */
 #define RC_CENTRING_MIN_MM_S 100.0f
-/* The diagonal rays meet the side wall 94 mm ahead of the body centre: from
- * 48 mm before a cell centre to 4 mm past it they can reach the post row
- * at the cell's end first (a wall ahead, or the neighbour's end wall where
- * the side wall is missing), which reads like a near side wall. */
+/* From 48 mm before a cell centre to 4 mm past it the diagonal sensors can
+ * reach the post row at the cell's end first (a wall ahead, or the
+ * neighbour's end wall where the side wall is missing), which reads like a
+ * near side wall. With the cone that happens from 17 mm before the centre
+ * (the inner edge meets a wall ahead nearer than 52.2 mm from 10 mm
+ * before); the one ray's wider band is kept. */
 #define RC_SIDE_BLIND_FROM_MM 48.0f
 #define RC_SIDE_BLIND_TO_MM 4.0f
 /* distance from the front sensor to the wall ahead when centred in a cell */
@@ -114,14 +135,24 @@
  * below 481 mm/s (RC_CMD_FF_MAX), braking always */
 #define RC_ACCEL_MM_S2 3000.0f
 #define RC_RUN_ACCEL_MM_S2 3000.0f   /* speed runs: 5000 crashed on japan2019 (wheel slip in the stops) */
-/* in-place turns: a quarter turn peaks at 520 deg/s (wheels 436 mm/s),
- * feed-forward 57 + 558 + 199 (52 rad/s^2 of wheel arc) = 814 */
-#define RC_TURN_DEG_S 600.0f
-#define RC_TURN_ACCEL_DEG_S2 3000.0f
+/* in-place turns: a quarter turn peaks at 424 deg/s (wheels 355 mm/s),
+ * feed-forward 57 + 455 + 133 (35 rad/s^2 of wheel arc) = 645. At 600
+ * deg/s and 3,000 deg/s^2 (peak 520 deg/s) with the contacts as springs
+ * and the load-dependent gearbox friction, 12 of the 479 reachable classic
+ * mazes (seed 1) touched a wall, every time a body corner in a turn on the
+ * spot; with this and RC_PIVOT_MAX_MM 4, none of those 12 and none of 30
+ * clean others did (each change alone left 1 of the 12). A U-turn takes
+ * ~0.15 s longer. */
+#define RC_TURN_DEG_S 450.0f
+#define RC_TURN_ACCEL_DEG_S2 2000.0f
 /* On the spot the body's corners sweep 77 mm about the pivot and the cell
  * leaves 84 mm: 7 mm off the centre line touches a wall. Off-centre stops
- * turn about the cell's centre instead (up to this far from the robot's). */
-#define RC_PIVOT_MAX_MM 8.0f
+ * turn about a point up to this far towards the cell's centre. Turning
+ * about a point p to the side puts the outer corners sqrt(60^2 + (48 +
+ * p)^2) mm from it: 82.3 at 8 mm (1.7 mm for the stop's error along the
+ * heading and the offset estimate's), 79.6 at 4 mm (4.4 mm); an offset
+ * beyond 4 mm is left partly, which touches only past 8.6 mm. */
+#define RC_PIVOT_MAX_MM 4.0f
 /* The offset for that is a running average of the straight's centring
  * estimates (each new reading moves it by this share): a single one has
  * ~2 mm of noise, and a pivot set from a wrong one moves the robot off
@@ -153,11 +184,22 @@
 #define RC_SMOOTH_DEG_S 315.1f       /* 5.5 rad/s */
 #define RC_SMOOTH_ACCEL_DEG_S2 4010.7f /* 70 rad/s^2 */
 /* sense the next cell's walls this far before its centre: the diagonal
- * rays (50 mm ahead of the body's centre, 44 mm more to the side wall)
- * then hit it 46 mm before its centre, 44 mm past its entry boundary, clear
- * of the posts (+-6 mm about it). 110 before (74 mm past the boundary)
- * left only 31 mm to brake into a smooth turn. */
+ * sensors (50 mm ahead of the body's centre) are then at its entry
+ * boundary, and their cones (32.5 to 57.5 degrees off the heading) meet
+ * its side wall 28 to 69 mm past that boundary, clear of the posts (+-6 mm
+ * about it). 110 before left only 31 mm to brake into a smooth turn. */
 #define RC_SENSE_BEFORE_MM 140.0f
+/* and only with readings taken within this of the cell's centre (the
+ * diagonal sensors then at most 10 mm short of its entry boundary): the
+ * cone's outer edge, 57.5 degrees off the heading, meets the post at that
+ * boundary from 22 mm short of it (17 mm turned 5 degrees towards it),
+ * and a post there reads like a side wall (52 mm) where the cell has none.
+ * Readings up to 30 ms old at the sensing point (18 mm at 600 mm/s) put
+ * side walls that are not there into 13ye (seed 1: a post read 50 mm)
+ * and 87us1; with this both are mapped right. The first
+ * reading after this point arrives at most 18 mm later: 132 - 79 = 53 mm
+ * to brake into a smooth turn (2,200 mm/s^2). */
+#define RC_SENSE_FROM_MM 150.0f
 /* without a fresh reading by this distance before a cell's centre, sense
  * with the last one (at most 30 ms = 18 mm old at search speed) */
 #define RC_SENSE_LATEST_MM 60.0f

@@ -172,9 +172,9 @@ print('L %d R %d (physics %d %d), %d + %d edges' % (l, r, s['left'], s['right'],
 want_rc 1 "LevelInt runs" "$MMSIM" --board ukmarsbot --avr $SK/LevelInt.elf --robot robots/ukmarsbot.ini \
   --maze mazes/gen-16x16-s1.txt --time-limit 1.5 --json
 js "$T/out" "
-want = 'FLAGS low 995 on 1589 off 0 after 1587\r\nINT0 2 0 2059\r\nINT0 2533 12 13908\r\nINT0 5000 25 9191\r\nINT0 7490 37 29004\r\nINT0 10000 50 63815\r\n'
+want = 'FLAGS low 1006 on 1551 off 0 after 1550\r\nINT0 2 0 2507\r\nINT0 2522 12 52711\r\nINT0 5000 25 41914\r\nINT0 7492 37 29553\r\nINT0 10000 50 57441\r\n'
 assert j['console'] == want, (j['console'], want)
-assert j['board']['interrupts'].get('INT0') == 11030, j['board']['interrupts']
+assert j['board']['interrupts'].get('INT0') == 11907, j['board']['interrupts']
 print(want.split(chr(13))[0])
 " >"$T/l.txt" 2>&1 && ok "level-mode INT0/INT1 as simavr's own check gives them ($(cat "$T/l.txt"))" || bad "level mode: $(tail -3 "$T/l.txt")"
 
@@ -182,9 +182,9 @@ print(want.split(chr(13))[0])
 want_rc 1 "SleepLevel runs" "$MMSIM" --board ukmarsbot --avr $SK/SleepLevel.elf --robot robots/ukmarsbot.ini \
   --maze mazes/gen-16x16-s1.txt --time-limit 1.5 --json
 js "$T/out" "
-want = 'WAKES 715 486 4281\r\nWAKES 1547 1095 61480\r\nWAKES 1973 1286 33488\r\nWAKES 2399 1478 61455\r\nWAKES 2827 1669 5587\r\n'
+want = 'WAKES 722 492 18840\r\nWAKES 1590 1133 12172\r\nWAKES 2088 1399 3354\r\nWAKES 2568 1645 13844\r\nWAKES 3050 1891 21835\r\n'
 assert j['console'] == want, (j['console'], want)
-assert j['board']['interrupts'] == {'INT1': 1861, 'TIMER0_OVF': 1464, 'USART_UDRE': 107}, j['board']['interrupts']
+assert j['board']['interrupts'] == {'INT1': 2136, 'TIMER0_OVF': 1464, 'USART_UDRE': 108}, j['board']['interrupts']
 print(want.split(chr(13))[-2].strip())
 " >"$T/l.txt" 2>&1 && ok "sleeping with level-mode INT0 as in simavr alone ($(cat "$T/l.txt"))" || bad "sleep, level mode: $(tail -3 "$T/l.txt")"
 

@@ -1,40 +1,136 @@
 #!/usr/bin/env bash
-# cli_validate.sh - mmsim --validate: every check passes on the default robot
-# (datasheet motor, exact solver), the JSON has the documented fields, and a
-# robot that breaks the models fails the checks it should.
+# cli_validate.sh - mmsim --validate: every check is "fitted" (the model was
+# built from the figure: reported, never graded) or "predicted" (graded),
+# and names its data; the exit code comes from the predictions alone. The
+# shipped robots' failing predictions are listed by name below, so the test
+# fails when a new one starts failing or a listed one passes without the
+# list being updated. Robot-file edits in a temporary folder show that a
+# wrong fitted figure leaves the exit code at 0 and a broken prediction
+# makes it 1.
 T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
 . test/lib.sh
 S=${MMSIM:-build/mmsim}
 
-want_rc 0 "validate passes on the default robot" "$S" --validate --json
-cp "$T/out" "$T/default.json"
-python3 - "$T/default.json" <<'PY' && ok "every named check present and passing" || bad "validate JSON: $(cat "$T/default.json")"
+# The predictions each shipped robot fails today, with the figure
+# (docs/VALIDATION.md; a model that makes one pass takes it off its list):
+# paper: none (the load-dependent gearbox friction predicts the datasheet's max-efficiency point
+#   and the current at 0.66 kg*mm within 5 %).
+FAIL_paper=""
+# ukmarsbot (ORION): the 11:1 sheet's no-load 1950 rpm (1607: Ke was fitted to ORION's KM by
+#   tools/mmfit) and 0.08 A (0.0212: fitted to BIAS_FF, the nylon skids taking part of it).
+#   ROT_KM/FWD_KM 1.632 deg/mm passes at its edge: 1.470 (-9.9 %, the bar 10 %).
+FAIL_ukmarsbot="sheet_no_load_speed sheet_no_load_current"
+
+# check FILE ROBOT "NAMES NEEDED" "NAMES FAILING": the JSON's structure and its failing set
+check() {
+python3 - "$@" <<'PY'
 import json, sys
 d = json.loads(open(sys.argv[1]).read().splitlines()[-1])
-names = {c["name"]: c for c in d["checks"]}
-need = ["no_load_speed", "no_load_current", "stall_torque", "stall_current", "step_response_1ms", "step_response_5ms",
-        "encoder_counts_per_rev", "rest_creep_mm_per_min", "straight_veer_mm_4m", "tof_noise_cv",
-        "tof_timeout_beyond_range", "wall_no_tunnelling", "max_efficiency_speed", "max_efficiency_current"]
+robot, need, want_fail = sys.argv[2], sys.argv[3].split(), set(sys.argv[4].split())
+checks = d["checks"]
+names = {c["name"]: c for c in checks}
+fields = {"name", "kind", "expected", "measured", "unit", "tolerance_pct", "source", "pass", "bound"}
+for c in checks:
+    assert fields <= set(c), (c, "fields")
+    assert c["kind"] in ("fitted", "predicted"), c
+    assert isinstance(c["source"], str) and len(c["source"]) > 10, c
+    graded = c["kind"] == "predicted" and c["bound"] != "report"
+    if graded:
+        assert isinstance(c["pass"], bool), c
+    else:  # fitted figures and bar-less predictions are reported, never graded
+        assert c["pass"] is None and c["tolerance_pct"] is None, c
 missing = [n for n in need if n not in names]
-failing = [n for n, c in names.items() if not c["pass"]]
-fields = {"name", "expected", "measured", "unit", "tolerance_pct", "source", "pass"}
-assert not missing, missing
-assert not failing, failing
-assert all(fields <= set(c) for c in d["checks"]), "fields"
+assert not missing, (robot, "missing", missing)
+failing = {n for n, c in names.items() if c["pass"] is False}
+assert failing == want_fail, (robot, "failing now", sorted(failing), "listed", sorted(want_fail))
+graded = [c for c in checks if c["kind"] == "predicted" and c["bound"] != "report"]
+assert d["predicted"] == len(graded) and d["passed"] == len(graded) - len(failing), d
+assert d["fitted"] == sum(c["kind"] == "fitted" for c in checks), d
+PY
+}
+
+# ---- the paper robot
+FITTED_MOTOR="no_load_speed no_load_current stall_torque stall_current encoder_counts_per_rev"
+want_rc $([ -n "$FAIL_paper" ] && echo 1 || echo 0) "paper: exit code from its failing predictions" "$S" --validate --json
+cp "$T/out" "$T/paper.json"
+check "$T/paper.json" paper "$FITTED_MOTOR step_response_1ms step_response_5ms first_step_current rest_creep_mm_per_min
+  straight_veer_mm_4m tof_noise_cv tof_timeout_beyond_range wall_no_tunnelling max_efficiency_speed max_efficiency_current
+  max_efficiency mid_torque_current max_power $FAIL_paper" "$FAIL_paper" &&
+  ok "paper: kinds, sources, fitted never graded, failing exactly: ${FAIL_paper:-none}" || bad "paper: $(head -c 400 "$T/paper.json")"
+python3 - "$T/paper.json" <<'PY' && ok "paper: the motor's figures are fitted, its step responses and physics predicted" || bad "paper kinds"
+import json, sys
+c = {k["name"]: k["kind"] for k in json.loads(open(sys.argv[1]).read().splitlines()[-1])["checks"]}
+for n in ("no_load_speed", "no_load_current", "stall_torque", "stall_current", "encoder_counts_per_rev", "tof_noise_cv",
+          "max_power"):
+    assert c[n] == "fitted", n
+for n in ("step_response_1ms", "first_step_current", "rest_creep_mm_per_min", "straight_veer_mm_4m", "wall_no_tunnelling",
+          "max_efficiency_speed", "max_efficiency_current", "max_efficiency", "mid_torque_current"):
+    assert c[n] == "predicted", n
 PY
 
-# the text table ends with the count
-want_rc 0 "validate table" "$S" --validate
-grep -q "^[0-9]* of [0-9]* checks pass$" "$T/out" && ok "table's last line" || bad "table: $(tail -2 "$T/out")"
+# ---- UKMARSBOT (ORION)
+want_rc $([ -n "$FAIL_ukmarsbot" ] && echo 1 || echo 0) "ukmarsbot: exit code from its failing predictions" \
+  "$S" --validate --json --robot robots/ukmarsbot.ini
+check "$T/out" ukmarsbot "$FITTED_MOTOR forward_km forward_tm rotation_km rotation_tm counts_500mm_left ir_lfs_backed
+  ir_lds_centred stall_current_ukmars_docs $FAIL_ukmarsbot" "$FAIL_ukmarsbot" &&
+  ok "ukmarsbot: kinds, sources, failing exactly: ${FAIL_ukmarsbot:-none}" || bad "ukmarsbot: $(head -c 400 "$T/out")"
+python3 -c "
+import json; c={k['name']:k['kind'] for k in json.loads(open('$T/out').read().splitlines()[-1])['checks']}
+assert all(c[n] == 'fitted' for n in ('forward_km', 'forward_tm', 'rotation_km', 'rotation_tm', 'counts_500mm_left', 'ir_lfs_backed'))
+" && ok "ukmarsbot: ORION's KM, TM, counts and IR calibration are fitted" || bad "ukmarsbot kinds"
 
-# the paper's loss-free motor runs 61 % fast: the datasheet checks fail, exit 1
+# the text table: a kind column and the summary line
+want_rc $([ -n "$FAIL_paper" ] && echo 1 || echo 0) "validate table" "$S" --validate
+head -1 "$T/out" | grep -q "^check  *kind  *expected" && ok "table's kind column" || bad "table header: $(head -1 "$T/out")"
+grep -q "^[0-9]* of [0-9]* predicted checks pass; [0-9]* fitted figures reported\(; [0-9]* predictions\? reported with no bar\)\?$" "$T/out" &&
+  ok "table's last line" || bad "table: $(tail -2 "$T/out")"
+grep "^no_load_speed " "$T/out" | grep -q " fitted .* - *- *Pololu" && ok "a fitted row: no tolerance, no pass" || bad "fitted row: $(grep "^no_load_speed" "$T/out")"
+
+# ---- fitted figures do not decide the exit code, predictions do. A paper robot whose motor is
+# not the datasheet's (no_load_rpm 451: the Pololu predictions do not apply) passes every
+# prediction; wrong [measured] figures are fitted ones: still exit 0
+sed 's/^no_load_rpm = 450$/no_load_rpm = 451/' robots/paper.ini >"$T/base.ini"
+[ "$(grep -c '^no_load_rpm = 451$' "$T/base.ini")" = 2 ] || bad "base robot: not two no_load_rpm lines"
+{ cat "$T/base.ini"; printf '\n[measured.wrong]\n; source: deliberately wrong (test)\nfwd_tm_s = 0.9\n'
+  printf '; source: deliberately wrong (test)\ncounts_500mm_left = 9999\n'; } >"$T/fitted.ini"
+want_rc 0 "a wrong fitted figure does not fail validation" "$S" --validate --json --robot "$T/fitted.ini"
+python3 -c "
+import json; c={k['name']:k for k in json.loads(open('$T/out').read().splitlines()[-1])['checks']}
+assert c['counts_500mm_left']['kind'] == 'fitted' and c['counts_500mm_left']['pass'] is None and c['counts_500mm_left']['measured'] < 5000
+assert c['forward_tm']['kind'] == 'fitted' and abs(c['forward_tm']['measured'] - 0.9) > 0.3
+" && ok "the wrong fitted figures are reported, not graded" || bad "fitted: $(head -c 600 "$T/out")"
+# a measured ROT_KM / FWD_KM no rigid robot with this track gives: a broken prediction, exit 1
+{ cat "$T/base.ini"; printf '\n[measured.wrong]\n; source: deliberately wrong (test)\nfwd_km_mm_s_v = 475\n'
+  printf '; source: deliberately wrong (test)\nrot_km_deg_s_v = 3000\n'; } >"$T/predicted.ini"
+want_rc 1 "a broken prediction fails validation" "$S" --validate --json --robot "$T/predicted.ini"
+python3 -c "
+import json; d=json.loads(open('$T/out').read().splitlines()[-1]); c={k['name']:k for k in d['checks']}
+assert c['rotation_per_forward_km']['pass'] is False and [k['name'] for k in d['checks'] if k['pass'] is False] == ['rotation_per_forward_km']
+" && ok "rotation_per_forward_km flagged, alone" || bad "prediction: $(head -c 600 "$T/out")"
+
+# the paper's loss-free motor: the no-load speed (725 rpm) is reported, the datasheet's
+# predictions fail, exit 1
 sed 's/^model = datasheet/model = paper/' robots/paper.ini >"$T/paper.ini"
 [ "$(grep -c '^model = paper' "$T/paper.ini")" = 2 ] || bad "paper motor robot: not two model lines"
 want_rc 1 "the paper's motor fails validation" "$S" --validate --json --robot "$T/paper.ini"
 python3 -c "
 import json,sys; d=json.loads(open('$T/out').read().splitlines()[-1]); c={k['name']:k for k in d['checks']}
-assert not c['no_load_speed']['pass'] and abs(c['no_load_speed']['measured']-725)<10, c['no_load_speed']
-" && ok "paper motor: no-load speed 725 rpm flagged" || bad "paper motor: $(head -c 600 "$T/out")"
+assert c['no_load_speed']['pass'] is None and abs(c['no_load_speed']['measured']-725)<10, c['no_load_speed']
+assert c['max_power']['pass'] is None and c['max_efficiency_speed']['pass'] is False, (c['max_power'], c['max_efficiency_speed'])
+" && ok "paper motor: no-load speed 725 rpm and max power reported, the max-efficiency speed flagged" || bad "paper motor: $(head -c 600 "$T/out")"
+
+# a constant friction (friction_load_a removed): the curve's predictions fail, exit 1
+grep -v '^friction_load_a' robots/paper.ini >"$T/constfric.ini"
+want_rc 1 "a constant friction fails the curve's predictions" "$S" --validate --json --robot "$T/constfric.ini"
+python3 -c "
+import json; d=json.loads(open('$T/out').read().splitlines()[-1]); c={k['name']:k for k in d['checks']}
+bad = [n for n in ('max_efficiency_speed', 'max_efficiency_current', 'max_efficiency', 'mid_torque_current') if not c[n]['pass']]
+assert bad == ['max_efficiency_speed', 'max_efficiency_current', 'max_efficiency', 'mid_torque_current'], bad
+assert c['no_load_speed']['kind'] == 'fitted' and abs(c['no_load_speed']['measured'] - 450) < 9 and abs(c['stall_torque']['measured'] - 0.028439) < 6e-4
+" && ok "constant friction: the four predictions flagged" || bad "constant friction: $(head -c 600 "$T/out")"
+
+# docs/VALIDATION.md's tables are the program's output (make docs writes them)
+want_rc 0 "docs/VALIDATION.md's tables are --validate's output (make docs)" python3 tools/docs-validation --mmsim "$S" --check
 
 # quickstep slides a resting robot: the creep check catches it
 printf '[sim]\nsolver = quickstep\n' >"$T/qs.ini"

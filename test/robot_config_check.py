@@ -17,7 +17,9 @@ Tolerances, and why:
   exactly; 0.1 mm is below any real change of a part.
 - RC_ODOM_TRACK_MM: within 1 mm of the track. It is the track tuned for
   tyre scrub (0.2 mm more, robot_config.h says why), not a copy of it.
-- RC_SIDE_WALL_MM (the diagonal ray to a side wall): 0.5 mm; the firmware
+- RC_SIDE_WALL_MM (a diagonal sensor's reading of a side wall: along its
+  cone's edge nearest the wall's normal, yaw - fov_deg / 2 off it; along
+  the axis with fov_deg 0): 0.5 mm; the firmware
   writes it in whole mm.
 - the diagonal sensors' yaw: 0.5 degree (the firmware assumes 45).
 - counts per wheel turn (encoder_ppr x gear_ratio): 0.05 %; the firmware
@@ -112,8 +114,13 @@ def main():
         print(f"{'FAILED' if bad else 'ok'}: diagonal rays at 45 deg, tof.{side} yaw_deg = {yaw * sign:g} (tolerance 0.5 deg)")
         if bad:
             fails.append(f"tof.{side}.yaw_deg")
-    side_wall = (cell_mm / 2 - wall_mm / 2 - (-R("tof.left.x_mm"))) / math.cos(math.radians(R("tof.left.yaw_deg")))
-    check("RC_SIDE_WALL_MM", side_wall, 0.5, "mm", "the left ray to the side wall")
+    check("RC_TOF_FOV_DEG", R("tof.left.fov_deg"), 0.1, "deg", "tof.left fov_deg")
+    check("RC_TOF_FOV_DEG", R("tof.right.fov_deg"), 0.1, "deg", "tof.right fov_deg")
+    edge = math.radians(R("tof.left.yaw_deg") - R("tof.left.fov_deg") / 2)
+    check("RC_DIAG_EDGE_COS", math.cos(edge), 0.0005, "", "cos(yaw_deg - fov_deg / 2)")
+    check("RC_DIAG_EDGE_SIN", math.sin(edge), 0.0005, "", "sin(yaw_deg - fov_deg / 2)")
+    side_wall = (cell_mm / 2 - wall_mm / 2 - (-R("tof.left.x_mm"))) / math.cos(edge)
+    check("RC_SIDE_WALL_MM", side_wall, 0.5, "mm", "the left cone's edge to the side wall")
 
     for side in ("left", "right"):
         m, e = f"motor.{side}.", f"encoder.{side}."

@@ -189,20 +189,22 @@ static void test_turn_about(void **state)
     assert_true(m.fwd.target < 0);
 }
 
-/* The diagonal rays' lengths to a flat wall dist_mm ahead of the body
+/* The diagonal sensors' readings of a flat wall dist_mm ahead of the body
  * centre (along the wall's normal), the robot turned delta_rad
- * counter-clockwise from that normal: each sensor sits at (-+X, Y) and
- * looks 45 degrees out. */
+ * counter-clockwise from that normal: each sensor sits at (-+X, Y), looks
+ * 45 degrees out and reads along its cone's inner edge. */
 static float ray_to_wall(int right, float delta_rad, float dist_mm)
 {
-    float sx = right ? RC_TOF_SIDE_X_MM : -RC_TOF_SIDE_X_MM, dx = right ? 0.70710678f : -0.70710678f;
+    /* the cone's inner edge, 32.5 degrees off the heading: the ray of the
+     * 25 deg cone nearest the normal of a wall ahead (RC_DIAG_EDGE_*) */
+    float sx = right ? RC_TOF_SIDE_X_MM : -RC_TOF_SIDE_X_MM, dx = right ? RC_DIAG_EDGE_SIN : -RC_DIAG_EDGE_SIN;
     float sy = sx * sinf(delta_rad) + RC_TOF_SIDE_Y_MM * cosf(delta_rad); /* in the wall's frame */
-    float dy = dx * sinf(delta_rad) + 0.70710678f * cosf(delta_rad);
+    float dy = dx * sinf(delta_rad) + RC_DIAG_EDGE_COS * cosf(delta_rad);
     return (dist_mm - sy) / dy;
 }
 
 /* Heading from two diagonal readings of one wall: exact for any angle and
- * distance; turned left, the left ray is the longer one. */
+ * distance; turned left, the left reading is the longer one. */
 static void test_wall_angle(void **state)
 {
     (void)state;
@@ -214,11 +216,11 @@ static void test_wall_angle(void **state)
             float l = ray_to_wall(0, d, dist[j]), r = ray_to_wall(1, d, dist[j]);
             near(motion_wall_angle(l, r), d, 1e-4);
         }
-    /* centred and square: both rays 48 mm, no angle */
-    near(ray_to_wall(0, 0, 84.0f), 48.08, 0.01);
-    near(motion_wall_angle(48.0f, 48.0f), 0, 1e-6);
-    /* 1 mm between the readings is ~0.27 degrees */
-    assert_true(motion_wall_angle(49.0f, 48.0f) > 0.004f && motion_wall_angle(49.0f, 48.0f) < 0.0055f);
+    /* centred and square: both readings 34 / cos(32.5 deg) = 40.3 mm, no angle */
+    near(ray_to_wall(0, 0, 84.0f), 40.31, 0.01);
+    near(motion_wall_angle(40.0f, 40.0f), 0, 1e-6);
+    /* 1 mm between the readings is ~0.39 degrees */
+    assert_true(motion_wall_angle(41.0f, 40.0f) > 0.006f && motion_wall_angle(41.0f, 40.0f) < 0.0075f);
 }
 
 /* The start cell boxed in: the mouse reports it and stops. */

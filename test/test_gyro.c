@@ -151,6 +151,39 @@ static void test_determinism(void **state)
     assert_true(gyro_read(&e, 0.3, mid(&s, 999)) == ya);
 }
 
+/* The zero-rate level over many parts (one per seed): bias_dps is ST's
+ * TyOff, the population's standard deviation (gyro.h), so with the default
+ * bias_typ_sigmas = 1 the spread is 10 dps and 31.73 % of the parts start
+ * beyond +-10 dps (2 * (1 - Phi(1))), 4.55 % beyond +-20 dps; read as a bound
+ * (bias_typ_sigmas = 3) 0.27 % do. 20000 seeds: the fractions' standard
+ * errors are 0.33, 0.15 and 0.04 points; the bars are 4 of them. */
+static void test_bias_over_parts(void **state)
+{
+    gyro_spec_t s;
+    gyro_spec_default(&s);
+    assert_near(s.bias_typ_sigmas, 1.0, 0);
+    for (int pass = 0; pass < 2; pass++) {
+        if (pass) s.bias_typ_sigmas = 3.0;
+        long n = 20000, beyond = 0, beyond2 = 0;
+        double sum2 = 0;
+        for (long i = 0; i < n; i++) {
+            gyro_t g;
+            gyro_init(&g, &s, (uint64_t)i + 1, 0);
+            sum2 += g.bias0_dps * g.bias0_dps;
+            beyond += fabs(g.bias0_dps) > s.bias_dps;
+            beyond2 += fabs(g.bias0_dps) > 2 * s.bias_dps;
+        }
+        double sd = sqrt(sum2 / n), want = s.bias_dps / s.bias_typ_sigmas;
+        assert_near(sd, want, 0.02 * want);
+        if (!pass) {
+            assert_near((double)beyond / n, 0.3173, 4 * 0.0033);
+            assert_near((double)beyond2 / n, 0.0455, 4 * 0.0015);
+        } else {
+            assert_near((double)beyond / n, 0.0027, 4 * 0.0004);
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -160,6 +193,7 @@ int main(void)
         cmocka_unit_test(test_saturation_and_lsb),
         cmocka_unit_test(test_sample_and_hold),
         cmocka_unit_test(test_determinism),
+        cmocka_unit_test(test_bias_over_parts),
     };
     return cmocka_run_group_tests_name("gyro", tests, NULL, NULL);
 }

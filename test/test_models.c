@@ -77,10 +77,30 @@ static void test_datasheet_constants(void **state)
 {
     (void)state;
     double r, ke, eta;
-    motor_constants(&cfg, &r, &ke, &eta);
+    drive_spec_t c = cfg;
+    c.friction_load_a = 0; /* a constant friction */
+    motor_constants(&c, &r, &ke, &eta);
     assert_near(r, 16.6667, 1e-4);
     assert_near(ke, 0.00402714, 1e-4);
     assert_near(eta, 0.695583, 1e-4);
+    /* the paper robot's friction rises by 0.0273 A under load (bench/fit_motor_losses.py):
+     * the same R and Ke, the gearbox's efficiency from the stall's friction */
+    motor_constants(&cfg, &r, &ke, &eta);
+    assert_near(ke, 0.00402714, 1e-4);
+    assert_near(eta, 0.756176, 1e-4);
+}
+
+/* The load-dependent friction: the no-load current running free, its rise
+ * under load, at most half as fast as the current, none when load_a is 0. */
+static void test_friction_rise(void **state)
+{
+    (void)state;
+    assert_true(motor_friction_a(0.02, 0.0273, 0.02) == 0.02);
+    assert_true(motor_friction_a(0.02, 0.0273, 0.0) == 0.02);
+    assert_near(motor_friction_a(0.02, 0.0273, 0.36), 0.0472461, 1e-5); /* 0.02 + 0.0273 (1 - e^(-0.34/0.0546)) */
+    assert_near(motor_friction_a(0.02, 0.0273, -0.36), 0.0472461, 1e-5);
+    assert_true(motor_friction_a(0.02, 0.0273, 0.021) - 0.02 < 0.5 * 0.001);
+    assert_true(motor_friction_a(0.02, 0, 0.3) == 0.02);
 }
 
 /* A free wheel at full command: the datasheet's no-load speed and current. */
@@ -253,6 +273,7 @@ int main(void)
         cmocka_unit_test(test_paper_no_load_speed),
         cmocka_unit_test(test_paper_first_step),
         cmocka_unit_test(test_datasheet_constants),
+        cmocka_unit_test(test_friction_rise),
         cmocka_unit_test(test_datasheet_no_load),
         cmocka_unit_test(test_datasheet_stall),
         cmocka_unit_test(test_motor_battery_sag),

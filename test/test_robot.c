@@ -135,7 +135,8 @@ static void test_print_load_round_trip(void **state)
 static void test_errors(void **state)
 {
     (void)state;
-    int n = line_of(paper, "[tof.right]") + 10; /* the line after the file's last */
+    int n = 1; /* the line after the file's last */
+    for (const char *p = paper; *p; p++) n += *p == '\n';
     refused(append(paper, "\n[wheel.x]\n"), "r.ini:%d: wheel.x: unknown kind (chassis motor encoder battery measured tof ir gyro)", n + 1);
     char *t = replace(paper, "[tof.front]", "yaw_deg = 0\n", "");
     refused(t, "r.ini:%d: tof.front.yaw_deg: missing key", line_of(paper, "[tof.front]"));

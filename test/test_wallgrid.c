@@ -182,12 +182,47 @@ static void test_any_overlap(void **state)
     wallgrid_free(g);
 }
 
+/* wallgrid_any_box: whenever a point of a turned, slightly tilted box lies
+ * inside a wall or post (0 to 50 mm high), the answer is "near"; and a box
+ * in the open is "clear". */
+static void test_any_box(void **state)
+{
+    (void)state;
+    layout();
+    wallgrid_t *g = wallgrid_build(CELL_M, SIDE, SIDE, nbox, (const double (*)[4])box);
+    assert_non_null(g);
+    int near = 0, clear = 0;
+    for (int r = 0; r < RAYS / 10; r++) {
+        double span = SIDE * CELL_M, yaw = uniform() * 2 * M_PI, tilt = (uniform() - 0.5) * 0.1;
+        const double c[3] = { uniform() * span, uniform() * span, 0.02 }, half[3] = { 0.048, 0.06, 0.015 };
+        const double axis[3][3] = { { cos(yaw), sin(yaw), 0 },
+                                    { -sin(yaw) * cos(tilt), cos(yaw) * cos(tilt), sin(tilt) },
+                                    { sin(yaw) * sin(tilt), -cos(yaw) * sin(tilt), cos(tilt) } };
+        int inside = 0;
+        for (int i = 0; i <= 10 && !inside; i++)
+            for (int j = 0; j <= 10 && !inside; j++)
+                for (int k = 0; k <= 2 && !inside; k++) {
+                    double a = (i / 5.0 - 1) * half[0], b = (j / 5.0 - 1) * half[1], z = (k - 1.0) * half[2], q[3];
+                    for (int m = 0; m < 3; m++) q[m] = c[m] + a * axis[0][m] + b * axis[1][m] + z * axis[2][m];
+                    for (int n = 0; n < nbox && !inside; n++)
+                        inside = q[0] >= box[n][0] && q[0] <= box[n][1] && q[1] >= box[n][2] && q[1] <= box[n][3] &&
+                                 q[2] >= 0 && q[2] <= 0.05;
+                }
+        int any = wallgrid_any_box(g, c, axis, half, 0, 0.05, 0);
+        if (inside && !any) fail_msg("box %d: a point of it is in a wall, wallgrid_any_box says clear", r);
+        near += any, clear += !any;
+    }
+    assert_true(near > 0 && clear > 0);
+    wallgrid_free(g);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_no_box_missed),
         cmocka_unit_test(test_early_stop_keeps_nearest),
         cmocka_unit_test(test_any_overlap),
+        cmocka_unit_test(test_any_box),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

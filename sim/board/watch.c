@@ -1,7 +1,6 @@
-/* watch.c - a firmware's global variables by name (see watch.h). The ELF's
- * symbol table is read here with every offset checked against the file
- * (32-bit little-endian ELF, as image.c requires of an AVR image); the
- * types come from watch_dwarf.c. */
+/* watch.c - a firmware's global variables by name (see watch.h). The
+ * ELF's symbol table is read by image.c's checked reader
+ * (image_elf_object); the types come from watch_dwarf.c. */
 #include "watch.h"
 
 #include <simavr/sim_avr.h>
@@ -9,78 +8,15 @@
 #include <string.h>
 
 #include "avrhost.h"
+#include "image.h"
 #include "io/infile.h"
 #include "watch_dwarf.h"
-
-#define SHT_SYMTAB_TYPE 2u /* sh_type of a symbol table */
-#define STT_OBJECT_TYPE 1u /* a symbol's type: a variable */
-#define STB_GLOBAL_BIND 1u /* a symbol's binding: global (0: local) */
-#define SHDR_BYTES 40u     /* an ELF32 section header */
-#define SYM_BYTES 16u      /* an ELF32 symbol */
-
-typedef struct {
-    const uint8_t *b;
-    size_t n;
-    uint32_t sym_off, sym_n;  /* the symbol table: file offset, entries */
-    uint32_t str_off, str_n;  /* its string table: file offset, bytes */
-} elfsyms_t;
 
 static uint32_t le(const uint8_t *p, int bytes)
 {
     uint32_t v = 0;
     for (int i = bytes - 1; i >= 0; i--) v = v << 8 | p[i];
     return v;
-}
-
-/* A section header's [off, off + size) within the file? */
-static int within(const elfsyms_t *e, uint32_t off, uint32_t size) { return off <= e->n && size <= e->n - off; }
-
-/* The symbol table and its string table: 0, or -1 (none, or out of the file). */
-static int find_symtab(elfsyms_t *e)
-{
-    if (e->n < 52 || memcmp(e->b, "\177ELF\1\1", 6) != 0) return -1; /* ELF32, little-endian */
-    uint32_t shoff = le(e->b + 0x20, 4), shentsize = le(e->b + 0x2E, 2), shnum = le(e->b + 0x30, 2);
-    if (shentsize < SHDR_BYTES || !within(e, shoff, shnum * shentsize)) return -1;
-    for (uint32_t i = 0; i < shnum; i++) {
-        const uint8_t *sh = e->b + shoff + (size_t)i * shentsize;
-        if (le(sh + 4, 4) != SHT_SYMTAB_TYPE) continue;
-        uint32_t off = le(sh + 0x10, 4), size = le(sh + 0x14, 4), link = le(sh + 0x18, 4);
-        if (!within(e, off, size) || link >= shnum) return -1;
-        const uint8_t *st = e->b + shoff + (size_t)link * shentsize;
-        e->sym_off = off;
-        e->sym_n = size / SYM_BYTES;
-        e->str_off = le(st + 0x10, 4);
-        e->str_n = le(st + 0x14, 4);
-        return within(e, e->str_off, e->str_n) ? 0 : -1;
-    }
-    return -1;
-}
-
-/* The symbol's name if it lies, NUL-terminated, in the string table; else NULL. */
-static const char *sym_name(const elfsyms_t *e, uint32_t off)
-{
-    if (off >= e->str_n) return NULL;
-    const char *s = (const char *)e->b + e->str_off + off;
-    return memchr(s, '\0', e->str_n - off) ? s : NULL;
-}
-
-/* The object symbol name (a global one before a local one): 1 with its
- * value and size, 0 none, -1 two locals of that name and no global. */
-static int find_sym(const elfsyms_t *e, const char *name, uint32_t *value, uint32_t *size)
-{
-    int locals = 0;
-    for (uint32_t i = 0; i < e->sym_n; i++) {
-        const uint8_t *s = e->b + e->sym_off + (size_t)i * SYM_BYTES;
-        if ((s[12] & 0xF) != STT_OBJECT_TYPE) continue;
-        const char *n = sym_name(e, le(s, 4));
-        if (!n || strcmp(n, name) != 0) continue;
-        int global = (s[12] >> 4) == STB_GLOBAL_BIND;
-        if (!global && locals++) continue; /* the first local is kept */
-        *value = le(s + 4, 4);
-        *size = le(s + 8, 4);
-        if (global) return 1;
-    }
-    return locals > 1 ? -1 : locals;
 }
 
 static void type_word(watch_var_t *v)
@@ -90,14 +26,14 @@ static void type_word(watch_var_t *v)
 }
 
 /* One name looked up and typed: 0, or -1 with err. */
-static int look_up(const elfsyms_t *e, char *buf, const char *image, uint32_t ram_bytes, watch_var_t *v, char *err,
-                   size_t errn)
+static int look_up(char *buf, size_t len, const char *image, uint32_t ram_bytes, watch_var_t *v, char *err, size_t errn)
 {
     uint32_t value = 0, size = 0;
-    char zl[WATCH_NAME_BYTES + 8];
+    char zl[WATCH_NAME_BYTES + 24]; /* "_ZL", the length's digits, the name */
     snprintf(zl, sizeof zl, "_ZL%zu%s", strlen(v->name), v->name); /* C++'s name for a file-scope static */
-    int f = find_sym(e, v->name, &value, &size);
-    if (f == 0) f = find_sym(e, zl, &value, &size);
+    int f = image_elf_object((const uint8_t *)buf, len, v->name, &value, &size);
+    if (f == 0) f = image_elf_object((const uint8_t *)buf, len, zl, &value, &size);
+    if (f == -2) return snprintf(err, errn, "--watch: %s has no symbol table (a stripped image?): --watch needs one", image), -1;
     if (f == 0) return snprintf(err, errn, "--watch: no global variable '%s' in %s", v->name, image), -1;
     if (f < 0) return snprintf(err, errn, "--watch: '%s' names two static variables in %s", v->name, image), -1;
     if (value < WATCH_DATA_OFFSET || value >= WATCH_EEPROM_OFFSET)
@@ -105,7 +41,7 @@ static int look_up(const elfsyms_t *e, char *buf, const char *image, uint32_t ra
                         v->name, image, (unsigned)value), -1;
     v->addr = value - WATCH_DATA_OFFSET;
     char why[200] = "";
-    int typed = watch_dwarf_type(buf, e->n, value, v, why, sizeof why);
+    int typed = watch_dwarf_type(buf, len, value, v, why, sizeof why);
     if (typed < 0)
         return snprintf(err, errn, "--watch: '%s' in %s: %s: --watch reads 8/16/32-bit integers and floats", v->name,
                         image, why), -1;
@@ -157,13 +93,8 @@ int watch_open(watch_list_t *w, const char *image, const char *list, const struc
     size_t len;
     char *buf = infile_read(image, AVRHOST_IMAGE_MAX_BYTES, &len, err, errn);
     if (!buf) return -1;
-    elfsyms_t e = { (const uint8_t *)buf, len, 0, 0, 0, 0 };
     int rc = 0;
-    if (find_symtab(&e) != 0) {
-        snprintf(err, errn, "--watch: %s has no symbol table (a stripped image?): --watch needs one", image);
-        rc = -1;
-    }
-    for (int i = 0; i < w->n && rc == 0; i++) rc = look_up(&e, buf, image, ram_bytes, &w->v[i], err, errn);
+    for (int i = 0; i < w->n && rc == 0; i++) rc = look_up(buf, len, image, ram_bytes, &w->v[i], err, errn);
     free(buf);
     for (int i = 0; i < w->n && rc == 0 && note; i++) /* once every name is good: an error stays one line */
         if (!w->v[i].typed)

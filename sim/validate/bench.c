@@ -4,6 +4,9 @@
 
 #include <math.h>
 
+#include "world/robot.h"
+#include "world/sensors/ir.h"
+
 bench_t bench; /* one at a time; maze_t and sim_state_t are large */
 
 void bench_field(maze_t *m, uint8_t w, uint8_t h, uint8_t sx)
@@ -48,7 +51,31 @@ void bench_add(validate_check_t *v, int *n, const char *name, double expected, d
     k->tolerance_pct = tol_pct;
     k->bound = bound;
     k->source = source;
+    k->kind = VALIDATE_PREDICTED;
     if (bound == VALIDATE_NEAR) k->pass = fabs(measured - expected) <= tol_pct / 100.0 * fabs(expected);
     else if (bound == VALIDATE_MAX) k->pass = measured <= expected;
     else k->pass = 1;
+}
+
+void bench_fit(validate_check_t *v, int *n, const char *name, double expected, double measured, const char *unit,
+               const char *source)
+{
+    bench_add(v, n, name, expected, measured, unit, 0, VALIDATE_REPORT, source);
+    v[*n - 1].kind = VALIDATE_FITTED;
+}
+
+/* Sensor i's mean lit-minus-dark over 64 samples, the robot where it is. */
+double bench_lit_minus_dark(sim_state_t *s, unsigned i)
+{
+    const robot_part_t *p = &s->model->cfg->robot.part[robot_part_of_kind(s->model->cfg, "ir", i)];
+    unsigned g = (unsigned)((const ir_part_spec_t *)p->spec)->emitter;
+    double sum = 0;
+    for (int k = 0; k < 64; k++) {
+        sim_emitter_set(s, g, 0);
+        double dark = sim_ir_read(s, i);
+        sim_emitter_set(s, g, 1);
+        sum += sim_ir_read(s, i) - dark;
+    }
+    sim_emitter_set(s, g, 0);
+    return sum / 64;
 }

@@ -25,9 +25,18 @@ void bench_corridor(maze_t *m, uint8_t n);
 int bench_init(const simcfg_t *c);
 /* Physics steps in `seconds`. */
 long bench_steps(const simcfg_t *c, double seconds);
-/* Append a check to v (at *n): passes as its bound says (validate.h). */
+/* Append a predicted check to v (at *n): graded as its bound says
+ * (validate.h); source names the data the model was not built from. */
+/* IR sensor i's (the robot file's i-th [ir.*]) mean lit-minus-dark reading
+ * over 64 samples, its emitter group lit and dark in turn, the robot where
+ * it is. */
+double bench_lit_minus_dark(sim_state_t *s, unsigned i);
 void bench_add(validate_check_t *v, int *n, const char *name, double expected, double measured, const char *unit,
          double tol_pct, int bound, const char *source);
+/* Append a fitted figure: the model was built from `expected` (source
+ * names the data); reported, never graded. */
+void bench_fit(validate_check_t *v, int *n, const char *name, double expected, double measured, const char *unit,
+               const char *source);
 /* The robot file's checks: its [measured.*] figures and IR calibration
  * readings reproduced, its IR sensors and gyro against their models'
  * analytic values (validate_robot.c). Returns the new count. */

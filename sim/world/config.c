@@ -30,6 +30,17 @@ static const keytab_t keys[] = {
     K("world", world, post_m, 0.012, 0.001, 0.05, "m", "classic rules: 12x12 mm posts"),
     KW("world", world, centre_post, 1, 0, 1, "0/1", "classic rules allow the goal's centre post"),
     K("world", world, body_wall_mu, 0.3, 0, 3, "1", "ours: plastic on painted wood; only matters in a crash"),
+    /* Contacts as springs and dampers: the same N/m and N*s/m at every step
+     * (world.c: ERP = h*kp/(h*kp + kd), CFM = 1/(h*kp + kd), the ODE manual's
+     * "soft constraint" formula). */
+    K("world", world, tyre_kp_n_m, 1.2e4, 1e3, 1e7, "N/m",
+      "derived: silicone tyre 1.5 mm thick, 4x4 mm patch, E = 1.1 MPa (Shore 30A by Gent's relation): E*A/t; rests 60 um deep"),
+    K("world", world, tyre_kd_n_s_m, 10, 0, 1e4, "N*s/m", "ours: damping ratio about 0.17 for a wheel's share of the robot (75 g) on its tyre"),
+    K("world", world, wall_kp_n_m, 2.5e5, 1e3, 1e8, "N/m",
+      "derived: a 12x50 mm MDF wall (E = 3.5 GPa) over its 168 mm span between posts, loaded mid-span: 48*E*I/L^3"),
+    K("world", world, wall_kd_n_s_m, 80, 0, 1e5, "N*s/m", "ours: restitution about 0.5 for a 0.15 kg robot on wall_kp_n_m (damping ratio 0.2)"),
+    K("world", world, caster_kp_n_m, 1.2e4, 1e3, 1e8, "N/m", "ours: as tyre_kp_n_m: the robot rests on its tyres and skids at once, and a stiffer skid would take the tyres' load"),
+    K("world", world, caster_kd_n_s_m, 10, 0, 1e5, "N*s/m", "ours: as tyre_kd_n_s_m"),
     K("world", world, wall_reflectivity, 0.85, 0, 1, "1", "ours: matt white wall faces (IR sensors; their gains in the robot file are for reflectivity 1)"),
     K("world", world, wall_gloss, 0, 0, 1, "1", "ours: matt (ORION fits matt walls); gloss paint: 0.04, Fresnel (n-1)^2/(n+1)^2, n = 1.5 (IR sensors)"),
     K("world", world, wall_gloss_exp, 100, 1, 10000, "1", "ours: satin paint's lobe, half power 6.7 deg off the mirror (IR sensors; sim/world/sensors/README.md)"),
@@ -57,8 +68,6 @@ static const keytab_t keys[] = {
     K("sim", sim, step_s, 0.001, 1e-5, 0.01, "s", "1 kHz physics"),
     W("sim", sim, solver, 1, solvers, "exact: dWorldStep, no creep at rest, drives straight (README); quickstep slid a resting robot 10 mm/min"),
     KW("sim", sim, solver_iterations, 10, 1, 200, "1", "solver = quickstep only: at 5 the wheel hinges give and a straight run crabs 1.4 degrees"),
-    K("sim", sim, contact_erp, 0.4, 0.01, 1, "1", "ours: contact error reduction; stiff enough that the robot rests within 0.1 mm"),
-    K("sim", sim, contact_cfm, 1e-5, 0, 1, "m/N", "ours: contact softness"),
     K("sim", sim, time_limit_s, 600, 1, 86400, "s", "contest rules: 10 minutes"),
 };
 

@@ -26,6 +26,7 @@
 typedef struct {
     int motor_model;        /* MOTOR_MODEL_PAPER or MOTOR_MODEL_DATASHEET */
     double rated_v, no_load_rpm, no_load_a, stall_torque_nm, stall_a;
+    double friction_load_a; /* friction's rise under load, A of motor current (motor.h); 0 = constant friction */
     double l_h;
     double gear_ratio;
     double rotor_inertia_kgm2; /* at the motor shaft; 0 = ignored */
@@ -76,6 +77,11 @@ typedef struct {
     double wall_reflectivity; /* of walls and posts to the IR sensors' light, 0..1 */
     double wall_gloss;      /* the walls' specular (gloss) reflectance straight on, 0..1 */
     double wall_gloss_exp;  /* the gloss lobe's Phong exponent: cos^n of the angle off the mirror direction, 1 */
+    /* contact springs and dampers, per kind (world.c turns them into ODE's
+     * ERP and CFM for the step in use) */
+    double tyre_kp_n_m, tyre_kd_n_s_m;     /* tyre on the floor */
+    double wall_kp_n_m, wall_kd_n_s_m;     /* robot body or wheel on a wall or post (and the body on the floor) */
+    double caster_kp_n_m, caster_kd_n_s_m; /* caster or skid on the floor */
 } simcfg_world_t;
 
 /* The robot (the robot file, robot.h): its [chassis.NAME], [motor.*] and
@@ -91,6 +97,7 @@ typedef struct {
     double caster_r_m, caster_mass_kg, caster_y_m;
     int casters;            /* 1, or 2: a second skid at caster2_y_m, as the first */
     double caster2_y_m;
+    double skid_mu;         /* Coulomb friction, caster (skid) on floor; 0 = frictionless */
     double tyre_mu;         /* Coulomb friction, tyre on floor */
     double tyre_mu_dynamic; /* sliding friction; <= tyre_mu */
     double tyre_slip_m_s;   /* contact slip speed above which tyre_mu_dynamic applies */
@@ -133,7 +140,6 @@ typedef struct {
     double step_s;          /* physics step */
     int solver;             /* SIM_SOLVER_QUICKSTEP or SIM_SOLVER_EXACT */
     int solver_iterations;  /* quickstep's iterations per step */
-    double contact_erp, contact_cfm; /* contact softness (ODE units) */
     double time_limit_s;    /* contest limit */
 } simcfg_sim_t;
 

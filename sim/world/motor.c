@@ -5,14 +5,22 @@
 
 #define RPM_TO_RAD_S (2.0 * M_PI / 60.0)
 
+double motor_friction_a(double no_load_a, double load_a, double i_a)
+{
+    if (load_a <= 0) return no_load_a;
+    double x = fabs(i_a) - no_load_a; /* the current the load draws */
+    return x > 0 ? no_load_a + load_a * (1.0 - exp(-x / (2.0 * load_a))) : no_load_a;
+}
+
 void motor_constants(const drive_spec_t *c, double *r_ohm, double *ke_v_s, double *eta)
 {
     double r = c->rated_v / c->stall_a;
     double w_motor = c->no_load_rpm * RPM_TO_RAD_S * c->gear_ratio;
-    double ke = (c->rated_v - r * c->no_load_a) / w_motor;
+    double ke = (c->rated_v - r * c->no_load_a) / w_motor; /* free running, the friction is no_load_a */
+    double i_f = motor_friction_a(c->no_load_a, c->friction_load_a, c->stall_a);
     *r_ohm = r;
     *ke_v_s = ke;
-    *eta = c->stall_torque_nm / (c->gear_ratio * ke * (c->stall_a - c->no_load_a));
+    *eta = c->stall_torque_nm / (c->gear_ratio * ke * (c->stall_a - i_f));
 }
 
 double motor_terminal_v(const motor_t *m) { return m->v_applied - (m->r_circuit_ohm - m->r_ohm) * m->i_a; }
@@ -38,11 +46,13 @@ void motor_init(motor_t *m, const drive_spec_t *c, double battery_v, double batt
         m->ke_v_s = c->stall_torque_nm / c->stall_a / m->n * scale;
         m->eta = 1.0;
         m->i_friction_a = 0.0;
+        m->friction_load_a = 0.0;
         m->r_ohm += c->driver_r_ohm;
     } else {
         motor_constants(c, &m->r_ohm, &m->ke_v_s, &m->eta);
         m->ke_v_s *= scale;
         m->i_friction_a = c->no_load_a;
+        m->friction_load_a = c->friction_load_a;
         m->r_ohm += c->driver_r_ohm; /* the H-bridge's switches conduct the current in drive and in slow decay alike */
     }
     m->i_a = 0.0;
@@ -97,7 +107,10 @@ motor_drive_t motor_drive(motor_t *m, int cmd, double w_rad_s, double dt_s)
     double dmp = g * (1.0 - m->k_mean) * kn / r;
     d.t0_nm = g * ((1.0 - m->k_mean) * m->v_applied / r + m->k_mean * m->i_start_a) - 0.5 * dmp * w_rad_s;
     d.damping_nm_s = 0.5 * dmp;
-    d.friction_nm = g * m->i_friction_a;
+    /* the friction at this step's mean current, its speed taken at the start
+     * (the current settles in L/R, far within the step) */
+    double i_step = (1.0 - m->k_mean) * (m->v_applied - kn * w_rad_s) / r + m->k_mean * m->i_start_a;
+    d.friction_nm = g * motor_friction_a(m->i_friction_a, m->friction_load_a, i_step);
     return d;
 }
 

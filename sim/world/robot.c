@@ -42,6 +42,8 @@ static const keytab_t chassis_keys[] = {
       NULL, 0, 0, 0, KEYTAB_INT, 0, NULL },
     { NULL, "caster2_y_mm", offsetof(simcfg_robot_t, caster2_y_m), 0, -200, 200, "mm", "the second skid ahead of the body's centre",
       NULL, 0, 1000, 0, KEYTAB_DOUBLE, 0, NULL },
+    { NULL, "skid_mu", offsetof(simcfg_robot_t, skid_mu), 0, 0, 3, "1",
+      "Coulomb friction, caster (skid) sliding on the floor; 0 = frictionless", NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL },
     C(tyre_mu, tyre_mu, 0, 0.01, 3, "1", "Coulomb friction, tyre on floor"),
     C(tyre_mu_dynamic, tyre_mu_dynamic, 0, 0.01, 3, "1", "sliding friction, <= tyre_mu"),
     C(tyre_slip_m_s, tyre_slip_m_s, 0, 0, 1, "m/s", "slip speed above which tyre_mu_dynamic applies"),
@@ -67,6 +69,7 @@ static const keytab_t motor_keys[] = {
     D(gear_ratio, KEYTAB_REQUIRED, 1, 1000, "1", "motor turns per wheel turn"),
     D(rotor_inertia_kgm2, 0, 0, 1e-3, "kg*m^2", "at the motor shaft (x N^2 at the wheel); 0 = ignored"),
     D(driver_r_ohm, 0, 0, 100, "ohm", "the H-bridge's on-resistance, in series with the motor"),
+    D(friction_load_a, 0, 0, 10, "A", "the friction's rise under load, in amperes of motor current (motor.h); 0 = constant"),
 };
 static const keytab_t encoder_keys[] = {
     D(encoder_ppr, KEYTAB_REQUIRED, 1, 100000, "counts/motor rev", "counts per motor-shaft turn, every edge counted"),
@@ -329,6 +332,8 @@ static int physics_checks(load_t *l)
     for (int s = 0; s < 2; s++)
         if (c->robot.drive[s].no_load_a >= c->robot.drive[s].stall_a)
             return fail(l, 0, "motor.%s.no_load_a: not below stall_a", s ? "right" : "left");
+        else if (c->robot.drive[s].no_load_a + c->robot.drive[s].friction_load_a >= c->robot.drive[s].stall_a)
+            return fail(l, 0, "motor.%s.friction_load_a: no_load_a + friction_load_a not below stall_a", s ? "right" : "left");
     return 0;
 }
 

@@ -180,3 +180,51 @@ int wallgrid_any(const wallgrid_t *g, const double r[4])
         }
     return 0;
 }
+
+/* Separated along unit axis u: the two centres' distance along u beyond the
+ * sum of the two boxes' half extents along u (and the margin). */
+static int apart_along(const double u[3], const double d[3], const double ea[3], const double axis[3][3],
+                       const double half[3], double margin_m)
+{
+    double wall = 0, box = 0;
+    for (int k = 0; k < 3; k++) {
+        wall += fabs(u[k]) * ea[k];
+        box += half[k] * fabs(u[0] * axis[k][0] + u[1] * axis[k][1] + u[2] * axis[k][2]);
+    }
+    return fabs(u[0] * d[0] + u[1] * d[1] + u[2] * d[2]) > wall + box + margin_m;
+}
+
+/* Whether box i (its grown bounds, z_lo..z_hi) and the oriented box are
+ * apart along any of the six face axes. */
+static int box_apart(const wallgrid_t *g, int i, const double c[3], const double axis[3][3], const double half[3],
+                     double z_lo, double z_hi, double margin_m)
+{
+    const double *b = g->bound[i];
+    const double d[3] = { 0.5 * (b[0] + b[1]) - c[0], 0.5 * (b[2] + b[3]) - c[1], 0.5 * (z_lo + z_hi) - c[2] };
+    const double ea[3] = { 0.5 * (b[1] - b[0]), 0.5 * (b[3] - b[2]), 0.5 * (z_hi - z_lo) };
+    static const double world[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+    for (int k = 0; k < 3; k++)
+        if (apart_along(world[k], d, ea, axis, half, margin_m) || apart_along(axis[k], d, ea, axis, half, margin_m)) return 1;
+    return 0;
+}
+
+int wallgrid_any_box(const wallgrid_t *g, const double c[3], const double axis[3][3], const double half[3], double z_lo,
+                     double z_hi, double margin_m)
+{
+    double r[4];
+    for (int k = 0; k < 2; k++) {
+        double e = margin_m;
+        for (int j = 0; j < 3; j++) e += half[j] * fabs(axis[j][k]);
+        r[2 * k] = c[k] - e, r[2 * k + 1] = c[k] + e;
+    }
+    if (!(r[0] <= r[1] && r[2] <= r[3])) return 1; /* not finite: let the caller's full test decide */
+    int cell[4];
+    span(g, r, cell);
+    for (int y = cell[2]; y <= cell[3]; y++)
+        for (int x = cell[0]; x <= cell[1]; x++) {
+            int k = y * g->nx + x;
+            for (int j = g->start[k]; j < g->start[k + 1]; j++)
+                if (!box_apart(g, g->id[j], c, axis, half, z_lo, z_hi, margin_m)) return 1;
+        }
+    return 0;
+}

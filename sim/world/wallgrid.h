@@ -32,4 +32,13 @@ void wallgrid_ray(wallgrid_t *g, const double p[2], const double d[2], wallgrid_
  * r = { min x, max x, min y, max y }, m. */
 int wallgrid_any(const wallgrid_t *g, const double r[4]);
 
+/* Whether any box (its floor bounds grown as above, from z_lo to z_hi, m)
+ * comes within margin_m of an oriented box: centre c (m), unit axes
+ * axis[0..2] (each a column of the box's rotation in the world), half
+ * lengths half[0..2] (m). Separation is looked for along the world's three
+ * axes and the box's three (not their cross products): a "yes" may be a
+ * near miss, a "no" is certain. */
+int wallgrid_any_box(const wallgrid_t *g, const double c[3], const double axis[3][3], const double half[3], double z_lo,
+                     double z_hi, double margin_m);
+
 #endif

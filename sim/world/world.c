@@ -16,6 +16,14 @@
 /* ODE pairs two geoms when either one's category meets the other's collide
  * bits, so each kind that must not meet another has its own category */
 #define MAX_CONTACTS 4
+#define WORLD_CONTACT_STEP_S 0.00025 /* longest ODE step while the robot is near a wall, s */
+#define WORLD_NEAR_M 0.001 /* margin beyond a step's travel for "near a wall", m */
+/* Slowest a point of the robot may move for an impact to need the finer
+ * steps, m/s: slower, a 2 ms step meets the wall at most 0.1 mm late, a
+ * sixteenth of a 3 m/s impact's 1.6 mm depth; a robot resting against a
+ * wall (the start cell's back wall) keeps the contest's step. */
+#define WORLD_IMPACT_M_S 0.05
+#define WORLD_TOUCH_SLACK_M 1e-6 /* "clear of walls" for the collision tree: a micrometre apart at least, m */
 #define WORLD_STICTION_RAD_S 1.0 /* wheel speed below which the gearbox friction is a stiction row, rad/s */
 
 struct world {
@@ -41,6 +49,9 @@ struct world {
     unsigned collisions;
     unsigned step_kinds, episode_kinds; /* WORLD_CONTACT_* bits: this step's, this episode's */
     unsigned kind_count[WORLD_CONTACT_KINDS]; /* finished episodes by kind */
+    double h_s;            /* the ODE step in progress (a sub-step near walls), s */
+    double wall_depth_m;   /* deepest wall contact of the last world_step, m */
+    double brake_nm;       /* world_brake's load for the next world_step, N*m */
 };
 
 static int ode_ready;
@@ -197,6 +208,13 @@ static void wheel_body(world_t *w, int s, const double at_w[3], double heading)
     if (dr->rotor_inertia_kgm2 > 0 && w->model->motor_model[s] != MOTOR_MODEL_PAPER)
         m.I[2 * 4 + 2] += dr->rotor_inertia_kgm2 * dr->gear_ratio * dr->gear_ratio;
     dBodySetMass(w->wheel[s], &m);
+    /* No gyroscopic term on a wheel. ODE's implicit one damps a wheel that
+     * spins while the chassis yaws by an amount that grows with the step
+     * (an in-place spin ran 4 % slower at 2 ms than at 0.25 ms), and the
+     * rotor reflected as J*N^2 would make the term N times the rotor's real
+     * J*N*w*Omega. The real torque (wheel and rotor, about 4e-4 N*m in a
+     * 20 rad/s spin) shifts about 5 mN between the tyres: left out. */
+    dBodySetGyroscopicMode(w->wheel[s], 0);
     dBodySetPosition(w->wheel[s], at_w[0], at_w[1], at_w[2]);
     wheel_rotation(heading, NULL, r);
     dBodySetRotation(w->wheel[s], r);
@@ -347,14 +365,46 @@ static unsigned contact_kind(const world_t *w, dGeomID a, const dReal *p)
     return fabs(v) < WORLD_REAR_SOFT_M_S ? 1u << WORLD_CONTACT_REAR_SOFT : 1u << WORLD_CONTACT_REAR;
 }
 
-/* Whether the robot is near no wall or post at all (wallgrid): the robot
- * space's bounds meet no box's, so the maze's tree holds no pair for it. */
-static int clear_of_walls(const world_t *w)
+/* Whether every part of the robot is more than margin_m from every wall
+ * and post (wallgrid): the body as its oriented box, the other parts by
+ * their bounds. A "clear" is certain, so the maze's collision tree is
+ * skipped only where it would find no contact. */
+static int clear_of_walls(const world_t *w, double margin_m)
 {
-    dReal aabb[6];
-    dGeomGetAABB((dGeomID)w->robot, aabb);
-    const double r[4] = { aabb[0], aabb[1], aabb[2], aabb[3] };
-    return !wallgrid_any(w->grid, r);
+    for (int i = 0; i < dSpaceGetNumGeoms(w->robot); i++) {
+        dGeomID g = dSpaceGetGeom(w->robot, i);
+        if (g == w->box) { /* the body as the oriented box it is, not its bounds (a turning body's grow by 40 %) */
+            const dReal *p = dGeomGetPosition(g), *R = dGeomGetRotation(g);
+            dVector3 len;
+            dGeomBoxGetLengths(g, len);
+            const double c[3] = { p[0], p[1], p[2] }, half[3] = { len[0] / 2, len[1] / 2, len[2] / 2 };
+            const double axis[3][3] = { { R[0], R[4], R[8] }, { R[1], R[5], R[9] }, { R[2], R[6], R[10] } };
+            if (wallgrid_any_box(w->grid, c, axis, half, 0, w->model->cfg->world.wall_height_m, margin_m)) return 0;
+            continue;
+        }
+        dReal aabb[6];
+        dGeomGetAABB(g, aabb);
+        const double r[4] = { aabb[0] - margin_m, aabb[1] + margin_m, aabb[2] - margin_m, aabb[3] + margin_m };
+        if (wallgrid_any(w->grid, r)) return 0;
+    }
+    return 1;
+}
+
+/* A contact's spring and damper (the robot part a, on a wall or the floor;
+ * one of the pair's n contact points, each taking its share) as ODE's ERP
+ * and CFM for the step in progress: ODE solves the contact
+ * implicitly as a force kp*depth + kd*speed when ERP = h*kp/(h*kp + kd) and
+ * CFM = 1/(h*kp + kd) (the ODE manual, "soft constraint and constraint
+ * force mixing"), so the N/m and N*s/m hold at every step. */
+static void soft_contact(const world_t *w, dGeomID a, int wall, int n, dContact *c)
+{
+    const simcfg_world_t *k = &w->model->cfg->world;
+    double kp = k->wall_kp_n_m, kd = k->wall_kd_n_s_m, h = w->h_s;
+    if (!wall && (a == w->wheel_geom[0] || a == w->wheel_geom[1])) kp = k->tyre_kp_n_m, kd = k->tyre_kd_n_s_m;
+    else if (!wall && (a == w->caster || a == w->caster2)) kp = k->caster_kp_n_m, kd = k->caster_kd_n_s_m;
+    kp /= n, kd /= n;
+    c->surface.soft_erp = h * kp / (h * kp + kd);
+    c->surface.soft_cfm = 1.0 / (h * kp + kd);
 }
 
 static void near_cb(void *data, dGeomID a, dGeomID b)
@@ -362,7 +412,7 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
     world_t *w = data;
     if (dGeomIsSpace(a) || dGeomIsSpace(b)) {
         int maze = a == (dGeomID)w->statics || b == (dGeomID)w->statics;
-        if (!maze || !clear_of_walls(w)) dSpaceCollide2(a, b, data, near_cb);
+        if (!maze || !clear_of_walls(w, WORLD_TOUCH_SLACK_M)) dSpaceCollide2(a, b, data, near_cb);
         return;
     }
     if (is_robot_part(w, b)) { dGeomID t = a; a = b; b = t; }
@@ -374,11 +424,12 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
     if (wall) {
         w->touching = 1;
         w->step_kinds |= contact_kind(w, a, c[0].geom.pos);
+        for (int i = 0; i < n; i++) w->wall_depth_m = fmax(w->wall_depth_m, c[i].geom.depth);
     }
     for (int i = 0; i < n; i++) {
         double mu = w->model->cfg->world.body_wall_mu;
         if (a == w->caster || a == w->caster2) {
-            mu = 0.0; /* the paper's caster: frictionless */
+            mu = w->model->cfg->robot.skid_mu; /* a skid slides: Coulomb friction */
         } else if (!wall && (a == w->wheel_geom[0] || a == w->wheel_geom[1])) {
             dVector3 v;
             dBodyGetPointVel(dGeomGetBody(a), c[i].geom.pos[0], c[i].geom.pos[1], c[i].geom.pos[2], v);
@@ -399,8 +450,7 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
             c[i].fdir1[2] = 0;
         }
         c[i].surface.mu = mu;
-        c[i].surface.soft_erp = w->model->cfg->sim.contact_erp;
-        c[i].surface.soft_cfm = w->model->cfg->sim.contact_cfm;
+        soft_contact(w, a, wall, n, &c[i]);
         dJointID j = dJointCreateContact(w->world, w->contacts, &c[i]);
         dJointAttach(j, dGeomGetBody(c[i].geom.g1), dGeomGetBody(c[i].geom.g2));
     }
@@ -445,33 +495,62 @@ static void end_episode(world_t *w)
     w->episode_kinds = 0;
 }
 
+void world_brake(world_t *w, double load_nm) { w->brake_nm = load_nm; }
+
+/* world_brake's load against each wheel's motion, for one ODE step. */
+static void brake_wheels(world_t *w)
+{
+    for (int s = 0; s < 2 && w->brake_nm != 0; s++) {
+        double rate = dJointGetHingeAngleRate(w->hinge[s]);
+        if (rate != 0) dJointAddHingeTorque(w->hinge[s], rate > 0 ? -w->brake_nm : w->brake_nm); /* +T turns the wheel forward */
+    }
+}
+
+/* How many ODE steps make this step: one in the open or at rest; moving
+ * near a wall (within a step's travel of its fastest point) as many as keep
+ * each at most WORLD_CONTACT_STEP_S, so a wall is met at most that much
+ * travel late and its spring is integrated alike at every step. */
+static int sub_steps(const world_t *w, double h_s)
+{
+    if (h_s <= WORLD_CONTACT_STEP_S) return 1;
+    const dReal *v = dBodyGetLinearVel(w->chassis), *om = dBodyGetAngularVel(w->chassis);
+    const simcfg_t *c = w->model->cfg;
+    double reach_m = 0.5 * hypot(c->robot.body_w_m, c->robot.body_l_m) + fabs(w->com[1]); /* a body corner from the centre of mass */
+    double fastest = hypot(v[0], v[1]) + fabs(om[2]) * reach_m;
+    if (fastest < WORLD_IMPACT_M_S || clear_of_walls(w, fastest * h_s + WORLD_NEAR_M)) return 1;
+    return (int)ceil(h_s / WORLD_CONTACT_STEP_S - 1e-9);
+}
+
 void world_step(world_t *w, const motor_drive_t drive[2])
 {
-    drive_wheel(w, WORLD_LEFT, &drive[WORLD_LEFT]);
-    drive_wheel(w, WORLD_RIGHT, &drive[WORLD_RIGHT]);
+    double h = w->model->cfg->sim.step_s;
+    int n = sub_steps(w, h);
     w->touching = 0;
     w->step_kinds = 0;
-    dSpaceCollide(w->top, w, near_cb);
-    if (w->model->solver == SIM_SOLVER_EXACT) dWorldStep(w->world, w->model->cfg->sim.step_s);
-    else dWorldQuickStep(w->world, w->model->cfg->sim.step_s);
-    dJointGroupEmpty(w->contacts);
+    w->wall_depth_m = 0;
+    w->h_s = h / n;
+    for (int i = 0; i < n; i++) {
+        /* ODE clears the added torques after each of its steps */
+        drive_wheel(w, WORLD_LEFT, &drive[WORLD_LEFT]);
+        drive_wheel(w, WORLD_RIGHT, &drive[WORLD_RIGHT]);
+        brake_wheels(w);
+        dSpaceCollide(w->top, w, near_cb);
+        if (w->model->solver == SIM_SOLVER_EXACT) dWorldStep(w->world, w->h_s);
+        else dWorldQuickStep(w->world, w->h_s);
+        dJointGroupEmpty(w->contacts);
+    }
+    w->brake_nm = 0;
     if (w->touching && !w->touched_last) w->collisions++;
     if (w->touching) w->episode_kinds |= w->step_kinds;
     else if (w->touched_last) end_episode(w);
     w->touched_last = w->touching;
 }
 
+double world_wall_depth(const world_t *w) { return w->wall_depth_m; }
+
 unsigned world_contacts(const world_t *w, int kind)
 {
     return w->kind_count[kind] + (w->touched_last && (w->episode_kinds & (1u << kind)) ? 1 : 0);
-}
-
-void world_brake(world_t *w, double load_nm)
-{
-    for (int s = 0; s < 2; s++) {
-        double rate = dJointGetHingeAngleRate(w->hinge[s]);
-        if (rate != 0) dJointAddHingeTorque(w->hinge[s], rate > 0 ? -load_nm : load_nm); /* +T turns the wheel forward */
-    }
 }
 
 void world_dyno(world_t *w, double rate_rad_s)
@@ -676,6 +755,20 @@ void world_place(world_t *w, double x_m, double y_m, double heading_rad, const d
         dBodySetRotation(w->wheel[s], r);
         dBodySetLinearVel(w->wheel[s], 0, 0, 0);
         dBodySetAngularVel(w->wheel[s], 0, 0, 0);
+    }
+}
+
+void world_set_speed(world_t *w, double v_m_s)
+{
+    dVector3 f, x;
+    dBodyVectorToWorld(w->chassis, 0, 1, 0, f);
+    dBodyVectorToWorld(w->chassis, 1, 0, 0, x);
+    dBodySetLinearVel(w->chassis, v_m_s * f[0], v_m_s * f[1], 0);
+    dBodySetAngularVel(w->chassis, 0, 0, 0);
+    for (int s = 0; s < 2; s++) {
+        double spin = -v_m_s / w->model->wheel_r_m[s]; /* rolling forward turns the wheel about -x */
+        dBodySetLinearVel(w->wheel[s], v_m_s * f[0], v_m_s * f[1], 0);
+        dBodySetAngularVel(w->wheel[s], spin * x[0], spin * x[1], spin * x[2]);
     }
 }
 

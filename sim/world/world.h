@@ -100,6 +100,12 @@ unsigned world_collisions(const world_t *w);
 enum { WORLD_CONTACT_FRONT, WORLD_CONTACT_SIDE, WORLD_CONTACT_REAR_SOFT, WORLD_CONTACT_REAR, WORLD_CONTACT_KINDS };
 #define WORLD_REAR_SOFT_M_S 0.1 /* m/s: a touch of the rear below this is not an error */
 unsigned world_contacts(const world_t *w, int kind);
+/* For tests: the robot rolling straight ahead at v_m_s (the chassis and
+ * the wheels' centres at v_m_s, the wheels turning to roll), not turning. */
+void world_set_speed(world_t *w, double v_m_s);
+/* The deepest a wall or post went into the robot (body or wheel) in the
+ * last world_step, as ODE's contacts found it, m (0: no wall contact). */
+double world_wall_depth(const world_t *w);
 /* 0 once the robot's state has left what any run in the config's ranges
  * reaches (a position beyond WORLD_SANE_M, a speed beyond
  * WORLD_SANE_M_S, a spin beyond WORLD_SANE_RAD_S, or not a number): the

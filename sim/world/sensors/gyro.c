@@ -13,7 +13,8 @@
 void gyro_spec_default(gyro_spec_t *s)
 {
     s->noise_density_dps_rthz = 0.007; /* Rn, 7 mdps/sqrt(Hz) typ, high-performance mode */
-    s->bias_dps = 10.0;                /* G_TyOff zero-rate level, +-10 dps typ: taken as 1 sigma */
+    s->bias_dps = 10.0;                /* G_TyOff zero-rate level, +-10 dps typ */
+    s->bias_typ_sigmas = 1.0;          /* ST: TyOff is the population's standard deviation (gyro.h) */
     s->bias_rw_dps_rts = 0.01;         /* ours: not in the datasheet; 0.01 deg/s/sqrt(s) gives ~0.08 deg/s
                                         * over a 60 s run, below the ZRL's temperature drift of Table 3 */
     s->scale_error_pct = 1.0;          /* ours: Table 3 gives no initial sensitivity tolerance; 1 % for an
@@ -32,7 +33,7 @@ void gyro_init(gyro_t *g, const gyro_spec_t *s, uint64_t seed, unsigned index)
 {
     g->spec = s;
     rng_init(&g->rng, seed, RNG_STREAM_GYRO + index);
-    g->bias0_dps = s->bias_dps * rng_gauss(&g->rng);
+    g->bias0_dps = s->bias_dps / s->bias_typ_sigmas * rng_gauss(&g->rng);
     g->walk_dps = 0.0;
     g->sample = -1;
     g->held_rad_s = 0.0;
@@ -73,7 +74,8 @@ double gyro_read(gyro_t *g, double true_rate_rad_s, double t_s)
     { NULL, #name, offsetof(gyro_spec_t, name), def, min, max, unit, src, NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL }
 static const keytab_t keys[] = {
     G(noise_density_dps_rthz, 0.007, 0, 10, "deg/s/sqrt(Hz)", "LSM6DS3 datasheet Table 3: Rn 7 mdps/sqrt(Hz)"),
-    G(bias_dps, 10, 0, 1000, "deg/s", "LSM6DS3 datasheet Table 3: zero-rate level +-10 dps, as 1 sigma"),
+    G(bias_dps, 10, 0, 1000, "deg/s", "LSM6DS3 datasheet Table 3: zero-rate level G_TyOff +-10 dps typ"),
+    G(bias_typ_sigmas, 1, 0.1, 10, "1", "ST datasheets' Terminology (LSM303C, LSM330): TyOff is the standard deviation over a population of parts"),
     G(bias_rw_dps_rts, 0.01, 0, 10, "deg/s/sqrt(s)", "ours: not in the datasheet"),
     G(scale_error_pct, 1, -50, 50, "%", "ours: an uncalibrated part"),
     G(full_scale_dps, 1000, 1, 10000, "deg/s", "LSM6DS3: FS +-1000 dps"),

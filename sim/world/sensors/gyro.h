@@ -10,8 +10,17 @@
  *   y_k = (1 + scale_pct/100) * w + b_k + sigma_w * n2
  *   sigma_w = density * sqrt(f / 2)         white noise over the band f/2
  *   y_k clamped to +-full scale, then rounded to a multiple of the LSB.
- * bias0 ~ N(0, bias_dps) is drawn once per seed at init (the datasheet's
- * zero-rate level is a spread over parts, not a value of one part).
+ * bias0 ~ N(0, bias_dps / bias_typ_sigmas) is drawn once per seed at init
+ * (the datasheet's zero-rate level is a spread over parts, not a value of one
+ * part). ST's datasheets define the typical zero level TyOff as the standard
+ * deviation of the zero levels of a population of sensors (LSM303C DocID
+ * 022887 and LSM330 DocID 022697, section 3 "Terminology", "Zero-g level":
+ * "The zero-g level tolerance (TyOff) describes the standard deviation of the
+ * range of zero-g levels of a population of sensors"); the LSM6DS3's G_TyOff
+ * has the same symbol and column (Table 3, "Typ.", footnote 1: "Typical
+ * specifications are not guaranteed"), so bias_typ_sigmas = 1 by default:
+ * 31.7 % of parts (seeds) beyond +-bias_dps, 4.6 % beyond twice it. Set it
+ * to 3 to read the typical figure as a bound 99.7 % of parts meet.
  * n1, n2 are standard normal deviates from the gyro's own stream
  * (RNG_STREAM_GYRO + index); every sample draws both, also samples no one
  * reads, so the noise depends on time only, never on how often it is read.
@@ -24,7 +33,8 @@
 
 typedef struct {
     double noise_density_dps_rthz; /* white rate noise density, deg/s/sqrt(Hz) */
-    double bias_dps;               /* zero-rate level spread: bias0 ~ N(0, this), deg/s */
+    double bias_dps;               /* the datasheet's typical zero-rate level, deg/s */
+    double bias_typ_sigmas;        /* standard deviations bias_dps stands for (1: ST's TyOff), 1 */
     double bias_rw_dps_rts;        /* bias random walk, deg/s per sqrt(s) */
     double scale_error_pct;        /* sensitivity error, per cent (output = (1 + e/100) * true) */
     double full_scale_dps;         /* saturation, +-deg/s */

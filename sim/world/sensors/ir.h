@@ -97,7 +97,8 @@ typedef struct {
      * measured_backed (mazerunner-core's get_front_sum), given on each
      * sensor of the pair; -1 none: */
     double measured_facing_sum; /* centred in a cell facing its wall ahead (FRONT_REFERENCE) */
-    double measured_turn_sum;  /* the axle 20 mm past a cell boundary, the wall ahead 154 mm from it (TURN_THRESHOLD_SS90E) */
+    double measured_turn_sum;  /* the axle 20 mm past a cell boundary, the wall ahead 154 mm from it, no side walls (TURN_THRESHOLD_SS90E) */
+    double measured_turn_wall_adjust; /* what each side wall adds to the turn's sum (EXTRA_WALL_ADJUST); 0 none */
 } ir_part_spec_t;
 
 /* An [ir.NAME] sensor at run time: the model and its latest samples. */

@@ -35,6 +35,8 @@ static const keytab_t keys[] = {
     T(blind_mm, blind_m, 0, 0, 500, 1000, "mm", "paper: no blind spot modelled"),
     T(cv, cv, 0.05, 0, 1, 0, "1", "noise sigma = cv * distance (paper)"),
     T(period_ms, period_s, 30, 1, 1000, 1000, "ms", "VL53L0X default timing budget ~30 ms"),
+    T(fov_deg, fov_rad, 0, 0, 90, 180.0 / M_PI, "deg", "the cone's full angle; VL53L0X datasheet DocID029104: 25 deg field of view; 0: the paper's one ray"),
+    T(rays, rays, 5, 1, 61, 0, "1", "ours: rays across the cone (5: 6.25 deg apart at 25 deg)"),
 };
 
 static void init(void *state, const robot_part_t *p, const sim_model_t *md, uint64_t seed, unsigned index, unsigned count)
@@ -52,12 +54,21 @@ static void init(void *state, const robot_part_t *p, const sim_model_t *md, uint
     t->enabled = 1;
 }
 
-/* The ray: from the sensor along its heading (the chassis' tilt aside). */
-static double ray(const sim_pose_t *pose, world_t *w, double max_m)
+/* The cone: rays from the sensor at its heading (the chassis' tilt aside)
+ * plus angles spread evenly over [-fov/2, +fov/2]; the nearest hit, m (-1:
+ * none within max_m). */
+static double cone(const sim_pose_t *pose, const tof_spec_t *s, world_t *w, double max_m)
 {
     double pos[3], axis[3], left[3], up[3];
     sensor_frame(w, pose, pos, axis, left, up);
-    return world_ray(w, pos[0], pos[1], pos[2], atan2(axis[1], axis[0]), max_m);
+    double heading = atan2(axis[1], axis[0]), best = -1.0;
+    int n = s->fov_rad > 0.0 ? (int)lround(s->rays) : 1;
+    for (int i = 0; i < n; i++) {
+        double a = n > 1 ? s->fov_rad * ((double)i / (n - 1) - 0.5) : 0.0;
+        double d = world_ray(w, pos[0], pos[1], pos[2], heading + a, max_m);
+        if (d >= 0.0 && (best < 0.0 || d < best)) best = d;
+    }
+    return best;
 }
 
 static void step(void *state, const robot_part_t *p, const sensor_ctx_t *x)
@@ -68,7 +79,7 @@ static void step(void *state, const robot_part_t *p, const sensor_ctx_t *x)
     if (!t->enabled) return;
     /* rays only when the sensor updates: one ray per 30 ms, not per step */
     if (x->t_s < t->object_until_s) t->true_m = t->object_m; /* a hand before it */
-    else t->true_m = ray(sensor_pose(x->model, p), x->world, t->tof.spec->range_m);
+    else t->true_m = cone(sensor_pose(x->model, p), t->tof.spec, x->world, t->tof.spec->range_m);
     t->last = tof_measure(&t->tof, t->true_m);
     t->count++;
 }
@@ -83,6 +94,6 @@ static int read(void *state, const robot_part_t *p, const sensor_ctx_t *x, doubl
 }
 
 const sensor_kind_t sensor_tof = {
-    "tof", "time-of-flight distance sensor (the paper's model: a ray, Gaussian noise of cv * distance, timeout at range)",
+    "tof", "time-of-flight distance sensor: the nearest surface in its cone (fov_deg, rays; 0: the paper's one ray), Gaussian noise of cv * distance, timeout at range",
     keys, sizeof keys / sizeof keys[0], NULL, sizeof(tof_state_t), init, step, read, "mm timeout true_mm",
 };

@@ -1,6 +1,13 @@
 /* tof.h - time-of-flight distance sensor model (after the ray cast).
  *
- * true distance d from the ray cast -> clamp to at least the blind spot ->
+ * The sensor sees through a cone of full angle fov: `rays` rays spread
+ * evenly across it in the sensor's horizontal plane (the maze's walls are
+ * vertical), and the true distance d is the nearest hit of any of them (the
+ * nearest surface in the cone); fov 0 is one ray along the axis (the
+ * paper's Unity sensor). A level sensor's cone also meets the floor (at
+ * z / tan(fov/2): 68 mm for 15 mm and 25 deg); the model leaves the floor
+ * out, as a sensor tilted up by half its cone does.
+ * true distance d -> clamp to at least the blind spot ->
  * add Gaussian noise, sigma = cv * d -> clamp to at least 0. Nothing hit
  * within range, or a reading at or beyond the range (before or after the
  * noise) = timeout, reported as a flag (and the range as distance): a
@@ -25,6 +32,8 @@ typedef struct {
 typedef struct {
     double range_m, blind_m, cv;
     double period_s;  /* between readings */
+    double fov_rad;   /* the cone's full angle, rad (0: one ray) */
+    double rays;      /* rays across the cone (a whole number, >= 1) */
 } tof_spec_t;
 
 /* One sensor: its spec (the robot file's, kept by pointer: it outlives
