@@ -153,4 +153,18 @@ for k in chassis.body:wheel_left_d_mm chassis.body:wheel_right_d_mm ir.lfs:gain_
   near "$T/orion_fit.ini" "${k%%:*}" "${k#*:}" "$(key $B "${k%%:*}" "${k#*:}")" 2 ORION
 done
 
+# one time constant: mmfit's step fit on a --bench-log step and --validate's forward_tm (its own
+# C code, the same least squares on distance: sim/validate/bench.h) agree within 1 % on ORION
+"$S" --bench-log fwd:3 --robot $B >"$T/orion_fwd3.csv" && "$S" --validate --json --robot $B >"$T/orion_val.json"
+python3 - "$T/orion_fwd3.csv" "$T/orion_val.json" <<'PY' >"$T/tm" && ok "one time constant: $(cat "$T/tm")" || bad "one time constant: $(cat "$T/tm")"
+import csv, json, sys, importlib.machinery, importlib.util
+ld = importlib.machinery.SourceFileLoader("mmfit", "tools/mmfit")
+m = importlib.util.module_from_spec(importlib.util.spec_from_loader("mmfit", ld)); ld.exec_module(m)
+rows = list(csv.DictReader(open(sys.argv[1])))
+_, tau = m.step_figures([float(r["t_s"]) for r in rows], [(int(r["left_counts"]) + int(r["right_counts"])) / 2 for r in rows])
+val = {c["name"]: c for c in json.loads(open(sys.argv[2]).read())["checks"]}["forward_tm"]["measured"]
+print("mmfit %.4f s, --validate %.4f s" % (tau, val))
+sys.exit(0 if abs(val / tau - 1) < 0.01 else 1)
+PY
+
 [ $fails -eq 0 ] && echo "cli_mmfit: all passed" || { echo "cli_mmfit: $fails failed"; exit 1; }

@@ -25,53 +25,6 @@ static const char *name_of(int n, const char *fmt, const char *sensor)
     return names[n];
 }
 
-/* The command for v_volt on the motor with the battery as it is now. */
-static int volt_cmd(const sim_state_t *s, double v_volt)
-{
-    double b = sim_battery_v(s);
-    long cmd = b > 0 ? lround(v_volt / b * MOTOR_CMD_MAX) : 0;
-    return (int)(cmd > MOTOR_CMD_MAX ? MOTOR_CMD_MAX : cmd < -MOTOR_CMD_MAX ? -MOTOR_CMD_MAX : cmd);
-}
-
-typedef struct {
-    double steady, tm_s; /* steady speed (m/s or rad/s) and the time to 63.2 % of it */
-} step_t;
-
-/* From rest in an open field, v_volt on both motors (rot: -v left, +v
- * right, a spin counter-clockwise) for 1.2 s, as ukmars' motorlab steps a
- * motor: the steady speed (mean of the last 0.2 s) and the time constant,
- * measured by the encoders as the robot does. */
-static step_t voltage_step(const simcfg_t *c, double v_volt, int rot)
-{
-    step_t r = { 0, 0 };
-    bench_field(&bench.maze, 10, 10, 4);
-    sim_state_t *s = &bench.sim;
-    if (bench_init(c) != 0) return r;
-    if (rot) world_place(s->world, 4.5 * c->world.cell_m, 4.5 * c->world.cell_m, M_PI / 2, NULL); /* the field's middle */
-    long n = bench_steps(c, 1.2), tail = bench_steps(c, 0.2);
-    static double trace[20000];
-    if (n > 20000) n = 20000;
-    for (long i = 0; i < n; i++) {
-        s->cmd[WORLD_LEFT] = volt_cmd(s, rot ? -v_volt : v_volt);
-        s->cmd[WORLD_RIGHT] = volt_cmd(s, v_volt);
-        sim_step(s->model, s);
-        /* as the robot measures it: by its encoders (wheel turns x its calibrated wheel
-         * radius), turning rate over its track (mazerunner-core: MOUSE_RADIUS) */
-        double vl = world_wheel_rate(s->world, WORLD_LEFT) * c->robot.wheel_left_d_m / 2;
-        double vr = world_wheel_rate(s->world, WORLD_RIGHT) * c->robot.wheel_right_d_m / 2;
-        trace[i] = rot ? (vr - vl) / (2 * c->robot.wheel_x_m) : (vr + vl) / 2;
-    }
-    for (long i = n - tail; i < n; i++) r.steady += trace[i] / tail;
-    for (long i = 0; i < n; i++)
-        if (trace[i] >= 0.632 * r.steady) {
-            double prev = i ? trace[i - 1] : 0, f = (0.632 * r.steady - prev) / (trace[i] - prev);
-            r.tm_s = (i + f) * c->sim.step_s; /* trace[i] is after step i + 1 */
-            break;
-        }
-    sim_free(s);
-    return r;
-}
-
 /* A finer step than the contest's, for one figure reported beside the
  * graded one (how far the contest's step moves it). */
 #define FINE_STEP_S 0.0002
@@ -84,11 +37,11 @@ static const double FWD_V1 = 1.5, FWD_V2 = 3.0, ROT_V1 = 1.0, ROT_V2 = 2.0; /* V
 
 /* The forward (rot 0, mm/s/V) or spin (rot 1, deg/s/V) slope with config
  * c, and the step at the higher voltage. */
-static double km_slope(const simcfg_t *c, int rot, step_t *high)
+static double km_slope(const simcfg_t *c, int rot, bench_step_t *high)
 {
     double v1 = rot ? ROT_V1 : FWD_V1, v2 = rot ? ROT_V2 : FWD_V2;
-    step_t a = voltage_step(c, v1, rot);
-    *high = voltage_step(c, v2, rot);
+    bench_step_t a = bench_voltage_step(c, v1, rot);
+    *high = bench_voltage_step(c, v2, rot);
     return (high->steady - a.steady) / (v2 - v1) * (rot ? DEG_PER_RAD : 1000);
 }
 
@@ -106,7 +59,7 @@ static int motion_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
     const robot_measured_t *m = &c->robot.measured;
     double fkm = 0, rkm = 0;
-    step_t hi;
+    bench_step_t hi;
     if (m->fwd_km_mm_s_v > 0 || m->fwd_tm_s > 0) {
         fkm = km_slope(c, 0, &hi);
         if (m->fwd_km_mm_s_v > 0)
@@ -154,8 +107,8 @@ static void counts_500mm(const simcfg_t *c, double counts[2])
         world_pose(s->world, &x, &y, &h);
         if (hypot(x - x0, y - y0) >= 0.5) break;
         double err = remainder(h - h0, 2 * M_PI), base = 0.6, k = 20.0; /* V, V/rad */
-        s->cmd[WORLD_LEFT] = volt_cmd(s, base + k * err);
-        s->cmd[WORLD_RIGHT] = volt_cmd(s, base - k * err);
+        s->cmd[WORLD_LEFT] = bench_volt_cmd(s, base + k * err);
+        s->cmd[WORLD_RIGHT] = bench_volt_cmd(s, base - k * err);
         sim_step(s->model, s);
     }
     world_pose(s->world, &x, &y, &h);

@@ -40,7 +40,7 @@ typedef struct {
  * given (-1 = not given). */
 typedef struct {
     double fwd_km_mm_s_v;   /* forward speed per volt: slope of steady speed against voltage, mm/s/V */
-    double fwd_tm_s;        /* forward time constant: 63 % of a voltage step's speed change, s */
+    double fwd_tm_s;        /* forward time constant of a voltage step (a first-order fit), s */
     double rot_km_deg_s_v;  /* spin rate per volt (the motors at +V and -V), deg/s/V */
     double rot_tm_s;        /* rotation time constant, s */
     double counts_500mm_left, counts_500mm_right; /* encoder counts over 500 mm of straight travel */
