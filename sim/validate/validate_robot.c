@@ -165,9 +165,9 @@ static int ir_calibration(const simcfg_t *c, validate_check_t *v, int n)
 }
 
 /* The first IR sensor facing a wall straight on at d_m (the robot turned so
- * the sensor's axis is normal to the end wall of a corridor): the model's
- * far field is gain * reflectivity * (ref / d)^2 (ir.h), the dark reading
- * the ambient level. */
+ * the sensor's axis is normal to the end wall of a corridor): the rays cast
+ * in the world give what the model gives for an ideal plane
+ * (ir_received_plane), the dark reading the ambient level. */
 static int ir_model_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
     int k = robot_part_of_kind(c, "ir", 0);
@@ -182,10 +182,11 @@ static int ir_model_checks(const simcfg_t *c, validate_check_t *v, int n)
     double h = -p->yaw_deg * M_PI / 180, ch = cos(h - M_PI / 2), sh = sin(h - M_PI / 2);
     double sx = ch * p->x_m - sh * p->y_m, sy = sh * p->x_m + ch * p->y_m; /* the sensor from the body centre */
     world_place(s->world, face - d - sx, 0.5 * c->world.cell_m - sy, h, NULL);
-    double want = m->gain_counts * c->world.wall_reflectivity * (m->ref_m / d) * (m->ref_m / d);
+    const ir_t *ir = &((const ir_state_t *)s->part_state[k])->ir;
+    double want = m->gain_counts * m->ref_m * m->ref_m * ir_received_plane(ir, d, 0, ir->reflectivity, ir->gloss);
     bench_fit(v, &n, "ir_far_field_120mm", want, bench_lit_minus_dark(s, 0), "counts",
-              "IR model: gain * reflectivity * (ref/d)^2 for a wall straight on in the far field (ir.h): the model's own "
-              "formula from the robot file's gain, no outside data");
+              "IR model: the rays cast in the world against the model's ideal plane straight on (ir.h): the model's own "
+              "formula from the robot file's keys, no outside data");
     double dark = 0;
     unsigned g = (unsigned)((const ir_part_spec_t *)p->spec)->emitter;
     sim_emitter_set(s, g, 0);
@@ -228,11 +229,78 @@ static int gyro_checks(const simcfg_t *c, validate_check_t *v, int n)
     return n;
 }
 
+static int ir_front_sum_checks(const simcfg_t *c, validate_check_t *v, int n);
+
 int validate_robot_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
     n = motion_checks(c, v, n); /* at c's own step, the contest's */
     n = count_checks(c, v, n);
     n = ir_calibration(c, v, n);
     n = ir_model_checks(c, v, n);
-    return gyro_checks(c, v, n);
+    n = gyro_checks(c, v, n);
+    return ir_front_sum_checks(c, v, n);
+}
+
+/* The forward pair's normalised sum (mazerunner-core's get_front_sum: each
+ * sensor's lit minus dark x 100 / its measured_backed) with the robot
+ * heading east along row `row` of bench.maze (four cells long), its axle
+ * axle_to_wall_m from the east wall's face. */
+static double front_sum_at(const simcfg_t *c, double axle_to_wall_m, unsigned row)
+{
+    sim_state_t *s = &bench.sim;
+    double face = 4 * c->world.cell_m - c->world.wall_thick_m / 2, sum = 0;
+    world_place(s->world, face - axle_to_wall_m - c->robot.axle_y_m, (row + 0.5) * c->world.cell_m, 0, NULL);
+    for (unsigned i = 0; i < robot_count(c, "ir"); i++) {
+        const ir_part_spec_t *sp = (const ir_part_spec_t *)c->robot.part[robot_part_of_kind(c, "ir", i)].spec;
+        if (sp->measured_backed > 0 && sp->measured_facing_sum > 0) sum += 100 * bench_lit_minus_dark(s, i) / sp->measured_backed;
+    }
+    return sum;
+}
+
+/* The forward pair against the published front sums of mazerunner-core's
+ * config-robot-*.h (the robot file's measured_facing_sum,
+ * measured_turn_sum and measured_turn_wall_adjust on the pair), all
+ * predicted: the fit used only the backed-up and centred readings (at
+ * 132 mm and of the side walls), never a front sum:
+ * - facing: FRONT_REFERENCE, centred in a cell facing its wall, the axle
+ *   half a cell less half a wall from it (84 mm), side walls there: the
+ *   near field, set by the detector's offset from the emitter;
+ * - turn in a corridor: TURN_THRESHOLD_SS90E, "set for when the robot is
+ *   20mm past the cell boundary" (the wall ahead a cell less half a wall
+ *   less 20 mm from the axle: 154 mm; ORION l.73-76), plus
+ *   EXTRA_WALL_ADJUST for each of the two side walls, as mouse.h's
+ *   turn_smooth raises its trigger when it sees them: the far field as
+ *   the firmware meets it between walls;
+ * - turn in the open: the threshold alone, no side walls. Reported, not
+ *   graded: the model's front sensors see nothing of a side wall (their
+ *   emitters' +-6 deg cone stays off it), where the real pair gains
+ *   EXTRA_WALL_ADJUST a wall, so the open pose reads what the corridor
+ *   does (sim/world/sensors/README.md). */
+static int ir_front_sum_checks(const simcfg_t *c, validate_check_t *v, int n)
+{
+    const ir_part_spec_t *pair = NULL;
+    for (unsigned i = 0; i < robot_count(c, "ir"); i++) {
+        const ir_part_spec_t *sp = (const ir_part_spec_t *)c->robot.part[robot_part_of_kind(c, "ir", i)].spec;
+        if (sp->measured_backed > 0 && sp->measured_facing_sum > 0) pair = sp;
+    }
+    if (pair == NULL) return n;
+    double cell = c->world.cell_m, wall = c->world.wall_thick_m, turn_m = cell - wall / 2 - 0.020;
+    bench_corridor(&bench.maze, 4);
+    if (bench_init(c) != 0) return n;
+    bench_add(v, &n, "ir_front_sum_facing", pair->measured_facing_sum, front_sum_at(c, cell / 2 - wall / 2, 0), "1", 10,
+              VALIDATE_NEAR, "the robot file's measured_facing_sum (FRONT_REFERENCE), centred facing a wall: not used by the fit");
+    if (pair->measured_turn_sum > 0)
+        bench_add(v, &n, "ir_front_sum_turn_walls", pair->measured_turn_sum + 2 * pair->measured_turn_wall_adjust,
+                  front_sum_at(c, turn_m, 0), "1", 10, VALIDATE_NEAR,
+                  "the robot file's measured_turn_sum + 2 x measured_turn_wall_adjust (TURN_THRESHOLD_SS90E + 2 x EXTRA_WALL_ADJUST, "
+                  "the trigger between two side walls), wall 154 mm from the axle: not used by the fit");
+    sim_free(&bench.sim);
+    if (pair->measured_turn_sum <= 0) return n;
+    bench_field(&bench.maze, 4, 3, 0);
+    if (bench_init(c) != 0) return n;
+    bench_add(v, &n, "ir_front_sum_turn_open", pair->measured_turn_sum, front_sum_at(c, turn_m, 1), "1", 10, VALIDATE_REPORT,
+              "the robot file's measured_turn_sum (TURN_THRESHOLD_SS90E), no side walls: not used by the fit; reported, not graded: "
+              "the model's front pair sees nothing of a side wall (sim/world/sensors/README.md)");
+    sim_free(&bench.sim);
+    return n;
 }

@@ -75,6 +75,8 @@ typedef struct {
     int centre_post;        /* 1 = the post in the middle of the goal is there */
     double body_wall_mu;    /* robot body/wheel on a wall or post */
     double wall_reflectivity; /* of walls and posts to the IR sensors' light, 0..1 */
+    double wall_gloss;      /* the walls' specular (gloss) reflectance straight on, 0..1 */
+    double wall_gloss_exp;  /* the gloss lobe's Phong exponent: cos^n of the angle off the mirror direction, 1 */
     /* contact springs and dampers, per kind (world.c turns them into ODE's
      * ERP and CFM for the step in use) */
     double tyre_kp_n_m, tyre_kd_n_s_m;     /* tyre on the floor */
