@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# cli_tof.sh - a ToF sensor's ranging profile in a robot file (docs/ROBOTS.md):
+# an unknown profile is one line FILE:LINE... and exit 2; --print-robot
+# shows the figures a profile sets, and a key the file gives wins.
+set -u
+S=${MMSIM:-build/mmsim}
+T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
+. "$(dirname "$0")/lib.sh"
+
+ONE_ERROR_LINE=1
+awk '/^\[tof.front\]/ { f = 1 } f && /^profile = / { $0 = "profile = fastest"; f = 0 } { print }' robots/paper.ini >"$T/bad.ini"
+n=$(grep -n '^profile = fastest' "$T/bad.ini" | cut -d: -f1)
+want_rc 2 "unknown ToF profile" "$S" --print-robot --robot "$T/bad.ini"
+[ "$(cat "$T/err")" = "$T/bad.ini:$n: tof.front.profile: 'fastest' is not one of default high_accuracy long_range high_speed" ] \
+  && ok "unknown ToF profile: FILE:LINE: KIND.NAME.key: the words" || bad "unknown ToF profile: $(cat "$T/err")"
+ONE_ERROR_LINE=0
+
+# the front sensor on high speed, its range given: the profile's period and cv, the file's range
+awk '/^\[tof.front\]/ { f = 1 } f && /^profile = / { $0 = "range_mm = 900\nprofile = high_speed"; f = 0 } { print }' robots/paper.ini >"$T/fast.ini"
+want_rc 0 "high speed profile" "$S" --print-robot --robot "$T/fast.ini"
+awk '/^\[tof.front\]/ { f = 1 } /^\[tof.right\]/ { f = 0 } f && /^(profile|range_mm|cv|period_ms) =/ { print $1 "=" $3 }' "$T/out" >"$T/front"
+[ "$(tr '\n' ' ' <"$T/front")" = "profile=high_speed range_mm=900 cv=0.05 period_ms=20 " ] \
+  && ok "profile sets period and cv, the file's range_mm wins" || bad "front: $(tr '\n' ' ' <"$T/front")"
+# the paper robot: the default profile, 30 ms, 1200 mm, cv 0.04
+want_rc 0 "paper robot" "$S" --print-robot
+[ "$(grep -c '^profile = default ' "$T/out")" = 3 ] && [ "$(grep -c '^cv = 0.04 ' "$T/out")" = 3 ] \
+  && ok "paper robot: three ToF sensors on the default profile, cv 0.04" || bad "paper robot ToF: $(grep -E '^(profile|cv) =' "$T/out")"
+[ $fails -eq 0 ]
