@@ -51,9 +51,8 @@ static const struct {
     { NULL, #name, offsetof(tof_spec_t, field), def, min, max, unit, src, NULL, 0, per, 0, KEYTAB_DOUBLE, 0, NULL }
 static const keytab_t keys[] = {
     { NULL, "profile", offsetof(tof_spec_t, profile), 0, 0, 3, "word",
-      "VL53L0X datasheet DocID029104 Table 13: the ranging profile, setting period_ms, range_mm and cv where the file "
-      "gives none (default 30 ms 1200 mm 0.04, high_accuracy 200 ms 1200 mm 0.03, long_range 33 ms 2000 mm 0.04, "
-      "high_speed 20 ms 1200 mm 0.05)",
+      "VL53L0X datasheet DocID029104 Table 13: the ranging profile; sets period_ms, range_mm and cv unless given "
+      "(docs/ROBOTS.md)",
       profile_names, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL },
     T(range_mm, range_m, 1200, 50, 10000, 1000, "mm",
       "the profile's unless given: a white target farther than this is a timeout (DocID029104 Tables 11, 13)"),
