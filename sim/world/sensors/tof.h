@@ -9,10 +9,10 @@
  * out, as a sensor tilted up by half its cone does.
  *
  * A ranging profile (ST DocID029104 Table 13: default, high accuracy, long
- * range, high speed) sets the period (its timing budget), the range (how
- * far it detects a white target) and cv (the standard deviation as a
- * fraction of the distance, Table 12); a key the robot file gives wins over
- * the profile's figure (tof_complete).
+ * range, high speed) sets the period (its timing budget) and the range (how
+ * far it detects a white target); cv, the standard deviation as a fraction
+ * of the distance, follows from the budget (tof_cv_at); a key the robot
+ * file gives wins over the profile's figure (tof_complete).
  * true distance d: nothing hit, or d beyond the range -> a timeout (no
  * return signal: the sensor's range status is not "valid"), reported as a
  * flag and the range as distance; else d clamped to at least the blind
@@ -68,6 +68,14 @@ typedef struct {
  * and cv into the keys the file did not give (given: bit i set = the
  * kind's key i was in the file). Any other part: untouched. */
 void tof_complete(robot_part_t *p, uint64_t given);
+
+/* The noise's standard deviation as a fraction of the distance for a
+ * timing budget, s: 4 % at 33 ms (DocID029104 Table 12, white target at
+ * 120 cm indoors), scaled by sqrt(33 ms / budget), as photon shot noise
+ * scales: the spread falls as 1/sqrt(the photons counted), which grow in
+ * proportion to the budget. The same fraction at every distance: a target
+ * filling the cone returns photons as 1/d^2, so the spread grows as d. */
+double tof_cv_at(double budget_s);
 
 void tof_init(tof_t *t, const tof_spec_t *s, uint64_t seed, unsigned index);
 /* true_m < 0 means the ray hit nothing. */
