@@ -13,7 +13,6 @@
 #include "world.h"
 #include "world/sensors/sensor.h"
 #include "world/sensors/tof.h"
-#include "world/sensors/tof.h"
 
 extern const char robot_paper_ini[]; /* robots/paper.ini, built in (Makefile) */
 
