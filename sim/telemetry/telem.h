@@ -50,7 +50,7 @@
 #define TELEM_RACE_HZ 10.0  /* rate of MM_RACE, Hz */
 #define TELEM_LINK_HZ 10.0  /* rate of MM_LINK, Hz */
 #define TELEM_WATCH_MAX 16   /* variables on MM_WATCH */
-#define TELEM_BUF_BYTES 16384 /* one encoded message, bytes (a 32x32 belief is ~5.2 KB) */
+#define TELEM_BUF_BYTES 65536 /* one encoded message, bytes: MM_MAZE carries the config and the robot file as printed (an IR robot ~17 KB; 16 parts with their sources ~35 KB); a 32x32 belief is ~5.2 KB */
 
 typedef struct {
     const char *url;      /* live LCM URL; NULL = none, "" = LCM's default */
