@@ -27,6 +27,7 @@ enum { RUN_OK = 0, RUN_NOT_REACHED = 1, RUN_BAD_INPUT = 2, RUN_EXTERNAL = 3 };
 
 typedef struct {
     const char *config_path;
+    const char *config_text; /* --config -: standard input's text, read once (batch jobs share it) */
     const char *robot_path; /* --robot FILE (NULL: the paper's robot, built in) */
     uint64_t seed;
     double time_limit_s; /* <= 0: from the config */
