@@ -16,6 +16,7 @@
 #include <strings.h>
 
 #include "cli.h"
+#include "board/board.h"
 #include "contest/batch.h"
 #include "contest/run.h"
 #include "io/datadir.h"
@@ -388,6 +389,21 @@ static int validate(const run_opts_t *o)
     return sum.passed < sum.graded ? RUN_NOT_REACHED : RUN_OK;
 }
 
+/* --board: the board file read once (o->board_spec); without --robot, the
+ * board's default_robot. 0, or CLI_BAD_INPUT after one line. */
+static int board_default_robot(run_opts_t *o)
+{
+    static board_spec_t spec; /* large */
+    char path[512], err[600];
+    if (board_find(o->board, path, sizeof path, err, sizeof err) != 0 || board_load(&spec, path, err, sizeof err) != 0) {
+        fprintf(stderr, "%s\n", err);
+        return CLI_BAD_INPUT;
+    }
+    o->board_spec = &spec;
+    if (!o->robot_path && spec.default_robot[0]) o->robot_path = spec.default_robot;
+    return 0;
+}
+
 /* --robot NAME (no '/', no .ini): robots/NAME.ini in the working directory,
  * an installed tree or the source tree (io/datadir.h). 0, or CLI_BAD_INPUT
  * after one line. */
@@ -395,6 +411,7 @@ static int find_robot(run_opts_t *o)
 {
     static char path[DATADIR_PATH_MAX + 64];
     char rel[300];
+    if (o->board && board_default_robot(o) != 0) return CLI_BAD_INPUT;
     if (!o->robot_path || strchr(o->robot_path, '/') || strstr(o->robot_path, ".ini")) return 0;
     if (snprintf(rel, sizeof rel, "robots/%s.ini", o->robot_path) >= (int)sizeof rel || datadir_find(rel, path, sizeof path) != 0)
         return bad("--robot %s: no robots/NAME.ini of that name here, installed or in the source tree (give the robot file's path)",
