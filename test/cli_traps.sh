@@ -3,7 +3,8 @@
 # to do: a report or screenshot named for a format it does not write, a
 # viewer with no display; a batch talks as a log (no progress line when
 # stderr is not a terminal) and always ends with a summary line; --help
-# lists every board flag.
+# lists every board flag; make sim and make test build every tool, make help
+# lists the targets.
 set -u
 S=${MMSIM:-build/mmsim}
 V=${MMVIEW:-build/mmview}
@@ -55,5 +56,13 @@ ONE_ERROR_LINE=0
 for f in "--config FILE|-" "--console pty" "--eeprom FILE" "--watch NAME" "--gdb PORT" "--input"; do
   grep -qF -- "$f" "$T/help" && ok "--help: $f" || bad "--help lacks $f"
 done
+
+# ---- make sim and make test build every tool the README uses; make help fits a screen
+for tgt in sim-run test-run; do
+  got=$(env -u MAKEFLAGS -u MAKELEVEL make -n --no-print-directory $tgt B="$T/nb" 2>/dev/null | grep -o -- "-o $T/nb/mm[a-z]*" | sort -u | wc -l)
+  [ "$got" = 4 ] && ok "make ${tgt%-run} builds mmsim, mmmaze, mmlog and mmview" || bad "make ${tgt%-run} builds $got of the 4 tools"
+done
+env -u MAKEFLAGS -u MAKELEVEL make --no-print-directory help >"$T/help.txt" 2>&1 && [ "$(wc -l <"$T/help.txt")" -le 24 ] && grep -q "^make sim " "$T/help.txt" \
+  && ok "make help: $(wc -l <"$T/help.txt") lines" || bad "make help: $(head -3 "$T/help.txt")"
 
 [ $fails -eq 0 ] && echo "cli_traps: all passed" || { echo "cli_traps: $fails failed"; exit 1; }
