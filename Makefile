@@ -55,8 +55,26 @@ TESTS += $(B)/test/test_wire_rx14
 # Our sketches for the board emulation (test/cli_board.sh, test/test_board.c), built for the Nano.
 BOARD_SKETCHES := $(patsubst test/arduino/board/%.ino,$(B)/clients/board/%.elf,$(wildcard test/arduino/board/*.ino))
 
-.PHONY: all deps test test-run client-mazerunner mrc-images board-sketches sim sim-run bench bench-run fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay view docs-img
+.PHONY: help all deps test test-run client-mazerunner mrc-images board-sketches sim sim-run bench bench-run fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay view docs-img
 all: tools
+
+# make help: the targets a user types, one line each
+help:
+	@echo "make sim         install what is missing, build every tool, run a contest (MAZE=, SEED=, DRIVER=, GUI=1)"
+	@echo "make test        install what is missing, build, run every test (one line each; the last: N passed, M failed, K skipped)"
+	@echo "make             build every tool: build/mmsim, build/mmmaze, build/mmlog, build/mmview"
+	@echo "make deps        install the Debian packages that are missing (idempotent)"
+	@echo "make docs        rewrite the figures the docs quote (docs/VALIDATION.md) from the code"
+	@echo "make docs-img    rewrite the README's pictures from the code"
+	@echo "make bench       the speed and memory benchmarks (docs/BENCHMARKS.md)"
+	@echo "make firmware    our mouse for the ATmega328P and the Arduino library's sketches (sizes printed)"
+	@echo "make arduino     the Arduino sketches (hal/arduino) for the Uno, Mega and Nano"
+	@echo "make client-mazerunner   UKMARSBOT's mazerunner-core images from ../shared/clients"
+	@echo "make view LOG=F  a log in the 3D viewer      make spy [LOG=F]   lcm-spy on a log or a live URL"
+	@echo "make replay LOG=F  a log replayed on LCM     make install PREFIX=DIR   the tools and their files"
+	@echo "make fuzz        the parsers under libFuzzer (FUZZ_SECONDS=)"
+	@echo "make mazes       clone the micromouseonline maze database (the tests read ../shared/mazes)"
+	@echo "make clean       remove build/"
 
 deps:
 	@missing=""; for p in $(DEB_PKGS); do \
@@ -153,7 +171,7 @@ PERIPH_ELFS     := $(patsubst %,$(B)/arduino/nano/board/%.elf,$(PERIPH_SKETCHES)
 # core's files that the wildcards below list) only exist once deps has run.
 test: deps
 	@$(MAKE) --no-print-directory test-run
-test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
+test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/,$(TOOLS)) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
 	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf $(B)/arduino/uno/OneCommand.elf $(B)/test/mrc_boot \
 	$(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf $(BOARD_SKETCHES) $(PERIPH_ELFS)
 	@LSAN_OPTIONS=suppressions=$(CURDIR)/test/lsan-simavr.supp MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
@@ -350,7 +368,7 @@ DRIVER ?= firmware
 # GUI=1: the same run live in the 3D viewer at x8 (a whole contest in ~75 s)
 sim: deps
 	@$(MAKE) --no-print-directory sim-run
-sim-run: $(B)/mmsim
+sim-run: $(addprefix $(B)/,$(TOOLS))
 	$(B)/mmsim --maze $(MAZE) --seed $(SEED) --driver $(DRIVER) $(if $(GUI),--gui --speed 8)
 
 # ---- LCM tools: the spy on a live URL or a log, a log replayed in real time ----

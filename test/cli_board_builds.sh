@@ -76,7 +76,13 @@ want_rc 1 "--board ukmarsbot with robots/ukmarsbot-advanced-12.ini runs" "$MMSIM
 errmsg() { local desc=$1 want=$2; shift 2
   ONE_ERROR_LINE=1 want_rc 2 "$desc: exit 2" "$MMSIM" --maze "$T/E.txt" --avr "$ELF" --time-limit 1 "$@"
   grep -qF -- "$want" "$T/err" && ok "$desc: '$want'" || bad "$desc: $(cat "$T/err")"; }
-errmsg "the paper robot on --board ukmarsbot" "boards/ukmarsbot-v1.3.ini:67: emitter.front.group 0: the robot robots/paper.ini has no [ir.*] sensor with emitter = 0" --board ukmarsbot
+EF=$(awk '/^\[emitter.front\]/ { print NR; exit }' boards/ukmarsbot-v1.3.ini) # the emitter's section line
+errmsg "the paper robot on --board ukmarsbot" "boards/ukmarsbot-v1.3.ini:$EF: emitter.front.group 0: the robot robots/paper.ini has no [ir.*] sensor with emitter = 0" --board ukmarsbot --robot robots/paper.ini
+# without --robot, a board runs its default_robot: ORION on the advanced board, the basic build on the basic one
+for b in ukmarsbot:robots/ukmarsbot.ini ukmarsbot-basic:robots/ukmarsbot-basic-36.ini; do
+  want_rc 1 "--board ${b%%:*} without --robot runs" "$MMSIM" --maze "$T/E.txt" --board ${b%%:*} --avr "$ELF" --time-limit 1 --json
+  [ "$(jv "$T/out" 'd["robot"]')" = "${b#*:}" ] && ok "--board ${b%%:*} without --robot: ${b#*:}" || bad "--board ${b%%:*}: robot $(jv "$T/out" 'd["robot"]')"
+done
 errmsg "the basic robot on the advanced board" "emitter.diagonal.group 1: the robot robots/ukmarsbot-basic-12.ini has no [ir.*] sensor" --board ukmarsbot --robot robots/ukmarsbot-basic-12.ini
 L=$(awk '/^\[ir.lds\]/ { print NR; exit }' robots/ukmarsbot.ini) # the sensor's section line
 errmsg "the advanced robot on the basic board" "robots/ukmarsbot.ini:$L: ir.lds.emitter 1: the board ukmarsbot-basic-v1.3" --board ukmarsbot-basic --robot robots/ukmarsbot.ini

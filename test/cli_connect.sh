@@ -57,7 +57,7 @@ import json, sys
 j = json.loads(open(sys.argv[1]).read().splitlines()[-1])
 l = j.get("link") or {}
 print("link:", {k: l.get(k) for k in ("device", "baud", "tx_bytes", "tx_msgs")})
-sys.exit(0 if l.get("device") == sys.argv[2] and l.get("tx_bytes", 0) > 0 and l.get("baud") == 115200 and j["exit_reason"] == "window_closed" else 1)
+sys.exit(0 if l.get("device") == sys.argv[2] and l.get("tx_bytes", 0) > 0 and l.get("baud") == 1000000 and j["exit_reason"] == "window_closed" else 1)
 PY
 "$L" --dump MM_LINK "$T/good.lcmlog" >"$T/link.jsonl" 2>&1
 python3 -c "import json,sys; m=[json.loads(x) for x in open(sys.argv[1])]; sys.exit(0 if m and m[0]['utime'] > 0 and m[-1]['bytes_to_mcu'] > 0 else 1)" "$T/link.jsonl" \

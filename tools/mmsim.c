@@ -8,12 +8,15 @@
  * the driving to an MCU or an mms algorithm.
  * Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure;
  * a batch returns the worst. */
+#include <errno.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
+#include <strings.h>
 
 #include "cli.h"
+#include "board/board.h"
 #include "contest/batch.h"
 #include "contest/run.h"
 #include "io/datadir.h"
@@ -34,7 +37,7 @@ typedef struct {
 
 static void usage(FILE *out)
 {
-    fputs("usage: mmsim --maze FILE [--config FILE] [--robot FILE] [--seed N] [--time-limit S] [--runs N]\n"
+    fputs("usage: mmsim --maze FILE [--config FILE|-] [--robot FILE] [--seed N] [--time-limit S] [--runs N]\n"
           "             [--centre-post on|off] [--profile default|paper] [--driver firmware|scripted]\n"
           "             [--json] [--realtime] [--verbose] [--report FILE.png]\n"
           "             (--runs: speed runs after the search, default 3; scripted: runs to the goal)\n"
@@ -52,11 +55,13 @@ static void usage(FILE *out)
           "             whole simulation halt until avr-gdb attaches (target remote :PORT) and continues, and at each\n"
           "             breakpoint or step; the JSON is the run's without --gdb (sim/board/README.md)\n"
           "       mmsim --maze FILE --board NAME|FILE --avr FIRMWARE.elf|.hex [--robot FILE] [--input \"T ACTION; ...\"]\n"
-          "             [--goal X,Y]   (the image on an emulated board, boards/NAME-*.ini: pins, PWM, encoders, ADC,\n"
+          "             [--goal X,Y] [--eeprom FILE] [--console pty]   (the image on an emulated board, boards/NAME-*.ini:\n"
+          "             pins, PWM, encoders, ADC,\n"
           "             UART; --verbose echoes its console; --input: a person's hands, T in sim seconds: switches=N,\n"
           "             button, button=down|up, reset, occlude=SENSOR (a robot-file [ir.*]/[tof.*] name, or left|right),\n"
           "             push=DX_MM[,DYAW_DEG[,SECONDS]], lift, place, send=TEXT, end; several --input add up;\n"
           "             --eeprom FILE: the MCU's EEPROM, a raw image, loaded at power-on and saved at the end;\n"
+          "             --console pty: the board's UART on a pseudo-terminal (its path printed), in real time;\n"
           "             --watch NAME[,NAME...]: the firmware's global variables, by the ELF's symbols and DWARF,\n"
           "             each step on LCM channel MM_WATCH and in --report beside the true pose)\n"
           "       mmsim --maze FILE --mms COMMAND [--mms-ideal-walls] [--mms-timeout-ms N] [--mms-reset-at S|idle]\n"
@@ -317,12 +322,20 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (o->eeprom_path && !o->board) return bad("%s", "--eeprom FILE needs --board NAME");
     if (o->watch && !o->avr_elf) return bad("%s", "--watch NAME needs --avr IMAGE.elf (with or without --board NAME): the image's variables");
     if (o->console_pty) o->realtime = 1; /* a person at a serial monitor: in real time */
+    if (o->view.baud <= 0) o->view.baud = (long)link_default_baud(o->link.protocol); /* the viewer's Connect */
     if (o->print_config || o->print_robot || m->validate || m->bench_log) return 0;
     if (m->batch && (o->telem.url || o->telem.log_path)) return bad("%s", "--lcm and --lcm-log work on one maze, not with --batch");
     if (m->batch && (o->report || o->gui || o->shot)) return bad("%s", "--report, --gui and --screenshot need --maze (one run), not --batch");
     if (o->gui && o->shot) return bad("%s", "--gui and --screenshot: one at a time");
     if (!m->batch && !m->maze) return bad("%s", "--maze FILE is required");
     return 0;
+}
+
+/* A name ending in .png (any case). */
+static int has_png_ext(const char *path)
+{
+    size_t n = strlen(path);
+    return n > 4 && strcasecmp(path + n - 4, ".png") == 0;
 }
 
 /* --report (its PNG, SVG and JSON) and --screenshot fail now, not after a
@@ -332,6 +345,13 @@ static int probe_outputs(const run_opts_t *o)
     char paths[4][4096], perr[600];
     const char *flag[4] = { "--report", "--report", "--report", "--screenshot" };
     int n = 0;
+    for (int k = 0; k < 2; k++) { /* each writes a PNG: a name that says otherwise is a mistake */
+        const char *name = k ? o->shot : o->report;
+        if (name && !has_png_ext(name)) {
+            fprintf(stderr, "mmsim: %s %s: it writes a PNG: give a name ending in .png\n", k ? "--screenshot" : "--report", name);
+            return RUN_BAD_INPUT;
+        }
+    }
     if (o->report) {
         snprintf(paths[n++], sizeof paths[0], "%s", o->report);
         report_sibling(o->report, ".svg", paths[n++], sizeof paths[0]);
@@ -369,6 +389,21 @@ static int validate(const run_opts_t *o)
     return sum.passed < sum.graded ? RUN_NOT_REACHED : RUN_OK;
 }
 
+/* --board: the board file read once (o->board_spec); without --robot, the
+ * board's default_robot. 0, or CLI_BAD_INPUT after one line. */
+static int board_default_robot(run_opts_t *o)
+{
+    static board_spec_t spec; /* large */
+    char path[512], err[600];
+    if (board_find(o->board, path, sizeof path, err, sizeof err) != 0 || board_load(&spec, path, err, sizeof err) != 0) {
+        fprintf(stderr, "%s\n", err);
+        return CLI_BAD_INPUT;
+    }
+    o->board_spec = &spec;
+    if (!o->robot_path && spec.default_robot[0]) o->robot_path = spec.default_robot;
+    return 0;
+}
+
 /* --robot NAME (no '/', no .ini): robots/NAME.ini in the working directory,
  * an installed tree or the source tree (io/datadir.h). 0, or CLI_BAD_INPUT
  * after one line. */
@@ -376,6 +411,7 @@ static int find_robot(run_opts_t *o)
 {
     static char path[DATADIR_PATH_MAX + 64];
     char rel[300];
+    if (o->board && board_default_robot(o) != 0) return CLI_BAD_INPUT;
     if (!o->robot_path || strchr(o->robot_path, '/') || strstr(o->robot_path, ".ini")) return 0;
     if (snprintf(rel, sizeof rel, "robots/%s.ini", o->robot_path) >= (int)sizeof rel || datadir_find(rel, path, sizeof path) != 0)
         return bad("--robot %s: no robots/NAME.ini of that name here, installed or in the source tree (give the robot file's path)",
@@ -384,11 +420,27 @@ static int find_robot(run_opts_t *o)
     return 0;
 }
 
+/* --config -: standard input read once, at most CONFIG_MAX_BYTES, into
+ * o->config_text (kept to the end). 0, or RUN_BAD_INPUT after one line. */
+static int read_config_stdin(run_opts_t *o, const char *maze)
+{
+    if (!o->config_path || strcmp(o->config_path, "-") != 0) return 0;
+    if (maze && strcmp(maze, "-") == 0) return bad("%s", "--config - and --maze -: only one of them can read standard input");
+    static char text[CONFIG_MAX_BYTES + 2];
+    size_t n = fread(text, 1, CONFIG_MAX_BYTES + 1, stdin);
+    if (ferror(stdin)) return bad("--config -: <stdin>: cannot read: %s", strerror(errno));
+    if (n > CONFIG_MAX_BYTES) return bad("%s", "--config -: <stdin>: too large (more than 1 MiB: CONFIG_MAX_BYTES)");
+    text[n] = '\0';
+    if (memchr(text, '\0', n)) return bad("%s", "--config -: <stdin>: a NUL byte: not a text file");
+    o->config_text = text;
+    return 0;
+}
+
 static int run(int argc, char **argv)
 {
     mmsim_opts_t m = { .run = { /* the mouse's own firmware by default, 3 speed runs after the search */
         .seed = 1, .runs = 3, .centre_post = -1, .scripted = 0, .jobs = 1, .goal_x = -1, .goal_y = -1,
-        .view = { .width = 1024, .height = 720, .speed = 1, .camera = 1, .port = "", .baud = 115200 },
+        .view = { .width = 1024, .height = 720, .speed = 1, .camera = 1, .port = "", .baud = 0 }, /* baud 0: the protocol's */
         .link = { .protocol = LINK_FRAMED, .silence_s = -1 }, /* silence: the protocol's default */
         .mms = { .timeout_ms = 5000, .reset_at_s = -1 },
     } };
@@ -399,7 +451,7 @@ static int run(int argc, char **argv)
         return RUN_OK;
     }
     if (first != argc) return bad("unexpected argument '%s'", argv[first]);
-    if (check_combinations(&m, seen) || find_robot(&m.run)) return RUN_BAD_INPUT;
+    if (check_combinations(&m, seen) || find_robot(&m.run) || read_config_stdin(&m.run, m.maze)) return RUN_BAD_INPUT;
     if (m.validate) return validate(&m.run);
     if (m.bench_log) {
         simcfg_t cfg;

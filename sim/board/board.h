@@ -59,10 +59,11 @@ typedef struct {
 #define BOARD_ANALOG_N 2
 
 /* The board file (see boards/ukmarsbot-v1.3.ini for every key and source). */
-typedef struct {
+typedef struct board_spec_s {
     char path[256];
     char name[64];
     char mcu[32];
+    char default_robot[64];       /* the robot a run on this board uses without --robot: robots/NAME.ini ("": none) */
     uint32_t f_cpu;               /* Hz */
     double vcc_v;                 /* VCC = AVCC = AREF, V */
     /* motor driver, [motor.left] / [motor.right] (WORLD_LEFT, WORLD_RIGHT) */

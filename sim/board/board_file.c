@@ -79,6 +79,8 @@ static const char *const leads[] = { "b_leads", "a_leads" }; /* the index is enc
 static const keytab_t keys[] = {
     TEXT("board", "name", name, "the board's name"),
     TEXT("board", "mcu", mcu, "the MCU, as simavr names it"),
+    { "board", "default_robot", OFF(default_robot), 0, 0, 0, "name", "the robot file a run uses without --robot: robots/NAME.ini", NULL, 0, 0, 0,
+      KEYTAB_TEXT, sizeof ((board_spec_t *)0)->default_robot, NULL },
     NUM("board", "f_cpu_hz", KEYTAB_U32, f_cpu, 1e6, 32e6, "Hz", "the MCU's clock"),
     NUM("board", "vcc_v", KEYTAB_DOUBLE, vcc_v, 1.8, 5.5, "V", "VCC = AVCC = AREF"),
     PIN("motor.left", "dir_pin", motor_dir[0], "the H-bridge's direction input"),

@@ -23,6 +23,8 @@ typedef struct {
     int *fd;    /* the read end of each started job's pipe */
     char **text; /* each finished job's output */
     int running, worst;
+    size_t by_code[4]; /* finished jobs by exit code: ok, goal not reached, bad input, failed */
+    int tty;           /* stderr is a terminal: a progress line */
 } batch_t;
 
 /* All a child wrote to its pipe, until end of file (NUL-terminated). */
@@ -161,12 +163,13 @@ static int reap_job(batch_t *b, const sigset_t *blocked)
     b->done++;
     int code = WIFEXITED(status) ? WEXITSTATUS(status) : RUN_EXTERNAL;
     if (code > b->worst) b->worst = code;
+    b->by_code[code >= 0 && code <= 3 ? code : 3]++;
     if (!out || !strchr(out, '{')) { /* no JSON from the child */
         free(out);
         out = failed_line(b->names[i], status);
     }
     b->text[i] = out ? out : strdup("");
-    fprintf(stderr, "\r[%zu/%zu] %-60.60s", b->done, b->n, b->names[i]);
+    if (b->tty) fprintf(stderr, "\r[%zu/%zu] %-60.60s", b->done, b->n, b->names[i]);
     while (b->printed < b->n && b->text[b->printed]) { /* results in input order */
         fputs(b->text[b->printed], stdout);
         b->printed++;
@@ -187,7 +190,7 @@ static int reaped_within(pid_t c, double wait_s)
 
 int batch_run(const run_opts_t *o, const char *dir)
 {
-    batch_t b = { .o = o };
+    batch_t b = { .o = o, .tty = isatty(STDERR_FILENO) };
     long nn = mazedir_list_or_report(dir, &b.names);
     if (nn < 0) return RUN_BAD_INPUT;
     b.n = (size_t)nn;
@@ -211,7 +214,10 @@ int batch_run(const run_opts_t *o, const char *dir)
             b.worst = RUN_EXTERNAL;
         }
     }
-    if (b.done) fputc('\n', stderr); /* the end of the progress line */
+    if (b.done && b.tty) fputc('\n', stderr); /* the end of the progress line */
+    if (!failed && !stop_sig) /* a summary of a batch that ran to its end (a failure has its own line) */
+        fprintf(stderr, "mmsim: --batch %s: %zu of %zu mazes run: %zu reached the goal, %zu did not, %zu bad input, %zu failed\n",
+            dir, b.done, b.n, b.by_code[0], b.by_code[1], b.by_code[2], b.by_code[3]);
     fflush(stdout);
     for (size_t i = 0; b.pid && b.fd && i < b.next; i++)
         if (b.pid[i]) { /* after a failure or a stop signal: end the jobs still running */

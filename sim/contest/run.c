@@ -25,7 +25,8 @@ int run_load_config(const run_opts_t *o, simcfg_t *c)
 {
     char err[400];
     config_defaults(c);
-    if (o->config_path && config_load(c, o->config_path, err, sizeof err) != 0) {
+    if (o->config_text ? config_load_string(c, o->config_text, "<stdin>", err, sizeof err) != 0
+                       : o->config_path && config_load(c, o->config_path, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         return -1;
     }

@@ -27,6 +27,7 @@ enum { RUN_OK = 0, RUN_NOT_REACHED = 1, RUN_BAD_INPUT = 2, RUN_EXTERNAL = 3 };
 
 typedef struct {
     const char *config_path;
+    const char *config_text; /* --config -: standard input's text, read once (batch jobs share it) */
     const char *robot_path; /* --robot FILE (NULL: the paper's robot, built in) */
     uint64_t seed;
     double time_limit_s; /* <= 0: from the config */
@@ -49,6 +50,7 @@ typedef struct {
     input_t input;                 /* --input "T ACTION; ...": a person's hands (input.h); input.n 0 = none */
     int goal_x, goal_y;            /* --goal X,Y: laps scored to this cell, not the maze's goal (-1: the maze's) */
     const char *board;             /* --board NAME|FILE: the image (--avr) on an emulated board (sim/board) */
+    const struct board_spec_s *board_spec; /* the board file, read once by the caller (NULL: run_board reads it) */
     int console_pty;               /* --console pty: the board's UART0 on a pseudo-terminal (a person's serial monitor) */
     const char *eeprom_path;       /* --eeprom FILE: the board's EEPROM loaded at power-on, saved at the end (NULL: blank, not kept) */
     unsigned gdb_port;             /* --gdb PORT: simavr's gdb stub on 127.0.0.1:PORT, the firmware halted until gdb continues (0: none) */

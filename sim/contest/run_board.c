@@ -118,7 +118,9 @@ static int board_open_run(run_t *r, void **self)
 {
     char path[512], err[600];
     board_spec_t spec;
-    if (board_find(r->o->board, path, sizeof path, err, sizeof err) != 0 || board_load(&spec, path, err, sizeof err) != 0) {
+    if (r->o->board_spec) {
+        spec = *r->o->board_spec;
+    } else if (board_find(r->o->board, path, sizeof path, err, sizeof err) != 0 || board_load(&spec, path, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         return RUN_BAD_INPUT;
     }

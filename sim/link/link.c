@@ -80,7 +80,7 @@ static void init_common(link_t *l, const link_opts_t *o, double step_s, uint16_t
     l->fd = fd;
     memcpy(l->path, path, sizeof path);
     l->o = *o;
-    if (l->o.baud == 0) l->o.baud = o->protocol == LINK_COMPAT ? 115200u : 1000000u;
+    if (l->o.baud == 0) l->o.baud = link_default_baud(o->protocol);
     if (l->o.silence_s < 0) l->o.silence_s = o->protocol == LINK_COMPAT ? 0.0 : LINK_SILENCE_S;
     l->step_s = step_s;
     l->tof_range_mm = range_mm;
@@ -106,10 +106,12 @@ void link_open_fd(link_t *l, int fd, const char *name, const link_opts_t *o, dou
     on_connect(l);
 }
 
+uint32_t link_default_baud(int protocol) { return protocol == LINK_COMPAT ? 115200u : 1000000u; }
+
 int link_open(link_t *l, const link_opts_t *o, double step_s, uint16_t tof_range_mm, uint32_t counts_per_rev_x100,
               FILE *report, char *err, size_t errn)
 {
-    uint32_t baud = o->baud ? o->baud : (o->protocol == LINK_COMPAT ? 115200u : 1000000u);
+    uint32_t baud = o->baud ? o->baud : link_default_baud(o->protocol);
     if (baud > SERIAL_BAUD_MAX) {
         snprintf(err, errn, "baud %u above %u", (unsigned)baud, SERIAL_BAUD_MAX);
         return -1;

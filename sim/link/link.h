@@ -29,6 +29,11 @@ enum { LINK_FRAMED = 0, LINK_COMPAT = 1 };
                                      compat has none by default: the paper's Unity simulator applies a motor
                                      command until the next one and has no watchdog */
 
+/* The protocol's baud when none is given, bits/s: framed 1,000,000 (our
+ * Arduino library's Serial.begin, hal/arduino/src/MMMouse.h), compat
+ * 115200 (the paper's Arduino side). */
+uint32_t link_default_baud(int protocol);
+
 typedef struct {
     const char *device;   /* serial device path, or NULL with pty */
     int pty;              /* create a pseudo-terminal instead */

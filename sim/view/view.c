@@ -85,7 +85,7 @@ view_t *view_new(const view_opts_t *o)
     v->overlay = 1;
     for (int i = 0; i <= SCENE_CAMERAS; i++) orbit_reset(&v->orbit[i]);
     snprintf(v->port, sizeof v->port, "%s", o->port ? o->port : "");
-    snprintf(v->baud, sizeof v->baud, "%ld", o->baud > 0 ? o->baud : 115200L);
+    if (o->baud > 0) snprintf(v->baud, sizeof v->baud, "%ld", o->baud); /* else empty: typed in */
     v->editing = -1;
     if (v->o.width <= 0) v->o.width = 1024;
     if (v->o.height <= 0) v->o.height = 720;
@@ -417,12 +417,20 @@ static void on_size(GLFWwindow *w, int width, int height)
     v->o.height = height;
 }
 
+/* What to do when there is no display to open: a headless machine runs the
+ * viewer under a virtual X server. */
+static const char *no_display_hint(void)
+{
+    const char *d = getenv("DISPLAY"), *w = getenv("WAYLAND_DISPLAY");
+    return (d && *d) || (w && *w) ? "" : " (no display: DISPLAY is not set; run it under xvfb-run -a, e.g. xvfb-run -a build/mmsim ...)";
+}
+
 int view_open(view_t *v, int visible, char *err, size_t errlen)
 {
     if (glfw_users == 0 && !glfwInit()) {
         const char *d = NULL;
         glfwGetError(&d);
-        snprintf(err, errlen, "cannot start the viewer: %s", d ? d : "GLFW init failed (no X display?)");
+        snprintf(err, errlen, "cannot start the viewer: %s%s", d ? d : "GLFW init failed", no_display_hint());
         return -1;
     }
     glfw_users++;
@@ -436,7 +444,7 @@ int view_open(view_t *v, int visible, char *err, size_t errlen)
     if (!v->win) {
         const char *d = NULL;
         glfwGetError(&d);
-        snprintf(err, errlen, "cannot open the viewer window: %s", d ? d : "unknown GLFW error");
+        snprintf(err, errlen, "cannot open the viewer window: %s%s", d ? d : "unknown GLFW error", no_display_hint());
         if (--glfw_users == 0) glfwTerminate();
         return -1;
     }
