@@ -215,10 +215,10 @@ int batch_run(const run_opts_t *o, const char *dir)
         }
     }
     if (b.done && b.tty) fputc('\n', stderr); /* the end of the progress line */
-    if (!failed && !stop_sig) /* a summary of a batch that ran to its end (a failure has its own line) */
+    fflush(stdout);
+    if (!failed && !stop_sig && !ferror(stdout)) /* a batch that ran to its end (a failure has its own line) */
         fprintf(stderr, "mmsim: --batch %s: %zu of %zu mazes run: %zu reached the goal, %zu did not, %zu bad input, %zu failed\n",
             dir, b.done, b.n, b.by_code[0], b.by_code[1], b.by_code[2], b.by_code[3]);
-    fflush(stdout);
     for (size_t i = 0; b.pid && b.fd && i < b.next; i++)
         if (b.pid[i]) { /* after a failure or a stop signal: end the jobs still running */
             if (!stop_sig || !reaped_within(b.pid[i], 5.0)) kill(b.pid[i], SIGKILL);
