@@ -12,6 +12,9 @@
 #    and not without it; `m` (the motor test) drives the robot forward and
 #    both encoders count forward; `k` reports the stack left and no tick
 #    overrun;
+#  - IR walls (firmware/walls_ir.c): calibrated against the start cell's
+#    walls (c, f), kept in EEPROM (--eeprom), reloaded at the next power-on
+#    and read right (w) in other start cells;
 #  - the BASIC sensor board's build boots on its board file;
 #  - a second run gives the same console and JSON.
 set -u
@@ -78,7 +81,7 @@ b = j['board']; mv = [int(l.split()[1]) for l in c.splitlines() if l.startswith(
 assert mv and abs(mv[-1] / 1000 - (b['battery_v'] - 1.0)) < 0.05, (mv, b['battery_v'])
 print(c.splitlines()[1])
 " >"$T/msg" && ok "banner; battery $(grep -o '[0-9]* mV' "$T/msg" | head -1) = the simulated battery less D1 (1.0 V) within 50 mV" || bad "banner/battery: $(cat "$T/msg")"
-ir() { js "$1" "print(' '.join([l for l in c.splitlines() if l.startswith('IR ')][0].split()[1:5]))"; }
+ir() { js "$1" "print(' '.join([l for l in c.splitlines() if l.startswith('IR ') and ' dark ' in l][0].split()[1:5]))"; }
 O=$(ir "$T/open.json"); E=$(ir "$T/east.json")
 python3 - "$O" "$E" <<'PY' && ok "IR (lfs lds rds rfs, lit - dark): open $O, east wall $E: the right diagonal sees it" || bad "IR: open $O, east $E"
 import sys
@@ -103,6 +106,37 @@ print(enc[-1], 'y', p['y_m'], '|', stk)
 want_rc 1 "open maze again" run "$T/open.txt"
 [ "$(strip "$T/open.json")" = "$(strip "$T/out")" ] && ok "deterministic: the same console and JSON twice" || bad "two runs differ"
 
+# IR walls (firmware/walls_ir.c) from a calibration kept in EEPROM: calibrated in a
+# start cell closed on three sides, backed against its rear wall (c: the sides, f: the
+# front), saved; the next power-on loads it and reads the walls of other start cells
+python3 - "$T" <<'PY'
+import sys
+n = 16; rows = ["o" + "---o" * n]
+for r in range(n):
+    row = "|" + "    " * (n - 1) + "   |"
+    if r == n - 1: row = row[:4] + "|" + row[5:]
+    rows += [row, "o" + ("---o" * n if r == n - 1 else "   o" * n)]
+rows[-3] = "o---" + rows[-3][4:]
+open(sys.argv[1] + "/closed.txt", "w").write("\n".join(rows) + "\n")
+PY
+wrun() { "$MMSIM" --maze "$1" --board ukmarsbot --avr $B/ukmarsbot/mouse.elf --robot robots/ukmarsbot.ini --eeprom "$T/ee.bin" --input "$2" --json; }
+want_rc 1 "calibration run" wrun "$T/closed.txt" "0.3 send=c; 0.5 send=f; 0.7 send=w; 1 end"; cp "$T/out" "$T/cal.json"
+want_rc 1 "open start cell, calibration reloaded" wrun "$T/open.txt" "0.3 send=w; 1 end"; cp "$T/out" "$T/w1.json"
+want_rc 1 "start cell with its east wall" wrun "$T/east.txt" "0.3 send=w; 1 end"; cp "$T/out" "$T/w2.json"
+wl() { js "$1" "print([l for l in c.splitlines() if l.startswith('$2')][${3:-0}])"; }
+js "$T/cal.json" "
+assert 'IR calibration: ORION' in c, c
+cals = [l for l in c.splitlines() if l.startswith('calibrated and saved: ')]
+assert len(cals) == 2, c
+assert [l for l in c.splitlines() if l.startswith('walls ')][0].startswith('walls LFR '), c
+" && ok "calibrated in the closed start cell: $(wl "$T/cal.json" "calibrated" 1); $(wl "$T/cal.json" "walls")" || bad "calibration: $(js "$T/cal.json" "print(c)")"
+for f in w1:L-- w2:L-R; do
+  js "$T/${f%%:*}.json" "
+assert 'IR calibration from EEPROM' in c, c
+assert [l for l in c.splitlines() if l.startswith('walls ')][0].startswith('walls ${f#*:} '), c
+" && ok "reloaded from EEPROM: $(wl "$T/${f%%:*}.json" "walls") as the maze has it" || bad "walls ${f#*:}: $(js "$T/${f%%:*}.json" "print(c)")"
+done
+
 # the BASIC sensor board's build on its board file
 want_rc 0 "make firmware-ukmarsbot UKB_SENSOR_BOARD=basic" mk firmware-ukmarsbot UKB_SENSOR_BOARD=basic
 want_rc 1 "basic build boots" "$MMSIM" --maze "$T/east.txt" --board ukmarsbot-basic --avr $B/ukmarsbot-basic/mouse.elf \
@@ -110,7 +144,7 @@ want_rc 1 "basic build boots" "$MMSIM" --maze "$T/east.txt" --board ukmarsbot-ba
 cp "$T/out" "$T/basic.json"
 js "$T/basic.json" "
 assert c.startswith('UKMARSBOT mouse (hal/ukmarsbot, basic sensors)'), c[:200]
-v = list(map(int, [l for l in c.splitlines() if l.startswith('IR ')][0].split()[1:4]))
+v = list(map(int, [l for l in c.splitlines() if l.startswith('IR ') and ' dark ' in l][0].split()[1:4]))
 assert v[1] > 20 and v[2] > 20, v   # right and left: both side walls of the start cell
 print(v)
 " >"$T/msg" && ok "basic board: banner, IR (front right left) $(cat "$T/msg")" || bad "basic: $(cat "$T/msg")"

@@ -11,6 +11,7 @@
  * At power-on the board waits at its console ("h" lists the commands);
  * the button or "g" starts the mouse: fw_setup, then fw_tick every tick
  * and fw_loop from the main loop. */
+#include <avr/eeprom.h>
 #include <avr/interrupt.h>
 #include <avr/io.h>
 #include <avr/pgmspace.h>
@@ -22,6 +23,8 @@
 #include "ukb_encoders.h"
 #include "ukb_motors.h"
 #include "ukb_sensors.h"
+#include "explore.h"
+#include "walls_ir.h"
 
 #define UKB_SYSTICK_CLK_HZ (F_CPU / 256UL) /* Timer2 clock, Hz */
 #define UKB_SYSTICK_TOP (UKB_SYSTICK_CLK_HZ / HAL_TICK_HZ - 1UL)
@@ -155,13 +158,49 @@ static void motor_test(void)
     ukb_console_printf_P(PSTR("motors %u/1023 for %u ms"), UKB_TEST_CMD, (unsigned)(1000UL * UKB_TEST_TICKS / HAL_TICK_HZ));
 }
 
+#define UKB_EEPROM_CAL ((void *)0) /* EEPROM address of the IR calibration (walls_ir_cal_t) */
+
+/* the IR calibration stored in EEPROM, if there is a good one */
+static void calibration_load(void)
+{
+    walls_ir_cal_t c;
+    eeprom_read_block(&c, UKB_EEPROM_CAL, sizeof c);
+    uint8_t ok = walls_ir_cal_ok(&c);
+    if (ok) *walls_ir_cal() = c;
+    ukb_console_printf_P(ok ? PSTR("IR calibration from EEPROM") : PSTR("IR calibration: ORION's (EEPROM blank)"));
+}
+
+/* c: the sides (the robot backed against the start cell's rear wall), f:
+ * the front (backed, with a wall ahead); kept in EEPROM */
+static void calibrate(char which)
+{
+    if (running) return;
+    uint8_t ok = which == 'c' ? walls_ir_calibrate_sides() : walls_ir_calibrate_front();
+    const walls_ir_cal_t *c = walls_ir_cal();
+    if (ok) eeprom_update_block(c, UKB_EEPROM_CAL, sizeof *c);
+    ukb_console_printf_P(PSTR("calibrated %s: sides %u %u, front %u %u"), ok ? "and saved" : "NOT (no wall seen)", c->side_ref[0],
+                         c->side_ref[1], c->front_ref[0], c->front_ref[1]);
+}
+
+static void report_walls(void)
+{
+    uint16_t pct[3];
+    uint8_t w = walls_ir_walls();
+    walls_ir_levels(pct);
+    ukb_console_printf_P(PSTR("walls %c%c%c (%u %u %u %%)"), w & EXPLORE_WALL_LEFT ? 'L' : '-', w & EXPLORE_WALL_FRONT ? 'F' : '-',
+                         w & EXPLORE_WALL_RIGHT ? 'R' : '-', pct[0], pct[1], pct[2]);
+}
+
 static void command(char c)
 {
     switch (c) {
     case 'h': case '?':
-        ukb_console_printf_P(PSTR("i IR, b battery, s switches, e encoders, m motor test, g go, x stop, k stack"));
+        ukb_console_printf_P(PSTR("i IR, w walls, c calibrate the sides, f the front, b battery, s switches"));
+        ukb_console_printf_P(PSTR("e encoders, m motor test, g go, x stop, k stack"));
         break;
     case 'i': report_ir(); break;
+    case 'w': report_walls(); break;
+    case 'c': case 'f': calibrate(c); break;
     case 'b': ukb_console_printf_P(PSTR("battery %u mV"), hal_battery_mv()); break;
     case 's': ukb_console_printf_P(PSTR("switches %u adc %u"), ukb_switches(), ukb_switch_adc()); break;
     case 'e': ukb_console_printf_P(PSTR("encoders %ld %ld"), (long)hal_encoder(HAL_LEFT), (long)hal_encoder(HAL_RIGHT)); break;
@@ -192,6 +231,7 @@ int main(void)
     ukb_console_printf_P(PSTR("UKMARSBOT mouse (hal/ukmarsbot, %s sensors), tick %u Hz"), UKB_SENSOR_BOARD_NAME,
                          (unsigned)HAL_TICK_HZ);
     ukb_console_printf_P(PSTR("battery %u mV, switches %u; h for help"), hal_battery_mv(), ukb_switches());
+    calibration_load();
     for (;;) {
         int c = ukb_console_getc();
         if (c >= 0) command((char)c);
