@@ -40,6 +40,9 @@ static volatile uint32_t ticks;
 static volatile uint8_t running;           /* fw_tick on */
 static volatile uint16_t motor_test_left;  /* ticks of the motor test still to run */
 static volatile uint16_t overruns;
+/* the longest time from a compare to the end of the sensor schedule and
+ * to the end of the whole tick, Timer2 counts (16 us; command k) */
+static volatile uint8_t busy_sense_max, busy_tick_max;
 static uint8_t test_reported = 1;
 extern uint8_t __bss_end; /* avr-libc's linker script: the end of the static RAM */
 
@@ -57,6 +60,8 @@ ISR(TIMER2_COMPA_vect)
     TIMSK2 &= (uint8_t)~_BV(OCIE2A);
     sei();
     ukb_sensors_sample();
+    uint8_t t = TCNT2;
+    if (t > busy_sense_max) busy_sense_max = t;
     if (running) fw_tick();
     else if (motor_test_left && --motor_test_left == 0) hal_motor_set(0, 0);
     static uint8_t blink;
@@ -65,7 +70,9 @@ ISR(TIMER2_COMPA_vect)
         PORTB ^= _BV(UKB_LED_BUILTIN_BIT);
     }
     cli();
+    t = TCNT2;
     if (TIFR2 & _BV(OCF2A)) overruns++;
+    else if (t > busy_tick_max) busy_tick_max = t;
     TIMSK2 |= _BV(OCIE2A);
 }
 
@@ -210,6 +217,9 @@ static void command(char c)
     case 'k':
         ukb_console_printf_P(PSTR("stack unused %u B, overruns %u, log lines dropped %u"), stack_unused(), overruns,
                              ukb_console_dropped());
+        ukb_console_printf_P(PSTR("tick busy at most: sensors %u us, all %u us of %u"),
+                             (unsigned)(busy_sense_max * UKB_US_PER_COUNT), (unsigned)(busy_tick_max * UKB_US_PER_COUNT),
+                             (unsigned)(1000000UL / HAL_TICK_HZ));
         break;
     default: break;
     }
