@@ -193,6 +193,30 @@ firmware-size: | deps
 	avr-size $(B)/avr/firmware.elf
 	@avr-nm -S --size-sort $(B)/avr/firmware.elf | grep -i ' [bd] ' | tail -8
 firmware: firmware-size arduino
+# ---- the firmware on UKMARSBOT's Nano: firmware/ + hal/ukmarsbot, plain avr-libc ----
+# `make firmware-ukmarsbot` builds $(B)/ukmarsbot/mouse.elf and .hex (the image
+# a user flashes; mmsim --board ukmarsbot --avr runs the ELF) and prints its
+# flash (limit UKB_FLASH_MAX: the Nano's 32 KB less its 2 KB bootloader) and
+# static RAM. UKB_SENSOR_BOARD=basic builds for the BASIC wall sensor board.
+# platformio.ini [env:ukmarsbot] builds the same files (UKB_SRC; test/cli_ukmarsbot_fw.sh).
+UKB_SRC       := $(FW_SRC) $(sort $(wildcard hal/ukmarsbot/*.c))
+UKB_FLASH_MAX := 30720
+UKB_SENSOR_BOARD ?= advanced
+UKB_FLAGS     := $(AVR_FLAGS) -Ihal/ukmarsbot $(if $(filter basic,$(UKB_SENSOR_BOARD)),-DUKB_SENSOR_BOARD_BASIC)
+UKB_OUT       := $(B)/ukmarsbot$(if $(filter basic,$(UKB_SENSOR_BOARD)),-basic)
+$(UKB_OUT)/mouse.elf: $(UKB_SRC) $(wildcard hal/ukmarsbot/*.h firmware/*.h) hal/hal.h | deps
+	@mkdir -p $(dir $@)
+	$(AVR_CC) $(UKB_FLAGS) -Wl,--gc-sections $(UKB_SRC) -o $@
+$(UKB_OUT)/mouse.hex: $(UKB_OUT)/mouse.elf
+	avr-objcopy -O ihex -R .eeprom $< $@
+firmware-ukmarsbot: $(UKB_OUT)/mouse.elf $(UKB_OUT)/mouse.hex
+	@avr-size $< | awk -v max=$(UKB_FLASH_MAX) 'NR == 2 { f = $$1 + $$2; r = $$2 + $$3; \
+	  printf "ukmarsbot: flash %d B of %d, static RAM %d B of 2048 (%d B left for the stack)\n", f, max, r, 2048 - r; \
+	  if (f > max) { print "ukmarsbot: flash over the limit"; exit 1 } }'
+# the source list, one a line (test/cli_ukmarsbot_fw.sh compares platformio.ini's)
+ukmarsbot-src:
+	@printf '%s\n' $(UKB_SRC)
+.PHONY: firmware-ukmarsbot ukmarsbot-src
 # The wire codec's shared vectors on the ATmega328P, run in simavr by test/cli_hil.sh.
 $(B)/avr/wire_selftest.elf: test/avr_wire.c test/wire_vectors.c hal/wire/wire.c hal/wire/wire.h | deps
 	@mkdir -p $(dir $@)

@@ -2,6 +2,8 @@
  * these functions; a backend implements all of them:
  *   hal/sim      links the firmware into the simulator (host, in-process)
  *   hal/arduino  an Arduino library speaking the wire protocol (HIL)
+ *   hal/ukmarsbot the UKMARSBOT V1.3 board itself (its README: the motor
+ *                command there is a fraction of a reference voltage)
  *
  * A backend also calls the firmware's three entry points (fw_*, below):
  * fw_setup once, fw_tick at HAL_TICK_HZ from a timer interrupt (control:
