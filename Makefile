@@ -64,8 +64,7 @@ help:
 	@echo "make test        install what is missing, build, run every test (one line each; the last: N passed, M failed, K skipped)"
 	@echo "make             build every tool: build/mmsim, build/mmmaze, build/mmlog, build/mmview"
 	@echo "make deps        install the Debian packages that are missing (idempotent)"
-	@echo "make docs        rewrite the figures the docs quote (docs/VALIDATION.md) from the code"
-	@echo "make docs-img    rewrite the README's pictures from the code"
+	@echo "make docs        rewrite the figures and pictures the docs show (docs/VALIDATION.md, docs/img) from the code"
 	@echo "make bench       the speed and memory benchmarks (docs/BENCHMARKS.md)"
 	@echo "make firmware    our mouse for the ATmega328P and the Arduino library's sketches (sizes printed)"
 	@echo "make arduino     the Arduino sketches (hal/arduino) for the Uno, Mega and Nano"
@@ -411,23 +410,25 @@ view: $(B)/mmview
 	@[ -n "$(LOG)" ] || { echo "make view: LOG=FILE is required" >&2; exit 2; }
 	$(B)/mmview $(LOG) --speed $(SPEED)
 
-# make docs-img: the README's three pictures, with the README's commands
-# (after a firmware change they go stale). Without a display: under xvfb-run.
 X_RUN = $(if $(DISPLAY),,xvfb-run -a -s '-screen 0 1024x768x24 -nolisten tcp')
-# The figures the docs quote, written by the programs that make them:
-# docs/VALIDATION.md's --validate tables (tools/docs-validation; test/cli_validate.sh
-# checks them)
+# The figures and pictures the docs show, written by the programs that make
+# them: docs/VALIDATION.md's --validate tables (tools/docs-validation;
+# test/cli_validate.sh checks them) and the README's three pictures with the
+# README's commands (docs-img, into IMG_DIR; without a display under
+# xvfb-run; test/cli_docs_img.sh checks them)
 .PHONY: docs
-docs: $(B)/mmsim
+docs: $(B)/mmsim $(B)/mmview
 	python3 tools/docs-validation --mmsim $(B)/mmsim
+	@$(MAKE) --no-print-directory docs-img
 
+IMG_DIR ?= docs/img
 docs-img: $(B)/mmsim $(B)/mmview
-	@tmp=$$(mktemp -d); trap 'rm -rf "$$tmp"' EXIT; \
-	$(X_RUN) $(B)/mmsim --maze mazes/gen-16x16-s1.txt --driver firmware --screenshot docs/img/viewer.png --at 40 --size 800x600 >/dev/null && \
-	$(B)/mmsim --maze mazes/gen-16x16-s1.txt --driver firmware --report "$$tmp/report.png" >/dev/null && mv "$$tmp/report.png" docs/img/report.png && \
+	@mkdir -p $(IMG_DIR); tmp=$$(mktemp -d); trap 'rm -rf "$$tmp"' EXIT; \
+	$(X_RUN) $(B)/mmsim --maze mazes/gen-16x16-s1.txt --driver firmware --screenshot $(IMG_DIR)/viewer.png --at 40 --size 800x600 >/dev/null && \
+	$(B)/mmsim --maze mazes/gen-16x16-s1.txt --driver firmware --report "$$tmp/report.png" >/dev/null && mv "$$tmp/report.png" $(IMG_DIR)/report.png && \
 	$(B)/mmsim --maze mazes/gen-16x16-s1.txt --driver firmware --lcm-log "$$tmp/run.lcmlog" >/dev/null && \
-	$(X_RUN) $(B)/mmview "$$tmp/run.lcmlog" --screenshot docs/img/mmview.png --at 30 --camera 2 --size 800x600 && \
-	echo "docs/img: viewer.png report.png mmview.png"
+	$(X_RUN) $(B)/mmview "$$tmp/run.lcmlog" --screenshot $(IMG_DIR)/mmview.png --at 30 --camera 2 --size 800x600 && \
+	echo "$(IMG_DIR): viewer.png report.png mmview.png"
 
 # ---- benchmarks ----
 bench: deps
