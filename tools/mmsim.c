@@ -41,6 +41,8 @@ static void usage(FILE *out)
           "             [--centre-post on|off] [--profile default|paper] [--driver firmware|scripted]\n"
           "             [--json] [--realtime] [--verbose] [--report FILE.png]\n"
           "             (--runs: speed runs after the search, default 3; scripted: runs to the goal)\n"
+          "             (--time-limit: the contest clock, from the mouse first leaving the start cell, as laps;\n"
+          "             a run under way at the limit may end up to 60 s later, flagged over time)\n"
           "             [--lcm[=URL]] [--lcm-log FILE] [--lcm-rate HZ]   (LCM telemetry, sim/telemetry/telem.h)\n"
           "             [--gui [--speed 1..64]] [--screenshot FILE.png [--at SECONDS]]\n"
           "             [--camera 1|2|3] [--size WxH]   (viewer)\n"
