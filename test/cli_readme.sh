@@ -21,6 +21,7 @@ SHORT_S=3   # s of contest time for each run: enough to start, not to finish
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 . test/lib.sh
+abs() { case $1 in /*) echo "$1" ;; *) echo "$ROOT/$1" ;; esac; }
 mk() { env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make -C "$ROOT" --no-print-directory B="$B" "$@"; }
 
 # ---- the quick start's length
@@ -54,7 +55,8 @@ for c in cmds: print(c)' >"$T/cmds"
 [ -s "$T/cmds" ] && ok "quick start: $(wc -l <"$T/cmds") commands found" || bad "quick start: no commands found"
 
 mkdir -p "$T/w"
-for d in build mazes robots boards tools test firmware; do ln -s "$ROOT/$d" "$T/w/$d"; done
+ln -s "$(abs "$B")" "$T/w/build"
+for d in mazes robots boards tools test firmware; do ln -s "$ROOT/$d" "$T/w/$d"; done
 ln -s "$(cd "$ROOT" && realpath -m "$SHARED")" "$T/shared"
 missing_outside=
 n=0
@@ -72,10 +74,10 @@ while IFS= read -r cmd; do
   # the tools: the caller's (make test: sanitized) unless under xvfb-run
   if [ $xvfb = 0 ]; then
     case "${argv[0]}" in
-      build/mmsim) argv[0]=${MMSIM:-$ROOT/$B/mmsim} ;;
-      build/mmmaze) argv[0]=${MMMAZE:-$ROOT/$B/mmmaze} ;;
-      build/mmlog) argv[0]=${MMLOG:-$ROOT/$B/mmlog} ;;
-      build/mmview) argv[0]=${MMVIEW:-$ROOT/$B/mmview} ;;
+      build/mmsim) argv[0]=$(abs "${MMSIM:-$B/mmsim}") ;;
+      build/mmmaze) argv[0]=$(abs "${MMMAZE:-$B/mmmaze}") ;;
+      build/mmlog) argv[0]=$(abs "${MMLOG:-$B/mmlog}") ;;
+      build/mmview) argv[0]=$(abs "${MMVIEW:-$B/mmview}") ;;
     esac
   fi
   # a short contest: --time-limit cut to SHORT_S, or added to a contest run
@@ -98,7 +100,7 @@ while IFS= read -r cmd; do
   else
     run=("${argv[@]}")
   fi
-  (cd "$T/w" && "${run[@]}") >"$T/out.$n" 2>"$T/err.$n"; rc=$?
+  (cd "$T/w" && "${run[@]}") </dev/null >"$T/out.$n" 2>"$T/err.$n"; rc=$?
   case "$rc:${argv[0]}:$is_run" in
     0:*) ok "exit 0: $cmd" ;;
     1:*mmsim:1|1:xvfb-run:1) ok "exit 1 (goal not reached in ${SHORT_S} s): $cmd" ;;
