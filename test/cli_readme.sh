@@ -6,7 +6,8 @@
 # and exits as documented (0, or 1 for a run that did not reach the goal),
 # with the contest runs cut short by a short --time-limit; `make test`,
 # `make sim` and GUI-only commands are not run. Every docs/*.md link and
-# every picture in README.md exists.
+# every picture in README.md exists; every link of README, the guides and
+# REFERENCE.md leads to a file and section that exist.
 # The commands run in a scratch folder holding links to the tree's folders
 # (so what they write stays there); `../shared` is $SHARED (the maze
 # database and mazerunner-core's clone). MMSIM, MMMAZE, MMLOG and MMVIEW
@@ -36,6 +37,22 @@ done
 for f in $(grep -o '](docs/[^)#]*' README.md | sed 's/^](//' | sort -u); do
   [ -e "$f" ] || bad "README's link $f: no such file"
 done
+
+# ---- the guides' and REFERENCE's links, with their #anchors, lead somewhere
+python3 - README.md docs/GUIDE-*.md docs/REFERENCE.md >"$T/links" <<'PY'
+import os, re, sys
+def anchors(p):  # GitHub's: lower case, punctuation dropped, spaces to '-'
+    return {re.sub(r"[^\w\- ]", "", l.lstrip("#").strip().lower()).replace(" ", "-")
+            for l in open(p) if l.startswith("#")}
+for f in sys.argv[1:]:
+    for u in re.findall(r"\]\(([^)]+)\)", open(f).read()):
+        if u.startswith(("http:", "https:")): continue
+        path, _, a = u.partition("#")
+        tp = os.path.normpath(os.path.join(os.path.dirname(f), path)) if path else f
+        if not os.path.exists(tp): print(f"{f}: link {u}: no such file")
+        elif a and a not in anchors(tp): print(f"{f}: link {u}: no such section")
+PY
+[ -s "$T/links" ] && bad "links: $(cat "$T/links")" || ok "every link in README, the guides and REFERENCE leads somewhere"
 
 # ---- the quick start's commands
 head -n "$qs_end" README.md | python3 -c '
