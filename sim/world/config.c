@@ -66,7 +66,7 @@ static const keytab_t keys[] = {
      * compiled into the firmware (the contest calls fw_tick every
      * 1/HAL_TICK_HZ s of simulation time). */
     K("sim", sim, step_s, 0.001, 1e-5, 0.01, "s", "1 kHz physics"),
-    W("sim", sim, solver, 1, solvers, "exact: dWorldStep, no creep at rest, drives straight (README); quickstep slid a resting robot 10 mm/min"),
+    W("sim", sim, solver, 1, solvers, "exact: dWorldStep, no creep at rest, drives straight (docs/GUIDE-robot.md); quickstep slid a resting robot 10 mm/min"),
     KW("sim", sim, solver_iterations, 10, 1, 200, "1", "solver = quickstep only: at 5 the wheel hinges give and a straight run crabs 1.4 degrees"),
     K("sim", sim, time_limit_s, 600, 1, 86400, "s", "contest rules: 10 minutes"),
 };
