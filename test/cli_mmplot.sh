@@ -96,6 +96,33 @@ for f in fails: print("  " + f)
 sys.exit(1 if fails else 0)
 EOF
 
+# A robot longer than the firmware thinks (150 mm, not 120) touches the walls
+# in its turns: each contact the run's JSON counts is a CONTACT event in the
+# log and a line in the plot.
+sed 's/^body_l_mm *=.*/body_l_mm = 150/' robots/paper.ini >"$T/long.ini"
+want_rc 1 "a run with wall contacts logged" "$MMSIM" --maze mazes/gen-5x5-s1.txt --robot "$T/long.ini" --time-limit 10 \
+  --json --lcm-log "$T/long.lcmlog"
+cp "$T/out" "$T/long.out"
+"$MMLOG" --dump MM_RACE_EVENT "$T/long.lcmlog" >"$T/long.jsonl"
+want_rc 0 "the contacts run to PNG" "${PLOT[@]}" "$T/long.lcmlog" -o "$T/long.png" --dump-data "$T/long.json"
+want_rc 0 "a window around the first contact" "${PLOT[@]}" "$T/long.lcmlog" -o "$T/longw.png" --from 1.5 --to 1.96 \
+  --dump-data "$T/longw.json"
+"$PY" - "$T" <<'EOF2' && ok "wall contacts: the JSON's count, the log's events, the plot's lines" || bad "wall contacts"
+import json, sys
+T = sys.argv[1]
+run = json.loads(open(T + "/long.out").read().splitlines()[-1])
+ev = [json.loads(l) for l in open(T + "/long.jsonl")]
+c = [e for e in ev if e["kind"] == "contact"]
+doc, win = json.load(open(T + "/long.json")), json.load(open(T + "/longw.json"))
+fails = []
+if not (run["collisions"] > 0 and len(c) == run["collisions"]): fails.append("%d contact events, JSON %d" % (len(c), run["collisions"]))
+if [e["lap"] for e in c] != list(range(1, len(c) + 1)): fails.append("contacts numbered %s" % [e["lap"] for e in c])
+if doc["contacts_t_s"] != [e["utime"] / 1e6 for e in c]: fails.append("plotted contacts %s" % doc["contacts_t_s"])
+if not win["contacts_t_s"] or win["contacts_t_s"] != [e["utime"] / 1e6 for e in c if 1.5 <= e["utime"] / 1e6 <= 1.96]: fails.append("window contacts %s" % win["contacts_t_s"])
+for f in fails: print("  " + f)
+sys.exit(1 if fails else 0)
+EOF2
+
 # Bad input: one line naming mmplot, exit 2.
 ONE_ERROR_LINE=1
 echo "not a log" >"$T/text.lcmlog"
