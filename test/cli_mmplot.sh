@@ -4,8 +4,9 @@
 # --dump): times, speed, motor volts, encoders, a ToF reading, the battery,
 # the laps; a window (--from/--to) keeps exactly the log's samples inside
 # it; the PNG is a PNG of a plausible size and the SVG parses as XML; a
-# board run with --watch (WatchProbe) draws its watched variables and its
-# IR sensors; bad input is one line and exit 2.
+# board run with --watch (BasicSensors) draws its watched variable and its
+# IR sensors; wall contacts are drawn as the run's JSON counts them (a
+# robot too long for its turns); bad input is one line and exit 2.
 set -u
 B=${BUILD:-build}
 SHARED=${SHARED:-../shared}
@@ -66,32 +67,36 @@ for f in fails: print("  " + f)
 sys.exit(1 if fails else 0)
 EOF
 
-# A board run with --watch: the watched variables and the IR sensors are drawn.
-IMG=$B/clients/board/WatchProbe.elf
-want_rc 0 "WatchProbe builds for the Nano" mk "$IMG"
-want_rc 1 "a board run with --watch logged" "$MMSIM" --maze mazes/gen-5x5-s1.txt --board ukmarsbot --robot robots/ukmarsbot.ini \
-  --avr "$IMG" --time-limit 1 --watch ticks,ratio --lcm-log "$T/w.lcmlog"
+# A board run with --watch: BasicSensors (test/arduino/board) reads the IR
+# sensors of the BASIC sensor board; timer0_millis is the Arduino core's
+# millisecond count. The watched variable and the IR sensors are drawn.
+IMG=$B/clients/board/BasicSensors.elf
+want_rc 0 "BasicSensors builds for the Nano" mk "$IMG"
+want_rc 1 "a board run with --watch logged" "$MMSIM" --maze mazes/gen-5x5-s1.txt --board ukmarsbot-basic \
+  --robot robots/ukmarsbot-basic-12.ini --avr "$IMG" --time-limit 1.2 --watch timer0_millis --lcm-log "$T/w.lcmlog"
 "$MMLOG" --dump MM_WATCH "$T/w.lcmlog" >"$T/MM_WATCH.jsonl"; "$MMLOG" --dump MM_PARTS "$T/w.lcmlog" >"$T/wparts.jsonl"
 want_rc 0 "the board run to PNG" "${PLOT[@]}" "$T/w.lcmlog" -o "$T/w.png" --dump-data "$T/w.json"
 want_rc 0 "only its watches, to SVG" "${PLOT[@]}" "$T/w.lcmlog" -o "$T/w.svg" --channels MM_WATCH --dump-data "$T/wonly.json"
-"$PY" - "$T" <<'EOF' && ok "the board run's watches and IR sensors plotted as logged" || bad "board run's watches"
+"$PY" - "$T" <<'EOF' && ok "the board run's watch and IR sensors plotted as logged" || bad "board run's watch and sensors"
 import json, sys
 T = sys.argv[1]
 w = [json.loads(l) for l in open(T + "/MM_WATCH.jsonl")]
 parts = [json.loads(l) for l in open(T + "/wparts.jsonl")]
 doc, only = json.load(open(T + "/w.json")), json.load(open(T + "/wonly.json"))
 fails = []
-for i, name in enumerate(["ticks", "ratio"]):
-    s = doc["series"].get("watch." + name, {})
-    if s.get("panel") != "watch " + name or s.get("t_s") != [m["utime"] / 1e6 for m in w] \
-       or s.get("v") != [m["value"][i] for m in w] or len(w) < 90:
-        fails.append("watch.%s differs from MM_WATCH" % name)
-if sorted(only["series"]) != ["watch.ratio", "watch.ticks"]: fails.append("--channels MM_WATCH: %s" % sorted(only["series"]))
-if max(doc["series"]["watch.ticks"]["v"]) < 50: fails.append("ticks never counted")
-for name in ("lfs", "rfs"):
-    s = doc["series"].get("parts.ir.%s.dark" % name, {})
-    want = [None if p["values"][0] == -1 else p["values"][0] for m in parts for p in m["parts"] if p["name"] == name]
-    if s.get("v") != want: fails.append("parts.ir.%s.dark differs from MM_PARTS" % name)
+s = doc["series"].get("watch.timer0_millis", {})
+if s.get("panel") != "watch timer0_millis" or s.get("t_s") != [m["utime"] / 1e6 for m in w] \
+   or s.get("v") != [m["value"][0] for m in w] or len(w) < 100:
+    fails.append("watch.timer0_millis differs from MM_WATCH")
+elif not 1150 <= max(s["v"]) <= 1200: fails.append("timer0_millis reached %s ms in 1.2 s" % max(s["v"]))
+if sorted(only["series"]) != ["watch.timer0_millis"]: fails.append("--channels MM_WATCH: %s" % sorted(only["series"]))
+for name in ("left", "right", "front"):
+    for i, val in enumerate(("dark", "lit", "lit_minus_dark")):
+        s = doc["series"].get("parts.ir.%s.%s" % (name, val), {})
+        want = [None if p["values"][i] == -1 else p["values"][i] for m in parts for p in m["parts"] if p["name"] == name]
+        if s.get("v") != want or s.get("unit") != "ADC counts": fails.append("parts.ir.%s.%s differs from MM_PARTS" % (name, val))
+    if name != "front" and max(v for v in doc["series"]["parts.ir.%s.lit_minus_dark" % name]["v"] if v is not None) < 100:
+        fails.append("the %s sensor never saw its wall" % name)
 for f in fails: print("  " + f)
 sys.exit(1 if fails else 0)
 EOF
