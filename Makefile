@@ -7,12 +7,14 @@ SHELL := /bin/bash
 # iproute2: `ip` for the udpm test's network namespace; universal-ctags: the
 # function prototypes tools/arduino-build generates for a sketch's tabs;
 # gdb: avr-gdb (gdb-avr) reads its Python scripts from gdb's data directory
-# (/usr/share/gdb), without which it prints a Python error at every stop.
+# (/usr/share/gdb), without which it prints a Python error at every stop;
+# python3-matplotlib: tools/mmplot draws a run's log against time.
 DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev libinih-dev \
 	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev libdw-dev \
 	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev \
 	liblcm-java default-jdk-headless default-jre libjchart2d-java xvfb iproute2 \
-	libpng-dev libglfw3-dev libgl-dev python3-venv libx11-dev libxtst-dev gdb-avr gdb universal-ctags
+	libpng-dev libglfw3-dev libgl-dev python3-venv libx11-dev libxtst-dev gdb-avr gdb universal-ctags \
+	python3-matplotlib
 
 CC      ?= gcc
 STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
