@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# run.sh: alone (timed: real-time runs, timed input or timeouts)
 # cli_view_board.sh - the HUD's board panel, under an Xvfb the
 # test starts. A sketch of ours (test/arduino/board/HudPanel.ino: a banner,
 # the builtin LED lit, `SW n` each time A6 decodes to another setting) on
