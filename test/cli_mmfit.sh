@@ -134,7 +134,12 @@ ONE_ERROR_LINE=0
 # start with the datasheet's motor (1950 rpm, 0.08 A, the same gearbox efficiency), 32 mm
 # wheels, 100 g and 500-count gains
 { sed -n '/^\[measured.orion\]/,/^\[ir/p' $B | grep -v '^\[ir'; echo 'bias_ff_v = 0.340'; } >"$T/orion.ini"
-printf 'sensor,distance_mm,angle_deg,counts\nlfs,93.2,0,90\nrfs,93.2,0,110\nlds,87.7,45,152\nrds,87.7,45,192\n' >"$T/orion_ir.csv"
+# the poses of the calibration readings: backed against the rear wall the axle is 132 mm from the
+# wall ahead (36 mm from the rear wall's face, ORION l.203), the forward pair the robot file's
+# y_mm - axle_y_mm ahead of it; centred, a diagonal sensor at x = 22 mm and 45 deg is
+# (84 - 22) / cos 45 = 87.7 mm from the side wall along its axis
+FD=$(awk -v y="$(key $B ir.lfs y_mm)" -v a="$(key $B chassis.body axle_y_mm)" 'BEGIN { printf "%.1f", 132 - (y - a) }')
+printf 'sensor,distance_mm,angle_deg,counts\nlfs,%s,0,90\nrfs,%s,0,110\nlds,87.7,45,152\nrds,87.7,45,192\n' $FD $FD >"$T/orion_ir.csv"
 sed -e 's/^no_load_rpm = .*/no_load_rpm = 1950/' -e 's/^no_load_a = .*/no_load_a = 0.08/' -e 's/^stall_torque_nm = .*/stall_torque_nm = 0.01430/' \
   -e 's/^body_mass_g = .*/body_mass_g = 100/' -e 's/^body_yaw_inertia_kgm2 = .*/body_yaw_inertia_kgm2 = 1.5e-4/' \
   -e 's/^wheel_\(left\|right\)_d_mm = .*/wheel_\1_d_mm = 32/' -e 's/^gain_counts = .*/gain_counts = 500/' $B >"$T/start.ini"
@@ -147,5 +152,19 @@ for k in chassis.body:wheel_left_d_mm chassis.body:wheel_right_d_mm ir.lfs:gain_
          motor.left:stall_torque_nm motor.right:stall_torque_nm; do
   near "$T/orion_fit.ini" "${k%%:*}" "${k#*:}" "$(key $B "${k%%:*}" "${k#*:}")" 2 ORION
 done
+
+# one time constant: mmfit's step fit on a --bench-log step and --validate's forward_tm (its own
+# C code, the same least squares on distance: sim/validate/bench.h) agree within 1 % on ORION
+"$S" --bench-log fwd:3 --robot $B >"$T/orion_fwd3.csv" && "$S" --validate --json --robot $B >"$T/orion_val.json"
+python3 - "$T/orion_fwd3.csv" "$T/orion_val.json" <<'PY' >"$T/tm" && ok "one time constant: $(cat "$T/tm")" || bad "one time constant: $(cat "$T/tm")"
+import csv, json, sys, importlib.machinery, importlib.util
+ld = importlib.machinery.SourceFileLoader("mmfit", "tools/mmfit")
+m = importlib.util.module_from_spec(importlib.util.spec_from_loader("mmfit", ld)); ld.exec_module(m)
+rows = list(csv.DictReader(open(sys.argv[1])))
+_, tau = m.step_figures([float(r["t_s"]) for r in rows], [(int(r["left_counts"]) + int(r["right_counts"])) / 2 for r in rows])
+val = {c["name"]: c for c in json.loads(open(sys.argv[2]).read())["checks"]}["forward_tm"]["measured"]
+print("mmfit %.4f s, --validate %.4f s" % (tau, val))
+sys.exit(0 if abs(val / tau - 1) < 0.01 else 1)
+PY
 
 [ $fails -eq 0 ] && echo "cli_mmfit: all passed" || { echo "cli_mmfit: $fails failed"; exit 1; }

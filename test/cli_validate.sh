@@ -54,7 +54,8 @@ FITTED_MOTOR="no_load_speed no_load_current stall_torque stall_current encoder_c
 want_rc $([ -n "$FAIL_paper" ] && echo 1 || echo 0) "paper: exit code from its failing predictions" "$S" --validate --json
 cp "$T/out" "$T/paper.json"
 check "$T/paper.json" paper "$FITTED_MOTOR step_response_1ms step_response_5ms first_step_current rest_creep_mm_per_min
-  straight_veer_mm_4m tof_noise_cv tof_timeout_beyond_range wall_no_tunnelling max_efficiency_speed max_efficiency_current
+  straight_veer_mm_4m tof_noise_cv tof_timeout_beyond_range tof_sigma_66ms tof_sigma_high_speed tof_sigma_high_accuracy
+  wall_no_tunnelling max_efficiency_speed max_efficiency_current
   max_efficiency mid_torque_current max_power $FAIL_paper" "$FAIL_paper" &&
   ok "paper: kinds, sources, fitted never graded, failing exactly: ${FAIL_paper:-none}" || bad "paper: $(head -c 400 "$T/paper.json")"
 python3 - "$T/paper.json" <<'PY' && ok "paper: the motor's figures are fitted, its step responses and physics predicted" || bad "paper kinds"
@@ -64,7 +65,8 @@ for n in ("no_load_speed", "no_load_current", "stall_torque", "stall_current", "
           "max_power"):
     assert c[n] == "fitted", n
 for n in ("step_response_1ms", "first_step_current", "rest_creep_mm_per_min", "straight_veer_mm_4m", "wall_no_tunnelling",
-          "max_efficiency_speed", "max_efficiency_current", "max_efficiency", "mid_torque_current"):
+          "max_efficiency_speed", "max_efficiency_current", "max_efficiency", "mid_torque_current", "tof_sigma_66ms",
+          "tof_sigma_high_speed", "tof_sigma_high_accuracy"):
     assert c[n] == "predicted", n
 PY
 

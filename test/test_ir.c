@@ -1,7 +1,8 @@
-/* test_ir.c - the IR reflectance sensor model against analytic values:
- * 1/d^2 in the far field and saturation in the near field, cos(angle) of
- * the wall, ambient and noise with the emitter off, the ADC's rails,
- * seeded streams, and a beam grazing a wall end. */
+/* test_ir.c - the IR reflectance sensor model: the rays cast in the world
+ * against the ideal plane, rho/d^2 in the far field, the near-field peak
+ * and fall-off of the offset detector, the angle of a matt and a glossy
+ * wall, ambient and noise with the emitter off, the ADC's rails, seeded
+ * streams, and a beam grazing a wall end. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -71,9 +72,9 @@ static void test_ray_normal(void **state)
     world_destroy(w);
 }
 
-/* (1) Straight on at the east wall: rho/d^2 in the far field (the beam's
- * cone fits on the wall up to 0.2 m at half the wall's height), counts =
- * ambient + gain (ref/d)^2 rho; flat below the near-field distance. */
+/* (1) Straight on at the east wall: the rays cast in the world give the
+ * model's ideal plane (ir_received_plane), the far field tends to rho/d^2,
+ * counts = ambient + gain ref^2 x received. */
 static void test_distance(void **state)
 {
     (void)state;
@@ -81,39 +82,69 @@ static void test_distance(void **state)
     ir_t ir = quiet();
     const ir_spec_t *s = ir.spec;
     double y = 1.5 * cfg.world.cell_m, z = cfg.world.wall_height_m / 2;
-    for (double d = 0.02; d <= 0.2001; d += 0.01) {
+    for (double d = 0.01; d <= 0.2001; d += 0.01) {
         double p[3] = { east_face() - d, y, z };
-        double r = ir_received(&ir, w, p, 0), want = ir.reflectivity / (d * d);
-        assert_true(fabs(r / want - 1) < 0.02);
+        double r = ir_received(&ir, w, p, 0), want = ir_received_plane(&ir, d, 0, ir.reflectivity, 0);
+        assert_true(fabs(r - want) <= 0.01 * want + 1e-9);
+        if (d >= 0.15) assert_true(fabs(r / (ir.reflectivity / (d * d)) - 1) < 0.03);
         double counts = ir_read(&ir, w, p, 0, 1) - s->ambient_counts;
-        double want_counts = s->gain_counts * ir.reflectivity * (s->ref_m / d) * (s->ref_m / d);
+        double want_counts = s->gain_counts * s->ref_m * s->ref_m * want;
         if (want_counts + s->ambient_counts < ir_full_scale(&ir)) /* else the ADC's rail: test_rails */
             assert_true(fabs(counts - want_counts) < 0.02 * want_counts + 0.5);
     }
-    /* near field: every ray closer than near_m gives the same */
-    double p1[3] = { east_face() - 0.005, y, z }, p2[3] = { east_face() - 0.010, y, z };
-    double p3[3] = { east_face() - 0.030, y, z };
-    double r1 = ir_received(&ir, w, p1, 0), r2 = ir_received(&ir, w, p2, 0);
-    assert_true(fabs(r1 / r2 - 1) < 1e-9);
-    assert_true(fabs(r1 / (ir.reflectivity / (s->near_m * s->near_m)) - 1) < 0.02);
-    assert_true(r1 > ir_received(&ir, w, p3, 0));
     world_destroy(w);
 }
 
+/* (1b) Near field: with the detector offset from the emitter the reading
+ * rises as the wall comes closer, peaks, and falls as the lit spot leaves
+ * the detector's cone; with no offset it keeps rising to the guard. */
+static void test_near_field(void **state)
+{
+    (void)state;
+    ir_t ir = quiet();
+    double rho = ir.reflectivity, peak = 0, peak_d = 0;
+    for (double d = 0.002; d <= 0.1; d += 0.001) {
+        double r = ir_received_plane(&ir, d, 0, rho, 0);
+        if (r > peak) peak = r, peak_d = d;
+    }
+    assert_true(peak_d > 0.010 && peak_d < 0.040); /* -5.6 mm, 12 deg: ~22 mm */
+    assert_true(ir_received_plane(&ir, 0.005, 0, rho, 0) < 0.1 * peak);
+    assert_true(ir_received_plane(&ir, 0.1, 0, rho, 0) < 0.2 * peak);
+    static ir_spec_t s0;
+    ir_spec_default(&s0);
+    s0.det_offset_m = 0;
+    ir_t ir0;
+    ir_init(&ir0, &s0, rho, 1, 0);
+    double prev = 0;
+    for (double d = 0.1; d >= s0.near_m; d -= 0.001) {
+        double r = ir_received_plane(&ir0, d, 0, rho, 0);
+        assert_true(r > prev);
+        prev = r;
+    }
+}
+
 /* (2) The beam turned by a off the wall's normal, its centre ray hitting
- * the wall at the same distance: the reading goes as cos(a). */
+ * the wall at the same distance: a matt wall's reading goes about as
+ * cos(a) (the detector beside the emitter shifts it a little); a glossy
+ * one reads more straight on and falls much faster with the angle (the
+ * mirror lobe leaves the detector at twice the tilt). */
 static void test_angle(void **state)
 {
     (void)state;
     world_t *w = arena(0);
-    ir_t ir = quiet();
-    double y = 1.5 * cfg.world.cell_m, z = cfg.world.wall_height_m / 2, dist = 0.1, r0 = 0;
+    ir_t ir = quiet(), gl = quiet();
+    ir_set_finish(&gl, 0.04, 50);
+    double y = 1.5 * cfg.world.cell_m, z = cfg.world.wall_height_m / 2, dist = 0.1, r0 = 0, g0 = 0;
     for (int deg = 0; deg <= 60; deg += 10) {
         double a = deg * M_PI / 180;
         double p[3] = { east_face() - dist * cos(a), y - dist * sin(a), z };
-        double r = ir_received(&ir, w, p, a);
-        if (deg == 0) r0 = r;
-        assert_true(fabs(r / r0 - cos(a)) < 0.02 * cos(a));
+        double r = ir_received(&ir, w, p, a), g = ir_received(&gl, w, p, a);
+        if (deg == 0) r0 = r, g0 = g;
+        assert_true(fabs(r / r0 - cos(a)) < 0.03 * cos(a));
+        assert_true(fabs(g - ir_received_plane(&gl, dist, a, gl.reflectivity, 0.04)) < 0.01 * g);
+        if (deg == 0) assert_true(g > 1.5 * r);                  /* the lobe's share straight on */
+        if (deg == 10) assert_true(g / g0 < 0.7 * (r / r0));     /* gone at 10 deg */
+        if (deg >= 20) assert_true(fabs(g / r - 1) < 0.02);      /* matt beyond */
     }
     world_destroy(w);
 }
@@ -217,7 +248,7 @@ static void test_graze(void **state)
     double full = ir_received(&ir, w, full_p, 0);
     double edge = ir_received(&ir, w, edge_p, 0);
     double past = ir_received(&ir, w, past_p, 0);
-    assert_true(fabs(full / (ir.reflectivity / (d * d)) - 1) < 0.02);
+    assert_true(fabs(full / ir_received_plane(&ir, d, 0, ir.reflectivity, 0) - 1) < 0.02);
     assert_true(edge > 0.25 * full && edge < 0.6 * full);
     assert_true(past < 0.1 * full);
     world_destroy(w);
@@ -228,6 +259,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ray_normal),
         cmocka_unit_test(test_distance),
+        cmocka_unit_test(test_near_field),
         cmocka_unit_test(test_angle),
         cmocka_unit_test(test_dark),
         cmocka_unit_test(test_rails),

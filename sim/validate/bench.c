@@ -1,10 +1,12 @@
 /* bench.c - the validation benches (bench.h): an open field or a
- * corridor of cells, step counts, and the table a check is added to. */
+ * corridor of cells, step counts, the voltage step and its first-order
+ * fit, and the table a check is added to. */
 #include "validate/bench.h"
 
 #include <math.h>
 
 #include "world/robot.h"
+#include "world/world.h"
 #include "world/sensors/ir.h"
 
 bench_t bench; /* one at a time; maze_t and sim_state_t are large */
@@ -39,6 +41,77 @@ int bench_init(const simcfg_t *c)
 }
 
 long bench_steps(const simcfg_t *c, double seconds) { return lround(seconds / c->sim.step_s); }
+
+int bench_volt_cmd(const sim_state_t *s, double v_volt)
+{
+    double b = sim_battery_v(s);
+    long cmd = b > 0 ? lround(v_volt / b * MOTOR_CMD_MAX) : 0;
+    return (int)(cmd > MOTOR_CMD_MAX ? MOTOR_CMD_MAX : cmd < -MOTOR_CMD_MAX ? -MOTOR_CMD_MAX : cmd);
+}
+
+/* The squared residual of the fit with time constant tau; *vss its best
+ * steady speed. */
+static double step_residual(const double *t, const double *x, long n, double tau, double *vss)
+{
+    double gg = 0, gx = 0, xx = 0;
+    for (long i = 0; i < n; i++) {
+        double g = t[i] - tau * (1 - exp(-t[i] / tau));
+        gg += g * g, gx += g * x[i], xx += x[i] * x[i];
+    }
+    *vss = gg > 0 ? gx / gg : 0;
+    return xx - 2 * *vss * gx + *vss * *vss * gg;
+}
+
+bench_step_t bench_step_fit(const double *t_s, const double *x, long n)
+{
+    bench_step_t r = { 0, 0 };
+    if (n < 2) return r;
+    const double gr = (sqrt(5) - 1) / 2;
+    double lo = 1e-3, hi = t_s[n - 1] > 2e-3 ? t_s[n - 1] : 2e-3, v;
+    double a = hi - gr * (hi - lo), b = lo + gr * (hi - lo);
+    double fa = step_residual(t_s, x, n, a, &v), fb = step_residual(t_s, x, n, b, &v);
+    for (int k = 0; k < 60; k++) {
+        if (fa < fb) {
+            hi = b, b = a, fb = fa;
+            a = hi - gr * (hi - lo);
+            fa = step_residual(t_s, x, n, a, &v);
+        } else {
+            lo = a, a = b, fa = fb;
+            b = lo + gr * (hi - lo);
+            fb = step_residual(t_s, x, n, b, &v);
+        }
+    }
+    r.tm_s = 0.5 * (lo + hi);
+    step_residual(t_s, x, n, r.tm_s, &r.steady);
+    return r;
+}
+
+#define STEP_S 1.2       /* s: motorlab's step length */
+#define STEP_MAX 48000   /* samples: 1.2 s at 25 us */
+
+bench_step_t bench_voltage_step(const simcfg_t *c, double v_volt, int rot)
+{
+    static double t[STEP_MAX], x[STEP_MAX];
+    bench_step_t r = { 0, 0 };
+    bench_field(&bench.maze, 10, 10, 4);
+    sim_state_t *s = &bench.sim;
+    if (bench_init(c) != 0) return r;
+    if (rot) world_place(s->world, 4.5 * c->world.cell_m, 4.5 * c->world.cell_m, M_PI / 2, NULL); /* the field's middle */
+    long n = bench_steps(c, STEP_S);
+    if (n > STEP_MAX) n = STEP_MAX;
+    double dist = 0;
+    for (long i = 0; i < n; i++) {
+        s->cmd[WORLD_LEFT] = bench_volt_cmd(s, rot ? -v_volt : v_volt);
+        s->cmd[WORLD_RIGHT] = bench_volt_cmd(s, v_volt);
+        sim_step(s->model, s);
+        double vl = world_wheel_rate(s->world, WORLD_LEFT) * c->robot.wheel_left_d_m / 2;
+        double vr = world_wheel_rate(s->world, WORLD_RIGHT) * c->robot.wheel_right_d_m / 2;
+        dist += (rot ? (vr - vl) / (2 * c->robot.wheel_x_m) : (vr + vl) / 2) * c->sim.step_s;
+        t[i] = (i + 1) * c->sim.step_s, x[i] = dist;
+    }
+    sim_free(s);
+    return bench_step_fit(t, x, n);
+}
 
 void bench_add(validate_check_t *v, int *n, const char *name, double expected, double measured, const char *unit,
                 double tol_pct, int bound, const char *source)

@@ -25,6 +25,24 @@ void bench_corridor(maze_t *m, uint8_t n);
 int bench_init(const simcfg_t *c);
 /* Physics steps in `seconds`. */
 long bench_steps(const simcfg_t *c, double seconds);
+/* The motor command for v_volt with the battery as it is now. */
+int bench_volt_cmd(const sim_state_t *s, double v_volt);
+/* A first-order step response fitted to a distance log by least squares:
+ * x(t) = vss (t - tau (1 - e^(-t/tau))), vss linear given tau, tau by
+ * golden-section search over [1 ms, the log's length]. The same fit as
+ * tools/mmfit's step_figures (on the distance: robust to count
+ * quantisation), so a figure mmfit fits is the figure --validate reads. */
+typedef struct {
+    double steady, tm_s; /* steady speed (units of x per s) and the time constant (s) */
+} bench_step_t;
+bench_step_t bench_step_fit(const double *t_s, const double *x, long n);
+/* From rest in an open field, v_volt on both motors (rot: -v left, +v
+ * right, a spin counter-clockwise) for 1.2 s, as ukmars' motorlab steps a
+ * motor, at c's step: the steady speed (m/s, or rad/s turning over the
+ * track) and time constant, fitted to the distance (or angle) the encoders
+ * measure, as the robot measures it (wheel turns x its calibrated wheel
+ * radius; turning over its track, mazerunner-core's MOUSE_RADIUS). */
+bench_step_t bench_voltage_step(const simcfg_t *c, double v_volt, int rot);
 /* Append a predicted check to v (at *n): graded as its bound says
  * (validate.h); source names the data the model was not built from. */
 /* IR sensor i's (the robot file's i-th [ir.*]) mean lit-minus-dark reading

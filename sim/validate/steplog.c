@@ -14,14 +14,6 @@
 #define OFF_MAZE_M 4.0   /* m west of the maze: more than a 12 V step covers in 1.2 s (~3 m) */
 #define ROW_EVERY_S 1e-3 /* s: one row a millisecond, a firmware's control tick */
 
-/* The command for v_volt on the motor with the battery as it is now. */
-static int volt_cmd(const sim_state_t *s, double v_volt)
-{
-    double b = sim_battery_v(s);
-    long cmd = b > 0 ? lround(v_volt / b * MOTOR_CMD_MAX) : 0;
-    return (int)(cmd > MOTOR_CMD_MAX ? MOTOR_CMD_MAX : cmd < -MOTOR_CMD_MAX ? -MOTOR_CMD_MAX : cmd);
-}
-
 /* On a converged integration, as --validate measures the robot's figures
  * (validate_robot.c: FINE_STEP_S). */
 #define FINE_STEP_S 0.0002
@@ -44,8 +36,8 @@ static int step_log(const simcfg_t *run, double v_volt, int rot, FILE *out)
     int32_t e0[2] = { s->encoder[0].count, s->encoder[1].count };
     fprintf(out, "t_s,volts,left_counts,right_counts\n0,%g,0,0\n", v_volt);
     for (long i = 1; i <= n; i++) {
-        s->cmd[WORLD_LEFT] = volt_cmd(s, rot ? -v_volt : v_volt);
-        s->cmd[WORLD_RIGHT] = volt_cmd(s, v_volt);
+        s->cmd[WORLD_LEFT] = bench_volt_cmd(s, rot ? -v_volt : v_volt);
+        s->cmd[WORLD_RIGHT] = bench_volt_cmd(s, v_volt);
         sim_step(s->model, s);
         if (i % every == 0)
             fprintf(out, "%.4f,%g,%ld,%ld\n", i * c->sim.step_s, v_volt, (long)(s->encoder[0].count - e0[0]),

@@ -25,53 +25,6 @@ static const char *name_of(int n, const char *fmt, const char *sensor)
     return names[n];
 }
 
-/* The command for v_volt on the motor with the battery as it is now. */
-static int volt_cmd(const sim_state_t *s, double v_volt)
-{
-    double b = sim_battery_v(s);
-    long cmd = b > 0 ? lround(v_volt / b * MOTOR_CMD_MAX) : 0;
-    return (int)(cmd > MOTOR_CMD_MAX ? MOTOR_CMD_MAX : cmd < -MOTOR_CMD_MAX ? -MOTOR_CMD_MAX : cmd);
-}
-
-typedef struct {
-    double steady, tm_s; /* steady speed (m/s or rad/s) and the time to 63.2 % of it */
-} step_t;
-
-/* From rest in an open field, v_volt on both motors (rot: -v left, +v
- * right, a spin counter-clockwise) for 1.2 s, as ukmars' motorlab steps a
- * motor: the steady speed (mean of the last 0.2 s) and the time constant,
- * measured by the encoders as the robot does. */
-static step_t voltage_step(const simcfg_t *c, double v_volt, int rot)
-{
-    step_t r = { 0, 0 };
-    bench_field(&bench.maze, 10, 10, 4);
-    sim_state_t *s = &bench.sim;
-    if (bench_init(c) != 0) return r;
-    if (rot) world_place(s->world, 4.5 * c->world.cell_m, 4.5 * c->world.cell_m, M_PI / 2, NULL); /* the field's middle */
-    long n = bench_steps(c, 1.2), tail = bench_steps(c, 0.2);
-    static double trace[20000];
-    if (n > 20000) n = 20000;
-    for (long i = 0; i < n; i++) {
-        s->cmd[WORLD_LEFT] = volt_cmd(s, rot ? -v_volt : v_volt);
-        s->cmd[WORLD_RIGHT] = volt_cmd(s, v_volt);
-        sim_step(s->model, s);
-        /* as the robot measures it: by its encoders (wheel turns x its calibrated wheel
-         * radius), turning rate over its track (mazerunner-core: MOUSE_RADIUS) */
-        double vl = world_wheel_rate(s->world, WORLD_LEFT) * c->robot.wheel_left_d_m / 2;
-        double vr = world_wheel_rate(s->world, WORLD_RIGHT) * c->robot.wheel_right_d_m / 2;
-        trace[i] = rot ? (vr - vl) / (2 * c->robot.wheel_x_m) : (vr + vl) / 2;
-    }
-    for (long i = n - tail; i < n; i++) r.steady += trace[i] / tail;
-    for (long i = 0; i < n; i++)
-        if (trace[i] >= 0.632 * r.steady) {
-            double prev = i ? trace[i - 1] : 0, f = (0.632 * r.steady - prev) / (trace[i] - prev);
-            r.tm_s = (i + f) * c->sim.step_s; /* trace[i] is after step i + 1 */
-            break;
-        }
-    sim_free(s);
-    return r;
-}
-
 /* A finer step than the contest's, for one figure reported beside the
  * graded one (how far the contest's step moves it). */
 #define FINE_STEP_S 0.0002
@@ -84,11 +37,11 @@ static const double FWD_V1 = 1.5, FWD_V2 = 3.0, ROT_V1 = 1.0, ROT_V2 = 2.0; /* V
 
 /* The forward (rot 0, mm/s/V) or spin (rot 1, deg/s/V) slope with config
  * c, and the step at the higher voltage. */
-static double km_slope(const simcfg_t *c, int rot, step_t *high)
+static double km_slope(const simcfg_t *c, int rot, bench_step_t *high)
 {
     double v1 = rot ? ROT_V1 : FWD_V1, v2 = rot ? ROT_V2 : FWD_V2;
-    step_t a = voltage_step(c, v1, rot);
-    *high = voltage_step(c, v2, rot);
+    bench_step_t a = bench_voltage_step(c, v1, rot);
+    *high = bench_voltage_step(c, v2, rot);
     return (high->steady - a.steady) / (v2 - v1) * (rot ? DEG_PER_RAD : 1000);
 }
 
@@ -106,7 +59,7 @@ static int motion_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
     const robot_measured_t *m = &c->robot.measured;
     double fkm = 0, rkm = 0;
-    step_t hi;
+    bench_step_t hi;
     if (m->fwd_km_mm_s_v > 0 || m->fwd_tm_s > 0) {
         fkm = km_slope(c, 0, &hi);
         if (m->fwd_km_mm_s_v > 0)
@@ -154,8 +107,8 @@ static void counts_500mm(const simcfg_t *c, double counts[2])
         world_pose(s->world, &x, &y, &h);
         if (hypot(x - x0, y - y0) >= 0.5) break;
         double err = remainder(h - h0, 2 * M_PI), base = 0.6, k = 20.0; /* V, V/rad */
-        s->cmd[WORLD_LEFT] = volt_cmd(s, base + k * err);
-        s->cmd[WORLD_RIGHT] = volt_cmd(s, base - k * err);
+        s->cmd[WORLD_LEFT] = bench_volt_cmd(s, base + k * err);
+        s->cmd[WORLD_RIGHT] = bench_volt_cmd(s, base - k * err);
         sim_step(s->model, s);
     }
     world_pose(s->world, &x, &y, &h);
@@ -212,9 +165,9 @@ static int ir_calibration(const simcfg_t *c, validate_check_t *v, int n)
 }
 
 /* The first IR sensor facing a wall straight on at d_m (the robot turned so
- * the sensor's axis is normal to the end wall of a corridor): the model's
- * far field is gain * reflectivity * (ref / d)^2 (ir.h), the dark reading
- * the ambient level. */
+ * the sensor's axis is normal to the end wall of a corridor): the rays cast
+ * in the world give what the model gives for an ideal plane
+ * (ir_received_plane), the dark reading the ambient level. */
 static int ir_model_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
     int k = robot_part_of_kind(c, "ir", 0);
@@ -229,10 +182,11 @@ static int ir_model_checks(const simcfg_t *c, validate_check_t *v, int n)
     double h = -p->yaw_deg * M_PI / 180, ch = cos(h - M_PI / 2), sh = sin(h - M_PI / 2);
     double sx = ch * p->x_m - sh * p->y_m, sy = sh * p->x_m + ch * p->y_m; /* the sensor from the body centre */
     world_place(s->world, face - d - sx, 0.5 * c->world.cell_m - sy, h, NULL);
-    double want = m->gain_counts * c->world.wall_reflectivity * (m->ref_m / d) * (m->ref_m / d);
+    const ir_t *ir = &((const ir_state_t *)s->part_state[k])->ir;
+    double want = m->gain_counts * m->ref_m * m->ref_m * ir_received_plane(ir, d, 0, ir->reflectivity, ir->gloss);
     bench_fit(v, &n, "ir_far_field_120mm", want, bench_lit_minus_dark(s, 0), "counts",
-              "IR model: gain * reflectivity * (ref/d)^2 for a wall straight on in the far field (ir.h): the model's own "
-              "formula from the robot file's gain, no outside data");
+              "IR model: the rays cast in the world against the model's ideal plane straight on (ir.h): the model's own "
+              "formula from the robot file's keys, no outside data");
     double dark = 0;
     unsigned g = (unsigned)((const ir_part_spec_t *)p->spec)->emitter;
     sim_emitter_set(s, g, 0);
@@ -275,11 +229,78 @@ static int gyro_checks(const simcfg_t *c, validate_check_t *v, int n)
     return n;
 }
 
+static int ir_front_sum_checks(const simcfg_t *c, validate_check_t *v, int n);
+
 int validate_robot_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
     n = motion_checks(c, v, n); /* at c's own step, the contest's */
     n = count_checks(c, v, n);
     n = ir_calibration(c, v, n);
     n = ir_model_checks(c, v, n);
-    return gyro_checks(c, v, n);
+    n = gyro_checks(c, v, n);
+    return ir_front_sum_checks(c, v, n);
+}
+
+/* The forward pair's normalised sum (mazerunner-core's get_front_sum: each
+ * sensor's lit minus dark x 100 / its measured_backed) with the robot
+ * heading east along row `row` of bench.maze (four cells long), its axle
+ * axle_to_wall_m from the east wall's face. */
+static double front_sum_at(const simcfg_t *c, double axle_to_wall_m, unsigned row)
+{
+    sim_state_t *s = &bench.sim;
+    double face = 4 * c->world.cell_m - c->world.wall_thick_m / 2, sum = 0;
+    world_place(s->world, face - axle_to_wall_m - c->robot.axle_y_m, (row + 0.5) * c->world.cell_m, 0, NULL);
+    for (unsigned i = 0; i < robot_count(c, "ir"); i++) {
+        const ir_part_spec_t *sp = (const ir_part_spec_t *)c->robot.part[robot_part_of_kind(c, "ir", i)].spec;
+        if (sp->measured_backed > 0 && sp->measured_facing_sum > 0) sum += 100 * bench_lit_minus_dark(s, i) / sp->measured_backed;
+    }
+    return sum;
+}
+
+/* The forward pair against the published front sums of mazerunner-core's
+ * config-robot-*.h (the robot file's measured_facing_sum,
+ * measured_turn_sum and measured_turn_wall_adjust on the pair), all
+ * predicted: the fit used only the backed-up and centred readings (at
+ * 132 mm and of the side walls), never a front sum:
+ * - facing: FRONT_REFERENCE, centred in a cell facing its wall, the axle
+ *   half a cell less half a wall from it (84 mm), side walls there: the
+ *   near field, set by the detector's offset from the emitter;
+ * - turn in a corridor: TURN_THRESHOLD_SS90E, "set for when the robot is
+ *   20mm past the cell boundary" (the wall ahead a cell less half a wall
+ *   less 20 mm from the axle: 154 mm; ORION l.73-76), plus
+ *   EXTRA_WALL_ADJUST for each of the two side walls, as mouse.h's
+ *   turn_smooth raises its trigger when it sees them: the far field as
+ *   the firmware meets it between walls;
+ * - turn in the open: the threshold alone, no side walls. Reported, not
+ *   graded: the model's front sensors see nothing of a side wall (their
+ *   emitters' +-6 deg cone stays off it), where the real pair gains
+ *   EXTRA_WALL_ADJUST a wall, so the open pose reads what the corridor
+ *   does (sim/world/sensors/README.md). */
+static int ir_front_sum_checks(const simcfg_t *c, validate_check_t *v, int n)
+{
+    const ir_part_spec_t *pair = NULL;
+    for (unsigned i = 0; i < robot_count(c, "ir"); i++) {
+        const ir_part_spec_t *sp = (const ir_part_spec_t *)c->robot.part[robot_part_of_kind(c, "ir", i)].spec;
+        if (sp->measured_backed > 0 && sp->measured_facing_sum > 0) pair = sp;
+    }
+    if (pair == NULL) return n;
+    double cell = c->world.cell_m, wall = c->world.wall_thick_m, turn_m = cell - wall / 2 - 0.020;
+    bench_corridor(&bench.maze, 4);
+    if (bench_init(c) != 0) return n;
+    bench_add(v, &n, "ir_front_sum_facing", pair->measured_facing_sum, front_sum_at(c, cell / 2 - wall / 2, 0), "1", 10,
+              VALIDATE_NEAR, "the robot file's measured_facing_sum (FRONT_REFERENCE), centred facing a wall: not used by the fit");
+    if (pair->measured_turn_sum > 0)
+        bench_add(v, &n, "ir_front_sum_turn_walls", pair->measured_turn_sum + 2 * pair->measured_turn_wall_adjust,
+                  front_sum_at(c, turn_m, 0), "1", 10, VALIDATE_NEAR,
+                  "the robot file's measured_turn_sum + 2 x measured_turn_wall_adjust (TURN_THRESHOLD_SS90E + 2 x EXTRA_WALL_ADJUST, "
+                  "the trigger between two side walls), wall 154 mm from the axle: not used by the fit");
+    sim_free(&bench.sim);
+    if (pair->measured_turn_sum <= 0) return n;
+    bench_field(&bench.maze, 4, 3, 0);
+    if (bench_init(c) != 0) return n;
+    bench_add(v, &n, "ir_front_sum_turn_open", pair->measured_turn_sum, front_sum_at(c, turn_m, 1), "1", 10, VALIDATE_REPORT,
+              "the robot file's measured_turn_sum (TURN_THRESHOLD_SS90E), no side walls: not used by the fit; reported, not graded: "
+              "the model's front pair sees nothing of a side wall (sim/world/sensors/README.md)");
+    sim_free(&bench.sim);
+    return n;
 }

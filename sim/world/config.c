@@ -42,6 +42,8 @@ static const keytab_t keys[] = {
     K("world", world, caster_kp_n_m, 1.2e4, 1e3, 1e8, "N/m", "ours: as tyre_kp_n_m: the robot rests on its tyres and skids at once, and a stiffer skid would take the tyres' load"),
     K("world", world, caster_kd_n_s_m, 10, 0, 1e5, "N*s/m", "ours: as tyre_kd_n_s_m"),
     K("world", world, wall_reflectivity, 0.85, 0, 1, "1", "ours: matt white wall faces (IR sensors; their gains in the robot file are for reflectivity 1)"),
+    K("world", world, wall_gloss, 0, 0, 1, "1", "ours: matt (ORION fits matt walls); gloss paint: 0.04, Fresnel (n-1)^2/(n+1)^2, n = 1.5 (IR sensors)"),
+    K("world", world, wall_gloss_exp, 100, 1, 10000, "1", "ours: satin paint's lobe, half power 6.7 deg off the mirror (IR sensors; sim/world/sensors/README.md)"),
     /* the u16 65535 of compat distances stands for this; a reading at or beyond it goes as a timeout
      * (inih reads lines of at most 200 characters: the printed line must fit) */
     K("link", link, compat_range_m, 1.0, 0.05, 10, "m",

@@ -40,7 +40,7 @@ typedef struct {
  * given (-1 = not given). */
 typedef struct {
     double fwd_km_mm_s_v;   /* forward speed per volt: slope of steady speed against voltage, mm/s/V */
-    double fwd_tm_s;        /* forward time constant: 63 % of a voltage step's speed change, s */
+    double fwd_tm_s;        /* forward time constant of a voltage step (a first-order fit), s */
     double rot_km_deg_s_v;  /* spin rate per volt (the motors at +V and -V), deg/s/V */
     double rot_tm_s;        /* rotation time constant, s */
     double counts_500mm_left, counts_500mm_right; /* encoder counts over 500 mm of straight travel */
@@ -75,6 +75,8 @@ typedef struct {
     int centre_post;        /* 1 = the post in the middle of the goal is there */
     double body_wall_mu;    /* robot body/wheel on a wall or post */
     double wall_reflectivity; /* of walls and posts to the IR sensors' light, 0..1 */
+    double wall_gloss;      /* the walls' specular (gloss) reflectance straight on, 0..1 */
+    double wall_gloss_exp;  /* the gloss lobe's Phong exponent: cos^n of the angle off the mirror direction, 1 */
     /* contact springs and dampers, per kind (world.c turns them into ODE's
      * ERP and CFM for the step in use) */
     double tyre_kp_n_m, tyre_kd_n_s_m;     /* tyre on the floor */

@@ -303,6 +303,15 @@ static int required_parts(load_t *l)
     return 0;
 }
 
+/* Keys a sensor's section left to another of its keys (a ToF's ranging
+ * profile sets its period, range and noise unless the file gives them). */
+static int complete_parts(load_t *l)
+{
+    for (int i = 0; i < l->n; i++)
+        if (l->s[i].sensor) tof_complete(l->s[i].target[0], l->s[i].seen[1]);
+    return 0;
+}
+
 static int part_checks(load_t *l)
 {
     const simcfg_t *c = l->c;
@@ -365,7 +374,8 @@ static int load(simcfg_t *c, const char *text, const char *name, char *err, size
     l->name = name;
     const inifile_t r = { on_section, on_key, l, "want key = value or [KIND.NAME]" };
     int rc = text ? inifile_parse(&r, text, strlen(text), name, err, errlen) : inifile_load(&r, name, ROBOT_MAX_BYTES, err, errlen);
-    if (rc == 0 && missing_keys(l) == 0 && required_parts(l) == 0 && part_checks(l) == 0 && physics_checks(l) == 0) {
+    if (rc == 0 && missing_keys(l) == 0 && required_parts(l) == 0 && complete_parts(l) == 0 && part_checks(l) == 0 &&
+        physics_checks(l) == 0) {
         snprintf(l->work.robot.path, sizeof l->work.robot.path, "%s", name);
         *c = l->work;
     } else if (rc == 0) {

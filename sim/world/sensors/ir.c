@@ -24,15 +24,17 @@ void ir_spec_default(ir_spec_t *s)
     s->cone_deg = 6.0;
     s->rings = 2;          /* ours: 1 + 2 x 8 = 17 rays */
     s->rays_per_ring = 8;
-    /* counts for reflectivity 1 at 50 mm: mazerunner-core's ORION reads
-     * FRONT_REFERENCE = 850 (config-robot-orion.h) centred in a cell facing
-     * a wall; ours: that sensor-to-wall distance taken as 50 mm, so
-     * 850 / 0.85 */
+    /* counts for a matt reflectivity-1 wall straight on at 50 mm; ours: of
+     * the order of ORION's fitted gains (242 to 1046, robots/ukmarsbot.ini) */
     s->gain_counts = 1000.0;
     s->ref_m = 0.050;
-    /* ours: closer than ~15 mm the emitter's spot leaves the detector's
-     * field of view (the pair sits ~10 mm apart); not measured */
-    s->near_m = 0.015;
+    /* ours: a guard against 1/0 only; the near field comes from the
+     * detector's offset and its cone */
+    s->near_m = 0.001;
+    /* ours: UKMARSBOT's advanced board, emitter above and detector below
+     * the board: 5 mm LED's centre 2.5 mm above, 1.6 mm board, 3 mm
+     * detector's centre 1.5 mm below */
+    s->det_offset_m = -0.0056;
     /* ours: a full wall at 0.5 m returns 1000 * 0.85 * (0.05 / 0.5)^2 = 8.5 counts */
     s->max_m = 0.5;
     /* ours: the detectors sit below the sensor board, shielded from room
@@ -59,13 +61,15 @@ static void add_ray(ir_t *ir, double th_deg, double phi_rad, double solid_sr)
     ir->off[i][0] = cos(th);
     ir->off[i][1] = sin(th) * cos(phi_rad);
     ir->off[i][2] = sin(th) * sin(phi_rad);
-    ir->weight[i] = profile(th_deg, ir->spec->half_angle_deg) * profile(th_deg, ir->spec->det_half_angle_deg) * solid_sr;
+    /* the detector's profile is taken where it sees each spot (ray_return) */
+    ir->weight[i] = profile(th_deg, ir->spec->half_angle_deg) * solid_sr;
 }
 
 void ir_init(ir_t *ir, const ir_spec_t *s, double reflectivity, uint64_t seed, unsigned index)
 {
     ir->spec = s;
     ir->reflectivity = reflectivity;
+    ir->gloss = 0, ir->gloss_exp = 1;
     ir->nrays = 0;
     /* a cone of 0 degrees is the axis alone, however many rings are asked for */
     int rings = s->rings < 0 || s->cone_deg <= 0 ? 0 : s->rings > IR_MAX_RINGS ? IR_MAX_RINGS : (int)s->rings;
@@ -79,29 +83,79 @@ void ir_init(ir_t *ir, const ir_spec_t *s, double reflectivity, uint64_t seed, u
         for (int j = 0; j < per; j++) /* odd rings turned half a step */
             add_ray(ir, th, 2 * M_PI * (j + 0.5 * (k & 1)) / per, solid);
     }
-    double k0 = 0;
-    for (int i = 0; i < ir->nrays; i++) k0 += ir->weight[i] * pow(ir->off[i][0], 3);
+    double k0 = 0; /* a matt plane straight on in the far field: the detector sees ray i at th_i */
+    for (int i = 0; i < ir->nrays; i++)
+        k0 += ir->weight[i] * profile(acos(ir->off[i][0]) * 180.0 / M_PI, s->det_half_angle_deg) * pow(ir->off[i][0], 3);
     for (int i = 0; i < ir->nrays; i++) ir->weight[i] /= k0;
     rng_init(&ir->rng, seed, RNG_STREAM_IR + index);
 }
 
 int ir_full_scale(const ir_t *ir) { return (1 << (int)ir->spec->adc_bits) - 1; }
 
+void ir_set_finish(ir_t *ir, double gloss, double gloss_exp)
+{
+    ir->gloss = gloss;
+    ir->gloss_exp = gloss_exp < 1 ? 1 : gloss_exp;
+}
+
+static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* What one ray (unit u from the emitter at e) returns to the detector at
+ * det (looking along axis) from a spot d along it on a surface of normal n
+ * (towards the ray), reflectivity rho and gloss: q_i of ir.h without w_i. */
+static double ray_return(const ir_t *ir, const double e[3], const double u[3], double d, const double n[3],
+                         const double det[3], const double axis[3], double rho, double gloss)
+{
+    double q[3], m[3], un = dot3(u, n);
+    if (un >= 0) return 0; /* the surface's back */
+    for (int k = 0; k < 3; k++) q[k] = det[k] - (e[k] + d * u[k]), m[k] = u[k] - 2 * un * n[k];
+    double r = sqrt(dot3(q, q));
+    if (r <= 0) return 0;
+    for (int k = 0; k < 3; k++) q[k] /= r;
+    double cos_o = dot3(n, q), cos_b = -dot3(axis, q);
+    if (cos_o <= 0 || cos_b <= 0) return 0; /* the detector behind the surface or looking away */
+    double beta_deg = acos(cos_b > 1 ? 1 : cos_b) * 180.0 / M_PI;
+    double cos_a = dot3(m, q), f = rho;
+    if (gloss > 0 && cos_a > 0) f += gloss * (ir->gloss_exp + 2) / 2 * pow(cos_a, ir->gloss_exp);
+    double rr = r < ir->spec->near_m ? ir->spec->near_m : r;
+    return f * cos_o * profile(beta_deg, ir->spec->det_half_angle_deg) / (rr * rr);
+}
+
+/* The detector's place: det_offset_m along up from the emitter at pos. */
+static void detector_at(const ir_t *ir, const double pos[3], const double up[3], double det[3])
+{
+    for (int k = 0; k < 3; k++) det[k] = pos[k] + ir->spec->det_offset_m * up[k];
+}
+
 double ir_received_frame(const ir_t *ir, world_t *w, const double pos_m[3], const double axis[3], const double left[3],
                          const double up[3])
 {
     const ir_spec_t *s = ir->spec;
-    double sum = 0;
+    double sum = 0, det[3];
+    detector_at(ir, pos_m, up, det);
     for (int i = 0; i < ir->nrays; i++) {
         const double *o = ir->off[i];
         double u[3], n[3];
         for (int k = 0; k < 3; k++) u[k] = o[0] * axis[k] + o[1] * left[k] + o[2] * up[k];
         double d = world_ray_normal(w, pos_m, u, s->max_m, n);
         if (d < 0) continue;
-        double cosi = -(n[0] * u[0] + n[1] * u[1] + n[2] * u[2]);
-        if (cosi <= 0) continue;
-        double dd = d < s->near_m ? s->near_m : d;
-        sum += ir->weight[i] * ir->reflectivity * cosi / (dd * dd);
+        sum += ir->weight[i] * ray_return(ir, pos_m, u, d, n, det, axis, ir->reflectivity, ir->gloss);
+    }
+    return sum;
+}
+
+double ir_received_plane(const ir_t *ir, double d_m, double tilt_rad, double rho, double gloss)
+{
+    /* the sensor's own frame: x along the axis, y left, z up; the emitter at the origin */
+    static const double e[3] = { 0, 0, 0 }, axis[3] = { 1, 0, 0 };
+    double n[3] = { -cos(tilt_rad), -sin(tilt_rad), 0 }, det[3] = { 0, 0, ir->spec->det_offset_m };
+    double sum = 0, c = -d_m * cos(tilt_rad); /* the plane: x . n = c */
+    for (int i = 0; i < ir->nrays; i++) {
+        double un = dot3(ir->off[i], n);
+        if (un >= 0) continue;
+        double d = c / un;
+        if (d <= 0 || d > ir->spec->max_m) continue;
+        sum += ir->weight[i] * ray_return(ir, e, ir->off[i], d, n, det, axis, rho, gloss);
     }
     return sum;
 }
@@ -136,9 +190,8 @@ int ir_read_frame(ir_t *ir, world_t *w, const double pos_m[3], const double axis
 int ir_read_object(ir_t *ir, double d_m, int emitter_on)
 {
     const ir_spec_t *s = ir->spec;
-    double d = d_m < s->near_m ? s->near_m : d_m;
     double v = s->ambient_counts + s->noise_counts * rng_gauss(&ir->rng);
-    if (emitter_on) v += s->gain_counts * s->ref_m * s->ref_m / (d * d);
+    if (emitter_on) v += s->gain_counts * s->ref_m * s->ref_m * ir_received_plane(ir, d_m, 0, 1, 0);
     double top = ir_full_scale(ir);
     v = floor(v + 0.5);
     return v < 0 ? 0 : v > top ? (int)top : (int)v;
@@ -160,6 +213,9 @@ static const keytab_t keys[] = {
     I(adc_channel, adc_channel, -1, -1, 15, 0, 1, "channel", "the ADC channel of its detector (-1: none; board emulation)"),
     I(measured_centred, measured_centred, -1, -1, 1023, 0, 0, "counts", "the real robot's lit-minus-dark reading centred between side walls, no wall ahead (mmsim --validate)"),
     I(measured_backed, measured_backed, -1, -1, 1023, 0, 0, "counts", "the real robot's lit-minus-dark reading backed against a rear wall, a wall ahead (mmsim --validate)"),
+    I(measured_facing_sum, measured_facing_sum, -1, -1, 10000, 0, 0, "1", "the real pair's normalised front sum centred facing a wall (mmsim --validate: predicted)"),
+    I(measured_turn_sum, measured_turn_sum, -1, -1, 10000, 0, 0, "1", "the real pair's normalised front sum with the wall ahead 154 mm from the axle, no side walls (mmsim --validate: predicted)"),
+    I(measured_turn_wall_adjust, measured_turn_wall_adjust, 0, 0, 10000, 0, 0, "1", "what each side wall adds to that front sum on the real robot (mazerunner-core's EXTRA_WALL_ADJUST)"),
     I(gain_counts, model.gain_counts, 1000, 0, 1e6, 0, 0, "counts", "lit minus dark for a reflectivity-1 wall straight on at ref_mm; fit it to your robot's readings"),
     I(ref_mm, model.ref_m, 50, 1, 1000, 1000, 0, "mm", "the gain's reference distance"),
     I(half_angle_deg, model.half_angle_deg, 3, 0.5, 60, 0, 0, "deg", "SFH4550 datasheet: +-3 deg half angle"),
@@ -167,7 +223,8 @@ static const keytab_t keys[] = {
     I(cone_deg, model.cone_deg, 6, 0, 60, 0, 0, "deg", "ours: the outermost ring at two emitter half angles"),
     I(rings, model.rings, 2, 0, IR_MAX_RINGS, 0, 1, "1", "ours: rings of rays about the axis"),
     I(rays_per_ring, model.rays_per_ring, 8, 1, IR_MAX_PER_RING, 0, 1, "1", "ours: 1 + 2 x 8 = 17 rays"),
-    I(near_mm, model.near_m, 15, 0.1, 200, 1000, 0, "mm", "ours: closer, the emitter's spot leaves the detector's view"),
+    I(near_mm, model.near_m, 1, 0.1, 200, 1000, 0, "mm", "ours: a guard against 1/0; the near field comes from det_offset_mm"),
+    I(det_offset_mm, model.det_offset_m, -5.6, -50, 50, 1000, 0, "mm", "ours: the detector below the emitter: 5 mm LED, 1.6 mm board, 3 mm detector"),
     I(max_mm, model.max_m, 500, 10, 2000, 1000, 0, "mm", "ours: the rays' length (a wall at 0.5 m returns ~8 counts)"),
     I(ambient_counts, model.ambient_counts, 10, 0, 1023, 0, 0, "counts", "ours: the dark reading, shielded from room light"),
     I(noise_counts, model.noise_counts, 0.585, 0, 100, 0, 0, "counts", "ukmarsbot docs/analogue-read.md: variance 0.3425 counts^2"),
@@ -178,6 +235,7 @@ static void part_init(void *state, const robot_part_t *p, const sim_model_t *md,
 {
     ir_state_t *st = state;
     ir_init(&st->ir, &((const ir_part_spec_t *)p->spec)->model, md->cfg->world.wall_reflectivity, seed, index);
+    ir_set_finish(&st->ir, md->cfg->world.wall_gloss, md->cfg->world.wall_gloss_exp);
     st->last[0] = st->last[1] = -1;
     st->count = 0;
 }
@@ -221,6 +279,6 @@ static int part_check(const robot_part_t *p, char *reason, size_t len)
 }
 
 const sensor_kind_t sensor_ir = {
-    "ir", "IR reflectance wall sensor: emitter and phototransistor, a cone of rays, 1/d^2 with near-field saturation, cos incidence, ambient, 10-bit ADC",
+    "ir", "IR reflectance wall sensor: emitter and offset phototransistor, a cone of rays, Lambertian paint with a gloss lobe, the detector's cone, ambient, 10-bit ADC",
     keys, sizeof keys / sizeof keys[0], part_check, sizeof(ir_state_t), part_init, NULL, part_read, "dark lit lit_minus_dark",
 };

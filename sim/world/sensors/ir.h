@@ -2,21 +2,29 @@
  * phototransistor beside it and a 10-bit ADC, as on UKMARSBOT's wall sensor
  * boards (SFH4550 emitter, SFH309FA or BPW85 detector, the Nano's ADC).
  *
- * The beam is a cone of rays about the sensor's axis (a centre ray and
+ * The beam is a cone of rays about the emitter's axis (a centre ray and
  * rings of rays), cast in the ODE world, so a post or a wall end is seen as
- * the beam sees it: each ray returns what it hits. Ray i, at angle th_i off
- * the axis, hitting at distance d_i with angle of incidence a_i, returns
+ * the beam sees it: each ray returns what it hits. The detector sits
+ * det_offset_m from the emitter along the sensor's up axis, looking along
+ * the same axis. Ray i, at angle th_i off the axis, lights a spot P_i on a
+ * surface of normal n; the spot is r_i from the detector, seen by it at
+ * beta_i off its axis, and the light leaves towards it at o_i off the
+ * normal, at alpha_i off the mirror direction of the ray. It returns
  *
- *   r_i = w_i * rho * cos(a_i) / max(d_i, near_m)^2
+ *   q_i = w_i * (rho + gloss * (m + 2) / 2 * cos^m(alpha_i))
+ *             * cos(o_i) * D(beta_i) / max(r_i, near_m)^2
  *
- * (Lambertian wall of reflectivity rho, light falling as 1/d^2, the near
- * field saturating below near_m). The weights w_i follow the emitter's and
- * the detector's angular profiles (Gaussians with the datasheets' half
- * angles) times the solid angle each ray stands for. The sum is normalised
- * by k0 = sum w_i cos^3(th_i), what a plane straight on returns in the far
- * field, so that
+ * (a Lambertian paint of reflectivity rho with a Phong gloss lobe of
+ * reflectance gloss straight on and exponent m: the world's wall finish;
+ * the detector's Gaussian profile D with the datasheet's half angle). The
+ * weights w_i are the emitter's Gaussian profile times the solid angle each
+ * ray stands for. Close to a wall the lit spot leaves the detector's cone
+ * (beta grows as det_offset / d): the reading peaks and falls off; the
+ * gloss lobe leaves it too, and with any tilt of the wall (alpha grows as
+ * twice the tilt). The sum is normalised by k0 = sum w_i D(th_i) cos^3(th_i),
+ * what a matt plane straight on returns in the far field, so that
  *
- *   received = sum r_i / k0      [1/m^2]; a wall straight on at d: rho/d^2.
+ *   received = sum q_i / k0      [1/m^2]; a matt wall straight on, far: rho/d^2.
  *
  * One ADC sample, in counts:
  *
@@ -57,7 +65,8 @@ typedef struct {
     double rays_per_ring;      /* 1..IR_MAX_PER_RING */
     double gain_counts;        /* lit minus dark, counts, for reflectivity 1 straight on at ref_m */
     double ref_m;              /* the gain's reference distance, m */
-    double near_m;             /* below this distance the response saturates, m */
+    double near_m;             /* a guard: a spot closer to the detector counts as this far, m */
+    double det_offset_m;       /* the detector from the emitter along the sensor's up axis, m (negative: below) */
     double max_m;              /* the rays' length, m */
     double ambient_counts;     /* the dark reading, counts */
     double noise_counts;       /* standard deviation of one sample, counts */
@@ -70,6 +79,7 @@ typedef struct {
 typedef struct {
     const ir_spec_t *spec;
     double reflectivity;       /* of the walls and posts, 0..1 ([world] wall_reflectivity) */
+    double gloss, gloss_exp;   /* their finish ([world] wall_gloss, wall_gloss_exp); ir_init: 0 (matt) */
     int nrays;
     double off[IR_MAX_RAYS][3]; /* ray directions in the sensor's frame: x along the axis, y left, z up */
     double weight[IR_MAX_RAYS]; /* normalised: a plane straight on in the far field sums to 1 */
@@ -83,6 +93,12 @@ typedef struct {
     double adc_channel;        /* the MCU's ADC channel its detector feeds (a board's business) */
     double measured_centred;   /* lit minus dark on the real robot centred in a cell between side walls, no wall ahead; -1 none */
     double measured_backed;    /* lit minus dark with its back against a cell's rear wall, a wall ahead; -1 none */
+    /* The forward pair's sum, each sensor normalised to 100 at its
+     * measured_backed (mazerunner-core's get_front_sum), given on each
+     * sensor of the pair; -1 none: */
+    double measured_facing_sum; /* centred in a cell facing its wall ahead (FRONT_REFERENCE) */
+    double measured_turn_sum;  /* the axle 20 mm past a cell boundary, the wall ahead 154 mm from it, no side walls (TURN_THRESHOLD_SS90E) */
+    double measured_turn_wall_adjust; /* what each side wall adds to the turn's sum (EXTRA_WALL_ADJUST); 0 none */
 } ir_part_spec_t;
 
 /* An [ir.NAME] sensor at run time: the model and its latest samples. */
@@ -99,8 +115,15 @@ void ir_spec_default(ir_spec_t *s);
  * of this reflectivity (0..1), its noise stream from the run's seed and
  * the sensor's index. */
 void ir_init(ir_t *ir, const ir_spec_t *s, double reflectivity, uint64_t seed, unsigned index);
+/* The walls' gloss (reflectance straight on, 0..1) and its exponent (>= 1). */
+void ir_set_finish(ir_t *ir, double gloss, double gloss_exp);
+/* The light returned with the emitter on, 1/m^2, from a plane of
+ * reflectivity rho and gloss (the exponent the sensor's) d_m ahead of the emitter along
+ * its axis, its normal turned tilt_rad about the sensor's up axis (0:
+ * straight on), with no world: the model of ir.h for an ideal plane. */
+double ir_received_plane(const ir_t *ir, double d_m, double tilt_rad, double rho, double gloss);
 /* The light returned to the detector with the emitter on, 1/m^2 (see
- * above: rho/d^2 for a wall straight on at d >= near_m), for a sensor at
+ * above: about rho/d^2 for a matt wall straight on in the far field), for a sensor at
  * pos_m (world, m) looking horizontally along dir_rad. */
 double ir_received(const ir_t *ir, world_t *w, const double pos_m[3], double dir_rad);
 /* The same for a sensor whose frame is given: where it looks (axis), its
@@ -119,8 +142,8 @@ int ir_read(ir_t *ir, world_t *w, const double pos_m[3], double dir_rad, int emi
 int ir_sample(void *state, const robot_part_t *p, const sensor_ctx_t *x);
 
 /* One ADC sample with a white object straight on at d_m in front of the
- * sensor (a hand held before it): the far field of ir.h at
- * max(d, near), reflectivity 1. */
+ * sensor (a hand held before it): ir_received_plane at d_m, a matt
+ * reflectivity 1. */
 int ir_read_object(ir_t *ir, double d_m, int emitter_on);
 
 /* The ADC's top count, 2^bits - 1. */

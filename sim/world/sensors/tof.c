@@ -16,28 +16,78 @@ double tof_gauss(tof_t *t) { return rng_gauss(&t->rng); }
 tof_reading_t tof_measure(tof_t *t, double true_m)
 {
     tof_reading_t out = { t->spec->range_m, 1 };
-    if (true_m < 0.0 || true_m >= t->spec->range_m) return out;
+    if (true_m < 0.0 || true_m > t->spec->range_m) return out; /* no return signal: a timeout */
     double d = true_m < t->spec->blind_m ? t->spec->blind_m : true_m;
     d += t->spec->cv * d * tof_gauss(t);
-    if (d < 0.0) d = 0.0;
-    if (d >= t->spec->range_m) return out; /* at or beyond the range: a timeout, as the paper's Unity sensor */
-    out.dist_m = d;
+    out.dist_m = d < 0.0 ? 0.0 : d;
     out.timeout = 0;
     return out;
 }
 
 /* ---- the sensor kind ---- */
 
+/* The ranging profiles of ST's VL53L0X datasheet (DocID029104 Rev 1,
+ * Table 13 "Range profiles"), in the order of the `profile` key's words:
+ * the timing budget (the period of continuous ranging) and the typical
+ * range on a white (88 %) target filling the cone indoors (Table 11:
+ * 120 cm at 33 ms with at least 94 % of readings valid; 200 cm+ with the
+ * long range profile), as the maze's white wall faces are. Their accuracy
+ * is not taken from the table: tof_cv_at gives it from the budget. */
+static const char *const profile_names[] = { "default", "high_accuracy", "long_range", "high_speed" };
+static const struct {
+    double period_ms, range_mm;
+} profiles[] = {
+    { 30, 1200 },
+    { 200, 1200 },
+    { 33, 2000 },
+    { 20, 1200 },
+};
+
+/* The one accuracy figure the model is built from: DocID029104 Table 12,
+ * a white (88 %) target at 120 cm indoors with a 33 ms timing budget,
+ * 4 % as one standard deviation (section 5.3.1 characterises the ranging
+ * accuracy by its standard deviation). */
+#define CV_REF 0.04
+#define BUDGET_REF_S 0.033
+
+double tof_cv_at(double budget_s) { return CV_REF * sqrt(BUDGET_REF_S / budget_s); }
+
 #define T(name, field, def, min, max, per, unit, src) \
     { NULL, #name, offsetof(tof_spec_t, field), def, min, max, unit, src, NULL, 0, per, 0, KEYTAB_DOUBLE, 0, NULL }
 static const keytab_t keys[] = {
-    T(range_mm, range_m, 1200, 50, 10000, 1000, "mm", "VL53L0X long range, as the paper's simulator (its Arduino side assumed 1.0 m)"),
+    { NULL, "profile", offsetof(tof_spec_t, profile), 0, 0, 3, "word",
+      "VL53L0X datasheet DocID029104 Table 13: the ranging profile; sets period_ms, range_mm and cv unless given "
+      "(docs/ROBOTS.md)",
+      profile_names, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL },
+    T(range_mm, range_m, 1200, 50, 10000, 1000, "mm",
+      "the profile's unless given: a white target farther than this is a timeout (DocID029104 Tables 11, 13)"),
     T(blind_mm, blind_m, 0, 0, 500, 1000, "mm", "paper: no blind spot modelled"),
-    T(cv, cv, 0.05, 0, 1, 0, "1", "noise sigma = cv * distance (paper)"),
-    T(period_ms, period_s, 30, 1, 1000, 1000, "ms", "VL53L0X default timing budget ~30 ms"),
+    T(cv, cv, 0.04 * 1.0488088481701516 /* x sqrt(33 / 30): the default period */, 0, 1, 0, "1",
+      "unless given 0.04 x sqrt(33 ms / period): noise sigma = cv * distance (DocID029104 Table 12; the paper's Unity model: 0.05)"),
+    T(period_ms, period_s, 30, 1, 1000, 1000, "ms", "the profile's unless given: its timing budget (DocID029104 Table 13)"),
     T(fov_deg, fov_rad, 0, 0, 90, 180.0 / M_PI, "deg", "the cone's full angle; VL53L0X datasheet DocID029104: 25 deg field of view; 0: the paper's one ray"),
     T(rays, rays, 5, 1, 61, 0, "1", "ours: rays across the cone (5: 6.25 deg apart at 25 deg)"),
 };
+#define NKEYS (sizeof keys / sizeof keys[0])
+
+extern const sensor_kind_t sensor_tof;
+
+/* The key's bit in a part's given mask is its index in keys[]. */
+static int given_key(uint64_t given, const char *key)
+{
+    const keytab_t *k = keytab_find(keys, NKEYS, NULL, key);
+    return k && (given >> (k - keys) & 1u);
+}
+
+void tof_complete(robot_part_t *p, uint64_t given)
+{
+    if (p->kind != &sensor_tof) return;
+    tof_spec_t *s = (tof_spec_t *)(void *)p->spec;
+    int i = (int)s->profile;
+    if (!given_key(given, "period_ms")) s->period_s = profiles[i].period_ms / 1000.0;
+    if (!given_key(given, "range_mm")) s->range_m = profiles[i].range_mm / 1000.0;
+    if (!given_key(given, "cv")) s->cv = tof_cv_at(s->period_s);
+}
 
 static void init(void *state, const robot_part_t *p, const sim_model_t *md, uint64_t seed, unsigned index, unsigned count)
 {
@@ -94,6 +144,6 @@ static int read(void *state, const robot_part_t *p, const sensor_ctx_t *x, doubl
 }
 
 const sensor_kind_t sensor_tof = {
-    "tof", "time-of-flight distance sensor: the nearest surface in its cone (fov_deg, rays; 0: the paper's one ray), Gaussian noise of cv * distance, timeout at range",
-    keys, sizeof keys / sizeof keys[0], NULL, sizeof(tof_state_t), init, step, read, "mm timeout true_mm",
+    "tof", "time-of-flight distance sensor: the nearest surface in its cone (fov_deg, rays; 0: the paper's one ray), a ranging profile's period, range (beyond it a timeout) and Gaussian noise of cv * distance",
+    keys, NKEYS, NULL, sizeof(tof_state_t), init, step, read, "mm timeout true_mm",
 };
