@@ -117,7 +117,7 @@ static uint8_t read_walls(float to_centre)
     uint8_t w = 0;
     hal_distance_t l = hal_distance(HAL_TOF_LEFT), f = hal_distance(HAL_TOF_FRONT), r = hal_distance(HAL_TOF_RIGHT);
     /* the far wall of the cell ahead is RC_FRONT_AT_CENTRE_MM beyond its centre */
-    if (!f.timeout && f.mm < to_centre + RC_FRONT_AT_CENTRE_MM + RC_CELL_MM / 2) w |= EXPLORE_WALL_FRONT;
+    if (!f.timeout && f.mm < to_centre + RC_FRONT_AT_CENTRE_MM + RC_FRONT_WALL_MARGIN_MM) w |= EXPLORE_WALL_FRONT;
     if (!l.timeout && l.mm < RC_SIDE_THRESHOLD_MM) w |= EXPLORE_WALL_LEFT;
     if (!r.timeout && r.mm < RC_SIDE_THRESHOLD_MM) w |= EXPLORE_WALL_RIGHT;
     return w;
@@ -155,6 +155,24 @@ static float side_offset(float r_mm, float psi_rad, uint8_t right)
     return right ? -further : further;
 }
 
+/* Whether a reading of the right (right = 1) or left diagonal sensor,
+ * arriving now, can be of the post at the entry of the cell ahead (its
+ * centre to_centre mm away) rather than of that cell's side wall: 0 if
+ * it can. Turned s towards that side (odometry against the held heading),
+ * the sensor sits Y cos s - X sin s ahead of the robot's centre and X cos
+ * s + Y sin s out from it, and its cone's outer edge is 57.5 deg + s off
+ * the heading; the edge meets the side wall's line gap * cot(57.5 deg + s)
+ * ahead of the sensor. */
+static int clear_of_entry_post(uint8_t right, float to_centre)
+{
+    float psi = mo.odom.theta_rad - mo.heading_rad, s = right ? -psi : psi, cs = cosf(s), sn = sinf(s);
+    float short_mm = to_centre - RC_CELL_MM / 2 - (RC_TOF_SIDE_Y_MM * cs - RC_TOF_SIDE_X_MM * sn); /* of the boundary */
+    float gap = RC_CELL_MM / 2 - RC_WALL_MM / 2 - (RC_TOF_SIDE_X_MM * cs + RC_TOF_SIDE_Y_MM * sn);
+    /* cos and sin of 57.5 deg + s, from 57.5 = 90 - 32.5 */
+    float reach = gap * (RC_DIAG_EDGE_SIN * cs - RC_DIAG_EDGE_COS * sn) / (RC_DIAG_EDGE_COS * cs + RC_DIAG_EDGE_SIN * sn);
+    return reach - short_mm > RC_WALL_MM / 2 + RC_POST_MARGIN_MM;
+}
+
 /* Wall centring from the diagonal sensors: the robot's offset right of
  * the centre line, mm, when a side wall is seen (sets mo.lateral_*), each
  * reading taken with the robot's turn from the held heading when it
@@ -177,6 +195,8 @@ static void centring(void)
         news = 1;
         side_ok[i] = usable && !d.timeout && d.mm < RC_CENTRING_MAX_MM;
         side_dmm[i] = (int16_t)(10.0f * side_offset((float)d.mm, mo.odom.theta_rad - mo.heading_rad, i));
+        /* not fresh for the walls of the cell ahead if it may be its entry post */
+        if (sensed == SENSE_MARKED && !clear_of_entry_post(i, profile_remaining(&mo.fwd) + move_shift_mm)) tof_seq[sensor] = d.seq;
     }
     float el = 0.1f * (float)side_dmm[0], er = 0.1f * (float)side_dmm[1];
     mo.lateral_mm = side_ok[0] && side_ok[1] ? 0.5f * (el + er) : side_ok[0] ? el : side_ok[1] ? er : 0.0f;
@@ -291,8 +311,8 @@ static int fresh(void)
 
 /* A move reached the point where the walls of the cell ahead are read:
  * within RC_SENSE_BEFORE_MM of the move's end with readings taken within
- * RC_SENSE_FROM_MM of it, or RC_SENSE_LATEST_MM at the latest; once per
- * cell. */
+ * RC_SENSE_FROM_MM of it (the side ones clear of the cell's entry post:
+ * centring), or RC_SENSE_LATEST_MM at the latest; once per cell. */
 static int sense_point(float left_mm)
 {
     if (sensed == SENSE_DONE) return 0;
