@@ -53,6 +53,15 @@ for q in panels:
         n += sum(px(x, y) in palette for x in range(x0, x1 + 1))
         if n >= x1 - x0: break
     if n < x1 - x0: print(f"panel {q['title']}: {n} curve pixels")
+# laps shaded: the middle of each lap, just under each box's top, is the lap's shade or a curve's;
+# contacts marked: red at each panel's foot
+col = lambda q, t: q['box_px'][0] + round(t / p['t_end_s'] * (q['box_px'][2] - q['box_px'][0]))
+for q in panels:
+    for i, lap in enumerate(j['laps']):
+        c = px(col(q, (lap['start_s'] + lap['end_s']) / 2), q['box_px'][1] + 1)
+        if c not in palette | {'e4eefa', 'd2e2f6'}: print(f"panel {q['title']}: lap {i + 1} not shaded ({c})")
+    red = sum(px(x, q['box_px'][3] - 2) == 'e02020' for x in range(q['box_px'][0], q['box_px'][2] + 1))
+    if (red > 0) != (p['contacts'] > 0): print(f"panel {q['title']}: {red} contact pixels for {p['contacts']} contacts")
 if '--speed' not in sys.argv: sys.exit(0)
 sp = panels[0]
 x0, y0, x1, y1 = sp['box_px']
@@ -82,6 +91,13 @@ learned=$($P "$T/fw.png" near:202020:0)
 got=$(python3 -c "import json,sys; print(*(json.load(open(f))['final_path_cells'] for f in sys.argv[1:]))" "$T/run.json" "$T/fw.json" 2>&1)
 [ "$got" = "5 5" ] && [ "$($P "$T/fw.png" near:d9b8f0:0)" -gt 500 ] && [ "$($P "$T/run.png" near:d9b8f0:0)" -gt 500 ] \
   && ok "final path drawn for the firmware and the scripted driver" || bad "final path: $got"
+
+# a run with wall contacts (the ToF firmware on the IR robot): each marked
+"$S" --maze mazes/gen-5x5-s1.txt --robot robots/ukmarsbot.ini --driver firmware --time-limit 10 --json --report "$T/hit.png" \
+  >"$T/out" 2>"$T/err"
+n=$(python3 -c "import json,sys; print(json.loads(open(sys.argv[1]).read().splitlines()[-1])['collisions'], json.load(open(sys.argv[2]))['plots']['contacts'])" "$T/out" "$T/hit.json" 2>&1)
+got=$(plots_check "$T/hit.json" ir 2>&1)
+[ -z "$got" ] && [ "${n% *}" -gt 0 ] && [ "${n% *}" = "${n#* }" ] && ok "wall contacts marked: $n" || bad "contacts: $n $got"
 
 # a board run with watched variables: a panel each, the counter's curve rising
 IMG=build/clients/board/WatchProbe.elf
