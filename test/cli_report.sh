@@ -92,6 +92,16 @@ got=$(python3 -c "import json,sys; print(*(json.load(open(f))['final_path_cells'
 [ "$got" = "5 5" ] && [ "$($P "$T/fw.png" near:d9b8f0:0)" -gt 500 ] && [ "$($P "$T/run.png" near:d9b8f0:0)" -gt 500 ] \
   && ok "final path drawn for the firmware and the scripted driver" || bad "final path: $got"
 
+# a robot with a gyro: its panel, its peaks those of the true yaw rate (noise and bias off)
+(cat robots/paper.ini; printf '\n[gyro.z]\nx_mm = 0\ny_mm = 0\nz_mm = 20\nyaw_deg = 0\nnoise_density_dps_rthz = 0\nbias_dps = 0\nbias_rw_dps_rts = 0\n') >"$T/gyro.ini"
+"$S" --maze mazes/gen-5x5-s1.txt --robot "$T/gyro.ini" --driver scripted --runs 1 --report "$T/gyro.png" >/dev/null 2>"$T/err"
+got=$(plots_check "$T/gyro.json" tof gyro 2>&1; python3 -c "
+import json, sys
+q = {p['title']: p for p in json.load(open(sys.argv[1]))['plots']['panels']}
+g, y = q['gyro'], q['yaw rate']
+if not (abs(g['y_hi'] - y['y_hi']) < 0.05 * y['y_hi'] and abs(g['y_lo'] - y['y_lo']) < 0.05 * -y['y_lo']): print(g, y)" "$T/gyro.json" 2>&1)
+[ -z "$got" ] && ok "gyro panel: its range within 5 % of the yaw rate's" || bad "gyro panel: $got"
+
 # a run with wall contacts (the ToF firmware on the IR robot): each marked
 "$S" --maze mazes/gen-5x5-s1.txt --robot robots/ukmarsbot.ini --driver firmware --time-limit 10 --json --report "$T/hit.png" \
   >"$T/out" 2>"$T/err"
