@@ -80,16 +80,16 @@ got=$(plots_check "$T/run.json" --speed speed "yaw rate" "motor volts" "motor cu
 cmp -s "$T/run-plots.png" "$T/run2-plots.png" && cmp -s "$T/run.png" "$T/run2.png" && ok "the same run: the same bytes" || bad "two runs' pictures differ"
 
 # firmware: the learned walls appear in the learned colour
-"$S" --maze mazes/gen-5x5-s1.txt --driver firmware --report "$T/fw.png" >"$T/out" 2>"$T/err"
+"$S" --maze mazes/gen-5x5-s1.txt --driver firmware --report "$T/fw" >"$T/out" 2>"$T/err"
 rc=$?; [ $rc -eq 0 ] && ok "firmware run with report" || { bad "firmware run: exit $rc"; cat "$T/err"; }
-[ -s "$T/fw.png" ] && [ -s "$T/fw.svg" ] && [ -s "$T/fw.json" ] && [ -s "$T/fw-plots.png" ] && ok "firmware: four files" || bad "files: $(ls "$T")"
-learned=$($P "$T/fw.png" near:202020:0)
+[ -s "$T/fw" ] && [ -s "$T/fw.svg" ] && [ -s "$T/fw.json" ] && [ -s "$T/fw-plots.png" ] && ok "name without .png: siblings appended" || bad "files: $(ls "$T")"
+learned=$($P "$T/fw" near:202020:0)
 [ "${learned:-0}" -gt 1000 ] && ok "learned walls drawn" || bad "learned wall pixels: $learned"
 # the final path is drawn for runs that have one: the firmware (best path on
 # its map), the scripted driver (it drives the true best path); an MCU run
 # has none (test/cli_pil.sh)
 got=$(python3 -c "import json,sys; print(*(json.load(open(f))['final_path_cells'] for f in sys.argv[1:]))" "$T/run.json" "$T/fw.json" 2>&1)
-[ "$got" = "5 5" ] && [ "$($P "$T/fw.png" near:d9b8f0:0)" -gt 500 ] && [ "$($P "$T/run.png" near:d9b8f0:0)" -gt 500 ] \
+[ "$got" = "5 5" ] && [ "$($P "$T/fw" near:d9b8f0:0)" -gt 500 ] && [ "$($P "$T/run.png" near:d9b8f0:0)" -gt 500 ] \
   && ok "final path drawn for the firmware and the scripted driver" || bad "final path: $got"
 
 # a robot with a gyro: its panel, its peaks those of the true yaw rate (noise and bias off)
@@ -133,14 +133,14 @@ print(t['y_lo'] == 0 and t['y_hi'] > 150 and d['y_hi'] == 0 and d['y_lo'] < -150
 "$S" --maze mazes/gen-5x5-s1.txt --report "$T/no/such/dir/x.png" >"$T/out" 2>"$T/err"; rc=$?
 [ $rc -eq 2 ] && [ "$(wc -l <"$T/err")" -eq 1 ] && grep -q "^mmsim: --report: $T/no/such/dir/x.png: cannot write" "$T/err" \
   && ok "unwritable report path" || bad "unwritable report path: exit $rc $(cat "$T/err")"
-mkdir "$T/dir.png" "$T/sib.svg" "$T/pl-plots.png"
-for r in "" "$T/dir.png" "$T/dir.png/" "$T/sib.png" "$T/pl.png"; do
+mkdir "$T/dir" "$T/sib.svg" "$T/pl-plots.png"
+for r in "" "$T/dir" "$T/dir/" "$T/sib.png" "$T/pl.png"; do
   "$S" --maze mazes/gen-5x5-s1.txt --driver scripted --runs 1 --report "$r" >"$T/out" 2>"$T/err"; rc=$?
-  [ $rc -eq 2 ] && [ "$(wc -l <"$T/err")" -eq 1 ] && [ ! -s "$T/out" ] && grep -q "^mmsim: --report" "$T/err" \
+  [ $rc -eq 2 ] && [ "$(wc -l <"$T/err")" -eq 1 ] && [ ! -s "$T/out" ] && grep -q "^mmsim: --report: " "$T/err" \
     && ok "--report '$r': exit 2 before the run" || bad "--report '$r': exit $rc $(cat "$T/err")"
 done
-[ ! -e "$T/sib.png" ] && [ ! -e "$T/sib.json" ] && [ ! -e "$T/pl.png" ] && [ -z "$(ls "$T" "$T/dir.png" | grep '\.tmp\.')" ] \
-  && ok "nothing written for a refused --report" || bad "files left: $(ls "$T" "$T/dir.png")"
+[ ! -e "$T/sib.png" ] && [ ! -e "$T/sib.json" ] && [ ! -e "$T/pl.png" ] && [ -z "$(ls "$T" "$T/dir" | grep '\.tmp\.')" ] \
+  && ok "nothing written for a refused --report" || bad "files left: $(ls "$T" "$T/dir")"
 # all four files or none: the SVG (55 KB) fails under a 20 KB file size limit after the PNG
 # (8 KB) was written; the old report stays whole
 for e in png svg json; do echo "old $e" >"$T/old.$e"; done
