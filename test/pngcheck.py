@@ -19,6 +19,27 @@ import zlib
 
 
 def read_png(path):
+    """(w, h, bpp, rows): rows[y] the row's bytes, bpp 3 (RGB) or 4 (RGBA).
+    Pillow decodes when it is there (Debian's python3-pil, which
+    python3-matplotlib brings: much faster), else the standard library."""
+    try:
+        from PIL import Image
+    except ImportError:
+        return read_png_zlib(path)
+    try:
+        with Image.open(path) as im:
+            if im.format != 'PNG' or im.mode not in ('RGB', 'RGBA') or im.info.get('interlace'):
+                raise ValueError('not a PNG' if im.format != 'PNG' else 'only 8-bit RGB/RGBA, not interlaced')
+            w, h = im.size
+            bpp = 3 if im.mode == 'RGB' else 4
+            raw = im.tobytes()
+    except OSError as e:
+        raise ValueError('not a PNG' if 'cannot identify' in str(e) else str(e))
+    stride = w * bpp
+    return w, h, bpp, [bytearray(raw[y * stride:(y + 1) * stride]) for y in range(h)]
+
+
+def read_png_zlib(path):
     data = open(path, 'rb').read()
     if data[:8] != b'\x89PNG\r\n\x1a\n':
         raise ValueError('not a PNG')
