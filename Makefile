@@ -88,7 +88,7 @@ deps:
 	  SUDO=""; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
 	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null || { echo "make deps: apt-get failed" >&2; exit 3; }; \
 	fi
-	@$(MAKE) --no-print-directory $(VENV_STAMP)
+	@$(MAKE) -s --no-print-directory $(VENV_STAMP)
 
 # The project venv: Debian's python3 (/usr/bin/python3) with its site
 # packages (dask, distributed, pandas, matplotlib) visible, plus the pinned

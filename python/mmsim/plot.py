@@ -114,4 +114,8 @@ def sens(ax, sensitivity):
 
 def short(name):
     name = str(name)
+    try:
+        return "%.6g" % float(name)
+    except ValueError:
+        pass
     return name.rsplit("/", 1)[-1] if "/" in name else name[:14]
