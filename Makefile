@@ -88,12 +88,15 @@ deps:
 	  SUDO=""; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
 	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null || { echo "make deps: apt-get failed" >&2; exit 3; }; \
 	fi
-	@$(MAKE) -s --no-print-directory $(VENV_STAMP)
+	@$(MAKE) -s --no-print-directory $(VENV_STAMP) \
+	  || echo "make deps: no project venv ($(VENV)): tools/mmsweep needs it and test/cli_sweep.sh skips" >&2
 
 # The project venv: Debian's python3 (/usr/bin/python3) with its site
 # packages (dask, distributed, pandas, matplotlib) visible, plus the pinned
 # packages Debian lacks (python/requirements.txt: pyarrow, for the sweeps'
-# Parquet results). Rebuilt only when the requirements file changes.
+# Parquet results). Rebuilt only when the requirements file changes. A pip
+# that cannot reach its index leaves the rest of make deps (and the build)
+# going: only the sweeps need the venv.
 VENV       := $(B)/venv
 VENV_STAMP := $(VENV)/.requirements-installed
 $(VENV_STAMP): python/requirements.txt
