@@ -79,9 +79,18 @@ def by_hand(tmp_path, maze, seed, gear, diff):
     return flat(json.loads(p.stdout.splitlines()[-1])), rpath
 
 
-def test_localcluster_equals_runs_one_by_one(tmp_path):
+@pytest.fixture(scope="module")
+def local2():
+    """One LocalCluster of 2 worker processes for the tests that only use it."""
+    from distributed import Client, LocalCluster
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
+            Client(cluster) as client:
+        yield client
+
+
+def test_localcluster_equals_runs_one_by_one(tmp_path, local2):
     out = str(tmp_path / "r.parquet")
-    df = mmsim.sweep(MAZES, "1-3", VARY, ["scripted"], out=out, workers=2, time_limit_s=TIME_LIMIT_S, mmsim=MMSIM)
+    df = mmsim.sweep(MAZES, "1-3", VARY, ["scripted"], out=out, client=local2, time_limit_s=TIME_LIMIT_S, mmsim=MMSIM)
     assert len(df) == 24 and df["run_key"].is_unique and df["run_error"].isna().all()
     for _, row in df.iterrows():
         gear, diff = row["vary.motor.left.gear_ratio"], row["vary.asymmetry.wheel_d_diff_m"]
@@ -187,10 +196,10 @@ def test_bad_vary_is_one_line_before_any_run(tmp_path, vary):
     assert "Traceback" not in q.stderr and not os.path.exists(out)
 
 
-def test_plot_rates_equal_the_table(tmp_path):
+def test_plot_rates_equal_the_table(tmp_path, local2):
     out = str(tmp_path / "p.parquet")
     # a robot too long for its turns touches walls: contact rates that are not all 0
-    df = mmsim.sweep(MAZES, "1-2", {"chassis.body.body_l_mm": [120, 150]}, ["firmware"], out=out, workers=2,
+    df = mmsim.sweep(MAZES, "1-2", {"chassis.body.body_l_mm": [120, 150]}, ["firmware"], out=out, client=local2,
                      time_limit_s=6, mmsim=MMSIM)
     for ext in ("png", "svg"):
         q = subprocess.run(MMSWEEP + ["plot", out, "-o", str(tmp_path / ("p." + ext)), "--dump-data",
