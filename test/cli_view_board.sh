@@ -77,7 +77,7 @@ ja=$(json "$T/a.json"); jb=$(json "$T/b.json")
 [ $rc -eq 1 ] && [ -n "$ja" ] && [ "$ja" = "$jb" ] && echo "$ja" | grep -q 'SW 5' \
   && ok "the same JSON with and without --screenshot" || bad "JSON differs (exit $rc): $(diff <(echo "$ja" | tr ',' '\n') <(echo "$jb" | tr ',' '\n') | head -5)"
 
-# ---- live clicks (800x600 window at (0, 0); hud_board_layout: switches 8..36, 40..68, .. y 76..104;
+# ---- live clicks (800x600 window at (0, 0); hud_board_layout: switches 8..36, 40..68, .. y 236..264;
 # Button x 140..228; Reset x 232..308; test_view.c checks these)
 if [ ! -x "$X" ]; then
   echo "SKIP cli_view_board.sh clicks: $X not built"
@@ -89,11 +89,11 @@ else
   SPID=$!
   "$X" wait mmsim 30 || bad "no window"
   waitfor 1 "SW 0" &&
-  "$X" click 22 90 && waitfor 1 "SW 1" &&      # switch 1: switches=1
-  "$X" click 184 90 && waitfor 1 "SW 16" &&    # BUTTON: down (the ladder reads > 800), up after 0.1 s
+  "$X" click 22 250 && waitfor 1 "SW 1" &&      # switch 1: switches=1
+  "$X" click 184 250 && waitfor 1 "SW 16" &&    # BUTTON: down (the ladder reads > 800), up after 0.1 s
   waitfor 2 "SW 1" &&
-  "$X" click 54 90 && waitfor 1 "SW 3" &&      # switch 2: switches=3
-  "$X" click 270 90 && waitfor 2 "HUD PANEL TEST" && waitfor 2 "SW 3" # RESET: the sketch starts again, the switches stay
+  "$X" click 54 250 && waitfor 1 "SW 3" &&      # switch 2: switches=3
+  "$X" click 270 250 && waitfor 2 "HUD PANEL TEST" && waitfor 2 "SW 3" # RESET: the sketch starts again, the switches stay
   "$X" key Escape
   wait $SPID; SPID=
   got=$(python3 -c "
