@@ -279,9 +279,10 @@ static const char *after_step(run_t *r, watch_t *w)
     if (o->gui && view_step(r->view, s)) return "window_closed";
     if (o->gui && view_connect_request(r->view, &cport, &cbaud)) hand_to_link(r, cport, cbaud);
     if (o->gui && r->drv->hands) gui_hands(r);
+    /* the time limit before the screenshot: a picture never changes how a run ends */
+    if (run_time_up(r, r->ctl->overtime ? RUN_OVERTIME_S : 0)) return "time_limit";
     if (o->shot && sim_time_s(s) >= o->shot_at_s) return "screenshot";
     double t = sim_time_s(s), x, y, h;
-    if (run_time_up(r, r->ctl->overtime ? RUN_OVERTIME_S : 0)) return "time_limit";
     if (s->step % 100 == 0 && r->ctl->watch_stall) {
         world_pose(s->world, &x, &y, &h);
         if (hypot(x - w->last_x, y - w->last_y) > 0.01) {
