@@ -17,6 +17,7 @@
 /* ODE pairs two geoms when either one's category meets the other's collide
  * bits, so each kind that must not meet another has its own category */
 #define MAX_CONTACTS 4
+#define WORLD_PARTS 8 /* most geoms the robot has: body, two skids, two tyres, two wheel sides */
 #define WORLD_CONTACT_STEP_S 0.00025 /* longest ODE step while the robot is near a wall, s */
 #define WORLD_NEAR_M 0.001 /* margin beyond a step's travel for "near a wall", m */
 /* Slowest a point of the robot may move for an impact to need the finer
@@ -45,6 +46,8 @@ struct world {
     int *wall_rank;         /* each box's place in the collision tree's walk (maze_order) */
     int *near_ids;          /* room for every box: the candidates of one robot part */
     int ranked;             /* every box has its place: maze contacts by cell (else ODE's tree walk) */
+    dGeomID part[WORLD_PARTS]; /* the robot's geoms in its space's order (ODE's), nparts of them */
+    int nparts;
     dJointID hand_lin, hand_yaw; /* world_hand: a hand's grip on the chassis (made on first use) */
     double carry_pose[3];   /* world_carry: where it was lifted from (x m, y m, heading rad) */
     int carried;
@@ -323,6 +326,9 @@ static void build_robot(world_t *w, double x, double y, double heading)
         wheel_geoms(w, s);
         wheel_joints(w, s, ww);
     }
+    int n = dSpaceGetNumGeoms(w->robot);
+    w->nparts = n < WORLD_PARTS ? n : WORLD_PARTS; /* 7 at most: always all of them */
+    for (int i = 0; i < w->nparts; i++) w->part[i] = dSpaceGetGeom(w->robot, i);
 }
 
 /* ODE's messages (not its errors): "LCP internal error, s <= 0" when the
@@ -420,28 +426,50 @@ static unsigned contact_kind(const world_t *w, dGeomID a, const dReal *p)
     return fabs(v) < WORLD_REAR_SOFT_M_S ? 1u << WORLD_CONTACT_REAR_SOFT : 1u << WORLD_CONTACT_REAR;
 }
 
+/* The body as the oriented box it is, not its bounds (a turning body's grow
+ * by 40 %): whether it comes within margin_m of a wall or post. */
+static int body_near(const world_t *w, double margin_m)
+{
+    const dReal *p = dGeomGetPosition(w->box), *R = dGeomGetRotation(w->box);
+    dVector3 len;
+    dGeomBoxGetLengths(w->box, len);
+    const double c[3] = { p[0], p[1], p[2] }, half[3] = { len[0] / 2, len[1] / 2, len[2] / 2 };
+    const double axis[3][3] = { { R[0], R[4], R[8] }, { R[1], R[5], R[9] }, { R[2], R[6], R[10] } };
+    return wallgrid_any_box(w->grid, c, axis, half, 0, w->model->cfg->world.wall_height_m, margin_m);
+}
+
+#define WORLD_UNION_SLACK_M 1e-9 /* the parts' joint bounds grown by this too, m: beyond any rounding of the finer tests */
+
 /* Whether every part of the robot is more than margin_m from every wall
- * and post (wallgrid): the body as its oriented box, the other parts by
- * their bounds; the tyre spheres (which meet only the floor) only with
- * tyres. A "clear" is certain, so the maze's collision tree is skipped only
- * where it would find no contact. */
+ * and post (wallgrid): first all the parts' bounds at once (the robot in
+ * the open: one query), then the body as its oriented box and the other
+ * parts by their bounds; the tyre spheres (which meet only the floor) only
+ * with tyres. A "clear" is certain, so the maze's contacts are looked for
+ * only where they may be. */
 static int clear_of_walls(const world_t *w, double margin_m, int tyres)
 {
-    for (int i = 0; i < dSpaceGetNumGeoms(w->robot); i++) {
-        dGeomID g = dSpaceGetGeom(w->robot, i);
-        if (!tyres && !(dGeomGetCollideBits(g) & CAT_STATIC)) continue;
-        if (g == w->box) { /* the body as the oriented box it is, not its bounds (a turning body's grow by 40 %) */
-            const dReal *p = dGeomGetPosition(g), *R = dGeomGetRotation(g);
-            dVector3 len;
-            dGeomBoxGetLengths(g, len);
-            const double c[3] = { p[0], p[1], p[2] }, half[3] = { len[0] / 2, len[1] / 2, len[2] / 2 };
-            const double axis[3][3] = { { R[0], R[4], R[8] }, { R[1], R[5], R[9] }, { R[2], R[6], R[10] } };
-            if (wallgrid_any_box(w->grid, c, axis, half, 0, w->model->cfg->world.wall_height_m, margin_m)) return 0;
+    dReal aabb[WORLD_PARTS][6];
+    double all[4] = { INFINITY, -INFINITY, INFINITY, -INFINITY }, e = margin_m + WORLD_UNION_SLACK_M;
+    int odd = 0;
+    for (int i = 0; i < w->nparts; i++) {
+        if (!tyres && !(dGeomGetCollideBits(w->part[i]) & CAT_STATIC)) continue;
+        const dReal *a = aabb[i];
+        dGeomGetAABB(w->part[i], aabb[i]);
+        odd |= !(a[0] <= a[1] && a[2] <= a[3]); /* a NaN: left to the finer tests */
+        if (a[0] - e < all[0]) all[0] = a[0] - e;
+        if (a[1] + e > all[1]) all[1] = a[1] + e;
+        if (a[2] - e < all[2]) all[2] = a[2] - e;
+        if (a[3] + e > all[3]) all[3] = a[3] + e;
+    }
+    if (!odd && !wallgrid_any(w->grid, all)) return 1;
+    for (int i = 0; i < w->nparts; i++) {
+        if (!tyres && !(dGeomGetCollideBits(w->part[i]) & CAT_STATIC)) continue;
+        if (w->part[i] == w->box) {
+            if (body_near(w, margin_m)) return 0;
             continue;
         }
-        dReal aabb[6];
-        dGeomGetAABB(g, aabb);
-        const double r[4] = { aabb[0] - margin_m, aabb[1] + margin_m, aabb[2] - margin_m, aabb[3] + margin_m };
+        const dReal *a = aabb[i];
+        const double r[4] = { a[0] - margin_m, a[1] + margin_m, a[2] - margin_m, a[3] + margin_m };
         if (wallgrid_any(w->grid, r)) return 0;
     }
     return 1;
@@ -473,8 +501,8 @@ static void near_cb(void *data, dGeomID a, dGeomID b);
  * spheres meet none), in the tree's order (maze_order). */
 static void maze_collide(world_t *w)
 {
-    for (int i = 0; i < dSpaceGetNumGeoms(w->robot); i++) {
-        dGeomID g = dSpaceGetGeom(w->robot, i);
+    for (int i = 0; i < w->nparts; i++) {
+        dGeomID g = w->part[i];
         if (!dGeomIsEnabled(g) || !((dGeomGetCategoryBits(g) & (CAT_ROBOT | CAT_RAY | CAT_WHEEL_SIDE)) || (dGeomGetCollideBits(g) & CAT_STATIC))) continue;
         dReal a[6];
         dGeomGetAABB(g, a);
@@ -500,7 +528,7 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
         /* sub_steps' finding holds here: the same state, a smaller margin */
         else if (!w->clear_now && !clear_of_walls(w, WORLD_TOUCH_SLACK_M, 0)) {
             /* ODE walks the smaller space's geoms against the other: the robot's, unless the maze has fewer boxes */
-            if (w->ranked && w->nwalls > dSpaceGetNumGeoms(w->robot)) maze_collide(w);
+            if (w->ranked && w->nwalls > w->nparts) maze_collide(w);
             else dSpaceCollide2(a, b, data, near_cb);
         }
         return;
