@@ -5,8 +5,9 @@
  * the segment truly meets (an exact slab test over all boxes) is visited,
  * each box at most once; and when the caller reports its nearest hit, the
  * walk that stops early still finds the nearest box of all; and the
- * rectangle query that lets a robot far from every wall skip the maze's
- * collision tree answers as a test of every box would. */
+ * rectangle queries that let a robot far from every wall skip the maze's
+ * collision tree, and list the boxes near a robot part, answer as a test
+ * of every box would. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -182,6 +183,39 @@ static void test_any_overlap(void **state)
     wallgrid_free(g);
 }
 
+/* wallgrid_boxes: every box that overlaps the rectangle is listed, each
+ * once, none more than a micrometre away; a NaN rectangle lists them all. */
+static void test_boxes_listed(void **state)
+{
+    (void)state;
+    layout();
+    wallgrid_t *g = wallgrid_build(CELL_M, SIDE, SIDE, nbox, (const double (*)[4])box);
+    assert_non_null(g);
+    static int out[MAXBOX], count[MAXBOX];
+    int listed = 0;
+    for (int r = 0; r < RAYS; r++) {
+        double span = (SIDE + 2) * CELL_M, x = uniform() * span - CELL_M, y = uniform() * span - CELL_M;
+        double w = uniform() * 0.2, h = uniform() * 0.2;
+        const double rect[4] = { x, x + w, y, y + h };
+        int n = wallgrid_boxes(g, rect, out);
+        memset(count, 0, sizeof count);
+        for (int k = 0; k < n; k++) count[out[k]]++;
+        for (int i = 0; i < nbox; i++) {
+            int hit = box[i][0] <= rect[1] && rect[0] <= box[i][1] && box[i][2] <= rect[3] && rect[2] <= box[i][3];
+            int close = box[i][0] - 1e-6 <= rect[1] && rect[0] <= box[i][1] + 1e-6 && box[i][2] - 1e-6 <= rect[3] &&
+                        rect[2] <= box[i][3] + 1e-6;
+            if (count[i] > 1) fail_msg("rect %d: box %d listed %d times", r, i, count[i]);
+            if (hit && !count[i]) fail_msg("rect %d: box %d overlaps, not listed", r, i);
+            if (!close && count[i]) fail_msg("rect %d: box %d far, listed", r, i);
+        }
+        listed += n;
+    }
+    assert_true(listed > 0);
+    const double bad[4] = { NAN, 0, 0, 1 };
+    assert_int_equal(wallgrid_boxes(g, bad, out), nbox);
+    wallgrid_free(g);
+}
+
 /* wallgrid_any_box: whenever a point of a turned, slightly tilted box lies
  * inside a wall or post (0 to 50 mm high), the answer is "near"; and a box
  * in the open is "clear". */
@@ -223,6 +257,7 @@ int main(void)
         cmocka_unit_test(test_early_stop_keeps_nearest),
         cmocka_unit_test(test_any_overlap),
         cmocka_unit_test(test_any_box),
+        cmocka_unit_test(test_boxes_listed),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

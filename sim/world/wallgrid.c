@@ -19,10 +19,12 @@ struct wallgrid {
     unsigned *seen, stamp;   /* per box: the last walk that visited it */
 };
 
+/* The cell index along one axis, clamped to the grid: below 0 is the first
+ * cell, and from 0 up truncation is floor. */
 static int cell_of(const wallgrid_t *g, double v_m, int n)
 {
-    double c = floor((v_m - g->origin_m) / g->cell_m);
-    return c < 0 ? 0 : c > n - 1 ? n - 1 : (int)c;
+    double c = (v_m - g->origin_m) / g->cell_m;
+    return c < 0 ? 0 : c >= n - 1 ? n - 1 : (int)c;
 }
 
 /* The cells box a covers: [x0, x1] x [y0, y1]. */
@@ -91,6 +93,15 @@ void wallgrid_free(wallgrid_t *g)
     free(g);
 }
 
+/* A new walk: every box unvisited. */
+static void next_stamp(wallgrid_t *g)
+{
+    if (++g->stamp == 0) { /* the stamp wrapped: forget every visit */
+        memset(g->seen, 0, sizeof *g->seen * (size_t)(g->n + 1));
+        g->stamp = 1;
+    }
+}
+
 /* A segment p + t d, t in [0, 1], with 1 / d for the slab tests. */
 typedef struct {
     double p[2], d[2], inv[2];
@@ -142,10 +153,7 @@ static double visit_cell(wallgrid_t *g, int x, int y, const seg_t *s, wallgrid_v
  * already, and every box there was filed in it). */
 void wallgrid_ray(wallgrid_t *g, const double p[2], const double d[2], wallgrid_visit_fn visit, void *ctx)
 {
-    if (++g->stamp == 0) { /* the stamp wrapped: forget every visit */
-        memset(g->seen, 0, sizeof *g->seen * (size_t)(g->n + 1));
-        g->stamp = 1;
-    }
+    next_stamp(g);
     if (!isfinite(p[0]) || !isfinite(p[1]) || !isfinite(d[0]) || !isfinite(d[1])) return;
     const seg_t s = { { p[0], p[1] }, { d[0], d[1] }, { 1.0 / d[0], 1.0 / d[1] } };
     double x0 = (p[0] - g->origin_m) / g->cell_m, y0 = (p[1] - g->origin_m) / g->cell_m;
@@ -181,6 +189,29 @@ int wallgrid_any(const wallgrid_t *g, const double r[4])
     return 0;
 }
 
+int wallgrid_boxes(wallgrid_t *g, const double r[4], int *out)
+{
+    int n = 0, c[4];
+    if (!(r[0] <= r[1] && r[2] <= r[3])) {
+        for (int i = 0; i < g->n; i++) out[i] = i;
+        return g->n;
+    }
+    next_stamp(g);
+    span(g, r, c);
+    for (int y = c[2]; y <= c[3]; y++)
+        for (int x = c[0]; x <= c[1]; x++) {
+            int k = y * g->nx + x;
+            for (int j = g->start[k]; j < g->start[k + 1]; j++) {
+                int i = g->id[j];
+                const double *b = g->bound[i];
+                if (g->seen[i] == g->stamp || b[0] > r[1] || r[0] > b[1] || b[2] > r[3] || r[2] > b[3]) continue;
+                g->seen[i] = g->stamp;
+                out[n++] = i;
+            }
+        }
+    return n;
+}
+
 /* Separated along unit axis u: the two centres' distance along u beyond the
  * sum of the two boxes' half extents along u (and the margin). */
 static int apart_along(const double u[3], const double d[3], const double ea[3], const double axis[3][3],
@@ -203,8 +234,12 @@ static int box_apart(const wallgrid_t *g, int i, const double c[3], const double
     const double d[3] = { 0.5 * (b[0] + b[1]) - c[0], 0.5 * (b[2] + b[3]) - c[1], 0.5 * (z_lo + z_hi) - c[2] };
     const double ea[3] = { 0.5 * (b[1] - b[0]), 0.5 * (b[3] - b[2]), 0.5 * (z_hi - z_lo) };
     static const double world[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+    /* the world's axes first: along x and y that is the floor bounds' test,
+     * which rejects most boxes of a cell */
     for (int k = 0; k < 3; k++)
-        if (apart_along(world[k], d, ea, axis, half, margin_m) || apart_along(axis[k], d, ea, axis, half, margin_m)) return 1;
+        if (apart_along(world[k], d, ea, axis, half, margin_m)) return 1;
+    for (int k = 0; k < 3; k++)
+        if (apart_along(axis[k], d, ea, axis, half, margin_m)) return 1;
     return 0;
 }
 

@@ -32,6 +32,11 @@ void wallgrid_ray(wallgrid_t *g, const double p[2], const double d[2], wallgrid_
  * r = { min x, max x, min y, max y }, m. */
 int wallgrid_any(const wallgrid_t *g, const double r[4]);
 
+/* The boxes whose floor bounds (grown as above) overlap the rectangle
+ * r = { min x, max x, min y, max y }, m, each once, into out (room for
+ * every box); how many. Every box when r is not a rectangle (a NaN). */
+int wallgrid_boxes(wallgrid_t *g, const double r[4], int *out);
+
 /* Whether any box (its floor bounds grown as above, from z_lo to z_hi, m)
  * comes within margin_m of an oriented box: centre c (m), unit axes
  * axis[0..2] (each a column of the box's rotation in the world), half

@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdarg.h>
 #include <ode/ode.h>
+#include <stdint.h>
 #include <stdlib.h>
 
 #define CAT_STATIC 1u
@@ -16,6 +17,7 @@
 /* ODE pairs two geoms when either one's category meets the other's collide
  * bits, so each kind that must not meet another has its own category */
 #define MAX_CONTACTS 4
+#define WORLD_PARTS 8 /* most geoms the robot has: body, two skids, two tyres, two wheel sides */
 #define WORLD_CONTACT_STEP_S 0.00025 /* longest ODE step while the robot is near a wall, s */
 #define WORLD_NEAR_M 0.001 /* margin beyond a step's travel for "near a wall", m */
 /* Slowest a point of the robot may move for an impact to need the finer
@@ -39,13 +41,20 @@ struct world {
     dGeomID *wall;          /* the maze's boxes (posts and walls), by wallgrid id */
     double (*wall_bounds)[4]; /* their floor bounds: min x, max x, min y, max y, m */
     int nwalls;
-    wallgrid_t *grid;       /* the boxes by cell, for rays */
+    wallgrid_t *grid;       /* the boxes by cell, for rays and contacts */
+    double (*wall_aabb)[6]; /* each box's bounds as ODE has them (dGeomGetAABB), m */
+    int *wall_rank;         /* each box's place in the collision tree's walk (maze_order) */
+    int *near_ids;          /* room for every box: the candidates of one robot part */
+    int ranked;             /* every box has its place: maze contacts by cell (else ODE's tree walk) */
+    dGeomID part[WORLD_PARTS]; /* the robot's geoms in its space's order (ODE's), nparts of them */
+    int nparts;
     dJointID hand_lin, hand_yaw; /* world_hand: a hand's grip on the chassis (made on first use) */
     double carry_pose[3];   /* world_carry: where it was lifted from (x m, y m, heading rad) */
     int carried;
     double box_offset[3];  /* chassis box centre in the chassis body frame */
     double com[3];         /* chassis centre of mass in the robot frame (world_place) */
     int touching, touched_last;
+    int clear_now;         /* sub_steps found every part clear of the walls by at least a millimetre, in the state before the next ODE step */
     unsigned collisions;
     unsigned step_kinds, episode_kinds; /* WORLD_CONTACT_* bits: this step's, this episode's */
     unsigned kind_count[WORLD_CONTACT_KINDS]; /* finished episodes by kind */
@@ -98,6 +107,52 @@ static int build_maze(world_t *w, const maze_t *m)
         }
     w->grid = wallgrid_build(cell, m->width, m->height, w->nwalls, (const double (*)[4])w->wall_bounds);
     return w->grid ? 0 : -1;
+}
+
+/* maze_order's callback: the static box of the pair gets the next place. */
+static void rank_cb(void *data, dGeomID a, dGeomID b)
+{
+    world_t *w = data;
+    dGeomID g = dGeomGetCategoryBits(a) & CAT_STATIC ? a : b;
+    int id = (int)(intptr_t)dGeomGetData(g);
+    if (id >= 0 && id < w->nwalls && w->wall[id] == g && w->wall_rank[id] < 0) w->wall_rank[id] = w->ranked++;
+}
+
+/* The order in which ODE's collision tree meets the maze's boxes: its walk
+ * goes through its blocks depth first, each block's boxes in the block's
+ * order, so any walk meets the boxes it reaches in the order a walk over
+ * the whole maze meets them. That walk is taken once here (a box over the
+ * whole maze against the tree), so maze_collide can hand ODE's own pairs to
+ * near_cb in ODE's order, and the contacts come out the same. Also each
+ * box's bounds as ODE computes them. -1 when out of memory. */
+static int maze_order(world_t *w)
+{
+    size_t n = (size_t)w->nwalls + 1;
+    w->wall_aabb = malloc(sizeof *w->wall_aabb * n);
+    w->wall_rank = malloc(sizeof *w->wall_rank * n);
+    w->near_ids = malloc(sizeof *w->near_ids * n);
+    if (!w->wall_aabb || !w->wall_rank || !w->near_ids) return -1;
+    double lo[2] = { INFINITY, INFINITY }, hi[2] = { -INFINITY, -INFINITY }, top_m = 0;
+    for (int i = 0; i < w->nwalls; i++) {
+        dGeomSetData(w->wall[i], (void *)(intptr_t)i);
+        w->wall_rank[i] = -1;
+        dReal a[6];
+        dGeomGetAABB(w->wall[i], a);
+        for (int k = 0; k < 6; k++) w->wall_aabb[i][k] = a[k];
+        for (int k = 0; k < 2; k++) lo[k] = fmin(lo[k], a[2 * k]), hi[k] = fmax(hi[k], a[2 * k + 1]);
+        top_m = fmax(top_m, a[5]);
+    }
+    if (w->nwalls == 0) return 0;
+    /* a box 1 m beyond the maze's bounds all round */
+    dGeomID all = dCreateBox(0, hi[0] - lo[0] + 2, hi[1] - lo[1] + 2, top_m + 2);
+    dGeomSetPosition(all, (lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, top_m / 2);
+    dGeomSetCategoryBits(all, CAT_ROBOT);
+    dGeomSetCollideBits(all, CAT_STATIC);
+    w->ranked = 0;
+    dSpaceCollide2(all, (dGeomID)w->statics, w, rank_cb);
+    dGeomDestroy(all);
+    w->ranked = w->ranked == w->nwalls;
+    return 0;
 }
 
 /* Robot-frame point -> world point for a robot at (x, y) facing heading. */
@@ -271,6 +326,9 @@ static void build_robot(world_t *w, double x, double y, double heading)
         wheel_geoms(w, s);
         wheel_joints(w, s, ww);
     }
+    int n = dSpaceGetNumGeoms(w->robot);
+    w->nparts = n < WORLD_PARTS ? n : WORLD_PARTS; /* 7 at most: always all of them */
+    for (int i = 0; i < w->nparts; i++) w->part[i] = dSpaceGetGeom(w->robot, i);
 }
 
 /* ODE's messages (not its errors): "LCP internal error, s <= 0" when the
@@ -317,7 +375,7 @@ world_t *world_create(const sim_model_t *model, const maze_t *m, double x_m, dou
     dGeomSetCategoryBits(w->floor, CAT_FLOOR);
     dGeomSetCollideBits(w->floor, CAT_ROBOT | CAT_TYRE);
     w->contacts = dJointGroupCreate(0);
-    if (build_maze(w, m) != 0) {
+    if (build_maze(w, m) != 0 || maze_order(w) != 0) {
         world_destroy(w);
         return NULL;
     }
@@ -337,6 +395,9 @@ void world_destroy(world_t *w)
     wallgrid_free(w->grid);
     free(w->wall);
     free(w->wall_bounds);
+    free(w->wall_aabb);
+    free(w->wall_rank);
+    free(w->near_ids);
     dJointGroupDestroy(w->contacts);
     dSpaceDestroy(w->top); /* and every geom in it */
     dWorldDestroy(w->world);
@@ -365,26 +426,50 @@ static unsigned contact_kind(const world_t *w, dGeomID a, const dReal *p)
     return fabs(v) < WORLD_REAR_SOFT_M_S ? 1u << WORLD_CONTACT_REAR_SOFT : 1u << WORLD_CONTACT_REAR;
 }
 
-/* Whether every part of the robot is more than margin_m from every wall
- * and post (wallgrid): the body as its oriented box, the other parts by
- * their bounds. A "clear" is certain, so the maze's collision tree is
- * skipped only where it would find no contact. */
-static int clear_of_walls(const world_t *w, double margin_m)
+/* The body as the oriented box it is, not its bounds (a turning body's grow
+ * by 40 %): whether it comes within margin_m of a wall or post. */
+static int body_near(const world_t *w, double margin_m)
 {
-    for (int i = 0; i < dSpaceGetNumGeoms(w->robot); i++) {
-        dGeomID g = dSpaceGetGeom(w->robot, i);
-        if (g == w->box) { /* the body as the oriented box it is, not its bounds (a turning body's grow by 40 %) */
-            const dReal *p = dGeomGetPosition(g), *R = dGeomGetRotation(g);
-            dVector3 len;
-            dGeomBoxGetLengths(g, len);
-            const double c[3] = { p[0], p[1], p[2] }, half[3] = { len[0] / 2, len[1] / 2, len[2] / 2 };
-            const double axis[3][3] = { { R[0], R[4], R[8] }, { R[1], R[5], R[9] }, { R[2], R[6], R[10] } };
-            if (wallgrid_any_box(w->grid, c, axis, half, 0, w->model->cfg->world.wall_height_m, margin_m)) return 0;
+    const dReal *p = dGeomGetPosition(w->box), *R = dGeomGetRotation(w->box);
+    dVector3 len;
+    dGeomBoxGetLengths(w->box, len);
+    const double c[3] = { p[0], p[1], p[2] }, half[3] = { len[0] / 2, len[1] / 2, len[2] / 2 };
+    const double axis[3][3] = { { R[0], R[4], R[8] }, { R[1], R[5], R[9] }, { R[2], R[6], R[10] } };
+    return wallgrid_any_box(w->grid, c, axis, half, 0, w->model->cfg->world.wall_height_m, margin_m);
+}
+
+#define WORLD_UNION_SLACK_M 1e-9 /* the parts' joint bounds grown by this too, m: beyond any rounding of the finer tests */
+
+/* Whether every part of the robot is more than margin_m from every wall
+ * and post (wallgrid): first all the parts' bounds at once (the robot in
+ * the open: one query), then the body as its oriented box and the other
+ * parts by their bounds; the tyre spheres (which meet only the floor) only
+ * with tyres. A "clear" is certain, so the maze's contacts are looked for
+ * only where they may be. */
+static int clear_of_walls(const world_t *w, double margin_m, int tyres)
+{
+    dReal aabb[WORLD_PARTS][6];
+    double all[4] = { INFINITY, -INFINITY, INFINITY, -INFINITY }, e = margin_m + WORLD_UNION_SLACK_M;
+    int odd = 0;
+    for (int i = 0; i < w->nparts; i++) {
+        if (!tyres && !(dGeomGetCollideBits(w->part[i]) & CAT_STATIC)) continue;
+        const dReal *a = aabb[i];
+        dGeomGetAABB(w->part[i], aabb[i]);
+        odd |= !(a[0] <= a[1] && a[2] <= a[3]); /* a NaN: left to the finer tests */
+        if (a[0] - e < all[0]) all[0] = a[0] - e;
+        if (a[1] + e > all[1]) all[1] = a[1] + e;
+        if (a[2] - e < all[2]) all[2] = a[2] - e;
+        if (a[3] + e > all[3]) all[3] = a[3] + e;
+    }
+    if (!odd && !wallgrid_any(w->grid, all)) return 1;
+    for (int i = 0; i < w->nparts; i++) {
+        if (!tyres && !(dGeomGetCollideBits(w->part[i]) & CAT_STATIC)) continue;
+        if (w->part[i] == w->box) {
+            if (body_near(w, margin_m)) return 0;
             continue;
         }
-        dReal aabb[6];
-        dGeomGetAABB(g, aabb);
-        const double r[4] = { aabb[0] - margin_m, aabb[1] + margin_m, aabb[2] - margin_m, aabb[3] + margin_m };
+        const dReal *a = aabb[i];
+        const double r[4] = { a[0] - margin_m, a[1] + margin_m, a[2] - margin_m, a[3] + margin_m };
         if (wallgrid_any(w->grid, r)) return 0;
     }
     return 1;
@@ -407,12 +492,45 @@ static void soft_contact(const world_t *w, dGeomID a, int wall, int n, dContact 
     c->surface.soft_cfm = 1.0 / (h * kp + kd);
 }
 
+static void near_cb(void *data, dGeomID a, dGeomID b);
+
+/* The pairs ODE's dSpaceCollide2 of the robot's space and the maze's tree
+ * would make, from the cells instead of the tree: for each robot part in
+ * its space's order, the enabled boxes whose bounds meet the part's (ODE's
+ * own bounds and its test, category bits as ODE pairs them: the tyre
+ * spheres meet none), in the tree's order (maze_order). */
+static void maze_collide(world_t *w)
+{
+    for (int i = 0; i < w->nparts; i++) {
+        dGeomID g = w->part[i];
+        if (!dGeomIsEnabled(g) || !((dGeomGetCategoryBits(g) & (CAT_ROBOT | CAT_RAY | CAT_WHEEL_SIDE)) || (dGeomGetCollideBits(g) & CAT_STATIC))) continue;
+        dReal a[6];
+        dGeomGetAABB(g, a);
+        const double r[4] = { a[0], a[1], a[2], a[3] };
+        int *id = w->near_ids, n = wallgrid_boxes(w->grid, r, id), m = 0;
+        for (int k = 0; k < n; k++) {
+            const double *b = w->wall_aabb[id[k]];
+            if (!dGeomIsEnabled(w->wall[id[k]]) || a[0] > b[1] || a[1] < b[0] || a[2] > b[3] || a[3] < b[2] || a[4] > b[5] || a[5] < b[4]) continue;
+            int v = id[k], j = m++;
+            for (; j > 0 && w->wall_rank[id[j - 1]] > w->wall_rank[v]; j--) id[j] = id[j - 1];
+            id[j] = v;
+        }
+        for (int k = 0; k < m; k++) near_cb(w, g, w->wall[id[k]]);
+    }
+}
+
 static void near_cb(void *data, dGeomID a, dGeomID b)
 {
     world_t *w = data;
     if (dGeomIsSpace(a) || dGeomIsSpace(b)) {
         int maze = a == (dGeomID)w->statics || b == (dGeomID)w->statics;
-        if (!maze || !clear_of_walls(w, WORLD_TOUCH_SLACK_M)) dSpaceCollide2(a, b, data, near_cb);
+        if (!maze) dSpaceCollide2(a, b, data, near_cb);
+        /* sub_steps' finding holds here: the same state, a smaller margin */
+        else if (!w->clear_now && !clear_of_walls(w, WORLD_TOUCH_SLACK_M, 0)) {
+            /* ODE walks the smaller space's geoms against the other: the robot's, unless the maze has fewer boxes */
+            if (w->ranked && w->nwalls > w->nparts) maze_collide(w);
+            else dSpaceCollide2(a, b, data, near_cb);
+        }
         return;
     }
     if (is_robot_part(w, b)) { dGeomID t = a; a = b; b = t; }
@@ -510,14 +628,16 @@ static void brake_wheels(world_t *w)
  * near a wall (within a step's travel of its fastest point) as many as keep
  * each at most WORLD_CONTACT_STEP_S, so a wall is met at most that much
  * travel late and its spring is integrated alike at every step. */
-static int sub_steps(const world_t *w, double h_s)
+static int sub_steps(world_t *w, double h_s)
 {
     if (h_s <= WORLD_CONTACT_STEP_S) return 1;
     const dReal *v = dBodyGetLinearVel(w->chassis), *om = dBodyGetAngularVel(w->chassis);
     const simcfg_t *c = w->model->cfg;
     double reach_m = 0.5 * hypot(c->robot.body_w_m, c->robot.body_l_m) + fabs(w->com[1]); /* a body corner from the centre of mass */
     double fastest = hypot(v[0], v[1]) + fabs(om[2]) * reach_m;
-    if (fastest < WORLD_IMPACT_M_S || clear_of_walls(w, fastest * h_s + WORLD_NEAR_M)) return 1;
+    if (fastest < WORLD_IMPACT_M_S) return 1;
+    w->clear_now = clear_of_walls(w, fastest * h_s + WORLD_NEAR_M, 1);
+    if (w->clear_now) return 1;
     return (int)ceil(h_s / WORLD_CONTACT_STEP_S - 1e-9);
 }
 
@@ -537,6 +657,7 @@ void world_step(world_t *w, const motor_drive_t drive[2])
         dSpaceCollide(w->top, w, near_cb);
         if (w->model->solver == SIM_SOLVER_EXACT) dWorldStep(w->world, w->h_s);
         else dWorldQuickStep(w->world, w->h_s);
+        w->clear_now = 0;
         dJointGroupEmpty(w->contacts);
     }
     w->brake_nm = 0;

@@ -10,7 +10,11 @@
  * Static geoms (floor category 1, walls and posts category 1) sit in a
  * quadtree space and collide only with the robot (category 2): no
  * static-static pairs (platform facts: one hash space for everything costs
- * ~200 us per 1 ms step, a wall quadtree 16-18 us). */
+ * ~200 us per 1 ms step, a wall quadtree 16-18 us). The robot's parts
+ * meet the walls and posts of the cells their bounds overlap (wallgrid),
+ * in the order the quadtree's walk would meet them, and only while some
+ * part comes within a micrometre of one; the tyre spheres meet only the
+ * floor. Rays (IR, ToF) walk the same cells. */
 #ifndef WORLD_H
 #define WORLD_H
 
