@@ -146,9 +146,37 @@ static void start_mouse(void)
     ukb_console_printf_P(PSTR("go"));
 }
 
+/* The start gesture, as UKMARSBOT's own firmware waits for it: armed (r,
+ * or switches 1 at power-on), the mouse starts when a hand held over the
+ * first forward sensor (hal_ir index 0: lfs, or the basic board's front
+ * one) is taken away. Held: its reading above UKB_HAND_X times its front
+ * calibration (standing in the start cell it reads ~0.1 of it; a hand 20
+ * mm away ~5); away: below that calibration. */
+#define UKB_HAND_X 3u
+static uint8_t armed; /* 0, 1 armed, 2 the hand seen */
+
+static void arm_step(void)
+{
+    uint16_t r = hal_ir_raw(0), ref = walls_ir_cal()->front_ref[0];
+    if (armed == 1 && r > UKB_HAND_X * ref) armed = 2;
+    if (armed == 2 && r < ref) {
+        armed = 0;
+        start_mouse();
+    }
+}
+
+static void arm(void)
+{
+    if (running) return;
+    emitters(1);
+    armed = 1;
+    ukb_console_printf_P(PSTR("armed: a hand over the front sensor starts"));
+}
+
 static void stop_mouse(void)
 {
     running = 0;
+    armed = 0;
     hal_motor_set(0, 0);
     emitters(1); /* the console's IR readings (i) light them again */
     PORTD &= (uint8_t)~_BV(UKB_LED_USER_BIT);
@@ -203,7 +231,7 @@ static void command(char c)
     switch (c) {
     case 'h': case '?':
         ukb_console_printf_P(PSTR("i IR, w walls, c calibrate the sides, f the front, b battery, s switches"));
-        ukb_console_printf_P(PSTR("e encoders, m motor test, g go, x stop, k stack"));
+        ukb_console_printf_P(PSTR("e encoders, m motor test, g go, r go at a hand over the front, x stop, k stack"));
         break;
     case 'i': report_ir(); break;
     case 'w': report_walls(); break;
@@ -213,6 +241,7 @@ static void command(char c)
     case 'e': ukb_console_printf_P(PSTR("encoders %ld %ld"), (long)hal_encoder(HAL_LEFT), (long)hal_encoder(HAL_RIGHT)); break;
     case 'm': motor_test(); break;
     case 'g': start_mouse(); break;
+    case 'r': arm(); break;
     case 'x': stop_mouse(); break;
     case 'k':
         ukb_console_printf_P(PSTR("stack unused %u B, overruns %u, log lines dropped %u"), stack_unused(), overruns,
@@ -242,10 +271,12 @@ int main(void)
                          (unsigned)HAL_TICK_HZ);
     ukb_console_printf_P(PSTR("battery %u mV, switches %u; h for help"), hal_battery_mv(), ukb_switches());
     calibration_load();
+    if (ukb_switches() == 1) arm();
     for (;;) {
         int c = ukb_console_getc();
         if (c >= 0) command((char)c);
         if (running) fw_loop();
+        else if (armed) arm_step();
         else if (ukb_switches() == UKB_BUTTON) start_mouse();
         if (!test_reported && !motor_test_left) {
             test_reported = 1;
