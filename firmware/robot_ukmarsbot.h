@@ -2,14 +2,39 @@
  * V1.3 mainboard with the advanced wall sensor board, robots/ukmarsbot.ini).
  * `make firmware-ukmarsbot` and platformio.ini's [env:ukmarsbot] force-include
  * it (-include robot_ukmarsbot.h); it defines ROBOT_CONFIG_H, so
- * robot_config.h (the paper's robot) is then skipped. Every name
+ * robot_config.h (the paper's robot) is then skipped. The basic build
+ * (UKB_SENSOR_BOARD=basic) is robots/ukmarsbot-basic-12.ini. Every name
  * robot_config.h defines is defined here too. Sources: robots/ukmarsbot.ini
  * (its `; source:` lines: ORION's published figures, mazerunner-core
  * config-robot-orion.h) and the IR curve measured in mmsim (below). */
 #ifndef ROBOT_CONFIG_H
 #define ROBOT_CONFIG_H
 
-/* ---- geometry (robots/ukmarsbot.ini [chassis.body], [encoder.*]) ---- */
+#ifdef UKB_SENSOR_BOARD_BASIC
+/* ---- the basic build: robots/ukmarsbot-basic-12.ini (12-PPR encoders,
+ * 19.55:1 gears, 32 mm wheels, the same chassis and sensor positions) ---- */
+#define RC_CELL_MM 180.0f            /* classic maze pitch */
+#define RC_WALL_MM 12.0f             /* wall thickness */
+#define RC_WHEEL_DIAMETER_MM 32.0f   /* wheel_left_d_mm, wheel_right_d_mm */
+#define RC_TRACK_MM 75.0f            /* wheel_track_mm */
+#define RC_ODOM_TRACK_MM 75.0f
+#define RC_COUNTS_PER_REV 234.6f     /* encoder_ppr 12 (both edges of the XOR) x gear_ratio 19.55 */
+#define RC_MM_PER_COUNT (3.14159265f * RC_WHEEL_DIAMETER_MM / RC_COUNTS_PER_REV) /* 0.4285 mm */
+/* [motor.*] no_load_rpm 1050 at the wheel, 6 V: 1759 mm/s, 293 mm/s per V
+ * x 5.865 mV */
+#define RC_MM_S_PER_CMD 1.719f
+/* no_load_a 0.0140 x (6 V / stall_a 0.736 + driver_r_ohm 0.5 = 8.65 ohm)
+ * = 0.121 V = 21 steps */
+#define RC_CMD_FRICTION 21.0f
+/* no measured time constants: ORION's (0.190 s forward, 0.210 s turning)
+ * scaled by (Km / ORION's)^2 = (293 / 475)^2 (the motor's damping grows
+ * with its torque per volt, the same chassis): 0.072 s and 0.080 s;
+ * 0.072 / 293 = 0.246 mV per mm/s^2 = 0.0419 steps; turning 0.080 / 323
+ * (ORION's turning Km over its forward one, 523.5 / 475, times 293) */
+#define RC_CMD_PER_MM_S2 0.0419f
+#define RC_CMD_PER_ARC_MM_S2 0.0422f
+#else
+/* ---- ORION: geometry (robots/ukmarsbot.ini [chassis.body], [encoder.*]) ---- */
 #define RC_CELL_MM 180.0f            /* classic maze pitch */
 #define RC_WALL_MM 12.0f             /* wall thickness */
 #define RC_WHEEL_DIAMETER_MM 33.98f  /* the mean of wheel_left_d_mm 34.06 and wheel_right_d_mm 33.90 */
@@ -20,12 +45,6 @@
 /* each wheel's own: [measured.orion] counts_500mm_left 1918, _right 1927 */
 #define RC_MM_PER_COUNT_LEFT (500.0f / 1918.0f)
 #define RC_MM_PER_COUNT_RIGHT (500.0f / 1927.0f)
-/* the robot starts backed against the start cell's rear wall ([chassis.body]
- * start = back_to_wall): rear 0.5 mm off the wall's face (84 mm behind the
- * centre), body_l_mm 100, axle_y_mm -14 behind the body's centre: the axle
- * 84 - 0.5 - 50 + 14 = 47.5 mm behind the centre */
-#define RC_START_BEHIND_MM 47.5f
-
 /* ---- motor, for feed-forward (1023 = 6 V: hal/ukmarsbot UKB_MOTOR_REF_MV;
  * one command step is 5.865 mV) ---- */
 /* [measured.orion] fwd_km_mm_s_v 475: 475 mm/s per V x 5.865 mV */
@@ -33,12 +52,20 @@
 /* the no-load current's voltage, [motor.*] no_load_a 0.02119 x (6 V /
  * stall_a 0.736 + driver_r_ohm 0.5 = 8.65 ohm) = 0.183 V = 31 steps */
 #define RC_CMD_FRICTION 31.0f
-#define RC_FRICTION_RAMP_MM_S 20.0f
 /* fwd_tm_s 0.190 / fwd_km 475 = 0.400 mV per mm/s^2 = 0.0682 steps */
 #define RC_CMD_PER_MM_S2 0.0682f
 /* rot_km_deg_s_v 775 deg/s per V = 523.5 mm/s of wheel arc (38.7 mm
  * radius); rot_tm_s 0.210 / 523.5 = 0.401 mV per mm/s^2 = 0.0684 steps */
 #define RC_CMD_PER_ARC_MM_S2 0.0684f
+#endif
+
+/* the robot starts backed against the start cell's rear wall ([chassis.body]
+ * start = back_to_wall): rear 0.5 mm off the wall's face (84 mm behind the
+ * centre), body_l_mm 100, axle_y_mm -14 behind the body's centre: the axle
+ * 84 - 0.5 - 50 + 14 = 47.5 mm behind the centre */
+#define RC_START_BEHIND_MM 47.5f
+#define RC_FRICTION_RAMP_MM_S 20.0f /* the friction term ramps in over this speed (robot_config.h) */
+
 #define RC_CMD_MAX 1023
 #define RC_CMD_FF_MAX 923.0f         /* as the paper's robot: 100 steps for the controller */
 

@@ -43,9 +43,9 @@ void walls_setup(void)
  * left, front left, front right, right; 255 none */
 static uint8_t ir_of(uint8_t role)
 {
-    static const uint8_t advanced[4] = { 1, 0, 3, 2 }, basic[4] = { 2, 0, 0, 1 };
+    static const uint8_t advanced[4] HAL_FLASH = { 1, 0, 3, 2 }, basic[4] HAL_FLASH = { 2, 0, 0, 1 };
     uint8_t n = hal_ir_count();
-    return n == 4 ? advanced[role] : n == 3 ? basic[role] : 255;
+    return n == 4 ? hal_flash_u8(&advanced[role]) : n == 3 ? hal_flash_u8(&basic[role]) : 255;
 }
 
 hal_distance_t walls_distance(uint8_t sensor)

@@ -53,7 +53,11 @@
 extern "C" {
 #endif
 
-#define HAL_LOG_MAX 80   /* bytes per log line, without the NUL */
+/* bytes per log line, without the NUL; a backend short of RAM may build
+ * with less (the firmware's longest line is 49) */
+#ifndef HAL_LOG_MAX
+#define HAL_LOG_MAX 80
+#endif
 #ifndef HAL_TICK_HZ /* control tick, Hz; a build may set it (-DHAL_TICK_HZ=...) */
 #ifdef __AVR__
 /* 16 MHz AVR: the float control tick takes ~1 ms, the serial link's

@@ -213,7 +213,7 @@ static void calibrate(char which)
     uint8_t ok = which == 'c' ? walls_ir_calibrate_sides() : walls_ir_calibrate_front();
     const walls_ir_cal_t *c = walls_ir_cal();
     if (ok) eeprom_update_block(c, UKB_EEPROM_CAL, sizeof *c);
-    ukb_console_printf_P(PSTR("calibrated %s: sides %u %u, front %u %u"), ok ? "and saved" : "NOT (no wall seen)", c->side_ref[0],
+    ukb_console_printf_P(PSTR("calibrated %S: sides %u %u, front %u %u"), ok ? PSTR("and saved") : PSTR("NOT (no wall seen)"), c->side_ref[0],
                          c->side_ref[1], c->front_ref[0], c->front_ref[1]);
 }
 
@@ -230,8 +230,9 @@ static void command(char c)
 {
     switch (c) {
     case 'h': case '?':
-        ukb_console_printf_P(PSTR("i IR, w walls, c calibrate the sides, f the front, b battery, s switches"));
-        ukb_console_printf_P(PSTR("e encoders, m motor test, g go, r go at a hand over the front, x stop, k stack"));
+        ukb_console_printf_P(PSTR("i IR, w walls, c calibrate the sides, f the front"));
+        ukb_console_printf_P(PSTR("b battery, s switches, e encoders, m motor test"));
+        ukb_console_printf_P(PSTR("g go, r go at a hand over the front, x stop, k stack"));
         break;
     case 'i': report_ir(); break;
     case 'w': report_walls(); break;
@@ -267,9 +268,9 @@ int main(void)
     sei();
     emitters(1);
     wait_ticks(8); /* the battery filter settles (4 passes a time constant) */
-    ukb_console_printf_P(PSTR("UKMARSBOT mouse (hal/ukmarsbot, %s sensors), tick %u Hz"), UKB_SENSOR_BOARD_NAME,
-                         (unsigned)HAL_TICK_HZ);
-    ukb_console_printf_P(PSTR("battery %u mV, switches %u; h for help"), hal_battery_mv(), ukb_switches());
+    ukb_console_printf_P(PSTR("UKMARSBOT mouse (hal/ukmarsbot, %S sensors)"), PSTR(UKB_SENSOR_BOARD_NAME)); /* %S: a string in flash */
+    ukb_console_printf_P(PSTR("tick %u Hz, battery %u mV, switches %u; h for help"), (unsigned)HAL_TICK_HZ, hal_battery_mv(),
+                         ukb_switches());
     calibration_load();
     if (ukb_switches() == 1) arm();
     for (;;) {
