@@ -70,6 +70,7 @@
 #define RC_CMD_FF_MAX 923.0f         /* as the paper's robot: 100 steps for the controller */
 
 /* ---- wall sensors: IR (firmware/walls.c turns readings into mm) ---- */
+#define RC_WALLS_IR 1 /* firmware/walls.h: the IR readings as distances */
 /* The front pair ([ir.lfs], [ir.rfs]: x -+20, 46 mm ahead of the body's
  * centre) is 60 mm ahead of the axle; a wall ahead of a cell centre is
  * 84 - 60 = 24 mm from it. */

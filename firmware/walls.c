@@ -1,6 +1,8 @@
 /* walls.c - ToF or IR readings as distances (walls.h). */
 #include "walls.h"
 
+#ifdef RC_WALLS_IR /* else walls.h makes walls_distance hal_distance */
+
 #include <math.h>
 
 #include "robot_config.h"
@@ -72,3 +74,5 @@ hal_distance_t walls_distance(uint8_t sensor)
     d.timeout = 0;
     return d;
 }
+
+#endif

@@ -2,9 +2,12 @@
  *
  * mouse.c judges walls, centres and aligns on the wall ahead from three
  * readings in mm (HAL_TOF_LEFT, _FRONT, _RIGHT). walls_distance gives them
- * from whichever sensors the robot has, chosen at run time:
- *   - no IR sensors (hal_ir_count() == 0): hal_distance itself, unchanged;
- *   - IR sensors: each role's lit-minus-dark reading (walls_ir.h's roles and
+ * from the robot's sensors:
+ *   - a robot configuration without RC_WALLS_IR (ToF robots): hal_distance
+ *     itself, as a macro (no code, no RAM: the Uno's budget);
+ *   - with RC_WALLS_IR, chosen at run time: hal_distance on a robot without
+ *     IR sensors (hal_ir_count() == 0), else each role's lit-minus-dark
+ *     reading (walls_ir.h's roles and
  *     calibration) turned into a distance:
  *       left, right: the side sensor's perpendicular distance to its side
  *         wall, RC_SIDE_WALL_MM * sqrt(calibrated reading / reading) (the
@@ -22,6 +25,7 @@
 #include <stdint.h>
 
 #include "hal.h"
+#include "robot_config.h"
 
 /* The robot stands this far behind the start cell's centre at the start
  * (mm; 0: on the centre). UKMARSBOT starts backed against the rear wall. */
@@ -29,9 +33,16 @@
 #define RC_START_BEHIND_MM 0.0f
 #endif
 
+#ifdef RC_WALLS_IR
 /* Switches on the emitters of the robot's IR sensors (if any); from fw_setup. */
 void walls_setup(void);
 /* The latest reading of role HAL_TOF_LEFT, _FRONT or _RIGHT (see above). */
 hal_distance_t walls_distance(uint8_t sensor);
+#else
+#define walls_setup() ((void)0)
+/* (a caller's `#define hal_distance walls_distance` ends here: a macro is
+ * not expanded again inside its own expansion) */
+#define walls_distance hal_distance
+#endif
 
 #endif

@@ -6,7 +6,8 @@
 # the left front sensor (occlude=lfs), it searches to the centre and back,
 # makes its speed runs and says "contest done": goal reached, no front or
 # side contact, the stack's headroom at the end at least 400 B (command k:
-# the bytes never used since power-on), and the same console and JSON twice.
+# the bytes never used since power-on); 40 s of it twice give the same
+# console and JSON.
 set -u
 B=${BUILD:-build}
 MMSIM=${MMSIM:-$B/mmsim}
@@ -37,7 +38,10 @@ unused = int(stk.split()[2])
 assert unused >= 400 and " overruns 0," in stk, stk
 print("goal, no contact, %d speed runs, first %s s best %s s; %s" % (len(runs), j["first_run_s"], j["best_run_s"], stk))
 PY
-want_rc 0 "the contest again" run
-[ "$(strip "$T/a.json")" = "$(strip "$T/out")" ] && ok "deterministic: the same console and JSON twice" || bad "two runs differ"
+# determinism on the search's first 40 s (a whole contest twice is long under the sanitizers)
+HANDS="0.3 send=r; 1.0 occlude=lfs; 40 end"
+want_rc 0 "40 s of the search (the goal reached at 27 s)" run; cp "$T/out" "$T/b.json"
+want_rc 0 "40 s of the search again" run
+[ "$(strip "$T/b.json")" = "$(strip "$T/out")" ] && ok "deterministic: the same console and JSON twice" || bad "two runs differ"
 
 [ $fails -eq 0 ] && echo "cli_ukmarsbot_contest: all ok" || { echo "cli_ukmarsbot_contest: $fails failed"; exit 1; }
