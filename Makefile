@@ -7,12 +7,14 @@ SHELL := /bin/bash
 # iproute2: `ip` for the udpm test's network namespace; universal-ctags: the
 # function prototypes tools/arduino-build generates for a sketch's tabs;
 # gdb: avr-gdb (gdb-avr) reads its Python scripts from gdb's data directory
-# (/usr/share/gdb), without which it prints a Python error at every stop.
+# (/usr/share/gdb), without which it prints a Python error at every stop;
+# python3-matplotlib: tools/mmplot draws a run's log against time.
 DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev libinih-dev \
 	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev libdw-dev \
 	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev \
 	liblcm-java default-jdk-headless default-jre libjchart2d-java xvfb iproute2 \
-	libpng-dev libglfw3-dev libgl-dev python3-venv libx11-dev libxtst-dev gdb-avr gdb universal-ctags
+	libpng-dev libglfw3-dev libgl-dev python3-venv libx11-dev libxtst-dev gdb-avr gdb universal-ctags \
+	python3-matplotlib
 
 CC      ?= gcc
 STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
@@ -64,8 +66,7 @@ help:
 	@echo "make test        install what is missing, build, run every test (one line each; the last: N passed, M failed, K skipped)"
 	@echo "make             build every tool: build/mmsim, build/mmmaze, build/mmlog, build/mmview"
 	@echo "make deps        install the Debian packages that are missing (idempotent)"
-	@echo "make docs        rewrite the figures the docs quote (docs/VALIDATION.md) from the code"
-	@echo "make docs-img    rewrite the README's pictures from the code"
+	@echo "make docs        rewrite the figures and pictures the docs show (docs/VALIDATION.md, docs/img) from the code"
 	@echo "make bench       the speed and memory benchmarks (docs/BENCHMARKS.md)"
 	@echo "make firmware    our mouse for the ATmega328P and the Arduino library's sketches (sizes printed)"
 	@echo "make arduino     the Arduino sketches (hal/arduino) for the Uno, Mega and Nano"
@@ -169,11 +170,14 @@ PERIPH_ELFS     := $(patsubst %,$(B)/arduino/nano/board/%.elf,$(PERIPH_SKETCHES)
 
 # deps first, then a fresh make: on a new machine the packages (and the Arduino
 # core's files that the wildcards below list) only exist once deps has run.
+# The build and the tests use every core (TEST_JOBS=1: one test at a time).
+NPROC := $(shell nproc 2>/dev/null || echo 1)
 test: deps
-	@$(MAKE) --no-print-directory test-run
+	@$(MAKE) -j$(NPROC) --no-print-directory test-run
 test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/,$(TOOLS)) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
 	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf $(B)/arduino/uno/OneCommand.elf $(B)/test/mrc_boot \
-	$(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf $(BOARD_SKETCHES) $(PERIPH_ELFS)
+	$(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf $(BOARD_SKETCHES) $(PERIPH_ELFS) \
+	client-mazerunner firmware-ukmarsbot
 	@LSAN_OPTIONS=suppressions=$(CURDIR)/test/lsan-simavr.supp MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
 # PlatformIO from PyPI in a venv, only to check that platformio.ini parses
@@ -420,23 +424,25 @@ view: $(B)/mmview
 	@[ -n "$(LOG)" ] || { echo "make view: LOG=FILE is required" >&2; exit 2; }
 	$(B)/mmview $(LOG) --speed $(SPEED)
 
-# make docs-img: the README's three pictures, with the README's commands
-# (after a firmware change they go stale). Without a display: under xvfb-run.
 X_RUN = $(if $(DISPLAY),,xvfb-run -a -s '-screen 0 1024x768x24 -nolisten tcp')
-# The figures the docs quote, written by the programs that make them:
-# docs/VALIDATION.md's --validate tables (tools/docs-validation; test/cli_validate.sh
-# checks them)
+# The figures and pictures the docs show, written by the programs that make
+# them: docs/VALIDATION.md's --validate tables (tools/docs-validation;
+# test/cli_validate.sh checks them) and the README's three pictures with the
+# README's commands (docs-img, into IMG_DIR; without a display under
+# xvfb-run; test/cli_docs_img.sh checks them)
 .PHONY: docs
-docs: $(B)/mmsim
+docs: $(B)/mmsim $(B)/mmview
 	python3 tools/docs-validation --mmsim $(B)/mmsim
+	@$(MAKE) --no-print-directory docs-img
 
+IMG_DIR ?= docs/img
 docs-img: $(B)/mmsim $(B)/mmview
-	@tmp=$$(mktemp -d); trap 'rm -rf "$$tmp"' EXIT; \
-	$(X_RUN) $(B)/mmsim --maze mazes/gen-16x16-s1.txt --driver firmware --screenshot docs/img/viewer.png --at 40 --size 800x600 >/dev/null && \
-	$(B)/mmsim --maze mazes/gen-16x16-s1.txt --driver firmware --report "$$tmp/report.png" >/dev/null && mv "$$tmp/report.png" docs/img/report.png && \
+	@mkdir -p $(IMG_DIR); tmp=$$(mktemp -d); trap 'rm -rf "$$tmp"' EXIT; \
+	$(X_RUN) $(B)/mmsim --maze mazes/gen-16x16-s1.txt --driver firmware --screenshot $(IMG_DIR)/viewer.png --at 40 --size 800x600 >/dev/null && \
+	$(B)/mmsim --maze mazes/gen-16x16-s1.txt --driver firmware --report "$$tmp/report.png" >/dev/null && mv "$$tmp/report.png" $(IMG_DIR)/report.png && \
 	$(B)/mmsim --maze mazes/gen-16x16-s1.txt --driver firmware --lcm-log "$$tmp/run.lcmlog" >/dev/null && \
-	$(X_RUN) $(B)/mmview "$$tmp/run.lcmlog" --screenshot docs/img/mmview.png --at 30 --camera 2 --size 800x600 && \
-	echo "docs/img: viewer.png report.png mmview.png"
+	$(X_RUN) $(B)/mmview "$$tmp/run.lcmlog" --screenshot $(IMG_DIR)/mmview.png --at 30 --camera 2 --size 800x600 && \
+	echo "$(IMG_DIR): viewer.png report.png mmview.png"
 
 # ---- benchmarks ----
 bench: deps

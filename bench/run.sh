@@ -20,7 +20,7 @@ if [ -d "$DB" ]; then
 import json, sys
 runs = [json.loads(l) for l in sys.stdin]
 d = runs[0]
-print("mmsim %s (scripted driver, 3 runs to the goal): sim %.1f s, real-time factor best %.0fx median %.0fx, laps %s, collisions %d" % (
+print("mmsim %s (our firmware, search and 3 speed runs): sim %.1f s, real-time factor best %.0fx median %.0fx, laps %s, collisions %d" % (
     d["maze"].split("/")[-1], d["sim_time_s"], max(r["real_time_factor"] for r in runs),
     sorted(r["real_time_factor"] for r in runs)[1], [l["run_s"] for l in d["laps"]], d["collisions"]))'
   done

@@ -52,7 +52,7 @@ static float smooth_length_mm; /* and drives this far along its arc */
 static float run_offset_mm;   /* speed runs: how far past st.cell's centre the robot is */
 static float move_shift_mm;   /* the move under way ends this far before a cell centre */
 static uint8_t side_seq[2];   /* centring: the side readings last looked at, */
-static uint16_t side_mm[2];   /* their distances */
+static int16_t side_dmm[2];   /* the offsets right of the centre line they give, 0.1 mm */
 static uint8_t side_ok[2];    /* and whether they show a wall where it can be trusted */
 static uint8_t front_seq;     /* front-wall alignment: the reading last used */
 static float last_lateral_mm; /* the last centring estimate of this straight, */
@@ -122,7 +122,7 @@ static uint8_t read_walls(float to_centre)
     uint8_t w = 0;
     hal_distance_t l = hal_distance(HAL_TOF_LEFT), f = hal_distance(HAL_TOF_FRONT), r = hal_distance(HAL_TOF_RIGHT);
     /* the far wall of the cell ahead is RC_FRONT_AT_CENTRE_MM beyond its centre */
-    if (!f.timeout && f.mm < to_centre + RC_FRONT_AT_CENTRE_MM + RC_CELL_MM / 2) w |= EXPLORE_WALL_FRONT;
+    if (!f.timeout && f.mm < to_centre + RC_FRONT_AT_CENTRE_MM + RC_FRONT_WALL_MARGIN_MM) w |= EXPLORE_WALL_FRONT;
     if (!l.timeout && l.mm < RC_SIDE_THRESHOLD_MM) w |= EXPLORE_WALL_LEFT;
     if (!r.timeout && r.mm < RC_SIDE_THRESHOLD_MM) w |= EXPLORE_WALL_RIGHT;
     return w;
@@ -137,11 +137,51 @@ static float along_cell(void)
     return y < -RC_CELL_MM / 2 ? y + RC_CELL_MM : y;
 }
 
+/* The robot's offset right of the centre line, mm, from a diagonal
+ * reading r_mm of the side wall on the right (right = 1) or left, the
+ * robot turned psi_rad counter-clockwise from the corridor. The sensor
+ * reads the wall along its cone's edge nearest the wall's normal, 32.5
+ * degrees off it when the robot is square (1 mm sideways is 1 /
+ * RC_DIAG_EDGE_COS = 1.19 mm of reading). Turned by s towards the wall,
+ * the sensor (RC_TOF_SIDE_X_MM out, RC_TOF_SIDE_Y_MM ahead of the centre)
+ * sits X cos s + Y sin s out from the centre and its edge is 32.5 deg - s
+ * off the normal, so the wall is X cos s + Y sin s + r cos(32.5 deg - s)
+ * from the centre. Square, that is 84 mm at the centre line. The turn
+ * matters: 5.7 degrees towards the left wall read 42 and 65 mm on
+ * us82's straight at (6,2), the robot 2 mm right of the centre line,
+ * which is 8 mm left of it taken as square (seed 1); the centring then
+ * steered on the robot's own weave (+-6 degrees, one cell a period) and
+ * a U-turn's pivot went 4 mm the wrong way, a body corner into the wall. */
+static float side_offset(float r_mm, float psi_rad, uint8_t right)
+{
+    float s = right ? -psi_rad : psi_rad, cs = cosf(s), sn = sinf(s);
+    float out = RC_TOF_SIDE_X_MM * cs + RC_TOF_SIDE_Y_MM * sn + r_mm * (RC_DIAG_EDGE_COS * cs + RC_DIAG_EDGE_SIN * sn);
+    float further = out - (RC_TOF_SIDE_X_MM + RC_DIAG_EDGE_COS * RC_SIDE_WALL_MM); /* than at the centre line */
+    return right ? -further : further;
+}
+
+/* Whether a reading of the right (right = 1) or left diagonal sensor,
+ * arriving now, can be of the post at the entry of the cell ahead (its
+ * centre to_centre mm away) rather than of that cell's side wall: 0 if
+ * it can. Turned s towards that side (odometry against the held heading),
+ * the sensor sits Y cos s - X sin s ahead of the robot's centre and X cos
+ * s + Y sin s out from it, and its cone's outer edge is 57.5 deg + s off
+ * the heading; the edge meets the side wall's line gap * cot(57.5 deg + s)
+ * ahead of the sensor. */
+static int clear_of_entry_post(uint8_t right, float to_centre)
+{
+    float psi = mo.odom.theta_rad - mo.heading_rad, s = right ? -psi : psi, cs = cosf(s), sn = sinf(s);
+    float short_mm = to_centre - RC_CELL_MM / 2 - (RC_TOF_SIDE_Y_MM * cs - RC_TOF_SIDE_X_MM * sn); /* of the boundary */
+    float gap = RC_CELL_MM / 2 - RC_WALL_MM / 2 - (RC_TOF_SIDE_X_MM * cs + RC_TOF_SIDE_Y_MM * sn);
+    /* cos and sin of 57.5 deg + s, from 57.5 = 90 - 32.5 */
+    float reach = gap * (RC_DIAG_EDGE_SIN * cs - RC_DIAG_EDGE_COS * sn) / (RC_DIAG_EDGE_COS * cs + RC_DIAG_EDGE_SIN * sn);
+    return reach - short_mm > RC_WALL_MM / 2 + RC_POST_MARGIN_MM;
+}
+
 /* Wall centring from the diagonal sensors: the robot's offset right of
- * the centre line, mm, when a side wall is seen (sets mo.lateral_*). A
- * diagonal sensor reads a side wall along its cone's edge, 32.5 degrees
- * off the wall's normal, so 1 mm sideways is 1 / RC_DIAG_EDGE_COS = 1.19 mm
- * of reading. A reading is judged where it arrived: between
+ * the centre line, mm, when a side wall is seen (sets mo.lateral_*), each
+ * reading taken with the robot's turn from the held heading when it
+ * arrives (side_offset). A reading is judged where it arrived: between
  * RC_SIDE_BLIND_FROM_MM before a cell centre and RC_SIDE_BLIND_TO_MM past
  * it the rays can meet the wall across the end of the cell (or the next
  * one's, where the side wall is missing), which looks like a near side
@@ -159,11 +199,12 @@ static void centring(void)
         side_seq[i] = d.seq;
         news = 1;
         side_ok[i] = usable && !d.timeout && d.mm < RC_CENTRING_MAX_MM;
-        side_mm[i] = d.mm;
+        side_dmm[i] = (int16_t)(10.0f * side_offset((float)d.mm, mo.odom.theta_rad - mo.heading_rad, i));
+        /* not fresh for the walls of the cell ahead if it may be its entry post */
+        if (sensed == SENSE_MARKED && !clear_of_entry_post(i, profile_remaining(&mo.fwd) + move_shift_mm)) tof_seq[sensor] = d.seq;
     }
-    float el = RC_DIAG_EDGE_COS * ((float)side_mm[0] - RC_SIDE_WALL_MM),
-          er = RC_DIAG_EDGE_COS * ((float)side_mm[1] - RC_SIDE_WALL_MM);
-    mo.lateral_mm = side_ok[0] && side_ok[1] ? 0.5f * (el - er) : side_ok[0] ? el : side_ok[1] ? -er : 0.0f;
+    float el = 0.1f * (float)side_dmm[0], er = 0.1f * (float)side_dmm[1];
+    mo.lateral_mm = side_ok[0] && side_ok[1] ? 0.5f * (el + er) : side_ok[0] ? el : side_ok[1] ? er : 0.0f;
     mo.lateral_valid = (uint8_t)(side_ok[0] || side_ok[1]);
     if (mo.lateral_valid && news) { /* averaged over the last few readings for start_turn */
         last_lateral_mm = last_lateral_ok ? last_lateral_mm + RC_PIVOT_AVG * (mo.lateral_mm - last_lateral_mm) : mo.lateral_mm;
@@ -275,8 +316,8 @@ static int fresh(void)
 
 /* A move reached the point where the walls of the cell ahead are read:
  * within RC_SENSE_BEFORE_MM of the move's end with readings taken within
- * RC_SENSE_FROM_MM of it, or RC_SENSE_LATEST_MM at the latest; once per
- * cell. */
+ * RC_SENSE_FROM_MM of it (the side ones clear of the cell's entry post:
+ * centring), or RC_SENSE_LATEST_MM at the latest; once per cell. */
 static int sense_point(float left_mm)
 {
     if (sensed == SENSE_DONE) return 0;

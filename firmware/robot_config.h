@@ -200,6 +200,30 @@
  * reading after this point arrives at most 18 mm later: 132 - 79 = 53 mm
  * to brake into a smooth turn (2,200 mm/s^2). */
 #define RC_SENSE_FROM_MM 150.0f
+/* A side reading counts for the cell ahead only when its cone's outer edge
+ * (57.5 degrees off the heading, 44 mm from the side wall's line square
+ * and centred: it meets that line 28 mm ahead of the sensor) runs past the
+ * post at the cell's entry (+-6 mm about the boundary) by this much; the
+ * robot's turn towards the wall moves the sensor back and turns the edge
+ * towards the post (mouse.c clear_of_entry_post). Square, every reading
+ * after RC_SENSE_FROM_MM is clear by 12 mm; turned 4.4 degrees left (a
+ * centring that took the turn for an offset weaved +-6 degrees), at 148.4
+ * mm before the centre of (15,0) by odometry (152.4 true), hk90's left
+ * sensor read that post at 43 mm, a wall where there is none (seed 1).
+ * 6 mm: that run's 4 mm of odometry along the heading and 2 mm of reach
+ * for 3 mm off the centre line. */
+#define RC_POST_MARGIN_MM 6.0f
+/* The wall ahead of the cell ahead reads RC_FRONT_AT_CENTRE_MM beyond its
+ * centre, up to 18 mm more from a reading 30 ms old at search speed; with
+ * four sigmas of the sensor's noise (4.2 % of the ~165 mm at the sensing
+ * point: 7 mm) nearer than this beyond that is a wall. Without that wall
+ * the nearest surface the front cone (12.5 degrees either side) can meet
+ * is a side wall beyond the cell, 84 mm off the centre line: 84 / sin(12.5
+ * deg) = 388 mm square, 233 mm turned 8.6 degrees (RC_LATERAL_MAX_RAD).
+ * With 90 mm, on eastjapan-016-1998 (seed 1) the robot turned 5 degrees
+ * right (the same weave) took such a wall 251 mm away, 255 allowed, for a
+ * wall ahead of (9,15). */
+#define RC_FRONT_WALL_MARGIN_MM 50.0f
 /* without a fresh reading by this distance before a cell's centre, sense
  * with the last one (at most 30 ms = 18 mm old at search speed) */
 #define RC_SENSE_LATEST_MM 60.0f

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# run.sh: alone (timed: real-time runs, timed input or timeouts)
 # cli_connect.sh - the HUD's Connect at run time, under an Xvfb the test
 # starts, driven by XTEST (build/test/xinput): in a live mmsim --gui window
 # type a serial port into the Port field, press Enter (= Connect): the link

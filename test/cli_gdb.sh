@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# run.sh: alone (timed: real-time runs, timed input or timeouts)
 # cli_gdb.sh - debugging the firmware in the simulator: mmsim --gdb PORT
 # starts simavr's gdb stub on 127.0.0.1:PORT and a scripted avr-gdb (batch
 # mode) attaches. Our sketch GdbProbe (test/arduino/board, built with

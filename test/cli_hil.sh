@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# run.sh: alone (timed: real-time runs, timed input or timeouts)
 # cli_hil.sh - hardware in the loop: the wire codec's shared vectors on an
 # AVR in simavr; mmsim --pty with hil_mcu.py playing the MCU (compat and
 # framed; it speaks protocol version 1 and gets no version-2 message); a

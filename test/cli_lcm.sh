@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# run.sh: alone (timed: real-time runs, timed input or timeouts)
 # cli_lcm.sh - LCM telemetry to a log (mmsim --lcm-log), decoded with the
 # generated C types (mmlog): every channel present, counts match the rates,
 # lap events equal the lap table, the last pose equals final_pose, MM_PARTS

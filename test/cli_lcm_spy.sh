@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# run.sh: alone (timed: real-time runs, timed input or timeouts)
 # cli_lcm_spy.sh - smoke test: lcm-spy (launched by `make spy`) starts
 # under Xvfb with the project's types jar, finds every mmlcm type, and plays
 # a telemetry log for a few seconds without an exception. Time-bounded;

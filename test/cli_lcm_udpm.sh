@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# run.sh: alone (timed: real-time runs, timed input or timeouts)
 # cli_lcm_udpm.sh - live telemetry over LCM's udpm (multicast) provider,
 # recorded by lcm-logger, inside a private network namespace this test
 # creates (multicast never leaves it). The live log must hold every message

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# run.sh: alone (timed: real-time runs, timed input or timeouts)
 # cli_loop_telemetry.sh - every driver's run publishes its telemetry at the
 # same rate: the contest loop (sim/contest/run.c), not the driver, publishes
 # after each physics step. An LCM log (--lcm-log) of a 3 s run on the same

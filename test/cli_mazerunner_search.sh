@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# run.sh: alone (timed: real-time runs, timed input or timeouts)
 # cli_mazerunner_search.sh - UKMARSBOT's unmodified
 # contest firmware (mazerunner-core, EVENT_UK image) on the emulated board
 # searches mazes/gen-16x16-s1.txt the way its README says: switches to its
@@ -42,6 +43,16 @@ tail = c.replace('\r', '').rstrip().splitlines()[-1]
 assert tail.endswith('ERR: no route to target') and '[ 6, 7,E]' in tail, tail
 " && ok "EVENT_UK: reaches (7,7), no front or side contact, then the firmware's own ERR on entering it" \
   || bad "EVENT_UK search: $(tail -c 600 "$T/uk.json")"
+# one clock for laps and the limit: the contest clock starts when the mouse first leaves the start
+# cell (about 3 s in, after the hand); a lap that ends 19 s later, 22 s of simulated time, is
+# inside --time-limit 20 and counted
+want_rc 0 "EVENT_UK image: --time-limit 20" run $B/clients/mazerunner-core-uk.elf --input "$HANDS" --time-limit 20
+js "$T/out" "
+l = j['laps']; assert j['reached_goal'] and len(l) == 1 and l[0]['end_s'] < 20 and j['sim_time_s'] > 20, (l, j['sim_time_s'])
+assert j['exit_reason'] == 'time_limit', j['exit_reason']
+" && ok "--time-limit on the contest clock: the lap ending at $(js "$T/out" "print(j['laps'][0]['end_s'])") s counted (simulated $(js "$T/out" "print(j['sim_time_s'])") s)" \
+  || bad "--time-limit 20: $(tail -c 300 "$T/out")"
+
 # walls NAME JSON: mrc_check's lines for the run are exactly $T/want (the walls it misses, below)
 walls() { python3 test/mrc_check.py $M "$2" >"$T/chk"
   diff "$T/want" "$T/chk" >/dev/null && ok "$1: $(tail -1 "$T/chk"), as listed" || bad "$1 walls: $(cat "$T/chk")"; }

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# run.sh: alone (timed: real-time runs, timed input or timeouts)
 # cli_mms.sh - mmsim --mms: mms algorithms (test/mms/*.py, written for these
 # tests) drive the physically simulated robot through the mms text API;
 # protocol conformance; the algorithm's faults end the run cleanly.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# run.sh: alone (timed: real-time runs, timed input or timeouts)
 # cli_mms_view.sh - the viewer in an mms run (under an Xvfb the test
 # starts): the floor shows the algorithm's cell colours; an algorithm that
 # waits for Reset after the goal waits with the clock running until the

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# run.sh: alone (timed: real-time runs, timed input or timeouts)
 # cli_mmsim.sh - the headless simulator: JSON keys, determinism, lap table,
 # zero wall contacts on generated mazes, config errors, exit codes, batch.
 set -u

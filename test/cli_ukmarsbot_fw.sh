@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# run.sh: alone (timed: real-time runs, timed input or timeouts)
 # cli_ukmarsbot_fw.sh - our mouse firmware on the UKMARSBOT board's own
 # HAL (hal/ukmarsbot), the image a user flashes, run on the emulated board
 # (mmsim --board ukmarsbot --avr build/ukmarsbot/mouse.elf):

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# run.sh: alone (timed: real-time runs, timed input or timeouts)
 # cli_view.sh - the viewer's screenshots under an Xvfb the test starts:
 # each camera on a known small maze (PNG of the requested size; wall tops
 # in the bird's view, the robot near the centre of the follow and top

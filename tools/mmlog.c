@@ -119,7 +119,8 @@ static int dec_race_event(const void *data, int len, int64_t *ut, json_t **j)
     *ut = m.utime;
     if (j) *j = json_pack("{s:I, s:s, s:i, s:f, s:f, s:f, s:b, s:b}", "utime", (json_int_t)m.utime, "kind",
                          m.kind == MMLCM_RACE_EVENT_T_LAP_START ? "lap_start"
-                         : m.kind == MMLCM_RACE_EVENT_T_LAP_END ? "lap_end" : "unknown",
+                         : m.kind == MMLCM_RACE_EVENT_T_LAP_END ? "lap_end"
+                         : m.kind == MMLCM_RACE_EVENT_T_CONTACT ? "contact" : "unknown",
                          "lap", (int)m.lap, "start_s", m.start_s, "end_s", m.end_s, "run_s", m.run_s, "over_time",
                          m.over_time, "best", m.best);
     return 0;

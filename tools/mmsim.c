@@ -41,6 +41,8 @@ static void usage(FILE *out)
           "             [--centre-post on|off] [--profile default|paper] [--driver firmware|scripted]\n"
           "             [--json] [--realtime] [--verbose] [--report FILE.png]\n"
           "             (--runs: speed runs after the search, default 3; scripted: runs to the goal)\n"
+          "             (--time-limit: the contest clock, from the mouse first leaving the start cell, as laps;\n"
+          "             a run under way at the limit may end up to 60 s later, flagged over time)\n"
           "             [--lcm[=URL]] [--lcm-log FILE] [--lcm-rate HZ]   (LCM telemetry, sim/telemetry/telem.h)\n"
           "             [--gui [--speed 1..64]] [--screenshot FILE.png [--at SECONDS]]\n"
           "             [--camera 1|2|3] [--size WxH]   (viewer)\n"
@@ -331,11 +333,12 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     return 0;
 }
 
-/* A name ending in .png (any case). */
-static int has_png_ext(const char *path)
+/* A name whose extension, if it has one, is .png (any case): the picture is
+ * a PNG whatever its name, so another extension is a mistake. */
+static int png_or_no_ext(const char *path)
 {
-    size_t n = strlen(path);
-    return n > 4 && strcasecmp(path + n - 4, ".png") == 0;
+    const char *base = strrchr(path, '/'), *dot = strrchr(base ? base + 1 : path, '.');
+    return !dot || dot == (base ? base + 1 : path) || strcasecmp(dot, ".png") == 0;
 }
 
 /* --report (its PNG, SVG and JSON) and --screenshot fail now, not after a
@@ -347,7 +350,7 @@ static int probe_outputs(const run_opts_t *o)
     int n = 0;
     for (int k = 0; k < 2; k++) { /* each writes a PNG: a name that says otherwise is a mistake */
         const char *name = k ? o->shot : o->report;
-        if (name && !has_png_ext(name)) {
+        if (name && !png_or_no_ext(name)) {
             fprintf(stderr, "mmsim: %s %s: it writes a PNG: give a name ending in .png\n", k ? "--screenshot" : "--report", name);
             return RUN_BAD_INPUT;
         }

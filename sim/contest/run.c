@@ -248,8 +248,17 @@ static void hand_to_link(run_t *r, const char *port, long baud)
 /* After the step and the driver: the report, the viewer, the contest's
  * limits and the stall check. NULL, or why the run ends now. */
 typedef struct {
-    double last_x, last_y, progress_s, hard_stop_s;
+    double last_x, last_y, progress_s;
 } watch_t;
+
+int run_time_up(const run_t *r, double overtime_s)
+{
+    const race_t *race = &r->sim.race;
+    double t = sim_time_s(&r->sim), limit = r->cfg.sim.time_limit_s;
+    if (!race->started) return t >= limit;
+    double clock = race_global_s(race, t);
+    return (clock > limit && !race->in_run) || clock > limit + overtime_s;
+}
 
 static const char *after_step(run_t *r, watch_t *w)
 {
@@ -266,10 +275,10 @@ static const char *after_step(run_t *r, watch_t *w)
     if (o->gui && view_step(r->view, s)) return "window_closed";
     if (o->gui && view_connect_request(r->view, &cport, &cbaud)) hand_to_link(r, cport, cbaud);
     if (o->gui && r->drv->hands) gui_hands(r);
+    /* the time limit before the screenshot: a picture never changes how a run ends */
+    if (run_time_up(r, r->ctl->overtime ? RUN_OVERTIME_S : 0)) return "time_limit";
     if (o->shot && sim_time_s(s) >= o->shot_at_s) return "screenshot";
     double t = sim_time_s(s), x, y, h;
-    if (s->race.over_time && !s->race.in_run) return "time_limit";
-    if (t > w->hard_stop_s) return "time_limit";
     if (s->step % 100 == 0 && r->ctl->watch_stall) {
         world_pose(s->world, &x, &y, &h);
         if (hypot(x - w->last_x, y - w->last_y) > 0.01) {
@@ -309,7 +318,7 @@ static const char *step(run_t *r, watch_t *w)
 /* The contest loop: the hands, then a step, until something ends the run. */
 static void contest_loop(run_t *r)
 {
-    watch_t w = { 0, 0, 0, r->cfg.sim.time_limit_s + 60.0 }; /* a lap under way may finish over time, flagged */
+    watch_t w = { 0, 0, 0 };
     double h;
     r->t0 = wall_now();
     world_pose(r->sim.world, &w.last_x, &w.last_y, &h);

@@ -24,6 +24,7 @@
 enum { RUN_OK = 0, RUN_NOT_REACHED = 1, RUN_BAD_INPUT = 2, RUN_EXTERNAL = 3 };
 
 #define RUN_STALL_S 5.0 /* no progress for this long while driving = crash stop, s */
+#define RUN_OVERTIME_S 60.0 /* a run under way at the time limit may finish this much later (flagged over time), s */
 
 typedef struct {
     const char *config_path;

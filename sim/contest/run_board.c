@@ -163,7 +163,6 @@ static const char *board_after(run_t *r, void *self)
         return strstr(err, "auto-trigger") ? "board_unsupported" : "avr_stopped";
     }
     run_watch_step(r, &b->watch, board_host(b->board)->avr); /* --watch: after the AVR's cycles */
-    if (sim_time_s(&r->sim) >= r->cfg.sim.time_limit_s) return "time_limit";
     return NULL;
 }
 

@@ -62,6 +62,9 @@ typedef struct {
     /* the loop ends a run whose robot has made no progress for RUN_STALL_S ("crash_stop"); 0: the
      * driver may wait for an MCU or a person, or has a stall check of its own */
     int watch_stall;
+    /* a run under way at the time limit may finish RUN_OVERTIME_S later, its lap flagged over time
+     * (the mouse's own laps); 0: time is up at the limit (an MCU's image on a board or a link) */
+    int overtime;
 } run_driver_t;
 
 struct run_s {
@@ -125,5 +128,12 @@ static inline int run_exit_laps(const run_t *r, const char *ok1, const char *ok2
     int ok = !strcmp(r->reason, ok1) || (ok2 && !strcmp(r->reason, ok2));
     return r->sim.race.nlaps > 0 && ok ? RUN_OK : RUN_NOT_REACHED;
 }
+
+/* Is the contest's time up? One clock for laps and the limit: the contest
+ * clock, which starts when the mouse first leaves the start cell (race.h),
+ * as laps are timed; before that, simulation time. Time is up when the
+ * clock reaches config's sim.time_limit_s (--time-limit) with no run under
+ * way, or overtime_s later if one is (that lap is flagged over time). */
+int run_time_up(const run_t *r, double overtime_s);
 
 #endif

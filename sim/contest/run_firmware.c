@@ -102,7 +102,7 @@ static void fw_headline(const run_t *r, const void *self)
 
 const run_driver_t run_firmware = {
     .name = "firmware", .open = fw_open, .after = fw_after, .results = fw_results, .close = fw_close,
-    .headline = fw_headline, .report = fw_report, .belief = fw_belief, .watch_stall = 1,
+    .headline = fw_headline, .report = fw_report, .belief = fw_belief, .watch_stall = 1, .overtime = 1,
 };
 
 /* ---- an mms algorithm drives the firmware's command mode ---- */
@@ -190,5 +190,5 @@ static int mms_exit(const run_t *r, const void *self)
 const run_driver_t run_mms = {
     .name = "mms", .open = mms_open, .before = mms_before, .after = mms_after, .stop = mms_end,
     .results = mms_results, .close = mms_close, .headline = mms_headline, .exit_code = mms_exit,
-    .report = mms_report, .show = mms_show, .belief = fw_belief,
+    .report = mms_report, .show = mms_show, .belief = fw_belief, .overtime = 1,
 };

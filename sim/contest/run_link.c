@@ -92,7 +92,6 @@ static void link_exchange_run(run_t *r, void *self) { link_exchange(&((link_run_
 static const char *link_after(run_t *r, void *self)
 {
     if (((link_run_t *)self)->lnk.st.stops) return "mcu_stopped";
-    if (sim_time_s(&r->sim) >= r->cfg.sim.time_limit_s) return "time_limit";
     return NULL;
 }
 

@@ -41,5 +41,5 @@ static void scripted_headline(const run_t *r, const void *self)
 
 const run_driver_t run_scripted = {
     .name = "scripted", .open = scripted_open, .before = scripted_before,
-    .headline = scripted_headline, .report = scripted_report, .watch_stall = 1,
+    .headline = scripted_headline, .report = scripted_report, .watch_stall = 1, .overtime = 1,
 };

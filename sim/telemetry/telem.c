@@ -217,6 +217,7 @@ int telem_open(telem_t *t, const telem_opts_t *o, const sim_state_t *s, char *er
     t->link = o->link;
     t->link_tx0 = t->link_rx0 = t->link_steps0 = 0;
     t->nlaps = 0;
+    t->contacts = world_collisions(s->world);
     t->in_run = 0;
     t->run_start_s = 0;
     t->belief_seq = 0;
@@ -386,7 +387,21 @@ static void pub_link(telem_t *t, const sim_state_t *s)
     t->last_link = s->step;
 }
 
-/* Lap starts and ends since the last step. */
+/* Wall contacts begun since the last step, one CONTACT event each. */
+static void pub_contacts(telem_t *t, const sim_state_t *s)
+{
+    unsigned n = world_collisions(s->world);
+    mmlcm_race_event_t e;
+    memset(&e, 0, sizeof e);
+    e.utime = utime_of(t, s);
+    e.kind = MMLCM_RACE_EVENT_T_CONTACT;
+    while (t->contacts < n) {
+        e.lap = (int32_t)++t->contacts;
+        emit(t, "MM_RACE_EVENT", e.utime, mmlcm_race_event_t_encode(t->buf, 0, TELEM_BUF_BYTES, &e));
+    }
+}
+
+/* Lap starts and ends, and wall contacts, since the last step. */
 static void pub_events(telem_t *t, const sim_state_t *s)
 {
     const race_t *rc = &s->race;
@@ -416,6 +431,7 @@ static void pub_events(telem_t *t, const sim_state_t *s)
     }
     t->in_run = rc->in_run;
     t->run_start_s = rc->run_start_s;
+    pub_contacts(t, s);
 }
 
 void telem_cost_field(const maze_t *m, int16_t *cost)

@@ -7,7 +7,9 @@
  *                                   robot file (kind, name, values, units),
  *                                   the battery and the emitter groups
  *   MM_RACE                         at TELEM_RACE_HZ
- *   MM_RACE_EVENT                   on the step a lap starts or ends
+ *   MM_RACE_EVENT                   on the step a lap starts or ends, and
+ *                                   on the step the body starts touching
+ *                                   a wall (kind CONTACT)
  *   MM_BELIEF                       when the firmware calls hal_belief
  *                                   (in-process firmware only: the belief
  *                                   the run's driver gives telem_step)
@@ -81,6 +83,7 @@ typedef struct {
     uint64_t step_us;     /* physics step, microseconds */
     uint64_t last_fast, last_race; /* step of the last publication, UINT64_MAX = none */
     int nlaps;            /* laps already announced */
+    unsigned contacts;    /* wall contacts already announced (world_collisions) */
     int in_run;           /* the run under way was announced */
     double run_start_s;
     uint32_t belief_seq;  /* last belief published */

@@ -431,7 +431,7 @@ static int response_checks(const simcfg_t *c, validate_check_t *v, int n)
             "solution of the same equations");
     }
     bench_fit(v, &n, "encoder_counts_per_rev", d->encoder_ppr * d->gear_ratio, counts_per_rev(c), "counts",
-              "the robot file's encoder_ppr x gear_ratio (the encoder is built from them; paper: 12 x 29.86 = 358.32)");
+              "the robot file's encoder_ppr x gear_ratio (the encoder is built from them)");
     return n;
 }
 

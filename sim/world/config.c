@@ -52,7 +52,7 @@ static const keytab_t keys[] = {
      * set one to see the veer it alone causes. */
     K("asymmetry", asym, wheel_d_diff_m, 0, -0.005, 0.005, "m", "right wheel diameter minus left (the mean stays the robot file's)"),
     K("asymmetry", asym, motor_k_diff_pct, 0, -20, 20, "%", "right motor's constant (back-EMF and torque) relative to the left's, in per cent of the mean"),
-    K("asymmetry", asym, tyre_mu_diff, 0, -1, 1, "1", "right tyre's friction minus left's (the mean stays robot.tyre_mu)"),
+    K("asymmetry", asym, tyre_mu_diff, 0, -1, 1, "1", "right tyre's friction minus left's (the mean stays the robot file's tyre_mu)"),
     K("asymmetry", asym, com_x_m, 0, -0.02, 0.02, "m", "body's centre of mass to the right of the centre line"),
     K("asymmetry", asym, com_y_m, 0, -0.02, 0.02, "m", "body's centre of mass ahead of the body's centre"),
     /* Per-seed variation of the asymmetries (Monte Carlo robustness runs):
@@ -66,7 +66,7 @@ static const keytab_t keys[] = {
      * compiled into the firmware (the contest calls fw_tick every
      * 1/HAL_TICK_HZ s of simulation time). */
     K("sim", sim, step_s, 0.001, 1e-5, 0.01, "s", "1 kHz physics"),
-    W("sim", sim, solver, 1, solvers, "exact: dWorldStep, no creep at rest, drives straight (README); quickstep slid a resting robot 10 mm/min"),
+    W("sim", sim, solver, 1, solvers, "exact: dWorldStep, no creep at rest, drives straight (docs/GUIDE-robot.md); quickstep slid a resting robot 10 mm/min"),
     KW("sim", sim, solver_iterations, 10, 1, 200, "1", "solver = quickstep only: at 5 the wheel hinges give and a straight run crabs 1.4 degrees"),
     K("sim", sim, time_limit_s, 600, 1, 86400, "s", "contest rules: 10 minutes"),
 };
