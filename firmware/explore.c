@@ -20,11 +20,12 @@ void explore_init(explore_t *e, const maze_t *blank)
 
 void explore_sense(explore_t *e, uint8_t walls)
 {
-    static const uint8_t bit[3] = { EXPLORE_WALL_FRONT, EXPLORE_WALL_RIGHT, EXPLORE_WALL_LEFT };
-    static const int8_t rel[3] = { 0, 1, -1 };
-    for (uint8_t j = 0; j < 3; j++)
-        maze_set_wall(&e->map, e->cell, maze_turn(e->heading, rel[j]),
-                      (walls & bit[j]) ? MAZE_WALL_CLOSED : MAZE_WALL_OPEN);
+    /* front, right, left (computed, not tables: an AVR copies tables into its RAM) */
+    for (uint8_t j = 0; j < 3; j++) {
+        uint8_t bit = j == 0 ? EXPLORE_WALL_FRONT : j == 1 ? EXPLORE_WALL_RIGHT : EXPLORE_WALL_LEFT;
+        maze_set_wall(&e->map, e->cell, maze_turn(e->heading, j == 2 ? -1 : (int8_t)j),
+                      (walls & bit) ? MAZE_WALL_CLOSED : MAZE_WALL_OPEN);
+    }
 }
 
 void explore_moved(explore_t *e, uint8_t d)

@@ -76,19 +76,20 @@
  * 84 - 60 = 24 mm from it. */
 #define RC_TOF_FRONT_Y_MM 60.0f
 /* The diagonal pair ([ir.lds], [ir.rds]: x -+22, 14 mm ahead of the body's
- * centre = 28 ahead of the axle, 45 degrees out): walls.c reports each one's
- * perpendicular distance to its side wall, so the reading is already the
- * sideways distance (cos 1) */
+ * centre = 28 ahead of the axle, 45 degrees out, a 3 degree beam): walls.c
+ * reports each one's distance to its side wall along that axis, so the
+ * "cone's edge" of mouse.c's geometry is the axis itself, 45 degrees off
+ * the wall's normal */
 #define RC_TOF_SIDE_X_MM 22.0f
 #define RC_TOF_SIDE_Y_MM 28.0f
-#define RC_TOF_FOV_DEG 12.0f         /* [ir.*] det_half_angle_deg: unused by the firmware */
-#define RC_DIAG_EDGE_COS 1.0f
-#define RC_DIAG_EDGE_SIN 0.0f
-#define RC_SIDE_WALL_MM 62.0f        /* 84 - 22 mm, centred */
+#define RC_TOF_FOV_DEG 6.0f          /* [ir.*] half_angle_deg 3, both sides */
+#define RC_DIAG_EDGE_COS 0.7071f     /* cos 45 deg */
+#define RC_DIAG_EDGE_SIN 0.7071f     /* sin 45 deg */
+#define RC_SIDE_WALL_MM 87.7f        /* (84 - 22) / cos 45 deg, centred */
 /* walls.c decides a side wall by the calibration's threshold (no wall:
  * timeout); any distance it reports is a wall */
 #define RC_SIDE_THRESHOLD_MM 1000.0f
-#define RC_CENTRING_MAX_MM 82.0f     /* 20 mm off the centre line */
+#define RC_CENTRING_MAX_MM 116.0f    /* 20 mm off the centre line: (62 + 20) / cos 45 deg */
 #define RC_CENTRING_MIN_MM_S 100.0f
 /* The diagonals' spot lands 62 mm ahead of the sensor, 90 mm ahead of the
  * axle: on the post row at the end of the cell when the axle is near the
@@ -97,6 +98,14 @@
 #define RC_SIDE_BLIND_FROM_MM 20.0f
 #define RC_SIDE_BLIND_TO_MM 20.0f
 #define RC_FRONT_AT_CENTRE_MM (RC_CELL_MM / 2 - RC_WALL_MM / 2 - RC_TOF_FRONT_Y_MM) /* 24 mm */
+/* a wall ahead of the cell being sensed: nearer than its far wall plus
+ * half a cell (without it the next wall is a cell further: mostly beyond
+ * the front curve, a timeout) */
+#define RC_FRONT_WALL_MARGIN_MM 90.0f
+/* a side reading may be of the cell's entry post (mouse.c
+ * clear_of_entry_post) up to this beyond the post's half width: the
+ * beam's 3 degrees at 88 mm are +-5 mm */
+#define RC_POST_MARGIN_MM 6.0f
 /* The forward pair's sum against the wall ahead, in 1/64 of its sum in the
  * front calibration pose (backed against a rear wall, the wall ahead 71.5 mm
  * from the sensors), and the distance at each (mm, falling readings):

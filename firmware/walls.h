@@ -9,9 +9,9 @@
  *     IR sensors (hal_ir_count() == 0), else each role's lit-minus-dark
  *     reading (walls_ir.h's roles and
  *     calibration) turned into a distance:
- *       left, right: the side sensor's perpendicular distance to its side
- *         wall, RC_SIDE_WALL_MM * sqrt(calibrated reading / reading) (the
- *         far field's 1/d^2: sim/world/sensors/README.md), timeout when
+ *       left, right: the side sensor's distance to its side wall along
+ *         its axis, RC_SIDE_WALL_MM * sqrt(calibrated reading / reading)
+ *         (the far field's 1/d^2: sim/world/sensors/README.md), timeout when
  *         the reading is below the calibration's side threshold (no wall);
  *       front: the forward sensors' distance to the wall ahead, from the
  *         sum of the pair against its calibrated sum through the robot's
