@@ -8,13 +8,15 @@ SHELL := /bin/bash
 # function prototypes tools/arduino-build generates for a sketch's tabs;
 # gdb: avr-gdb (gdb-avr) reads its Python scripts from gdb's data directory
 # (/usr/share/gdb), without which it prints a Python error at every stop;
-# python3-matplotlib: tools/mmplot draws a run's log against time.
+# python3-matplotlib: tools/mmplot draws a run's log against time;
+# python3-dask, python3-distributed, python3-pandas, python3-pytest: the
+# python/mmsim package and tools/mmsweep (sweeps on Dask, their tests).
 DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev libinih-dev \
 	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev libdw-dev \
 	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev \
 	liblcm-java default-jdk-headless default-jre libjchart2d-java xvfb iproute2 \
 	libpng-dev libglfw3-dev libgl-dev python3-venv libx11-dev libxtst-dev gdb-avr gdb universal-ctags \
-	python3-matplotlib
+	python3-matplotlib python3-dask python3-distributed python3-pandas python3-pytest
 
 CC      ?= gcc
 STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
@@ -86,6 +88,23 @@ deps:
 	  SUDO=""; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
 	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null || { echo "make deps: apt-get failed" >&2; exit 3; }; \
 	fi
+	@$(MAKE) -s --no-print-directory $(VENV_STAMP) \
+	  || echo "make deps: no project venv ($(VENV)): tools/mmsweep needs it and test/cli_sweep.sh skips" >&2
+
+# The project venv: Debian's python3 (/usr/bin/python3) with its site
+# packages (dask, distributed, pandas, matplotlib) visible, plus the pinned
+# packages Debian lacks (python/requirements.txt: pyarrow, for the sweeps'
+# Parquet results). Rebuilt only when the requirements file changes. A pip
+# that cannot reach its index leaves the rest of make deps (and the build)
+# going: only the sweeps need the venv.
+VENV       := $(B)/venv
+VENV_STAMP := $(VENV)/.requirements-installed
+$(VENV_STAMP): python/requirements.txt
+	@[ -x $(VENV)/bin/python ] || /usr/bin/python3 -m venv --system-site-packages $(VENV) \
+	  || { echo "make deps: python3 -m venv failed (python3-venv)" >&2; exit 3; }
+	@$(VENV)/bin/python -m pip install -q -r python/requirements.txt \
+	  || { echo "make deps: pip install -r python/requirements.txt failed" >&2; exit 3; }
+	@touch $@
 
 # ---- LCM types ----
 $(LCM_STAMP): $(LCM_TYPES) | deps

@@ -28,17 +28,7 @@ SK=$B/clients/board
 
 want_rc 0 "the board sketches build for the Nano" mk board-sketches
 # open 16x16 mazes (posts only): as is, and with a wall east of the start cell
-python3 - "$T" <<'PY'
-import sys
-def maze(path, east):
-    n = 16; rows = ["o" + "---o" * n]
-    for r in range(n):
-        row = "|" + "    " * (n - 1) + "   |"
-        if r == n - 1 and east: row = row[:4] + "|" + row[5:]
-        rows += [row, "o" + ("---o" * n if r == n - 1 else "   o" * n)]
-    open(path, "w").write("\n".join(rows) + "\n")
-maze(sys.argv[1] + "/open.txt", False); maze(sys.argv[1] + "/east.txt", True)
-PY
+open_mazes "$T"
 run() { local img=$1 maze=$2; shift 2; "$MMSIM" --maze "$maze" --board ukmarsbot --avr "$img" --robot $ROBOT --json "$@"; }
 js() { python3 -c "import json,sys; j=json.loads(open(sys.argv[1]).read().splitlines()[-1]); $2" "$1"; }
 

@@ -15,8 +15,10 @@ trap cleanup EXIT
 start_xvfb cli_mms_view.sh
 gl_cmd "$S"; SIM=("${GL[@]}")
 
-for a in "floodfill.py 2" "wallfollow.py"; do # both colour the cells they visit: cyan / green
-  col=00ffff; [ "$a" = wallfollow.py ] && col=00ff00
+# both colour the cells they visit: cyan / green, drawn in the viewer's floor palette
+# (scene_cell_rgb: c 2a8c78, g 3c9c3c; never the overlay's bright cyan 30e0ff)
+for a in "floodfill.py 2" "wallfollow.py"; do
+  col=2a8c78; [ "$a" = wallfollow.py ] && col=3c9c3c
   # the algorithm inherits the preloaded ASan and Mesa (gl_cmd): Python then takes ~3 s to start
   # on a loaded machine, so a generous per-command timeout (wall clock)
   "${SIM[@]}" --maze mazes/gen-8x8-s1.txt --mms "python3 test/mms/$a" --mms-timeout-ms 60000 --screenshot "$T/s.png" --at 4 --camera 1 --size 320x240 --json >"$T/out" 2>"$T/err" \
@@ -27,8 +29,16 @@ for a in "floodfill.py 2" "wallfollow.py"; do # both colour the cells they visit
 done
 # without an mms algorithm there is no such colour
 "${SIM[@]}" --maze mazes/gen-8x8-s1.txt --screenshot "$T/f.png" --at 4 --camera 1 --size 320x240 >"$T/out" 2>"$T/err" || bad "firmware screenshot"
-n=$(python3 test/pngcheck.py "$T/f.png" near:00ffff:40)
+n=$(python3 test/pngcheck.py "$T/f.png" near:2a8c78:30)
 [ "${n:-1}" -eq 0 ] && ok "no cell colours without mms" || bad "cyan without mms: $n"
+
+# the cell numbers readable in the bird's view (800x600): floodfill's distances in white
+# (luma of the teal tint under 128) at 3 or more screen pixels per font pixel: over 100 text
+# pixels in the scene (right of the side panel: x > 0.3), none of the tint near the overlay's cyan
+"${SIM[@]}" --maze mazes/gen-8x8-s1.txt --mms "python3 test/mms/floodfill.py 2" --mms-timeout-ms 60000 --screenshot "$T/big.png" --at 4 --camera 1 --size 800x600 >"$T/out" 2>"$T/err" \
+  || bad "800x600 mms screenshot: $(head -3 "$T/err")"
+n=$(python3 test/pngcheck.py "$T/big.png" near:ffffff:10:0.3:0:1:0.85); c=$(python3 test/pngcheck.py "$T/big.png" near:2a8c78:30)
+[ "${n:-0}" -gt 100 ] && [ "${c:-0}" -gt 1000 ] && ok "cell numbers readable ($n text px on $c tinted px)" || bad "cell numbers: $n text px, $c tinted px"
 
 # an algorithm that waits for Reset (test/mms/resetwait.py: polls wasReset
 # after the goal): in --gui the contest clock runs while it waits, until the

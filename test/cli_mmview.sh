@@ -24,7 +24,7 @@ run() { local b=$1; shift; gl_cmd "$b"; "${GL[@]}" "$@"; }
 
 M=mazes/gen-5x5-s1.txt
 want_rc 0 "firmware contest logged" "$S" --maze $M --driver firmware --lcm-log "$T/run.lcmlog"
-BOX=0:0.2:1:0.8   # the maze area, clear of the HUD rows (which differ: log time, slider)
+BOX=0.37:0.2:1:0.72 # the maze area in the scene's rectangle (hud_scene_rect, 640x480: x 232..640, y 0..350), clear of the HUD
 for t in 2 5; do
   want_rc 0 "mmview screenshot at $t s" run "$V" "$T/run.lcmlog" --screenshot "$T/view$t.png" --at $t --size 640x480
   want_rc 0 "mmsim screenshot at $t s" run "$S" --maze $M --driver firmware --screenshot "$T/sim$t.png" --at $t --size 640x480
@@ -43,7 +43,19 @@ python3 -c "import math,sys; sys.exit(0 if math.hypot($vx2-$vx5, $vy2-$vy5) > 20
 # the mouse's map overlay (cyan wall bars) is drawn from the log's belief
 n=$($P "$T/view5.png" near:30e0ff:40:$BOX); [ "${n:-0}" -gt 200 ] && ok "belief overlay drawn ($n px)" || bad "overlay pixels: $n"
 want_rc 0 "follow camera" run "$V" "$T/run.lcmlog" --screenshot "$T/follow.png" --at 5 --camera 2 --size 320x240
-n=$($P "$T/follow.png" near:2a5ce0:60:0.4:0.4:0.6:0.6); [ "${n:-0}" -gt 200 ] && ok "robot at the centre of the follow view" || bad "follow view robot pixels: $n"
+n=$($P "$T/follow.png" near:2a5ce0:60:0.6:0.13:0.8:0.33) # the scene's middle (320x240: x 124..320, y 0..110); [ "${n:-0}" -gt 200 ] && ok "robot at the centre of the follow view" || bad "follow view robot pixels: $n"
+
+# a replay makes no link: no Port/Baud fields (their box 303030) nor Connect, which the live
+# firmware run (a driver a link could replace) shows in the side panel
+a=$($P "$T/view5.png" near:303030:0); b=$($P "$T/sim5.png" near:303030:0)
+[ "${a:-1}" -eq 0 ] && [ "${b:-0}" -gt 1000 ] && ok "no Connect panel in mmview ($b px in mmsim's)" || bad "Connect panel px: mmview $a, mmsim $b"
+# the lap table: by 5 s the firmware has run a lap: a row " 1  m:ss.mmm *" under the header (white
+# text in rows 7-8 of the panel: y 128..168 of 480), none at 0.5 s; the same in mmview
+want_rc 0 "mmsim screenshot at 0.5 s" run "$S" --maze $M --driver firmware --screenshot "$T/sim05.png" --at 0.5 --size 640x480
+a=$($P "$T/sim5.png" near:ffffff:10:0:0.27:0.36:0.35); v=$($P "$T/view5.png" near:ffffff:10:0:0.27:0.36:0.35)
+b=$($P "$T/sim05.png" near:ffffff:10:0:0.27:0.36:0.35)
+[ "${a:-0}" -gt 100 ] && [ "${v:-0}" -gt 100 ] && [ "${b:-1}" -lt "${a:-0}" ] \
+  && ok "lap table: a lap row at 5 s ($a px; mmview $v), Best - at 0.5 s ($b px)" || bad "lap table px: $a at 5 s (mmview $v), $b at 0.5 s"
 
 # An IR robot (test/robots/ir.ini): its geometry comes from MM_MAZE's robot,
 # the emitter groups from MM_PARTS. Beams drawn as mmsim draws them (dark:

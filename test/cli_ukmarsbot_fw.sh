@@ -57,17 +57,7 @@ else
 fi
 
 # open 16x16 mazes (posts only): as is, and with a wall east of the start cell
-python3 - "$T" <<'PY'
-import sys
-def maze(path, east):
-    n = 16; rows = ["o" + "---o" * n]
-    for r in range(n):
-        row = "|" + "    " * (n - 1) + "   |"
-        if r == n - 1 and east: row = row[:4] + "|" + row[5:]
-        rows += [row, "o" + ("---o" * n if r == n - 1 else "   o" * n)]
-    open(path, "w").write("\n".join(rows) + "\n")
-maze(sys.argv[1] + "/open.txt", False); maze(sys.argv[1] + "/east.txt", True)
-PY
+open_mazes "$T"
 ROBOT=$T/ukmarsbot-centre.ini
 sed 's/^start = back_to_wall$/start = centre/' robots/ukmarsbot.ini >"$ROBOT"
 HANDS="0.3 send=i; 0.4 send=b; 0.5 send=m; 1.3 send=e; 1.4 send=k; 1.5 end"

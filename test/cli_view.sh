@@ -30,11 +30,28 @@ done
   [ "$($P "$T/cam3.png" size)" = "320 240" ] && ok "requested size" || bad "sizes"
 # wall tops (SCENE_WALL_TOP d02828) in the bird's view
 n=$($P "$T/cam1.png" near:d02828:40); [ "${n:-0}" -gt 300 ] && ok "walls in the bird's view ($n px)" || bad "wall pixels: $n"
-# robot body (SCENE_ROBOT 2a5ce0) in the middle of the follow and top views
+# robot body (SCENE_ROBOT 2a5ce0) in the middle of the follow and top views: the
+# middle of the scene's rectangle (hud_scene_rect, 320x240: x 124..320, y 0..110,
+# right of the side panel, above the bottom bar; centre 0.69, 0.23)
+SCENE_MID=0.6:0.13:0.8:0.33
 for c in 2 3; do
-  n=$($P "$T/cam$c.png" near:2a5ce0:60:0.4:0.4:0.6:0.6)
+  n=$($P "$T/cam$c.png" near:2a5ce0:60:$SCENE_MID)
   [ "${n:-0}" -gt 200 ] && ok "robot at the centre of camera $c ($n px)" || bad "robot pixels in camera $c: $n"
 done
+
+# no 3D geometry under the HUD: the side panel and the bottom bar are opaque and the scene
+# is drawn in its own rectangle, so at the same moment the bird's view and the follow view
+# (walls across the whole window) differ only there and at the camera buttons (640x480:
+# the panel x < 232, the scene y < 350, the camera buttons x < 396)
+for c in 1 2; do
+  "${SIM[@]}" --maze $M --driver scripted --screenshot "$T/hud$c.png" --camera $c --at 2 --size 640x480 >"$T/out" 2>"$T/err" \
+    || { bad "640x480 camera $c screenshot"; head -5 "$T/err"; }
+done
+p=$($P "$T/hud2.png" diff:"$T/hud1.png":0:0:0:0.36:0.72); b=$($P "$T/hud2.png" diff:"$T/hud1.png":0:0.63:0.74:1:1)
+s=$($P "$T/hud2.png" diff:"$T/hud1.png":40:0.37:0:1:0.72)
+[ "${p:-1}" -eq 0 ] && [ "${b:-1}" -eq 0 ] && [ "${s:-0}" -gt 20000 ] \
+  && ok "HUD text over no 3D geometry (panel and bar the same in cameras 1 and 2; scenes $s px apart)" \
+  || bad "3D under the HUD: panel $p px, bar $b px differ between cameras (scenes $s px)"
 
 # HUD timers (upper left) turn red (0xFF3030) after the contest limit: a 1 s
 # limit ends the run and the screenshot shows that last frame
@@ -46,10 +63,11 @@ a=$($P "$T/over.png" near:ff3030:40:0:0:0.5:0.15); b=$($P "$T/cam1.png" near:ff3
 
 # the centre post shows or not (6x6: the post at the maze's centre)
 for p in on off; do
-  "${SIM[@]}" --maze mazes/gen-6x6-s1.txt --driver scripted --centre-post $p --screenshot "$T/post$p.png" --camera 1 --size 320x240 >"$T/out" 2>"$T/err" \
+  "${SIM[@]}" --maze mazes/gen-6x6-s1.txt --driver scripted --centre-post $p --screenshot "$T/post$p.png" --camera 1 --size 640x480 >"$T/out" 2>"$T/err" \
     || { bad "post $p screenshot"; head -5 "$T/err"; }
 done
-a=$($P "$T/poston.png" near:d02828:40:0.45:0.4:0.55:0.6); b=$($P "$T/postoff.png" near:d02828:40:0.45:0.4:0.55:0.6)
+POST=0.64:0.28:0.72:0.44 # around the maze's centre in the scene's rectangle (640x480: x 232..640, y 0..350)
+a=$($P "$T/poston.png" near:d02828:40:$POST); b=$($P "$T/postoff.png" near:d02828:40:$POST)
 [ "${a:-0}" -gt "${b:-0}" ] && ok "centre post drawn when present ($a > $b px)" || bad "centre post pixels: on $a, off $b"
 
 # IR sensors' beams: the paper robot and the same robot with four IR sensors

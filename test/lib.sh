@@ -35,3 +35,17 @@ gl_cmd() { GL=("$1")
     [ -n "$dri" ] && pre="$asan $dri"
     GL=(env "LD_PRELOAD=$pre" "LSAN_OPTIONS=suppressions=$PWD/test/lsan-gl.supp" "$1")
   fi; }
+# open_mazes DIR: DIR/open.txt, an open 16x16 maze (outer walls and posts
+# only), and DIR/east.txt, the same with a wall east of the start cell.
+open_mazes() { python3 - "$1" <<'PY'
+import sys
+def maze(path, east):
+    n = 16; rows = ["o" + "---o" * n]
+    for r in range(n):
+        row = "|" + "    " * (n - 1) + "   |"
+        if r == n - 1 and east: row = row[:4] + "|" + row[5:]
+        rows += [row, "o" + ("---o" * n if r == n - 1 else "   o" * n)]
+    open(path, "w").write("\n".join(rows) + "\n")
+maze(sys.argv[1] + "/open.txt", False); maze(sys.argv[1] + "/east.txt", True)
+PY
+}

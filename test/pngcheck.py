@@ -10,6 +10,8 @@
       default the whole image)
   centroid:RRGGBB:TOL[:box]     -> "X Y", mean pixel position of those
       pixels ("- -" if none)
+  bbox:RRGGBB:TOL[:box]         -> "X0 Y0 X1 Y1", the pixel bounds of
+      those pixels, inclusive ("- - - -" if none)
   diff:OTHER.png:TOL[:box]      -> pixels of the box whose colour differs
       from OTHER's (same size) by more than TOL in some channel
 Exit 2 with one line on stderr if the file is not such a PNG."""
@@ -19,6 +21,27 @@ import zlib
 
 
 def read_png(path):
+    """(w, h, bpp, rows): rows[y] the row's bytes, bpp 3 (RGB) or 4 (RGBA).
+    Pillow decodes when it is there (Debian's python3-pil, which
+    python3-matplotlib brings: much faster), else the standard library."""
+    try:
+        from PIL import Image
+    except ImportError:
+        return read_png_zlib(path)
+    try:
+        with Image.open(path) as im:
+            if im.format != 'PNG' or im.mode not in ('RGB', 'RGBA') or im.info.get('interlace'):
+                raise ValueError('not a PNG' if im.format != 'PNG' else 'only 8-bit RGB/RGBA, not interlaced')
+            w, h = im.size
+            bpp = 3 if im.mode == 'RGB' else 4
+            raw = im.tobytes()
+    except OSError as e:
+        raise ValueError('not a PNG' if 'cannot identify' in str(e) else str(e))
+    stride = w * bpp
+    return w, h, bpp, [bytearray(raw[y * stride:(y + 1) * stride]) for y in range(h)]
+
+
+def read_png_zlib(path):
     data = open(path, 'rb').read()
     if data[:8] != b'\x89PNG\r\n\x1a\n':
         raise ValueError('not a PNG')
@@ -93,20 +116,24 @@ def main():
                     if max(abs(u - v) for u, v in zip(px(x, y), o)) > tol:
                         n += 1
             print(n)
-        elif a[0] in ('near', 'centroid'):
+        elif a[0] in ('near', 'centroid', 'bbox'):
             col = int(a[1], 16)
             want = (col >> 16, (col >> 8) & 255, col & 255)
             tol = int(a[2])
             box = [float(v) for v in a[3:7]] if len(a) >= 7 else [0, 0, 1, 1]
             x0, y0, x1, y1 = int(box[0] * w), int(box[1] * h), int(box[2] * w), int(box[3] * h)
             n = sx = sy = 0
+            bx0, by0, bx1, by1 = w, h, -1, -1
             for y in range(y0, y1):
                 for x in range(x0, x1):
                     if max(abs(u - v) for u, v in zip(px(x, y), want)) <= tol:
                         n += 1
                         sx += x
                         sy += y
-            if a[0] == 'near':
+                        bx0, by0, bx1, by1 = min(bx0, x), min(by0, y), max(bx1, x), max(by1, y)
+            if a[0] == 'bbox':
+                print(f'{bx0} {by0} {bx1} {by1}' if n else '- - - -')
+            elif a[0] == 'near':
                 print(n)
             else:
                 print(f'{sx / n:.2f} {sy / n:.2f}' if n else '- -')
@@ -115,4 +142,5 @@ def main():
             sys.exit(2)
 
 
-main()
+if __name__ == '__main__':
+    main()

@@ -12,6 +12,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "world/config.h"
@@ -209,6 +210,14 @@ static void test_connect_fields(void **state)
     long baud;
     hud_button_t f[HUD_FIELDS];
     hud_fields(opts.width, opts.height, f);
+    hud_button_t bt[HUD_BTN_COUNT];
+    hud_layout(opts.width, opts.height, bt);
+    /* no link can be made (the default, and any replay): neither Connect nor the fields take clicks */
+    assert_int_equal(view_click(view, &sim, bt[HUD_BTN_CONNECT].x + 5.0, bt[HUD_BTN_CONNECT].y + 5.0), -1);
+    view_release(view);
+    assert_int_equal(view_click(view, &sim, f[0].x + 5.0, f[0].y + 5.0), -1);
+    view_release(view);
+    view_set_link_ok(view, 1);
     /* no port yet: Connect only says so */
     click_button(HUD_BTN_CONNECT);
     assert_int_equal(view_connect_request(view, &port, &baud), 0);
@@ -239,6 +248,7 @@ static void test_connect_fields(void **state)
     view_key(view, &sim, GLFW_KEY_3);
     assert_int_equal(view_camera(view), 3);
     view_key(view, &sim, GLFW_KEY_1);
+    view_set_link_ok(view, 0);
 }
 
 /* mms runs: the Reset button (and X) set the algorithm's wasReset flag;
@@ -296,12 +306,15 @@ static void test_board_panel(void **state)
     hud_board_layout_t l;
     hud_board_layout(opts.width, opts.height, &l);
     /* where test/cli_view_board.sh clicks in an 800x600 window */
-    assert_int_equal(l.ctl[HUD_BOARD_SW0].x, 8), assert_int_equal(l.ctl[HUD_BOARD_SW0].y, 76);
+    assert_int_equal(l.ctl[HUD_BOARD_SW0].x, 8), assert_int_equal(l.ctl[HUD_BOARD_SW0].y, 236);
     assert_int_equal(l.ctl[HUD_BOARD_SW0].w, 28), assert_int_equal(l.ctl[HUD_BOARD_BUTTON].x, 140);
     assert_int_equal(l.rows, HUD_CONSOLE_LINES);
-    for (int i = 0; i < HUD_BOARD_COUNT; i++) /* clear of the HUD's buttons and fields */
-        assert_int_equal(hud_hit(opts.width, opts.height, l.ctl[i].x + 1, l.ctl[i].y + 1), -1),
-        assert_int_equal(hud_field_hit(opts.width, opts.height, l.ctl[i].x + 1, l.ctl[i].y + 1), -1);
+    /* clear of the HUD's buttons (the fields and Connect share the place but
+     * are never shown with a board: no link can be made there) */
+    for (int i = 0; i < HUD_BOARD_COUNT; i++) {
+        int b = hud_hit(opts.width, opts.height, l.ctl[i].x + 1, l.ctl[i].y + 1);
+        assert_true(b == -1 || b == HUD_BTN_CONNECT);
+    }
     assert_int_equal(view_click(view, &sim, l.ctl[0].x + 5, l.ctl[0].y + 5), -1); /* no board: the scene */
     view_release(view);
     assert_int_equal(view_hands_request(view, &h), 0);
@@ -358,6 +371,81 @@ static void test_console_rows(void **state)
     assert_int_equal((int)strlen(rows[11]), (int)((sizeof big - 1) % 40 ? (sizeof big - 1) % 40 : 40));
 }
 
+static int apart(const hud_button_t *a, const hud_button_t *b)
+{
+    return a->x + a->w <= b->x || b->x + b->w <= a->x || a->y + a->h <= b->y || b->y + b->h <= a->y;
+}
+
+/* The 3D scene's rectangle never meets a HUD control: the buttons shown,
+ * the fields and Connect (no board), the board's controls, LEDs and
+ * console, the replay's slider; in every window size and kind of run */
+static void test_scene_apart(void **state)
+{
+    (void)state;
+    static const int size[][2] = { { 800, 600 }, { 1024, 720 }, { 320, 240 }, { 1920, 1080 } };
+    for (size_t z = 0; z < sizeof size / sizeof size[0]; z++)
+        for (int kind = 0; kind < 8; kind++) {
+            int W = size[z][0], H = size[z][1], board = kind & 1, replay = kind >> 1 & 1, mms = kind >> 2 & 1;
+            hud_button_t sc, bt[HUD_BTN_COUNT], f[HUD_FIELDS], sl;
+            hud_scene_rect(W, H, board, &sc);
+            assert_true(sc.x >= hud_panel_w(W, board) && sc.w > W / 2 && sc.h > H * 2 / 5); /* a 320x240 replay: 110 px high */
+            hud_layout(W, H, bt);
+            for (int i = 0; i < HUD_BTN_COUNT; i++)
+                if ((i != HUD_BTN_RESET || mms) && (i != HUD_BTN_CONNECT || (!board && !replay))) assert_true(apart(&sc, &bt[i]));
+            hud_fields(W, H, f);
+            for (int i = 0; i < HUD_FIELDS && !board && !replay; i++) assert_true(apart(&sc, &f[i]));
+            hud_slider(W, H, &sl);
+            if (replay) assert_true(apart(&sc, &sl));
+            if (!board) continue;
+            hud_board_layout_t l;
+            hud_board_layout(W, H, &l);
+            for (int i = 0; i < HUD_BOARD_COUNT; i++) assert_true(apart(&sc, &l.ctl[i]));
+            assert_true(apart(&sc, &l.leds) && apart(&sc, &l.console));
+        }
+}
+
+/* The HUD's lap table: the latest laps, the best marked, a Best line */
+static void test_lap_rows(void **state)
+{
+    (void)state;
+    race_t r;
+    char rows[HUD_LAP_ROWS + 2][32];
+    memset(&r, 0, sizeof r);
+    r.best = -1;
+    assert_int_equal(hud_lap_rows(&r, rows), 2);
+    assert_string_equal(rows[0], "Lap  Run time");
+    assert_string_equal(rows[1], "Best -");
+    for (int i = 0; i < 6; i++) r.laps[i] = (race_lap_t){ 10.0 * i, 10.0 * i + 7 + (i == 2 ? -1.5 : 0), 0 };
+    r.nlaps = 6;
+    r.best = 2;
+    assert_int_equal(hud_lap_rows(&r, rows), HUD_LAP_ROWS + 2);
+    assert_string_equal(rows[1], " 3  0:05.500 *");
+    assert_string_equal(rows[4], " 6  0:07.000");
+    assert_string_equal(rows[5], "Best 0:05.500");
+}
+
+/* The mms cell palette: every letter tinted, none close to the overlay's
+ * discovered-wall colours (some channel more than 0x50 apart), the letters
+ * told apart from each other */
+static void test_cell_palette(void **state)
+{
+    (void)state;
+    static const char letters[] = "kbacgorwyBCAGRY";
+    static const uint32_t over[] = { SCENE_OVERLAY_WALL, SCENE_OVERLAY_WRONG };
+    for (int i = 0; letters[i]; i++) {
+        uint32_t c = scene_cell_rgb(letters[i]);
+        assert_true(c != 0);
+        for (int o = 0; o < 2; o++) {
+            int far = 0;
+            for (int sh = 0; sh <= 16; sh += 8) far |= abs((int)(c >> sh & 255) - (int)(over[o] >> sh & 255)) > 0x50;
+            assert_true(far);
+        }
+        for (int j = 0; j < i; j++) assert_true(scene_cell_rgb(letters[j]) != c);
+    }
+    assert_int_equal(scene_cell_rgb(0), 0);
+    assert_int_equal(scene_cell_rgb('z'), 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -370,6 +458,9 @@ int main(void)
         cmocka_unit_test(test_mms_reset_button),
         cmocka_unit_test(test_board_panel),
         cmocka_unit_test(test_console_rows),
+        cmocka_unit_test(test_scene_apart),
+        cmocka_unit_test(test_lap_rows),
+        cmocka_unit_test(test_cell_palette),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -341,12 +341,12 @@ static int png_or_no_ext(const char *path)
     return !dot || dot == (base ? base + 1 : path) || strcasecmp(dot, ".png") == 0;
 }
 
-/* --report (its PNG, SVG and JSON) and --screenshot fail now, not after a
+/* --report (its PNG, SVG, JSON and plots PNG) and --screenshot fail now, not after a
  * ten-minute contest: an empty name, a folder, a path that cannot be written. */
 static int probe_outputs(const run_opts_t *o)
 {
-    char paths[4][4096], perr[600];
-    const char *flag[4] = { "--report", "--report", "--report", "--screenshot" };
+    char paths[REPORT_FILES + 1][4096], perr[600];
+    const char *flag[REPORT_FILES + 1] = { "--report", "--report", "--report", "--report", "--screenshot" };
     int n = 0;
     for (int k = 0; k < 2; k++) { /* each writes a PNG: a name that says otherwise is a mistake */
         const char *name = k ? o->shot : o->report;
@@ -359,6 +359,7 @@ static int probe_outputs(const run_opts_t *o)
         snprintf(paths[n++], sizeof paths[0], "%s", o->report);
         report_sibling(o->report, ".svg", paths[n++], sizeof paths[0]);
         report_sibling(o->report, ".json", paths[n++], sizeof paths[0]);
+        report_sibling(o->report, "-plots.png", paths[n++], sizeof paths[0]);
     }
     if (o->shot) {
         flag[n] = "--screenshot";

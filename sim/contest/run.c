@@ -106,6 +106,9 @@ static int open_outputs(run_t *r)
     snprintf(err, sizeof err, "out of memory");
     r->view = view_new(&vo);
     if (r->view) view_set_belief(r->view, run_belief(r)); /* the overlay reads it each frame */
+    /* Connect hands the run to a serial MCU: only where the mouse is the
+     * simulator's own (firmware, mms, scripted), not a board's image nor a link */
+    if (r->view) view_set_link_ok(r->view, lnk == NULL && !o->board);
     if (r->view && r->drv->show) r->drv->show(r, r->self, r->view);
     if (!r->view || view_open(r->view, o->gui, err, sizeof err) != 0) {
         fprintf(stderr, "mmsim: %s\n", err);
@@ -242,6 +245,7 @@ static void hand_to_link(run_t *r, const char *port, long baud)
     r->ctl_self = self;
     r->sim.cmd[0] = r->sim.cmd[1] = 0;
     if (r->tel_on) r->tel.link = run_serial.link(self); /* MM_LINK from now on */
+    view_set_link_ok(r->view, 0);
     view_set_status(r->view, "connected: the MCU drives from now on");
 }
 

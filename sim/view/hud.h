@@ -1,11 +1,15 @@
-/* hud.h - the viewer's 2D overlay: timers at the upper left (red after
- * the contest limit), serial port and baud fields (editable, see view.h)
- * with a Connect button at the upper right, camera and overlay buttons at
- * the lower left, run controls at the bottom centre, "Toggle post" at
- * the lower right; when replaying a log, a time slider above the bottom
- * row; with a board (--board), under the timers: its four function
- * switches, BUTTON and RESET, its LEDs, and a console panel (the last
- * lines the firmware printed).
+/* hud.h - the viewer's 2D overlay. The window is split so that no 3D
+ * geometry ever shows under text: a side panel on the left (opaque) holds
+ * the timers (red after the contest limit), the speed, the mouse's state,
+ * the lap table and, with a board (--board), its four function switches,
+ * BUTTON and RESET, its LEDs and a console panel (the last lines the
+ * firmware printed); a bar along the bottom (opaque) holds the camera and
+ * overlay buttons (lower left), the run controls (bottom centre), "Toggle
+ * post" (lower right), the status line and, when replaying a log, a time
+ * slider; the 3D scene fills the rest (hud_scene_rect). Where a serial
+ * link can be made, the serial port and baud fields (editable, see
+ * view.h) with a Connect button sit at the scene's upper right, on opaque
+ * boxes.
  * Layout and hit tests need no GL (the viewer's tests use them); drawing
  * needs a current GL context. Pixel coordinates: origin top-left. */
 #ifndef HUD_H
@@ -54,11 +58,12 @@ typedef struct {
     hud_button_t leds;    /* the LED row */
     hud_button_t console; /* the console panel at its tallest (drawn as tall as its text) */
     int console_scale;    /* screen pixels per font pixel there */
+    int ctl_scale;        /* and on the controls and the LEDs' names */
     int cols, rows;       /* console text that fits */
 } hud_board_layout_t;
 
 /* Where the board's panel sits in a win_w x win_h window. */
-void hud_board_layout(int win_w, int win_h, hud_board_layout_t *out);
+void hud_board_layout(int win_w, int win_h, hud_board_layout_t *out); /* (within the side panel) */
 /* The board control under (x, y) (HUD_BOARD_*), or -1. */
 int hud_board_hit(int win_w, int win_h, double x, double y);
 /* The last `rows` rows of console text c (n bytes) wrapped at `cols`
@@ -80,7 +85,22 @@ typedef struct {
     const char *baud_text; /* the baud field's text, or NULL: baud */
     int mms;              /* an mms algorithm drives: show Reset */
     const hud_board_t *board; /* a board's panel, or NULL */
+    int link_ok;          /* a serial link can be made: show Port, Baud and Connect */
+    int mouse_state;      /* the firmware's state (belief.h: mouse.h MOUSE_*), -1 not published */
+    double v_m_s;         /* the robot's speed along its heading, m/s */
 } hud_info_t;
+
+/* The side panel's width in a W-pixel-wide window (wider with a board). */
+int hud_panel_w(int win_w, int board);
+/* Where the 3D scene is drawn (top-left origin): right of the side panel,
+ * above the bottom bar (the same in a live run and a replay). */
+void hud_scene_rect(int win_w, int win_h, int board, hud_button_t *out);
+#define HUD_INFO_LINES 11 /* the side panel's text lines above the board's controls */
+#define HUD_LAP_ROWS 4    /* laps listed (the latest) */
+/* The lap table's rows for race r: "Lap  Run time" then the latest
+ * HUD_LAP_ROWS laps ("N  m:ss.mmm", "*" the best, "!" over time), then
+ * "Best m:ss.mmm" (or "Best -"); rows into out[i]. Returns the rows filled. */
+int hud_lap_rows(const race_t *r, char out[][32]);
 
 enum { HUD_FIELD_PORT = 0, HUD_FIELD_BAUD = 1, HUD_FIELDS = 2 };
 

@@ -137,6 +137,7 @@ static int on_event(void *ctx, const lcm_eventlog_event_t *ev)
             r->belief[n].utime = m.utime;
             r->belief[n].cell = m.cell;
             r->belief[n].heading = (uint8_t)(m.heading & 3);
+            r->belief[n].state = m.state;
             memcpy(r->belief_walls + n * cells, m.walls, cells);
             r->nbelief++;
             ut = m.utime;
@@ -257,6 +258,7 @@ void replay_snap(const replay_t *r, double t_s, snap_t *out)
     memset(out, 0, sizeof *out);
     if (i >= 0) {
         snap_place(out, &r->model, &r->maze, r->centre_post, r->pose[i].x_m, r->pose[i].y_m, r->pose[i].heading_rad, wheel);
+        out->v_m_s = r->pose[i].v_m_s;
     } else { /* before the first pose: at the start cell's centre */
         static const double a[4] = { M_PI / 2, 0.0, -M_PI / 2, M_PI };
         const maze_t *m = &r->maze;
@@ -277,6 +279,7 @@ void replay_belief(replay_t *r, double t_s, scene_belief_t *b)
     b->map = NULL;
     b->cell = 0;
     b->heading = 0;
+    b->state = -1;
     if (k < 0) return;
     size_t cells = maze_cells(&r->maze);
     r->bmap = r->maze; /* size, start and goals of the truth; the walls the mouse knew */
@@ -284,6 +287,7 @@ void replay_belief(replay_t *r, double t_s, scene_belief_t *b)
     b->map = &r->bmap;
     b->cell = (uint16_t)r->belief[k].cell;
     b->heading = r->belief[k].heading;
+    b->state = r->belief[k].state;
 }
 
 double replay_next_s(const replay_t *r, double t_s, int dir)

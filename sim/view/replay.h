@@ -30,6 +30,7 @@ typedef struct {
     int64_t utime;
     int16_t cell;
     uint8_t heading;
+    int8_t state;             /* the firmware's state (mouse.h MOUSE_*) */
 } replay_belief_t;
 
 /* An MM_PARTS message as the viewer needs it: the emitter groups' states

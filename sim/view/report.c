@@ -12,6 +12,7 @@
 #include "mms/mms.h"
 #include "image.h"
 #include "io/outfile.h"
+#include "plots.h"
 #include "maze/solve.h"
 
 typedef struct {
@@ -34,6 +35,7 @@ struct report {
     double watch_now[REPORT_WATCH_MAX]; /* their latest values */
     double *wrows;                    /* per sample: t, x, y, heading, then the values */
     size_t wn, wcap;                  /* rows kept, rows allocated */
+    plots_t *plots;                   /* the page of plots against time */
 };
 
 report_t *report_new(const sim_state_t *s)
@@ -45,6 +47,11 @@ report_t *report_new(const sim_state_t *s)
     r->every = (uint64_t)llround(REPORT_SAMPLE_S / s->model->cfg->sim.step_s);
     if (r->every == 0) r->every = 1;
     r->visited[s->maze->start] = 1;
+    r->plots = plots_new(s);
+    if (!r->plots) {
+        free(r);
+        return NULL;
+    }
     return r;
 }
 
@@ -53,6 +60,7 @@ void report_free(report_t *r)
     if (!r) return;
     free(r->s);
     free(r->wrows);
+    plots_free(r->plots);
     free(r);
 }
 
@@ -92,7 +100,9 @@ static void watch_row(report_t *r, double t, double x, double y, double h)
 
 void report_step(report_t *r, const sim_state_t *s)
 {
+    plots_contacts(r->plots, s);
     if (s->step % r->every) return;
+    plots_sample(r->plots, s, r->watch_n, r->watch_now);
     if (r->n == r->cap) {
         size_t cap = r->cap ? r->cap * 2 : 4096;
         sample_t *p = realloc(r->s, cap * sizeof *p);
@@ -501,7 +511,7 @@ static json_t *watch_json(const report_t *r)
 
 /* The JSON file into f: 0, or -1. */
 static int write_json(const report_t *r, const sim_state_t *s, const solve_path_t *final, FILE *f, const char *png,
-                      const char *svg, const char *title)
+                      const char *svg, json_t *plots, const char *title)
 {
     const race_t *rc = &s->race;
     json_t *laps = json_array();
@@ -518,21 +528,38 @@ static int write_json(const report_t *r, const sim_state_t *s, const solve_path_
     json_object_set_new(j, "best_run_s", rc->best >= 0 ? json_real(rc->laps[rc->best].end_s - rc->laps[rc->best].start_s)
                                                        : json_null());
     if (r->watch_n) json_object_set_new(j, "watch", watch_json(r));
+    if (j) json_object_set(j, "plots", plots);
     int rcode = j && json_dumpf(j, f, JSON_INDENT(2) | JSON_REAL_PRECISION(10)) == 0 && fputc('\n', f) != EOF ? 0 : -1;
     json_decref(j);
     return rcode;
 }
 
-/* The three files' temporaries written and closed: 0, or -1 with one line in err. */
-static int write_three(outfile_t *o, const report_t *r, const sim_state_t *s, const maze_t *learned,
-                       const solve_path_t *path, const char *title, char *err, size_t errlen)
+/* The page of plots drawn into im (image_free it) and what it shows into
+ * *desc (the JSON's "plots", with its file's name): 0, or -1 with one line in err. */
+static int plots_page(const char *name, const report_t *r, const sim_state_t *s, const char *title, image_t *im,
+                      json_t **desc, char *err, size_t errlen)
+{
+    *desc = NULL;
+    if (plots_draw(r->plots, s, r->watch_n, r->watch_names, title, im, desc) != 0) {
+        snprintf(err, errlen, "%s: out of memory", name);
+        return -1;
+    }
+    json_object_set_new(*desc, "png", json_string(name));
+    json_object_set_new(*desc, "sample_s", json_real(REPORT_SAMPLE_S));
+    return 0;
+}
+
+/* The four files' temporaries written and closed, the plots page last (its
+ * PNG the largest): 0, or -1 with one line in err. */
+static int write_four(outfile_t *o, const report_t *r, const sim_state_t *s, const maze_t *learned,
+                      const solve_path_t *path, const char *title, char *err, size_t errlen)
 {
     layout_t L;
     if (layout_make(&L, r, s, title) != 0) {
         snprintf(err, errlen, "%s: out of memory", o[0].path);
         return -1;
     }
-    image_t im;
+    image_t im, page = { 0, 0, NULL };
     if (image_init(&im, L.w, L.h, C_BG) != 0) {
         snprintf(err, errlen, "%s: out of memory", o[0].path);
         free(L.table);
@@ -548,13 +575,19 @@ static int write_three(outfile_t *o, const report_t *r, const sim_state_t *s, co
         canvas_t sv = { NULL, o[1].f };
         draw(&sv, &L, r, s, learned, path, title);
         fputs("</svg>\n", o[1].f);
-        if (write_json(r, s, path, o[2].f, o[0].path, o[1].path, title) != 0) {
+        json_t *plots = NULL;
+        rc = plots_page(o[3].path, r, s, title, &page, &plots, err, errlen);
+        if (rc == 0 && write_json(r, s, path, o[2].f, o[0].path, o[1].path, plots, title) != 0) {
             snprintf(err, errlen, "%s: cannot write", o[2].path);
             rc = -1;
         }
+        json_decref(plots);
     }
     free(L.table);
     for (int i = 0; i < 3 && rc == 0; i++) rc = outfile_finish(&o[i], err, errlen);
+    if (rc == 0) rc = image_write_png_file(&page, o[3].f, o[3].path, err, errlen);
+    image_free(&page);
+    if (rc == 0) rc = outfile_finish(&o[3], err, errlen);
     return rc;
 }
 
@@ -563,16 +596,17 @@ int report_write(const report_t *r, const sim_state_t *s, const maze_t *learned,
 {
     static solve_path_t best;
     const solve_path_t *path = path_on && solve_best(path_on, 0, &best) == 0 ? &best : NULL;
-    char paths[3][4096];
-    outfile_t o[3];
+    char paths[REPORT_FILES][4096];
+    outfile_t o[REPORT_FILES];
     int n = 0;
     snprintf(paths[0], sizeof paths[0], "%s", png_path);
     report_sibling(png_path, ".svg", paths[1], sizeof paths[1]);
     report_sibling(png_path, ".json", paths[2], sizeof paths[2]);
-    while (n < 3 && outfile_open(&o[n], paths[n], err, errlen) == 0) n++;
-    int rc = n == 3 ? write_three(o, r, s, learned, path, title, err, errlen) : -1;
-    /* all three written before any is renamed: all three files, or none */
-    for (int i = 0; i < 3 && rc == 0; i++) rc = outfile_rename(&o[i], err, errlen);
+    report_sibling(png_path, "-plots.png", paths[3], sizeof paths[3]);
+    while (n < REPORT_FILES && outfile_open(&o[n], paths[n], err, errlen) == 0) n++;
+    int rc = n == REPORT_FILES ? write_four(o, r, s, learned, path, title, err, errlen) : -1;
+    /* all four written before any is renamed: all four files, or none */
+    for (int i = 0; i < REPORT_FILES && rc == 0; i++) rc = outfile_rename(&o[i], err, errlen);
     for (int i = 0; i < n; i++) outfile_abort(&o[i]); /* what is left after a failure */
     return rc;
 }

@@ -1,8 +1,9 @@
 /* report.h - a picture of every run: a top-down view of the maze with the
  * true walls, the walls the mouse learned, the cells it visited, its
  * trajectory coloured by speed, the final run path (when the run has one) and the lap table as
- * text. Written as PNG (libpng), SVG beside it (same drawing) and JSON
- * beside it (the lap table), each atomically.
+ * text. Written as PNG (libpng), SVG beside it (same drawing), JSON
+ * beside it (the lap table) and a page of plots against time (plots.h:
+ * FILE-plots.png beside FILE.png), all four or none.
  *
  * Record during the run with report_step after every physics step; the
  * pose is sampled every REPORT_SAMPLE_S of simulation time. */
@@ -15,6 +16,7 @@
 
 #define REPORT_SAMPLE_S 0.005 /* trajectory sample period, s of sim time */
 #define REPORT_WATCH_MAX 16   /* the firmware's variables beside the pose (mmsim --watch) */
+#define REPORT_FILES 4        /* FILE.png, FILE.svg, FILE.json, FILE-plots.png */
 
 typedef struct report report_t;
 
@@ -28,7 +30,7 @@ void report_step(report_t *r, const sim_state_t *s);
  * names (the caller's strings, valid until report_write) and values. The
  * JSON gets them beside the true pose at every trajectory sample ("watch":
  * columns t_s, x_m, y_m, heading_rad, then the names; one row a sample) and
- * the picture their last values. */
+ * the picture their last values, the plots page a panel each. */
 void report_watch(report_t *r, int n, const char *const *names, const double *values);
 
 /* Cell colours and texts to draw (an mms algorithm's setColor/setText):
@@ -36,8 +38,9 @@ void report_watch(report_t *r, int n, const char *const *names, const double *va
  * texts + k * text_stride a NUL-terminated text, for every cell k; copied. */
 void report_set_cells(report_t *r, const char *colours, const char *texts, size_t text_stride);
 
-/* Write png_path, and beside it the same name with .svg and .json
- * (a trailing .png is replaced). learned = the mouse's map, or NULL when
+/* Write png_path, and beside it the same name with .svg, .json and
+ * -plots.png (a trailing .png is replaced; the JSON's "plots" describes the
+ * plots page: each panel's pixel box, axis range and tick labels). learned = the mouse's map, or NULL when
  * the run has none (an MCU over the link, the scripted driver: true walls
  * only); path_on = the map the final run path is the best path on (the
  * mouse's map; the true maze for the scripted driver, which drives it), or
@@ -48,7 +51,7 @@ void report_set_cells(report_t *r, const char *colours, const char *texts, size_
 int report_write(const report_t *r, const sim_state_t *s, const maze_t *learned, const maze_t *path_on, const char *png_path,
                  const char *title, char *err, size_t errlen);
 
-/* The .svg / .json path beside png_path, into out. */
+/* The .svg / .json / -plots.png path beside png_path, into out. */
 void report_sibling(const char *png_path, const char *ext, char *out, size_t len);
 
 #endif

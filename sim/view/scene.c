@@ -2,7 +2,6 @@
 #include "scene.h"
 
 #include "font.h"
-#include "mms/mms.h"
 
 #include <GL/gl.h>
 #include <math.h>
@@ -281,7 +280,7 @@ static void overlay(const simcfg_t *cf, const maze_t *m, const scene_belief_t *b
                 uint8_t known = maze_wall(k, c, d);
                 if (known != MAZE_WALL_CLOSED) continue;
                 int truth = maze_wall(m, c, d) == MAZE_WALL_CLOSED;
-                colour(truth ? 0x30E0FFu : 0xFF30FFu, 0.9f);
+                colour(truth ? SCENE_OVERLAY_WALL : SCENE_OVERLAY_WRONG, 0.9f);
                 if (d == MAZE_EAST) glVertex3d((x + 1) * cell, y * cell, z), glVertex3d((x + 1) * cell, (y + 1) * cell, z);
                 else glVertex3d(x * cell, y * cell, z), glVertex3d((x + 1) * cell, y * cell, z);
             }
@@ -309,14 +308,18 @@ static void overlay(const simcfg_t *cf, const maze_t *m, const scene_belief_t *b
 }
 
 void scene_draw(const sim_model_t *model, const maze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
-                const scene_belief_t *b, int show_overlay, int w, int h)
+                const scene_belief_t *b, int show_overlay, int x, int y, int w, int h)
 {
-    glViewport(0, 0, w, h);
     glClearColor(0.08f, 0.09f, 0.11f, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glViewport(x, y, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
     double top = NEAR_M * tan(FOV_DEG / 2 * M_PI / 180), right = top * (double)w / (h > 0 ? h : 1);
+    if (w < h) { /* tall: the field of view across, the height follows */
+        right = top;
+        top = right * (double)h / (w > 0 ? w : 1);
+    }
     glFrustum(-right, right, -top, top, NEAR_M, FAR_M);
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
@@ -349,38 +352,70 @@ void scene_draw(const sim_model_t *model, const maze_t *m, const snap_t *s, int 
     glDisable(GL_DEPTH_TEST);
 }
 
-void scene_draw_cells(const sim_model_t *model, const maze_t *m, const char *colours, const char *texts, size_t stride)
+uint32_t scene_cell_rgb(char c)
 {
-    double cell = model->cfg->world.cell_m;
+    static const char letters[] = "kbacgorwyBCAGRY"; /* mms.h's letters, in mms_colour_rgb's order */
+    static const uint32_t rgb[] = { 0x101014, 0x2846B4, 0x6E6E74, 0x2A8C78, 0x3C9C3C, 0xB4781E, 0xA83232, 0xB4B4B4,
+                                    0xA8A028, 0x1C2A6C, 0x1E5A50, 0x505054, 0x1E5A1E, 0x641E1E, 0x646418 };
+    const char *p = c ? strchr(letters, c) : NULL;
+    return p ? rgb[p - letters] : 0;
+}
+
+#define CELL_TEXT_FULL 4      /* characters across a cell at the text's largest */
+#define CELL_TEXT_MAX 10      /* characters drawn at most */
+#define CELL_MARGIN_M 0.012   /* between a cell's tint and its walls' centre lines, m */
+
+/* Text t centred at (cx, cy) on the floor at height z, px metres per font
+ * pixel, along unit screen-up (ux, uy) and screen-right (uy, -ux). */
+static void floor_text(const char *t, double cx, double cy, double z, double px, double ux, double uy)
+{
+    int n = (int)strnlen(t, CELL_TEXT_MAX);
+    double rx = uy, ry = -ux, w = (n * FONT_ADVANCE - 1) * px, hgt = FONT_H * px;
+    double ox = cx - rx * w / 2 + ux * hgt / 2, oy = cy - ry * w / 2 + uy * hgt / 2; /* the text's top left */
+    for (int i = 0; i < n; i++)
+        for (int row = 0; row < FONT_H; row++) {
+            int bits = font_row(t[i], row);
+            for (int c = 0; c < FONT_W; c++)
+                if (bits & (1 << (FONT_W - 1 - c))) {
+                    double a = (i * FONT_ADVANCE + c) * px, d = row * px; /* right and down from the top left */
+                    double qx = ox + rx * a - ux * d, qy = oy + ry * a - uy * d;
+                    glVertex3d(qx, qy, z), glVertex3d(qx + rx * px, qy + ry * px, z);
+                    glVertex3d(qx + rx * px - ux * px, qy + ry * px - uy * px, z), glVertex3d(qx - ux * px, qy - uy * px, z);
+                }
+        }
+}
+
+void scene_draw_cells(const sim_model_t *model, const maze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
+                      const char *colours, const char *texts, size_t stride)
+{
+    double cell = model->cfg->world.cell_m, eye[3], target[3], up[3];
+    scene_camera(model, m, s, cam, orbit, eye, target, up);
+    double ux = target[0] - eye[0], uy = target[1] - eye[1], n = hypot(ux, uy);
+    if (n < 1e-9) ux = up[0], uy = up[1], n = hypot(ux, uy); /* looking straight down: the camera's up */
+    if (n < 1e-9) ux = 0, uy = 1, n = 1;
+    ux /= n, uy /= n;
+    glDisable(GL_CULL_FACE); /* the text's winding depends on the camera */
     glEnable(GL_DEPTH_TEST);
     glBegin(GL_QUADS);
     for (uint16_t k = 0; k < maze_cells(m); k++) {
         if (!colours[k]) continue;
-        double x0 = maze_x(m, (maze_cell_t)k) * cell + 0.012, y0 = maze_y(m, (maze_cell_t)k) * cell + 0.012,
-               x1 = x0 + cell - 0.024, y1 = y0 + cell - 0.024, z = 0.0008; /* over the start and goal tiles */
-        colour(mms_colour_rgb(colours[k]), 1);
+        double x0 = maze_x(m, (maze_cell_t)k) * cell + CELL_MARGIN_M, y0 = maze_y(m, (maze_cell_t)k) * cell + CELL_MARGIN_M,
+               x1 = x0 + cell - 2 * CELL_MARGIN_M, y1 = y0 + cell - 2 * CELL_MARGIN_M, z = 0.0008; /* over the start and goal tiles */
+        colour(scene_cell_rgb(colours[k]), 1);
         glVertex3d(x0, y0, z), glVertex3d(x1, y0, z), glVertex3d(x1, y1, z), glVertex3d(x0, y1, z);
     }
-    /* texts: the 5x7 font on the floor, 10 characters across the cell,
-     * from its north-west corner (north is up in the bird's view) */
-    double px = (cell - 0.03) / (10 * FONT_ADVANCE), z = 0.0011;
+    double inner = cell - 2 * CELL_MARGIN_M - 0.01; /* the text's room, m */
     for (uint16_t k = 0; texts && k < maze_cells(m); k++) {
         const char *t = texts + k * stride;
         if (!t[0]) continue;
-        uint32_t bg = colours[k] ? mms_colour_rgb(colours[k]) : SCENE_FLOOR;
-        colour(((bg >> 16) & 255) + ((bg >> 8) & 255) + (bg & 255) < 300 ? 0xFFFFFFu : 0x000000u, 1);
-        double x = maze_x(m, (maze_cell_t)k) * cell + 0.015, y = (maze_y(m, (maze_cell_t)k) + 1) * cell - 0.02;
-        for (int i = 0; t[i] && i < 10; i++, x += FONT_ADVANCE * px)
-            for (int row = 0; row < FONT_H; row++) {
-                int bits = font_row(t[i], row);
-                for (int c = 0; c < FONT_W; c++)
-                    if (bits & (1 << (FONT_W - 1 - c))) {
-                        double qx = x + c * px, qy = y - row * px;
-                        glVertex3d(qx, qy - px, z), glVertex3d(qx + px, qy - px, z), glVertex3d(qx + px, qy, z),
-                            glVertex3d(qx, qy, z);
-                    }
-            }
+        int len = (int)strnlen(t, CELL_TEXT_MAX);
+        double px = inner / ((len > CELL_TEXT_FULL ? len : CELL_TEXT_FULL) * FONT_ADVANCE);
+        uint32_t bg = colours[k] ? scene_cell_rgb(colours[k]) : SCENE_FLOOR;
+        double luma = 0.299 * ((bg >> 16) & 255) + 0.587 * ((bg >> 8) & 255) + 0.114 * (bg & 255); /* Rec. 601 weights */
+        colour(luma < 128 ? 0xFFFFFFu : 0x000000u, 1);
+        floor_text(t, (maze_x(m, (maze_cell_t)k) + 0.5) * cell, (maze_y(m, (maze_cell_t)k) + 0.5) * cell, 0.0011, px, ux, uy);
     }
     glEnd();
+    glDisable(GL_LIGHTING);
     glDisable(GL_DEPTH_TEST);
 }

@@ -42,6 +42,7 @@ typedef struct {
     const maze_t *map;  /* the mouse's map, or NULL (no overlay) */
     uint16_t cell;      /* the mouse's cell and heading (MAZE_NORTH..) */
     uint8_t heading;
+    int state;          /* the firmware's state (belief.h), -1 none */
 } scene_belief_t;
 
 /* Eye, target and up vector of camera cam (SCENE_*) for snapshot s's
@@ -49,15 +50,31 @@ typedef struct {
 void scene_camera(const sim_model_t *model, const maze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
                   double eye[3], double target[3], double up[3]);
 /* Draw the scene of snapshot s in maze m for camera cam into the viewport
- * w x h pixels (clears it). overlay: draw b's walls and planned path (b
- * may be NULL). */
+ * w x h pixels whose lower left corner is (x, y) (GL's window pixels; the
+ * whole window is cleared). The field of view is FOV_DEG across the
+ * viewport's narrower side, so a tall viewport shows as much across as a
+ * square one. overlay: draw b's walls and planned path (b may be NULL). */
 void scene_draw(const sim_model_t *model, const maze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
-                const scene_belief_t *b, int overlay, int w, int h);
+                const scene_belief_t *b, int overlay, int x, int y, int w, int h);
 
-/* After scene_draw, in the same frame: tint the floor of every cell with
- * its mms colour letter (colours[cell], 0 = none; mms.h mms_colour_rgb) and
- * paint its text (texts + cell * stride, NUL-terminated; texts may be NULL)
- * on the floor, under the robot (depth-tested). */
-void scene_draw_cells(const sim_model_t *model, const maze_t *m, const char *colours, const char *texts, size_t stride);
+/* After scene_draw, in the same frame (the same camera: s, cam, orbit):
+ * tint the floor of every cell with its mms colour letter (colours[cell],
+ * 0 = none; in scene_cell_rgb's palette) and paint its text (texts + cell
+ * * stride, NUL-terminated; texts may be NULL) on the floor, under the
+ * robot (depth-tested): centred in the cell, as large as the cell allows
+ * (up to 4 characters at full size, longer texts smaller), upright on the
+ * screen (its "up" is the camera's forward direction over the floor). */
+void scene_draw_cells(const sim_model_t *model, const maze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
+                      const char *colours, const char *texts, size_t stride);
+
+/* The floor tint of mms colour letter c (mms.h's letters; 0: none). The
+ * palette keeps mms's hues but darker and less saturated (every channel at
+ * most 0xB4), and moves cyan towards green (0x2A8C78): the mouse's
+ * discovered walls are bright cyan (0x30E0FF) and wrong ones magenta
+ * (0xFF30FF) bars over the walls, and every tint differs from both by at
+ * least 0x84 in some channel. The text is white on tints of luma (Rec. 601) under 128, else black. */
+uint32_t scene_cell_rgb(char c);
+#define SCENE_OVERLAY_WALL 0x30E0FFu /* a discovered wall as the truth has it */
+#define SCENE_OVERLAY_WRONG 0xFF30FFu /* a discovered wall the truth lacks */
 
 #endif

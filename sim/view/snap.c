@@ -18,6 +18,8 @@ void snap_from_sim(snap_t *out, const sim_state_t *s)
     memset(out, 0, sizeof *out);
     out->time_s = sim_time_s(s);
     world_pose(s->world, &out->x_m, &out->y_m, &out->heading_rad);
+    double w_rad_s;
+    world_velocity(s->world, &out->v_m_s, &w_rad_s);
     for (int k = 0; k < 2; k++) {
         out->wheel_rad[k] = world_wheel_angle(s->world, k);
         out->wheel_hub_z_m[k] = s->model->wheel_r_m[k];

@@ -29,6 +29,7 @@ typedef struct {
     double time_s;               /* simulation time, s */
     double x_m, y_m;             /* the body's centre over the floor, m (world.h's frame) */
     double heading_rad;          /* world.h's heading */
+    double v_m_s;                /* speed along the heading, m/s */
     double wheel_rad[2];         /* each wheel's hinge angle (rad, positive = forward; WORLD_LEFT, WORLD_RIGHT) */
     double wheel_hub_z_m[2];     /* each wheel's axle above the floor, m (drawn as the robot stands level on it) */
     int ntof;                    /* the robot's ToF sensors (sim.h's order: left, front, right) */

@@ -56,6 +56,7 @@ struct view {
     int sw_pending;          /* a switches request not yet taken: sw_want */
     unsigned sw_want;
     int btn_held;            /* the mouse holds BUTTON down */
+    int link_ok;             /* view_set_link_ok: Port, Baud and Connect shown and taking clicks */
     int btn_up_due;          /* released early: up at btn_down_s + VIEW_BUTTON_MIN_S */
     double btn_down_s;       /* simulation time it went down */
 };
@@ -248,8 +249,8 @@ int view_click(view_t *v, sim_state_t *s, double x, double y)
         view_seek(v, hud_slider_time(v->o.width, v->o.height, x, replay_end_s(v->rp)));
         return VIEW_SLIDER;
     }
-    int f = hud_field_hit(v->o.width, v->o.height, x, y);
-    if (f >= 0 && !v->rp) {
+    int f = v->link_ok && !v->rp ? hud_field_hit(v->o.width, v->o.height, x, y) : -1;
+    if (f >= 0) {
         v->editing = f;
         return VIEW_FIELD + f;
     }
@@ -260,6 +261,7 @@ int view_click(view_t *v, sim_state_t *s, double x, double y)
         return VIEW_BOARD + c;
     }
     int b = hud_hit(v->o.width, v->o.height, x, y);
+    if ((b == HUD_BTN_CONNECT && (!v->link_ok || v->rp)) || (b == HUD_BTN_RESET && !v->mms_reset)) b = -1; /* not shown */
     if (b >= 0) {
         view_button(v, s, b);
     } else { /* on the scene: a drag from here orbits the current camera */
@@ -471,12 +473,22 @@ void view_free(view_t *v)
     free(v);
 }
 
-/* One frame of the live run s, or of the replay at its time (s NULL). */
+/* The overlay's message: only where a map can come (an in-process
+ * firmware that publishes one, or a log that holds one), none yet. */
+static const char *status_text(const view_t *v, const scene_belief_t *b)
+{
+    if (v->status[0]) return v->status;
+    int can_map = v->rp ? v->rp->nbelief > 0 : v->belief != NULL;
+    return v->overlay && can_map && !b->map ? "no mouse map to overlay yet" : NULL;
+}
+
+/* One frame of the live run s, or of the replay at its time (s NULL): the
+ * scene in its rectangle, then the HUD over the rest. */
 static void draw(view_t *v, sim_state_t *s)
 {
     int fw, fh;
     glfwGetFramebufferSize(v->win, &fw, &fh);
-    scene_belief_t b = { NULL, 0, 0 };
+    scene_belief_t b = { NULL, 0, 0, -1 };
     const sim_belief_t *hb = v->belief;
     static snap_t snap; /* what this frame draws */
     const sim_model_t *model;
@@ -494,15 +506,21 @@ static void draw(view_t *v, sim_state_t *s)
             b.map = &hb->map;
             b.cell = hb->cell;
             b.heading = hb->heading;
+            b.state = hb->state;
         }
     }
-    scene_draw(model, maze, &snap, v->camera, &v->orbit[v->camera], &b, v->overlay, fw, fh);
-    if (v->mms_colours) scene_draw_cells(model, maze, v->mms_colours, v->mms_texts, v->mms_stride);
-    const char *status = v->status[0] ? v->status : v->overlay && !b.map ? "no mouse map to overlay yet" : NULL;
-    hud_info_t in = { v->camera, v->overlay, v->paused, v->speed, v->port, v->o.baud, status, v->rp != NULL,
+    int board = v->board_fill && !v->rp;
+    hud_button_t sc; /* the scene's rectangle, window pixels from the top left; GL's from the bottom left */
+    hud_scene_rect(v->o.width, v->o.height, board, &sc);
+    double kx = (double)fw / v->o.width, ky = (double)fh / v->o.height;
+    int vx = (int)lround(sc.x * kx), vw = (int)lround(sc.w * kx), vh = (int)lround(sc.h * ky), vy = fh - vh;
+    scene_draw(model, maze, &snap, v->camera, &v->orbit[v->camera], &b, v->overlay, vx, vy, vw, vh);
+    if (v->mms_colours)
+        scene_draw_cells(model, maze, &snap, v->camera, &v->orbit[v->camera], v->mms_colours, v->mms_texts, v->mms_stride);
+    hud_info_t in = { v->camera, v->overlay, v->paused, v->speed, v->port, v->o.baud, status_text(v, &b), v->rp != NULL,
                       v->rp_t, v->rp ? replay_end_s(v->rp) : 0, v->editing, v->baud,
-                      v->mms_reset != NULL, NULL };
-    if (v->board_fill && !v->rp) { /* the board as it is now, and what the person's hands asked for */
+                      v->mms_reset != NULL, NULL, v->link_ok && !v->rp, b.state, snap.v_m_s };
+    if (board) { /* the board as it is now, and what the person's hands asked for */
         v->board_fill(v->board_ctx, &v->board);
         view_board_t shown = v->board;
         if (v->sw_pending) shown.switches = v->sw_want;
@@ -623,6 +641,8 @@ int view_screenshot(view_t *v, sim_state_t *s, const char *path, char *err, size
 }
 
 void view_set_belief(view_t *v, const sim_belief_t *b) { v->belief = b; }
+
+void view_set_link_ok(view_t *v, int ok) { v->link_ok = ok != 0; }
 
 void view_set_mms(view_t *v, const char *colours, const char *texts, size_t text_stride, int *reset)
 {

@@ -16,7 +16,8 @@
  *   Esc or Q               close
  *   click Port / Baud      type a serial port and baud (Tab: the other
  *                          field, Backspace, Esc: done); Connect or Enter
- *                          asks the caller to open the link (HIL)
+ *                          asks the caller to open the link (HIL); shown
+ *                          only where a link can be made (view_set_link_ok)
  * A board (--board, view_set_board): under the timers its function
  * switches (click: toggle), BUTTON (down while the mouse is held, at least
  * VIEW_BUTTON_MIN_S of simulation time), RESET, its LEDs and the last lines
@@ -82,6 +83,10 @@ int view_screenshot(view_t *v, sim_state_t *s, const char *path, char *err, size
  * them (valid until the next call), else 0. The caller opens the link and
  * reports the outcome with view_set_status. */
 int view_connect_request(view_t *v, const char **port, long *baud);
+/* Whether a serial link can be made now (a live run whose driver the link
+ * could replace): the Port, Baud and Connect controls are shown and take
+ * clicks only then. Default 0: none (a replay never has them). */
+void view_set_link_ok(view_t *v, int ok);
 void view_set_status(view_t *v, const char *text);
 
 /* A live run's mouse belief for the overlay (walls discovered, planned

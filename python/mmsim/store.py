@@ -1,0 +1,73 @@
+"""store.py - a sweep's results as a Parquet dataset (a folder of part files).
+
+Rows are appended as runs finish: each batch is one part file, written
+under a temporary name and renamed, so a sweep killed at any moment leaves
+only whole parts. Every row has "run_key" (a hash of the run's inputs); a
+sweep started again with the same folder reads the keys it holds and skips
+those runs. read() drops any repeated key (a part written twice by a
+crash between its rename and the next batch keeps one row per run).
+"""
+import glob
+import json
+import os
+import time
+
+import pandas as pd
+
+PART_GLOB = "part-*.parquet"
+
+
+def read(out):
+    """Every row of the dataset at out (a folder, or a single Parquet file)."""
+    if out is None or not os.path.exists(out):
+        return pd.DataFrame()
+    files = [out] if os.path.isfile(out) else sorted(glob.glob(os.path.join(out, PART_GLOB)))
+    if not files:
+        return pd.DataFrame()
+    df = pd.concat([pd.read_parquet(f) for f in files], ignore_index=True)
+    if "run_key" in df.columns:
+        df = df.drop_duplicates("run_key", keep="first").reset_index(drop=True)
+    return df
+
+
+def done_keys(out):
+    """The run keys the dataset at out already holds."""
+    df = read(out)
+    return set(df["run_key"]) if "run_key" in df.columns else set()
+
+
+class Writer:
+    """Appends rows to the dataset folder out, one part file per flush."""
+
+    def __init__(self, out, flush_rows=16, flush_s=2.0):
+        self.out, self.flush_rows, self.flush_s = out, flush_rows, flush_s
+        self.rows, self.last = [], time.monotonic()
+        if out is not None:
+            if os.path.isfile(out):
+                raise ValueError("%s: a file; --out is a folder of Parquet parts" % out)
+            os.makedirs(out, exist_ok=True)
+
+    def add(self, row):
+        self.rows.append(row)
+        if len(self.rows) >= self.flush_rows or time.monotonic() - self.last >= self.flush_s:
+            self.flush()
+
+    def flush(self):
+        self.last = time.monotonic()
+        if self.out is None or not self.rows:
+            self.rows = []
+            return
+        df = to_frame(self.rows)
+        name = "part-%d-%d-%06d.parquet" % (time.time_ns(), os.getpid(), len(self.rows))
+        tmp = os.path.join(self.out, "." + name + ".tmp")
+        df.to_parquet(tmp, index=False)
+        os.replace(tmp, os.path.join(self.out, name))
+        self.rows = []
+
+
+def to_frame(rows):
+    """Rows (flat dicts) as a DataFrame; lists and dicts left in a value are
+    stored as their JSON text, so every column has one Parquet type."""
+    flat = [{k: (json.dumps(v, sort_keys=True) if isinstance(v, (list, dict)) else v)
+             for k, v in r.items()} for r in rows]
+    return pd.DataFrame(flat)
