@@ -225,7 +225,7 @@ firmware: firmware-size arduino
 UKB_SRC       := $(FW_SRC) $(sort $(wildcard hal/ukmarsbot/*.c))
 UKB_FLASH_MAX := 30720
 UKB_SENSOR_BOARD ?= advanced
-UKB_FLAGS     := $(AVR_FLAGS) -Ihal/ukmarsbot $(if $(filter basic,$(UKB_SENSOR_BOARD)),-DUKB_SENSOR_BOARD_BASIC)
+UKB_FLAGS     := $(AVR_FLAGS) -Ihal/ukmarsbot -include robot_ukmarsbot.h -DHAL_LOG_MAX=50 -fno-inline-functions -fno-inline-small-functions -fno-inline-functions-called-once $(if $(filter basic,$(UKB_SENSOR_BOARD)),-DUKB_SENSOR_BOARD_BASIC)
 UKB_OUT       := $(B)/ukmarsbot$(if $(filter basic,$(UKB_SENSOR_BOARD)),-basic)
 $(UKB_OUT)/mouse.elf: $(UKB_SRC) $(wildcard hal/ukmarsbot/*.h firmware/*.h) hal/hal.h | deps
 	@mkdir -p $(dir $@)
@@ -236,10 +236,19 @@ firmware-ukmarsbot: $(UKB_OUT)/mouse.elf $(UKB_OUT)/mouse.hex
 	@avr-size $< | awk -v max=$(UKB_FLASH_MAX) 'NR == 2 { f = $$1 + $$2; r = $$2 + $$3; \
 	  printf "ukmarsbot: flash %d B of %d, static RAM %d B of 2048 (%d B left for the stack)\n", f, max, r, 2048 - r; \
 	  if (f > max) { print "ukmarsbot: flash over the limit"; exit 1 } }'
+# The stack's headroom measured at the deepest point of a contest: the image
+# on the emulated board (mmsim) searches mazes/gen-16x16-s1.txt, returns and
+# makes its three speed runs; `k` then reports the painted RAM never written.
+ukmarsbot-stack: $(UKB_OUT)/mouse.elf $(B)/mmsim
+	@$(B)/mmsim --board ukmarsbot --avr $< --robot robots/ukmarsbot.ini --maze mazes/gen-16x16-s1.txt \
+	  --input "0.3 send=g; 240 send=k; 241 end" --json | python3 -c 'import json, sys; \
+	c = json.loads(sys.stdin.read().splitlines()[-1])["console"].replace("\r", ""); \
+	k = [l for l in c.splitlines() if l.startswith("stack unused")][-1]; \
+	print("ukmarsbot: stack never used after a contest:", k.split(",")[0].split()[-2], "B")'
 # the source list, one a line (test/cli_ukmarsbot_fw.sh compares platformio.ini's)
 ukmarsbot-src:
 	@printf '%s\n' $(UKB_SRC)
-.PHONY: firmware-ukmarsbot ukmarsbot-src
+.PHONY: firmware-ukmarsbot ukmarsbot-src ukmarsbot-stack
 # The wire codec's shared vectors on the ATmega328P, run in simavr by test/cli_hil.sh.
 $(B)/avr/wire_selftest.elf: test/avr_wire.c test/wire_vectors.c hal/wire/wire.c hal/wire/wire.h | deps
 	@mkdir -p $(dir $@)

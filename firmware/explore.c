@@ -20,11 +20,12 @@ void explore_init(explore_t *e, const maze_t *blank)
 
 void explore_sense(explore_t *e, uint8_t walls)
 {
-    static const uint8_t bit[3] = { EXPLORE_WALL_FRONT, EXPLORE_WALL_RIGHT, EXPLORE_WALL_LEFT };
-    static const int8_t rel[3] = { 0, 1, -1 };
-    for (uint8_t j = 0; j < 3; j++)
-        maze_set_wall(&e->map, e->cell, maze_turn(e->heading, rel[j]),
-                      (walls & bit[j]) ? MAZE_WALL_CLOSED : MAZE_WALL_OPEN);
+    /* front, right, left (computed, not tables: an AVR copies tables into its RAM) */
+    for (uint8_t j = 0; j < 3; j++) {
+        uint8_t bit = j == 0 ? EXPLORE_WALL_FRONT : j == 1 ? EXPLORE_WALL_RIGHT : EXPLORE_WALL_LEFT;
+        maze_set_wall(&e->map, e->cell, maze_turn(e->heading, j == 2 ? -1 : (int8_t)j),
+                      (walls & bit) ? MAZE_WALL_CLOSED : MAZE_WALL_OPEN);
+    }
 }
 
 void explore_moved(explore_t *e, uint8_t d)
@@ -49,17 +50,24 @@ static uint16_t start_cost(explore_t *e, uint8_t flags)
 /* Proven when the start-to-goal cost over known-open walls equals the cost
  * with unknown walls open. *open gets the latter; the flood field is left
  * as that (optimistic) flood made it, which mark_unknown_on_path walks. */
+/* The proof's log line; a function of its own so that an MCU's build
+ * (without inlining) keeps the line's buffer off the stack during the floods. */
+static void log_proven(const explore_t *e)
+{
+    char line[HAL_LOG_MAX + 1];
+    hal_snprintf(line, sizeof line, HAL_STR("explore: run path proven at step %u, cost %u"),
+             (unsigned)e->proven_at_step, (unsigned)e->run_cost);
+    hal_log(line);
+}
+
 static int check_proven(explore_t *e, uint16_t *open)
 {
     uint16_t known = start_cost(e, 0);
     *open = start_cost(e, FLOOD_UNKNOWN_OPEN);
     if (known == FLOOD_UNREACHABLE || known != *open) return 0;
-    char line[HAL_LOG_MAX + 1];
     e->proven_at_step = e->steps;
     e->run_cost = known;
-    hal_snprintf(line, sizeof line, HAL_STR("explore: run path proven at step %u, cost %u"),
-             (unsigned)e->steps, (unsigned)known);
-    hal_log(line);
+    log_proven(e);
     return 1;
 }
 

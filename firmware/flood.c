@@ -317,12 +317,16 @@ uint16_t flood_cells(flood_t *f, const maze_t *m, maze_cell_t src, uint8_t flags
     return bfs(f, m, (uint16_t)(src * 4u), flags, 1);
 }
 
+/* The j-th direction tried (0..3), relative to heading h: straight, right,
+ * left, back (computed, not a table: an AVR copies tables into its RAM).
+ * Its quarter turns are (j + 1) / 2. */
+static int8_t turn_order(uint8_t j) { return j == 2 ? -1 : j == 3 ? 2 : (int8_t)j; }
+
 int flood_next_cell_dir(const flood_t *f, const maze_t *m, maze_cell_t c, uint8_t h, uint16_t k, uint8_t flags)
 {
-    static const int8_t order[4] = { 0, 1, -1, 2 }; /* straight, right, left, back */
     if (k == 0 || k == FLOOD_UNREACHABLE) return -1;
     for (uint8_t j = 0; j < 4; j++) {
-        uint8_t d = maze_turn(h, order[j]);
+        uint8_t d = maze_turn(h, turn_order(j));
         if (maze_passable(m, c, d, flags & FLOOD_UNKNOWN_OPEN) &&
             flood_cell_dist(f, maze_step(m, c, d), k) + 1u == k)
             return d;
@@ -333,16 +337,14 @@ int flood_next_cell_dir(const flood_t *f, const maze_t *m, maze_cell_t c, uint8_
 int flood_next_dir(const flood_t *f, const maze_t *m, maze_cell_t c, uint8_t h,
                    uint16_t k, uint8_t flags)
 {
-    static const int8_t order[4] = { 0, 1, -1, 2 }; /* straight, right, left, back */
-    static const uint8_t rot_cost[4] = { 0, 1, 1, 2 };
     if (k == 0 || k == FLOOD_UNREACHABLE) return -1;
     /* with FLOOD_PREFER_KNOWN, a first pass over known-open walls only */
     for (uint8_t pass = (flags & FLOOD_PREFER_KNOWN) ? 0 : 1; pass < 2; pass++)
         for (uint8_t j = 0; j < 4; j++) {
-            uint8_t d = maze_turn(h, order[j]);
+            uint8_t d = maze_turn(h, turn_order(j));
             if (!maze_passable(m, c, d, pass ? (flags & FLOOD_UNKNOWN_OPEN) : 0)) continue;
             uint16_t rest = flood_cost(f, maze_step(m, c, d), d, k);
-            if (rest != FLOOD_UNREACHABLE && rest + 1u + rot_cost[j] == k) return d;
+            if (rest != FLOOD_UNREACHABLE && rest + 1u + (j + 1u) / 2u == k) return d;
         }
     return -1;
 }

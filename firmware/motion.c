@@ -59,8 +59,19 @@ void motion_turn_smooth(motion_t *m, float degrees)
 
 static float ff_spare(float v_mm_s, float w_deg_s);
 
+/* A robot may turn only on the spot (RC_SMOOTH_TURNS 0): no smooth turn
+ * then fits before any turn, however long the straight. */
+#ifndef RC_SMOOTH_TURNS
+#define RC_SMOOTH_TURNS 1
+#endif
+
 void motion_smooth_geometry(float v_mm_s, float *offset_mm, float *length_mm)
 {
+    if (!RC_SMOOTH_TURNS) {
+        *offset_mm = 1e9f; /* mm */
+        *length_mm = 0;
+        return;
+    }
     const float dt_s = 1.0f / HAL_TICK_HZ;
     profile_t p;
     float theta = 0, along = 0;

@@ -20,6 +20,10 @@
 #include "hal.h"
 #include "motion.h"
 #include "robot_config.h"
+#include "walls.h"
+
+/* the wall sensors, ToF or IR, as distances (walls.h) */
+#define hal_distance walls_distance
 
 static explore_t ex;
 static motion_t mo;
@@ -82,6 +86,7 @@ void fw_setup(void)
     }
     configured = 0; /* the next fw_setup without fw_set_maze is a classic contest */
     motion_init(&mo);
+    walls_setup();
     st.mode = MOUSE_SEARCH;
     st.runs = 0;
     st.cell = ex.cell;
@@ -474,7 +479,7 @@ static void search_step(void)
         int8_t q = quarter(st.heading, (uint8_t)d);
         st.heading = (uint8_t)d;
         if (q) start_turn(q);
-        else start_forward(RC_CELL_MM, RC_SEARCH_MM_S, RC_SEARCH_MM_S, RC_ACCEL_MM_S2);
+        else start_forward(RC_CELL_MM + (ex.steps ? 0.0f : RC_START_BEHIND_MM), RC_SEARCH_MM_S, RC_SEARCH_MM_S, RC_ACCEL_MM_S2);
         return;
     }
     if (waiting == WAIT_TURN) {

@@ -5,6 +5,12 @@
 
 #include "robot_config.h"
 
+/* wheels of different sizes: each side's own mm per count (else both alike) */
+#ifndef RC_MM_PER_COUNT_LEFT
+#define RC_MM_PER_COUNT_LEFT RC_MM_PER_COUNT
+#define RC_MM_PER_COUNT_RIGHT RC_MM_PER_COUNT
+#endif
+
 void odom_init(odom_t *o, int32_t left, int32_t right)
 {
     o->last_l = left;
@@ -17,8 +23,8 @@ void odom_init(odom_t *o, int32_t left, int32_t right)
 
 void odom_update(odom_t *o, int32_t left, int32_t right, float dt_s)
 {
-    float dl = (float)(left - o->last_l) * RC_MM_PER_COUNT;
-    float dr = (float)(right - o->last_r) * RC_MM_PER_COUNT;
+    float dl = (float)(left - o->last_l) * RC_MM_PER_COUNT_LEFT;
+    float dr = (float)(right - o->last_r) * RC_MM_PER_COUNT_RIGHT;
     o->last_l = left;
     o->last_r = right;
     o->ds_mm = 0.5f * (dl + dr);

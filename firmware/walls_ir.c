@@ -15,9 +15,9 @@ enum { ROLE_FRONT_L, ROLE_FRONT_R, ROLE_LEFT, ROLE_RIGHT, ROLES };
 /* the hal_ir index of each role for the robot's sensor set, 255 none */
 static uint8_t sensor_of(uint8_t role)
 {
-    static const uint8_t advanced[ROLES] = { 0, 3, 1, 2 }, basic[ROLES] = { 0, 0, 2, 1 };
+    static const uint8_t advanced[ROLES] HAL_FLASH = { 0, 3, 1, 2 }, basic[ROLES] HAL_FLASH = { 0, 0, 2, 1 };
     uint8_t n = hal_ir_count();
-    return n == 4 ? advanced[role] : n == 3 ? basic[role] : 255;
+    return n == 4 ? hal_flash_u8(&advanced[role]) : n == 3 ? hal_flash_u8(&basic[role]) : 255;
 }
 
 static uint8_t sum_before_check(const walls_ir_cal_t *c)

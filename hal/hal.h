@@ -53,7 +53,11 @@
 extern "C" {
 #endif
 
-#define HAL_LOG_MAX 80   /* bytes per log line, without the NUL */
+/* bytes per log line, without the NUL; a backend short of RAM may build
+ * with less (the firmware's longest line is 49) */
+#ifndef HAL_LOG_MAX
+#define HAL_LOG_MAX 80
+#endif
 #ifndef HAL_TICK_HZ /* control tick, Hz; a build may set it (-DHAL_TICK_HZ=...) */
 #ifdef __AVR__
 /* 16 MHz AVR: the float control tick takes ~1 ms, the serial link's
@@ -69,16 +73,24 @@ extern "C" {
  * every string literal into it at reset; these keep them in flash there
  * and are plain strings elsewhere:
  *   HAL_LOG_STR("text")   logs a constant line (hal_log_P on AVR)
- *   HAL_STR("fmt")        a format for hal_snprintf (snprintf_P on AVR) */
+ *   HAL_STR("fmt")        a format for hal_snprintf (snprintf_P on AVR)
+ * Constant tables likewise: `static const T name[] HAL_FLASH = {...}`,
+ * read with hal_flash_u8(&name[i]) / hal_flash_u16(&name[i]). */
 #ifdef __AVR__
 #include <avr/pgmspace.h>
 #define HAL_STR(s) PSTR(s)
 #define hal_snprintf snprintf_P
 #define HAL_LOG_STR(s) hal_log_P(PSTR(s))
+#define HAL_FLASH PROGMEM
+#define hal_flash_u8(p) pgm_read_byte(p)
+#define hal_flash_u16(p) pgm_read_word(p)
 #else
 #define HAL_STR(s) (s)
 #define hal_snprintf snprintf
 #define HAL_LOG_STR(s) hal_log(s)
+#define HAL_FLASH
+#define hal_flash_u8(p) (*(p))
+#define hal_flash_u16(p) (*(p))
 #endif
 
 enum { HAL_LEFT = 0, HAL_RIGHT = 1 };

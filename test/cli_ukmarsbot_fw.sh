@@ -67,7 +67,7 @@ js() { python3 -c "import json,sys; j=json.loads(open(sys.argv[1]).read().splitl
 want_rc 1 "open maze: boots, commands (no goal: exit 1)" run "$T/open.txt"; cp "$T/out" "$T/open.json"
 want_rc 1 "east wall: boots, commands" run "$T/east.txt"; cp "$T/out" "$T/east.json"
 js "$T/open.json" "
-assert c.startswith('UKMARSBOT mouse (hal/ukmarsbot, advanced sensors), tick 250 Hz\n'), c[:200]
+assert c.startswith('UKMARSBOT mouse (hal/ukmarsbot, advanced sensors)\ntick 250 Hz, '), c[:200]
 b = j['board']; mv = [int(l.split()[1]) for l in c.splitlines() if l.startswith('battery ') and l.endswith(' mV')]
 assert mv and abs(mv[-1] / 1000 - (b['battery_v'] - 1.0)) < 0.05, (mv, b['battery_v'])
 print(c.splitlines()[1])

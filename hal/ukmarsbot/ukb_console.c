@@ -18,8 +18,11 @@
 #include "hal.h"
 #include "ukb_board.h"
 
-#define UKB_TX_RING 128 /* bytes: a power of two; 11 ms of output at 115200 */
-#define UKB_RX_RING 16  /* bytes: a power of two */
+#define UKB_TX_RING 64 /* bytes: a power of two; 5.6 ms of output at 115200 */
+/* a line, bytes without the NUL: with its CR LF it fits the empty ring
+ * (the firmware's hal_log lines are at most HAL_LOG_MAX = 50) */
+#define UKB_LINE_MAX (UKB_TX_RING - 3)
+#define UKB_RX_RING 8   /* bytes: a power of two (commands are one letter) */
 
 static volatile uint8_t tx_buf[UKB_TX_RING], tx_head, tx_tail;
 static volatile uint8_t rx_buf[UKB_RX_RING], rx_head, rx_tail;
@@ -76,7 +79,7 @@ static uint8_t queue_line(const char *s, uint8_t in_flash)
 {
     uint8_t ok = 0;
     ATOMIC_BLOCK(ATOMIC_RESTORESTATE) {
-        uint8_t n = (uint8_t)((in_flash ? strnlen_P(s, HAL_LOG_MAX) : strnlen(s, HAL_LOG_MAX)) + 2);
+        uint8_t n = (uint8_t)((in_flash ? strnlen_P(s, UKB_LINE_MAX) : strnlen(s, UKB_LINE_MAX)) + 2);
         if (n <= tx_free()) {
             for (uint8_t i = 0; i < n; i++) {
                 char c = i + 2 == n ? '\r' : i + 1 == n ? '\n' : in_flash ? (char)pgm_read_byte(s + i) : s[i];
@@ -109,7 +112,7 @@ uint16_t ukb_console_dropped(void)
 
 void ukb_console_printf_P(const char *fmt, ...)
 {
-    char line[HAL_LOG_MAX + 1];
+    char line[UKB_LINE_MAX + 1];
     va_list ap;
     va_start(ap, fmt);
     vsnprintf_P(line, sizeof line, fmt, ap);

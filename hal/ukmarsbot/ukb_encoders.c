@@ -12,6 +12,7 @@
 
 #include <avr/interrupt.h>
 #include <avr/io.h>
+#include <avr/pgmspace.h>
 #include <util/atomic.h>
 
 #include "hal.h"
@@ -19,7 +20,7 @@
 
 /* index (old A, old B, new A, new B) as bits 3..0: +1 for the A-leads
  * order 00 -> 10 -> 11 -> 01 -> 00, -1 for the reverse, 0 otherwise */
-static const int8_t step_a_leads[16] = {
+static const int8_t step_a_leads[16] PROGMEM = {
     0, -1, +1, 0,  /* from 00: to 01 is B first (-1), to 10 is A first (+1) */
     +1, 0, 0, -1,  /* from 01: to 00 (+1), to 11 (-1) */
     -1, 0, 0, +1,  /* from 10: to 00 (-1), to 11 (+1) */
@@ -50,14 +51,14 @@ void ukb_encoders_init(void)
 ISR(INT0_vect) /* left: forward = A leads */
 {
     uint8_t s = ab(PIND, UKB_LCLK_BIT, UKB_LB_BIT);
-    count[HAL_LEFT] += step_a_leads[(state[HAL_LEFT] << 2) | s];
+    count[HAL_LEFT] += (int8_t)pgm_read_byte(&step_a_leads[(state[HAL_LEFT] << 2) | s]);
     state[HAL_LEFT] = s;
 }
 
 ISR(INT1_vect) /* right: forward = B leads */
 {
     uint8_t s = ab(PIND, UKB_RCLK_BIT, UKB_RB_BIT);
-    count[HAL_RIGHT] -= step_a_leads[(state[HAL_RIGHT] << 2) | s];
+    count[HAL_RIGHT] -= (int8_t)pgm_read_byte(&step_a_leads[(state[HAL_RIGHT] << 2) | s]);
     state[HAL_RIGHT] = s;
 }
 

@@ -146,9 +146,37 @@ static void start_mouse(void)
     ukb_console_printf_P(PSTR("go"));
 }
 
+/* The start gesture, as UKMARSBOT's own firmware waits for it: armed (r,
+ * or switches 1 at power-on), the mouse starts when a hand held over the
+ * first forward sensor (hal_ir index 0: lfs, or the basic board's front
+ * one) is taken away. Held: its reading above UKB_HAND_X times its front
+ * calibration (standing in the start cell it reads ~0.1 of it; a hand 20
+ * mm away ~5); away: below that calibration. */
+#define UKB_HAND_X 3u
+static uint8_t armed; /* 0, 1 armed, 2 the hand seen */
+
+static void arm_step(void)
+{
+    uint16_t r = hal_ir_raw(0), ref = walls_ir_cal()->front_ref[0];
+    if (armed == 1 && r > UKB_HAND_X * ref) armed = 2;
+    if (armed == 2 && r < ref) {
+        armed = 0;
+        start_mouse();
+    }
+}
+
+static void arm(void)
+{
+    if (running) return;
+    emitters(1);
+    armed = 1;
+    ukb_console_printf_P(PSTR("armed: a hand over the front sensor starts"));
+}
+
 static void stop_mouse(void)
 {
     running = 0;
+    armed = 0;
     hal_motor_set(0, 0);
     emitters(1); /* the console's IR readings (i) light them again */
     PORTD &= (uint8_t)~_BV(UKB_LED_USER_BIT);
@@ -185,7 +213,7 @@ static void calibrate(char which)
     uint8_t ok = which == 'c' ? walls_ir_calibrate_sides() : walls_ir_calibrate_front();
     const walls_ir_cal_t *c = walls_ir_cal();
     if (ok) eeprom_update_block(c, UKB_EEPROM_CAL, sizeof *c);
-    ukb_console_printf_P(PSTR("calibrated %s: sides %u %u, front %u %u"), ok ? "and saved" : "NOT (no wall seen)", c->side_ref[0],
+    ukb_console_printf_P(PSTR("calibrated %S: sides %u %u, front %u %u"), ok ? PSTR("and saved") : PSTR("NOT (no wall seen)"), c->side_ref[0],
                          c->side_ref[1], c->front_ref[0], c->front_ref[1]);
 }
 
@@ -202,8 +230,9 @@ static void command(char c)
 {
     switch (c) {
     case 'h': case '?':
-        ukb_console_printf_P(PSTR("i IR, w walls, c calibrate the sides, f the front, b battery, s switches"));
-        ukb_console_printf_P(PSTR("e encoders, m motor test, g go, x stop, k stack"));
+        ukb_console_printf_P(PSTR("i IR, w walls, c calibrate the sides, f the front"));
+        ukb_console_printf_P(PSTR("b battery, s switches, e encoders, m motor test"));
+        ukb_console_printf_P(PSTR("g go, r go at a hand over the front, x stop, k stack"));
         break;
     case 'i': report_ir(); break;
     case 'w': report_walls(); break;
@@ -213,6 +242,7 @@ static void command(char c)
     case 'e': ukb_console_printf_P(PSTR("encoders %ld %ld"), (long)hal_encoder(HAL_LEFT), (long)hal_encoder(HAL_RIGHT)); break;
     case 'm': motor_test(); break;
     case 'g': start_mouse(); break;
+    case 'r': arm(); break;
     case 'x': stop_mouse(); break;
     case 'k':
         ukb_console_printf_P(PSTR("stack unused %u B, overruns %u, log lines dropped %u"), stack_unused(), overruns,
@@ -238,14 +268,16 @@ int main(void)
     sei();
     emitters(1);
     wait_ticks(8); /* the battery filter settles (4 passes a time constant) */
-    ukb_console_printf_P(PSTR("UKMARSBOT mouse (hal/ukmarsbot, %s sensors), tick %u Hz"), UKB_SENSOR_BOARD_NAME,
-                         (unsigned)HAL_TICK_HZ);
-    ukb_console_printf_P(PSTR("battery %u mV, switches %u; h for help"), hal_battery_mv(), ukb_switches());
+    ukb_console_printf_P(PSTR("UKMARSBOT mouse (hal/ukmarsbot, %S sensors)"), PSTR(UKB_SENSOR_BOARD_NAME)); /* %S: a string in flash */
+    ukb_console_printf_P(PSTR("tick %u Hz, battery %u mV, switches %u; h for help"), (unsigned)HAL_TICK_HZ, hal_battery_mv(),
+                         ukb_switches());
     calibration_load();
+    if (ukb_switches() == 1) arm();
     for (;;) {
         int c = ukb_console_getc();
         if (c >= 0) command((char)c);
         if (running) fw_loop();
+        else if (armed) arm_step();
         else if (ukb_switches() == UKB_BUTTON) start_mouse();
         if (!test_reported && !motor_test_left) {
             test_reported = 1;

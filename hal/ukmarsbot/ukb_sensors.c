@@ -20,9 +20,9 @@
 #include "hal.h"
 #include "ukb_board.h"
 
-static const uint8_t ir_channel[UKB_IR_COUNT] = UKB_IR_CHANNELS;
+static const uint8_t ir_channel[UKB_IR_COUNT] PROGMEM = UKB_IR_CHANNELS;
 static const uint8_t ir_group[UKB_IR_COUNT] = UKB_IR_GROUPS;
-static const uint8_t group_bits[HAL_EMITTER_GROUPS] = UKB_GROUP_BITS;
+static const uint8_t group_bits[HAL_EMITTER_GROUPS] PROGMEM = UKB_GROUP_BITS;
 static const uint16_t switch_level[17] PROGMEM = UKB_SWITCH_LEVELS;
 
 static volatile uint16_t dark[UKB_IR_COUNT], lit[UKB_IR_COUNT];
@@ -52,10 +52,10 @@ static uint16_t convert(uint8_t channel)
 void ukb_sensors_sample(void)
 {
     uint16_t d[UKB_IR_COUNT], l[UKB_IR_COUNT];
-    for (uint8_t i = 0; i < UKB_IR_COUNT; i++) d[i] = convert(ir_channel[i]);
+    for (uint8_t i = 0; i < UKB_IR_COUNT; i++) d[i] = convert(pgm_read_byte(&ir_channel[i]));
     PORTB |= enabled_bits;
-    (void)convert(ir_channel[0]); /* the detectors settle: one conversion, 26 us */
-    for (uint8_t i = 0; i < UKB_IR_COUNT; i++) l[i] = convert(ir_channel[i]);
+    (void)convert(pgm_read_byte(&ir_channel[0])); /* the detectors settle: one conversion, 26 us */
+    for (uint8_t i = 0; i < UKB_IR_COUNT; i++) l[i] = convert(pgm_read_byte(&ir_channel[i]));
     PORTB &= (uint8_t)~(_BV(UKB_EMITTER_A_BIT) | _BV(UKB_EMITTER_B_BIT));
     uint16_t bat = convert(UKB_BATTERY_CHANNEL), sw = convert(UKB_SWITCH_CHANNEL);
     ATOMIC_BLOCK(ATOMIC_RESTORESTATE) {
@@ -77,8 +77,8 @@ void hal_emitter(uint8_t group, uint8_t on)
 {
     if (group >= HAL_EMITTER_GROUPS) return;
     ATOMIC_BLOCK(ATOMIC_RESTORESTATE) {
-        if (on) enabled_bits |= group_bits[group];
-        else enabled_bits &= (uint8_t)~group_bits[group];
+        if (on) enabled_bits |= pgm_read_byte(&group_bits[group]);
+        else enabled_bits &= (uint8_t)~pgm_read_byte(&group_bits[group]);
     }
 }
 

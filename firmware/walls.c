@@ -1,0 +1,78 @@
+/* walls.c - ToF or IR readings as distances (walls.h). */
+#include "walls.h"
+
+#ifdef RC_WALLS_IR /* else walls.h makes walls_distance hal_distance */
+
+#include <math.h>
+
+#include "robot_config.h"
+#include "walls_ir.h"
+
+#ifdef RC_IR_FRONT_CURVE_MM
+/* the forward pair's sum in 1/64 of its calibrated sum, falling, and the
+ * distance to the wall ahead at each (robot_config: RC_IR_FRONT_CURVE_*) */
+static const uint16_t curve_ratio64[] HAL_FLASH = RC_IR_FRONT_CURVE_RATIO64;
+static const uint8_t curve_mm[] HAL_FLASH = RC_IR_FRONT_CURVE_MM;
+#define CURVE_POINTS (sizeof curve_mm / sizeof curve_mm[0])
+
+/* the distance for a sum of ratio64 / 64 of the calibrated one: linear
+ * between the curve's points; timeout past its far end */
+static hal_distance_t front_mm(uint32_t ratio64)
+{
+    hal_distance_t d = { hal_flash_u8(&curve_mm[0]), 0, 0 };
+    if (ratio64 >= hal_flash_u16(&curve_ratio64[0])) return d; /* nearer than the curve: its nearest point */
+    for (uint8_t i = 1; i < CURVE_POINTS; i++) {
+        uint16_t r1 = hal_flash_u16(&curve_ratio64[i]);
+        if (ratio64 < r1) continue;
+        uint16_t r0 = hal_flash_u16(&curve_ratio64[i - 1]);
+        uint8_t m0 = hal_flash_u8(&curve_mm[i - 1]), m1 = hal_flash_u8(&curve_mm[i]);
+        d.mm = (uint16_t)(m1 - (uint32_t)(m1 - m0) * (ratio64 - r1) / (uint16_t)(r0 - r1));
+        return d;
+    }
+    d.mm = hal_flash_u8(&curve_mm[CURVE_POINTS - 1]);
+    d.timeout = 1;
+    return d;
+}
+#endif
+
+void walls_setup(void)
+{
+    if (!hal_ir_count()) return;
+    for (uint8_t g = 0; g < HAL_EMITTER_GROUPS; g++) hal_emitter(g, 1);
+}
+
+/* hal_ir index of each role for the robot's sensor set (walls_ir.h):
+ * left, front left, front right, right; 255 none */
+static uint8_t ir_of(uint8_t role)
+{
+    static const uint8_t advanced[4] HAL_FLASH = { 1, 0, 3, 2 }, basic[4] HAL_FLASH = { 2, 0, 0, 1 };
+    uint8_t n = hal_ir_count();
+    return n == 4 ? hal_flash_u8(&advanced[role]) : n == 3 ? hal_flash_u8(&basic[role]) : 255;
+}
+
+hal_distance_t walls_distance(uint8_t sensor)
+{
+    if (!hal_ir_count()) return hal_distance(sensor);
+    hal_distance_t d = { 0, 1, hal_ir_seq() };
+    const walls_ir_cal_t *c = walls_ir_cal();
+    if (ir_of(0) == 255) return d;
+    if (sensor == HAL_TOF_FRONT) {
+#ifdef RC_IR_FRONT_CURVE_MM
+        uint32_t sum = (uint32_t)hal_ir_raw(ir_of(1)) + hal_ir_raw(ir_of(2));
+        uint32_t ref = (uint32_t)c->front_ref[0] + c->front_ref[1];
+        hal_distance_t f = front_mm(sum * 64u / (ref ? ref : 1u));
+        f.seq = d.seq;
+        return f;
+#else
+        return d;
+#endif
+    }
+    uint8_t side = sensor == HAL_TOF_RIGHT;
+    uint16_t raw = hal_ir_raw(ir_of(side ? 3 : 0)), ref = c->side_ref[side];
+    if ((uint32_t)raw * 100u < (uint32_t)ref * c->side_pct || !raw) return d; /* no wall */
+    d.mm = (uint16_t)(RC_SIDE_WALL_MM * sqrtf((float)ref / (float)raw) + 0.5f);
+    d.timeout = 0;
+    return d;
+}
+
+#endif

@@ -1,0 +1,48 @@
+/* walls.h - the mouse's wall sensors, ToF or IR, as three distance readings.
+ *
+ * mouse.c judges walls, centres and aligns on the wall ahead from three
+ * readings in mm (HAL_TOF_LEFT, _FRONT, _RIGHT). walls_distance gives them
+ * from the robot's sensors:
+ *   - a robot configuration without RC_WALLS_IR (ToF robots): hal_distance
+ *     itself, as a macro (no code, no RAM: the Uno's budget);
+ *   - with RC_WALLS_IR, chosen at run time: hal_distance on a robot without
+ *     IR sensors (hal_ir_count() == 0), else each role's lit-minus-dark
+ *     reading (walls_ir.h's roles and
+ *     calibration) turned into a distance:
+ *       left, right: the side sensor's distance to its side wall along
+ *         its axis, RC_SIDE_WALL_MM * sqrt(calibrated reading / reading)
+ *         (the far field's 1/d^2: sim/world/sensors/README.md), timeout when
+ *         the reading is below the calibration's side threshold (no wall);
+ *       front: the forward sensors' distance to the wall ahead, from the
+ *         sum of the pair against its calibrated sum through the robot's
+ *         response curve (RC_IR_FRONT_CURVE_*), timeout below its last point.
+ *     seq counts the backend's sensor passes (hal_ir_seq).
+ * Robot numbers come from the robot's configuration header; the defaults
+ * below keep a ToF robot's header as it is. */
+#ifndef WALLS_H
+#define WALLS_H
+
+#include <stdint.h>
+
+#include "hal.h"
+#include "robot_config.h"
+
+/* The robot stands this far behind the start cell's centre at the start
+ * (mm; 0: on the centre). UKMARSBOT starts backed against the rear wall. */
+#ifndef RC_START_BEHIND_MM
+#define RC_START_BEHIND_MM 0.0f
+#endif
+
+#ifdef RC_WALLS_IR
+/* Switches on the emitters of the robot's IR sensors (if any); from fw_setup. */
+void walls_setup(void);
+/* The latest reading of role HAL_TOF_LEFT, _FRONT or _RIGHT (see above). */
+hal_distance_t walls_distance(uint8_t sensor);
+#else
+#define walls_setup() ((void)0)
+/* (a caller's `#define hal_distance walls_distance` ends here: a macro is
+ * not expanded again inside its own expansion) */
+#define walls_distance hal_distance
+#endif
+
+#endif
