@@ -41,13 +41,14 @@ MPID=$!
 for _ in $(seq 50); do [ -s "$T/pts" ] && break; sleep 0.1; done
 PTS=$(cat "$T/pts")
 
-# Port field at the upper right of an 800x600 window at (0, 0) (hud_fields: x 548..792, y 4..26).
+# Port field in the side panel of an 800x600 window at (0, 0) (hud_fields: x 4..228, y 236..258;
+# test_view checks the layout).
 live() { # $1 = the port to type; the run's JSON in $T/$2.json
   "${SIM[@]}" --maze mazes/gen-5x5-s1.txt --driver scripted --gui --size 800x600 --json --lcm-log "$T/$2.lcmlog" >"$T/$2.json" 2>"$T/$2.err" &
   SPID=$!
   "$X" wait mmsim 30 || { bad "$2: no window"; return; }
   sleep 0.5
-  "$X" click 600 14 && "$X" type "$1" && "$X" key Return || bad "$2: XTEST input failed"
+  "$X" click 100 247 && "$X" type "$1" && "$X" key Return || bad "$2: XTEST input failed"
   sleep 2
   "$X" key Escape   # not typing any more: closes the window
   wait $SPID; SPID=
