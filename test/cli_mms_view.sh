@@ -41,16 +41,18 @@ n=$(python3 test/pngcheck.py "$T/big.png" near:ffffff:10:0.3:0:1:0.85); c=$(pyth
 [ "${n:-0}" -gt 100 ] && [ "${c:-0}" -gt 1000 ] && ok "cell numbers readable ($n text px on $c tinted px)" || bad "cell numbers: $n text px, $c tinted px"
 
 # an algorithm that waits for Reset (test/mms/resetwait.py: polls wasReset
-# after the goal): in --gui the contest clock runs while it waits, until the
+# after the goal; its stderr comes through as "algo: LINE"): in --gui the contest clock runs while it waits, until the
 # user presses Reset (the X key); then it runs again and exits
 X=${XINPUT:-build/test/xinput}
 if [ -x "$X" ]; then
   "${SIM[@]}" --maze mazes/gen-5x5-s1.txt --mms "env -u LD_PRELOAD python3 test/mms/resetwait.py 2" --mms-timeout-ms 60000 --gui --speed 8 --size 320x240 --json >"$T/r.json" 2>"$T/r.err" &
   SPID=$!
-  for _ in $(seq 600); do grep -q "^resetwait: run 1 at the goal" "$T/r.err" && break; sleep 0.1; done
+  for _ in $(seq 600); do grep -q "^algo: resetwait: run 1 at the goal" "$T/r.err" && break; sleep 0.1; done
+  grep -q "^algo: resetwait: run 1 at the goal" "$T/r.err" || bad "resetwait never reached the goal in 60 s"
   sleep 1 # waiting: the clock runs (x8)
   "$X" key x || bad "XTEST key x failed"
-  for _ in $(seq 600); do grep -q "^resetwait: done" "$T/r.err" && break; sleep 0.1; done
+  for _ in $(seq 600); do grep -q "^algo: resetwait: done" "$T/r.err" && break; sleep 0.1; done
+  grep -q "^algo: resetwait: done" "$T/r.err" || bad "resetwait not done 60 s after Reset"
   sleep 0.5
   "$X" key Escape
   wait $SPID; SPID=
