@@ -1,5 +1,4 @@
 #!/usr/bin/env bash
-# run.sh: alone (timed: real-time runs, timed input or timeouts)
 # cli_mazerunner_search.sh - UKMARSBOT's unmodified
 # contest firmware (mazerunner-core, EVENT_UK image) on the emulated board
 # searches mazes/gen-16x16-s1.txt the way its README says: switches to its

@@ -1,5 +1,4 @@
 #!/usr/bin/env bash
-# run.sh: alone (timed: real-time runs, timed input or timeouts)
 # cli_pil.sh - processor in the loop: AVR images built by `make arduino`
 # run in simavr inside mmsim (--avr), in lockstep with the physics.
 #  - the whole mouse firmware (Mega 2560 image, 5x5, framed, 1 Mbaud) drives the
