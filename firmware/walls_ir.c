@@ -65,31 +65,24 @@ static void average(uint16_t mean[ROLES])
  * noise and the ambient light's flicker are a few counts) */
 #define WALLS_IR_MIN_REF 10u
 
-uint8_t walls_ir_calibrate_sides(void)
+/* The pair of roles a and b averaged into ref[0], ref[1] of the
+ * calibration, which is then sealed: 1, or 0 (nothing changed) without IR
+ * or with a reference too small to be a wall. */
+static uint8_t calibrate_pair(uint8_t a, uint8_t b, uint16_t ref[2])
 {
     uint16_t m[ROLES];
     if (sensor_of(0) == 255) return 0;
     average(m);
-    if (m[ROLE_LEFT] < WALLS_IR_MIN_REF || m[ROLE_RIGHT] < WALLS_IR_MIN_REF) return 0;
-    walls_ir_cal_t *c = walls_ir_cal();
-    c->side_ref[0] = m[ROLE_LEFT];
-    c->side_ref[1] = m[ROLE_RIGHT];
-    walls_ir_cal_seal(c);
+    if (m[a] < WALLS_IR_MIN_REF || m[b] < WALLS_IR_MIN_REF) return 0;
+    ref[0] = m[a];
+    ref[1] = m[b];
+    walls_ir_cal_seal(walls_ir_cal());
     return 1;
 }
 
-uint8_t walls_ir_calibrate_front(void)
-{
-    uint16_t m[ROLES];
-    if (sensor_of(0) == 255) return 0;
-    average(m);
-    if (m[ROLE_FRONT_L] < WALLS_IR_MIN_REF || m[ROLE_FRONT_R] < WALLS_IR_MIN_REF) return 0;
-    walls_ir_cal_t *c = walls_ir_cal();
-    c->front_ref[0] = m[ROLE_FRONT_L];
-    c->front_ref[1] = m[ROLE_FRONT_R];
-    walls_ir_cal_seal(c);
-    return 1;
-}
+uint8_t walls_ir_calibrate_sides(void) { return calibrate_pair(ROLE_LEFT, ROLE_RIGHT, walls_ir_cal()->side_ref); }
+
+uint8_t walls_ir_calibrate_front(void) { return calibrate_pair(ROLE_FRONT_L, ROLE_FRONT_R, walls_ir_cal()->front_ref); }
 
 void walls_ir_levels(uint16_t pct[3])
 {
