@@ -16,7 +16,7 @@ DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev l
 	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev \
 	liblcm-java default-jdk-headless default-jre libjchart2d-java xvfb iproute2 \
 	libpng-dev libglfw3-dev libgl-dev python3-venv libx11-dev libxtst-dev gdb-avr gdb universal-ctags \
-	python3-matplotlib python3-dask python3-distributed python3-pandas python3-pytest
+	python3-matplotlib python3-dask python3-distributed python3-pandas python3-pytest valgrind
 
 CC      ?= gcc
 STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE

@@ -31,6 +31,9 @@ else
   echo "SKIP database benchmarks: $DB not found"
   $B/bench_flood mazes/*.txt
 fi
+# The physics in host instructions per simulated ms (bench/callgrind.sh:
+# firmware japan2018, scripted 16x16, UKMARSBOT scripted, scripted 32x32)
+SHARED=$SHARED bash bench/callgrind.sh $B/mmsim
 # AVR floods (bench/avr_flood.c: marks 1-6, the true map is $BENCH_MAZE)
 $B/simavr_cycles $B/avr/flood.elf 2>/dev/null | awk -v maze="$(basename "${BENCH_MAZE:-true map}" .txt)" '
   BEGIN { what[1] = "full heading-aware flood, blank 16x16 map"; what[2] = "blank map, from the start, stopping there"
