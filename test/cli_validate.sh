@@ -81,6 +81,17 @@ import json; c={k['name']:k['kind'] for k in json.loads(open('$T/out').read().sp
 assert all(c[n] == 'fitted' for n in ('forward_km', 'forward_tm', 'rotation_km', 'rotation_tm', 'counts_500mm_left', 'ir_lfs_backed'))
 " && ok "ukmarsbot: ORION's KM, TM, counts and IR calibration are fitted" || bad "ukmarsbot kinds"
 
+# ---- a 2 ms step (scripted runs may take it): the same predictions pass and fail as at 1 ms; the step
+# responses are sampled on the step grid (2 and 6 ms: 1 ms is no step, 5 ms falls between two)
+printf '[sim]\nstep_s = 0.002\n' >"$T/s2.ini"
+want_rc $([ -n "$FAIL_paper" ] && echo 1 || echo 0) "paper at 2 ms: exit code from its failing predictions" "$S" --validate --json --config "$T/s2.ini"
+check "$T/out" paper "step_response_2ms step_response_6ms rest_creep_mm_per_min straight_veer_mm_4m wall_no_tunnelling" "$FAIL_paper" &&
+  ! grep -q '"step_response_1ms"\|"step_response_5ms"' "$T/out" &&
+  ok "paper at 2 ms: failing exactly: ${FAIL_paper:-none}; responses at 2 and 6 ms" || bad "paper 2 ms: $(head -c 400 "$T/out")"
+want_rc $([ -n "$FAIL_ukmarsbot" ] && echo 1 || echo 0) "ukmarsbot at 2 ms: exit code" "$S" --validate --json --config "$T/s2.ini" --robot robots/ukmarsbot.ini
+check "$T/out" ukmarsbot "step_response_2ms step_response_6ms forward_km rotation_km" "$FAIL_ukmarsbot" &&
+  ok "ukmarsbot at 2 ms: failing exactly: ${FAIL_ukmarsbot:-none}" || bad "ukmarsbot 2 ms: $(head -c 400 "$T/out")"
+
 # the text table: a kind column and the summary line
 want_rc $([ -n "$FAIL_paper" ] && echo 1 || echo 0) "validate table" "$S" --validate
 head -1 "$T/out" | grep -q "^check  *kind  *expected" && ok "table's kind column" || bad "table header: $(head -1 "$T/out")"

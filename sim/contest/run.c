@@ -10,6 +10,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "hal.h"
 #include "maze/mazefile.h"
 
 static double wall_now(void)
@@ -193,6 +194,12 @@ static int setup(run_t *r)
 {
     char err[MAZEFILE_ERR_LEN];
     if (run_load_config(r->o, &r->cfg) != 0) return RUN_BAD_INPUT;
+    /* The in-process firmware (the firmware and mms drivers) ticks at
+     * HAL_TICK_HZ and at most once a step: a longer [sim] step_s is cut to
+     * the tick for them; the scripted driver and the linked MCUs (their own
+     * clocks) take the config's step. */
+    const run_driver_t *d = pick_driver(r->o);
+    if ((d == &run_firmware || d == &run_mms) && r->cfg.sim.step_s > 1.0 / HAL_TICK_HZ) r->cfg.sim.step_s = 1.0 / HAL_TICK_HZ;
     if (mazefile_load(&r->maze, r->maze_path, NULL, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         return RUN_BAD_INPUT;
