@@ -2,13 +2,14 @@
 # callgrind.sh - the physics' cost in host instructions per simulated ms
 # (valgrind's callgrind: the same count whatever the machine's load), beside
 # the real-time factor (the best of 3 plain runs: it does depend on the load),
-# for four runs: the firmware contest on japan2018 (seed 1, the paper robot),
-# the scripted driver on a 16x16 maze, UKMARSBOT (robots/ukmarsbot.ini)
-# scripted on the same maze, and the scripted driver on a 32x32 maze
-# (mazes/gen-32x32-s1.txt). Each runs --time-limit CG_LIMIT_S (default 5 s of
-# contest time; the lap under way runs on, so the simulated time is the JSON's
-# sim_time_s, and the figure is callgrind's total over it). A run's
-# instructions per ODE step are in docs/BENCHMARKS.md with the breakdown.
+# for five runs: the firmware contest on japan2018 (seed 1, the paper
+# robot), the scripted driver on a 16x16 maze, UKMARSBOT (robots/ukmarsbot.ini)
+# scripted on the same maze, the scripted driver on a 32x32 maze
+# (mazes/gen-32x32-s1.txt), and the 16x16 scripted run at a 2 ms step. Each
+# runs --time-limit CG_LIMIT_S (default 5 s of contest time; the lap under way
+# runs on, so the simulated time is the JSON's sim_time_s, and the figure is
+# callgrind's total over it). docs/BENCHMARKS.md has where the step's
+# instructions go.
 # Usage: bench/callgrind.sh [MMSIM]   (environment: SHARED, CG_LIMIT_S)
 set -u
 S=${1:-build/mmsim}
@@ -43,3 +44,5 @@ case_ir "firmware $(basename "$J2018" .txt) seed 1" --maze "$J2018" --driver fir
 case_ir "scripted gen-16x16-s1" --maze mazes/gen-16x16-s1.txt --driver scripted
 case_ir "UKMARSBOT scripted gen-16x16-s1" --maze mazes/gen-16x16-s1.txt --driver scripted --robot robots/ukmarsbot.ini
 case_ir "scripted gen-32x32-s1" --maze mazes/gen-32x32-s1.txt --driver scripted
+printf '[sim]\nstep_s = 0.002\n' >"$T/s2.ini" # scripted runs may take a 2 ms step (docs/REFERENCE.md, "Config")
+case_ir "scripted gen-16x16-s1, 2 ms step" --maze mazes/gen-16x16-s1.txt --driver scripted --config "$T/s2.ini"
