@@ -467,8 +467,10 @@ docs-img: $(B)/mmsim $(B)/mmview
 bench: deps
 	@$(MAKE) --no-print-directory bench-run
 bench-run: $(B)/mmmaze $(B)/mmsim $(B)/bench_flood $(B)/simavr_cycles $(B)/avr/flood.elf \
-	$(B)/avr/tick0.elf $(B)/avr/tick100.elf arduino $(B)/clients/board/EncPoll.elf $(B)/clients/board/EncPollEdge.elf
+	$(B)/avr/tick0.elf $(B)/avr/tick100.elf arduino $(B)/clients/board/EncPoll.elf $(B)/clients/board/EncPollEdge.elf $(B)/ode_rows
 	BENCH_MAZE=$(BENCH_MAZE) bash bench/run.sh
+$(B)/ode_rows: bench/ode_rows.c | deps
+	$(CC) -O2 $< $$(pkg-config --cflags --libs ode) -lm -o $@
 $(B)/simavr_cycles: bench/simavr_cycles.c | deps
 	$(CC) -O2 $< $$(pkg-config --cflags --libs simavr) -o $@
 # The AVR flood benchmark's true map: japan2018 from the database, else a

@@ -46,3 +46,16 @@ case_ir "UKMARSBOT scripted gen-16x16-s1" --maze mazes/gen-16x16-s1.txt --driver
 case_ir "scripted gen-32x32-s1" --maze mazes/gen-32x32-s1.txt --driver scripted
 printf '[sim]\nstep_s = 0.002\n' >"$T/s2.ini" # scripted runs may take a 2 ms step (docs/REFERENCE.md, "Config")
 case_ir "scripted gen-16x16-s1, 2 ms step" --maze mazes/gen-16x16-s1.txt --driver scripted --config "$T/s2.ini"
+# ODE's exact step alone for the robot's 19 rows and for the 9 of the wheels'
+# spin as bodies of their own (bench/ode_rows.c): instructions per step, the
+# difference of 3,000 and 1,000 steps
+O=$(dirname "$S")/ode_rows
+if [ -x "$O" ]; then
+  for form in hinge spin; do
+    a=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$O" $form 1000 2>&1 | sed -n 's/.*Collected : //p')
+    b=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$O" $form 3000 2>&1 | sed -n 's/.*Collected : //p')
+    awk -v f=$form -v a="$a" -v b="$b" 'BEGIN { printf "callgrind ode_rows %-5s (%s rows): %.1f k instructions per 1 ms step\n", f, f == "hinge" ? 19 : 9, (b - a) / 2000 / 1e3 }'
+  done
+else
+  echo "SKIP ode_rows: no $O (make $O)"
+fi
