@@ -2,7 +2,8 @@
  * rotation KM and TM (the voltage steps of sim/validate's voltage_step, as
  * ukmars' motorlab measures them) within 2 % across 0.25, 0.5, 1 and 2 ms
  * for both shipped robots; a 3 m/s impact on a wall goes as deep at each
- * step, within 20 %. */
+ * step, within 20 %; each with the wheels on hinges and as spin bodies
+ * ([sim] wheels). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -26,6 +27,7 @@ static const double steps_s[] = { 0.00025, 0.0005, 0.001, 0.002 };
 static maze_t maze;
 static sim_model_t model;
 static simcfg_t cfg;
+static int wheels; /* [sim] wheels of the test in progress */
 
 /* KM (slope at 1.5/3 V forward, 1/2 V rotation) and TM (3 V, 2 V) at each
  * step; each within BAND_PCT of the 0.25 ms figure. */
@@ -38,6 +40,7 @@ static void check_robot(const char *path)
         config_defaults(&cfg);
         assert_int_equal(robot_load(&cfg, path, err, sizeof err), 0);
         cfg.sim.step_s = steps_s[k];
+        cfg.sim.wheels = wheels;
         /* the steps as --validate measures them (bench.h: a first-order fit to the distance) */
         bench_step_t a = bench_voltage_step(&cfg, 1.5, 0), b = bench_voltage_step(&cfg, 3.0, 0);
         fig[k][0] = (b.steady - a.steady) / 1.5, fig[k][1] = b.tm_s;
@@ -62,6 +65,7 @@ static double impact_depth(const char *path, double step_s)
     config_defaults(&cfg);
     assert_int_equal(robot_load(&cfg, path, err, sizeof err), 0);
     cfg.sim.step_s = step_s;
+    cfg.sim.wheels = wheels;
     sim_model_build(&model, &cfg, 1);
     maze_init(&maze, 1, 1);
     maze_close_unknown(&maze);
@@ -117,12 +121,23 @@ static void test_ukmarsbot(void **state)
     check_robot("robots/ukmarsbot.ini");
 }
 
+static void test_spin(void **state)
+{
+    (void)state;
+    wheels = SIM_WHEELS_SPIN;
+    test_paper(state);
+    test_ukmarsbot(state);
+    test_impact(state);
+    wheels = SIM_WHEELS_HINGE;
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_paper),
         cmocka_unit_test(test_ukmarsbot),
         cmocka_unit_test(test_impact),
+        cmocka_unit_test(test_spin),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

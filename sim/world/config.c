@@ -22,6 +22,7 @@
     { sec, #name, offsetof(simcfg_t, grp.name), def, 0, sizeof words / sizeof words[0] - 1, "word", source, words, 0, 0, 0, KEYTAB_INT, 0, NULL }
 
 static const char *const solvers[] = { "quickstep", "exact" };
+static const char *const wheel_forms[] = { "hinge", "spin" };
 
 static const keytab_t keys[] = {
     K("world", world, cell_m, 0.180, 0.05, 0.5, "m", "classic rules: 180 mm cells (half-size: 90 mm)"),
@@ -68,6 +69,7 @@ static const keytab_t keys[] = {
     K("sim", sim, step_s, 0.001, 1e-5, 0.01, "s", "1 kHz physics"),
     W("sim", sim, solver, 1, solvers, "exact: dWorldStep, no creep at rest, drives straight (docs/GUIDE-robot.md); quickstep slid a resting robot 10 mm/min"),
     KW("sim", sim, solver_iterations, 10, 1, 200, "1", "solver = quickstep only: at 5 the wheel hinges give and a straight run crabs 1.4 degrees"),
+    W("sim", sim, wheels, 0, wheel_forms, "hinge: each wheel a body on a hinge (19 solver rows); spin: its spin a body of its own (9 rows, a 47 % cheaper ODE step: docs/BENCHMARKS.md)"),
     K("sim", sim, time_limit_s, 600, 1, 86400, "s", "contest rules: 10 minutes"),
 };
 

@@ -140,6 +140,7 @@ typedef struct {
     double step_s;          /* physics step */
     int solver;             /* SIM_SOLVER_QUICKSTEP or SIM_SOLVER_EXACT */
     int solver_iterations;  /* quickstep's iterations per step */
+    int wheels;             /* SIM_WHEELS_HINGE or SIM_WHEELS_SPIN: how world.c builds a wheel */
     double time_limit_s;    /* contest limit */
 } simcfg_sim_t;
 
@@ -156,6 +157,7 @@ typedef struct {
 
 enum { MOTOR_MODEL_PAPER = 0, MOTOR_MODEL_DATASHEET = 1 };
 enum { SIM_SOLVER_QUICKSTEP = 0, SIM_SOLVER_EXACT = 1 };
+enum { SIM_WHEELS_HINGE = 0, SIM_WHEELS_SPIN = 1 };
 /* The key table (what --print-config lists), for tests: how many keys,
  * and the i-th key's section, name and range: 0, or -1 past the end. */
 size_t config_key_count(void);

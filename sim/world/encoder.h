@@ -16,8 +16,8 @@ typedef struct {
 } encoder_t;
 
 void encoder_init(encoder_t *e, double counts_per_wheel_rev, double angle_rad);
-/* A new wheel angle in radians; angles may wrap at +-pi (as ODE's hinge
- * angle does): a jump over pi is taken as the short way round. */
+/* A new wheel angle in radians; angles may wrap at +-pi (as
+ * world_wheel_angle does): a jump over pi is taken as the short way round. */
 void encoder_update(encoder_t *e, double angle_rad);
 
 #endif

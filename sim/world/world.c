@@ -27,6 +27,9 @@
 #define WORLD_IMPACT_M_S 0.05
 #define WORLD_TOUCH_SLACK_M 1e-6 /* "clear of walls" for the collision tree: a micrometre apart at least, m */
 #define WORLD_STICTION_RAD_S 1.0 /* wheel speed below which the gearbox friction is a stiction row, rad/s */
+/* A spin body's mass (kg) and inertia off its axle (kg*m^2): so heavy that
+ * the rows on it leave those freedoms still (1e6 against the robot's 0.1 kg) */
+#define WORLD_SPIN_HEAVY 1e6
 
 struct world {
     const sim_model_t *model; /* the caller's: outlives the world */
@@ -34,9 +37,15 @@ struct world {
     dSpaceID top, statics, robot;
     dJointGroupID contacts;
     dGeomID floor, centre_post, box, caster, caster2, wheel_geom[2], wheel_side[2], ray;
-    dBodyID chassis, wheel[2];
-    dJointID hinge[2];
+    int spin;              /* [sim] wheels = spin: each wheel's spin a body of its own (wheel_body's note), else wheels on hinges */
+    dBodyID chassis, wheel[2]; /* each wheel's body, or its spin body */
+    dJointID hinge[2];     /* hinged wheels: each wheel's hinge (its motor row the motor's damper) */
+    dJointID motor[2];     /* spin bodies: the motor's damper row on each (an angular motor) */
     dJointID friction[2];  /* the gearbox's stiction on each wheel (an angular motor, target speed 0) */
+    double spin_j[2];      /* each spin body's inertia about its axle, kg*m^2 */
+    double spin_before[2]; /* each wheel's spin before the ODE step in progress, rad/s */
+    double reaction_nm[2]; /* J * the spin's change over the last ODE step, about the axle, N*m: the chassis takes it next (spin_advance) */
+    double wheel_angle[2]; /* each wheel's angle about its axle, rad in (-pi, pi], + forward */
     dJointID lift, lock[2]; /* world_lift: chassis held above the floor, wheels locked */
     dGeomID *wall;          /* the maze's boxes (posts and walls), by wallgrid id */
     double (*wall_bounds)[4]; /* their floor bounds: min x, max x, min y, max y, m */
@@ -181,6 +190,12 @@ static void chassis_mass(const world_t *w, dMass *mb, double com[3])
         dMassTranslate(&mc, 0, k == 0 ? c->robot.caster_y_m : c->robot.caster2_y_m, c->robot.caster_r_m);
         dMassAdd(mb, &mc);
     }
+    for (int s = 0; s < 2 && w->spin; s++) { /* spin bodies: the wheels ride in the chassis; their spin about the axle is the spin body's */
+        dMassSetCylinderTotal(&mc, c->robot.wheel_mass_kg, 1, w->model->wheel_r_m[s], c->robot.wheel_w_m);
+        mc.I[0] = 0;
+        dMassTranslate(&mc, s == WORLD_LEFT ? -c->robot.wheel_x_m : c->robot.wheel_x_m, c->robot.axle_y_m, w->model->wheel_r_m[s]);
+        dMassAdd(mb, &mc);
+    }
     for (int k = 0; k < 3; k++) com[k] = mb->c[k];
     dMassTranslate(mb, -com[0], -com[1], -com[2]);
 }
@@ -249,9 +264,9 @@ static void wheel_rotation(double heading, const double *angle_rad, dMatrix3 out
     dMultiply0(out, r3, spin, 3, 3, 3);
 }
 
-/* A wheel's body: a cylinder's mass (and the motor's rotor, reflected
+/* Hinged wheels ([sim] wheels = hinge). A wheel's body: a cylinder's mass (and the motor's rotor, reflected
  * through the gearbox as J * N^2) at its centre. */
-static void wheel_body(world_t *w, int s, const double at_w[3], double heading)
+static void hinge_wheel_body(world_t *w, int s, const double at_w[3], double heading)
 {
     const simcfg_t *c = w->model->cfg;
     const drive_spec_t *dr = &c->robot.drive[s];
@@ -281,7 +296,7 @@ static void wheel_body(world_t *w, int s, const double at_w[3], double heading)
  * rolls a little, which moves the effective track between 88 and 104 mm
  * and makes in-place turns miss by up to 9 degrees. Against walls and
  * posts the wheel is its real cylinder. */
-static void wheel_geoms(world_t *w, int s)
+static void hinge_wheel_geoms(world_t *w, int s)
 {
     double r = w->model->wheel_r_m[s];
     w->wheel_geom[s] = dCreateSphere(w->robot, r);
@@ -297,7 +312,7 @@ static void wheel_geoms(world_t *w, int s)
 /* A wheel's joints to the chassis: the hinge on the axle at anchor_w
  * (its motor row off until world_step drives it) and the gearbox's
  * stiction, an angular motor held at speed 0. */
-static void wheel_joints(world_t *w, int s, const double anchor_w[3])
+static void hinge_wheel_joints(world_t *w, int s, const double anchor_w[3])
 {
     const dReal *ax = dBodyGetRotation(w->chassis); /* robot x axis in the world: column 0 */
     w->hinge[s] = dJointCreateHinge(w->world, 0);
@@ -313,18 +328,157 @@ static void wheel_joints(world_t *w, int s, const double anchor_w[3])
     dJointSetAMotorParam(w->friction[s], dParamFMax, 0);
 }
 
+/* Spin bodies ([sim] wheels = spin). A wheel's spin body: a body that carries the wheel's spin about its
+ * axle and nothing else. Its inertia about the axle is the wheel's
+ * cylinder's and the motor's rotor, reflected through the gearbox as
+ * J * N^2; its mass and its inertia about the other axes are so heavy that
+ * the rows on it leave them still. world_step puts it on the wheel's centre
+ * with the chassis' orientation before each ODE step; its angular velocity
+ * along the chassis' x axis is the wheel's spin relative to the chassis
+ * (+ rolling forward), as a hinge's rate. */
+static void wheel_body(world_t *w, int s)
+{
+    const simcfg_t *c = w->model->cfg;
+    const drive_spec_t *dr = &c->robot.drive[s];
+    dMass m;
+    double r = w->model->wheel_r_m[s], j = 0.5 * c->robot.wheel_mass_kg * r * r;
+    if (dr->rotor_inertia_kgm2 > 0 && w->model->motor_model[s] != MOTOR_MODEL_PAPER) j += dr->rotor_inertia_kgm2 * dr->gear_ratio * dr->gear_ratio;
+    w->wheel[s] = dBodyCreate(w->world);
+    dMassSetParameters(&m, WORLD_SPIN_HEAVY, 0, 0, 0, j, WORLD_SPIN_HEAVY, WORLD_SPIN_HEAVY, 0, 0, 0);
+    w->spin_j[s] = j;
+    dBodySetMass(w->wheel[s], &m);
+    dBodySetGravityMode(w->wheel[s], 0);
+    /* No gyroscopic term on a wheel (its spin is relative to the chassis,
+     * and ODE's implicit term damps a spinning wheel by an amount that
+     * grows with the step); the real torque (wheel and rotor, about 4e-4
+     * N*m in a 20 rad/s spin) shifts about 5 mN between the tyres: left out. */
+    dBodySetGyroscopicMode(w->wheel[s], 0);
+}
+
+/* A wheel's geoms, on the chassis at the wheel's centre (their contacts
+ * take the spin body as their second body: near_cb). The tyre touches the
+ * floor as a sphere of the wheel's radius: one contact on the wheel's
+ * centre plane, as a rounded tyre. A flat cylinder touches with one rim
+ * edge or the other as the chassis rolls a little, which moves the
+ * effective track between 88 and 104 mm and makes in-place turns miss by up
+ * to 9 degrees. Against walls and posts the wheel is its real cylinder,
+ * its axis along the axle. */
+static void wheel_geoms(world_t *w, int s, const double at[3])
+{
+    double r = w->model->wheel_r_m[s];
+    dMatrix3 axle;
+    w->wheel_geom[s] = dCreateSphere(w->robot, r);
+    dGeomSetBody(w->wheel_geom[s], w->chassis);
+    dGeomSetOffsetPosition(w->wheel_geom[s], at[0] - w->com[0], at[1] - w->com[1], at[2] - w->com[2]);
+    dGeomSetCategoryBits(w->wheel_geom[s], CAT_TYRE);
+    dGeomSetCollideBits(w->wheel_geom[s], CAT_FLOOR);
+    w->wheel_side[s] = dCreateCylinder(w->robot, r, w->model->cfg->robot.wheel_w_m);
+    dGeomSetBody(w->wheel_side[s], w->chassis);
+    dGeomSetOffsetPosition(w->wheel_side[s], at[0] - w->com[0], at[1] - w->com[1], at[2] - w->com[2]);
+    dRFromAxisAndAngle(axle, 0, 1, 0, M_PI / 2); /* the cylinder's z to the chassis' x */
+    dGeomSetOffsetRotation(w->wheel_side[s], axle);
+    dGeomSetCategoryBits(w->wheel_side[s], CAT_WHEEL_SIDE);
+    dGeomSetCollideBits(w->wheel_side[s], CAT_STATIC);
+}
+
+/* An angular motor row on wheel s's spin body about its axle (the body's
+ * x), against the world, off until set. */
+static dJointID spin_row(world_t *w, int s)
+{
+    dJointID j = dJointCreateAMotor(w->world, 0);
+    dVector3 x;
+    dBodyVectorToWorld(w->wheel[s], 1, 0, 0, x); /* ODE takes the axis in the world's frame and keeps it in the body's */
+    dJointAttach(j, w->wheel[s], 0);
+    dJointSetAMotorNumAxes(j, 1);
+    dJointSetAMotorAxis(j, 0, 1, x[0], x[1], x[2]);
+    dJointSetAMotorParam(j, dParamFMax, 0);
+    return j;
+}
+
+/* A wheel's rows: the motor's damper (off until world_step drives it) and
+ * the gearbox's stiction, an angular motor held at speed 0. */
+static void wheel_joints(world_t *w, int s)
+{
+    w->motor[s] = spin_row(w, s);
+    w->friction[s] = spin_row(w, s);
+    dJointSetAMotorParam(w->friction[s], dParamVel, 0);
+}
+
+/* Wheel s's spin rate relative to the chassis, rad/s, + forward. */
+static double spin_rate(const world_t *w, int s)
+{
+    const dReal *om = dBodyGetAngularVel(w->wheel[s]), *R = dBodyGetRotation(w->wheel[s]);
+    return om[0] * R[0] + om[1] * R[4] + om[2] * R[8];
+}
+
+/* Wheel s's spin body on the wheel's centre with the chassis' orientation,
+ * spinning at rate_rad_s about the axle, its other freedoms at rest. */
+static void spin_place(world_t *w, int s, double rate_rad_s)
+{
+    double wp[3];
+    dVector3 at, x;
+    wheel_point(w, s, wp);
+    dBodyGetRelPointPos(w->chassis, wp[0] - w->com[0], wp[1] - w->com[1], wp[2] - w->com[2], at);
+    dBodyVectorToWorld(w->chassis, 1, 0, 0, x);
+    dBodySetPosition(w->wheel[s], at[0], at[1], at[2]);
+    dBodySetQuaternion(w->wheel[s], dBodyGetQuaternion(w->chassis));
+    dBodySetLinearVel(w->wheel[s], 0, 0, 0);
+    dBodySetAngularVel(w->wheel[s], rate_rad_s * x[0], rate_rad_s * x[1], rate_rad_s * x[2]);
+}
+
+/* A torque t_nm about wheel s's axle between the chassis and the wheel
+ * (+ turns the wheel forward; the chassis takes the same torque, as on a
+ * hinge's first body). */
+static void spin_torque(world_t *w, int s, double t_nm)
+{
+    dBodyAddRelTorque(w->wheel[s], t_nm, 0, 0);
+    dBodyAddRelTorque(w->chassis, t_nm, 0, 0);
+}
+
+/* Wheel s's spin rate relative to the chassis, rad/s, + forward (either form). */
+static double wheel_rate(const world_t *w, int s) { return w->spin ? spin_rate(w, s) : dJointGetHingeAngleRate(w->hinge[s]); }
+
+/* A torque t_nm between the chassis and wheel s about its axle, + turns the wheel forward (either form). */
+static void wheel_torque(world_t *w, int s, double t_nm)
+{
+    if (w->spin) spin_torque(w, s, t_nm);
+    else dJointAddHingeTorque(w->hinge[s], t_nm); /* +T on body1 (chassis), -T on body2 (wheel) */
+}
+
+/* Wheel s's motor row: toward vel_rad_s with at most fmax_nm, softness cfm (either form). */
+static void motor_row(world_t *w, int s, double vel_rad_s, double fmax_nm, double cfm)
+{
+    if (w->spin) {
+        dJointSetAMotorParam(w->motor[s], dParamVel, vel_rad_s);
+        dJointSetAMotorParam(w->motor[s], dParamFMax, fmax_nm);
+        dJointSetAMotorParam(w->motor[s], dParamCFM, cfm);
+    } else {
+        dJointSetHingeParam(w->hinge[s], dParamVel, vel_rad_s);
+        dJointSetHingeParam(w->hinge[s], dParamFMax, fmax_nm);
+        dJointSetHingeParam(w->hinge[s], dParamCFM, cfm);
+    }
+}
+
 /* The robot for a body centre at (x, y) facing heading: the chassis, then
- * each wheel on its hinge. */
+ * each wheel: on its hinge, or its geoms on the chassis, its spin body and
+ * rows. */
 static void build_robot(world_t *w, double x, double y, double heading)
 {
     build_chassis(w, x, y, heading);
     for (int s = 0; s < 2; s++) {
         double wp[3], ww[3];
         wheel_point(w, s, wp);
+        if (w->spin) {
+            wheel_geoms(w, s, wp);
+            wheel_body(w, s);
+            spin_place(w, s, 0);
+            wheel_joints(w, s);
+            continue;
+        }
         frame_point(x, y, heading, wp, ww);
-        wheel_body(w, s, ww, heading);
-        wheel_geoms(w, s);
-        wheel_joints(w, s, ww);
+        hinge_wheel_body(w, s, ww, heading);
+        hinge_wheel_geoms(w, s);
+        hinge_wheel_joints(w, s, ww);
     }
     int n = dSpaceGetNumGeoms(w->robot);
     w->nparts = n < WORLD_PARTS ? n : WORLD_PARTS; /* 7 at most: always all of them */
@@ -357,6 +511,7 @@ world_t *world_create(const sim_model_t *model, const maze_t *m, double x_m, dou
     dRandSetSeed(1);
     const simcfg_t *c = model->cfg;
     w->model = model;
+    w->spin = model->cfg->sim.wheels == SIM_WHEELS_SPIN;
     w->world = dWorldCreate();
     dWorldSetGravity(w->world, 0, 0, -9.81);
     dWorldSetQuickStepNumIterations(w->world, model->solver_iterations);
@@ -549,10 +704,11 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
         if (a == w->caster || a == w->caster2) {
             mu = w->model->cfg->robot.skid_mu; /* a skid slides: Coulomb friction */
         } else if (!wall && (a == w->wheel_geom[0] || a == w->wheel_geom[1])) {
-            dVector3 v;
-            dBodyGetPointVel(dGeomGetBody(a), c[i].geom.pos[0], c[i].geom.pos[1], c[i].geom.pos[2], v);
-            double slip = hypot(v[0], v[1]);
             int side = a == w->wheel_geom[WORLD_LEFT] ? WORLD_LEFT : WORLD_RIGHT;
+            dVector3 v, vs = { 0, 0, 0, 0 }; /* the tyre's point; with spin bodies the chassis' motion less the spin body's (below) */
+            dBodyGetPointVel(dGeomGetBody(a), c[i].geom.pos[0], c[i].geom.pos[1], c[i].geom.pos[2], v);
+            if (w->spin) dBodyGetPointVel(w->wheel[side], c[i].geom.pos[0], c[i].geom.pos[1], c[i].geom.pos[2], vs);
+            double slip = hypot(v[0] - vs[0], v[1] - vs[1]);
             mu = slip > w->model->cfg->robot.tyre_slip_m_s ? w->model->tyre_mu_dynamic[side] : w->model->tyre_mu[side];
         }
         c[i].surface.mode = dContactApprox1 | dContactSoftERP | dContactSoftCFM;
@@ -570,39 +726,43 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
         c[i].surface.mu = mu;
         soft_contact(w, a, wall, n, &c[i]);
         dJointID j = dJointCreateContact(w->world, w->contacts, &c[i]);
-        dJointAttach(j, dGeomGetBody(c[i].geom.g1), dGeomGetBody(c[i].geom.g2));
+        /* with spin bodies, a wheel's contact holds the chassis against its spin body
+         * as its second body: the relative speed at the point is the
+         * chassis' there less the spin's rim speed, the wheel's own, and
+         * the contact's torque turns the spin (the spin body's linear
+         * freedoms, too heavy to move, stand in for the floor or wall) */
+        int ws = !w->spin ? -1 : a == w->wheel_geom[0] || a == w->wheel_side[0] ? 0 : a == w->wheel_geom[1] || a == w->wheel_side[1] ? 1 : -1;
+        dJointAttach(j, dGeomGetBody(c[i].geom.g1), ws >= 0 ? w->wheel[ws] : dGeomGetBody(c[i].geom.g2));
     }
 }
 
 /* A wheel's drive for the step: the constant torque explicitly; the part
- * that falls with the wheel's speed as the hinge's motor row, a damper
- * toward t0/D with damping D (ODE solves J*v = vel - cfm*lambda, so
+ * that falls with the wheel's speed as the motor row, a damper toward
+ * t0/D with damping D (ODE solves J*v = vel - cfm*lambda, so
  * lambda = (vel - v)/cfm: cfm = 1/D), implicit in the end speed; the
  * gearbox's friction as a motor held at speed 0 with at most that torque. */
 static void drive_wheel(world_t *w, int s, const motor_drive_t *d)
 {
     if (d->damping_nm_s > 0) {
-        double vel = d->t0_nm / d->damping_nm_s;
-        dJointSetHingeParam(w->hinge[s], dParamVel, vel);
-        dJointSetHingeParam(w->hinge[s], dParamFMax, dInfinity); /* unbounded: the damper's torque is what it is, and the LCP solves it directly */
-        dJointSetHingeParam(w->hinge[s], dParamCFM, 1.0 / d->damping_nm_s);
+        /* unbounded: the damper's torque is what it is, and the LCP solves it directly */
+        motor_row(w, s, d->t0_nm / d->damping_nm_s, dInfinity, 1.0 / d->damping_nm_s);
     } else {
-        dJointSetHingeParam(w->hinge[s], dParamFMax, 0);
-        /* +T on body1 (chassis), -T on body2 (wheel): the wheel turns
-         * forward and the chassis takes the reaction */
-        dJointAddHingeTorque(w->hinge[s], d->t0_nm);
+        if (w->spin) dJointSetAMotorParam(w->motor[s], dParamFMax, 0);
+        else dJointSetHingeParam(w->hinge[s], dParamFMax, 0);
+        wheel_torque(w, s, d->t0_nm);
     }
     /* Moving, the friction is a torque against the motion: one step of it
      * cannot reverse a wheel turning faster than f*h/J (0.09 rad/s for the
      * default robot), so above WORLD_STICTION_RAD_S it is applied as such and
-     * the solver has two rows fewer (15 % of the step's cost). */
-    double w_rad_s = dJointGetHingeAngleRate(w->hinge[s]);
+     * the solver has a row fewer. */
+    double w_rad_s = wheel_rate(w, s);
     if (fabs(w_rad_s) > WORLD_STICTION_RAD_S) {
         dJointSetAMotorParam(w->friction[s], dParamFMax, 0);
-        dJointAddHingeTorque(w->hinge[s], w_rad_s > 0 ? -d->friction_nm : d->friction_nm);
+        wheel_torque(w, s, w_rad_s > 0 ? -d->friction_nm : d->friction_nm);
     } else {
         dJointSetAMotorParam(w->friction[s], dParamFMax, d->friction_nm);
     }
+    if (w->spin) dBodyAddRelTorque(w->chassis, w->reaction_nm[s], 0, 0);
 }
 
 /* A contact episode over: counted once for each kind it had. */
@@ -619,8 +779,8 @@ void world_brake(world_t *w, double load_nm) { w->brake_nm = load_nm; }
 static void brake_wheels(world_t *w)
 {
     for (int s = 0; s < 2 && w->brake_nm != 0; s++) {
-        double rate = dJointGetHingeAngleRate(w->hinge[s]);
-        if (rate != 0) dJointAddHingeTorque(w->hinge[s], rate > 0 ? -w->brake_nm : w->brake_nm); /* +T turns the wheel forward */
+        double rate = wheel_rate(w, s);
+        if (rate != 0) wheel_torque(w, s, rate > 0 ? -w->brake_nm : w->brake_nm); /* +T turns the wheel forward */
     }
 }
 
@@ -641,6 +801,24 @@ static int sub_steps(world_t *w, double h_s)
     return (int)ceil(h_s / WORLD_CONTACT_STEP_S - 1e-9);
 }
 
+/* After an ODE step: each wheel's angle advanced by its end spin (as ODE
+ * moves a body by its end velocity), and the chassis' share of the wheel's
+ * torques for the next step. The tyre's force acts on the chassis at the
+ * tyre's point, so the chassis already feels its moment about the axle,
+ * which on a real robot goes to the wheel; the motor's reaction, which the
+ * real chassis feels, the spin body hands to the world. Their sum is the
+ * torque that changed the spin, J * dw/h: the chassis takes that about its
+ * axle, a step late (it only pitches the chassis: with it the pitch under
+ * acceleration is the hinged wheels', bench/ode_rows.c). */
+static void spin_advance(world_t *w)
+{
+    for (int s = 0; s < 2; s++) {
+        double rate = spin_rate(w, s);
+        w->wheel_angle[s] = remainder(w->wheel_angle[s] + rate * w->h_s, 2 * M_PI);
+        w->reaction_nm[s] = w->spin_j[s] * (rate - w->spin_before[s]) / w->h_s;
+    }
+}
+
 void world_step(world_t *w, const motor_drive_t drive[2])
 {
     double h = w->model->cfg->sim.step_s;
@@ -650,6 +828,10 @@ void world_step(world_t *w, const motor_drive_t drive[2])
     w->wall_depth_m = 0;
     w->h_s = h / n;
     for (int i = 0; i < n; i++) {
+        for (int s = 0; s < 2 && w->spin; s++) {
+            w->spin_before[s] = spin_rate(w, s);
+            spin_place(w, s, w->spin_before[s]);
+        }
         /* ODE clears the added torques after each of its steps */
         drive_wheel(w, WORLD_LEFT, &drive[WORLD_LEFT]);
         drive_wheel(w, WORLD_RIGHT, &drive[WORLD_RIGHT]);
@@ -659,6 +841,7 @@ void world_step(world_t *w, const motor_drive_t drive[2])
         else dWorldQuickStep(w->world, w->h_s);
         w->clear_now = 0;
         dJointGroupEmpty(w->contacts);
+        if (w->spin) spin_advance(w);
     }
     w->brake_nm = 0;
     if (w->touching && !w->touched_last) w->collisions++;
@@ -677,11 +860,13 @@ unsigned world_contacts(const world_t *w, int kind)
 void world_dyno(world_t *w, double rate_rad_s)
 {
     for (int s = 0; s < 2; s++) {
-        dJointID j = dJointCreateAMotor(w->world, 0);
-        dJointAttach(j, w->chassis, w->wheel[s]);
-        dJointSetAMotorNumAxes(j, 1);
-        dJointSetAMotorAxis(j, 0, 1, 1, 0, 0);
-        /* its row holds (w_chassis - w_wheel) . axis = vel, as the hinge's rate */
+        dJointID j = w->spin ? spin_row(w, s) : dJointCreateAMotor(w->world, 0);
+        if (!w->spin) {
+            dJointAttach(j, w->chassis, w->wheel[s]);
+            dJointSetAMotorNumAxes(j, 1);
+            dJointSetAMotorAxis(j, 0, 1, 1, 0, 0);
+        }
+        /* its row holds the wheel's rate at vel ((w_chassis - w_wheel) . axis on a hinge) */
         dJointSetAMotorParam(j, dParamVel, rate_rad_s);
         dJointSetAMotorParam(j, dParamFMax, dInfinity);
     }
@@ -693,6 +878,10 @@ static void hold_up(world_t *w)
     const dReal *p = dBodyGetPosition(w->chassis);
     dBodySetPosition(w->chassis, p[0], p[1], p[2] + WORLD_CARRY_M);
     for (int s = 0; s < 2; s++) {
+        if (w->spin) {
+            spin_place(w, s, spin_rate(w, s));
+            continue;
+        }
         const dReal *q = dBodyGetPosition(w->wheel[s]);
         dBodySetPosition(w->wheel[s], q[0], q[1], q[2] + WORLD_CARRY_M);
     }
@@ -705,6 +894,12 @@ void world_lift(world_t *w, int lock_wheels)
 {
     hold_up(w);
     for (int s = 0; s < 2 && lock_wheels; s++) {
+        if (w->spin) {
+            w->lock[s] = spin_row(w, s); /* held at spin 0 */
+            dJointSetAMotorParam(w->lock[s], dParamVel, 0);
+            dJointSetAMotorParam(w->lock[s], dParamFMax, dInfinity);
+            continue;
+        }
         w->lock[s] = dJointCreateFixed(w->world, 0);
         dJointAttach(w->lock[s], w->chassis, w->wheel[s]);
         dJointSetFixed(w->lock[s]);
@@ -793,11 +988,11 @@ double world_body_z(const world_t *w)
 
 double world_wheel_floor_gap(const world_t *w, int side)
 {
-    return dBodyGetPosition(w->wheel[side])[2] - dGeomSphereGetRadius(w->wheel_geom[side]);
+    return dGeomGetPosition(w->wheel_geom[side])[2] - dGeomSphereGetRadius(w->wheel_geom[side]);
 }
 
-double world_wheel_angle(const world_t *w, int side) { return dJointGetHingeAngle(w->hinge[side]); }
-double world_wheel_rate(const world_t *w, int side) { return dJointGetHingeAngleRate(w->hinge[side]); }
+double world_wheel_angle(const world_t *w, int side) { return w->spin ? w->wheel_angle[side] : dJointGetHingeAngle(w->hinge[side]); }
+double world_wheel_rate(const world_t *w, int side) { return wheel_rate(w, side); }
 
 /* world_ray_normal: the nearest hit of one ray and its surface normal,
  * the ray tested exactly (ODE's ray-box) against the boxes along its path
@@ -869,6 +1064,11 @@ void world_place(world_t *w, double x_m, double y_m, double heading_rad, const d
     dBodySetAngularVel(w->chassis, 0, 0, 0);
     for (int s = 0; s < 2; s++) {
         double wp[3], ww[3];
+        if (w->spin) {
+            w->wheel_angle[s] = remainder(wheel_rad[s], 2 * M_PI);
+            spin_place(w, s, 0);
+            continue;
+        }
         wheel_point(w, s, wp);
         frame_point(x_m, y_m, heading_rad, wp, ww);
         wheel_rotation(heading_rad, &wheel_rad[s], r);
@@ -887,6 +1087,10 @@ void world_set_speed(world_t *w, double v_m_s)
     dBodySetLinearVel(w->chassis, v_m_s * f[0], v_m_s * f[1], 0);
     dBodySetAngularVel(w->chassis, 0, 0, 0);
     for (int s = 0; s < 2; s++) {
+        if (w->spin) {
+            spin_place(w, s, v_m_s / w->model->wheel_r_m[s]); /* rolling, + forward */
+            continue;
+        }
         double spin = -v_m_s / w->model->wheel_r_m[s]; /* rolling forward turns the wheel about -x */
         dBodySetLinearVel(w->wheel[s], v_m_s * f[0], v_m_s * f[1], 0);
         dBodySetAngularVel(w->wheel[s], spin * x[0], spin * x[1], spin * x[2]);

@@ -1,5 +1,6 @@
 /* world.h - the ODE world: floor, walls and posts of a maze, the robot
- * (body box with a caster sphere, two wheels on hinges), contacts, rays.
+ * (body box with its casters, two wheels: bodies on hinges, or each wheel's
+ * spin a body of its own, [sim] wheels), contacts, rays.
  *
  * Frame: x east, y north, z up, metres; origin at the outer south-west
  * corner of the maze's post grid (post centres at multiples of cell_m).
@@ -70,7 +71,8 @@ double world_body_z(const world_t *w);
 /* The lowest point of a wheel's tyre above the floor, m (0 = resting on
  * it; the floor's contact softness presses it in by a few micrometres). */
 double world_wheel_floor_gap(const world_t *w, int side);
-/* Wheel hinge angle (wraps at +-pi) and rate (positive = forward). */
+/* A wheel's angle about its axle, relative to the chassis (wraps at +-pi),
+ * and its rate (positive = forward). */
 double world_wheel_angle(const world_t *w, int side);
 double world_wheel_rate(const world_t *w, int side);
 
@@ -87,7 +89,7 @@ double world_ray(world_t *w, double x_m, double y_m, double z_m, double dir_rad,
 double world_ray_normal(world_t *w, const double pos_m[3], const double dir[3], double max_m, double normal[3]);
 
 /* Put the robot, at rest and level, with its body centre over (x_m, y_m)
- * facing heading_rad and its wheels at these hinge angles (rad, positive =
+ * facing heading_rad and its wheels at these angles (rad, positive =
  * forward; NULL = keep the current ones, so the encoders do not jump),
  * each wheel on the floor at its own radius:
  * a logged pose replayed (mmview), the robot carried back to the start
