@@ -135,18 +135,19 @@ $(B)/%: tools/%.c $(B)/libmm.a
 	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(B)/libmm.a $(LIBS) -o $@
 tools: $(addprefix $(B)/,$(TOOLS))
 
-# The source tree's absolute path, where a program built here finds boards/ and
-# robots/ from any working directory (sim/io/datadir.h).
+# The source tree's absolute path, where a program built here finds boards/,
+# robots/ and contests/ from any working directory (sim/io/datadir.h).
 $(B)/host/sim/io/datadir.o $(B)/san/sim/io/datadir.o: INC += -DMMSIM_DATADIR='"$(CURDIR)"'
 
-# `make install PREFIX=DIR`: the tools in DIR/bin, the board and robot files in
+# `make install PREFIX=DIR`: the tools in DIR/bin, the board, robot and contest files in
 # DIR/share/mmsim, where DIR/bin/mmsim finds them from any working directory.
 PREFIX ?= /usr/local
 install: $(addprefix $(B)/,$(TOOLS))
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/mmsim/boards $(DESTDIR)$(PREFIX)/share/mmsim/robots
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/mmsim/boards $(DESTDIR)$(PREFIX)/share/mmsim/robots $(DESTDIR)$(PREFIX)/share/mmsim/contests
 	install -m 755 $^ $(DESTDIR)$(PREFIX)/bin
 	install -m 644 boards/*.ini $(DESTDIR)$(PREFIX)/share/mmsim/boards
 	install -m 644 robots/*.ini $(DESTDIR)$(PREFIX)/share/mmsim/robots
+	install -m 644 contests/*.ini $(DESTDIR)$(PREFIX)/share/mmsim/contests
 .PHONY: install
 
 # ---- tests (sanitized) ----

@@ -356,9 +356,9 @@ json_t *contest_json(const contest_t *c, const race_t *race, const double *lift_
         json_array_append_new(arr, json_pack("{s:i, s:f, s:f, s:i, s:b, s:f}", "lap", i + 1, "run_s", runs[i].run_s, "search_s",
                                              runs[i].search_s, "touches", runs[i].touches, "counts",
                                              score_counts(&c->rules, runs, i), "score_s", score_run(&c->rules, &runs[i])));
-    json_t *j = json_pack("{s:s, s:s, s:i, s:f, s:f, s:o}", "name", c->name, "scoring",
-                          rules_words[c->rules.rule], "runs", c->rules.runs, "search_divisor", c->rules.search_divisor,
-                          "touch_penalty_s", c->rules.touch_penalty_s, "run_scores", arr);
+    json_t *j = json_pack("{s:s, s:s, s:i, s:f, s:f, s:f, s:o}", "name", c->name, "scoring", rules_words[c->rules.rule],
+                          "runs", c->rules.runs, "search_divisor", c->rules.search_divisor, "touch_penalty_s",
+                          c->rules.touch_penalty_s, "time_limit_s", race->limit_s, "run_scores", arr);
     json_object_set_new(j, "score_s", best >= 0 ? json_real(score) : json_null());
     json_object_set_new(j, "score_lap", best >= 0 ? json_integer(best + 1) : json_null());
     return j;
