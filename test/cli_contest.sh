@@ -72,6 +72,10 @@ r=$(check_score "$T/out" 2>&1); [ "$r" = ok ] && ok "run_plus_search: every run'
   && ok "run_plus_search: the touch counts from run 2 on; 1/30 and 2 s from contests/apec.ini" || bad "apec: $(jv "$T/out" "d['contest']")"
 [ "$(jv "$T/out" "all(r['score_s'] - r['run_s'] > 2 + 0.5 for r in d['contest']['run_scores'][1:])")" = True ] \
   && ok "run_plus_search: runs 2 and 3 score above their run time by the touch and the search share" || bad "apec shares: $(jv "$T/out" "d['contest']")"
+# the same inputs, the same JSON (apart from the wall time)
+cp "$T/out" "$T/apec1"
+want_rc 0 "apec again" "$S" --maze $M16 --driver scripted --runs 3 --contest apec --input "20 lift; 20.5 place" --json
+[ "$(strip "$T/out")" = "$(strip "$T/apec1")" ] && ok "apec: the same JSON twice" || bad "apec: two runs differ"
 # other shares from a file: search/1 and 20 s a touch, a touch before the first run
 sed -e 's/^search_divisor = 30$/search_divisor = 1/' -e 's/^touch_penalty_s = 2$/touch_penalty_s = 20/' contests/apec.ini >"$T/heavy.ini"
 want_rc 0 "heavy shares: scripted, 2 runs" "$S" --maze $M16 --driver scripted --runs 2 --contest "$T/heavy.ini" --input "0.01 lift; 0.2 place" --json
