@@ -58,6 +58,11 @@ r=$(check_score "$T/out" 2>&1); [ "$r" = ok ] && ok "runs = 2: the score's rule 
 [ "$(jv "$T/out" "[r['counts'] for r in d['contest']['run_scores']], d['contest']['name']")" = "([True, True, False], 'two')" ] \
   && ok "runs = 2: the third run does not count" || bad "runs = 2: $(jv "$T/out" "d['contest']")"
 
+# without --runs the contest's number of runs: the scripted driver makes 2, the text says the score
+want_rc 0 "runs = 2 without --runs: scripted, text" "$S" --maze $M5 --driver scripted --contest "$T/two.ini"
+grep -c '^[0-9]  ' "$T/out" | grep -qx 2 && grep -qE '^contest two \(best_run\): score [0-9.]+ s \(lap [12]\)$' "$T/out" \
+  && ok "runs = 2 without --runs: 2 laps; the summary's contest line" || bad "runs without --runs: $(cat "$T/out")"
+
 # the time limit: --time-limit over the profile's; a run that ends after it does not count
 # (the contest ends at its limit before the third run: exit 1, as without --contest)
 want_rc 1 "time limit 30 s: scripted, 3 runs" "$S" --maze $M16 --driver scripted --runs 3 --contest classic-uk --time-limit 30 --json
