@@ -438,8 +438,9 @@ static int load_contest(mmsim_opts_t *m, const int *seen)
     static contest_t contest;
     char path[DATADIR_PATH_MAX + 64], err[600];
     if (!m->contest) return m->print_contest ? bad("%s", "--print-contest needs --contest NAME|FILE") : 0;
-    if (contest_find(m->contest, path, sizeof path, err, sizeof err) != 0 || contest_load(&contest, path, err, sizeof err) != 0) {
-        fprintf(stderr, "%s\n", err);
+    if (contest_find(m->contest, path, sizeof path, err, sizeof err) != 0) return bad("%s", err);
+    if (contest_load(&contest, path, err, sizeof err) != 0) {
+        fprintf(stderr, "%s\n", err); /* FILE:LINE:COL: as the file's other errors */
         return CLI_BAD_INPUT;
     }
     m->run.contest = &contest;
