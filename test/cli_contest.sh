@@ -81,6 +81,9 @@ r=$(check_score "$T/out" 2>&1); [ "$r" = ok ] && ok "run_plus_search: every run'
 cp "$T/out" "$T/apec1"
 want_rc 0 "apec again" "$S" --maze $M16 --driver scripted --runs 3 --contest apec --input "20 lift; 20.5 place" --json
 [ "$(strip "$T/out")" = "$(strip "$T/apec1")" ] && ok "apec: the same JSON twice" || bad "apec: two runs differ"
+# our firmware under apec (a search, then 3 speed runs): the rule holds on its laps too
+want_rc 0 "apec: our firmware" "$S" --maze $M16 --contest apec --json
+r=$(check_score "$T/out" 2>&1); [ "$r" = ok ] && ok "run_plus_search on our firmware's search and speed runs" || bad "apec firmware: $r"
 # other shares from a file: search/1 and 20 s a touch, a touch before the first run
 sed -e 's/^search_divisor = 30$/search_divisor = 1/' -e 's/^touch_penalty_s = 2$/touch_penalty_s = 20/' contests/apec.ini >"$T/heavy.ini"
 want_rc 0 "heavy shares: scripted, 2 runs" "$S" --maze $M16 --driver scripted --runs 2 --contest "$T/heavy.ini" --input "0.01 lift; 0.2 place" --json
