@@ -135,18 +135,19 @@ $(B)/%: tools/%.c $(B)/libmm.a
 	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(B)/libmm.a $(LIBS) -o $@
 tools: $(addprefix $(B)/,$(TOOLS))
 
-# The source tree's absolute path, where a program built here finds boards/ and
-# robots/ from any working directory (sim/io/datadir.h).
+# The source tree's absolute path, where a program built here finds boards/,
+# robots/ and contests/ from any working directory (sim/io/datadir.h).
 $(B)/host/sim/io/datadir.o $(B)/san/sim/io/datadir.o: INC += -DMMSIM_DATADIR='"$(CURDIR)"'
 
-# `make install PREFIX=DIR`: the tools in DIR/bin, the board and robot files in
+# `make install PREFIX=DIR`: the tools in DIR/bin, the board, robot and contest files in
 # DIR/share/mmsim, where DIR/bin/mmsim finds them from any working directory.
 PREFIX ?= /usr/local
 install: $(addprefix $(B)/,$(TOOLS))
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/mmsim/boards $(DESTDIR)$(PREFIX)/share/mmsim/robots
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/mmsim/boards $(DESTDIR)$(PREFIX)/share/mmsim/robots $(DESTDIR)$(PREFIX)/share/mmsim/contests
 	install -m 755 $^ $(DESTDIR)$(PREFIX)/bin
 	install -m 644 boards/*.ini $(DESTDIR)$(PREFIX)/share/mmsim/boards
 	install -m 644 robots/*.ini $(DESTDIR)$(PREFIX)/share/mmsim/robots
+	install -m 644 contests/*.ini $(DESTDIR)$(PREFIX)/share/mmsim/contests
 .PHONY: install
 
 # ---- tests (sanitized) ----
@@ -500,11 +501,11 @@ $(B)/bench_flood: bench/bench_flood.c $(B)/libmm.a
 	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(B)/libmm.a $(LIBS) -o $@
 
 # ---- fuzzing (clang libFuzzer + ASan; bounded; not in CI) ----
-# make fuzz [FUZZ="mazefile wire lcmlog config robot"] [FUZZ_SECONDS=60]: each target
+# make fuzz [FUZZ="mazefile wire lcmlog config robot contest"] [FUZZ_SECONDS=60]: each target
 # in turn for FUZZ_SECONDS; corpora in $(B)/fuzz/corpus_NAME, findings
 # (crash-*, leak-*) in $(B)/fuzz.
 FUZZ_SECONDS ?= 60
-FUZZ ?= mazefile wire lcmlog config robot
+FUZZ ?= mazefile wire lcmlog config robot contest
 FUZZ_CC := clang -g -O1 -fsanitize=fuzzer,address,undefined -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
 FUZZ_SRC_mazefile := sim/maze/mazefile.c sim/io/infile.c firmware/maze.c
 FUZZ_SRC_wire     := hal/wire/wire.c
@@ -514,6 +515,9 @@ FUZZ_SRC_lcmlog   := sim/telemetry/lcmlog.c sim/io/infile.c $(LCM_C)
 FUZZ_SRC_robot    := sim/world/config.c sim/world/robot.c sim/world/keytab.c sim/world/inifile.c sim/io/infile.c \
 	$(wildcard sim/world/sensors/*.c) sim/world/world.c sim/world/wallgrid.c sim/world/rng.c firmware/maze.c $(B)/gen/robot_paper.c
 FUZZ_SRC_config   := $(FUZZ_SRC_robot)
+FUZZ_SRC_contest  := sim/contest/contest.c sim/contest/score.c sim/world/keytab.c sim/world/inifile.c sim/io/infile.c sim/io/datadir.c firmware/maze.c
+FUZZ_LIBS_contest := -linih -ljansson $(shell pkg-config --libs glib-2.0 2>/dev/null) -lm
+FUZZ_LEN_contest  := 4096
 FUZZ_LIBS_lcmlog  := -llcm
 FUZZ_LIBS_config  := -linih $(shell pkg-config --libs glib-2.0 ode 2>/dev/null) -lm
 FUZZ_LIBS_robot   := $(FUZZ_LIBS_config)
@@ -527,9 +531,10 @@ $(B)/fuzz/fuzz_%: test/fuzz_%.c $(LCM_STAMP) | deps
 	$(FUZZ_CC) $(INC) $< $(FUZZ_SRC_$*) $(FUZZ_LIBS_$*) -o $@
 $(B)/fuzz/fuzz_config $(B)/fuzz/fuzz_robot: $(B)/gen/robot_paper.c
 # seeds: our mazes, a short logged contest, --print-config and a small
-# config, our robot files and --print-robot
+# config, our robot files and --print-robot, our contest files
 $(B)/fuzz/seeds: $(B)/mmsim
-	@mkdir -p $(B)/fuzz/corpus_mazefile $(B)/fuzz/corpus_wire $(B)/fuzz/corpus_lcmlog $(B)/fuzz/corpus_config $(B)/fuzz/corpus_robot
+	@mkdir -p $(B)/fuzz/corpus_mazefile $(B)/fuzz/corpus_wire $(B)/fuzz/corpus_lcmlog $(B)/fuzz/corpus_config $(B)/fuzz/corpus_robot $(B)/fuzz/corpus_contest
+	cp -n contests/*.ini $(B)/fuzz/corpus_contest/ 2>/dev/null || true
 	cp -n mazes/*.txt $(B)/fuzz/corpus_mazefile/ 2>/dev/null || true
 	$(B)/mmsim --maze mazes/gen-5x5-s1.txt --driver firmware --time-limit 1 --lcm-rate 10 \
 	  --lcm-log $(B)/fuzz/corpus_lcmlog/seed.lcmlog >/dev/null || [ $$? = 1 ]
@@ -541,7 +546,7 @@ $(B)/fuzz/seeds: $(B)/mmsim
 fuzz: $(addprefix $(B)/fuzz/fuzz_,$(FUZZ)) $(B)/fuzz/seeds
 	cd $(B)/fuzz && for t in $(FUZZ); do \
 	  ./fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -max_len=$$(case $$t in mazefile) echo $(FUZZ_LEN_mazefile);; \
-	    wire) echo $(FUZZ_LEN_wire);; lcmlog) echo $(FUZZ_LEN_lcmlog);; config) echo $(FUZZ_LEN_config);; robot) echo $(FUZZ_LEN_robot);; esac) \
+	    wire) echo $(FUZZ_LEN_wire);; lcmlog) echo $(FUZZ_LEN_lcmlog);; config) echo $(FUZZ_LEN_config);; robot) echo $(FUZZ_LEN_robot);; contest) echo $(FUZZ_LEN_contest);; esac) \
 	    -malloc_limit_mb=512 corpus_$$t || exit 1; done
 
 mazes:

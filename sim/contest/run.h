@@ -56,10 +56,11 @@ typedef struct {
     const char *eeprom_path;       /* --eeprom FILE: the board's EEPROM loaded at power-on, saved at the end (NULL: blank, not kept) */
     unsigned gdb_port;             /* --gdb PORT: simavr's gdb stub on 127.0.0.1:PORT, the firmware halted until gdb continues (0: none) */
     const char *watch;             /* --watch NAME[,NAME...]: the firmware's globals on MM_WATCH and in the report (NULL: none) */
+    const struct contest_s *contest; /* --contest NAME|FILE: the contest's rules, read once by the caller (NULL: none) */
 } run_opts_t;
 
-/* The defaults, then --config's file, --robot's file, then the flags that
- * override keys.
+/* The defaults, then --config's file, --robot's file, --contest's maze
+ * geometry and time limit, then the flags that override keys.
  * 0, or -1 after one error line. */
 int run_load_config(const run_opts_t *o, simcfg_t *c);
 /* One contest; *out gets the result object (NULL if none); with print_text
