@@ -15,7 +15,7 @@ command -v python3 >/dev/null || { echo "SKIP cli_mms_diag: python3 missing"; ex
 A="python3 test/mms/diagonal.py"
 py() { python3 -c "import json,sys; d=json.loads(open('$T/out').read().splitlines()[-1]); print($1)"; }
 
-for m in gen-5x5-s1 gen-6x6-s1 gen-16x16-s1 gen-16x16-s2; do
+for m in gen-5x5-s1 gen-6x6-s1 gen-8x8-s1 gen-16x16-s1 gen-16x16-s2; do
   want_rc 0 "diagonals $m" "$S" --maze mazes/$m.txt --mms "$A" --json --verbose
   [ "$(py "(d['reached_goal'], d['exit_reason'], d['collisions'], d['mms']['exit_status'])")" = "(True, 'mms_exited', 0, 0)" ] \
     && ok "diagonals $m: the goal reached, no contact" || bad "diagonals $m: $(tail -1 "$T/out") $(grep 'diagonal.py' "$T/err")"

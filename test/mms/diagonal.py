@@ -8,7 +8,7 @@ steps starts with `moveForward` (one step: two diagonal half steps), the
 rest is `moveForwardHalf N`. Before each diagonal it checks the wall queries
 (wallFront/wallLeft/wallRight with half-step arguments) against its own
 map on the half-cell grid, and once it sends a diagonal move into a wall
-(`crash`, nothing moves); at the start it turns 45 degrees at the centre,
+(`crash`, nothing moves); at the goal it turns 45 degrees at the centre,
 where a diagonal aims at a post (`crash`). At the goal it checks getStat
 against its own count of the run and prints `expect TURNS DISTANCE
 EFFECTIVE CRASHES` and `used COMMANDS` (the diagonal commands it sent)
@@ -236,11 +236,6 @@ for s8, n in segs:
 if not any(s8 % 2 for s8, _ in merged):
     fail("no diagonal on the path")
 
-# at the start centre: a diagonal aims at a post
-turn8((2 * hd + 1) % 8)
-expect("wallFront", "true")
-expect("moveForwardHalf", "crash")
-crashes += 1
 tested_crash = False
 for s8, n in merged:
     turn8(s8)
@@ -263,6 +258,12 @@ for s8, n in merged:
         move("moveForward %d" % (n // 2) if n % 2 == 0 else "moveForwardHalf %d" % n, n)
 if not finished:
     fail("the run did not end in a goal cell")
+# at the goal's centre (after the run: no in-place turns before the first
+# diagonal): a diagonal aims at a post
+turn8((h8 + 1) % 8)
+expect("wallFront", "true")
+expect("moveForwardHalf", "crash")
+crashes += 1
 if not tested_crash:
     fail("no diagonal met a wall within 3 half steps")
 dist_cells = halves // 2
