@@ -686,6 +686,7 @@ static uint8_t cmd_entered;   /* cells entered by the last forward move */
 #define CF_END_HALF 0x08u     /* and was to end on one */
 #define CF_EDGE_SHIFT 4       /* bits 4-5: the heading from that boundary into ex.cell */
 #define CF_DIAG 0x40u         /* the robot faces st.heading turned 45 degrees clockwise */
+#define CF_UNSENSED 0x80u     /* on a boundary a diagonal reached: its cells were not sensed */
 static uint8_t cmd_flags;
 /* A diagonal half step (mms 1.2): from the middle of one cell boundary to
  * the middle of the next, across a quarter of a cell: half a cell's
@@ -728,7 +729,7 @@ static int cmd_diagonal(uint16_t halves)
     for (uint16_t k = 0; k < halves; k++)
         if (!diag_step(&c, &e)) return -1;
     ex.cell = c;
-    cmd_flags = (uint8_t)(CF_DIAG | CF_HALF | (e << CF_EDGE_SHIFT) | ((halves & 1u) ? CF_START_HALF : 0u));
+    cmd_flags = (uint8_t)(CF_DIAG | CF_HALF | CF_UNSENSED | (e << CF_EDGE_SHIFT) | ((halves & 1u) ? CF_START_HALF : 0u));
     cmd_entered = (uint8_t)(halves >> 1); /* mouse_cmd_moved: 2 x cmd_entered + the odd half */
     cmd_kind = CMD_FORWARD;
     /* at the smooth turns' speed: at the search's, the robot touched a
@@ -781,16 +782,19 @@ int mouse_cmd_forward(uint16_t halves)
         if (!maze_passable(&ex.map, c, st.heading, 1)) return -1;
         c = maze_step(&ex.map, c, st.heading);
     }
-    ex.cell = here;
-    uint16_t end = halves - half; /* half steps past ex.cell's centre */
+    /* after a diagonal, `here` is sensed as the move starts (cmd_forward_step):
+     * until then the robot counts as in the cell behind the boundary */
+    uint8_t unsensed = half ? (uint8_t)(cmd_flags & CF_UNSENSED) : 0u;
+    ex.cell = unsensed ? maze_step(&ex.map, here, (uint8_t)(st.heading + 2u)) : here;
+    uint16_t end = halves - half; /* half steps past here's centre */
     cmd_left = (uint8_t)((end + 1u) / 2u);
-    cmd_flags = (uint8_t)((half ? CF_START_HALF : 0u) | ((end & 1u) ? CF_END_HALF : 0u));
+    cmd_flags = (uint8_t)(unsensed | (half ? CF_START_HALF : 0u) | ((end & 1u) ? CF_END_HALF : 0u));
     cmd_entered = 0;
     cmd_kind = CMD_FORWARD;
-    if (cmd_left == 0) { /* from the boundary to ex.cell's centre: nothing new to sense */
+    if (cmd_left == 0) { /* from the boundary to here's centre: nothing new to sense */
         start_forward(RC_CELL_MM / 2, RC_SEARCH_MM_S, 0, RC_ACCEL_MM_S2);
         sensed = SENSE_DONE;
-        wall_ahead = maze_wall(&ex.map, ex.cell, st.heading) == MAZE_WALL_CLOSED;
+        wall_ahead = maze_wall(&ex.map, here, st.heading) == MAZE_WALL_CLOSED;
     } else if (cmd_left == 1 && (end & 1u)) { /* to the next boundary */
         start_forward(half ? RC_CELL_MM : RC_CELL_MM / 2, RC_SEARCH_MM_S, 0, RC_ACCEL_MM_S2);
         move_shift_mm = RC_CELL_MM / 2;
@@ -861,6 +865,17 @@ static void cmd_forward_step(void)
         no_centring();
         if (!motion_busy(&mo)) cmd_finish(MOUSE_CMD_DONE);
         return;
+    }
+    if (cmd_flags & CF_UNSENSED) {
+        /* from a boundary a diagonal reached: the cell ahead of it, with
+         * the first fresh readings (under 90 mm from its centre the side
+         * rays still meet its side walls, past its entry posts) */
+        if (!fresh()) return;
+        uint8_t walls = read_walls(RC_CELL_MM / 2 - mo.fwd.pos);
+        explore_moved(&ex, st.heading);
+        explore_sense(&ex, walls);
+        if (cmd_left == 0) wall_ahead = (walls & EXPLORE_WALL_FRONT) != 0;
+        cmd_flags &= (uint8_t)~CF_UNSENSED;
     }
     centring();
     float left = profile_remaining(&mo.fwd);

@@ -77,7 +77,8 @@ int mouse_cmd_turn(int8_t q);
  * post) and where the map shows a wall at the middle of a boundary it
  * would cross (unknown counts as open). Diagonals are driven on odometry
  * alone and sense nothing: the cells they cross keep the walls the map
- * had. */
+ * had; a straight from the boundary a diagonal reached senses the cell it
+ * enters as it starts. */
 int mouse_cmd_turn45(int8_t e);
 /* The heading in eighths of a turn clockwise from north (0 north, 1
  * north-east, ... 7 north-west); mouse_status()->heading is its quarter

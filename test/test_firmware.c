@@ -271,9 +271,10 @@ static void test_mouse_sets_off(void **state)
     assert_int_equal(mouse_status()->heading, MAZE_NORTH);
 }
 
-/* The wheels as ideal motors without inertia: each turns at its command
- * less the gearbox's friction (RC_CMD_FRICTION), RC_MM_S_PER_CMD mm/s per
- * unit; the ToF sensors see nothing and deliver a reading every 30 ms. */
+/* The wheels as ideal motors without inertia or friction: each turns at
+ * RC_MM_S_PER_CMD mm/s per unit of its command (the firmware's friction
+ * feed-forward then only adds gain); the ToF sensors see nothing and
+ * deliver a reading every 30 ms. */
 static float wheel_mm[2];
 static void run_ms(int ms)
 {
@@ -282,12 +283,11 @@ static void run_ms(int ms)
         fw_loop();
         now_us += 1000;
         for (int w = 0; w < 2; w++) {
-            float c = motor[w], f = c > RC_CMD_FRICTION ? c - RC_CMD_FRICTION : c < -RC_CMD_FRICTION ? c + RC_CMD_FRICTION : 0;
-            wheel_mm[w] += f * RC_MM_S_PER_CMD * 0.001f;
+            wheel_mm[w] += motor[w] * RC_MM_S_PER_CMD * 0.001f;
             enc[w] = (int32_t)lroundf(wheel_mm[w] / RC_MM_PER_COUNT);
         }
         if (now_us % 30000u == 0)
-            for (int k = 0; k < 3; k++) tof[k] = (hal_distance_t){ 0, (uint8_t)(tof[k].seq + 1), 1 };
+            for (int k = 0; k < 3; k++) tof[k] = (hal_distance_t){ .mm = 1200, .timeout = 1, .seq = (uint8_t)(tof[k].seq + 1) };
     }
 }
 
@@ -301,7 +301,8 @@ static void cmd_done(void)
  * headings; a diagonal from a cell centre aims at a post and one across
  * the maze's boundary wall is refused, nothing moving; a diagonal of two
  * half steps from the boundary north of (0,0), facing north-east, ends on
- * the boundary north of (1,1), facing into (1,2). */
+ * the boundary north of (1,1), facing into (1,2); a half step north from
+ * there senses (1,2). */
 static void test_mouse_cmd_diagonal(void **state)
 {
     (void)state;
@@ -344,6 +345,19 @@ static void test_mouse_cmd_diagonal(void **state)
     assert_false(mouse_status()->mode == MOUSE_CRASHED);
     /* driven: the half step, then 2 x 127.3 mm along the diagonal (the turns cancel) */
     near(0.5 * (wheel_mm[0] + wheel_mm[1]), 90.0 + 2 * 127.279, 3.0);
+    /* the diagonal sensed nothing; a straight from its end senses the cell
+     * it enters first (here: no walls seen, so open) */
+    maze_cell_t c12 = maze_cell(&m, 1, 2);
+    assert_int_equal(maze_wall(mouse_map(), c12, MAZE_WEST), MAZE_WALL_UNKNOWN);
+    assert_int_equal(mouse_cmd_turn45(-1), 0);
+    cmd_done();
+    assert_int_equal(mouse_cmd_forward(1), 0);
+    cmd_done();
+    assert_int_equal(mouse_status()->cell, c12);
+    assert_int_equal(mouse_cmd_edge(), 0);
+    assert_int_equal(maze_wall(mouse_map(), c12, MAZE_WEST), MAZE_WALL_OPEN);
+    assert_int_equal(maze_wall(mouse_map(), c12, MAZE_NORTH), MAZE_WALL_OPEN);
+    assert_int_equal(maze_wall(mouse_map(), c12, MAZE_EAST), MAZE_WALL_OPEN);
 }
 
 int main(void)
