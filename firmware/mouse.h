@@ -69,6 +69,21 @@ uint16_t mouse_cmd_moved(void);
 uint8_t mouse_cmd_edge(void);
 /* In-place quarter turn: +1 right, -1 left; -1 if refused. */
 int mouse_cmd_turn(int8_t q);
+/* In-place eighth turn (mms 1.2's turnRight45/turnLeft45): +1 right, -1
+ * left; -1 if refused. At a centre or on a boundary. Facing a diagonal,
+ * mouse_cmd_forward drives half-diagonal steps (half a cell's diagonal
+ * each) from the middle of one cell boundary to the middle of the next;
+ * it refuses (-1, nothing moves) at a cell centre (the diagonal aims at a
+ * post) and where the map shows a wall at the middle of a boundary it
+ * would cross (unknown counts as open). Diagonals are driven on odometry
+ * alone and sense nothing: the cells they cross keep the walls the map
+ * had; a straight from the boundary a diagonal reached senses the cell it
+ * enters as it starts. */
+int mouse_cmd_turn45(int8_t e);
+/* The heading in eighths of a turn clockwise from north (0 north, 1
+ * north-east, ... 7 north-west); mouse_status()->heading is its quarter
+ * part (a diagonal: the cardinal heading 45 degrees anticlockwise of it). */
+uint8_t mouse_cmd_heading8(void);
 /* The robot was put back at the start (mms ackReset): pose and odometry
  * restart, the map is kept, the start cell is sensed again (busy). */
 void mouse_cmd_reset(void);
