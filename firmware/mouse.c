@@ -539,7 +539,10 @@ static void run_plan(int to_goal)
         waiting = WAIT_NONE;
         if (to_goal) {
             st.runs++;
-            log_line(HAL_STR("run %u reached the goal at %u ms"), st.runs, (unsigned)((hal_micros() - start_us) / 1000u));
+            char line[HAL_LOG_MAX + 1]; /* the ms since the start as 32 bits: an AVR's unsigned wraps at 65.5 s */
+            hal_snprintf(line, sizeof line, HAL_STR("run %u reached the goal at %lu ms"), (unsigned)st.runs,
+                         (unsigned long)((hal_micros() - start_us) / 1000u));
+            hal_log(line);
             st.mode = MOUSE_RETURN;
         } else {
             st.mode = MOUSE_TO_RUN;

@@ -64,6 +64,7 @@ static void usage(FILE *out)
           "             button, button=down|up, reset, occlude=SENSOR (a robot-file [ir.*]/[tof.*] name, or left|right),\n"
           "             push=DX_MM[,DYAW_DEG[,SECONDS]], lift, place, send=TEXT, end; several --input add up;\n"
           "             --eeprom FILE: the MCU's EEPROM, a raw image, loaded at power-on and saved at the end;\n"
+          "             --end-on TEXT: the run ends when the console prints TEXT (exit_reason console_end);\n"
           "             --console pty: the board's UART on a pseudo-terminal (its path printed), in real time;\n"
           "             --watch NAME[,NAME...]: the firmware's global variables, by the ELF's symbols and DWARF,\n"
           "             each step on LCM channel MM_WATCH and in --report beside the true pose)\n"
@@ -292,6 +293,7 @@ static const cli_opt_t flags[] = {
     { .name = "mcu", .kind = CLI_STR, .off = RUN(avr_mcu) },
     { .name = "board", .kind = CLI_STR, .off = RUN(board) },
     { .name = "eeprom", .kind = CLI_STR, .off = RUN(eeprom_path) },
+    { .name = "end-on", .kind = CLI_STR, .off = RUN(end_on) },
     { .name = "watch", .kind = CLI_FN, .fn = f_watch, .has_arg = 1 },
     { .name = "f-cpu", .kind = CLI_FN, .fn = f_f_cpu, .has_arg = 1 },
     { .name = "gdb", .kind = CLI_FN, .fn = f_gdb, .has_arg = 1 },
@@ -310,8 +312,10 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     int mms_flags = cli_seen(flags, seen, "mms-ideal-walls") + cli_seen(flags, seen, "mms-timeout-ms") +
                     cli_seen(flags, seen, "mms-reset-at");
     if (o->board && !o->avr_elf) return bad("%s", "--board NAME needs --avr FIRMWARE.elf|.hex");
-    if (o->board && (o->link.device || o->link.pty || link_flags || o->avr_mcu || o->avr_f_cpu || m->batch || o->mms.command))
-        return bad("%s", "--board: the image runs on the board file's MCU: not with --serial/--pty, --protocol, --silence-ms, --mcu, --f-cpu, --mms or --batch");
+    if (o->board && (o->link.device || o->link.pty || link_flags || o->avr_mcu || o->avr_f_cpu || o->mms.command))
+        return bad("%s", "--board: the image runs on the board file's MCU: not with --serial/--pty, --protocol, --silence-ms, --mcu, --f-cpu or --mms");
+    if (o->board && m->batch && (o->eeprom_path || o->console_pty || o->gdb_port))
+        return bad("%s", "--board with --batch: each maze's board on its own; not with --eeprom, --console pty or --gdb");
     o->serial = o->link.device || o->link.pty || (o->avr_elf && !o->board);
     if (!!o->link.device + o->link.pty + !!o->avr_elf > 1) return bad("%s", "--serial/--port, --pty and --avr exclude each other");
     if (!o->serial && link_flags) return bad("%s", "--protocol and --silence-ms need --serial DEV, --pty or --avr ELF");
@@ -328,6 +332,9 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (m->batch && m->maze) return bad("%s", "--maze and --batch: one at a time (a batch runs every maze in DIR)");
     if (o->console_pty && !o->board) return bad("%s", "--console pty needs --board NAME");
     if (o->eeprom_path && !o->board) return bad("%s", "--eeprom FILE needs --board NAME");
+    if (o->end_on && !o->board) return bad("%s", "--end-on TEXT needs --board NAME");
+    if (o->end_on && (!*o->end_on || strlen(o->end_on) > RUN_END_ON_MAX))
+        return bad("%s", "--end-on TEXT: 1 to 64 characters (RUN_END_ON_MAX)");
     if (o->watch && !o->avr_elf) return bad("%s", "--watch NAME needs --avr IMAGE.elf (with or without --board NAME): the image's variables");
     if (o->console_pty) o->realtime = 1; /* a person at a serial monitor: in real time */
     if (o->view.baud <= 0) o->view.baud = (long)link_default_baud(o->link.protocol); /* the viewer's Connect */
