@@ -58,6 +58,7 @@ static uint8_t front_seq;     /* front-wall alignment: the reading last used */
 static float last_lateral_mm; /* the last centring estimate of this straight, */
 static uint8_t last_lateral_ok; /* if there was one */
 static uint32_t start_us;
+static uint8_t end_said; /* 1 once "contest done: ..." is logged for a search that ended early */
 
 /* The map is set up here rather than copied: a second maze_t would cost
  * 292 of the ATmega328P's 2048 bytes of SRAM. */
@@ -100,6 +101,7 @@ void fw_setup(void)
     run_offset_mm = 0;
     motion_smooth_geometry(RC_SMOOTH_MM_S, &smooth_offset_mm, &smooth_length_mm);
     start_us = hal_micros();
+    end_said = 0;
 }
 
 void fw_tick(void)
@@ -650,6 +652,11 @@ void fw_loop(void)
     case MOUSE_NO_GOAL:
     case MOUSE_CRASHED:
         motion_stop(&mo);
+        if (!end_said) { /* the contest's last word, whatever ended it (a console's reader waits for it) */
+            end_said = 1;
+            if (st.mode == MOUSE_NO_GOAL) HAL_LOG_STR("contest done: no path to the goal");
+            else HAL_LOG_STR("contest done: crashed");
+        }
         break;
     case MOUSE_COMMAND:
         cmd_step();

@@ -223,7 +223,8 @@ static void test_wall_angle(void **state)
     assert_true(motion_wall_angle(41.0f, 40.0f) > 0.006f && motion_wall_angle(41.0f, 40.0f) < 0.0075f);
 }
 
-/* The start cell boxed in: the mouse reports it and stops. */
+/* The start cell boxed in: the mouse reports it, says the contest is over
+ * (once) and stops. */
 static void test_mouse_no_goal(void **state)
 {
     (void)state;
@@ -235,6 +236,7 @@ static void test_mouse_no_goal(void **state)
     fw_set_maze(&m);
     log_checked = 1;
     expect_string(__wrap_hal_log, line, "explore: goal unreachable");
+    expect_string(__wrap_hal_log, line, "contest done: no path to the goal");
     fw_setup();
     for (int i = 0; i < 10; i++) {
         fw_tick();
