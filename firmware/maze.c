@@ -92,6 +92,15 @@ void maze_clear_goals(maze_t *m)
     memset(m->goal, 0, sizeof m->goal);
 }
 
+int maze_set_goal_rect(maze_t *m, uint8_t x0, uint8_t y0, uint8_t x1, uint8_t y1)
+{
+    if (x0 > x1 || y0 > y1 || x1 >= m->width || y1 >= m->height) return -1;
+    maze_clear_goals(m);
+    for (uint8_t y = y0; y <= y1; y++)
+        for (uint8_t x = x0; x <= x1; x++) maze_set_goal(m, maze_cell(m, x, y), 1);
+    return 0;
+}
+
 void maze_close_unknown(maze_t *m)
 {
     uint16_t n = maze_cells(m);
