@@ -135,6 +135,16 @@ $(B)/%: tools/%.c $(B)/libmm.a
 	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(B)/libmm.a $(LIBS) -o $@
 tools: $(addprefix $(B)/,$(TOOLS))
 
+# The half-size build: mmsim whose in-process firmware is built for KERISE
+# v5 in 90 mm cells (firmware/robot_kerise.h, robots/kerise-v5.ini); its own
+# firmware objects come before libmm.a, so the library's are not linked.
+HALF_FW_OBJ := $(patsubst firmware/%.c,$(B)/half/firmware/%.o,$(FW_SRC))
+$(B)/half/firmware/%.o: firmware/%.c | deps $(LCM_STAMP)
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) -include robot_kerise.h -MMD -MP -c $< -o $@
+$(B)/half/mmsim: tools/mmsim.c $(HALF_FW_OBJ) $(B)/libmm.a
+	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(HALF_FW_OBJ) $(B)/libmm.a $(LIBS) -o $@
+
 # The source tree's absolute path, where a program built here finds boards/ and
 # robots/ from any working directory (sim/io/datadir.h).
 $(B)/host/sim/io/datadir.o $(B)/san/sim/io/datadir.o: INC += -DMMSIM_DATADIR='"$(CURDIR)"'

@@ -1,0 +1,108 @@
+/* robot_kerise.h - robot_config.h's numbers for a half-size mouse, KERISE
+ * v5 as robots/kerise-v5.ini models it (its `; source:` lines: published
+ * figures, and how the rest is estimated), in the half-size maze (90 mm
+ * cells, 6 mm walls: NTF's rules). `make $(B)/half/mmsim` force-includes it
+ * (-include robot_kerise.h) into the firmware of an in-process mmsim; it
+ * defines ROBOT_CONFIG_H, so robot_config.h (the paper's robot) is then
+ * skipped. Every name robot_config.h defines is defined here. Where a
+ * number is robot_config.h's scaled to the half-size cell, the scaling is
+ * said; robot_config.h explains what each one does. */
+#ifndef ROBOT_CONFIG_H
+#define ROBOT_CONFIG_H
+
+/* ---- geometry (robots/kerise-v5.ini [chassis.body], [encoder.*]) ---- */
+#define RC_CELL_MM 90.0f             /* half-size maze pitch */
+#define RC_WALL_MM 6.0f              /* half-size wall thickness */
+#define RC_WHEEL_DIAMETER_MM 12.72f  /* wheel_left_d_mm, wheel_right_d_mm */
+#define RC_TRACK_MM 29.0f            /* wheel_track_mm */
+#define RC_ODOM_TRACK_MM 29.0f
+#define RC_COUNTS_PER_REV 4096.0f    /* encoder_ppr 970.2 x gear_ratio 4.222 */
+#define RC_MM_PER_COUNT (3.14159265f * RC_WHEEL_DIAMETER_MM / RC_COUNTS_PER_REV) /* 0.00976 mm */
+
+/* ---- motor, for feed-forward (1023 = the battery's 3.7 V) ---- */
+/* [motor.*]: R = 3.7 V / stall_a 0.4 + driver_r_ohm 0.305 = 9.56 ohm;
+ * the no-load current's voltage 0.03 A x 9.25 ohm = 0.278 V = 77 steps;
+ * the rest, 946 steps, drives the wheel at no_load_rpm 6006 = 4000 mm/s */
+#define RC_MM_S_PER_CMD 4.227f
+#define RC_CMD_FRICTION 77.0f
+#define RC_FRICTION_RAMP_MM_S 20.0f
+/* the first-order model's T1 0.14 s (robots/kerise-v5.ini's source):
+ * 0.14 s / 4.227 mm/s per step = 0.0331 steps per mm/s^2 */
+#define RC_CMD_PER_MM_S2 0.0331f
+/* turning: the chassis' yaw inertia (17.5 g box 29 x 26 mm: 2.2e-6
+ * kg*m^2, wheels 1 g at 14.5 mm: 4.2e-7) over 2 x (14.5 mm)^2 = 6.2 g per
+ * wheel against 10.8 g going straight: 0.0331 x (6.2 + 0.8) / 10.8 */
+#define RC_CMD_PER_ARC_MM_S2 0.0215f
+#define RC_CMD_MAX 1023
+#define RC_CMD_FF_MAX 923.0f         /* as robot_config.h: 100 steps for the controller */
+
+/* ---- distance sensors (robots/kerise-v5.ini [tof.*]) ---- */
+#define RC_TOF_FRONT_Y_MM 12.0f
+#define RC_TOF_SIDE_X_MM 12.0f
+#define RC_TOF_SIDE_Y_MM 11.0f
+#define RC_TOF_FOV_DEG 25.0f
+#define RC_DIAG_EDGE_COS 0.8434f     /* cos(32.5 deg): robot_config.h */
+#define RC_DIAG_EDGE_SIN 0.5373f     /* sin(32.5 deg) */
+/* a side wall 45 - 3 - 12 = 30 mm out from the sensor: 30 / cos(32.5 deg) */
+#define RC_SIDE_WALL_MM 35.6f
+/* wall present: up to 16 mm further out than centred ((30 + 16) / cos) */
+#define RC_SIDE_THRESHOLD_MM 54.5f
+/* centring: within 10 mm of the centre line ((30 + 10) / cos) */
+#define RC_CENTRING_MAX_MM 47.4f
+#define RC_CENTRING_MIN_MM_S 60.0f
+/* the blind band about a cell centre, robot_config.h's halved */
+#define RC_SIDE_BLIND_FROM_MM 24.0f
+#define RC_SIDE_BLIND_TO_MM 2.0f
+#define RC_FRONT_AT_CENTRE_MM (RC_CELL_MM / 2 - RC_WALL_MM / 2 - RC_TOF_FRONT_Y_MM) /* 30 mm */
+
+/* ---- search and run speeds ---- */
+/* half robot_config.h's: the sensors' 30 ms period then covers the same
+ * share of a cell (9 mm of 90 at the search speed) */
+#define RC_SEARCH_MM_S 300.0f
+#define RC_RUN_MM_S 450.0f
+#define RC_ACCEL_MM_S2 2000.0f
+#define RC_RUN_ACCEL_MM_S2 2000.0f
+#define RC_TURN_DEG_S 450.0f
+#define RC_TURN_ACCEL_DEG_S2 2000.0f
+#define RC_PIVOT_MAX_MM 4.0f
+#define RC_PIVOT_AVG 0.3f
+/* smooth turns at 200 mm/s, 5 rad/s: a ~40 mm radius in a 90 mm cell */
+#define RC_SMOOTH_MM_S 200.0f
+#define RC_SMOOTH_DEG_S 286.5f       /* 5 rad/s */
+#define RC_SMOOTH_ACCEL_DEG_S2 4010.7f /* 70 rad/s^2, as robot_config.h */
+/* the sensing distances of robot_config.h, halved with the cell */
+#define RC_SENSE_BEFORE_MM 70.0f
+#define RC_SENSE_FROM_MM 75.0f
+#define RC_POST_MARGIN_MM 3.0f
+#define RC_FRONT_WALL_MARGIN_MM 25.0f
+#define RC_SENSE_LATEST_MM 30.0f
+#define RC_ALIGN_FROM_MM 45.0f
+#define RC_ALIGN_GAIN 0.35f
+#define RC_WALL_HEADING_READS 3
+#define RC_WALL_HEADING_PRIOR 1.0f
+#define RC_WALL_HEADING_NEAR_MM 3.0f
+#define RC_WALL_HEADING_MAX_RAD 0.09f
+
+/* ---- controller gains ---- */
+/* Plant: a command step accelerates by 1 / 0.0331 = 30 mm/s^2 and the
+ * back-EMF damps with 0.14 s, much less than the paper robot's 65 ms: a P
+ * of 20 (omega 24.6 rad/s) needs a D for a damping ratio of ~0.5:
+ * 2 x 0.5 x 24.6 = 24.6 1/s, 7.1 of it the back-EMF's, 17.5 / 30 = 0.6.
+ * One encoder count per 1 ms tick is 9.8 mm/s, 6 steps through the D. */
+#define RC_KP_FWD 20.0f
+#define RC_KP_ROT 20.0f
+#define RC_KD_FWD 0.6f
+#define RC_KD_ROT 0.4f
+#define RC_KP_LATERAL 0.01f
+#define RC_KI_LATERAL 0.01f
+#define RC_LATERAL_MAX_RAD 0.15f
+#define RC_KP_HEADING 10.0f
+
+#define RC_SETTLE_MM 1.0f
+#define RC_SETTLE_MM_S 20.0f
+
+/* ---- safety ---- */
+#define RC_STALL_MM 20.0f
+#define RC_STALL_MS 400u
+
+#endif
