@@ -70,9 +70,13 @@
 #define RC_SMOOTH_MM_S 200.0f
 #define RC_SMOOTH_DEG_S 286.5f       /* 5 rad/s */
 #define RC_SMOOTH_ACCEL_DEG_S2 4010.7f /* 70 rad/s^2, as robot_config.h */
-/* the sensing distances of robot_config.h, halved with the cell */
-#define RC_SENSE_BEFORE_MM 70.0f
-#define RC_SENSE_FROM_MM 75.0f
+/* sense the cell ahead with the diagonal sensors at its entry boundary,
+ * as robot_config.h does: 45 + 11 mm before its centre (70 read posts at
+ * the entry as side walls: 12 of the 37 half-size mazes mapped a wall
+ * that is not there); readings from 5 mm before that */
+#define RC_SENSE_BEFORE_MM 56.0f
+#define RC_SENSE_FROM_MM 61.0f
+/* the rest of robot_config.h's sensing distances, halved with the cell */
 #define RC_POST_MARGIN_MM 3.0f
 #define RC_FRONT_WALL_MARGIN_MM 25.0f
 #define RC_SENSE_LATEST_MM 30.0f
