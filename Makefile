@@ -181,6 +181,14 @@ $(B)/test/test_flood_ref16: $(FLOOD16_SRC) $(wildcard firmware/*.h) sim/maze/maz
 $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
+# the half-size build ($(B)/half/mmsim) sanitized, for test/cli_halfsize.sh
+HALF_SAN_OBJ := $(patsubst firmware/%.c,$(B)/san/half/firmware/%.o,$(FW_SRC))
+$(B)/san/half/firmware/%.o: firmware/%.c | deps $(LCM_STAMP)
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) -include robot_kerise.h -MMD -MP -c $< -o $@
+$(B)/san-tools/half/mmsim: tools/mmsim.c $(HALF_SAN_OBJ) $(B)/libmm_san.a
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(HALF_SAN_OBJ) $(B)/libmm_san.a $(LIBS) -o $@
 
 # XTEST input for test/cli_connect.sh (libxtst-dev)
 $(B)/test/xinput: test/xinput.c | deps
@@ -203,11 +211,11 @@ PERIPH_ELFS     := $(patsubst %,$(B)/arduino/nano/board/%.elf,$(PERIPH_SKETCHES)
 NPROC := $(shell nproc 2>/dev/null || echo 1)
 test: deps
 	@$(MAKE) -j$(NPROC) --no-print-directory test-run
-test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/,$(TOOLS)) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
+test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/,$(TOOLS)) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/san-tools/half/mmsim $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
 	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf $(B)/arduino/uno/OneCommand.elf $(B)/test/mrc_boot \
 	$(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf $(BOARD_SKETCHES) $(PERIPH_ELFS) \
 	client-mazerunner firmware-ukmarsbot
-	@LSAN_OPTIONS=suppressions=$(CURDIR)/test/lsan-simavr.supp MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
+	@LSAN_OPTIONS=suppressions=$(CURDIR)/test/lsan-simavr.supp MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim HALF_MMSIM=$(B)/san-tools/half/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
 # PlatformIO from PyPI in a venv, only to check that platformio.ini parses
 # (`pio run` cannot download its platforms here). No PyPI: the check skips.

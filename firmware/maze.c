@@ -25,9 +25,8 @@ int maze_init(maze_t *m, uint8_t width, uint8_t height)
     m->start = maze_cell(m, 0, 0);
     m->start_heading = MAZE_NORTH;
     /* Centre goal: cells (w-1)/2..w/2 on x, likewise on y. */
-    for (uint8_t y = (uint8_t)((height - 1) / 2); y <= height / 2; y++)
-        for (uint8_t x = (uint8_t)((width - 1) / 2); x <= width / 2; x++)
-            maze_set_goal(m, maze_cell(m, x, y), 1);
+    maze_set_goal_rect(m, (uint8_t)((width - 1) / 2), (uint8_t)((height - 1) / 2), (uint8_t)(width / 2),
+                       (uint8_t)(height / 2));
     return 0;
 }
 
