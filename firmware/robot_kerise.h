@@ -26,13 +26,17 @@
 #define RC_MM_S_PER_CMD 4.227f
 #define RC_CMD_FRICTION 77.0f
 #define RC_FRICTION_RAMP_MM_S 20.0f
-/* the first-order model's T1 0.14 s (robots/kerise-v5.ini's source):
- * 0.14 s / 4.227 mm/s per step = 0.0331 steps per mm/s^2 */
-#define RC_CMD_PER_MM_S2 0.0331f
-/* turning: the chassis' yaw inertia (17.5 g box 29 x 26 mm: 2.2e-6
- * kg*m^2, wheels 1 g at 14.5 mm: 4.2e-7) over 2 x (14.5 mm)^2 = 6.2 g per
- * wheel against 10.8 g going straight: 0.0331 x (6.2 + 0.8) / 10.8 */
-#define RC_CMD_PER_ARC_MM_S2 0.0215f
+/* command per mm/s^2 (robot_config.h's formula): each wheel pushes half
+ * the robot's 20 g plus its spin (the rotor 1e-9 kg*m^2 x 4.222^2 and the
+ * 1 g wheel as a disc, over r^2: 0.94 g), 10.94 g; the torque per amp at
+ * the wheel stall_torque / (stall_a - no_load_a) = 5.32 mN*m/A, R = 9.25
+ * ohm, a step 3.617 mV: 0.0334 (0.14 s / 4.227 mm/s per step = 0.0331,
+ * [KM]'s T1, agrees) */
+#define RC_CMD_PER_MM_S2 0.0334f
+/* turning: the yaw inertia (the 17.5 g box 29 x 26 mm 2.21e-6 kg*m^2, the
+ * skid 0.06e-6, the wheels 0.42e-6) over 2 x (14.5 mm)^2 = 6.40 g per
+ * wheel, plus its 0.94 g of spin */
+#define RC_CMD_PER_ARC_MM_S2 0.0224f
 #define RC_CMD_MAX 1023
 #define RC_CMD_FF_MAX 923.0f         /* as robot_config.h: 100 steps for the controller */
 
@@ -90,7 +94,7 @@
 #define RC_WALL_HEADING_MAX_RAD 0.09f
 
 /* ---- controller gains ---- */
-/* Plant: a command step accelerates by 1 / 0.0331 = 30 mm/s^2 and the
+/* Plant: a command step accelerates by 1 / 0.0334 = 30 mm/s^2 and the
  * back-EMF damps with 0.14 s, much less than the paper robot's 65 ms: a P
  * of 20 (omega 24.6 rad/s) needs a D for a damping ratio of ~0.5:
  * 2 x 0.5 x 24.6 = 24.6 1/s, 7.1 of it the back-EMF's, 17.5 / 30 = 0.6.

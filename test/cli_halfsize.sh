@@ -4,7 +4,8 @@
 # 90 mm cells (mazes/halfsize-world.ini): on three half-size mazes of
 # ../shared/mazes/halfsize, each with its own goal rectangle (the maze
 # file's G marks, announced through hal_maze), it reaches the goal with no
-# contact. And the default build's 16x16 contest is as it was: on
+# contact; its robot numbers agree with the robot and maze files
+# (test/robot_config_check.py). And the default build's 16x16 contest is as it was: on
 # mazes/gen-16x16-s1.txt the centre goal in 13.486 s, best run 7.294 s.
 set -u
 B=${BUILD:-build}
@@ -17,6 +18,11 @@ D=$SHARED/mazes/halfsize
 [ -d "$D" ] || { echo "SKIP cli_halfsize: $D absent (the maze database: make mazes)"; exit 77; }
 mk() { env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory B="$B" "$@"; }
 [ -n "${HALF_MMSIM:-}" ] || want_rc 0 "make $HALF" mk "$HALF"
+
+# the firmware's numbers (robot_kerise.h) against the robot and maze files
+python3 test/robot_config_check.py "$MMSIM" firmware/robot_kerise.h robots/kerise-v5.ini mazes/halfsize-world.ini >"$T/rc" 2>&1 \
+  && ok "robot_kerise.h agrees with robots/kerise-v5.ini and mazes/halfsize-world.ini" \
+  || bad "robot_kerise.h disagrees: $(grep -v '^ok' "$T/rc")"
 
 # goals: japan2017hes (4,4)-(5,5), taiwan2014hef 21x21 (5,7)-(6,8), uk2021-haz-half (6,1)-(7,2)
 for m in japan2017hes taiwan2014hef uk2021-haz-half; do
