@@ -48,7 +48,7 @@ TESTS    := $(patsubst test/%.c,$(B)/test/%,$(TEST_SRC)) $(B)/test/test_flood_re
 # Link-time mocks: a test that wraps HAL calls names them here.
 WRAP_test_explore := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros
 WRAP_test_firmware := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros -Wl,--wrap=hal_motor_set \
-	-Wl,--wrap=hal_encoder -Wl,--wrap=hal_distance
+	-Wl,--wrap=hal_encoder -Wl,--wrap=hal_distance -Wl,--wrap=hal_maze
 # Extra sources a test links (shared test vectors).
 EXTRA_test_wire := test/wire_vectors.c
 # The MCU's decoder buffers (see ARD_RAM): a build for an MCU takes no LOG.
