@@ -48,7 +48,7 @@ TESTS    := $(patsubst test/%.c,$(B)/test/%,$(TEST_SRC)) $(B)/test/test_flood_re
 # Link-time mocks: a test that wraps HAL calls names them here.
 WRAP_test_explore := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros
 WRAP_test_firmware := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros -Wl,--wrap=hal_motor_set \
-	-Wl,--wrap=hal_encoder -Wl,--wrap=hal_distance
+	-Wl,--wrap=hal_encoder -Wl,--wrap=hal_distance -Wl,--wrap=hal_maze
 # Extra sources a test links (shared test vectors).
 EXTRA_test_wire := test/wire_vectors.c
 # The MCU's decoder buffers (see ARD_RAM): a build for an MCU takes no LOG.
@@ -135,6 +135,16 @@ $(B)/%: tools/%.c $(B)/libmm.a
 	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(B)/libmm.a $(LIBS) -o $@
 tools: $(addprefix $(B)/,$(TOOLS))
 
+# The half-size build: mmsim whose in-process firmware is built for KERISE
+# v5 in 90 mm cells (firmware/robot_kerise.h, robots/kerise-v5.ini); its own
+# firmware objects come before libmm.a, so the library's are not linked.
+HALF_FW_OBJ := $(patsubst firmware/%.c,$(B)/half/firmware/%.o,$(FW_SRC))
+$(B)/half/firmware/%.o: firmware/%.c | deps $(LCM_STAMP)
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) -include robot_kerise.h -MMD -MP -c $< -o $@
+$(B)/half/mmsim: tools/mmsim.c $(HALF_FW_OBJ) $(B)/libmm.a
+	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(HALF_FW_OBJ) $(B)/libmm.a $(LIBS) -o $@
+
 # The source tree's absolute path, where a program built here finds boards/,
 # robots/ and contests/ from any working directory (sim/io/datadir.h).
 $(B)/host/sim/io/datadir.o $(B)/san/sim/io/datadir.o: INC += -DMMSIM_DATADIR='"$(CURDIR)"'
@@ -172,6 +182,14 @@ $(B)/test/test_flood_ref16: $(FLOOD16_SRC) $(wildcard firmware/*.h) sim/maze/maz
 $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
+# the half-size build ($(B)/half/mmsim) sanitized, for test/cli_halfsize.sh
+HALF_SAN_OBJ := $(patsubst firmware/%.c,$(B)/san/half/firmware/%.o,$(FW_SRC))
+$(B)/san/half/firmware/%.o: firmware/%.c | deps $(LCM_STAMP)
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) -include robot_kerise.h -MMD -MP -c $< -o $@
+$(B)/san-tools/half/mmsim: tools/mmsim.c $(HALF_SAN_OBJ) $(B)/libmm_san.a
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(HALF_SAN_OBJ) $(B)/libmm_san.a $(LIBS) -o $@
 
 # XTEST input for test/cli_connect.sh (libxtst-dev)
 $(B)/test/xinput: test/xinput.c | deps
@@ -194,11 +212,11 @@ PERIPH_ELFS     := $(patsubst %,$(B)/arduino/nano/board/%.elf,$(PERIPH_SKETCHES)
 NPROC := $(shell nproc 2>/dev/null || echo 1)
 test: deps
 	@$(MAKE) -j$(NPROC) --no-print-directory test-run
-test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/,$(TOOLS)) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
+test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/,$(TOOLS)) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/san-tools/half/mmsim $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
 	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf $(B)/arduino/uno/OneCommand.elf $(B)/test/mrc_boot \
 	$(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf $(BOARD_SKETCHES) $(PERIPH_ELFS) \
 	client-mazerunner firmware-ukmarsbot
-	@LSAN_OPTIONS=suppressions=$(CURDIR)/test/lsan-simavr.supp MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
+	@LSAN_OPTIONS=suppressions=$(CURDIR)/test/lsan-simavr.supp MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim HALF_MMSIM=$(B)/san-tools/half/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
 # PlatformIO from PyPI in a venv, only to check that platformio.ini parses
 # (`pio run` cannot download its platforms here). No PyPI: the check skips.

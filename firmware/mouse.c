@@ -79,12 +79,24 @@ static void log_line(const char *fmt, unsigned a, unsigned b) /* fmt: HAL_STR(".
     hal_log(line);
 }
 
+/* The contest's maze as the backend announces it (hal_maze), else a
+ * classic contest: 16x16, the centre goal; built in place in ex.map (a
+ * maze_t on the stack would cost 292 B of the AVR's 2 KB): explore_init
+ * on its own map keeps only the size, so the goal and start follow it. */
+static void contest_maze(void)
+{
+    hal_maze_t a;
+    uint8_t ok = hal_maze(&a) && a.start_x < a.width && a.start_y < a.height && maze_init(&ex.map, a.width, a.height) == 0;
+    if (!ok) maze_init(&ex.map, 16, 16);
+    explore_init(&ex, &ex.map);
+    if (!ok || maze_set_goal_rect(&ex.map, a.goal_x0, a.goal_y0, a.goal_x1, a.goal_y1) != 0) return;
+    ex.cell = ex.map.start = maze_cell(&ex.map, a.start_x, a.start_y);
+    ex.heading = ex.map.start_heading = a.start_heading & 3u;
+}
+
 void fw_setup(void)
 {
-    if (!configured) { /* a classic contest by default, the map built in place (not 292 B of stack) */
-        maze_init(&ex.map, 16, 16);
-        explore_init(&ex, &ex.map);
-    }
+    if (!configured) contest_maze();
     configured = 0; /* the next fw_setup without fw_set_maze is a classic contest */
     motion_init(&mo);
     walls_setup();

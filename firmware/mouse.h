@@ -27,8 +27,10 @@ typedef struct {
     uint8_t heading;  /* the way it faces, MAZE_NORTH.. */
 } mouse_status_t;
 
-/* Before fw_setup: the maze's size, start and goal (walls are ignored).
- * Without it the mouse expects a classic 16x16 with the centre goal. */
+/* Before fw_setup: the maze's size, start and goal set (walls are
+ * ignored), for the next fw_setup only. Without it the mouse takes the
+ * maze the backend announces (hal_maze), else a classic 16x16 with the
+ * centre goal. */
 void fw_set_maze(const struct maze_s *m);
 /* How many speed runs to make after the search (1..255; default
  * MOUSE_SPEED_RUNS); kept across fw_setup. */

@@ -29,6 +29,7 @@ void __wrap_hal_motor_set(int16_t left, int16_t right);
 int32_t __wrap_hal_encoder(uint8_t side);
 hal_distance_t __wrap_hal_distance(uint8_t sensor);
 void __wrap_hal_log(const char *line);
+uint8_t __wrap_hal_maze(hal_maze_t *m);
 
 uint32_t __wrap_hal_micros(void) { return now_us; }
 void __wrap_hal_motor_set(int16_t left, int16_t right)
@@ -41,6 +42,15 @@ hal_distance_t __wrap_hal_distance(uint8_t sensor) { return tof[sensor % 3]; }
 void __wrap_hal_log(const char *line)
 {
     if (log_checked) check_expected(line);
+}
+
+/* the maze the contest announces (hal_maze), announced = 0: none */
+static hal_maze_t announced;
+static uint8_t announced_ok;
+uint8_t __wrap_hal_maze(hal_maze_t *m)
+{
+    if (announced_ok) *m = announced;
+    return announced_ok;
 }
 
 static void near(double got, double want, double tol)
@@ -362,6 +372,39 @@ static void test_mouse_cmd_diagonal(void **state)
     assert_int_equal(maze_wall(mouse_map(), c12, MAZE_EAST), MAZE_WALL_OPEN);
 }
 
+/* fw_setup takes the maze the contest announces: size, start, the goal
+ * rectangle and nothing else; without one, or one the build cannot hold,
+ * a classic 16x16 with the centre goal. */
+static void test_mouse_announced_maze(void **state)
+{
+    (void)state;
+    const maze_t *map = mouse_map();
+    announced = (hal_maze_t){ 32, 32, 0, 0, MAZE_NORTH, 24, 5, 26, 7 };
+    announced_ok = 1;
+    fw_setup();
+    assert_int_equal(map->width, 32);
+    assert_int_equal(map->height, 32);
+    assert_int_equal(map->start, maze_cell(map, 0, 0));
+    assert_int_equal(mouse_status()->cell, maze_cell(map, 0, 0));
+    for (uint8_t y = 0; y < 32; y++)
+        for (uint8_t x = 0; x < 32; x++)
+            assert_int_equal(maze_is_goal(map, maze_cell(map, x, y)), x >= 24 && x <= 26 && y >= 5 && y <= 7);
+    announced = (hal_maze_t){ 21, 21, 0, 0, MAZE_NORTH, 1, 0, 2, 1 }; /* taiwan2017hef's goal */
+    fw_setup();
+    assert_int_equal(map->width, 21);
+    assert_true(maze_is_goal(map, maze_cell(map, 1, 0)) && maze_is_goal(map, maze_cell(map, 2, 1)));
+    assert_false(maze_is_goal(map, maze_cell(map, 10, 10)));
+    announced.width = MAZE_MAX_SIZE + 1; /* more than the build holds */
+    fw_setup();
+    assert_int_equal(map->width, 16);
+    assert_true(maze_is_goal(map, maze_cell(map, 7, 7)) && maze_is_goal(map, maze_cell(map, 8, 8)));
+    announced_ok = 0;
+    fw_setup();
+    assert_int_equal(map->width, 16);
+    assert_int_equal(map->height, 16);
+    assert_true(maze_is_goal(map, maze_cell(map, 7, 8)) && !maze_is_goal(map, maze_cell(map, 6, 7)));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -375,6 +418,7 @@ int main(void)
         cmocka_unit_test(test_mouse_no_goal),
         cmocka_unit_test(test_mouse_sets_off),
         cmocka_unit_test(test_mouse_cmd_diagonal),
+        cmocka_unit_test(test_mouse_announced_maze),
     };
     return cmocka_run_group_tests_name("firmware", tests, NULL, NULL);
 }
