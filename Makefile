@@ -48,7 +48,7 @@ TESTS    := $(patsubst test/%.c,$(B)/test/%,$(TEST_SRC)) $(B)/test/test_flood_re
 # Link-time mocks: a test that wraps HAL calls names them here.
 WRAP_test_explore := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros
 WRAP_test_firmware := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros -Wl,--wrap=hal_motor_set \
-	-Wl,--wrap=hal_encoder -Wl,--wrap=hal_distance
+	-Wl,--wrap=hal_encoder -Wl,--wrap=hal_distance -Wl,--wrap=hal_maze
 # Extra sources a test links (shared test vectors).
 EXTRA_test_wire := test/wire_vectors.c
 # The MCU's decoder buffers (see ARD_RAM): a build for an MCU takes no LOG.
@@ -135,18 +135,29 @@ $(B)/%: tools/%.c $(B)/libmm.a
 	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(B)/libmm.a $(LIBS) -o $@
 tools: $(addprefix $(B)/,$(TOOLS))
 
-# The source tree's absolute path, where a program built here finds boards/ and
-# robots/ from any working directory (sim/io/datadir.h).
+# The half-size build: mmsim whose in-process firmware is built for KERISE
+# v5 in 90 mm cells (firmware/robot_kerise.h, robots/kerise-v5.ini); its own
+# firmware objects come before libmm.a, so the library's are not linked.
+HALF_FW_OBJ := $(patsubst firmware/%.c,$(B)/half/firmware/%.o,$(FW_SRC))
+$(B)/half/firmware/%.o: firmware/%.c | deps $(LCM_STAMP)
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) -include robot_kerise.h -MMD -MP -c $< -o $@
+$(B)/half/mmsim: tools/mmsim.c $(HALF_FW_OBJ) $(B)/libmm.a
+	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(HALF_FW_OBJ) $(B)/libmm.a $(LIBS) -o $@
+
+# The source tree's absolute path, where a program built here finds boards/,
+# robots/ and contests/ from any working directory (sim/io/datadir.h).
 $(B)/host/sim/io/datadir.o $(B)/san/sim/io/datadir.o: INC += -DMMSIM_DATADIR='"$(CURDIR)"'
 
-# `make install PREFIX=DIR`: the tools in DIR/bin, the board and robot files in
+# `make install PREFIX=DIR`: the tools in DIR/bin, the board, robot and contest files in
 # DIR/share/mmsim, where DIR/bin/mmsim finds them from any working directory.
 PREFIX ?= /usr/local
 install: $(addprefix $(B)/,$(TOOLS))
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/mmsim/boards $(DESTDIR)$(PREFIX)/share/mmsim/robots
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/mmsim/boards $(DESTDIR)$(PREFIX)/share/mmsim/robots $(DESTDIR)$(PREFIX)/share/mmsim/contests
 	install -m 755 $^ $(DESTDIR)$(PREFIX)/bin
 	install -m 644 boards/*.ini $(DESTDIR)$(PREFIX)/share/mmsim/boards
 	install -m 644 robots/*.ini $(DESTDIR)$(PREFIX)/share/mmsim/robots
+	install -m 644 contests/*.ini $(DESTDIR)$(PREFIX)/share/mmsim/contests
 .PHONY: install
 
 # ---- tests (sanitized) ----
@@ -171,6 +182,14 @@ $(B)/test/test_flood_ref16: $(FLOOD16_SRC) $(wildcard firmware/*.h) sim/maze/maz
 $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
+# the half-size build ($(B)/half/mmsim) sanitized, for test/cli_halfsize.sh
+HALF_SAN_OBJ := $(patsubst firmware/%.c,$(B)/san/half/firmware/%.o,$(FW_SRC))
+$(B)/san/half/firmware/%.o: firmware/%.c | deps $(LCM_STAMP)
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) -include robot_kerise.h -MMD -MP -c $< -o $@
+$(B)/san-tools/half/mmsim: tools/mmsim.c $(HALF_SAN_OBJ) $(B)/libmm_san.a
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(HALF_SAN_OBJ) $(B)/libmm_san.a $(LIBS) -o $@
 
 # XTEST input for test/cli_connect.sh (libxtst-dev)
 $(B)/test/xinput: test/xinput.c | deps
@@ -193,11 +212,11 @@ PERIPH_ELFS     := $(patsubst %,$(B)/arduino/nano/board/%.elf,$(PERIPH_SKETCHES)
 NPROC := $(shell nproc 2>/dev/null || echo 1)
 test: deps
 	@$(MAKE) -j$(NPROC) --no-print-directory test-run
-test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/,$(TOOLS)) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
+test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/,$(TOOLS)) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/san-tools/half/mmsim $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
 	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf $(B)/arduino/uno/OneCommand.elf $(B)/test/mrc_boot \
 	$(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf $(BOARD_SKETCHES) $(PERIPH_ELFS) \
 	client-mazerunner firmware-ukmarsbot
-	@LSAN_OPTIONS=suppressions=$(CURDIR)/test/lsan-simavr.supp MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
+	@LSAN_OPTIONS=suppressions=$(CURDIR)/test/lsan-simavr.supp MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim HALF_MMSIM=$(B)/san-tools/half/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
 # PlatformIO from PyPI in a venv, only to check that platformio.ini parses
 # (`pio run` cannot download its platforms here). No PyPI: the check skips.
@@ -232,19 +251,29 @@ $(UKB_OUT)/mouse.elf: $(UKB_SRC) $(wildcard hal/ukmarsbot/*.h firmware/*.h) hal/
 	$(AVR_CC) $(UKB_FLAGS) -Wl,--gc-sections $(UKB_SRC) -o $@
 $(UKB_OUT)/mouse.hex: $(UKB_OUT)/mouse.elf
 	avr-objcopy -O ihex -R .eeprom $< $@
-firmware-ukmarsbot: $(UKB_OUT)/mouse.elf $(UKB_OUT)/mouse.hex
-	@avr-size $< | awk -v max=$(UKB_FLASH_MAX) 'NR == 2 { f = $$1 + $$2; r = $$2 + $$3; \
-	  printf "ukmarsbot: flash %d B of %d, static RAM %d B of 2048 (%d B left for the stack)\n", f, max, r, 2048 - r; \
-	  if (f > max) { print "ukmarsbot: flash over the limit"; exit 1 } }'
+UKB_BOARD     := ukmarsbot$(if $(filter basic,$(UKB_SENSOR_BOARD)),-basic)
+UKB_ROBOT     := robots/ukmarsbot$(if $(filter basic,$(UKB_SENSOR_BOARD)),-basic-12).ini
 # The stack's headroom measured at the deepest point of a contest: the image
-# on the emulated board (mmsim) searches mazes/gen-16x16-s1.txt, returns and
-# makes its three speed runs; `k` then reports the painted RAM never written.
-ukmarsbot-stack: $(UKB_OUT)/mouse.elf $(B)/mmsim
-	@$(B)/mmsim --board ukmarsbot --avr $< --robot robots/ukmarsbot.ini --maze mazes/gen-16x16-s1.txt \
-	  --input "0.3 send=g; 240 send=k; 241 end" --json | python3 -c 'import json, sys; \
-	c = json.loads(sys.stdin.read().splitlines()[-1])["console"].replace("\r", ""); \
-	k = [l for l in c.splitlines() if l.startswith("stack unused")][-1]; \
-	print("ukmarsbot: stack never used after a contest:", k.split(",")[0].split()[-2], "B")'
+# on its emulated board (mmsim, the board and robot files of the build)
+# searches mazes/gen-16x16-s1.txt, returns and makes its three speed runs;
+# the firmware's `k` command then reports the painted RAM never written
+# (hal/ukmarsbot: the stack paint). Measured once per image (about a
+# minute), kept beside it.
+$(UKB_OUT)/stack.txt: $(UKB_OUT)/mouse.elf $(B)/mmsim $(UKB_ROBOT) boards/$(UKB_BOARD)-v1.3.ini
+	@$(B)/mmsim --board $(UKB_BOARD) --avr $< --robot $(UKB_ROBOT) --maze mazes/gen-16x16-s1.txt \
+	  --input "0.3 send=g; 240 send=k; 241 end" --json > $@.json; rc=$$?; [ $$rc -le 1 ] || { rm -f $@.json; exit 3; }
+	@python3 -c 'import json, sys; \
+	c = json.loads(open(sys.argv[1]).read().splitlines()[-1])["console"].replace("\r", ""); \
+	k = [l for l in c.splitlines() if l.startswith("stack unused")]; \
+	k or sys.exit("ukmarsbot: no stack report in the console (the k command)"); \
+	print(k[-1].split(",")[0].split()[-2])' $@.json > $@.tmp && mv $@.tmp $@; rc=$$?; rm -f $@.json $@.tmp; exit $$rc
+firmware-ukmarsbot: $(UKB_OUT)/mouse.elf $(UKB_OUT)/mouse.hex $(UKB_OUT)/stack.txt
+	@avr-size $< | awk -v max=$(UKB_FLASH_MAX) -v stack="$$(cat $(UKB_OUT)/stack.txt)" 'NR == 2 { f = $$1 + $$2; r = $$2 + $$3; \
+	  printf "ukmarsbot: flash %d B of %d, static RAM %d B of 2048 (%d B left for the stack)\n", f, max, r, 2048 - r; \
+	  printf "ukmarsbot: stack headroom %d B: RAM never written during a contest on mazes/gen-16x16-s1.txt (measured on the emulated board)\n", stack; \
+	  if (f > max) { print "ukmarsbot: flash over the limit"; exit 1 } }'
+ukmarsbot-stack: $(UKB_OUT)/stack.txt
+	@echo "ukmarsbot: stack never used after a contest: $$(cat $<) B"
 # the source list, one a line (test/cli_ukmarsbot_fw.sh compares platformio.ini's)
 ukmarsbot-src:
 	@printf '%s\n' $(UKB_SRC)
@@ -492,11 +521,11 @@ $(B)/bench_flood: bench/bench_flood.c $(B)/libmm.a
 	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(B)/libmm.a $(LIBS) -o $@
 
 # ---- fuzzing (clang libFuzzer + ASan; bounded; not in CI) ----
-# make fuzz [FUZZ="mazefile wire lcmlog config robot"] [FUZZ_SECONDS=60]: each target
+# make fuzz [FUZZ="mazefile wire lcmlog config robot contest"] [FUZZ_SECONDS=60]: each target
 # in turn for FUZZ_SECONDS; corpora in $(B)/fuzz/corpus_NAME, findings
 # (crash-*, leak-*) in $(B)/fuzz.
 FUZZ_SECONDS ?= 60
-FUZZ ?= mazefile wire lcmlog config robot
+FUZZ ?= mazefile wire lcmlog config robot contest
 FUZZ_CC := clang -g -O1 -fsanitize=fuzzer,address,undefined -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
 FUZZ_SRC_mazefile := sim/maze/mazefile.c sim/io/infile.c firmware/maze.c
 FUZZ_SRC_wire     := hal/wire/wire.c
@@ -506,6 +535,9 @@ FUZZ_SRC_lcmlog   := sim/telemetry/lcmlog.c sim/io/infile.c $(LCM_C)
 FUZZ_SRC_robot    := sim/world/config.c sim/world/robot.c sim/world/keytab.c sim/world/inifile.c sim/io/infile.c \
 	$(wildcard sim/world/sensors/*.c) sim/world/world.c sim/world/wallgrid.c sim/world/rng.c firmware/maze.c $(B)/gen/robot_paper.c
 FUZZ_SRC_config   := $(FUZZ_SRC_robot)
+FUZZ_SRC_contest  := sim/contest/contest.c sim/contest/score.c sim/world/keytab.c sim/world/inifile.c sim/io/infile.c sim/io/datadir.c firmware/maze.c
+FUZZ_LIBS_contest := -linih -ljansson $(shell pkg-config --libs glib-2.0 2>/dev/null) -lm
+FUZZ_LEN_contest  := 4096
 FUZZ_LIBS_lcmlog  := -llcm
 FUZZ_LIBS_config  := -linih $(shell pkg-config --libs glib-2.0 ode 2>/dev/null) -lm
 FUZZ_LIBS_robot   := $(FUZZ_LIBS_config)
@@ -519,9 +551,10 @@ $(B)/fuzz/fuzz_%: test/fuzz_%.c $(LCM_STAMP) | deps
 	$(FUZZ_CC) $(INC) $< $(FUZZ_SRC_$*) $(FUZZ_LIBS_$*) -o $@
 $(B)/fuzz/fuzz_config $(B)/fuzz/fuzz_robot: $(B)/gen/robot_paper.c
 # seeds: our mazes, a short logged contest, --print-config and a small
-# config, our robot files and --print-robot
+# config, our robot files and --print-robot, our contest files
 $(B)/fuzz/seeds: $(B)/mmsim
-	@mkdir -p $(B)/fuzz/corpus_mazefile $(B)/fuzz/corpus_wire $(B)/fuzz/corpus_lcmlog $(B)/fuzz/corpus_config $(B)/fuzz/corpus_robot
+	@mkdir -p $(B)/fuzz/corpus_mazefile $(B)/fuzz/corpus_wire $(B)/fuzz/corpus_lcmlog $(B)/fuzz/corpus_config $(B)/fuzz/corpus_robot $(B)/fuzz/corpus_contest
+	cp -n contests/*.ini $(B)/fuzz/corpus_contest/ 2>/dev/null || true
 	cp -n mazes/*.txt $(B)/fuzz/corpus_mazefile/ 2>/dev/null || true
 	$(B)/mmsim --maze mazes/gen-5x5-s1.txt --driver firmware --time-limit 1 --lcm-rate 10 \
 	  --lcm-log $(B)/fuzz/corpus_lcmlog/seed.lcmlog >/dev/null || [ $$? = 1 ]
@@ -533,7 +566,7 @@ $(B)/fuzz/seeds: $(B)/mmsim
 fuzz: $(addprefix $(B)/fuzz/fuzz_,$(FUZZ)) $(B)/fuzz/seeds
 	cd $(B)/fuzz && for t in $(FUZZ); do \
 	  ./fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -max_len=$$(case $$t in mazefile) echo $(FUZZ_LEN_mazefile);; \
-	    wire) echo $(FUZZ_LEN_wire);; lcmlog) echo $(FUZZ_LEN_lcmlog);; config) echo $(FUZZ_LEN_config);; robot) echo $(FUZZ_LEN_robot);; esac) \
+	    wire) echo $(FUZZ_LEN_wire);; lcmlog) echo $(FUZZ_LEN_lcmlog);; config) echo $(FUZZ_LEN_config);; robot) echo $(FUZZ_LEN_robot);; contest) echo $(FUZZ_LEN_contest);; esac) \
 	    -malloc_limit_mb=512 corpus_$$t || exit 1; done
 
 mazes:

@@ -25,9 +25,8 @@ int maze_init(maze_t *m, uint8_t width, uint8_t height)
     m->start = maze_cell(m, 0, 0);
     m->start_heading = MAZE_NORTH;
     /* Centre goal: cells (w-1)/2..w/2 on x, likewise on y. */
-    for (uint8_t y = (uint8_t)((height - 1) / 2); y <= height / 2; y++)
-        for (uint8_t x = (uint8_t)((width - 1) / 2); x <= width / 2; x++)
-            maze_set_goal(m, maze_cell(m, x, y), 1);
+    maze_set_goal_rect(m, (uint8_t)((width - 1) / 2), (uint8_t)((height - 1) / 2), (uint8_t)(width / 2),
+                       (uint8_t)(height / 2));
     return 0;
 }
 
@@ -90,6 +89,15 @@ void maze_set_goal(maze_t *m, maze_cell_t c, int on)
 void maze_clear_goals(maze_t *m)
 {
     memset(m->goal, 0, sizeof m->goal);
+}
+
+int maze_set_goal_rect(maze_t *m, uint8_t x0, uint8_t y0, uint8_t x1, uint8_t y1)
+{
+    if (x0 > x1 || y0 > y1 || x1 >= m->width || y1 >= m->height) return -1;
+    maze_clear_goals(m);
+    for (uint8_t y = y0; y <= y1; y++)
+        for (uint8_t x = x0; x <= x1; x++) maze_set_goal(m, maze_cell(m, x, y), 1);
+    return 0;
 }
 
 void maze_close_unknown(maze_t *m)

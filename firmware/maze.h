@@ -84,6 +84,10 @@ int maze_passable(const maze_t *m, maze_cell_t c, uint8_t d, int unknown_open);
 int maze_is_goal(const maze_t *m, maze_cell_t c);
 void maze_set_goal(maze_t *m, maze_cell_t c, int on);
 void maze_clear_goals(maze_t *m);
+/* The goal = the rectangle of cells x0..x1, y0..y1 (inclusive), nothing
+ * else. Returns 0, or -1 (the goal unchanged) if it is empty or leaves
+ * the maze. */
+int maze_set_goal_rect(maze_t *m, uint8_t x0, uint8_t y0, uint8_t x1, uint8_t y1);
 
 /* Mark every wall known (unknown ones become closed): a true maze. */
 void maze_close_unknown(maze_t *m);

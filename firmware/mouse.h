@@ -27,8 +27,10 @@ typedef struct {
     uint8_t heading;  /* the way it faces, MAZE_NORTH.. */
 } mouse_status_t;
 
-/* Before fw_setup: the maze's size, start and goal (walls are ignored).
- * Without it the mouse expects a classic 16x16 with the centre goal. */
+/* Before fw_setup: the maze's size, start and goal set (walls are
+ * ignored), for the next fw_setup only. Without it the mouse takes the
+ * maze the backend announces (hal_maze), else a classic 16x16 with the
+ * centre goal. */
 void fw_set_maze(const struct maze_s *m);
 /* How many speed runs to make after the search (1..255; default
  * MOUSE_SPEED_RUNS); kept across fw_setup. */
@@ -69,6 +71,21 @@ uint16_t mouse_cmd_moved(void);
 uint8_t mouse_cmd_edge(void);
 /* In-place quarter turn: +1 right, -1 left; -1 if refused. */
 int mouse_cmd_turn(int8_t q);
+/* In-place eighth turn (mms 1.2's turnRight45/turnLeft45): +1 right, -1
+ * left; -1 if refused. At a centre or on a boundary. Facing a diagonal,
+ * mouse_cmd_forward drives half-diagonal steps (half a cell's diagonal
+ * each) from the middle of one cell boundary to the middle of the next;
+ * it refuses (-1, nothing moves) at a cell centre (the diagonal aims at a
+ * post) and where the map shows a wall at the middle of a boundary it
+ * would cross (unknown counts as open). Diagonals are driven on odometry
+ * alone and sense nothing: the cells they cross keep the walls the map
+ * had; a straight from the boundary a diagonal reached senses the cell it
+ * enters as it starts. */
+int mouse_cmd_turn45(int8_t e);
+/* The heading in eighths of a turn clockwise from north (0 north, 1
+ * north-east, ... 7 north-west); mouse_status()->heading is its quarter
+ * part (a diagonal: the cardinal heading 45 degrees anticlockwise of it). */
+uint8_t mouse_cmd_heading8(void);
 /* The robot was put back at the start (mms ackReset): pose and odometry
  * restart, the map is kept, the start cell is sensed again (busy). */
 void mouse_cmd_reset(void);

@@ -43,6 +43,13 @@
  *   rate holds it; 0 on a robot without a gyro (hal_gyro_present 0).
  * - hal_battery_mv: the battery's terminal voltage in millivolts as the
  *   robot's divider and ADC would report it; 0 if the robot has none.
+ * The contest:
+ * - hal_maze: the maze the contest announces before the start, as a real
+ *   contest tells the mouse the goal: its size, the start cell and heading
+ *   and the goal rectangle (half-size contests set the goal anywhere).
+ *   Returns 1 with *m filled, or 0 if the backend does not know it: the
+ *   firmware then assumes a classic contest (16x16, start (0,0) north,
+ *   the centre 2x2 goal). Read once, in fw_setup.
  */
 #ifndef HAL_H
 #define HAL_H
@@ -124,6 +131,17 @@ uint8_t hal_ir_seq(void);
 uint8_t hal_gyro_present(void);
 int32_t hal_gyro_mdps(void);
 uint16_t hal_battery_mv(void);
+
+/* The contest's maze (hal_maze): cells, x east and y north from the
+ * south-west cell (0,0); headings 0 north, 1 east, 2 south, 3 west. */
+typedef struct {
+    uint8_t width, height;         /* cells, 1..the firmware's MAZE_MAX_SIZE */
+    uint8_t start_x, start_y;      /* the start cell */
+    uint8_t start_heading;         /* 0 north .. 3 west */
+    uint8_t goal_x0, goal_y0;      /* the goal rectangle's south-west cell */
+    uint8_t goal_x1, goal_y1;      /* and its north-east cell (inclusive) */
+} hal_maze_t;
+uint8_t hal_maze(hal_maze_t *m);
 
 /* The firmware's entry points, called by the backend. */
 void fw_setup(void);

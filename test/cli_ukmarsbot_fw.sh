@@ -4,7 +4,8 @@
 # HAL (hal/ukmarsbot), the image a user flashes, run on the emulated board
 # (mmsim --board ukmarsbot --avr build/ukmarsbot/mouse.elf):
 #  - `make firmware-ukmarsbot` builds it and prints flash (<= 30720 B) and
-#    static RAM; platformio.ini's [env:ukmarsbot] lists the same source
+#    static RAM and the stack headroom measured on the emulated board
+#    (>= 400 B, for the basic build too); platformio.ini's [env:ukmarsbot] lists the same source
 #    files and flags (and `pio project config` reads it, where pio is
 #    installed);
 #  - it boots: the banner on the console, the battery as the simulated one
@@ -29,6 +30,8 @@ mk() { env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory B="$B" 
 want_rc 0 "make firmware-ukmarsbot" mk firmware-ukmarsbot
 grep -E "^ukmarsbot: flash [0-9]+ B of 30720, static RAM [0-9]+ B of 2048" "$T/out" >"$T/size" \
   && ok "$(cat "$T/size")" || bad "no size line: $(tail -3 "$T/out")"
+stack_ok() { awk '/^ukmarsbot: stack headroom [0-9]+ B: RAM never written during a contest/ { if ($4 >= 400) { print; ok = 1 } } END { exit !ok }' "$T/out"; }
+stack_ok >"$T/stack" && ok "$(cat "$T/stack")" || bad "no stack headroom line of >= 400 B: $(tail -3 "$T/out")"
 [ -f $B/ukmarsbot/mouse.elf ] && [ -f $B/ukmarsbot/mouse.hex ] && ok "mouse.elf and mouse.hex" || bad "images missing"
 
 # PlatformIO builds the same files with the same flags
@@ -130,6 +133,7 @@ done
 
 # the BASIC sensor board's build on its board file
 want_rc 0 "make firmware-ukmarsbot UKB_SENSOR_BOARD=basic" mk firmware-ukmarsbot UKB_SENSOR_BOARD=basic
+stack_ok >"$T/stack" && ok "basic: $(cat "$T/stack")" || bad "basic: no stack headroom line of >= 400 B: $(tail -3 "$T/out")"
 want_rc 1 "basic build boots" "$MMSIM" --maze "$T/east.txt" --board ukmarsbot-basic --avr $B/ukmarsbot-basic/mouse.elf \
   --robot robots/ukmarsbot-basic-12.ini --input "0.3 send=i; 0.5 end" --json
 cp "$T/out" "$T/basic.json"

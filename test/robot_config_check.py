@@ -5,8 +5,9 @@
 cell and wall through --print-config), so that neither can change without
 the other.
 
-  robot_config_check.py MMSIM [HEADER [ROBOT_INI]]
-      (defaults: firmware/robot_config.h, robots/paper.ini)
+  robot_config_check.py MMSIM [HEADER [ROBOT_INI [CONFIG]]]
+      (defaults: firmware/robot_config.h, robots/paper.ini, mmsim's own
+      config; CONFIG: the --config file with the maze's cell and wall)
 
 Prints one line per constant, "ok: ..." or "FAILED: ..."; exits 0 if all
 agree, 1 if one does not, 2 if a file or a figure is missing.
@@ -70,14 +71,14 @@ def printed(cmd):
 
 def main():
     if len(sys.argv) < 2:
-        print("usage: robot_config_check.py MMSIM [HEADER [ROBOT_INI]]")
+        print("usage: robot_config_check.py MMSIM [HEADER [ROBOT_INI [CONFIG]]]")
         return 2
     mmsim = sys.argv[1]
     header = sys.argv[2] if len(sys.argv) > 2 else "firmware/robot_config.h"
     ini = sys.argv[3] if len(sys.argv) > 3 else "robots/paper.ini"
     rc = defines(header)
     rob = printed([mmsim, "--print-robot", "--robot", ini])
-    cfg = printed([mmsim, "--print-config"])
+    cfg = printed([mmsim, "--print-config", "--robot", ini] + (["--config", sys.argv[4]] if len(sys.argv) > 4 else []))
     fails = []
 
     def get(d, key, where):

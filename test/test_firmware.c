@@ -29,6 +29,7 @@ void __wrap_hal_motor_set(int16_t left, int16_t right);
 int32_t __wrap_hal_encoder(uint8_t side);
 hal_distance_t __wrap_hal_distance(uint8_t sensor);
 void __wrap_hal_log(const char *line);
+uint8_t __wrap_hal_maze(hal_maze_t *m);
 
 uint32_t __wrap_hal_micros(void) { return now_us; }
 void __wrap_hal_motor_set(int16_t left, int16_t right)
@@ -41,6 +42,15 @@ hal_distance_t __wrap_hal_distance(uint8_t sensor) { return tof[sensor % 3]; }
 void __wrap_hal_log(const char *line)
 {
     if (log_checked) check_expected(line);
+}
+
+/* the maze the contest announces (hal_maze), announced = 0: none */
+static hal_maze_t announced;
+static uint8_t announced_ok;
+uint8_t __wrap_hal_maze(hal_maze_t *m)
+{
+    if (announced_ok) *m = announced;
+    return announced_ok;
 }
 
 static void near(double got, double want, double tol)
@@ -223,7 +233,8 @@ static void test_wall_angle(void **state)
     assert_true(motion_wall_angle(41.0f, 40.0f) > 0.006f && motion_wall_angle(41.0f, 40.0f) < 0.0075f);
 }
 
-/* The start cell boxed in: the mouse reports it and stops. */
+/* The start cell boxed in: the mouse reports it, says the contest is over
+ * (once) and stops. */
 static void test_mouse_no_goal(void **state)
 {
     (void)state;
@@ -235,6 +246,7 @@ static void test_mouse_no_goal(void **state)
     fw_set_maze(&m);
     log_checked = 1;
     expect_string(__wrap_hal_log, line, "explore: goal unreachable");
+    expect_string(__wrap_hal_log, line, "contest done: no path to the goal");
     fw_setup();
     for (int i = 0; i < 10; i++) {
         fw_tick();
@@ -271,6 +283,128 @@ static void test_mouse_sets_off(void **state)
     assert_int_equal(mouse_status()->heading, MAZE_NORTH);
 }
 
+/* The wheels as ideal motors without inertia or friction: each turns at
+ * RC_MM_S_PER_CMD mm/s per unit of its command (the firmware's friction
+ * feed-forward then only adds gain); the ToF sensors see nothing and
+ * deliver a reading every 30 ms. */
+static float wheel_mm[2];
+static void run_ms(int ms)
+{
+    for (int i = 0; i < ms; i++) {
+        fw_tick();
+        fw_loop();
+        now_us += 1000;
+        for (int w = 0; w < 2; w++) {
+            wheel_mm[w] += motor[w] * RC_MM_S_PER_CMD * 0.001f;
+            enc[w] = (int32_t)lroundf(wheel_mm[w] / RC_MM_PER_COUNT);
+        }
+        if (now_us % 30000u == 0)
+            for (int k = 0; k < 3; k++) tof[k] = (hal_distance_t){ .mm = 1200, .timeout = 1, .seq = (uint8_t)(tof[k].seq + 1) };
+    }
+}
+
+static void cmd_done(void)
+{
+    for (int i = 0; i < 100 && mouse_cmd_status() == MOUSE_CMD_BUSY; i++) run_ms(100);
+    assert_int_equal(mouse_cmd_status(), MOUSE_CMD_DONE);
+}
+
+/* Command mode (mms 1.2's diagonals): 45-degree turns give eight
+ * headings; a diagonal from a cell centre aims at a post and one across
+ * the maze's boundary wall is refused, nothing moving; a diagonal of two
+ * half steps from the boundary north of (0,0), facing north-east, ends on
+ * the boundary north of (1,1), facing into (1,2); a half step north from
+ * there senses (1,2). */
+static void test_mouse_cmd_diagonal(void **state)
+{
+    (void)state;
+    maze_t m;
+    maze_init(&m, 4, 4);
+    enc[0] = enc[1] = 0;
+    wheel_mm[0] = wheel_mm[1] = 0;
+    now_us = 0;
+    fw_set_maze(&m);
+    fw_setup();
+    mouse_cmd_mode();
+    cmd_done(); /* the start cell sensed */
+    assert_int_equal(mouse_cmd_turn45(1), 0);
+    assert_int_equal(mouse_cmd_turn45(1), -1); /* busy */
+    cmd_done();
+    assert_int_equal(mouse_cmd_heading8(), 1);
+    assert_int_equal(mouse_status()->heading, MAZE_NORTH);
+    assert_int_equal(mouse_cmd_forward(1), -1); /* from a centre: a post */
+    assert_int_equal(mouse_cmd_turn45(-1), 0);
+    cmd_done();
+    assert_int_equal(mouse_cmd_heading8(), 0);
+    assert_int_equal(mouse_cmd_forward(1), 0); /* onto the boundary north of (0,0) */
+    cmd_done();
+    assert_int_equal(mouse_status()->cell, maze_cell(&m, 0, 1));
+    assert_int_equal(mouse_cmd_edge(), 1 + MAZE_SOUTH);
+    assert_int_equal(mouse_cmd_turn45(-1), 0);
+    cmd_done();
+    assert_int_equal(mouse_cmd_heading8(), 7);
+    assert_int_equal(mouse_cmd_forward(1), -1); /* north-west: across the west wall of (0,1) */
+    assert_int_equal(mouse_cmd_turn(1), 0); /* a quarter turn keeps the diagonal */
+    cmd_done();
+    assert_int_equal(mouse_cmd_heading8(), 1);
+    assert_int_equal(mouse_status()->heading, MAZE_NORTH);
+    assert_int_equal(mouse_cmd_forward(2), 0);
+    cmd_done();
+    assert_int_equal(mouse_cmd_moved(), 2);
+    assert_int_equal(mouse_status()->cell, maze_cell(&m, 1, 2));
+    assert_int_equal(mouse_cmd_edge(), 1 + MAZE_SOUTH);
+    assert_int_equal(mouse_cmd_heading8(), 1);
+    assert_false(mouse_status()->mode == MOUSE_CRASHED);
+    /* driven: the half step, then 2 x 127.3 mm along the diagonal (the turns cancel) */
+    near(0.5 * (wheel_mm[0] + wheel_mm[1]), 90.0 + 2 * 127.279, 3.0);
+    /* the diagonal sensed nothing; a straight from its end senses the cell
+     * it enters first (here: no walls seen, so open) */
+    maze_cell_t c12 = maze_cell(&m, 1, 2);
+    assert_int_equal(maze_wall(mouse_map(), c12, MAZE_WEST), MAZE_WALL_UNKNOWN);
+    assert_int_equal(mouse_cmd_turn45(-1), 0);
+    cmd_done();
+    assert_int_equal(mouse_cmd_forward(1), 0);
+    cmd_done();
+    assert_int_equal(mouse_status()->cell, c12);
+    assert_int_equal(mouse_cmd_edge(), 0);
+    assert_int_equal(maze_wall(mouse_map(), c12, MAZE_WEST), MAZE_WALL_OPEN);
+    assert_int_equal(maze_wall(mouse_map(), c12, MAZE_NORTH), MAZE_WALL_OPEN);
+    assert_int_equal(maze_wall(mouse_map(), c12, MAZE_EAST), MAZE_WALL_OPEN);
+}
+
+/* fw_setup takes the maze the contest announces: size, start, the goal
+ * rectangle and nothing else; without one, or one the build cannot hold,
+ * a classic 16x16 with the centre goal. */
+static void test_mouse_announced_maze(void **state)
+{
+    (void)state;
+    const maze_t *map = mouse_map();
+    announced = (hal_maze_t){ 32, 32, 0, 0, MAZE_NORTH, 24, 5, 26, 7 };
+    announced_ok = 1;
+    fw_setup();
+    assert_int_equal(map->width, 32);
+    assert_int_equal(map->height, 32);
+    assert_int_equal(map->start, maze_cell(map, 0, 0));
+    assert_int_equal(mouse_status()->cell, maze_cell(map, 0, 0));
+    for (uint8_t y = 0; y < 32; y++)
+        for (uint8_t x = 0; x < 32; x++)
+            assert_int_equal(maze_is_goal(map, maze_cell(map, x, y)), x >= 24 && x <= 26 && y >= 5 && y <= 7);
+    announced = (hal_maze_t){ 21, 21, 0, 0, MAZE_NORTH, 1, 0, 2, 1 }; /* taiwan2017hef's goal */
+    fw_setup();
+    assert_int_equal(map->width, 21);
+    assert_true(maze_is_goal(map, maze_cell(map, 1, 0)) && maze_is_goal(map, maze_cell(map, 2, 1)));
+    assert_false(maze_is_goal(map, maze_cell(map, 10, 10)));
+    announced.width = MAZE_MAX_SIZE + 1; /* more than the build holds */
+    fw_setup();
+    assert_int_equal(map->width, 16);
+    assert_true(maze_is_goal(map, maze_cell(map, 7, 7)) && maze_is_goal(map, maze_cell(map, 8, 8)));
+    announced_ok = 0;
+    fw_setup();
+    assert_int_equal(map->width, 16);
+    assert_int_equal(map->height, 16);
+    assert_true(maze_is_goal(map, maze_cell(map, 7, 8)) && !maze_is_goal(map, maze_cell(map, 6, 7)));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -283,6 +417,8 @@ int main(void)
         cmocka_unit_test(test_wall_angle),
         cmocka_unit_test(test_mouse_no_goal),
         cmocka_unit_test(test_mouse_sets_off),
+        cmocka_unit_test(test_mouse_cmd_diagonal),
+        cmocka_unit_test(test_mouse_announced_maze),
     };
     return cmocka_run_group_tests_name("firmware", tests, NULL, NULL);
 }

@@ -100,7 +100,7 @@ static void test_queries(void **state)
     assert_string_equal(run("wasReset"), "false");
     assert_string_equal(run("moveForward 0"), "crash");
     assert_string_equal(run("moveForwardHalf 3"), "crash");
-    assert_string_equal(run("turnLeft45"), "crash");
+    assert_string_equal(run("turnLeft45"), "crash"); /* not in command mode */
     assert_string_equal(run("moveForward 4"), "crash"); /* through the wall north of (0,1): refused */
     assert_string_equal(run("ackReset"), "ack");
     assert_int_equal(mm.resets, 1);

@@ -18,6 +18,7 @@
 #include "cli.h"
 #include "board/board.h"
 #include "contest/batch.h"
+#include "contest/contest.h"
 #include "contest/run.h"
 #include "io/datadir.h"
 #include "io/outfile.h"
@@ -29,8 +30,8 @@
 
 typedef struct {
     run_opts_t run;
-    const char *maze, *batch, *bench_log;
-    int help, validate;
+    const char *maze, *batch, *bench_log, *contest;
+    int help, validate, print_contest;
 } mmsim_opts_t;
 
 #define RUN(field) offsetof(mmsim_opts_t, run.field)
@@ -63,6 +64,7 @@ static void usage(FILE *out)
           "             button, button=down|up, reset, occlude=SENSOR (a robot-file [ir.*]/[tof.*] name, or left|right),\n"
           "             push=DX_MM[,DYAW_DEG[,SECONDS]], lift, place, send=TEXT, end; several --input add up;\n"
           "             --eeprom FILE: the MCU's EEPROM, a raw image, loaded at power-on and saved at the end;\n"
+          "             --end-on TEXT: the run ends when the console prints TEXT (exit_reason console_end);\n"
           "             --console pty: the board's UART on a pseudo-terminal (its path printed), in real time;\n"
           "             --watch NAME[,NAME...]: the firmware's global variables, by the ELF's symbols and DWARF,\n"
           "             each step on LCM channel MM_WATCH and in --report beside the true pose)\n"
@@ -70,6 +72,9 @@ static void usage(FILE *out)
           "             (an mms algorithm drives the robot through the mms text API, docs/MMS.md)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
           "       mmsim --print-config [--config FILE]   mmsim --print-robot [--robot FILE]   (robot files: docs/ROBOTS.md)\n"
+          "       --contest NAME|FILE: a contest's rules, contests/NAME.ini (classic-japan, classic-uk, halfsize-japan, apec):\n"
+          "             maze geometry, start, goal, time limit, runs, scoring; the score in the JSON's \"contest\";\n"
+          "             mmsim --print-contest --contest NAME|FILE prints the profile (contests/README.md)\n"
           "       mmsim --validate [--config FILE] [--robot FILE] [--json]   (fitted figures and graded predictions, each with its source; 0 iff every prediction passes)\n"
           "       mmsim --bench-log fwd:V|rot:V|ir:NAME:D_MM:DEG [--robot FILE]   (a step or IR log as CSV, for tools/mmfit)\n"
           "Exit codes: 0 ok, 1 goal not reached, 2 bad input, 3 external failure.\n",
@@ -255,6 +260,8 @@ static const cli_opt_t flags[] = {
     { .name = "goal", .kind = CLI_FN, .fn = f_goal, .has_arg = 1 },
     { .name = "console", .kind = CLI_FN, .fn = f_console, .has_arg = 1 },
     { .name = "print-robot", .kind = CLI_SET, .off = RUN(print_robot) },
+    { .name = "contest", .kind = CLI_STR, .off = offsetof(mmsim_opts_t, contest) },
+    { .name = "print-contest", .kind = CLI_SET, .off = offsetof(mmsim_opts_t, print_contest) },
     { .name = "seed", .kind = CLI_FN, .fn = f_seed, .has_arg = 1 },
     { .name = "time-limit", .kind = CLI_NUM, .off = RUN(time_limit_s), .lo = 1, .hi = 86400 },
     { .name = "json", .kind = CLI_SET, .off = RUN(json) },
@@ -286,6 +293,7 @@ static const cli_opt_t flags[] = {
     { .name = "mcu", .kind = CLI_STR, .off = RUN(avr_mcu) },
     { .name = "board", .kind = CLI_STR, .off = RUN(board) },
     { .name = "eeprom", .kind = CLI_STR, .off = RUN(eeprom_path) },
+    { .name = "end-on", .kind = CLI_STR, .off = RUN(end_on) },
     { .name = "watch", .kind = CLI_FN, .fn = f_watch, .has_arg = 1 },
     { .name = "f-cpu", .kind = CLI_FN, .fn = f_f_cpu, .has_arg = 1 },
     { .name = "gdb", .kind = CLI_FN, .fn = f_gdb, .has_arg = 1 },
@@ -304,8 +312,10 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     int mms_flags = cli_seen(flags, seen, "mms-ideal-walls") + cli_seen(flags, seen, "mms-timeout-ms") +
                     cli_seen(flags, seen, "mms-reset-at");
     if (o->board && !o->avr_elf) return bad("%s", "--board NAME needs --avr FIRMWARE.elf|.hex");
-    if (o->board && (o->link.device || o->link.pty || link_flags || o->avr_mcu || o->avr_f_cpu || m->batch || o->mms.command))
-        return bad("%s", "--board: the image runs on the board file's MCU: not with --serial/--pty, --protocol, --silence-ms, --mcu, --f-cpu, --mms or --batch");
+    if (o->board && (o->link.device || o->link.pty || link_flags || o->avr_mcu || o->avr_f_cpu || o->mms.command))
+        return bad("%s", "--board: the image runs on the board file's MCU: not with --serial/--pty, --protocol, --silence-ms, --mcu, --f-cpu or --mms");
+    if (o->board && m->batch && (o->eeprom_path || o->console_pty || o->gdb_port))
+        return bad("%s", "--board with --batch: each maze's board on its own; not with --eeprom, --console pty or --gdb");
     o->serial = o->link.device || o->link.pty || (o->avr_elf && !o->board);
     if (!!o->link.device + o->link.pty + !!o->avr_elf > 1) return bad("%s", "--serial/--port, --pty and --avr exclude each other");
     if (!o->serial && link_flags) return bad("%s", "--protocol and --silence-ms need --serial DEV, --pty or --avr ELF");
@@ -322,10 +332,13 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (m->batch && m->maze) return bad("%s", "--maze and --batch: one at a time (a batch runs every maze in DIR)");
     if (o->console_pty && !o->board) return bad("%s", "--console pty needs --board NAME");
     if (o->eeprom_path && !o->board) return bad("%s", "--eeprom FILE needs --board NAME");
+    if (o->end_on && !o->board) return bad("%s", "--end-on TEXT needs --board NAME");
+    if (o->end_on && (!*o->end_on || strlen(o->end_on) > RUN_END_ON_MAX))
+        return bad("%s", "--end-on TEXT: 1 to 64 characters (RUN_END_ON_MAX)");
     if (o->watch && !o->avr_elf) return bad("%s", "--watch NAME needs --avr IMAGE.elf (with or without --board NAME): the image's variables");
     if (o->console_pty) o->realtime = 1; /* a person at a serial monitor: in real time */
     if (o->view.baud <= 0) o->view.baud = (long)link_default_baud(o->link.protocol); /* the viewer's Connect */
-    if (o->print_config || o->print_robot || m->validate || m->bench_log) return 0;
+    if (o->print_config || o->print_robot || m->print_contest || m->validate || m->bench_log) return 0;
     if (m->batch && (o->telem.url || o->telem.log_path)) return bad("%s", "--lcm and --lcm-log work on one maze, not with --batch");
     if (m->batch && (o->report || o->gui || o->shot)) return bad("%s", "--report, --gui and --screenshot need --maze (one run), not --batch");
     if (o->gui && o->shot) return bad("%s", "--gui and --screenshot: one at a time");
@@ -424,6 +437,25 @@ static int find_robot(run_opts_t *o)
     return 0;
 }
 
+/* --contest NAME|FILE: the contest file found and read once; without
+ * --runs, its number of runs (the firmware's search is the first of them).
+ * 0, or CLI_BAD_INPUT after one line. */
+static int load_contest(mmsim_opts_t *m, const int *seen)
+{
+    static contest_t contest;
+    char path[DATADIR_PATH_MAX + 64], err[600];
+    if (!m->contest) return m->print_contest ? bad("%s", "--print-contest needs --contest NAME|FILE") : 0;
+    if (contest_find(m->contest, path, sizeof path, err, sizeof err) != 0) return bad("%s", err);
+    if (contest_load(&contest, path, err, sizeof err) != 0) {
+        fprintf(stderr, "%s\n", err); /* FILE:LINE:COL: as the file's other errors */
+        return CLI_BAD_INPUT;
+    }
+    m->run.contest = &contest;
+    if (!cli_seen(flags, seen, "runs") && contest.rules.runs > 0)
+        m->run.runs = m->run.scripted || contest.rules.runs == 1 ? contest.rules.runs : contest.rules.runs - 1;
+    return 0;
+}
+
 /* --config -: standard input read once, at most CONFIG_MAX_BYTES, into
  * o->config_text (kept to the end). 0, or RUN_BAD_INPUT after one line. */
 static int read_config_stdin(run_opts_t *o, const char *maze)
@@ -455,7 +487,12 @@ static int run(int argc, char **argv)
         return RUN_OK;
     }
     if (first != argc) return bad("unexpected argument '%s'", argv[first]);
-    if (check_combinations(&m, seen) || find_robot(&m.run) || read_config_stdin(&m.run, m.maze)) return RUN_BAD_INPUT;
+    if (check_combinations(&m, seen) || load_contest(&m, seen) || find_robot(&m.run) || read_config_stdin(&m.run, m.maze))
+        return RUN_BAD_INPUT;
+    if (m.print_contest) {
+        contest_print(m.run.contest, stdout);
+        return RUN_OK;
+    }
     if (m.validate) return validate(&m.run);
     if (m.bench_log) {
         simcfg_t cfg;

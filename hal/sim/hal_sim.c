@@ -11,6 +11,8 @@ static sim_state_t *sim;
 static FILE *log_out;
 static int32_t encoder_zero[2];
 static sim_belief_t belief;
+static hal_maze_t announced;   /* hal_maze's answer */
+static uint8_t announced_ok;   /* whether there is one */
 
 void hal_sim_attach(struct sim_state_s *s)
 {
@@ -19,6 +21,30 @@ void hal_sim_attach(struct sim_state_s *s)
     belief.seq = 0;
 }
 void hal_sim_set_log(FILE *out) { log_out = out; }
+
+void hal_sim_set_maze(const struct maze_s *m)
+{
+    announced_ok = 0;
+    if (!m) return;
+    hal_maze_t a = { m->width, m->height, maze_x(m, m->start), maze_y(m, m->start), m->start_heading,
+                     m->width, m->height, 0, 0 };
+    for (uint16_t c = 0; c < maze_cells(m); c++) {
+        if (!maze_is_goal(m, (maze_cell_t)c)) continue;
+        uint8_t x = maze_x(m, (maze_cell_t)c), y = maze_y(m, (maze_cell_t)c);
+        if (x < a.goal_x0) a.goal_x0 = x;
+        if (y < a.goal_y0) a.goal_y0 = y;
+        if (x > a.goal_x1) a.goal_x1 = x;
+        if (y > a.goal_y1) a.goal_y1 = y;
+    }
+    announced = a;
+    announced_ok = a.goal_x0 <= a.goal_x1; /* a maze without a goal announces nothing */
+}
+
+uint8_t hal_maze(hal_maze_t *m)
+{
+    if (announced_ok) *m = announced;
+    return announced_ok;
+}
 
 uint32_t hal_micros(void)
 {

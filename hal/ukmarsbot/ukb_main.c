@@ -255,6 +255,13 @@ static void command(char c)
     }
 }
 
+/* the board has no way to be told the maze: a classic contest */
+uint8_t hal_maze(hal_maze_t *m)
+{
+    (void)m;
+    return 0;
+}
+
 int main(void)
 {
     stack_paint();

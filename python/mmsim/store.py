@@ -65,9 +65,24 @@ class Writer:
         self.rows = []
 
 
+# Columns that hold text when they hold anything: the inputs given as paths,
+# names and hashes, and a failed run's error. Every other column mmsim's JSON
+# may leave null (best_run_s, first_run_s, a lap's figures) is a number.
+TEXT_COLUMNS = {"run_key", "maze", "maze_sha256", "driver", "robot", "robot_sha256", "config",
+                "config_sha256", "extra_args", "run_error"}
+
+
 def to_frame(rows):
     """Rows (flat dicts) as a DataFrame; lists and dicts left in a value are
-    stored as their JSON text, so every column has one Parquet type."""
+    stored as their JSON text, so every column has one Parquet type. A column
+    with no value in these rows gets its type all the same (text or a float),
+    not Parquet's null type: a reader that takes the dataset's schema from
+    its first part file (pandas.read_parquet on the folder, DuckDB) would
+    otherwise refuse the later parts' numbers."""
     flat = [{k: (json.dumps(v, sort_keys=True) if isinstance(v, (list, dict)) else v)
              for k, v in r.items()} for r in rows]
-    return pd.DataFrame(flat)
+    df = pd.DataFrame(flat)
+    for col in df.columns:
+        if df[col].isna().all():
+            df[col] = df[col].astype("string" if col in TEXT_COLUMNS else "float64")
+    return df

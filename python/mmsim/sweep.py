@@ -71,6 +71,15 @@ def connect(scheduler=None, workers=2):
     if here not in paths:
         os.environ["PYTHONPATH"] = os.pathsep.join([here] + paths)
     import logging
+    import dask
+    # A run is a child process the worker waits for: Dask's statistical
+    # profiler (a stack sample every 10 ms in each worker), work stealing
+    # (equal tasks, nothing to balance) and the 20 ms event-loop health
+    # tick only cost CPU the runs need (measured on 481 scripted runs:
+    # the workers' own CPU 9.8 -> 2.8 s, the client's 8.6 -> 4.7 s).
+    dask.config.set({"distributed.worker.profile.enabled": False,
+                     "distributed.scheduler.work-stealing": False,
+                     "distributed.admin.tick.interval": "1s"})
     cluster = LocalCluster(n_workers=int(workers), threads_per_worker=1, processes=True,
                            dashboard_address=None, silence_logs=logging.ERROR)
     return Client(cluster), cluster

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "contest/contest.h"
 #include "hal.h"
 #include "maze/mazefile.h"
 
@@ -35,6 +36,7 @@ int run_load_config(const run_opts_t *o, simcfg_t *c)
         fprintf(stderr, "%s\n", err);
         return -1;
     }
+    if (o->contest) contest_apply_config(o->contest, c); /* the contest's maze and time limit */
     if (robot_fits(c, err, sizeof err) != 0) {
         fprintf(stderr, "%s: %s\n", o->config_path ? o->config_path : o->robot_path ? o->robot_path : "robots/paper.ini", err);
         return -1;
@@ -193,6 +195,7 @@ static int resolve_occlusions(run_t *r)
 static int setup(run_t *r)
 {
     char err[MAZEFILE_ERR_LEN];
+    mazefile_info_t info;
     if (run_load_config(r->o, &r->cfg) != 0) return RUN_BAD_INPUT;
     /* The in-process firmware (the firmware and mms drivers) ticks at
      * HAL_TICK_HZ and at most once a step: a longer [sim] step_s is cut to
@@ -200,7 +203,8 @@ static int setup(run_t *r)
      * clocks) take the config's step. */
     const run_driver_t *d = pick_driver(r->o);
     if ((d == &run_firmware || d == &run_mms) && r->cfg.sim.step_s > 1.0 / HAL_TICK_HZ) r->cfg.sim.step_s = 1.0 / HAL_TICK_HZ;
-    if (mazefile_load(&r->maze, r->maze_path, NULL, err, sizeof err) != 0) {
+    if (mazefile_load(&r->maze, r->maze_path, &info, err, sizeof err) != 0 ||
+        (r->o->contest && contest_apply_maze(r->o->contest, &r->maze, &info, r->maze_path, err, sizeof err) != 0)) {
         fprintf(stderr, "%s\n", err);
         return RUN_BAD_INPUT;
     }
@@ -366,6 +370,17 @@ static int close_outputs(run_t *r)
     return rc;
 }
 
+/* --contest: the contest's name, rule, runs and score (contest.h); the
+ * touches are the hands' lifts done (--input lift). */
+static json_t *run_contest_json(const run_t *r)
+{
+    double lifts[INPUT_MAX];
+    int n = 0;
+    for (int i = 0; i < r->input.next && i < r->input.n; i++)
+        if (r->input.a[i].kind == INPUT_LIFT) lifts[n++] = r->input.a[i].t_s;
+    return contest_json(r->o->contest, &r->sim.race, lifts, n);
+}
+
 /* The result object up to "config_hash" (keys in this order). */
 static json_t *results_json(const run_t *r, double wall)
 {
@@ -390,6 +405,7 @@ static json_t *results_json(const run_t *r, double wall)
                                                    round(y * 1e6) / 1e6, "heading_rad", round(h * 1e6) / 1e6));
     json_object_set_new(j, "exit_reason", json_string(r->reason));
     json_object_set_new(j, "config_hash", json_string(r->hash));
+    if (r->o->contest) json_object_set_new(j, "contest", run_contest_json(r));
     if (r->o->robot_path) {
         /* by kind: front and side contacts are errors; a rear touch below 0.1 m/s is not */
         const world_t *w = r->sim.world;
@@ -427,6 +443,16 @@ static void print_summary(const run_t *r, double wall)
     race_print_table(&r->sim.race, stdout);
     printf("sim time %.3f s, wall time %.3f s (%.0fx real time), collisions %u, exit: %s\n", t, wall,
            wall > 0 ? t / wall : 0.0, world_collisions(r->sim.world), r->reason);
+    if (r->o->contest) {
+        json_t *c = run_contest_json(r);
+        json_t *score = json_object_get(c, "score_s"), *lap = json_object_get(c, "score_lap");
+        if (json_is_real(score))
+            printf("contest %s (%s): score %.3f s (lap %d)\n", r->o->contest->name, json_string_value(json_object_get(c, "scoring")),
+                   json_real_value(score), (int)json_integer_value(lap));
+        else
+            printf("contest %s (%s): no score (no run counts)\n", r->o->contest->name, json_string_value(json_object_get(c, "scoring")));
+        json_decref(c);
+    }
 }
 
 int run_one(const run_opts_t *o, const char *maze_path, json_t **out, int print_text)

@@ -24,6 +24,7 @@
 enum { RUN_OK = 0, RUN_NOT_REACHED = 1, RUN_BAD_INPUT = 2, RUN_EXTERNAL = 3 };
 
 #define RUN_STALL_S 5.0 /* no progress for this long while driving = crash stop, s */
+#define RUN_END_ON_MAX 64 /* characters of --end-on's text */
 #define RUN_OVERTIME_S 60.0 /* a run under way at the time limit may finish this much later (flagged over time), s */
 
 typedef struct {
@@ -53,13 +54,15 @@ typedef struct {
     const char *board;             /* --board NAME|FILE: the image (--avr) on an emulated board (sim/board) */
     const struct board_spec_s *board_spec; /* the board file, read once by the caller (NULL: run_board reads it) */
     int console_pty;               /* --console pty: the board's UART0 on a pseudo-terminal (a person's serial monitor) */
+    const char *end_on;            /* --end-on TEXT: a board run ends once its console prints TEXT (NULL: never) */
     const char *eeprom_path;       /* --eeprom FILE: the board's EEPROM loaded at power-on, saved at the end (NULL: blank, not kept) */
     unsigned gdb_port;             /* --gdb PORT: simavr's gdb stub on 127.0.0.1:PORT, the firmware halted until gdb continues (0: none) */
     const char *watch;             /* --watch NAME[,NAME...]: the firmware's globals on MM_WATCH and in the report (NULL: none) */
+    const struct contest_s *contest; /* --contest NAME|FILE: the contest's rules, read once by the caller (NULL: none) */
 } run_opts_t;
 
-/* The defaults, then --config's file, --robot's file, then the flags that
- * override keys.
+/* The defaults, then --config's file, --robot's file, --contest's maze
+ * geometry and time limit, then the flags that override keys.
  * 0, or -1 after one error line. */
 int run_load_config(const run_opts_t *o, simcfg_t *c);
 /* One contest; *out gets the result object (NULL if none); with print_text

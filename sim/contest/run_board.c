@@ -20,6 +20,7 @@ typedef struct {
     board_t *board;
     int console_fd;      /* --console pty: the pty's master, -1 none */
     size_t console_sent; /* console bytes written to it so far */
+    size_t end_seen;     /* --end-on: console bytes already searched for its text */
     int eeprom_written;  /* the firmware wrote its EEPROM (--eeprom) */
     int eeprom_changed;  /* ... and its contents differ from power-on */
     int eeprom_failed;   /* --eeprom's file could not be saved */
@@ -150,6 +151,18 @@ static int board_open_run(run_t *r, void **self)
     return rc;
 }
 
+/* --end-on TEXT: has the console printed TEXT since the last look? Only the
+ * new bytes are searched (and the TEXT's length less one before them, for a
+ * TEXT split across two looks). */
+static int console_said(board_run_t *b, const char *text)
+{
+    size_t len, k = strlen(text);
+    const char *con = board_console(b->board, &len);
+    size_t from = b->end_seen >= k ? b->end_seen - (k - 1) : 0;
+    b->end_seen = len;
+    return len >= k && strstr(con + from, text) != NULL; /* the console is NUL-terminated at len */
+}
+
 /* after the step: the console every 10 ms, then the AVR's cycles of the step */
 static const char *board_after(run_t *r, void *self)
 {
@@ -163,6 +176,7 @@ static const char *board_after(run_t *r, void *self)
         return strstr(err, "auto-trigger") ? "board_unsupported" : "avr_stopped";
     }
     run_watch_step(r, &b->watch, board_host(b->board)->avr); /* --watch: after the AVR's cycles */
+    if (o->end_on && r->sim.step % 10 == 0 && console_said(b, o->end_on)) return "console_end";
     return NULL;
 }
 

@@ -39,7 +39,7 @@ static void fw_start(run_t *r, fw_t *f)
 {
     hal_sim_attach(&r->sim);
     hal_sim_set_log(r->o->verbose ? stderr : NULL);
-    fw_set_maze(&r->maze);
+    hal_sim_set_maze(&r->maze); /* announced to the firmware through hal_maze */
     fw_set_speed_runs((uint8_t)r->o->runs);
     fw_setup();
     /* a build with -DHAL_TICK_HZ=250 ticks every 4th step, as on the AVR */

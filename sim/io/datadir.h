@@ -1,4 +1,4 @@
-/* datadir.h - where the data files (boards/, robots/) are found, from any
+/* datadir.h - where the data files (boards/, robots/, contests/) are found, from any
  * working directory: the working directory first (a user's own files and
  * paths as given), then an installed tree beside the program
  * (PREFIX/share/mmsim for PREFIX/bin/mmsim, `make install`), then the

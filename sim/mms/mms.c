@@ -265,7 +265,7 @@ static int wall_query(const mms_t *m, int rel, int away)
 {
     int x, y;
     semi_pos(m, &x, &y);
-    return semi_wall_ahead(m, x, y, (2 * mouse_status()->heading + rel) & 7, (long)away - 1);
+    return semi_wall_ahead(m, x, y, (mouse_cmd_heading8() + rel) & 7, (long)away - 1);
 }
 
 static void place_at_start(const mms_t *m, struct sim_state_s *s)
@@ -299,16 +299,18 @@ static int split(char *line, char **tok, int n)
     return k;
 }
 
-/* A forward move of `halves` half cells (moveForward N: 2N; mms's
- * moveForward(numHalfSteps)): refused with crash, nothing moving, if N < 1
- * or a wall (the robot's map or, ideal, the maze file) is on the way as
- * mms's wallFront N would see it. */
+/* A forward move of `halves` half steps (moveForward N: 2N; mms's
+ * moveForward(numHalfSteps)), along the heading or, facing a diagonal,
+ * from boundary middle to boundary middle (mms 1.2's diagonal half steps):
+ * refused with crash, nothing moving, if N < 1 or a wall (the robot's map
+ * or, ideal, the maze file) is on the way as mms's wallFront N would see
+ * it (a diagonal from a cell centre aims at a post). */
 static int start_forward(mms_t *m, long halves, char *resp, size_t len)
 {
     int x, y;
     semi_pos(m, &x, &y);
     if (halves > 510) halves = 510; /* 255 cells: more than any maze */
-    if (halves < 1 || semi_wall_ahead(m, x, y, 2 * mouse_status()->heading, halves - 1) ||
+    if (halves < 1 || semi_wall_ahead(m, x, y, mouse_cmd_heading8(), halves - 1) ||
         mouse_cmd_forward((uint16_t)halves) != 0) {
         snprintf(resp, len, "crash");
         return 0;
@@ -425,23 +427,19 @@ static int cmd_forward(const cmd_call_t *c)
     return start_forward(c->m, halves, c->resp, c->len);
 }
 
-/* turnRight / turnLeft (param 1 / -1: a quarter turn clockwise / not) */
+/* turnRight / turnLeft (param 1 / -1: a quarter turn clockwise / not);
+ * turnRight45 / turnLeft45 (param 2 / -2: an eighth). mms counts every
+ * turn, an eighth too, as one turn in its stats. */
 static int cmd_turn(const cmd_call_t *c)
 {
-    if (mouse_cmd_turn((int8_t)c->param) != 0) {
+    int q = c->param;
+    if ((q == 1 || q == -1 ? mouse_cmd_turn((int8_t)q) : mouse_cmd_turn45((int8_t)(q / 2))) != 0) {
         snprintf(c->resp, c->len, "crash");
         return 0;
     }
     mms_stats_turn(&c->m->stats);
     c->m->pending = MOVE_TURN;
     return 1;
-}
-
-/* turnRight45 / turnLeft45: no diagonal moves in the motion layer */
-static int cmd_crash(const cmd_call_t *c)
-{
-    snprintf(c->resp, c->len, "crash");
-    return 0;
 }
 
 static int cmd_was_reset(const cmd_call_t *c)
@@ -507,8 +505,8 @@ static const struct {
     { "turnRight90", cmd_turn, 1, 1 },
     { "turnLeft", cmd_turn, -1, 1 },
     { "turnLeft90", cmd_turn, -1, 1 },
-    { "turnRight45", cmd_crash, 0, 1 },
-    { "turnLeft45", cmd_crash, 0, 1 },
+    { "turnRight45", cmd_turn, 2, 1 },
+    { "turnLeft45", cmd_turn, -2, 1 },
     { "wasReset", cmd_was_reset, 0, 1 },
     { "ackReset", cmd_ack_reset, 0, 1 },
     { "getStat", cmd_get_stat, 0, 2 },

@@ -1,8 +1,8 @@
 /* mms.h - run an mms maze algorithm (any program speaking the text API of
  * mackorone/mms release v1.2.0, README at commit 3054142: moveForward [N],
  * moveForwardHalf, turn*45, getStat; wallBack, the half-step argument of
- * the wall queries and the cell boundaries as mms's Window.cpp at 9ec759a)
- * on the simulated robot.
+ * the wall queries, the cell boundaries and the diagonals between their
+ * middles as mms's Window.cpp at 9ec759a) on the simulated robot.
  *
  * The algorithm runs as /bin/sh -c COMMAND in its own process group, under
  * a guardian process (guard.h), with its stdin, stdout and stderr on pipes;

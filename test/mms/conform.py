@@ -62,12 +62,21 @@ want("getStat score", FLOAT, "2000")
 want("wasReset", BOOL, "false")
 # refused moves answer crash at once
 for m in ("moveForward 0", "moveForward -2", "moveForward x", "moveForwardHalf 0", "moveForwardHalf -1",
-          "moveForwardHalf x", "turnLeft45", "turnRight45"):
+          "moveForwardHalf x"):
     want(m, "crash")
 # turns: ack once done (four quarter turns face north again)
 for t in ("turnRight", "turnLeft90", "turnRight90", "turnLeft"):
     want(t, "ack")
-want("getStat total-turns", INT, "4")
+# 45-degree turns (mms 1.2): ack; at a centre a diagonal aims at a post, so
+# every wall query along a diagonal is true and a move crashes, nothing moving
+want("turnLeft45", "ack")
+for q in ("wallFront", "wallLeft", "wallRight 2", "wallBack"):
+    want(q, BOOL, "true")
+want("moveForwardHalf", "crash")
+want("moveForward", "crash")
+want("getStat total-distance", INT, "0")
+want("turnRight45", "ack")
+want("getStat total-turns", INT, "6")
 want("wallFront", BOOL, "false")
 # no-answer commands and invalid ones are ignored
 for line in ("setWall 0 0 w", "setWall 0 0 W", "clearWall 0 0 w", "setColor 0 0 r", "setColor 1 1 Y", "clearColor 1 1",
@@ -110,7 +119,7 @@ want("moveForward", "ack")  # a new run from the start: current-run stats restar
 want("getStat current-run-distance", INT, "1")
 want("getStat current-run-effective-distance", FLOAT, "1")
 want("getStat current-run-turns", INT, "0")
-want("getStat total-turns", INT, "8")
+want("getStat total-turns", INT, "10")  # 4 + 2 eighths + 4
 want("getStat score", FLOAT, "2000")
 
 

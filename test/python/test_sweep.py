@@ -218,3 +218,22 @@ def test_plot_rates_equal_the_table(tmp_path, local2):
     assert any(v["contact_rate"] > 0 for v in doc["per_value"]["chassis.body.body_l_mm"].values())
     for m, times in doc["best_run_s"].items():
         assert sorted(times) == sorted(df[(df["maze"] == m) & (df["reached_goal"] == True)]["best_run_s"].dropna())  # noqa: E712
+
+
+def test_folder_reads_whole_when_a_part_has_only_nulls(tmp_path):
+    """A first part whose runs all missed the goal (best_run_s null) and had
+    no error, a later one with numbers and an error: pandas.read_parquet on
+    the folder (the dataset's schema from its first part) reads every row."""
+    out = str(tmp_path / "r.parquet")
+    w = mmsim.store.Writer(out, flush_rows=2)
+    w.add({"run_key": "a", "best_run_s": None, "run_error": None, "laps": []})
+    w.add({"run_key": "b", "best_run_s": None, "run_error": None, "laps": []})
+    time.sleep(0.01)
+    w.add({"run_key": "c", "best_run_s": 12.5, "run_error": "exit 3", "laps": [{"run_s": 12.5}]})
+    w.add({"run_key": "d", "best_run_s": 11.0, "run_error": None, "laps": []})
+    w.flush()
+    assert len(glob.glob(out + "/part-*.parquet")) == 2
+    df = pd.read_parquet(out).sort_values("run_key").reset_index(drop=True)
+    assert df["best_run_s"].tolist()[2:] == [12.5, 11.0] and df["best_run_s"].isna().tolist()[:2] == [True, True]
+    assert df["run_error"].tolist()[2] == "exit 3"
+    pd.testing.assert_frame_equal(df, mmsim.store.read(out).sort_values("run_key").reset_index(drop=True), check_dtype=False)
