@@ -1,0 +1,67 @@
+/* slalom.h - the speed run's moves: straights, diagonals and slaloms, as
+ * geometry in the maze's half-cell grid (what the planner needs) and as
+ * named trajectories (what the motion layer drives).
+ *
+ * Grid: half units of RC_CELL_MM / 2 (90 mm in a classic maze). Cell (x, y)
+ * has its centre at (2x, 2y); the middles of its sides are (2x, 2y +- 1)
+ * (north, south) and (2x +- 1, 2y) (east, west); posts sit at (odd, odd).
+ * A run's nodes are side middles (exactly one coordinate odd) and, at the
+ * start and the goal, cell centres (both even).
+ *
+ * Headings in 45-degree steps, clockwise: 0 N, 1 NE, 2 E, 3 SE, 4 S, 5 SW,
+ * 6 W, 7 NW (mouse_cmd_heading8's numbering). An orthogonal heading on a
+ * side middle crosses that side: N/S on a north or south side (y odd),
+ * E/W on an east or west side (x odd). A diagonal heading may stand on
+ * either kind of side middle.
+ *
+ * Each move is given for a right turn, entering at (0, 0) heading N (moves
+ * that start orthogonal) or NE (moves that start diagonal); x grows to the
+ * right of the entry heading. A left turn mirrors x; other headings rotate
+ * the whole move by the entry heading. A move is legal where every side
+ * middle it lists is an open wall in the mouse's map (it crosses those
+ * sides, or sweeps over them with its body; the others it passes it keeps
+ * clear of, posts included). */
+#ifndef SLALOM_H
+#define SLALOM_H
+
+#include <stdint.h>
+
+typedef enum {
+    SLALOM_ORTHO = 0, /* orthogonal straight of n half units (n >= 1) */
+    SLALOM_DIAG,      /* diagonal straight of n half steps (127 mm each in a classic maze) */
+    SLALOM_S90,       /* 90 inside one cell: the search's smooth turn, corner at the cell centre */
+    SLALOM_F90,       /* large 90 through three cells, 180 mm radius about the post's neighbour */
+    SLALOM_F180,      /* 180 through two side-by-side cells, 90 mm radius */
+    SLALOM_F45,       /* orthogonal -> diagonal, 45 */
+    SLALOM_F135,      /* orthogonal -> diagonal, 135 */
+    SLALOM_D45,       /* diagonal -> orthogonal, 45 */
+    SLALOM_D135,      /* diagonal -> orthogonal, 135 */
+    SLALOM_V90,       /* diagonal -> diagonal, 90 */
+    SLALOM_KINDS
+} slalom_kind_t;
+
+#define SLALOM_MAX_CROSS 3 /* side middles a turn crosses, its exit included */
+
+/* A turn's geometry, for the right-hand version (see above). */
+typedef struct {
+    int8_t exit_x, exit_y;     /* exit node, half units from the entry node */
+    uint8_t turn;              /* heading change, 45-degree steps clockwise */
+    uint8_t from_diag;         /* 1: entered on a diagonal heading */
+    int8_t corner_x, corner_y; /* where the entry and exit lines meet, half units (F180: its arc's centre) */
+    uint8_t crossed;           /* how many of cross[] are used */
+    int8_t cross[SLALOM_MAX_CROSS][2]; /* side middles crossed, half units */
+} slalom_geom_t;
+
+/* The turns' table, indexed by slalom_kind_t (ORTHO and DIAG have a zero
+ * entry: their geometry follows from n). */
+extern const slalom_geom_t slalom_geom[SLALOM_KINDS];
+
+/* One move of a run: a kind, its side (+1 right / clockwise, -1 left) for
+ * turns, and n half units (ORTHO) or half steps (DIAG); n is 1 for turns. */
+typedef struct {
+    uint8_t kind;
+    int8_t dir;
+    uint8_t n;
+} slalom_move_t;
+
+#endif
