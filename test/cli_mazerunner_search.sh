@@ -32,10 +32,11 @@ js() { python3 -c "import json,sys; j=json.loads(open(sys.argv[1]).read().splitl
 
 # the shipped EVENT_UK image, the issue's command, to its own ERR: after it the firmware's panic()
 # calls its emergency stop, which stops the motors, enables its controllers again and then disables
-# them (motion.h, emergency_stop and reset_drive_system); when its 500 Hz control interrupt
-# (systick.h) falls between the two, the motors keep that interrupt's command and the robot drives
-# on into the goal cell's walls. Which run that happens in depends on the cycle the ERR comes at, not
-# on the physics, so the contacts are counted over the search.
+# them (motion.h, emergency_stop and reset_drive_system) without masking its 500 Hz control
+# interrupt (systick.h), which writes the motors while they are enabled; a run where one update
+# writes them after the stop (docs/BENCHMARKS.md: -52, 193 of +-1023, 1 ms after it) drives on into
+# the goal cell's walls. That depends on the cycle the ERR comes at, not on the physics, so the
+# contacts are counted over the search.
 want_rc 0 "EVENT_UK image: search (the issue's command)" run $B/clients/mazerunner-core-uk.elf --input "$HANDS" --time-limit 40 \
   --end-on "ERR: no route to target"
 cp "$T/out" "$T/uk.json"
