@@ -141,11 +141,13 @@ def segments(path, cell, radius):
 def bound(rb, segs, radius, v_top, v_turn):
     ds = 0.001
     lim, kind = [], []
+    step = []                                          # each piece in equal steps of about ds
     for length, k in segs:
         n = max(1, int(round(length / ds)))
         for _ in range(n):
             lim.append(v_turn if k == "arc" else v_top)
             kind.append(k)
+            step.append(length / n)
     n = len(lim)
     v = [0.0] * (n + 1)                                # speed at the points between steps
     lat = [(lim[i] ** 2 / radius if kind[i] == "arc" else 0.0) for i in range(n)]
@@ -155,15 +157,15 @@ def bound(rb, segs, radius, v_top, v_turn):
 
     for i in range(n):                                 # speeding up
         a = min(rb.a_motor(v[i]), long_grip(i))
-        v[i + 1] = min(lim[i], math.sqrt(v[i] ** 2 + 2 * a * ds))
+        v[i + 1] = min(lim[i], math.sqrt(v[i] ** 2 + 2 * a * step[i]))
         if i + 1 < n:
             v[i + 1] = min(v[i + 1], lim[i + 1])
     for i in range(n - 1, -1, -1):                     # braking (the end speed is free)
-        v[i] = min(v[i], math.sqrt(v[i + 1] ** 2 + 2 * long_grip(i) * ds))
+        v[i] = min(v[i], math.sqrt(v[i + 1] ** 2 + 2 * long_grip(i) * step[i]))
     t = {"start": 0.0, "straight": 0.0, "arc": 0.0}
     for i in range(n):
         vm = 0.5 * (v[i] + v[i + 1])
-        t[kind[i]] += ds / vm if vm > 0 else float("inf")
+        t[kind[i]] += step[i] / vm if vm > 0 else float("inf")
     return t, max(v)
 
 
