@@ -36,8 +36,9 @@ Orthogonal bound ("lower bound"): the path the firmware races today,
 Optimistic on purpose (so a bound): no controller headroom, no time to
 ramp the rotation into and out of a turn, the caster's share of the weight
 (6 %) and the load transfer under acceleration ignored, the chassis does
-not pitch. Integrated forward (speeding up) and backward (braking) over the
-path in steps of about 1 mm.
+not pitch. Integrated forward (speeding up: on straights in closed form,
+as the diagonal bound does) and backward (braking) over the path in steps
+of about 1 mm.
 
 Diagonal bound ("diagonal bound"): the least time over EVERY path from the
 start to the goal made of the speed run's moves (firmware/slalom.h: whole-
@@ -222,9 +223,13 @@ def bound(rb, segs, radius, v_top, v_turn):
     def long_grip(i):
         return math.sqrt(max(0.0, rb.grip ** 2 - lat[i] ** 2))
 
+    dr = Drive(rb)
     for i in range(n):                                 # speeding up
-        a = min(rb.a_motor(v[i]), long_grip(i))
-        v[i + 1] = min(lim[i], math.sqrt(v[i] ** 2 + 2 * a * step[i]))
+        if kind[i] == "arc":                           # at the step's first speed (the most grip and torque)
+            a = min(rb.a_motor(v[i]), long_grip(i))
+            v[i + 1] = min(lim[i], math.sqrt(v[i] ** 2 + 2 * a * step[i]))
+        else:                                          # in closed form (Drive): exact
+            v[i + 1] = dr.up(v[i], step[i], lim[i])
         if i + 1 < n:
             v[i + 1] = min(v[i + 1], lim[i + 1])
     for i in range(n - 1, -1, -1):                     # braking (the end speed is free)
