@@ -105,6 +105,12 @@ import subprocess
 import sys
 
 
+
+def fail(msg, code=2):
+    """One error line and the exit code (2 bad input, 3 a tool or a bug)."""
+    print(msg, file=sys.stderr)
+    sys.exit(code)
+
 def printed(mmsim, flag, extra):
     """mmsim --print-config or --print-robot (extra: its --config or --robot
     FILE) as {section: {key: value}} (INI: key = value ; unit; source;
@@ -380,7 +386,7 @@ def slalom_table(path):
     try:
         text = open(path).read()
     except OSError as e:
-        raise SystemExit(f"lower_bound: {path}: {e.strerror}")
+        fail(f"{path}: {e.strerror}")
     for n, line in enumerate(text.splitlines(), 1):
         m = re.match(r"\s*\[SLALOM_(\w+)\]\s*=\s*\{(.*)\},\s*$", line)
         if not m:
@@ -389,10 +395,10 @@ def slalom_table(path):
         if v == [0]:
             continue                                   # the straights: their geometry follows from n
         if len(v) < 7 or len(v) != 7 + 2 * v[6]:
-            raise SystemExit(f"{path}:{n}:1: a turn's entry is not {{exit x, y, turn, from_diag, corner x, y, crossed, {{...}}}}")
+            fail(f"{path}:{n}:1: a turn's entry is not {{exit x, y, turn, from_diag, corner x, y, crossed, {{...}}}}")
         turns[m.group(1)] = ((v[0], v[1]), v[2], v[3], (v[4], v[5]), [(v[7 + 2 * k], v[8 + 2 * k]) for k in range(v[6])])
     if not turns:
-        raise SystemExit(f"{path}:1:1: no turns in the slalom_geom table")
+        fail(f"{path}:1:1: no turns in the slalom_geom table")
     return turns
 
 
@@ -460,7 +466,7 @@ class Maze:
         self.h = (len(rows) - 1) // 2
         self.w = (max(len(r) for r in rows) - 1) // 4
         if self.w < 1 or self.h < 1 or not rows[0].startswith(("o", "+")):
-            raise SystemExit(f"{name}:1:1: not a maze in the text format")
+            fail(f"{name}:1:1: not a maze in the text format")
         rows = [r.ljust(4 * self.w + 1) for r in rows]
         line = lambda y: 2 * (self.h - 1 - y) + 1      # the text line of cell row y
         self.east = {(x, y) for x in range(self.w) for y in range(self.h) if rows[line(y)][4 * x + 4] == "|"}
@@ -765,7 +771,7 @@ def diag_result(db, mmmaze, m):
     vin = min(db.v_start, pieces[0][1]) if pieces else 0.0
     path_s = pieces_time(db.dr, pieces, vin, reach_fwd(db.dr, pieces, vin)) if pieces else 0.0
     if math.isnan(t) or math.isnan(path_s):
-        raise SystemExit(f"lower_bound: {m}: a time is not a number (a bug)")
+        fail(f"lower_bound: {m}: a time is not a number (a bug)", 3)
     names = [key[1] if key[0] in ("T", "G") else ("diag" if key[1] else "straight") for key, _s, _i in route]
     return {"diag_bound_s": round(t, 2), "diag_path_s": round(path_s, 2),
             "diag_length_m": round(sum(p[0] for p in pieces), 3), "diag_moves": len(route),
@@ -774,6 +780,7 @@ def diag_result(db, mmmaze, m):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.error = lambda msg: fail(f"lower_bound: {msg}")
     ap.add_argument("--mmsim", default="build/mmsim")
     ap.add_argument("--mmmaze", default="build/mmmaze")
     ap.add_argument("--config", help="mmsim --config: the world (default: mmsim's)")
@@ -789,7 +796,7 @@ def main():
     ap.add_argument("mazes", nargs="+")
     a = ap.parse_args()
     if a.bins < 1:
-        ap.error("--bins must be at least 1")
+        fail("lower_bound: --bins must be at least 1")
     rb = Robot(config(a.mmsim, a.config, a.robot))
     radius = a.radius_mm / 1000
     v_top = a.v_top_mm_s / 1000 if a.v_top_mm_s else rb.v_top
