@@ -2,7 +2,7 @@
 """lower_bound.py - physical lower bounds on a maze's speed run: the best orthogonal path, and every path with diagonals and slaloms.
 
     bench/lower_bound.py [--mmsim build/mmsim] [--mmmaze build/mmmaze]
-                         [--config FILE] [--robot FILE] [--radius-mm 90]
+                         [--config FILE] [--robot FILE] [--radius-mm R]
                          [--v-top-mm-s V] [--turn-mm-s V] [--bins 24]
                          [--slalom firmware/slalom.c] [--no-diagonal] [--json] MAZE...
 
@@ -21,8 +21,8 @@ Orthogonal bound ("lower bound"): the path the firmware races today,
   effective mass (the robot plus each wheel's and rotor's inertia over r^2:
   0.306 kg), and at most the tyres' grip, mu*g;
 - braking: the tyres' grip, mu*g (the motors could brake harder);
-- turns: each 90-degree turn a circular arc of radius 90 mm (--radius-mm)
-  from the turn cell's entry edge to its exit edge (the largest arc that
+- turns: each 90-degree turn a circular arc of radius 90 mm (--radius-mm;
+  half a cell) from the turn cell's entry edge to its exit edge (the largest arc that
   fits in the cell, so staircases fit too; the firmware's turns are
   smaller), at the lateral friction limit sqrt(mu*g*R) or the speed at
   which the outer wheel turns at the top speed, v_top * R / (R + b),
@@ -112,8 +112,8 @@ def fail(msg, code=2):
     sys.exit(code)
 
 def printed(mmsim, flag, extra):
-    """mmsim --print-config or --print-robot (extra: its --config or --robot
-    FILE) as {section: {key: value}} (INI: key = value ; unit; source;
+    """mmsim --print-config or --print-robot (extra: --config FILE and --robot
+    FILE, which mmsim checks together) as {section: {key: value}} (INI: key = value ; unit; source;
     numbers as floats, a list of numbers as a list, words as strings)."""
     p = subprocess.run([mmsim, flag] + extra, capture_output=True, text=True)
     if p.returncode != 0:
@@ -141,9 +141,10 @@ def config(mmsim, config_file=None, robot_file=None):
     mm, g, the left motor's figures) as {key: float} in SI units, named as
     Robot reads them."""
     c = {}
-    for keys in printed(mmsim, "--print-config", ["--config", config_file] if config_file else []).values():
+    extra = (["--config", config_file] if config_file else []) + (["--robot", robot_file] if robot_file else [])
+    for keys in printed(mmsim, "--print-config", extra).values():
         c.update(keys)
-    r = printed(mmsim, "--print-robot", ["--robot", robot_file] if robot_file else [])
+    r = printed(mmsim, "--print-robot", extra)
     one = lambda kind: next(v for k, v in r.items() if k.split(".")[0] == kind)
     ch, motor, batt = one("chassis"), r["motor.left"], one("battery")
     c["wheel_d_m"] = (ch["wheel_left_d_mm"] + ch["wheel_right_d_mm"]) / 2 / 1000
@@ -785,7 +786,7 @@ def main():
     ap.add_argument("--mmmaze", default="build/mmmaze")
     ap.add_argument("--config", help="mmsim --config: the world (default: mmsim's)")
     ap.add_argument("--robot", help="mmsim --robot: the robot file (default: mmsim's)")
-    ap.add_argument("--radius-mm", type=float, default=90.0, help="the orthogonal bound's turn radius")
+    ap.add_argument("--radius-mm", type=float, help="the orthogonal bound's turn radius (default: half a cell)")
     ap.add_argument("--v-top-mm-s", type=float, help="straights' speed limit (default: the motor's no-load speed)")
     ap.add_argument("--turn-mm-s", type=float, help="the orthogonal bound's turn speed (default: friction and outer wheel)")
     ap.add_argument("--bins", type=int, default=24, help="the diagonal bound's speed bins (more: tighter, slower)")
@@ -798,7 +799,7 @@ def main():
     if a.bins < 1:
         fail("lower_bound: --bins must be at least 1")
     rb = Robot(config(a.mmsim, a.config, a.robot))
-    radius = a.radius_mm / 1000
+    radius = a.radius_mm / 1000 if a.radius_mm else rb.cell / 2
     v_top = a.v_top_mm_s / 1000 if a.v_top_mm_s else rb.v_top
     v_friction = math.sqrt(rb.grip * radius)
     v_wheel = v_top * radius / (radius + rb.b)
