@@ -5,7 +5,8 @@
 # (the best path with 90 mm turns: the diagonal graph holds that path); on a
 # straight corridor, where no turn fits, the two are equal; on an open maze
 # the diagonal one is lower; fewer speed bins (each a union of finer ones)
-# never give a higher bound; bad input is one error line and exit 2.
+# never give a higher bound; bench/best_vs_bound.py's ratios and summary
+# are the hand-computed ones; bad input is one error line and exit 2.
 set -u
 B=${BUILD:-build}
 MMSIM=${MMSIM:-$B/mmsim}
@@ -60,6 +61,33 @@ want_rc 0 "again on gen-8x8-s1" "${LB[@]}" --json mazes/gen-8x8-s1.txt; cp "$T/o
 want_rc 0 "and again" "${LB[@]}" --json mazes/gen-8x8-s1.txt
 cmp -s "$T/a" "$T/out" && ok "the same JSON twice" || bad "two runs differ"
 
+# best_vs_bound.py on known figures: four results against a bounds file
+cat >"$T/bounds.jsonl" <<'JSON'
+{"maze": "x/a.txt", "bound_s": 10.0, "diag_bound_s": 8.0}
+{"maze": "x/b.txt", "bound_s": 20.0, "diag_bound_s": 16.0}
+{"maze": "x/c.txt", "bound_s": 5.0, "diag_bound_s": 4.0}
+JSON
+cat >"$T/results.jsonl" <<'JSON'
+{"maze": "y/a.txt", "reached_goal": true, "best_run_s": 9.0}
+{"maze": "y/b.txt", "reached_goal": true, "best_run_s": 30.0}
+{"maze": "y/c.txt", "reached_goal": false, "best_run_s": null}
+{"maze": "y/d.txt", "reached_goal": false, "best_run_s": null}
+JSON
+want_rc 0 "best_vs_bound.py on known figures" python3 bench/best_vs_bound.py "$T/results.jsonl" --bounds "$T/bounds.jsonl" --json
+python3 - "$T/out" <<'PY' >"$T/msg" && ok "$(cat "$T/msg")" || bad "best_vs_bound: $(cat "$T/msg")"
+import json, sys
+d = json.loads(open(sys.argv[1]).read())
+s, rows = d["summary"], {r["maze"]: r for r in d["rows"]}
+assert sorted(rows) == ["a", "b", "c"], rows                     # d: no bound (unreachable)
+assert rows["a"]["best_over_diag"] == 1.125 and rows["a"]["best_over_ortho"] == 0.9, rows["a"]
+assert rows["b"]["best_over_diag"] == 1.875 and rows["b"]["best_over_ortho"] == 1.5, rows["b"]
+assert rows["c"]["best_over_diag"] is None, rows["c"]
+assert s["mazes"] == 3 and s["with_best_run"] == 2, s
+assert s["best_over_diag"] == {"median": 1.5, "max": 1.875, "within_1.15x": 1}, s
+assert s["best_over_ortho"] == {"median": 1.2, "max": 1.5, "within_1.15x": 1}, s
+print("best_vs_bound.py: ratios, medians, maxima and the counts within 1.15x as computed by hand")
+PY
+
 ONE_ERROR_LINE=1
 want_rc 2 "a missing maze: exit 2" "${LB[@]}" "$T/none.txt"
 printf 'o---o\n| S x\n' >"$T/bad.txt"
@@ -68,6 +96,9 @@ echo "int x;" >"$T/slalom.c"
 want_rc 2 "a slalom table without turns: exit 2" "${LB[@]}" --slalom "$T/slalom.c" mazes/gen-5x5-s1.txt
 grep -q "slalom.c:1:1: no turns" "$T/err" && ok "it names the file" || bad "error line: $(cat "$T/err")"
 want_rc 2 "--bins 0: exit 2" "${LB[@]}" --bins 0 mazes/gen-5x5-s1.txt
+echo "not json" >"$T/junk.jsonl"
+want_rc 2 "best_vs_bound.py on a line that is not JSON: exit 2" python3 bench/best_vs_bound.py "$T/junk.jsonl" --bounds "$T/bounds.jsonl"
+grep -q "junk.jsonl:1:" "$T/err" && ok "it names the file and line" || bad "error line: $(cat "$T/err")"
 unset ONE_ERROR_LINE
 
 [ $fails -eq 0 ] && echo "cli_lower_bound: all ok" || { echo "cli_lower_bound: $fails failed"; exit 1; }
