@@ -14,7 +14,9 @@ mmsim's --robot and --config as the batch had them): the orthogonal bound
 run's moves, diagonals and slaloms); computed here for the results' mazes,
 or read from a `lower_bound.py --json` file (--bounds) to save the time.
 
-Per maze: best run / diagonal bound and best run / orthogonal bound. Prints
+Per maze: best run / diagonal bound and best run / orthogonal bound (laps:
+the completed laps, the search's first arrival included; with one lap the
+best run is the search's). Prints
 the summary (mazes with a best run, the median and the largest ratio, how
 many within 1.15x), the --rows mazes (by file name without .txt) and, with
 --table, a Markdown row per maze. Mazes whose goal is unreachable have no
@@ -82,7 +84,8 @@ def rows_of(results, bounds):
             continue
         best = r.get("best_run_s") if r.get("reached_goal") else None
         row = {"maze": os.path.basename(r["maze"])[:-4] if r["maze"].endswith(".txt") else os.path.basename(r["maze"]),
-               "best_run_s": best, "ortho_bound_s": b["bound_s"], "diag_bound_s": b["diag_bound_s"]}
+               "laps": len(r.get("laps") or []), "best_run_s": best, "ortho_bound_s": b["bound_s"],
+               "diag_bound_s": b["diag_bound_s"]}
         row["best_over_diag"] = round(best / b["diag_bound_s"], 3) if best and b["diag_bound_s"] > 0 else None
         row["best_over_ortho"] = round(best / b["bound_s"], 3) if best and b["bound_s"] > 0 else None
         rows.append(row)
@@ -139,10 +142,10 @@ def main():
             print(f"{r['maze']}: best {fmt(r['best_run_s'], '%.3f')} s, orthogonal bound {r['ortho_bound_s']:.2f} s "
                   f"({fmt(r['best_over_ortho'])}x), diagonal bound {r['diag_bound_s']:.2f} s ({fmt(r['best_over_diag'])}x)")
     if a.table:
-        print("| maze | best run | orthogonal bound | diagonal bound | best / orthogonal | best / diagonal |")
-        print("| --- | --- | --- | --- | --- | --- |")
+        print("| maze | laps | best run | orthogonal bound | diagonal bound | best / orthogonal | best / diagonal |")
+        print("| --- | --- | --- | --- | --- | --- | --- |")
         for r in rows:
-            print(f"| {r['maze']} | {fmt(r['best_run_s'], '%.3f')} | {r['ortho_bound_s']:.2f} | {r['diag_bound_s']:.2f} | "
+            print(f"| {r['maze']} | {r['laps']} | {fmt(r['best_run_s'], '%.3f')} | {r['ortho_bound_s']:.2f} | {r['diag_bound_s']:.2f} | "
                   f"{fmt(r['best_over_ortho'])} | {fmt(r['best_over_diag'])} |")
     return 0
 
