@@ -105,16 +105,17 @@ import subprocess
 import sys
 
 
-
 def fail(msg, code=2):
     """One error line and the exit code (2 bad input, 3 a tool or a bug)."""
     print(msg, file=sys.stderr)
     sys.exit(code)
 
+
 def printed(mmsim, flag, extra):
     """mmsim --print-config or --print-robot (extra: --config FILE and --robot
-    FILE, which mmsim checks together) as {section: {key: value}} (INI: key = value ; unit; source;
-    numbers as floats, a list of numbers as a list, words as strings)."""
+    FILE, which mmsim checks together) as {section: {key: value}} (INI: key
+    = value ; unit; source; numbers as floats, a list of numbers as a list,
+    words as strings)."""
     p = subprocess.run([mmsim, flag] + extra, capture_output=True, text=True)
     if p.returncode != 0:
         sys.stderr.write(p.stderr)
@@ -531,6 +532,7 @@ class DiagBound:
         self.turns = slalom_table(slalom_c)
         self.types, self.type_id = [], {}              # edge kinds: pieces ((length m, cap m/s), ...)
         self.shapes = {k: turn_shape(e, t, c) for k, (e, t, d, c, x) in self.turns.items()}
+        # each turn's shape sampled every 0.5 mm (in half units), for the goal cells it enters
         self.points = {k: shape_points(self.shapes[k], self.turns[k][2], 0.5e-3 / self.half) for k in self.turns}
         self.v_start = self.dr.up(0.0, self.half, v_top)   # leaving the start cell from rest at its centre
         caps = {v_top, self.v_start} | {self.turn_cap(r * self.half) for s in self.shapes.values() for _, r in s if r}
