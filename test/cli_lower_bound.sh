@@ -5,7 +5,8 @@
 # (the best path with 90 mm turns: the diagonal graph holds that path); on a
 # straight corridor, where no turn fits, the two are equal; on an open maze
 # the diagonal one is lower; fewer speed bins (each a union of finer ones)
-# never give a higher bound; bench/best_vs_bound.py's ratios and summary
+# never give a higher bound; the half-size robot in 90 mm cells turns on
+# 45 mm arcs; bench/best_vs_bound.py's ratios and summary
 # are the hand-computed ones; bad input is one error line and exit 2.
 set -u
 B=${BUILD:-build}
@@ -42,6 +43,18 @@ assert c["diag_moves"] == 1 and c["diag_turns"] == {}, c
 assert o["diag_bound_s"] < o["bound_s"], o
 print("corridor: both %.2f s in one straight; open 16x16: diagonal %.2f < orthogonal %.2f s" % (
     c["bound_s"], o["diag_bound_s"], o["bound_s"]))
+PY
+
+# the half-size robot in 90 mm cells: turns of half a cell, the same order
+want_rc 0 "kerise-v5 in 90 mm cells" "${LB[@]}" --robot robots/kerise-v5.ini --config mazes/halfsize-world.ini mazes/gen-8x8-s1.txt
+grep -q "^turns: R 45 mm" "$T/out" && grep -q "S90 R 45 mm" "$T/out" && ok "half-size turns: R 45 mm (half a 90 mm cell)" \
+  || bad "half-size turns: $(head -3 "$T/out")"
+python3 - "$T/out" <<'PY' >"$T/msg" && ok "$(cat "$T/msg")" || bad "half-size: $(cat "$T/msg")"
+import re, sys
+last = open(sys.argv[1]).read().splitlines()[-1]
+o, d = float(re.search(r"lower bound ([0-9.]+) s", last)[1]), float(re.search(r"diagonal bound ([0-9.]+) s", last)[1])
+assert d <= o, last
+print("half-size gen-8x8-s1: diagonal %.2f <= orthogonal %.2f s" % (d, o))
 PY
 
 # bins: 6 equal steps are unions of 24's (both grids hold the same limits)
