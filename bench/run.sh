@@ -24,8 +24,10 @@ print("mmsim %s (our firmware, search and 3 speed runs): sim %.1f s, real-time f
     d["maze"].split("/")[-1], d["sim_time_s"], max(r["real_time_factor"] for r in runs),
     sorted(r["real_time_factor"] for r in runs)[1], [l["run_s"] for l in d["laps"]], d["collisions"]))'
   done
-  # the physical lower bound of a speed run on each maze's best path with
-  # this robot and motor (docs/BENCHMARKS.md, "Speed runs against physics")
+  # the physical lower bounds of a speed run with this robot and motor: on
+  # each maze's best orthogonal path, and over every path of the speed run's
+  # diagonal and slalom moves (docs/BENCHMARKS.md, "Speed runs against physics",
+  # "Best runs against the diagonal lower bound")
   python3 bench/lower_bound.py --mmsim $B/mmsim --mmmaze $B/mmmaze "$DB/classic/japan2018.txt" "$DB/classic/japan2019.txt"
 else
   echo "SKIP database benchmarks: $DB not found"
