@@ -183,6 +183,54 @@
 #define RC_SMOOTH_MM_S 350.0f
 #define RC_SMOOTH_DEG_S 315.1f       /* 5.5 rad/s */
 #define RC_SMOOTH_ACCEL_DEG_S2 4010.7f /* 70 rad/s^2 */
+/* ---- speed runs with diagonals and slaloms (host builds: PLAN_ENABLED;
+ * firmware/slalom.c sizes each turn, plan.c picks the moves) ---- */
+/* 1: speed runs follow plan_run's moves; 0: orthogonal straights joined
+ * by smooth turns (run_plan) */
+#define RC_DIAG_RUNS 1
+/* The speed runs climb: the first at the _SAFE speeds, each later one at
+ * the _FAST ones if the run before it ended with the wheels' tracking
+ * error under RC_RUN_CLEAN_MM (a bump into a post or wall shows there;
+ * the firmware has no other word on a contact). Slaloms at 300 then 350
+ * mm/s (the smooth 90's speed: above it the 90s' outer wheel runs into the
+ * motor's top speed and the V90 no longer fits, see below). */
+#define RC_SLALOM_SAFE_MM_S 300.0f
+#define RC_SLALOM_FAST_MM_S 350.0f
+/* diagonal straights: the wheels pass the posts 3.1 mm off when on the
+ * diagonal's centre line (posts 63.6 mm from it, minus 52 mm of wheel and
+ * 8.5 mm of post across the diagonal); held on odometry's heading, nothing
+ * to centre on. japan2019 (seed 1): with 500 after 350 mm/s turns the
+ * second speed run hit a post at its third diagonal and stalled; 400 held
+ * (best run 25.7 s). */
+#define RC_DIAG_SAFE_MM_S 400.0f
+#define RC_DIAG_FAST_MM_S 400.0f
+#define RC_RUN_CLEAN_MM 10.0f
+/* Each slalom's rotation speeds up at the smooth 90's 70 rad/s^2 (the
+ * outer wheel's acceleration budget, RC_CMD_FF_MAX) up to a peak rate
+ * slalom.c chooses between these bounds (deg/s: 1 and 15 rad/s; the
+ * motor's cap on the outer wheel takes over below 15 at these speeds). */
+#define RC_SLALOM_ACCEL_DEG_S2 4010.7f
+#define RC_SLALOM_W_MIN_DEG_S 57.3f
+#define RC_SLALOM_W_MAX_DEG_S 859.4f
+/* From each turn's start to its corner, mm (slalom.c sizes the peak rate
+ * to it). Larger cuts the corner more (a shorter, faster path) and brings
+ * the body nearer the inner post. Checked numerically at 300 and 350 mm/s
+ * by sweeping the body (96 x 120 mm, wheels to +-52 mm) along the
+ * integrated path against 12 mm posts and every wall the turn does not
+ * cross: S90 85 (of 90: 22 mm from the wall ahead), F90 120 (of 270: 17
+ * mm from the inner post; 160 touches it), F45 and D45 60 (of 127: 3.3 mm,
+ * as on the diagonal itself; 100 touches), V90 75 (of 127: 3.0 mm; 85
+ * touches). F135 and D135: 0, not driven: at 250-350 mm/s no rate the
+ * motor allows fits them (the body overlaps the post by their corner).
+ * F180 has none: it is sized to end RC_CELL_MM to the side (14.5 mm from
+ * the post it turns about at 350 mm/s). */
+#define RC_SLALOM_S90_MM 85.0f
+#define RC_SLALOM_F90_MM 120.0f
+#define RC_SLALOM_F45_MM 60.0f
+#define RC_SLALOM_D45_MM 60.0f
+#define RC_SLALOM_V90_MM 75.0f
+#define RC_SLALOM_F135_MM 0.0f
+#define RC_SLALOM_D135_MM 0.0f
 /* sense the next cell's walls this far before its centre: the diagonal
  * sensors (50 mm ahead of the body's centre) are then at its entry
  * boundary, and their cones (32.5 to 57.5 degrees off the heading) meet
