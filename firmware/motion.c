@@ -111,17 +111,20 @@ void motion_slalom(motion_t *m, float degrees, float w_deg_s, float accel_deg_s2
     m->heading_rad += degrees * DEG_TO_RAD;
 }
 
-void motion_slalom_geometry(float v_mm_s, float degrees, float w_deg_s, float accel_deg_s2, float *corner_mm, float *length_mm)
+void motion_slalom_geometry(float v_mm_s, float degrees, float w_deg_s, float accel_deg_s2, float *pre_mm, float *post_mm,
+                            float *length_mm)
 {
     float x, y;
     uint16_t ticks = turn_integrate(v_mm_s, degrees, w_deg_s, accel_deg_s2, &x, &y);
     if (degrees > 179.0f) {
-        *corner_mm = x; /* a U: how far to the side it ends */
+        *pre_mm = x; /* a U: how far to the side it ends, */
+        *post_mm = y; /* and how far ahead of its start */
     } else {
         /* the exit line through (x, y) at `degrees` meets the entry line
          * (x = 0) at y - x / tan(degrees) */
         float a = degrees * DEG_TO_RAD;
-        *corner_mm = y - x * cosf(a) / sinf(a);
+        *pre_mm = y - x * cosf(a) / sinf(a);
+        *post_mm = x / sinf(a);
     }
     *length_mm = v_mm_s * (1.0f / HAL_TICK_HZ) * ticks;
 }
