@@ -588,6 +588,23 @@ static maze_cell_t run_cell(int16_t x2, int16_t y2)
 
 
 #if PLAN_ENABLED
+/* Whether the diagonals of a plan start where the robot knows where it
+ * is: each entered by an F45 at the end of an orthogonal straight of at
+ * least RC_DIAG_ENTRY_HALVES (centred on its side walls), none longer than
+ * RC_DIAG_MAX_HALVES, and no V90, F135 or D135 (turns between diagonals,
+ * or into one from a turn). */
+static int prun_diag_ok(int n)
+{
+    for (int i = 0; i < n; i++) {
+        const slalom_move_t *mv = &run_moves[i];
+        if (mv->kind == SLALOM_V90 || mv->kind == SLALOM_F135 || mv->kind == SLALOM_D135) return 0;
+        if (mv->kind == SLALOM_DIAG && mv->n > RC_DIAG_MAX_HALVES) return 0;
+        if (mv->kind == SLALOM_F45 && (i == 0 || run_moves[i - 1].kind != SLALOM_ORTHO || run_moves[i - 1].n < RC_DIAG_ENTRY_HALVES))
+            return 0;
+    }
+    return 1;
+}
+
 /* At the start of a speed run: the moves (run_count 0 if plan_run finds
  * none: the orthogonal run then), at the safe speeds on the first run and
  * after one whose tracking error reached RC_RUN_CLEAN_MM, else the fast. */
@@ -605,6 +622,10 @@ static void prun_begin(void)
     slalom_fit(run_v_turn, run_drive, c.turn_s);
     float t_s;
     int n = plan_run(&ex.map, &c, run_moves, PLAN_MAX_MOVES, &t_s);
+    if (n > 0 && !prun_diag_ok(n)) { /* the same without diagonals */
+        c.turn_s[SLALOM_F45] = c.turn_s[SLALOM_F135] = c.turn_s[SLALOM_D45] = c.turn_s[SLALOM_D135] = c.turn_s[SLALOM_V90] = -1;
+        n = plan_run(&ex.map, &c, run_moves, PLAN_MAX_MOVES, &t_s);
+    }
     if (n <= 0) return;
     unsigned diag = 0;
     for (int i = 0; i < n; i++) diag += run_moves[i].kind == SLALOM_DIAG || run_moves[i].kind >= SLALOM_F45;
@@ -625,7 +646,7 @@ static void prun_begin(void)
  * leading into the turn `next` (NULL: the run's end, at rest). */
 static void prun_straight(uint8_t kind, uint8_t n, const slalom_move_t *next)
 {
-    uint8_t ortho = kind == SLALOM_ORTHO && !(run_h8 & 1u);
+    uint8_t ortho = !(run_h8 & 1u);
     float unit = (run_h8 & 1u) ? RC_CELL_MM * 0.70710678f : RC_CELL_MM / 2;
     float before = next ? run_drive[next->kind].before_mm : 0;
     float mm = n * unit + run_carry_mm + before;

@@ -188,23 +188,33 @@
 /* 1: speed runs follow plan_run's moves; 0: orthogonal straights joined
  * by smooth turns (run_plan) */
 #define RC_DIAG_RUNS 1
-/* The speed runs climb: the first at the _SAFE speeds, each later one at
- * the _FAST ones if the run before it ended with the wheels' tracking
- * error under RC_RUN_CLEAN_MM (a bump into a post or wall shows there;
- * the firmware has no other word on a contact). Slaloms at 300 then 350
- * mm/s (the smooth 90's speed: above it the 90s' outer wheel runs into the
- * motor's top speed and the V90 no longer fits, see below). */
-#define RC_SLALOM_SAFE_MM_S 300.0f
+/* Slaloms at 350 mm/s, the smooth 90's speed: the S90 (a 90 inside one
+ * cell) fits its 90 mm of room up to there (above it the outer wheel runs
+ * into the motor's top speed); at 300 the zigzags of staircases took
+ * longer (japan2019 seed 1: best run 30.0 s against 27.0). */
+#define RC_SLALOM_SAFE_MM_S 350.0f
 #define RC_SLALOM_FAST_MM_S 350.0f
-/* diagonal straights: the wheels pass the posts 3.1 mm off when on the
+/* Diagonal straights: the wheels pass the posts 3.1 mm off on the
  * diagonal's centre line (posts 63.6 mm from it, minus 52 mm of wheel and
  * 8.5 mm of post across the diagonal); held on odometry's heading, nothing
- * to centre on. japan2019 (seed 1): with 500 after 350 mm/s turns the
- * second speed run hit a post at its third diagonal and stalled; 400 held
- * (best run 25.7 s). */
+ * to centre on. The speed runs climb: the first at _SAFE, each later one
+ * at _FAST if the run before it ended with the wheels' tracking error
+ * under RC_RUN_CLEAN_MM (a bump into a post or wall shows there; the
+ * firmware has no other word on a contact). */
 #define RC_DIAG_SAFE_MM_S 400.0f
-#define RC_DIAG_FAST_MM_S 400.0f
+#define RC_DIAG_FAST_MM_S 500.0f
 #define RC_RUN_CLEAN_MM 10.0f
+/* Diagonals only where the robot knows where it is (mouse.c
+ * prun_diag_ok), else the run is planned without them: entered from an
+ * orthogonal straight of at least RC_DIAG_ENTRY_HALVES (centred on its
+ * side walls) and at most RC_DIAG_MAX_HALVES long. Measured in mmsim
+ * (seed 1, the true pose against the plan's): a diagonal starts with the
+ * held heading 0.2-0.6 degrees off the maze's and 1-2 mm off its line,
+ * which puts the wheels into a post within 3-4 half steps (jcf01,
+ * japan2013eq, uk1990f: 18 of 60 classic mazes touched with diagonals up
+ * to 16 half steps, entered from anywhere); up to 2 none of those did. */
+#define RC_DIAG_ENTRY_HALVES 2
+#define RC_DIAG_MAX_HALVES 2
 /* Each slalom's rotation speeds up at the smooth 90's 70 rad/s^2 (the
  * outer wheel's acceleration budget, RC_CMD_FF_MAX) up to a peak rate
  * slalom.c chooses between these bounds (deg/s: 1 and 15 rad/s; the
@@ -219,16 +229,18 @@
  * integrated path against 12 mm posts and every wall the turn does not
  * cross: S90 85 (of 90: 22 mm from the wall ahead), F90 120 (of 270: 17
  * mm from the inner post; 160 touches it), F45 and D45 60 (of 127: 3.3 mm,
- * as on the diagonal itself; 100 touches), V90 75 (of 127: 3.0 mm; 85
- * touches). F135 and D135: 0, not driven: at 250-350 mm/s no rate the
- * motor allows fits them (the body overlaps the post by their corner).
+ * as on the diagonal itself; 100 touches), V90 70 (of 127: 3.1 mm; 85
+ * touches), test/test_slalom.c. V90 is not driven (0): it joins two
+ * diagonals, and a diagonal starts only from a centred straight
+ * (RC_DIAG_ENTRY_HALVES). F135 and D135: 0, not driven: at 250-350 mm/s
+ * no rate the motor allows fits them (the body overlaps the post).
  * F180 has none: it is sized to end RC_CELL_MM to the side (14.5 mm from
  * the post it turns about at 350 mm/s). */
 #define RC_SLALOM_S90_MM 85.0f
 #define RC_SLALOM_F90_MM 120.0f
 #define RC_SLALOM_F45_MM 60.0f
 #define RC_SLALOM_D45_MM 60.0f
-#define RC_SLALOM_V90_MM 75.0f
+#define RC_SLALOM_V90_MM 0.0f
 #define RC_SLALOM_F135_MM 0.0f
 #define RC_SLALOM_D135_MM 0.0f
 /* sense the next cell's walls this far before its centre: the diagonal

@@ -84,6 +84,8 @@
 #define RC_DIAG_SAFE_MM_S RC_SMOOTH_MM_S
 #define RC_DIAG_FAST_MM_S RC_SMOOTH_MM_S
 #define RC_RUN_CLEAN_MM 10.0f         /* mm */
+#define RC_DIAG_ENTRY_HALVES 2        /* half units */
+#define RC_DIAG_MAX_HALVES 6          /* half steps */
 #define RC_SLALOM_ACCEL_DEG_S2 RC_SMOOTH_ACCEL_DEG_S2
 #define RC_SLALOM_W_MIN_DEG_S 57.3f   /* deg/s */
 #define RC_SLALOM_W_MAX_DEG_S 859.4f  /* deg/s */
