@@ -210,9 +210,10 @@
  * side walls) and at most RC_DIAG_MAX_HALVES long. Measured in mmsim
  * (seed 1, the true pose against the plan's): a diagonal starts with the
  * held heading 0.2-0.6 degrees off the maze's and 1-2 mm off its line,
- * which puts the wheels into a post within 3-4 half steps (jcf01,
- * japan2013eq, uk1990f: 18 of 60 classic mazes touched with diagonals up
- * to 16 half steps, entered from anywhere); up to 2 none of those did. */
+ * which puts the wheels into a post within 3-4 half steps. Every 8th
+ * classic maze (61): diagonals of any length entered from anywhere, 18
+ * touched; from a centred straight of 2, up to 6 half steps: uk1990f; of
+ * 4, up to 4: japan2013eq; of 2, up to 2: none. */
 #define RC_DIAG_ENTRY_HALVES 2
 #define RC_DIAG_MAX_HALVES 2
 /* Each slalom's rotation speeds up at the smooth 90's 70 rad/s^2 (the
@@ -224,18 +225,18 @@
 #define RC_SLALOM_W_MAX_DEG_S 859.4f
 /* From each turn's start to its corner, mm (slalom.c sizes the peak rate
  * to it). Larger cuts the corner more (a shorter, faster path) and brings
- * the body nearer the inner post. Checked numerically at 300 and 350 mm/s
- * by sweeping the body (96 x 120 mm, wheels to +-52 mm) along the
- * integrated path against 12 mm posts and every wall the turn does not
- * cross: S90 85 (of 90: 22 mm from the wall ahead), F90 120 (of 270: 17
- * mm from the inner post; 160 touches it), F45 and D45 60 (of 127: 3.3 mm,
- * as on the diagonal itself; 100 touches), V90 70 (of 127: 3.1 mm; 85
- * touches), test/test_slalom.c. V90 is not driven (0): it joins two
- * diagonals, and a diagonal starts only from a centred straight
+ * the body nearer the inner post. Checked at 300 and 350 mm/s by
+ * sweeping the body (96 x 120 mm, wheels to +-52 mm) along the integrated
+ * path against 12 mm posts and every wall the turn does not cross
+ * (test/test_slalom.c; at 350): S90 85 (of 90: 22 mm from the wall
+ * ahead), F90 120 (of 270: 20 mm from the inner post; 160: 2.4 mm), F45
+ * and D45 60 (of 127: 3.2 mm, as on the diagonal itself; 100: 0.3 mm),
+ * V90 70 (of 127: 3.1 mm; 85: 0.2 mm). V90 is not driven (0): it joins
+ * two diagonals, and a diagonal starts only from a centred straight
  * (RC_DIAG_ENTRY_HALVES). F135 and D135: 0, not driven: at 250-350 mm/s
- * no rate the motor allows fits them (the body overlaps the post).
- * F180 has none: it is sized to end RC_CELL_MM to the side (14.5 mm from
- * the post it turns about at 350 mm/s). */
+ * no rate the motor allows fits them (the body overlaps the post). F180
+ * has none: it is sized to end RC_CELL_MM to the side (14 mm from the
+ * post it turns about). */
 #define RC_SLALOM_S90_MM 85.0f
 #define RC_SLALOM_F90_MM 120.0f
 #define RC_SLALOM_F45_MM 60.0f
