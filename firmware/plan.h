@@ -23,8 +23,9 @@
  *
  * Memory: static arrays of 12 B per state, (2 W + 1) (2 H + 1) 8 states for
  * MAZE_MAX_SIZE W = H: 104,544 B for 16x16, 405,600 B for 32x32. That does
- * not fit an ATmega328P, so the planner compiles to nothing there
- * (PLAN_ENABLED 0); the host and larger targets build it. Portable C99, no
+ * not fit an AVR (2-8 KB of SRAM), so the planner compiles to nothing
+ * there (PLAN_ENABLED 0); the host builds it, and a target with the RAM
+ * can define PLAN_ENABLED 1. Portable C99, no
  * allocation, not reentrant (one search at a time). */
 #ifndef PLAN_H
 #define PLAN_H
@@ -33,7 +34,7 @@
 #include "slalom.h"
 
 #ifndef PLAN_ENABLED
-#if !defined(__AVR__) || MAZE_MAX_SIZE > 16
+#if !defined(__AVR__)
 #define PLAN_ENABLED 1
 #else
 #define PLAN_ENABLED 0

@@ -219,6 +219,36 @@ static void test_place(void **state)
     world_destroy(w);
 }
 
+/* Rows that hold an axle (the gearbox's stiction, the motor's) act about
+ * the chassis' axle whichever way the robot was built: in an open 8x8, a
+ * turn on one slow wheel (a command too weak to break the gearbox's
+ * stiction at first) and a stop, from rest facing north and facing east,
+ * end at the same place and heading relative to the start, in both wheel
+ * forms. */
+static void test_heading_invariant(void **state)
+{
+    (void)state;
+    maze_t m;
+    maze_init(&m, 8, 8);
+    maze_close_unknown(&m);
+    for (uint16_t c = 0; c < 64; c++)
+        for (uint8_t d = 0; d < 4; d++) maze_set_wall(&m, (maze_cell_t)c, d, MAZE_WALL_OPEN);
+    const int forms[2] = { SIM_WHEELS_HINGE, SIM_WHEELS_SPIN };
+    double x0 = 3.5 * cfg.world.cell_m, y0 = 3.5 * cfg.world.cell_m;
+    for (int f = 0; f < 2; f++) {
+        cfg.sim.wheels = forms[f];
+        sim_model_build(&model, &cfg, 1);
+        run_t n = drive(&m, x0, y0, M_PI / 2, 400, 40, 0.6), e = drive(&m, x0, y0, 0.0, 400, 40, 0.6);
+        /* facing east is facing north turned a quarter clockwise: north's (dx, dy) is east's (-dy, dx) */
+        double dxn = n.x - x0, dyn = n.y - y0, dxe = e.x - x0, dye = e.y - y0;
+        double dh = remainder((n.h - M_PI / 2) - e.h, 2 * M_PI);
+        if (!(fabs(dxn + dye) < 1e-4 && fabs(dyn - dxe) < 1e-4 && fabs(dh) < 1e-3 && hypot(dxn, dyn) > 0.02))
+            fail_msg("wheels form %d: north moved (%.5f, %.5f) m, east (%.5f, %.5f) m, headings differ by %.5f rad", forms[f], dxn, dyn, dxe, dye, dh);
+    }
+    config_defaults(&cfg);
+    sim_model_build(&model, &cfg, 1);
+}
+
 /* Full command for 2 s across an open 8x8 from its middle: the sideways
  * drift (m) of the robot sim_init builds for this config and seed. */
 static double veer(const simcfg_t *c, uint64_t seed)
@@ -334,6 +364,7 @@ int main(void)
         cmocka_unit_test(test_stays_on_floor),
         cmocka_unit_test(test_deterministic),
         cmocka_unit_test(test_place),
+        cmocka_unit_test(test_heading_invariant),
         cmocka_unit_test(test_asymmetry_and_variation),
         cmocka_unit_test(test_occlude_by_name),
         cmocka_unit_test(test_supply_drop),

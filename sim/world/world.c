@@ -323,7 +323,7 @@ static void hinge_wheel_joints(world_t *w, int s, const double anchor_w[3])
     w->friction[s] = dJointCreateAMotor(w->world, 0);
     dJointAttach(w->friction[s], w->chassis, w->wheel[s]);
     dJointSetAMotorNumAxes(w->friction[s], 1);
-    dJointSetAMotorAxis(w->friction[s], 0, 1, 1, 0, 0); /* the axle, in the chassis' frame */
+    dJointSetAMotorAxis(w->friction[s], 0, 1, ax[0], ax[4], ax[8]); /* the axle: ODE takes it in the world's frame and keeps it in the chassis' */
     dJointSetAMotorParam(w->friction[s], dParamVel, 0);
     dJointSetAMotorParam(w->friction[s], dParamFMax, 0);
 }
