@@ -4,7 +4,7 @@
 # drives them). uk2011follower (seed 1): the mouse reaches the goal without
 # touching a wall, its best run follows a plan with diagonal moves (the
 # firmware's log line "run N: M moves, D diagonal, V mm/s turns") and beats
-# the best of the orthogonal runs, 23.454 s (smooth 90s only, main 5481cbe,
+# the best of the orthogonal runs, 23.436 s (smooth 90s only, main e1bfe63,
 # the same inputs). japan2019 (staircases, seed 1): every speed run is a
 # planned one and none touches a wall.
 set -u
@@ -39,7 +39,7 @@ PY
 }
 
 want_rc 0 "uk2011follower: goal reached" "$S" --maze "$DB/uk2011follower.txt" --seed 1 --json --verbose
-check "$T/out" "$T/err" 1 23.454 >"$T/msg" 2>&1 && ok "uk2011follower: $(cat "$T/msg")" || bad "uk2011follower: $(cat "$T/msg")"
+check "$T/out" "$T/err" 1 23.436 >"$T/msg" 2>&1 && ok "uk2011follower: $(cat "$T/msg")" || bad "uk2011follower: $(cat "$T/msg")"
 
 want_rc 0 "japan2019: goal reached" "$S" --maze "$DB/japan2019.txt" --seed 1 --json --verbose
 check "$T/out" "$T/err" 0 0 >"$T/msg" 2>&1 && ok "japan2019: $(cat "$T/msg")" || bad "japan2019: $(cat "$T/msg")"
