@@ -65,6 +65,33 @@ static float ff_spare(float v_mm_s, float w_deg_s);
 #define RC_SMOOTH_TURNS 1
 #endif
 
+/* Integrate a turn of `degrees` (> 0) at constant forward speed v_mm_s,
+ * its rotation the profile the control tick runs (peak w_deg_s, accel
+ * accel_deg_s2, speeding up within the outer wheel's spare command):
+ * where it ends (*x_mm to the turn's side, *y_mm along the entry heading)
+ * and in how many ticks. */
+static uint16_t turn_integrate(float v_mm_s, float degrees, float w_deg_s, float accel_deg_s2, float *x_mm, float *y_mm)
+{
+    const float dt_s = 1.0f / HAL_TICK_HZ;
+    profile_t p;
+    float theta = 0, along = 0, side = 0;
+    uint16_t ticks = 0;
+    profile_reset(&p);
+    profile_start(&p, degrees, w_deg_s, 0, accel_deg_s2);
+    while (p.active && ticks < 5000u) { /* ~250 ticks; the bound is for bad constants */
+        /* as motion_tick: the rotation speeds up within the outer wheel's spare command */
+        profile_update_capped(&p, dt_s, ff_spare(v_mm_s, p.speed) * (1.0f / (RC_CMD_PER_ARC_MM_S2 * HALF_TRACK_MM * DEG_TO_RAD)));
+        float w = p.speed * DEG_TO_RAD;
+        along += v_mm_s * dt_s * cosf(theta + 0.5f * w * dt_s);
+        side += v_mm_s * dt_s * sinf(theta + 0.5f * w * dt_s);
+        theta += w * dt_s;
+        ticks++;
+    }
+    *x_mm = side;
+    *y_mm = along;
+    return ticks;
+}
+
 void motion_smooth_geometry(float v_mm_s, float *offset_mm, float *length_mm)
 {
     if (!RC_SMOOTH_TURNS) {
@@ -72,22 +99,34 @@ void motion_smooth_geometry(float v_mm_s, float *offset_mm, float *length_mm)
         *length_mm = 0;
         return;
     }
-    const float dt_s = 1.0f / HAL_TICK_HZ;
-    profile_t p;
-    float theta = 0, along = 0;
-    uint16_t ticks = 0;
-    profile_reset(&p);
-    profile_start(&p, 90.0f, RC_SMOOTH_DEG_S, 0, RC_SMOOTH_ACCEL_DEG_S2);
-    while (p.active && ticks < 5000u) { /* ~250 ticks; the bound is for bad constants */
-        /* as motion_tick: the rotation speeds up within the outer wheel's spare command */
-        profile_update_capped(&p, dt_s, ff_spare(v_mm_s, p.speed) * (1.0f / (RC_CMD_PER_ARC_MM_S2 * HALF_TRACK_MM * DEG_TO_RAD)));
-        float w = p.speed * DEG_TO_RAD;
-        along += v_mm_s * dt_s * cosf(theta + 0.5f * w * dt_s);
-        theta += w * dt_s;
-        ticks++;
+    float side;
+    uint16_t ticks = turn_integrate(v_mm_s, 90.0f, RC_SMOOTH_DEG_S, RC_SMOOTH_ACCEL_DEG_S2, &side, offset_mm);
+    /* the path is symmetric: the same along both lines */
+    *length_mm = v_mm_s * (1.0f / HAL_TICK_HZ) * ticks;
+}
+
+void motion_slalom(motion_t *m, float degrees, float w_deg_s, float accel_deg_s2)
+{
+    profile_start(&m->rot, degrees, w_deg_s, 0, accel_deg_s2);
+    m->heading_rad += degrees * DEG_TO_RAD;
+}
+
+void motion_slalom_geometry(float v_mm_s, float degrees, float w_deg_s, float accel_deg_s2, float *pre_mm, float *post_mm,
+                            float *length_mm)
+{
+    float x, y;
+    uint16_t ticks = turn_integrate(v_mm_s, degrees, w_deg_s, accel_deg_s2, &x, &y);
+    if (degrees > 179.0f) {
+        *pre_mm = x; /* a U: how far to the side it ends, */
+        *post_mm = y; /* and how far ahead of its start */
+    } else {
+        /* the exit line through (x, y) at `degrees` meets the entry line
+         * (x = 0) at y - x / tan(degrees) */
+        float a = degrees * DEG_TO_RAD;
+        *pre_mm = y - x * cosf(a) / sinf(a);
+        *post_mm = x / sinf(a);
     }
-    *offset_mm = along; /* the path is symmetric: the same along both lines */
-    *length_mm = v_mm_s * dt_s * ticks;
+    *length_mm = v_mm_s * (1.0f / HAL_TICK_HZ) * ticks;
 }
 
 float motion_wall_angle(float left_mm, float right_mm)

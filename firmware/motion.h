@@ -54,6 +54,18 @@ void motion_turn_smooth(motion_t *m, float degrees);
  * *offset_mm past it; *length_mm is its path length. From the same
  * discrete profile the control tick runs. */
 void motion_smooth_geometry(float v_mm_s, float *offset_mm, float *length_mm);
+/* A slalom: the same while moving at the forward profile's speed, with
+ * the turn's own peak rate and acceleration (slalom.c). */
+void motion_slalom(motion_t *m, float degrees, float w_deg_s, float accel_deg_s2);
+/* Where a slalom of `degrees` (> 0, either side) at constant v_mm_s goes,
+ * from the discrete profile the control tick runs: *pre_mm from its start
+ * to the crossing of the entry and exit lines, *post_mm from there to its
+ * end (more than *pre_mm where the motor caps the speeding up of the
+ * rotation but not its braking); for 180 degrees *pre_mm how far to the
+ * side it ends, *post_mm how far ahead of its start. *length_mm its path
+ * length. */
+void motion_slalom_geometry(float v_mm_s, float degrees, float w_deg_s, float accel_deg_s2, float *pre_mm, float *post_mm,
+                            float *length_mm);
 /* Standing before a flat wall that both diagonal rays hit (at a cell
  * centre, each cone's inner edge meets the wall ahead 22 mm from its ends):
  * how far the robot is turned counter-clockwise from the wall's normal,

@@ -19,7 +19,9 @@
 #include "explore.h"
 #include "hal.h"
 #include "motion.h"
+#include "plan.h"
 #include "robot_config.h"
+#include "slalom.h"
 #include "walls.h"
 
 /* the wall sensors, ToF or IR, as distances (walls.h) */
@@ -532,6 +534,161 @@ static void search_step(void)
     }
 }
 
+
+#if PLAN_ENABLED
+/* ---- Speed runs on plan_run's moves: orthogonal straights (centred on
+ * the side walls as above), diagonal straights (odometry's heading held:
+ * no side walls there) and slaloms at the turn speed (slalom.h). Each
+ * turn's straight before it (slalom_drive_t before_mm) is driven as part
+ * of the straight move ahead of it, its straight after as part of the one
+ * behind it; between two turns those two alone make a straight at the
+ * turn speed. The run tracks the node each move ends on in half units
+ * (slalom.h's grid) and its heading in eighths, to tell where the walls
+ * ahead and the cell centres are. ---- */
+static slalom_move_t run_moves[PLAN_MAX_MOVES];
+static slalom_drive_t run_drive[SLALOM_KINDS];
+static int16_t run_count;     /* moves of this run; 0: the orthogonal run (run_plan) */
+static int16_t run_idx;       /* the next move to start */
+static int16_t run_x2, run_y2; /* the node the moves so far end on, half units */
+static uint8_t run_h8;        /* the heading there, eighths clockwise from north */
+static float run_carry_mm;    /* the last turn's straight after it, not driven yet */
+static uint8_t run_turn_next; /* the straight under way leads into the turn run_moves[run_idx] */
+static uint8_t run_ortho;     /* the straight under way is orthogonal: centring */
+static float run_v_turn, run_v_diag;
+static float run_err_mm;      /* the largest tracking error of this run */
+static uint8_t run_dirty;     /* the last run's tracking error reached RC_RUN_CLEAN_MM */
+static float run_align_mm;    /* a wall ahead: the straight ends this far before its cell's centre */
+
+/* Half-unit offset (x, y) of a turn's table (right turn, entered N or NE)
+ * for a turn of side dir entered on heading h8: mirrored for a left turn
+ * (the table's NE entry becomes NW), then turned clockwise by quarters. */
+static void run_offset(int8_t x, int8_t y, uint8_t diag, int8_t dir, int16_t *dx, int16_t *dy)
+{
+    int16_t a = dir < 0 ? -x : x, b = y;
+    uint8_t base = diag ? (dir < 0 ? 7u : 1u) : 0u;
+    uint8_t q = (uint8_t)(((run_h8 - base) & 7u) >> 1);
+    for (uint8_t i = 0; i < q; i++) {
+        int16_t t = a;
+        a = b;
+        b = (int16_t)-t;
+    }
+    *dx = a;
+    *dy = b;
+}
+
+static const int8_t h8_dx[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+static const int8_t h8_dy[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+
+/* the cell whose centre is the node (x2, y2) */
+static maze_cell_t run_cell(int16_t x2, int16_t y2)
+{
+    return maze_cell(&ex.map, (uint8_t)(x2 / 2), (uint8_t)(y2 / 2)); /* a cell centre: both even */
+}
+#endif
+
+
+#if PLAN_ENABLED
+/* Whether the diagonals of a plan start where the robot knows where it
+ * is: each entered by an F45 at the end of an orthogonal straight of at
+ * least RC_DIAG_ENTRY_HALVES (centred on its side walls), none longer than
+ * RC_DIAG_MAX_HALVES, and no V90, F135 or D135 (turns between diagonals,
+ * or into one from a turn). */
+static int prun_diag_ok(int n)
+{
+    for (int i = 0; i < n; i++) {
+        const slalom_move_t *mv = &run_moves[i];
+        if (mv->kind == SLALOM_V90 || mv->kind == SLALOM_F135 || mv->kind == SLALOM_D135) return 0;
+        if (mv->kind == SLALOM_DIAG && mv->n > RC_DIAG_MAX_HALVES) return 0;
+        if (mv->kind == SLALOM_F45 && (i == 0 || run_moves[i - 1].kind != SLALOM_ORTHO || run_moves[i - 1].n < RC_DIAG_ENTRY_HALVES))
+            return 0;
+    }
+    return 1;
+}
+
+/* At the start of a speed run: the moves (run_count 0 if plan_run finds
+ * none: the orthogonal run then), at the safe speeds on the first run and
+ * after one whose tracking error reached RC_RUN_CLEAN_MM, else the fast. */
+static void prun_begin(void)
+{
+    run_count = 0;
+    if (!RC_DIAG_RUNS) return;
+    uint8_t fast = st.runs > 0 && !run_dirty;
+    plan_costs_t c;
+    c.cell_mm = RC_CELL_MM;
+    c.v_turn_mm_s = run_v_turn = fast ? RC_SLALOM_FAST_MM_S : RC_SLALOM_SAFE_MM_S;
+    c.v_diag_mm_s = run_v_diag = fast ? RC_DIAG_FAST_MM_S : RC_DIAG_SAFE_MM_S;
+    c.v_max_mm_s = RC_RUN_MM_S;
+    c.accel_mm_s2 = RC_RUN_ACCEL_MM_S2;
+    slalom_fit(run_v_turn, run_drive, c.turn_s);
+    float t_s;
+    int n = plan_run(&ex.map, &c, run_moves, PLAN_MAX_MOVES, &t_s);
+    if (n > 0 && !prun_diag_ok(n)) { /* the same without diagonals */
+        c.turn_s[SLALOM_F45] = c.turn_s[SLALOM_F135] = c.turn_s[SLALOM_D45] = c.turn_s[SLALOM_D135] = c.turn_s[SLALOM_V90] = -1;
+        n = plan_run(&ex.map, &c, run_moves, PLAN_MAX_MOVES, &t_s);
+    }
+    if (n <= 0) return;
+    unsigned diag = 0;
+    for (int i = 0; i < n; i++) diag += run_moves[i].kind == SLALOM_DIAG || run_moves[i].kind >= SLALOM_F45;
+    char line[HAL_LOG_MAX + 1];
+    hal_snprintf(line, sizeof line, HAL_STR("run %u: %u moves, %u diagonal, %u mm/s turns"), st.runs + 1u, (unsigned)n, diag, (unsigned)run_v_turn);
+    hal_log(line);
+    run_count = (int16_t)n;
+    run_idx = 0;
+    run_x2 = (int16_t)(2 * maze_x(&ex.map, ex.map.start));
+    run_y2 = (int16_t)(2 * maze_y(&ex.map, ex.map.start));
+    run_h8 = (uint8_t)(2u * ex.map.start_heading);
+    run_carry_mm = 0;
+    run_turn_next = 0;
+    run_err_mm = 0;
+}
+
+/* A straight of n half units or half steps (move kind) plus run_carry_mm,
+ * leading into the turn `next` (NULL: the run's end, at rest). */
+static void prun_straight(uint8_t kind, uint8_t n, const slalom_move_t *next)
+{
+    uint8_t ortho = !(run_h8 & 1u);
+    float unit = (run_h8 & 1u) ? RC_CELL_MM * 0.70710678f : RC_CELL_MM / 2;
+    float before = next ? run_drive[next->kind].before_mm : 0;
+    float mm = n * unit + run_carry_mm + before;
+    float v = !ortho ? run_v_diag : RC_RUN_MM_S;
+    if (kind != SLALOM_ORTHO && kind != SLALOM_DIAG) v = run_v_turn; /* between two turns */
+    run_x2 = (int16_t)(run_x2 + n * h8_dx[run_h8]);
+    run_y2 = (int16_t)(run_y2 + n * h8_dy[run_h8]);
+    start_forward(mm, v, next ? run_v_turn : 0, RC_RUN_ACCEL_MM_S2);
+    run_carry_mm = 0;
+    run_ortho = ortho;
+    run_turn_next = next != NULL;
+    /* the centre of the next cell ahead (centring's blind band) */
+    uint8_t centre = !(run_x2 & 1) && !(run_y2 & 1);
+    float shift = (centre ? RC_CELL_MM : RC_CELL_MM / 2) - before;
+    move_shift_mm = shift < 0 ? shift + RC_CELL_MM : shift;
+    /* a wall ahead to align on: at the goal's centre, or at the centre an S90 turns in */
+    run_align_mm = next ? RC_CELL_MM / 2 - before : 0;
+    if (ortho && !next && centre) wall_ahead = !maze_passable(&ex.map, run_cell(run_x2, run_y2), (uint8_t)(run_h8 >> 1), 0);
+    if (ortho && next && next->kind == SLALOM_S90 && !centre)
+        wall_ahead = !maze_passable(&ex.map, run_cell(run_x2 + h8_dx[run_h8], run_y2 + h8_dy[run_h8]), (uint8_t)(run_h8 >> 1), 0);
+}
+
+/* The turn run_moves[run_idx]: its slalom, at the turn speed throughout. */
+static void prun_turn(void)
+{
+    const slalom_move_t *mv = &run_moves[run_idx++];
+    const slalom_geom_t *g = &slalom_geom[mv->kind];
+    const slalom_drive_t *d = &run_drive[mv->kind];
+    int16_t dx, dy;
+    run_offset(g->exit_x, g->exit_y, g->from_diag, mv->dir, &dx, &dy);
+    run_x2 = (int16_t)(run_x2 + dx);
+    run_y2 = (int16_t)(run_y2 + dy);
+    run_h8 = (uint8_t)((run_h8 + mv->dir * g->turn) & 7u);
+    motion_forward_accel(&mo, d->arc_mm, run_v_turn, run_v_turn, RC_RUN_ACCEL_MM_S2);
+    motion_slalom(&mo, -45.0f * g->turn * mv->dir, d->w_deg_s, RC_SLALOM_ACCEL_DEG_S2); /* right (+1) is clockwise */
+    no_centring();
+    run_carry_mm = d->after_mm;
+    run_turn_next = 0;
+    waiting = WAIT_SMOOTH;
+}
+#endif
+
 static int path_dir(int to_goal, maze_cell_t c, uint8_t h)
 {
     return to_goal ? explore_run_dir(&ex, c, h) : explore_home_dir(&ex, c, h);
@@ -601,8 +758,18 @@ static void run_plan(int to_goal)
     run_offset_mm = 0;
 }
 
+#if PLAN_ENABLED
+static void prun_step(void);
+#endif
+
 static void run_step(int to_goal)
 {
+#if PLAN_ENABLED
+    if (to_goal && run_count > 0) {
+        prun_step();
+        return;
+    }
+#endif
     if (waiting == WAIT_TURN) {
         if (!turn_done()) return;
         run_offset_mm = 0;
@@ -630,6 +797,77 @@ static void run_step(int to_goal)
     run_plan(to_goal);
 }
 
+
+#if PLAN_ENABLED
+/* The run reached the goal: as run_plan's end of a run. */
+static void prun_end(void)
+{
+    waiting = WAIT_NONE;
+    st.cell = run_cell(run_x2, run_y2);
+    st.heading = (uint8_t)(run_h8 >> 1);
+    st.runs++;
+    run_dirty = run_err_mm >= RC_RUN_CLEAN_MM;
+    log_line(HAL_STR("run %u reached the goal at %u s"), st.runs, (unsigned)((hal_micros() - start_us) / 1000000u));
+    log_line(HAL_STR("run %u: largest tracking error %u mm"), st.runs, (unsigned)run_err_mm);
+    run_count = 0;
+    st.mode = MOUSE_RETURN;
+}
+
+/* Start the next move: a straight (with the turn after it, if any, in
+ * view), the straight between two turns, or a turn. */
+static void prun_next(void)
+{
+    if (run_idx >= run_count) {
+        prun_end();
+        return;
+    }
+    const slalom_move_t *mv = &run_moves[run_idx];
+    if (mv->kind == SLALOM_ORTHO || mv->kind == SLALOM_DIAG) {
+        run_idx++;
+        prun_straight(mv->kind, mv->n, run_idx < run_count ? &run_moves[run_idx] : NULL);
+        return;
+    }
+    if (!run_turn_next && run_carry_mm + run_drive[mv->kind].before_mm > 0.5f) {
+        prun_straight(mv->kind, 0, mv); /* the straights after the last turn and before this one */
+        return;
+    }
+    prun_turn();
+}
+
+/* One loop of a planned speed run (run_step while run_count > 0). */
+static void prun_step(void)
+{
+    float e = fmaxf(fabsf(mo.fwd_err_mm), fabsf(mo.rot_err_mm));
+    if (e > run_err_mm) run_err_mm = e;
+    if (waiting == WAIT_NONE) { /* at the start, facing the way the plan starts */
+        int8_t q = quarter(st.heading, ex.map.start_heading);
+        st.heading = ex.map.start_heading;
+        if (q) start_turn(q);
+        else prun_next();
+        return;
+    }
+    if (waiting == WAIT_TURN) {
+        if (turn_done()) prun_next();
+        return;
+    }
+    if (waiting == WAIT_SMOOTH) {
+        if (!mo.rot.active) prun_next();
+        return;
+    }
+    if (run_ortho) centring();
+    else no_centring();
+    if (wall_ahead && run_ortho) align_to_front_wall(run_align_mm);
+    if (run_turn_next) {
+        if (!mo.fwd.active) prun_turn();
+        return;
+    }
+    if (motion_busy(&mo)) return;
+    no_centring();
+    if (wall_ahead && !front_fix()) return;
+    prun_next();
+}
+#endif
+
 static void cmd_step(void);
 
 void fw_loop(void)
@@ -653,6 +891,9 @@ void fw_loop(void)
         }
         st.mode = MOUSE_RUN;
         waiting = WAIT_NONE;
+#if PLAN_ENABLED
+        prun_begin();
+#endif
         break;
     case MOUSE_RUN:
         run_step(1);

@@ -183,6 +183,71 @@
 #define RC_SMOOTH_MM_S 350.0f
 #define RC_SMOOTH_DEG_S 315.1f       /* 5.5 rad/s */
 #define RC_SMOOTH_ACCEL_DEG_S2 4010.7f /* 70 rad/s^2 */
+/* ---- speed runs with diagonals and slaloms (host builds: PLAN_ENABLED;
+ * firmware/slalom.c sizes each turn, plan.c picks the moves) ---- */
+/* 1: speed runs follow plan_run's moves; 0: orthogonal straights joined
+ * by smooth turns (run_plan) */
+#define RC_DIAG_RUNS 1
+/* Slaloms at 350 mm/s, the smooth 90's speed: the S90 (a 90 inside one
+ * cell) fits its 90 mm of room up to there (above it the outer wheel runs
+ * into the motor's top speed); at 300 the zigzags of staircases took
+ * longer (japan2019 seed 1: best run 30.0 s against 27.0). */
+#define RC_SLALOM_SAFE_MM_S 350.0f
+#define RC_SLALOM_FAST_MM_S 350.0f
+/* Diagonal straights: the wheels pass the posts 3.1 mm off on the
+ * diagonal's centre line (posts 63.6 mm from it, minus 52 mm of wheel and
+ * 8.5 mm of post across the diagonal); held on odometry's heading, nothing
+ * to centre on. The speed runs climb: the first at _SAFE, each later one
+ * at _FAST if the run before it ended with the wheels' tracking error
+ * under RC_RUN_CLEAN_MM (a bump into a post or wall shows there; the
+ * firmware has no other word on a contact). On this robot both are 400:
+ * with 500 after a clean run, 6 of the 479 reachable classic mazes (seed
+ * 1) touched a post, each in a later run on a plan with a short diagonal;
+ * at 400 the planner finds no diagonal worth driving (it costs more than
+ * it saves at that speed) and none of the 479 touched a wall. */
+#define RC_DIAG_SAFE_MM_S 400.0f
+#define RC_DIAG_FAST_MM_S 400.0f
+#define RC_RUN_CLEAN_MM 10.0f
+/* Diagonals only where the robot knows where it is (mouse.c
+ * prun_diag_ok), else the run is planned without them: entered from an
+ * orthogonal straight of at least RC_DIAG_ENTRY_HALVES (centred on its
+ * side walls) and at most RC_DIAG_MAX_HALVES long. Measured in mmsim
+ * (seed 1, the true pose against the plan's): a diagonal starts with the
+ * held heading 0.2-0.6 degrees off the maze's and 1-2 mm off its line,
+ * which puts the wheels into a post within 3-4 half steps. Every 8th
+ * classic maze (61): diagonals of any length entered from anywhere, 18
+ * touched; from a centred straight of 2, up to 6 half steps: uk1990f; of
+ * 4, up to 4: japan2013eq; of 2, up to 2: none. */
+#define RC_DIAG_ENTRY_HALVES 2
+#define RC_DIAG_MAX_HALVES 2
+/* Each slalom's rotation speeds up at the smooth 90's 70 rad/s^2 (the
+ * outer wheel's acceleration budget, RC_CMD_FF_MAX) up to a peak rate
+ * slalom.c chooses between these bounds (deg/s: 1 and 15 rad/s; the
+ * motor's cap on the outer wheel takes over below 15 at these speeds). */
+#define RC_SLALOM_ACCEL_DEG_S2 4010.7f
+#define RC_SLALOM_W_MIN_DEG_S 57.3f
+#define RC_SLALOM_W_MAX_DEG_S 859.4f
+/* From each turn's start to its corner, mm (slalom.c sizes the peak rate
+ * to it). Larger cuts the corner more (a shorter, faster path) and brings
+ * the body nearer the inner post. Checked at 300 and 350 mm/s by
+ * sweeping the body (96 x 120 mm, wheels to +-52 mm) along the integrated
+ * path against 12 mm posts and every wall the turn does not cross
+ * (test/test_slalom.c; at 350): S90 85 (of 90: 22 mm from the wall
+ * ahead), F90 120 (of 270: 20 mm from the inner post; 160: 2.4 mm), F45
+ * and D45 60 (of 127: 3.2 mm, as on the diagonal itself; 100: 0.3 mm),
+ * V90 70 (of 127: 3.1 mm; 85: 0.2 mm). V90 is not driven (0): it joins
+ * two diagonals, and a diagonal starts only from a centred straight
+ * (RC_DIAG_ENTRY_HALVES). F135 and D135: 0, not driven: at 250-350 mm/s
+ * no rate the motor allows fits them (the body overlaps the post). F180
+ * has none: it is sized to end RC_CELL_MM to the side (14 mm from the
+ * post it turns about). */
+#define RC_SLALOM_S90_MM 85.0f
+#define RC_SLALOM_F90_MM 120.0f
+#define RC_SLALOM_F45_MM 60.0f
+#define RC_SLALOM_D45_MM 60.0f
+#define RC_SLALOM_V90_MM 0.0f
+#define RC_SLALOM_F135_MM 0.0f
+#define RC_SLALOM_D135_MM 0.0f
 /* sense the next cell's walls this far before its centre: the diagonal
  * sensors (50 mm ahead of the body's centre) are then at its entry
  * boundary, and their cones (32.5 to 57.5 degrees off the heading) meet

@@ -15,6 +15,12 @@
  *   V90   corner (1,1): one diagonal step before and after. */
 #include "slalom.h"
 
+#include <math.h>
+
+#include "motion.h"
+#include "plan.h"
+#include "robot_config.h"
+
 const slalom_geom_t slalom_geom[SLALOM_KINDS] = {
     [SLALOM_ORTHO] = {0},
     [SLALOM_DIAG] = {0},
@@ -27,3 +33,65 @@ const slalom_geom_t slalom_geom[SLALOM_KINDS] = {
     [SLALOM_D135] = {1, -1, 3, 1, 1, 1, 2, {{1, 1}, {1, -1}}},
     [SLALOM_V90] = {2, 0, 2, 1, 1, 1, 2, {{1, 1}, {2, 0}}},
 };
+
+/* ---- The turns as driven (slalom.h slalom_fit) ---- */
+#if PLAN_ENABLED
+#define HALF_MM (RC_CELL_MM / 2) /* one half unit of the grid */
+#define TURN_NO_FIT_S (-1.0f)    /* plan_costs_t: a turn not used */
+
+/* the distance from each turn's start to its corner (robot_config.h,
+ * where each figure's clearance is given); 0: not driven */
+static const float corner_target_mm[SLALOM_KINDS] = {
+    [SLALOM_S90] = RC_SLALOM_S90_MM,   [SLALOM_F90] = RC_SLALOM_F90_MM,   [SLALOM_F180] = RC_CELL_MM,
+    [SLALOM_F45] = RC_SLALOM_F45_MM,   [SLALOM_F135] = RC_SLALOM_F135_MM, [SLALOM_D45] = RC_SLALOM_D45_MM,
+    [SLALOM_D135] = RC_SLALOM_D135_MM, [SLALOM_V90] = RC_SLALOM_V90_MM,
+};
+
+/* The peak rate, deg/s, that keeps the corner of a turn of `degrees` at v
+ * within target_mm of both its start and its end (the loosest such turn:
+ * the shortest path), by bisection; 0 if even the fastest rate the motor
+ * allows does not. *pre_mm, *post_mm, *arc_mm: that turn's
+ * (motion_slalom_geometry; a U: its width and its end's advance). */
+static float fit_rate(float v, float degrees, float target_mm, float *pre_mm, float *post_mm, float *arc_mm)
+{
+    float lo = RC_SLALOM_W_MIN_DEG_S, hi = RC_SLALOM_W_MAX_DEG_S, a, b, len;
+    uint8_t u = degrees > 179.0f; /* a U: only its width counts */
+    motion_slalom_geometry(v, degrees, hi, RC_SLALOM_ACCEL_DEG_S2, &a, &b, &len);
+    if ((u ? a : fmaxf(a, b)) > target_mm) return 0;
+    for (uint8_t i = 0; i < 24; i++) {
+        float mid = 0.5f * (lo + hi);
+        motion_slalom_geometry(v, degrees, mid, RC_SLALOM_ACCEL_DEG_S2, &a, &b, &len);
+        if ((u ? a : fmaxf(a, b)) > target_mm) lo = mid;
+        else hi = mid;
+    }
+    motion_slalom_geometry(v, degrees, hi, RC_SLALOM_ACCEL_DEG_S2, pre_mm, post_mm, arc_mm);
+    return hi;
+}
+
+void slalom_fit(float v_mm_s, slalom_drive_t drive[SLALOM_KINDS], float turn_s[SLALOM_KINDS])
+{
+    for (uint8_t k = 0; k < SLALOM_KINDS; k++) {
+        const slalom_geom_t *g = &slalom_geom[k];
+        slalom_drive_t *d = &drive[k];
+        d->w_deg_s = d->before_mm = d->arc_mm = d->after_mm = 0;
+        turn_s[k] = TURN_NO_FIT_S;
+        if (k < SLALOM_S90 || corner_target_mm[k] <= 0) continue;
+        float pre = 0, post = 0, arc = 0;
+        d->w_deg_s = fit_rate(v_mm_s, 45.0f * g->turn, corner_target_mm[k], &pre, &post, &arc);
+        if (d->w_deg_s <= 0) continue;
+        if (g->turn == 4) { /* F180: from the entry node to the exit node, level */
+            d->before_mm = post < 0 ? -post : 0;
+            d->after_mm = d->before_mm + post;
+        } else {
+            d->before_mm = HALF_MM * hypotf(g->corner_x, g->corner_y) - pre;
+            d->after_mm = HALF_MM * hypotf(g->exit_x - g->corner_x, g->exit_y - g->corner_y) - post;
+        }
+        d->arc_mm = arc;
+        if (d->before_mm < 0 || d->after_mm < 0) {
+            d->w_deg_s = 0;
+            continue;
+        }
+        turn_s[k] = (d->before_mm + d->arc_mm + d->after_mm) / v_mm_s;
+    }
+}
+#endif

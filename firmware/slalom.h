@@ -64,4 +64,22 @@ typedef struct {
     uint8_t n;
 } slalom_move_t;
 
+/* ---- The turns as driven: each a slalom at constant forward speed (the
+ * rotation profile motion_slalom runs), sized so that the distance from
+ * its start to its corner is robot_config.h's RC_SLALOM_*_MM for that
+ * kind (F180: so that it ends RC_CELL_MM to the side). The straights
+ * before and after it fill the rest of the room on each side of the
+ * corner. ---- */
+typedef struct {
+    float w_deg_s;   /* peak rotation rate; 0: the turn does not fit at this speed */
+    float before_mm; /* straight from the entry node to the turn's start */
+    float arc_mm;    /* path length of the turn itself */
+    float after_mm;  /* straight from its end to the exit node */
+} slalom_drive_t;
+
+/* Size every turn for forward speed v_mm_s: drive[] for the executor,
+ * turn_s[] the time from entry node to exit node for the planner (-1:
+ * the turn does not fit, plan.h: not used). Host builds only (PLAN_ENABLED). */
+void slalom_fit(float v_mm_s, slalom_drive_t drive[SLALOM_KINDS], float turn_s[SLALOM_KINDS]);
+
 #endif
