@@ -231,10 +231,13 @@
  * measured within RC_DIAG_TOF_GATE_MM of expected. Measured in mmsim (seed
  * 1, every 8th classic maze, 61): with it, diagonals of up to 12 half
  * steps at 500 mm/s touched no post (without it, of up to 6: uk1990f and
- * uk2011follower did); at 600 two mazes touched. Off (0): the planner
- * takes a diagonal only in 10 of the 61 mazes (none on japan2019, even at
- * 1000 mm/s), so the median best run does not move (10 faster, none
- * slower; uk2011follower 22.78 s against 23.51 s). To use it: 1 here,
+ * uk2011follower did); at 600 two mazes touched. On all 479 reachable
+ * classic mazes at 500 and up to 12, four still touched (taiwan2011f and
+ * br2024-robochallenge-day3 on the first speed run, also with up to 6;
+ * ies90f, uk2024-hazlemere). Off (0) for that, and because it gains
+ * little: the planner takes a diagonal in 9 of the 61 mazes (none on
+ * japan2019, even at 1000 mm/s), so the median best run does not move
+ * (uk2011follower 22.78 s against 23.51 s). To try it: 1 here,
  * RC_DIAG_MAX_HALVES 12, RC_DIAG_SAFE_MM_S and _FAST_MM_S 500. */
 #define RC_DIAG_TOF 0
 #define RC_DIAG_TOF_START_MM 1.5f    /* the estimate's standard deviation at the start: the entry's 1-2 mm */
