@@ -16,6 +16,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "diagref.h"
 #include "explore.h"
 #include "hal.h"
 #include "motion.h"
@@ -642,6 +643,81 @@ static void prun_begin(void)
     run_err_mm = 0;
 }
 
+/* The diagonal reference (RC_DIAG_TOF, diagref.h): the robot's position in
+ * the maze (mm from the outer corner of cell (0, 0), x east, y north) is
+ * dg_p plus odometry's travel since the diagonal began, turned into the
+ * maze's frame by dg_psi; dg_p starts where the plan has the robot then and
+ * each trusted side reading moves it. On a diagonal the left sensor looks
+ * along one maze axis and the right one along the other, so the estimate's
+ * x and y are two independent one-dimensional Kalman filters (variance
+ * dg_var: RC_DIAG_TOF_START_MM at the start, growing by
+ * RC_DIAG_TOF_DRIFT_MM2 per mm driven; a reading's variance (RC_TOF_CV x
+ * its distance)^2). */
+static float dg_px, dg_py;    /* the estimate at the diagonal's start, mm */
+static float dg_ox, dg_oy;    /* odometry's position then, mm */
+static float dg_psi;          /* the maze's frame turned from odometry's, rad */
+static float dg_lx, dg_ly;    /* a point of the diagonal's line, mm */
+static float dg_a;            /* its heading, rad counter-clockwise from east */
+static uint8_t dg_seq[2];     /* the side readings last looked at */
+static float dg_var[2];       /* the variance of dg_px and dg_py, mm^2 */
+static float dg_dist_mm;      /* odometry's distance when they last grew */
+
+/* A diagonal straight starts from the node (run_x2, run_y2), the robot
+ * run_carry_mm short of it (a turn's straight after it): the reference's
+ * starting point. */
+static void diag_anchor(void)
+{
+    float a = 1.5707963f - 0.7853982f * (float)run_h8; /* the heading, counter-clockwise from east */
+    dg_lx = (float)(run_x2 + 1) * (RC_CELL_MM / 2);
+    dg_ly = (float)(run_y2 + 1) * (RC_CELL_MM / 2);
+    dg_px = dg_lx - run_carry_mm * cosf(a);
+    dg_py = dg_ly - run_carry_mm * sinf(a);
+    dg_ox = mo.odom.x_mm;
+    dg_oy = mo.odom.y_mm;
+    dg_psi = a - 1.5707963f - mo.heading_rad;
+    dg_a = a;
+    dg_var[0] = dg_var[1] = RC_DIAG_TOF_START_MM * RC_DIAG_TOF_START_MM;
+    dg_dist_mm = mo.odom.dist_mm;
+    dg_seq[0] = hal_distance(HAL_TOF_LEFT).seq;
+    dg_seq[1] = hal_distance(HAL_TOF_RIGHT).seq;
+}
+
+/* On a diagonal straight: each new side reading that diagref_expect
+ * trusts (and within RC_DIAG_TOF_GATE_MM of it) moves the position
+ * estimate along the sensor's axis by the filter's gain times the
+ * difference; the estimate's offset right of the diagonal's line steers
+ * (mo.lateral_mm) as wall centring does. */
+static void diag_centring(void)
+{
+    float cp = cosf(dg_psi), sp = sinf(dg_psi), dx = mo.odom.x_mm - dg_ox, dy = mo.odom.y_mm - dg_oy;
+    float px = dg_px + cp * dx - sp * dy, py = dg_py + sp * dx + cp * dy;
+    float b = 1.5707963f + mo.odom.theta_rad + dg_psi, cb = cosf(b), sb = sinf(b);
+    float grow = RC_DIAG_TOF_DRIFT_MM2 * (mo.odom.dist_mm - dg_dist_mm);
+    dg_var[0] += grow;
+    dg_var[1] += grow;
+    dg_dist_mm = mo.odom.dist_mm;
+    for (uint8_t i = 0; i < 2; i++) {
+        hal_distance_t d = hal_distance(i ? HAL_TOF_RIGHT : HAL_TOF_LEFT);
+        if (d.seq == dg_seq[i]) continue;
+        dg_seq[i] = d.seq;
+        if (d.timeout || fabsf(mo.odom.theta_rad - mo.heading_rad) > 0.035f) continue; /* 2 degrees: turning */
+        float side = i ? -RC_TOF_SIDE_X_MM : RC_TOF_SIDE_X_MM; /* to the left */
+        float sx = px + RC_TOF_SIDE_Y_MM * cb - side * sb, sy = py + RC_TOF_SIDE_Y_MM * sb + side * cb;
+        float ax = b + (i ? -0.7853982f : 0.7853982f);
+        float e = diagref_expect(&ex.map, sx, sy, ax, RC_DIAG_TOF_MAX_MM, RC_DIAG_TOF_MARGIN_MM);
+        if (e < 0 || fabsf((float)d.mm - e) > RC_DIAG_TOF_GATE_MM) continue;
+        uint8_t ay = fabsf(cosf(ax)) < fabsf(sinf(ax)); /* the axis is the maze's y */
+        float r = RC_TOF_CV * e, gain = dg_var[ay] / (dg_var[ay] + r * r), k = gain * (e - (float)d.mm);
+        dg_var[ay] *= 1.0f - gain;
+        dg_px += k * cosf(ax);
+        dg_py += k * sinf(ax);
+        px += k * cosf(ax);
+        py += k * sinf(ax);
+    }
+    mo.lateral_mm = (px - dg_lx) * sinf(dg_a) - (py - dg_ly) * cosf(dg_a);
+    mo.lateral_valid = 1;
+}
+
 /* A straight of n half units or half steps (move kind) plus run_carry_mm,
  * leading into the turn `next` (NULL: the run's end, at rest). */
 static void prun_straight(uint8_t kind, uint8_t n, const slalom_move_t *next)
@@ -652,6 +728,7 @@ static void prun_straight(uint8_t kind, uint8_t n, const slalom_move_t *next)
     float mm = n * unit + run_carry_mm + before;
     float v = !ortho ? run_v_diag : RC_RUN_MM_S;
     if (kind != SLALOM_ORTHO && kind != SLALOM_DIAG) v = run_v_turn; /* between two turns */
+    if (!ortho && RC_DIAG_TOF) diag_anchor();
     run_x2 = (int16_t)(run_x2 + n * h8_dx[run_h8]);
     run_y2 = (int16_t)(run_y2 + n * h8_dy[run_h8]);
     start_forward(mm, v, next ? run_v_turn : 0, RC_RUN_ACCEL_MM_S2);
@@ -855,6 +932,7 @@ static void prun_step(void)
         return;
     }
     if (run_ortho) centring();
+    else if (RC_DIAG_TOF) diag_centring();
     else no_centring();
     if (wall_ahead && run_ortho) align_to_front_wall(run_align_mm);
     if (run_turn_next) {

@@ -72,6 +72,7 @@
  * wall's normal, 45 - 12.5 = 32.5 degrees off it, not along the axis; the
  * cosine and sine of that angle turn a reading into distances. */
 #define RC_TOF_FOV_DEG 25.0f
+#define RC_TOF_RAYS 5                /* the cone as robots/paper.ini's rays = 5 models it */
 #define RC_DIAG_EDGE_COS 0.8434f     /* cos(32.5 deg) */
 #define RC_DIAG_EDGE_SIN 0.5373f     /* sin(32.5 deg) */
 /* A diagonal sensor sees a side wall 84 - 40 = 44 mm away sideways:
@@ -220,6 +221,32 @@
  * 4, up to 4: japan2013eq; of 2, up to 2: none. */
 #define RC_DIAG_ENTRY_HALVES 2
 #define RC_DIAG_MAX_HALVES 2
+/* 1: a position reference on diagonal straights from the diagonal ToF
+ * sensors (mouse.c diag_centring, diagref.h): each reading of a known wall
+ * face square to the sensor's axis is compared with the one the map
+ * predicts from the estimated pose, a Kalman filter per maze axis moves the
+ * estimate, and its offset from the diagonal's line steers as wall
+ * centring does. Readings used: expected within RC_DIAG_TOF_MAX_MM, every
+ * other surface (or unknown wall) at least RC_DIAG_TOF_MARGIN_MM further,
+ * measured within RC_DIAG_TOF_GATE_MM of expected. Measured in mmsim (seed
+ * 1, every 8th classic maze, 61): with it, diagonals of up to 12 half
+ * steps at 500 mm/s touched no post (without it, of up to 6: uk1990f and
+ * uk2011follower did); at 600 two mazes touched. On all 479 reachable
+ * classic mazes at 500 and up to 12, four still touched (taiwan2011f and
+ * br2024-robochallenge-day3 on the first speed run, also with up to 6;
+ * ies90f, uk2024-hazlemere). Off (0) for that, and because it gains
+ * little: the planner takes a diagonal in 9 of the 61 mazes (none on
+ * japan2019, even at 1000 mm/s), so the median best run does not move
+ * (all 479: 63 faster, 1 slower, mean -0.46 %; uk2011follower 22.78 s
+ * against 23.51 s). To try it: 1 here,
+ * RC_DIAG_MAX_HALVES 12, RC_DIAG_SAFE_MM_S and _FAST_MM_S 500. */
+#define RC_DIAG_TOF 0
+#define RC_DIAG_TOF_START_MM 1.5f    /* the estimate's standard deviation at the start: the entry's 1-2 mm */
+#define RC_DIAG_TOF_DRIFT_MM2 0.02f  /* its variance's growth per mm driven, mm^2 (ours: tuned in mmsim) */
+#define RC_TOF_CV 0.042f             /* a reading's standard deviation per mm of it (robots/paper.ini [tof.*]: 4.2 %) */
+#define RC_DIAG_TOF_MAX_MM 200.0f     /* mm: 8.4 mm of noise there */
+#define RC_DIAG_TOF_MARGIN_MM 8.0f    /* mm */
+#define RC_DIAG_TOF_GATE_MM 15.0f     /* mm */
 /* Each slalom's rotation speeds up at the smooth 90's 70 rad/s^2 (the
  * outer wheel's acceleration budget, RC_CMD_FF_MAX) up to a peak rate
  * slalom.c chooses between these bounds (deg/s: 1 and 15 rad/s; the

@@ -45,6 +45,7 @@
 #define RC_TOF_SIDE_X_MM 12.0f       /* mm off the centre line */
 #define RC_TOF_SIDE_Y_MM 11.0f       /* mm ahead of the body centre */
 #define RC_TOF_FOV_DEG 25.0f         /* deg, full cone */
+#define RC_TOF_RAYS 5                 /* rays across the cone, robots/kerise-v5.ini */
 #define RC_DIAG_EDGE_COS 0.8434f     /* cos(32.5 deg): robot_config.h */
 #define RC_DIAG_EDGE_SIN 0.5373f     /* sin(32.5 deg) */
 /* a side wall 45 - 3 - 12 = 30 mm out from the sensor: 30 / cos(32.5 deg) */
@@ -86,6 +87,13 @@
 #define RC_RUN_CLEAN_MM 10.0f         /* mm */
 #define RC_DIAG_ENTRY_HALVES 2        /* half units */
 #define RC_DIAG_MAX_HALVES 6          /* half steps */
+#define RC_DIAG_TOF 0
+#define RC_DIAG_TOF_START_MM 1.5f     /* mm, as robot_config.h */
+#define RC_DIAG_TOF_DRIFT_MM2 0.02f   /* mm^2 per mm, as robot_config.h */
+#define RC_TOF_CV 0.042f              /* per mm of reading, as robot_config.h */
+#define RC_DIAG_TOF_MAX_MM 100.0f     /* mm: robot_config.h's halved with the cell */
+#define RC_DIAG_TOF_MARGIN_MM 4.0f    /* mm: halved */
+#define RC_DIAG_TOF_GATE_MM 8.0f      /* mm: about halved */
 #define RC_SLALOM_ACCEL_DEG_S2 RC_SMOOTH_ACCEL_DEG_S2
 #define RC_SLALOM_W_MIN_DEG_S 57.3f   /* deg/s */
 #define RC_SLALOM_W_MAX_DEG_S 859.4f  /* deg/s */

@@ -83,6 +83,7 @@
 #define RC_TOF_SIDE_X_MM 22.0f
 #define RC_TOF_SIDE_Y_MM 28.0f
 #define RC_TOF_FOV_DEG 6.0f          /* [ir.*] half_angle_deg 3, both sides */
+#define RC_TOF_RAYS 1                /* one axis: not used (diagref.c is host-only) */
 #define RC_DIAG_EDGE_COS 0.7071f     /* cos 45 deg */
 #define RC_DIAG_EDGE_SIN 0.7071f     /* sin 45 deg */
 #define RC_SIDE_WALL_MM 87.7f        /* (84 - 22) / cos 45 deg, centred */
@@ -144,6 +145,13 @@
 #define RC_RUN_CLEAN_MM 10.0f         /* mm */
 #define RC_DIAG_ENTRY_HALVES 2        /* half units */
 #define RC_DIAG_MAX_HALVES 6          /* half steps */
+#define RC_DIAG_TOF 0
+#define RC_DIAG_TOF_START_MM 1.5f     /* mm */
+#define RC_DIAG_TOF_DRIFT_MM2 0.02f   /* mm^2 per mm */
+#define RC_TOF_CV 0.042f              /* per mm of reading */
+#define RC_DIAG_TOF_MAX_MM 200.0f     /* mm */
+#define RC_DIAG_TOF_MARGIN_MM 8.0f    /* mm */
+#define RC_DIAG_TOF_GATE_MM 15.0f     /* mm */
 #define RC_SLALOM_ACCEL_DEG_S2 RC_SMOOTH_ACCEL_DEG_S2
 #define RC_SLALOM_W_MIN_DEG_S 57.3f   /* deg/s */
 #define RC_SLALOM_W_MAX_DEG_S 859.4f  /* deg/s */
