@@ -44,7 +44,10 @@ struct world {
     dJointID friction[2];  /* the gearbox's stiction on each wheel (an angular motor, target speed 0) */
     double spin_j[2];      /* each spin body's inertia about its axle, kg*m^2 */
     double spin_before[2]; /* each wheel's spin before the ODE step in progress, rad/s */
-    double reaction_nm[2]; /* J * the spin's change over the last ODE step, about the axle, N*m: the chassis takes it next (spin_advance) */
+    double wheel_j[2];     /* each wheel's own inertia about its axle (its cylinder's, no rotor), kg*m^2: what couples spin and chassis (spin_advance) */
+    double reaction_nm[2]; /* wheel_j * the spin's change over the last ODE step / h, about the axle, N*m: the chassis takes it next (spin_advance) */
+    double pitch_before;   /* the chassis' rate about its axle (its x) before the ODE step in progress, rad/s */
+    double pitch_acc;      /* its change over the last ODE step / h, rad/s^2: wheel_j times it turns each spin body next (spin_advance) */
     double wheel_angle[2]; /* each wheel's angle about its axle, rad in (-pi, pi], + forward */
     dJointID lift, lock[2]; /* world_lift: chassis held above the floor, wheels locked */
     dGeomID *wall;          /* the maze's boxes (posts and walls), by wallgrid id */
@@ -190,9 +193,8 @@ static void chassis_mass(const world_t *w, dMass *mb, double com[3])
         dMassTranslate(&mc, 0, k == 0 ? c->robot.caster_y_m : c->robot.caster2_y_m, c->robot.caster_r_m);
         dMassAdd(mb, &mc);
     }
-    for (int s = 0; s < 2 && w->spin; s++) { /* spin bodies: the wheels ride in the chassis; their spin about the axle is the spin body's */
+    for (int s = 0; s < 2 && w->spin; s++) { /* spin bodies: the wheels ride in the chassis, their inertia about the axle too (spin_advance's note); their spin relative to it is the spin body's */
         dMassSetCylinderTotal(&mc, c->robot.wheel_mass_kg, 1, w->model->wheel_r_m[s], c->robot.wheel_w_m);
-        mc.I[0] = 0;
         dMassTranslate(&mc, s == WORLD_LEFT ? -c->robot.wheel_x_m : c->robot.wheel_x_m, c->robot.axle_y_m, w->model->wheel_r_m[s]);
         dMassAdd(mb, &mc);
     }
@@ -346,6 +348,7 @@ static void wheel_body(world_t *w, int s)
     w->wheel[s] = dBodyCreate(w->world);
     dMassSetParameters(&m, WORLD_SPIN_HEAVY, 0, 0, 0, j, WORLD_SPIN_HEAVY, WORLD_SPIN_HEAVY, 0, 0, 0);
     w->spin_j[s] = j;
+    w->wheel_j[s] = 0.5 * c->robot.wheel_mass_kg * r * r;
     dBodySetMass(w->wheel[s], &m);
     dBodySetGravityMode(w->wheel[s], 0);
     /* No gyroscopic term on a wheel (its spin is relative to the chassis,
@@ -427,12 +430,13 @@ static void spin_place(world_t *w, int s, double rate_rad_s)
 }
 
 /* A torque t_nm about wheel s's axle between the chassis and the wheel
- * (+ turns the wheel forward; the chassis takes the same torque, as on a
- * hinge's first body). */
+ * (+ turns the wheel forward). On the spin body only: the spin is relative
+ * to the chassis, so a torque between the two acts on the spin alone; the
+ * chassis feels the wheel through the tyre's force, which it takes at the
+ * tyre's point, and through the wheel's own inertia (spin_advance). */
 static void spin_torque(world_t *w, int s, double t_nm)
 {
     dBodyAddRelTorque(w->wheel[s], t_nm, 0, 0);
-    dBodyAddRelTorque(w->chassis, t_nm, 0, 0);
 }
 
 /* Wheel s's spin rate relative to the chassis, rad/s, + forward (either form). */
@@ -762,7 +766,10 @@ static void drive_wheel(world_t *w, int s, const motor_drive_t *d)
     } else {
         dJointSetAMotorParam(w->friction[s], dParamFMax, d->friction_nm);
     }
-    if (w->spin) dBodyAddRelTorque(w->chassis, w->reaction_nm[s], 0, 0);
+    if (w->spin) {
+        dBodyAddRelTorque(w->chassis, w->reaction_nm[s], 0, 0);
+        dBodyAddRelTorque(w->wheel[s], w->wheel_j[s] * w->pitch_acc, 0, 0);
+    }
 }
 
 /* A contact episode over: counted once for each kind it had. */
@@ -801,21 +808,39 @@ static int sub_steps(world_t *w, double h_s)
     return (int)ceil(h_s / WORLD_CONTACT_STEP_S - 1e-9);
 }
 
+/* The chassis' rate about its axle (its x), rad/s, + nose up. */
+static double chassis_pitch_rate(const world_t *w)
+{
+    const dReal *om = dBodyGetAngularVel(w->chassis), *R = dBodyGetRotation(w->chassis);
+    return om[0] * R[0] + om[1] * R[4] + om[2] * R[8];
+}
+
 /* After an ODE step: each wheel's angle advanced by its end spin (as ODE
- * moves a body by its end velocity), and the chassis' share of the wheel's
- * torques for the next step. The tyre's force acts on the chassis at the
- * tyre's point, so the chassis already feels its moment about the axle,
- * which on a real robot goes to the wheel; the motor's reaction, which the
- * real chassis feels, the spin body hands to the world. Their sum is the
- * torque that changed the spin, J * dw/h: the chassis takes that about its
- * axle, a step late (it only pitches the chassis: with it the pitch under
- * acceleration is the hinged wheels', bench/ode_rows.c). */
+ * moves a body by its end velocity), and the coupling of spin and chassis
+ * for the next step. With s the spin relative to the chassis and p the
+ * chassis' turn about the axle, a wheel of inertia Jw and its rotor (Jr,
+ * gear ratio N) hold the kinetic energy Jw (s' + p')^2 / 2 + Jr (N s' + p')^2 / 2.
+ * The spin body holds (Jw + N^2 Jr) s'^2 / 2; the chassis, Jw p'^2 / 2
+ * (chassis_mass); the cross term (Jw + N Jr) s' p' becomes a torque of
+ * Jw s'' on the chassis and Jw p'' on the spin, each a step late. That and
+ * the tyre's force at the tyre's point are all the chassis takes from the
+ * wheel: of the motor's torque, what spins the rotor (N^2 Jr s'', 14 times
+ * the wheel's own inertia for the paper robot) reaches the chassis only as
+ * the rotor's N Jr s'. N Jr is left out of the cross term: its sign is the
+ * gear train's (each spur stage turns the rotor the other way), which the
+ * robot files do not give, and it is under half of Jw for the paper robot
+ * (6e-7 against 1.3e-6 kg*m^2). Handed J s'' instead (the motor's torque
+ * as if it all reacted on the chassis), a braking robot would pitch nose
+ * down harder and bounce a wheel off the floor as its nose meets it: the
+ * example firmware's one-cell moves end 1.2 mm past its odometry, against
+ * 0.0 mm so (docs/BENCHMARKS.md). */
 static void spin_advance(world_t *w)
 {
+    w->pitch_acc = (chassis_pitch_rate(w) - w->pitch_before) / w->h_s;
     for (int s = 0; s < 2; s++) {
         double rate = spin_rate(w, s);
         w->wheel_angle[s] = remainder(w->wheel_angle[s] + rate * w->h_s, 2 * M_PI);
-        w->reaction_nm[s] = w->spin_j[s] * (rate - w->spin_before[s]) / w->h_s;
+        w->reaction_nm[s] = w->wheel_j[s] * (rate - w->spin_before[s]) / w->h_s;
     }
 }
 
@@ -832,6 +857,7 @@ void world_step(world_t *w, const motor_drive_t drive[2])
             w->spin_before[s] = spin_rate(w, s);
             spin_place(w, s, w->spin_before[s]);
         }
+        if (w->spin) w->pitch_before = chassis_pitch_rate(w);
         /* ODE clears the added torques after each of its steps */
         drive_wheel(w, WORLD_LEFT, &drive[WORLD_LEFT]);
         drive_wheel(w, WORLD_RIGHT, &drive[WORLD_RIGHT]);
@@ -1066,6 +1092,7 @@ void world_place(world_t *w, double x_m, double y_m, double heading_rad, const d
         double wp[3], ww[3];
         if (w->spin) {
             w->wheel_angle[s] = remainder(wheel_rad[s], 2 * M_PI);
+            w->reaction_nm[s] = w->pitch_acc = 0; /* put down at rest: no coupling left from before */
             spin_place(w, s, 0);
             continue;
         }
