@@ -69,7 +69,7 @@ static const keytab_t keys[] = {
     K("sim", sim, step_s, 0.001, 1e-5, 0.01, "s", "1 kHz physics"),
     W("sim", sim, solver, 1, solvers, "exact: dWorldStep, no creep at rest, drives straight (docs/GUIDE-robot.md); quickstep slid a resting robot 10 mm/min"),
     KW("sim", sim, solver_iterations, 10, 1, 200, "1", "solver = quickstep only: at 5 the wheel hinges give and a straight run crabs 1.4 degrees"),
-    W("sim", sim, wheels, 0, wheel_forms, "hinge: a wheel a body on a hinge (19 rows); spin: its spin a body (9 rows, 47 % cheaper; stops 1.2 mm past odometry's: docs/BENCHMARKS.md)"),
+    W("sim", sim, wheels, 0, wheel_forms, "hinge: a wheel a body on a hinge (19 rows); spin: its spin a body (9 rows, 47 % cheaper; not yet the default: docs/BENCHMARKS.md)"),
     K("sim", sim, time_limit_s, 600, 1, 86400, "s", "contest rules: 10 minutes"),
 };
 
