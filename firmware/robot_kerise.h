@@ -79,31 +79,11 @@
 #define RC_SMOOTH_ACCEL_DEG_S2 4010.7f /* 70 rad/s^2, as robot_config.h */
 /* speed runs with diagonals and slaloms: not for this robot (its turns'
  * clearances in half-size cells are unchecked); the names as robot_config.h */
-#define RC_DIAG_RUNS 0
-#define RC_SLALOM_SAFE_MM_S RC_SMOOTH_MM_S
-#define RC_SLALOM_FAST_MM_S RC_SMOOTH_MM_S
-#define RC_DIAG_SAFE_MM_S RC_SMOOTH_MM_S
-#define RC_DIAG_FAST_MM_S RC_SMOOTH_MM_S
-#define RC_RUN_CLEAN_MM 10.0f         /* mm */
-#define RC_DIAG_ENTRY_HALVES 2        /* half units */
-#define RC_DIAG_MAX_HALVES 6          /* half steps */
-#define RC_DIAG_TOF 0
-#define RC_DIAG_TOF_START_MM 1.5f     /* mm, as robot_config.h */
-#define RC_DIAG_TOF_DRIFT_MM2 0.02f   /* mm^2 per mm, as robot_config.h */
+#include "slalom_off.h"
 #define RC_TOF_CV 0.042f              /* per mm of reading, as robot_config.h */
 #define RC_DIAG_TOF_MAX_MM 100.0f     /* mm: robot_config.h's halved with the cell */
 #define RC_DIAG_TOF_MARGIN_MM 4.0f    /* mm: halved */
 #define RC_DIAG_TOF_GATE_MM 8.0f      /* mm: about halved */
-#define RC_SLALOM_ACCEL_DEG_S2 RC_SMOOTH_ACCEL_DEG_S2
-#define RC_SLALOM_W_MIN_DEG_S 57.3f   /* deg/s */
-#define RC_SLALOM_W_MAX_DEG_S 859.4f  /* deg/s */
-#define RC_SLALOM_S90_MM 0.0f         /* mm: 0, not driven */
-#define RC_SLALOM_F90_MM 0.0f
-#define RC_SLALOM_F45_MM 0.0f
-#define RC_SLALOM_D45_MM 0.0f
-#define RC_SLALOM_V90_MM 0.0f
-#define RC_SLALOM_F135_MM 0.0f
-#define RC_SLALOM_D135_MM 0.0f
 /* sense the cell ahead with the diagonal sensors at its entry boundary,
  * as robot_config.h does: 45 + 11 mm before its centre (70 read posts at
  * the entry as side walls: 12 of the 37 half-size mazes mapped a wall

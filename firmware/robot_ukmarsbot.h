@@ -137,31 +137,11 @@
 #define RC_SMOOTH_ACCEL_DEG_S2 3000.0f
 /* speed runs with diagonals and slaloms: this build does not plan them
  * (PLAN_ENABLED is 0 on the AVR); the names as robot_config.h */
-#define RC_DIAG_RUNS 0
-#define RC_SLALOM_SAFE_MM_S RC_SMOOTH_MM_S
-#define RC_SLALOM_FAST_MM_S RC_SMOOTH_MM_S
-#define RC_DIAG_SAFE_MM_S RC_SMOOTH_MM_S
-#define RC_DIAG_FAST_MM_S RC_SMOOTH_MM_S
-#define RC_RUN_CLEAN_MM 10.0f         /* mm */
-#define RC_DIAG_ENTRY_HALVES 2        /* half units */
-#define RC_DIAG_MAX_HALVES 6          /* half steps */
-#define RC_DIAG_TOF 0
-#define RC_DIAG_TOF_START_MM 1.5f     /* mm */
-#define RC_DIAG_TOF_DRIFT_MM2 0.02f   /* mm^2 per mm */
+#include "slalom_off.h"
 #define RC_TOF_CV 0.042f              /* per mm of reading */
 #define RC_DIAG_TOF_MAX_MM 200.0f     /* mm */
 #define RC_DIAG_TOF_MARGIN_MM 8.0f    /* mm */
 #define RC_DIAG_TOF_GATE_MM 15.0f     /* mm */
-#define RC_SLALOM_ACCEL_DEG_S2 RC_SMOOTH_ACCEL_DEG_S2
-#define RC_SLALOM_W_MIN_DEG_S 57.3f   /* deg/s */
-#define RC_SLALOM_W_MAX_DEG_S 859.4f  /* deg/s */
-#define RC_SLALOM_S90_MM 0.0f         /* mm: 0, not driven */
-#define RC_SLALOM_F90_MM 0.0f
-#define RC_SLALOM_F45_MM 0.0f
-#define RC_SLALOM_D45_MM 0.0f
-#define RC_SLALOM_V90_MM 0.0f
-#define RC_SLALOM_F135_MM 0.0f
-#define RC_SLALOM_D135_MM 0.0f
 /* the walls of the cell ahead are read 120 mm before its centre: the
  * diagonals' spots 30 mm inside it, the front pair 144 mm from its far wall */
 #define RC_SENSE_BEFORE_MM 120.0f
