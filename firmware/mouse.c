@@ -535,7 +535,6 @@ static void search_step(void)
     }
 }
 
-
 #if PLAN_ENABLED
 /* ---- Speed runs on plan_run's moves: orthogonal straights (centred on
  * the side walls as above), diagonal straights (odometry's heading held:
@@ -560,35 +559,12 @@ static float run_err_mm;      /* the largest tracking error of this run */
 static uint8_t run_dirty;     /* the last run's tracking error reached RC_RUN_CLEAN_MM */
 static float run_align_mm;    /* a wall ahead: the straight ends this far before its cell's centre */
 
-/* Half-unit offset (x, y) of a turn's table (right turn, entered N or NE)
- * for a turn of side dir entered on heading h8: mirrored for a left turn
- * (the table's NE entry becomes NW), then turned clockwise by quarters. */
-static void run_offset(int8_t x, int8_t y, uint8_t diag, int8_t dir, int16_t *dx, int16_t *dy)
-{
-    int16_t a = dir < 0 ? -x : x, b = y;
-    uint8_t base = diag ? (dir < 0 ? 7u : 1u) : 0u;
-    uint8_t q = (uint8_t)(((run_h8 - base) & 7u) >> 1);
-    for (uint8_t i = 0; i < q; i++) {
-        int16_t t = a;
-        a = b;
-        b = (int16_t)-t;
-    }
-    *dx = a;
-    *dy = b;
-}
-
-static const int8_t h8_dx[8] = {0, 1, 1, 1, 0, -1, -1, -1};
-static const int8_t h8_dy[8] = {1, 1, 0, -1, -1, -1, 0, 1};
-
 /* the cell whose centre is the node (x2, y2) */
 static maze_cell_t run_cell(int16_t x2, int16_t y2)
 {
     return maze_cell(&ex.map, (uint8_t)(x2 / 2), (uint8_t)(y2 / 2)); /* a cell centre: both even */
 }
-#endif
 
-
-#if PLAN_ENABLED
 /* Whether the diagonals of a plan start where the robot knows where it
  * is: each entered by an F45 at the end of an orthogonal straight of at
  * least RC_DIAG_ENTRY_HALVES (centred on its side walls), none longer than
@@ -729,8 +705,8 @@ static void prun_straight(uint8_t kind, uint8_t n, const slalom_move_t *next)
     float v = !ortho ? run_v_diag : RC_RUN_MM_S;
     if (kind != SLALOM_ORTHO && kind != SLALOM_DIAG) v = run_v_turn; /* between two turns */
     if (!ortho && RC_DIAG_TOF) diag_anchor();
-    run_x2 = (int16_t)(run_x2 + n * h8_dx[run_h8]);
-    run_y2 = (int16_t)(run_y2 + n * h8_dy[run_h8]);
+    run_x2 = (int16_t)(run_x2 + n * slalom_step_x[run_h8]);
+    run_y2 = (int16_t)(run_y2 + n * slalom_step_y[run_h8]);
     start_forward(mm, v, next ? run_v_turn : 0, RC_RUN_ACCEL_MM_S2);
     run_carry_mm = 0;
     run_ortho = ortho;
@@ -743,7 +719,7 @@ static void prun_straight(uint8_t kind, uint8_t n, const slalom_move_t *next)
     run_align_mm = next ? RC_CELL_MM / 2 - before : 0;
     if (ortho && !next && centre) wall_ahead = !maze_passable(&ex.map, run_cell(run_x2, run_y2), (uint8_t)(run_h8 >> 1), 0);
     if (ortho && next && next->kind == SLALOM_S90 && !centre)
-        wall_ahead = !maze_passable(&ex.map, run_cell(run_x2 + h8_dx[run_h8], run_y2 + h8_dy[run_h8]), (uint8_t)(run_h8 >> 1), 0);
+        wall_ahead = !maze_passable(&ex.map, run_cell(run_x2 + slalom_step_x[run_h8], run_y2 + slalom_step_y[run_h8]), (uint8_t)(run_h8 >> 1), 0);
 }
 
 /* The turn run_moves[run_idx]: its slalom, at the turn speed throughout. */
@@ -752,8 +728,8 @@ static void prun_turn(void)
     const slalom_move_t *mv = &run_moves[run_idx++];
     const slalom_geom_t *g = &slalom_geom[mv->kind];
     const slalom_drive_t *d = &run_drive[mv->kind];
-    int16_t dx, dy;
-    run_offset(g->exit_x, g->exit_y, g->from_diag, mv->dir, &dx, &dy);
+    int dx, dy;
+    slalom_place(g->exit_x, g->exit_y, g->from_diag, mv->dir, run_h8, &dx, &dy);
     run_x2 = (int16_t)(run_x2 + dx);
     run_y2 = (int16_t)(run_y2 + dy);
     run_h8 = (uint8_t)((run_h8 + mv->dir * g->turn) & 7u);

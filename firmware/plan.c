@@ -29,8 +29,6 @@ static uint8_t prev_turn[STATES]; /* that edge's turn: kind | LEFT_BIT */
 static uint16_t heap[STATES];     /* binary min-heap of states by dist */
 static uint16_t hpos[STATES];     /* a state's place in heap, NOT_SEEN or DONE */
 
-static const int8_t step_x[8] = { 0, 1, 1, 1, 0, -1, -1, -1 }; /* one step per heading, half units */
-static const int8_t step_y[8] = { 1, 1, 0, -1, -1, -1, 0, 1 };
 
 typedef struct {
     const maze_t *m;
@@ -87,16 +85,6 @@ static float straight_s(float d_mm, float v0, float v1, float vtop, float a)
     return (2.0f * vtop - v0 - v1) / a + (d_mm - d_ramps) / vtop;
 }
 
-/* (x, y) turned q quarter turns clockwise. */
-static void rotate(int *x, int *y, uint8_t q)
-{
-    for (; q; q--) {
-        int t = *x;
-        *x = *y;
-        *y = -t;
-    }
-}
-
 /* Turn `kind` to side dir (+1 right, -1 left) entered at (gx, gy) heading h:
  * 1 and its exit node and heading if it is legal there, else 0. The table
  * holds the right turn entered heading N (orthogonal) or NE (diagonal); a
@@ -110,24 +98,18 @@ static int turn_exit(const maze_t *m, int gx, int gy, uint8_t h, uint8_t kind, i
 {
     const slalom_geom_t *g = &slalom_geom[kind];
     if (g->from_diag != (h & 1)) return 0;
-    uint8_t canon = g->from_diag ? (dir > 0 ? 1 : 7) : 0;
-    uint8_t q = (uint8_t)(((h - canon) & 7) >> 1);
-    int x = dir * g->exit_x, y = g->exit_y;
-    rotate(&x, &y, q);
+    int x, y;
+    slalom_place(g->exit_x, g->exit_y, g->from_diag, dir, h, &x, &y);
     *ex = gx + x;
     *ey = gy + y;
     *eh = (uint8_t)((h + dir * g->turn) & 7);
     if (!node_fits(*ex, *ey, *eh)) return 0;
     if (kind == SLALOM_V90) {
-        x = dir * g->corner_x;
-        y = g->corner_y;
-        rotate(&x, &y, q);
+        slalom_place(g->corner_x, g->corner_y, g->from_diag, dir, h, &x, &y);
         if (!node_fits(gx + x, gy + y, (uint8_t)((h + dir) & 7))) return 0;
     }
     for (uint8_t i = 0; i < g->crossed; i++) {
-        x = dir * g->cross[i][0];
-        y = g->cross[i][1];
-        rotate(&x, &y, q);
+        slalom_place(g->cross[i][0], g->cross[i][1], g->from_diag, dir, h, &x, &y);
         if (!side_open(m, gx + x, gy + y)) return 0;
     }
     return 1;
@@ -212,7 +194,7 @@ static void expand(search_t *S, uint16_t s, int gx, int gy, uint8_t h)
     float step_mm = (h & 1) ? c->cell_mm * 0.5f * SQRT2 : c->cell_mm * 0.5f;
     float vtop = (h & 1) ? c->v_diag_mm_s : c->v_max_mm_s;
     for (int n = 0; n <= 255; n++) {
-        int x = gx + n * step_x[h], y = gy + n * step_y[h];
+        int x = gx + n * slalom_step_x[h], y = gy + n * slalom_step_y[h];
         float d_mm = (float)n * step_mm;
         if ((x ^ y) & 1) { /* a side middle */
             if (n > 0 && !side_open(m, x, y)) return;

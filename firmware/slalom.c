@@ -34,6 +34,22 @@ const slalom_geom_t slalom_geom[SLALOM_KINDS] = {
     [SLALOM_V90] = {2, 0, 2, 1, 1, 1, 2, {{1, 1}, {2, 0}}},
 };
 
+const int8_t slalom_step_x[8] = { 0, 1, 1, 1, 0, -1, -1, -1 };
+const int8_t slalom_step_y[8] = { 1, 1, 0, -1, -1, -1, 0, 1 };
+
+void slalom_place(int8_t x, int8_t y, uint8_t from_diag, int8_t dir, uint8_t h8, int *dx, int *dy)
+{
+    int a = dir < 0 ? -x : x, b = y;
+    uint8_t canon = from_diag ? (dir < 0 ? 7u : 1u) : 0u; /* the entry heading the table is drawn for */
+    for (uint8_t q = (uint8_t)(((h8 - canon) & 7u) >> 1); q; q--) {
+        int t = a;
+        a = b;
+        b = -t;
+    }
+    *dx = a;
+    *dy = b;
+}
+
 /* ---- The turns as driven (slalom.h slalom_fit) ---- */
 #if PLAN_ENABLED
 #define HALF_MM (RC_CELL_MM / 2) /* one half unit of the grid */

@@ -56,6 +56,15 @@ typedef struct {
  * entry: their geometry follows from n). */
 extern const slalom_geom_t slalom_geom[SLALOM_KINDS];
 
+/* One step along each heading, half units (x east, y north). */
+extern const int8_t slalom_step_x[8], slalom_step_y[8];
+
+/* Where a point of a turn's table (x, y: right turn, entered N or NE)
+ * lies from the entry node for the turn to side dir (+1 right, -1 left)
+ * entered on heading h8: mirrored for a left turn (the table's NE entry
+ * becomes NW), then turned clockwise by quarters onto h8. */
+void slalom_place(int8_t x, int8_t y, uint8_t from_diag, int8_t dir, uint8_t h8, int *dx, int *dy);
+
 /* One move of a run: a kind, its side (+1 right / clockwise, -1 left) for
  * turns, and n half units (ORTHO) or half steps (DIAG); n is 1 for turns. */
 typedef struct {
