@@ -42,6 +42,8 @@ struct world {
     dJointID hinge[2];     /* hinged wheels: each wheel's hinge (its motor row the motor's damper) */
     dJointID motor[2];     /* spin bodies: the motor's damper row on each (an angular motor) */
     dJointID friction[2];  /* the gearbox's stiction on each wheel (an angular motor, target speed 0) */
+    double motor_set[2][3]; /* what drive_wheel last gave each spin body's motor row: its dParamVel (rad/s), dParamFMax (N*m), dParamCFM (rad/s per N*m); NaN: not yet */
+    double friction_set[2]; /* what drive_wheel last gave each friction row's dParamFMax, N*m; NaN: not yet */
     double spin_j[2];      /* each spin body's inertia about its axle, kg*m^2 */
     double spin_before[2]; /* each wheel's spin before the ODE step in progress, rad/s */
     double wheel_j[2];     /* each wheel's own inertia about its axle (its cylinder's, no rotor), kg*m^2: what couples spin and chassis (spin_advance) */
@@ -65,6 +67,7 @@ struct world {
     int carried;
     double box_offset[3];  /* chassis box centre in the chassis body frame */
     double com[3];         /* chassis centre of mass in the robot frame (world_place) */
+    double reach_m;        /* a body corner's distance from the centre of mass in the floor's plane, m (sub_steps) */
     int touching, touched_last;
     int clear_now;         /* sub_steps found every part clear of the walls by at least a millimetre, in the state before the next ODE step */
     unsigned collisions;
@@ -232,6 +235,7 @@ static void build_chassis(world_t *w, double x, double y, double heading)
     w->box_offset[0] = 0 - w->com[0];
     w->box_offset[1] = 0 - w->com[1];
     w->box_offset[2] = box_z - w->com[2];
+    w->reach_m = 0.5 * hypot(c->robot.body_w_m, c->robot.body_l_m) + fabs(w->com[1]);
 
     w->box = dCreateBox(w->robot, c->robot.body_w_m, c->robot.body_l_m, c->robot.body_h_m);
     dGeomSetBody(w->box, w->chassis);
@@ -449,13 +453,24 @@ static void wheel_torque(world_t *w, int s, double t_nm)
     else dJointAddHingeTorque(w->hinge[s], t_nm); /* +T on body1 (chassis), -T on body2 (wheel) */
 }
 
+/* An angular motor's parameter set to v only where it differs from *was,
+ * what it was last set to (ODE keeps a parameter as set, so setting the
+ * same value again changes nothing): most steps change only the motor's
+ * target speed. */
+static void amotor_param(dJointID j, int param, double v, double *was)
+{
+    if (*was == v) return;
+    *was = v;
+    dJointSetAMotorParam(j, param, v);
+}
+
 /* Wheel s's motor row: toward vel_rad_s with at most fmax_nm, softness cfm (either form). */
 static void motor_row(world_t *w, int s, double vel_rad_s, double fmax_nm, double cfm)
 {
     if (w->spin) {
-        dJointSetAMotorParam(w->motor[s], dParamVel, vel_rad_s);
-        dJointSetAMotorParam(w->motor[s], dParamFMax, fmax_nm);
-        dJointSetAMotorParam(w->motor[s], dParamCFM, cfm);
+        amotor_param(w->motor[s], dParamVel, vel_rad_s, &w->motor_set[s][0]);
+        amotor_param(w->motor[s], dParamFMax, fmax_nm, &w->motor_set[s][1]);
+        amotor_param(w->motor[s], dParamCFM, cfm, &w->motor_set[s][2]);
     } else {
         dJointSetHingeParam(w->hinge[s], dParamVel, vel_rad_s);
         dJointSetHingeParam(w->hinge[s], dParamFMax, fmax_nm);
@@ -539,6 +554,10 @@ world_t *world_create(const sim_model_t *model, const maze_t *m, double x_m, dou
         return NULL;
     }
     build_robot(w, x_m, y_m, heading_rad);
+    for (int s = 0; s < 2; s++) {
+        w->friction_set[s] = NAN;
+        for (int k = 0; k < 3; k++) w->motor_set[s][k] = NAN;
+    }
     w->ray = dCreateRay(0, 1.0);
     dGeomSetCategoryBits(w->ray, CAT_RAY);
     dGeomSetCollideBits(w->ray, CAT_STATIC);
@@ -751,7 +770,7 @@ static void drive_wheel(world_t *w, int s, const motor_drive_t *d)
         /* unbounded: the damper's torque is what it is, and the LCP solves it directly */
         motor_row(w, s, d->t0_nm / d->damping_nm_s, dInfinity, 1.0 / d->damping_nm_s);
     } else {
-        if (w->spin) dJointSetAMotorParam(w->motor[s], dParamFMax, 0);
+        if (w->spin) amotor_param(w->motor[s], dParamFMax, 0, &w->motor_set[s][1]);
         else dJointSetHingeParam(w->hinge[s], dParamFMax, 0);
         wheel_torque(w, s, d->t0_nm);
     }
@@ -761,10 +780,10 @@ static void drive_wheel(world_t *w, int s, const motor_drive_t *d)
      * the solver has a row fewer. */
     double w_rad_s = wheel_rate(w, s);
     if (fabs(w_rad_s) > WORLD_STICTION_RAD_S) {
-        dJointSetAMotorParam(w->friction[s], dParamFMax, 0);
+        amotor_param(w->friction[s], dParamFMax, 0, &w->friction_set[s]);
         wheel_torque(w, s, w_rad_s > 0 ? -d->friction_nm : d->friction_nm);
     } else {
-        dJointSetAMotorParam(w->friction[s], dParamFMax, d->friction_nm);
+        amotor_param(w->friction[s], dParamFMax, d->friction_nm, &w->friction_set[s]);
     }
     if (w->spin) {
         dBodyAddRelTorque(w->chassis, w->reaction_nm[s], 0, 0);
@@ -799,9 +818,7 @@ static int sub_steps(world_t *w, double h_s)
 {
     if (h_s <= WORLD_CONTACT_STEP_S) return 1;
     const dReal *v = dBodyGetLinearVel(w->chassis), *om = dBodyGetAngularVel(w->chassis);
-    const simcfg_t *c = w->model->cfg;
-    double reach_m = 0.5 * hypot(c->robot.body_w_m, c->robot.body_l_m) + fabs(w->com[1]); /* a body corner from the centre of mass */
-    double fastest = hypot(v[0], v[1]) + fabs(om[2]) * reach_m;
+    double fastest = hypot(v[0], v[1]) + fabs(om[2]) * w->reach_m;
     if (fastest < WORLD_IMPACT_M_S) return 1;
     w->clear_now = clear_of_walls(w, fastest * h_s + WORLD_NEAR_M, 1);
     if (w->clear_now) return 1;
@@ -834,12 +851,23 @@ static double chassis_pitch_rate(const world_t *w)
  * down harder and bounce a wheel off the floor as its nose meets it: the
  * example firmware's one-cell moves end 1.2 mm past its odometry, against
  * 0.0 mm so (docs/BENCHMARKS.md). */
+/* An angle in rad wrapped into [-pi, pi] as remainder(a, 2 pi) does: for
+ * |a| < 3 pi one subtraction or addition of 2 pi, exact by Sterbenz's lemma
+ * (a and 2 pi within a factor of two), so the same double; beyond, remainder. */
+static double wrap_angle(double a_rad)
+{
+    if (a_rad > M_PI && a_rad < 3 * M_PI) return a_rad - 2 * M_PI;
+    if (a_rad < -M_PI && a_rad > -3 * M_PI) return a_rad + 2 * M_PI;
+    if (a_rad >= -M_PI && a_rad <= M_PI) return a_rad;
+    return remainder(a_rad, 2 * M_PI);
+}
+
 static void spin_advance(world_t *w)
 {
     w->pitch_acc = (chassis_pitch_rate(w) - w->pitch_before) / w->h_s;
     for (int s = 0; s < 2; s++) {
         double rate = spin_rate(w, s);
-        w->wheel_angle[s] = remainder(w->wheel_angle[s] + rate * w->h_s, 2 * M_PI);
+        w->wheel_angle[s] = wrap_angle(w->wheel_angle[s] + rate * w->h_s);
         w->reaction_nm[s] = w->wheel_j[s] * (rate - w->spin_before[s]) / w->h_s;
     }
 }
