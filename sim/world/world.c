@@ -62,6 +62,8 @@ struct world {
     int ranked;             /* every box has its place: maze contacts by cell (else ODE's tree walk) */
     dGeomID part[WORLD_PARTS]; /* the robot's geoms in its space's order (ODE's), nparts of them */
     int nparts;
+    double parts_box[2][3]; /* the box in the chassis' frame (from its centre of mass) that holds every part: low and high corner, m (parts_box) */
+    int parts_boxed;       /* parts_box holds: every part rides on the chassis (not with hinged wheels) */
     dJointID hand_lin, hand_yaw; /* world_hand: a hand's grip on the chassis (made on first use) */
     double carry_pose[3];   /* world_carry: where it was lifted from (x m, y m, heading rad) */
     int carried;
@@ -478,6 +480,58 @@ static void motor_row(world_t *w, int s, double vel_rad_s, double fmax_nm, doubl
     }
 }
 
+/* parts_box: the box in the chassis' frame that holds every part, each
+ * part taken as the box ODE bounds it by (a sphere's cube, a box, a
+ * cylinder's box of 2r x 2r x its length), turned by the part's offset
+ * rotation. 0 when a part rides on another body or is of another shape. */
+static int parts_box(world_t *w)
+{
+    for (int k = 0; k < 3; k++) w->parts_box[0][k] = INFINITY, w->parts_box[1][k] = -INFINITY;
+    for (int i = 0; i < w->nparts; i++) {
+        dGeomID g = w->part[i];
+        double half[3];
+        if (dGeomGetBody(g) != w->chassis) return 0;
+        if (dGeomGetClass(g) == dSphereClass) {
+            half[0] = half[1] = half[2] = dGeomSphereGetRadius(g);
+        } else if (dGeomGetClass(g) == dBoxClass) {
+            dVector3 len;
+            dGeomBoxGetLengths(g, len);
+            for (int k = 0; k < 3; k++) half[k] = len[k] / 2;
+        } else if (dGeomGetClass(g) == dCylinderClass) {
+            dReal r, len;
+            dGeomCylinderGetParams(g, &r, &len);
+            half[0] = half[1] = r, half[2] = len / 2; /* its axis along its z */
+        } else {
+            return 0;
+        }
+        const dReal *o = dGeomGetOffsetPosition(g), *R = dGeomGetOffsetRotation(g);
+        for (int k = 0; k < 3; k++) {
+            double e = fabs(R[4 * k]) * half[0] + fabs(R[4 * k + 1]) * half[1] + fabs(R[4 * k + 2]) * half[2];
+            w->parts_box[0][k] = fmin(w->parts_box[0][k], o[k] - e);
+            w->parts_box[1][k] = fmax(w->parts_box[1][k], o[k] + e);
+        }
+    }
+    return 1;
+}
+
+/* The bounds on the floor (min x, max x, min y, max y, m) of the chassis'
+ * parts_box as it stands, grown by e_m: they hold every part's bounds as
+ * ODE computes them (the bounds of a turned box hold those of any box it
+ * holds). */
+static void parts_bounds(const world_t *w, double e_m, double r[4])
+{
+    const dReal *p = dBodyGetPosition(w->chassis), *R = dBodyGetRotation(w->chassis);
+    double mid[3], half[3];
+    for (int k = 0; k < 3; k++) mid[k] = (w->parts_box[0][k] + w->parts_box[1][k]) / 2, half[k] = (w->parts_box[1][k] - w->parts_box[0][k]) / 2;
+    for (int i = 0; i < 2; i++) {
+        const dReal *row = R + 4 * i;
+        double c = p[i] + row[0] * mid[0] + row[1] * mid[1] + row[2] * mid[2];
+        double ext = fabs(row[0]) * half[0] + fabs(row[1]) * half[1] + fabs(row[2]) * half[2] + e_m;
+        r[2 * i] = c - ext;
+        r[2 * i + 1] = c + ext;
+    }
+}
+
 /* The robot for a body centre at (x, y) facing heading: the chassis, then
  * each wheel: on its hinge, or its geoms on the chassis, its spin body and
  * rows. */
@@ -502,6 +556,7 @@ static void build_robot(world_t *w, double x, double y, double heading)
     int n = dSpaceGetNumGeoms(w->robot);
     w->nparts = n < WORLD_PARTS ? n : WORLD_PARTS; /* 7 at most: always all of them */
     for (int i = 0; i < w->nparts; i++) w->part[i] = dSpaceGetGeom(w->robot, i);
+    w->parts_boxed = parts_box(w);
 }
 
 /* ODE's messages (not its errors): "LCP internal error, s <= 0" when the
@@ -616,6 +671,7 @@ static int body_near(const world_t *w, double margin_m)
     return wallgrid_any_box(w->grid, c, axis, half, 0, w->model->cfg->world.wall_height_m, margin_m);
 }
 
+#define WORLD_BOX_SLACK_M 1e-6 /* parts_bounds grown by this too, m: beyond any rounding of ODE's own bounds */
 #define WORLD_UNION_SLACK_M 1e-9 /* the parts' joint bounds grown by this too, m: beyond any rounding of the finer tests */
 
 /* Whether every part of the robot is more than margin_m from every wall
@@ -626,6 +682,12 @@ static int body_near(const world_t *w, double margin_m)
  * only where they may be. */
 static int clear_of_walls(const world_t *w, double margin_m, int tyres)
 {
+    if (w->parts_boxed) {
+        /* the robot in the open: one query, no part's bounds computed (ODE's collision pass computes them) */
+        double r[4];
+        parts_bounds(w, margin_m + WORLD_UNION_SLACK_M + WORLD_BOX_SLACK_M, r);
+        if (!wallgrid_any(w->grid, r)) return 1;
+    }
     dReal aabb[WORLD_PARTS][6];
     double all[4] = { INFINITY, -INFINITY, INFINITY, -INFINITY }, e = margin_m + WORLD_UNION_SLACK_M;
     int odd = 0;
