@@ -458,12 +458,16 @@ static void wheel_torque(world_t *w, int s, double t_nm)
 /* An angular motor's parameter set to v only where it differs from *was,
  * what it was last set to (ODE keeps a parameter as set, so setting the
  * same value again changes nothing): most steps change only the motor's
- * target speed. */
+ * target speed. A motor of no limits with no force (dParamFMax 0) gives
+ * the solver no row: it is disabled then, so that ODE's step passes it by
+ * (enabled again with a force). */
 static void amotor_param(dJointID j, int param, double v, double *was)
 {
     if (*was == v) return;
     *was = v;
     dJointSetAMotorParam(j, param, v);
+    if (param == dParamFMax && v > 0) dJointEnable(j);
+    else if (param == dParamFMax) dJointDisable(j);
 }
 
 /* Wheel s's motor row: toward vel_rad_s with at most fmax_nm, softness cfm (either form). */
