@@ -62,6 +62,8 @@ struct world {
     int ranked;             /* every box has its place: maze contacts by cell (else ODE's tree walk) */
     dGeomID part[WORLD_PARTS]; /* the robot's geoms in its space's order (ODE's), nparts of them */
     int nparts;
+    double side_at[2][3];  /* spin bodies: each wheel side's centre in the chassis' frame from its centre of mass, m (place_sides) */
+    dMatrix3 side_rot;     /* and its orientation in the chassis' frame: the cylinder's z along the chassis' x */
     double parts_box[2][3]; /* the box in the chassis' frame (from its centre of mass) that holds every part: low and high corner, m (parts_box) */
     int parts_boxed;       /* parts_box holds: every part rides on the chassis (not with hinged wheels) */
     dJointID hand_lin, hand_yaw; /* world_hand: a hand's grip on the chassis (made on first use) */
@@ -71,7 +73,7 @@ struct world {
     double com[3];         /* chassis centre of mass in the robot frame (world_place) */
     double reach_m;        /* a body corner's distance from the centre of mass in the floor's plane, m (sub_steps) */
     int touching, touched_last;
-    int clear_now;         /* sub_steps found every part clear of the walls by at least a millimetre, in the state before the next ODE step */
+    int clear_now;         /* every part is clear of the walls (sub_steps: by a step's travel and a millimetre; world_step: by WORLD_TOUCH_SLACK_M), in the state before the next ODE step: near_cb skips the maze */
     unsigned collisions;
     unsigned step_kinds, episode_kinds; /* WORLD_CONTACT_* bits: this step's, this episode's */
     unsigned kind_count[WORLD_CONTACT_KINDS]; /* finished episodes by kind */
@@ -364,6 +366,27 @@ static void wheel_body(world_t *w, int s)
     dBodySetGyroscopicMode(w->wheel[s], 0);
 }
 
+/* Wheel s's side (its cylinder, which meets only walls and posts) put
+ * where it stands on the chassis: a geom of no body, so that ODE's step
+ * does not move it with the chassis each step (world_step places it only
+ * where a wall may be near: clear_of_walls). The same arithmetic as ODE's
+ * for a geom offset on a body (position R p + c, rotation R R_offset, each
+ * sum in ODE's order), so it stands exactly where that geom would. */
+static void place_side(world_t *w, int s)
+{
+    const dReal *R = dBodyGetRotation(w->chassis);
+    const double *o = w->side_rot;
+    dVector3 p;
+    dMatrix3 rot;
+    dBodyGetRelPointPos(w->chassis, w->side_at[s][0], w->side_at[s][1], w->side_at[s][2], p);
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) rot[4 * i + j] = o[j] * R[4 * i] + o[4 + j] * R[4 * i + 1] + o[8 + j] * R[4 * i + 2];
+        rot[4 * i + 3] = 0;
+    }
+    dGeomSetPosition(w->wheel_side[s], p[0], p[1], p[2]);
+    dGeomSetRotation(w->wheel_side[s], rot);
+}
+
 /* A wheel's geoms, on the chassis at the wheel's centre (their contacts
  * take the spin body as their second body: near_cb). The tyre touches the
  * floor as a sphere of the wheel's radius: one contact on the wheel's
@@ -382,12 +405,12 @@ static void wheel_geoms(world_t *w, int s, const double at[3])
     dGeomSetCategoryBits(w->wheel_geom[s], CAT_TYRE);
     dGeomSetCollideBits(w->wheel_geom[s], CAT_FLOOR);
     w->wheel_side[s] = dCreateCylinder(w->robot, r, w->model->cfg->robot.wheel_w_m);
-    dGeomSetBody(w->wheel_side[s], w->chassis);
-    dGeomSetOffsetPosition(w->wheel_side[s], at[0] - w->com[0], at[1] - w->com[1], at[2] - w->com[2]);
+    for (int k = 0; k < 3; k++) w->side_at[s][k] = at[k] - w->com[k];
     dRFromAxisAndAngle(axle, 0, 1, 0, M_PI / 2); /* the cylinder's z to the chassis' x */
-    dGeomSetOffsetRotation(w->wheel_side[s], axle);
+    for (int k = 0; k < 12; k++) w->side_rot[k] = axle[k];
     dGeomSetCategoryBits(w->wheel_side[s], CAT_WHEEL_SIDE);
     dGeomSetCollideBits(w->wheel_side[s], CAT_STATIC);
+    place_side(w, s);
 }
 
 /* An angular motor row on wheel s's spin body about its axle (the body's
@@ -494,7 +517,8 @@ static int parts_box(world_t *w)
     for (int i = 0; i < w->nparts; i++) {
         dGeomID g = w->part[i];
         double half[3];
-        if (dGeomGetBody(g) != w->chassis) return 0;
+        int side = w->spin && (g == w->wheel_side[0] || g == w->wheel_side[1]) ? 1 + (g == w->wheel_side[1]) : 0; /* 1 + its side */
+        if (!side && dGeomGetBody(g) != w->chassis) return 0;
         if (dGeomGetClass(g) == dSphereClass) {
             half[0] = half[1] = half[2] = dGeomSphereGetRadius(g);
         } else if (dGeomGetClass(g) == dBoxClass) {
@@ -508,7 +532,7 @@ static int parts_box(world_t *w)
         } else {
             return 0;
         }
-        const dReal *o = dGeomGetOffsetPosition(g), *R = dGeomGetOffsetRotation(g);
+        const dReal *o = side ? w->side_at[side - 1] : dGeomGetOffsetPosition(g), *R = side ? w->side_rot : dGeomGetOffsetRotation(g);
         for (int k = 0; k < 3; k++) {
             double e = fabs(R[4 * k]) * half[0] + fabs(R[4 * k + 1]) * half[1] + fabs(R[4 * k + 2]) * half[2];
             w->parts_box[0][k] = fmin(w->parts_box[0][k], o[k] - e);
@@ -684,7 +708,7 @@ static int body_near(const world_t *w, double margin_m)
  * parts by their bounds; the tyre spheres (which meet only the floor) only
  * with tyres. A "clear" is certain, so the maze's contacts are looked for
  * only where they may be. */
-static int clear_of_walls(const world_t *w, double margin_m, int tyres)
+static int clear_of_walls(world_t *w, double margin_m, int tyres)
 {
     if (w->parts_boxed) {
         /* the robot in the open: one query, no part's bounds computed (ODE's collision pass computes them) */
@@ -692,6 +716,7 @@ static int clear_of_walls(const world_t *w, double margin_m, int tyres)
         parts_bounds(w, margin_m + WORLD_UNION_SLACK_M + WORLD_BOX_SLACK_M, r);
         if (!wallgrid_any(w->grid, r)) return 1;
     }
+    for (int s = 0; s < 2 && w->spin; s++) place_side(w, s);
     dReal aabb[WORLD_PARTS][6];
     double all[4] = { INFINITY, -INFINITY, INFINITY, -INFINITY }, e = margin_m + WORLD_UNION_SLACK_M;
     int odd = 0;
@@ -769,8 +794,8 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
     if (dGeomIsSpace(a) || dGeomIsSpace(b)) {
         int maze = a == (dGeomID)w->statics || b == (dGeomID)w->statics;
         if (!maze) dSpaceCollide2(a, b, data, near_cb);
-        /* sub_steps' finding holds here: the same state, a smaller margin */
-        else if (!w->clear_now && !clear_of_walls(w, WORLD_TOUCH_SLACK_M, 0)) {
+        /* clear_now: world_step's finding just before this pass, the same state */
+        else if (!w->clear_now) {
             /* ODE walks the smaller space's geoms against the other: the robot's, unless the maze has fewer boxes */
             if (w->ranked && w->nwalls > w->nparts) maze_collide(w);
             else dSpaceCollide2(a, b, data, near_cb);
@@ -821,7 +846,8 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
          * the contact's torque turns the spin (the spin body's linear
          * freedoms, too heavy to move, stand in for the floor or wall) */
         int ws = !w->spin ? -1 : a == w->wheel_geom[0] || a == w->wheel_side[0] ? 0 : a == w->wheel_geom[1] || a == w->wheel_side[1] ? 1 : -1;
-        dJointAttach(j, dGeomGetBody(c[i].geom.g1), ws >= 0 ? w->wheel[ws] : dGeomGetBody(c[i].geom.g2));
+        dBodyID b1 = dGeomGetBody(c[i].geom.g1); /* a spin body's wheel side has none: it stands on the chassis (place_side) */
+        dJointAttach(j, b1 ? b1 : w->chassis, ws >= 0 ? w->wheel[ws] : dGeomGetBody(c[i].geom.g2));
     }
 }
 
@@ -956,6 +982,8 @@ void world_step(world_t *w, const motor_drive_t drive[2])
         drive_wheel(w, WORLD_LEFT, &drive[WORLD_LEFT]);
         drive_wheel(w, WORLD_RIGHT, &drive[WORLD_RIGHT]);
         brake_wheels(w);
+        /* before the collision pass, which may not move a geom (place_side) */
+        if (!w->clear_now) w->clear_now = clear_of_walls(w, WORLD_TOUCH_SLACK_M, 0);
         dSpaceCollide(w->top, w, near_cb);
         if (w->model->solver == SIM_SOLVER_EXACT) dWorldStep(w->world, w->h_s);
         else dWorldQuickStep(w->world, w->h_s);
