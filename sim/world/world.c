@@ -443,19 +443,27 @@ static double spin_rate(const world_t *w, int s)
     return om[0] * R[0] + om[1] * R[4] + om[2] * R[8];
 }
 
+/* A torque t_nm about body b's own x axis (its rotation's first column):
+ * dBodyAddRelTorque(b, t_nm, 0, 0) without the products by zero. */
+static void axle_torque(dBodyID b, double t_nm)
+{
+    const dReal *R = dBodyGetRotation(b);
+    dBodyAddTorque(b, R[0] * t_nm, R[4] * t_nm, R[8] * t_nm);
+}
+
 /* Wheel s's spin body on the wheel's centre with the chassis' orientation,
  * spinning at rate_rad_s about the axle, its other freedoms at rest. */
 static void spin_place(world_t *w, int s, double rate_rad_s)
 {
     double wp[3];
-    dVector3 at, x;
+    dVector3 at;
+    const dReal *x = dBodyGetRotation(w->chassis); /* its x axis: x[0], x[4], x[8] */
     wheel_point(w, s, wp);
     dBodyGetRelPointPos(w->chassis, wp[0] - w->com[0], wp[1] - w->com[1], wp[2] - w->com[2], at);
-    dBodyVectorToWorld(w->chassis, 1, 0, 0, x);
     dBodySetPosition(w->wheel[s], at[0], at[1], at[2]);
     dBodySetQuaternion(w->wheel[s], dBodyGetQuaternion(w->chassis));
     dBodySetLinearVel(w->wheel[s], 0, 0, 0);
-    dBodySetAngularVel(w->wheel[s], rate_rad_s * x[0], rate_rad_s * x[1], rate_rad_s * x[2]);
+    dBodySetAngularVel(w->wheel[s], rate_rad_s * x[0], rate_rad_s * x[4], rate_rad_s * x[8]);
 }
 
 /* A torque t_nm about wheel s's axle between the chassis and the wheel
@@ -465,7 +473,7 @@ static void spin_place(world_t *w, int s, double rate_rad_s)
  * tyre's point, and through the wheel's own inertia (spin_advance). */
 static void spin_torque(world_t *w, int s, double t_nm)
 {
-    dBodyAddRelTorque(w->wheel[s], t_nm, 0, 0);
+    axle_torque(w->wheel[s], t_nm);
 }
 
 /* Wheel s's spin rate relative to the chassis, rad/s, + forward (either form). */
@@ -830,11 +838,10 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
             /* align the friction pyramid with the wheel (rolling and
              * sideways), or its corners would make driving east and north
              * differ */
-            dVector3 f;
-            dBodyVectorToWorld(w->chassis, 0, 1, 0, f);
+            const dReal *R = dBodyGetRotation(w->chassis); /* its y axis: R[1], R[5], R[9] */
             c[i].surface.mode |= dContactFDir1;
-            c[i].fdir1[0] = f[0];
-            c[i].fdir1[1] = f[1];
+            c[i].fdir1[0] = R[1];
+            c[i].fdir1[1] = R[5];
             c[i].fdir1[2] = 0;
         }
         c[i].surface.mu = mu;
@@ -878,8 +885,8 @@ static void drive_wheel(world_t *w, int s, const motor_drive_t *d)
         amotor_param(w->friction[s], dParamFMax, d->friction_nm, &w->friction_set[s]);
     }
     if (w->spin) {
-        dBodyAddRelTorque(w->chassis, w->reaction_nm[s], 0, 0);
-        dBodyAddRelTorque(w->wheel[s], w->wheel_j[s] * w->pitch_acc, 0, 0);
+        axle_torque(w->chassis, w->reaction_nm[s]);
+        axle_torque(w->wheel[s], w->wheel_j[s] * w->pitch_acc);
     }
 }
 
