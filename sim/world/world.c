@@ -62,8 +62,14 @@ struct world {
     int ranked;             /* every box has its place: maze contacts by cell (else ODE's tree walk) */
     dGeomID part[WORLD_PARTS]; /* the robot's geoms in its space's order (ODE's), nparts of them */
     int nparts;
-    double side_at[2][3];  /* spin bodies: each wheel side's centre in the chassis' frame from its centre of mass, m (place_sides) */
-    dMatrix3 side_rot;     /* and its orientation in the chassis' frame: the cylinder's z along the chassis' x */
+    /* With spin bodies the body box and the wheel sides are loose: geoms of no body, put where they stand on the chassis only when a wall or the floor may be near (place_part) */
+    dGeomID loose[3];      /* the box, the left and the right wheel side; none with hinged wheels */
+    double loose_at[3][3]; /* each one's centre in the chassis' frame from its centre of mass, m */
+    dMatrix3 loose_rot[3]; /* and its orientation in the chassis' frame */
+    int nloose;
+    int box_low;           /* the box was last put where its bounds may reach the floor's: put it again before the next collision pass */
+    int loose_placed;      /* the loose parts stand where the chassis now puts them (world_step clears it as the chassis moves) */
+    double floor_top_m;    /* the top of the floor's bounds as ODE has them (dGeomGetAABB), m */
     double parts_box[2][3]; /* the box in the chassis' frame (from its centre of mass) that holds every part: low and high corner, m (parts_box) */
     int parts_boxed;       /* parts_box holds: every part rides on the chassis (not with hinged wheels) */
     dJointID hand_lin, hand_yaw; /* world_hand: a hand's grip on the chassis (made on first use) */
@@ -221,6 +227,44 @@ static dGeomID caster_geom(world_t *w, double y_m)
     return g;
 }
 
+/* Loose part k (the box or a wheel side) put where it stands on the
+ * chassis. A loose part is a geom of no body, so that ODE's step does not
+ * move it with the chassis each step: the box meets only walls and, with
+ * the nose down, the floor; a wheel side only walls (world_step puts them
+ * in place only where those may be near: clear_of_walls, box_floor). The
+ * same arithmetic as ODE's for a geom offset on a body (position R p + c,
+ * rotation R R_offset, each sum in ODE's order), so it stands exactly where
+ * that geom would. */
+static void place_part(world_t *w, int k)
+{
+    const dReal *R = dBodyGetRotation(w->chassis);
+    const double *o = w->loose_rot[k], *at = w->loose_at[k];
+    dVector3 p;
+    dMatrix3 rot;
+    dBodyGetRelPointPos(w->chassis, at[0], at[1], at[2], p);
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) rot[4 * i + j] = o[j] * R[4 * i] + o[4 + j] * R[4 * i + 1] + o[8 + j] * R[4 * i + 2];
+        rot[4 * i + 3] = 0;
+    }
+    dGeomSetPosition(w->loose[k], p[0], p[1], p[2]);
+    dGeomSetRotation(w->loose[k], rot);
+}
+
+/* Geom g made loose part number nloose, at at_m (the chassis' frame from
+ * its centre of mass) turned by rot (NULL: not turned), and put in place. */
+static void loosen(world_t *w, dGeomID g, const double at_m[3], const dReal *rot)
+{
+    int k = w->nloose++;
+    w->loose[k] = g;
+    for (int i = 0; i < 3; i++) w->loose_at[k][i] = at_m[i];
+    if (rot) {
+        for (int i = 0; i < 12; i++) w->loose_rot[k][i] = rot[i];
+    } else {
+        dRSetIdentity(w->loose_rot[k]);
+    }
+    place_part(w, k);
+}
+
 /* The chassis: one body at the combined centre of mass, the body box and
  * the casters as its geoms, offset from it. */
 static void build_chassis(world_t *w, double x, double y, double heading)
@@ -242,10 +286,14 @@ static void build_chassis(world_t *w, double x, double y, double heading)
     w->reach_m = 0.5 * hypot(c->robot.body_w_m, c->robot.body_l_m) + fabs(w->com[1]);
 
     w->box = dCreateBox(w->robot, c->robot.body_w_m, c->robot.body_l_m, c->robot.body_h_m);
-    dGeomSetBody(w->box, w->chassis);
-    dGeomSetOffsetPosition(w->box, w->box_offset[0], w->box_offset[1], w->box_offset[2]);
     dGeomSetCategoryBits(w->box, CAT_ROBOT);
     dGeomSetCollideBits(w->box, CAT_STATIC | CAT_FLOOR);
+    if (w->spin) {
+        loosen(w, w->box, w->box_offset, NULL);
+    } else {
+        dGeomSetBody(w->box, w->chassis);
+        dGeomSetOffsetPosition(w->box, w->box_offset[0], w->box_offset[1], w->box_offset[2]);
+    }
     w->caster = caster_geom(w, c->robot.caster_y_m);
     w->caster2 = w->model->casters > 1 ? caster_geom(w, c->robot.caster2_y_m) : NULL;
 }
@@ -366,27 +414,6 @@ static void wheel_body(world_t *w, int s)
     dBodySetGyroscopicMode(w->wheel[s], 0);
 }
 
-/* Wheel s's side (its cylinder, which meets only walls and posts) put
- * where it stands on the chassis: a geom of no body, so that ODE's step
- * does not move it with the chassis each step (world_step places it only
- * where a wall may be near: clear_of_walls). The same arithmetic as ODE's
- * for a geom offset on a body (position R p + c, rotation R R_offset, each
- * sum in ODE's order), so it stands exactly where that geom would. */
-static void place_side(world_t *w, int s)
-{
-    const dReal *R = dBodyGetRotation(w->chassis);
-    const double *o = w->side_rot;
-    dVector3 p;
-    dMatrix3 rot;
-    dBodyGetRelPointPos(w->chassis, w->side_at[s][0], w->side_at[s][1], w->side_at[s][2], p);
-    for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++) rot[4 * i + j] = o[j] * R[4 * i] + o[4 + j] * R[4 * i + 1] + o[8 + j] * R[4 * i + 2];
-        rot[4 * i + 3] = 0;
-    }
-    dGeomSetPosition(w->wheel_side[s], p[0], p[1], p[2]);
-    dGeomSetRotation(w->wheel_side[s], rot);
-}
-
 /* A wheel's geoms, on the chassis at the wheel's centre (their contacts
  * take the spin body as their second body: near_cb). The tyre touches the
  * floor as a sphere of the wheel's radius: one contact on the wheel's
@@ -405,12 +432,11 @@ static void wheel_geoms(world_t *w, int s, const double at[3])
     dGeomSetCategoryBits(w->wheel_geom[s], CAT_TYRE);
     dGeomSetCollideBits(w->wheel_geom[s], CAT_FLOOR);
     w->wheel_side[s] = dCreateCylinder(w->robot, r, w->model->cfg->robot.wheel_w_m);
-    for (int k = 0; k < 3; k++) w->side_at[s][k] = at[k] - w->com[k];
+    const double side_at[3] = { at[0] - w->com[0], at[1] - w->com[1], at[2] - w->com[2] };
     dRFromAxisAndAngle(axle, 0, 1, 0, M_PI / 2); /* the cylinder's z to the chassis' x */
-    for (int k = 0; k < 12; k++) w->side_rot[k] = axle[k];
     dGeomSetCategoryBits(w->wheel_side[s], CAT_WHEEL_SIDE);
     dGeomSetCollideBits(w->wheel_side[s], CAT_STATIC);
-    place_side(w, s);
+    loosen(w, w->wheel_side[s], side_at, axle);
 }
 
 /* An angular motor row on wheel s's spin body about its axle (the body's
@@ -525,8 +551,10 @@ static int parts_box(world_t *w)
     for (int i = 0; i < w->nparts; i++) {
         dGeomID g = w->part[i];
         double half[3];
-        int side = w->spin && (g == w->wheel_side[0] || g == w->wheel_side[1]) ? 1 + (g == w->wheel_side[1]) : 0; /* 1 + its side */
-        if (!side && dGeomGetBody(g) != w->chassis) return 0;
+        int loose = -1;
+        for (int k = 0; k < w->nloose; k++)
+            if (g == w->loose[k]) loose = k;
+        if (loose < 0 && dGeomGetBody(g) != w->chassis) return 0;
         if (dGeomGetClass(g) == dSphereClass) {
             half[0] = half[1] = half[2] = dGeomSphereGetRadius(g);
         } else if (dGeomGetClass(g) == dBoxClass) {
@@ -540,7 +568,7 @@ static int parts_box(world_t *w)
         } else {
             return 0;
         }
-        const dReal *o = side ? w->side_at[side - 1] : dGeomGetOffsetPosition(g), *R = side ? w->side_rot : dGeomGetOffsetRotation(g);
+        const dReal *o = loose >= 0 ? w->loose_at[loose] : dGeomGetOffsetPosition(g), *R = loose >= 0 ? w->loose_rot[loose] : dGeomGetOffsetRotation(g);
         for (int k = 0; k < 3; k++) {
             double e = fabs(R[4 * k]) * half[0] + fabs(R[4 * k + 1]) * half[1] + fabs(R[4 * k + 2]) * half[2];
             w->parts_box[0][k] = fmin(w->parts_box[0][k], o[k] - e);
@@ -644,6 +672,9 @@ world_t *world_create(const sim_model_t *model, const maze_t *m, double x_m, dou
         world_destroy(w);
         return NULL;
     }
+    dReal floor_aabb[6];
+    dGeomGetAABB(w->floor, floor_aabb);
+    w->floor_top_m = floor_aabb[5];
     build_robot(w, x_m, y_m, heading_rad);
     for (int s = 0; s < 2; s++) {
         w->friction_set[s] = NAN;
@@ -724,7 +755,8 @@ static int clear_of_walls(world_t *w, double margin_m, int tyres)
         parts_bounds(w, margin_m + WORLD_UNION_SLACK_M + WORLD_BOX_SLACK_M, r);
         if (!wallgrid_any(w->grid, r)) return 1;
     }
-    for (int s = 0; s < 2 && w->spin; s++) place_side(w, s);
+    for (int k = 0; k < w->nloose && !w->loose_placed; k++) place_part(w, k);
+    w->loose_placed = 1;
     dReal aabb[WORLD_PARTS][6];
     double all[4] = { INFINITY, -INFINITY, INFINITY, -INFINITY }, e = margin_m + WORLD_UNION_SLACK_M;
     int odd = 0;
@@ -853,7 +885,7 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
          * the contact's torque turns the spin (the spin body's linear
          * freedoms, too heavy to move, stand in for the floor or wall) */
         int ws = !w->spin ? -1 : a == w->wheel_geom[0] || a == w->wheel_side[0] ? 0 : a == w->wheel_geom[1] || a == w->wheel_side[1] ? 1 : -1;
-        dBodyID b1 = dGeomGetBody(c[i].geom.g1); /* a spin body's wheel side has none: it stands on the chassis (place_side) */
+        dBodyID b1 = dGeomGetBody(c[i].geom.g1); /* a loose part has none: it stands on the chassis (place_part) */
         dJointAttach(j, b1 ? b1 : w->chassis, ws >= 0 ? w->wheel[ws] : dGeomGetBody(c[i].geom.g2));
     }
 }
@@ -907,6 +939,23 @@ static void brake_wheels(world_t *w)
         double rate = wheel_rate(w, s);
         if (rate != 0) wheel_torque(w, s, rate > 0 ? -w->brake_nm : w->brake_nm); /* +T turns the wheel forward */
     }
+}
+
+/* A loose box put in place before the collision pass wherever its bounds
+ * may reach the floor's (its lowest corner, by the chassis' pose, within
+ * WORLD_BOX_SLACK_M of the floor's top), and once more after it was last
+ * put there (its old bounds would still meet the floor's): elsewhere ODE's
+ * pass finds it clear of the floor by its bounds, placed or not. */
+static void box_floor(world_t *w)
+{
+    const dReal *p = dBodyGetPosition(w->chassis), *R = dBodyGetRotation(w->chassis);
+    const double *o = w->box_offset;
+    dVector3 len;
+    dGeomBoxGetLengths(w->box, len);
+    double low = p[2] + R[8] * o[0] + R[9] * o[1] + R[10] * o[2] - (fabs(R[8]) * len[0] + fabs(R[9]) * len[1] + fabs(R[10]) * len[2]) / 2;
+    int near = !(low - WORLD_BOX_SLACK_M > w->floor_top_m); /* a NaN too */
+    if ((near || w->box_low) && !w->loose_placed) place_part(w, 0);
+    w->box_low = near;
 }
 
 /* How many ODE steps make this step: one in the open or at rest; moving
@@ -974,6 +1023,7 @@ static void spin_advance(world_t *w)
 void world_step(world_t *w, const motor_drive_t drive[2])
 {
     double h = w->model->cfg->sim.step_s;
+    w->loose_placed = 0; /* the chassis may have been moved since (world_place) */
     int n = sub_steps(w, h);
     w->touching = 0;
     w->step_kinds = 0;
@@ -989,12 +1039,13 @@ void world_step(world_t *w, const motor_drive_t drive[2])
         drive_wheel(w, WORLD_LEFT, &drive[WORLD_LEFT]);
         drive_wheel(w, WORLD_RIGHT, &drive[WORLD_RIGHT]);
         brake_wheels(w);
-        /* before the collision pass, which may not move a geom (place_side) */
+        /* before the collision pass, which may not move a geom (place_part) */
         if (!w->clear_now) w->clear_now = clear_of_walls(w, WORLD_TOUCH_SLACK_M, 0);
+        if (w->nloose) box_floor(w);
         dSpaceCollide(w->top, w, near_cb);
         if (w->model->solver == SIM_SOLVER_EXACT) dWorldStep(w->world, w->h_s);
         else dWorldQuickStep(w->world, w->h_s);
-        w->clear_now = 0;
+        w->clear_now = w->loose_placed = 0;
         dJointGroupEmpty(w->contacts);
         if (w->spin) spin_advance(w);
     }
