@@ -738,7 +738,7 @@ static int body_near(const world_t *w, double margin_m)
     return wallgrid_any_box(w->grid, c, axis, half, 0, w->model->cfg->world.wall_height_m, margin_m);
 }
 
-#define WORLD_BOX_SLACK_M 1e-6 /* parts_bounds grown by this too, m: beyond any rounding of ODE's own bounds */
+#define WORLD_BOX_SLACK_M 1e-6 /* parts_bounds and box_floor's lowest corner allow this much more, m: beyond any rounding of ODE's own bounds */
 #define WORLD_UNION_SLACK_M 1e-9 /* the parts' joint bounds grown by this too, m: beyond any rounding of the finer tests */
 
 /* Whether every part of the robot is more than margin_m from every wall
