@@ -6,7 +6,8 @@
 # robot), the scripted driver on a 16x16 maze, UKMARSBOT (robots/ukmarsbot.ini)
 # scripted on the same maze, the scripted driver on a 32x32 maze
 # (mazes/gen-32x32-s1.txt), the 16x16 scripted run at a 2 ms step, and the
-# firmware and UKMARSBOT runs with [sim] wheels = spin. Each
+# firmware and UKMARSBOT runs with [sim] wheels = hinge (the form other
+# than the default spin bodies). Each
 # runs --time-limit CG_LIMIT_S (default 5 s of contest time; the lap under way
 # runs on, so the simulated time is the JSON's sim_time_s, and the figure is
 # callgrind's total over it). docs/BENCHMARKS.md has where the step's
@@ -47,9 +48,9 @@ case_ir "UKMARSBOT scripted gen-16x16-s1" --maze mazes/gen-16x16-s1.txt --driver
 case_ir "scripted gen-32x32-s1" --maze mazes/gen-32x32-s1.txt --driver scripted
 printf '[sim]\nstep_s = 0.002\n' >"$T/s2.ini" # scripted runs may take a 2 ms step (docs/REFERENCE.md, "Config")
 case_ir "scripted gen-16x16-s1, 2 ms step" --maze mazes/gen-16x16-s1.txt --driver scripted --config "$T/s2.ini"
-printf '[sim]\nwheels = spin\n' >"$T/spin.ini" # each wheel's spin a body of its own (sim/world/README.md)
-case_ir "firmware $(basename "$J2018" .txt) seed 1, wheels = spin" --maze "$J2018" --driver firmware --seed 1 --config "$T/spin.ini"
-case_ir "UKMARSBOT scripted gen-16x16-s1, wheels = spin" --maze mazes/gen-16x16-s1.txt --driver scripted --robot robots/ukmarsbot.ini --config "$T/spin.ini"
+printf '[sim]\nwheels = hinge\n' >"$T/hinge.ini" # each wheel a body on a hinge (sim/world/README.md)
+case_ir "firmware $(basename "$J2018" .txt) seed 1, wheels = hinge" --maze "$J2018" --driver firmware --seed 1 --config "$T/hinge.ini"
+case_ir "UKMARSBOT scripted gen-16x16-s1, wheels = hinge" --maze mazes/gen-16x16-s1.txt --driver scripted --robot robots/ukmarsbot.ini --config "$T/hinge.ini"
 # ODE's exact step alone for the robot's 19 rows and for the 9 of the wheels'
 # spin as bodies of their own (bench/ode_rows.c): instructions per step, the
 # difference of 3,000 and 1,000 steps

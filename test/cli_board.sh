@@ -179,18 +179,18 @@ assert a['console'] == b['console'] and a['board']['interrupts'] == b['board']['
 }
 level LevelInt
 js "$T/ours" "
-want = 'FLAGS low 1006 on 1551 off 0 after 1550\r\nINT0 2 0 2507\r\nINT0 2522 12 52711\r\nINT0 5000 25 41914\r\nINT0 7492 37 29553\r\nINT0 10000 50 57441\r\nINT0 12512 62 14279\r\n'
+want = 'FLAGS low 1002 on 1541 off 0 after 1546\r\nINT0 0 0 0\r\nINT0 2525 12 4754\r\nINT0 5000 25 1850\r\nINT0 7497 37 10537\r\nINT0 10000 50 35325\r\nINT0 12492 62 5994\r\n'
 assert j['console'] == want, (j['console'], want)
-assert j['board']['interrupts'].get('INT0') == 14418, j['board']['interrupts']
+assert j['board']['interrupts'].get('INT0') == 14400, j['board']['interrupts']
 print(want.split(chr(13))[0])
 " >"$T/l.txt" 2>&1 && ok "level-mode INT0/INT1 as recorded ($(cat "$T/l.txt"))" || bad "level mode: $(tail -3 "$T/l.txt")"
 
 # a sleeping firmware with INT0 low in level mode wakes at the cycles simavr's own check gives
 level SleepLevel
 js "$T/ours" "
-want = 'WAKES 722 492 18840\r\nWAKES 1590 1133 12172\r\nWAKES 2088 1399 3354\r\nWAKES 2568 1645 13844\r\nWAKES 3050 1891 21835\r\nWAKES 3531 2137 43385\r\nWAKES 4010 2383 50688\r\n'
+want = 'WAKES 720 491 6066\r\nWAKES 1589 1136 44109\r\nWAKES 2101 1414 22237\r\nWAKES 2585 1664 46522\r\nWAKES 3069 1915 19967\r\nWAKES 3554 2165 46649\r\nWAKES 4039 2416 4946'
 assert j['console'] == want, (j['console'], want)
-assert j['board']['interrupts'] == {'INT1': 2385, 'TIMER0_OVF': 1711, 'USART_UDRE': 152}, j['board']['interrupts']
+assert j['board']['interrupts'] == {'INT1': 2417, 'TIMER0_OVF': 1710, 'USART_UDRE': 149}, j['board']['interrupts']
 print(want.split(chr(13))[-2].strip())
 " >"$T/l.txt" 2>&1 && ok "sleeping with level-mode INT0 as recorded ($(cat "$T/l.txt"))" || bad "sleep, level mode: $(tail -3 "$T/l.txt")"
 

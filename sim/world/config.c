@@ -67,9 +67,9 @@ static const keytab_t keys[] = {
      * compiled into the firmware (the contest calls fw_tick every
      * 1/HAL_TICK_HZ s of simulation time). */
     K("sim", sim, step_s, 0.001, 1e-5, 0.01, "s", "1 kHz physics"),
-    W("sim", sim, solver, 1, solvers, "exact: dWorldStep, no creep at rest, drives straight (docs/GUIDE-robot.md); quickstep slid a resting robot 10 mm/min"),
-    KW("sim", sim, solver_iterations, 10, 1, 200, "1", "solver = quickstep only: at 5 the wheel hinges give and a straight run crabs 1.4 degrees"),
-    W("sim", sim, wheels, 0, wheel_forms, "hinge: a wheel a body on a hinge (19 rows); spin: its spin a body (9 rows, 47 % cheaper; not yet the default: docs/BENCHMARKS.md)"),
+    W("sim", sim, solver, 1, solvers, "exact: dWorldStep, no creep at rest, drives straight (docs/GUIDE-robot.md); quickstep slid a resting robot 10 mm/min on hinged wheels (docs/BENCHMARKS.md)"),
+    KW("sim", sim, solver_iterations, 10, 1, 200, "1", "solver = quickstep only: at 5 a resting robot creeps 0.17 mm/min on spin bodies (--validate fails it); on hinges the wheels give and a straight run crabs 1.4 degrees"),
+    W("sim", sim, wheels, 1, wheel_forms, "spin: each wheel's spin a body of its own (9 solver rows, a 47 % cheaper ODE step than hinge: docs/BENCHMARKS.md); hinge: each wheel a body on a hinge (19 rows)"),
     K("sim", sim, time_limit_s, 600, 1, 86400, "s", "contest rules: 10 minutes"),
 };
 
