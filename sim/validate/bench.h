@@ -59,5 +59,8 @@ void bench_fit(validate_check_t *v, int *n, const char *name, double expected, d
  * readings reproduced, its IR sensors and gyro against their models'
  * analytic values (validate_robot.c). Returns the new count. */
 int validate_robot_checks(const simcfg_t *c, validate_check_t *v, int n);
+/* Where a one-cell stop at the example firmware's acceleration ends against
+ * the encoders (stop.c). Returns the new count. */
+int validate_stop_checks(const simcfg_t *c, validate_check_t *v, int n);
 
 #endif

@@ -556,6 +556,7 @@ int validate_run(const simcfg_t *c, validate_check_t *checks)
     int n = motor_checks(&b, checks, 0);
     n = response_checks(&b, checks, n);
     n = floor_checks(&b, checks, n);
+    n = validate_stop_checks(&b, checks, n);
     return validate_robot_checks(c, checks, n);
 }
 
