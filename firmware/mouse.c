@@ -638,16 +638,18 @@ static uint8_t dg_seq[2];     /* the side readings last looked at */
 static float dg_var[2];       /* the variance of dg_px and dg_py, mm^2 */
 static float dg_dist_mm;      /* odometry's distance when they last grew */
 
-/* A diagonal straight starts from the node (run_x2, run_y2), the robot
- * run_carry_mm short of it (a turn's straight after it): the reference's
- * starting point. */
-static void diag_anchor(void)
+/* A diagonal straight starts from the node (x2, y2) (half units: cell
+ * (x, y)'s centre at (2x, 2y)) heading h8 (eighths clockwise from north),
+ * the robot carry_mm short of it (a speed run: a turn's straight after
+ * it): the reference's starting point. Speed runs and command mode's
+ * diagonals (cmd_diagonal). */
+static void diag_anchor(int16_t x2, int16_t y2, uint8_t h8, float carry_mm)
 {
-    float a = 1.5707963f - 0.7853982f * (float)run_h8; /* the heading, counter-clockwise from east */
-    dg_lx = (float)(run_x2 + 1) * (RC_CELL_MM / 2);
-    dg_ly = (float)(run_y2 + 1) * (RC_CELL_MM / 2);
-    dg_px = dg_lx - run_carry_mm * cosf(a);
-    dg_py = dg_ly - run_carry_mm * sinf(a);
+    float a = 1.5707963f - 0.7853982f * (float)h8; /* the heading, counter-clockwise from east */
+    dg_lx = (float)(x2 + 1) * (RC_CELL_MM / 2);
+    dg_ly = (float)(y2 + 1) * (RC_CELL_MM / 2);
+    dg_px = dg_lx - carry_mm * cosf(a);
+    dg_py = dg_ly - carry_mm * sinf(a);
     dg_ox = mo.odom.x_mm;
     dg_oy = mo.odom.y_mm;
     dg_psi = a - 1.5707963f - mo.heading_rad;
@@ -704,7 +706,7 @@ static void prun_straight(uint8_t kind, uint8_t n, const slalom_move_t *next)
     float mm = n * unit + run_carry_mm + before;
     float v = !ortho ? run_v_diag : RC_RUN_MM_S;
     if (kind != SLALOM_ORTHO && kind != SLALOM_DIAG) v = run_v_turn; /* between two turns */
-    if (!ortho && RC_DIAG_TOF) diag_anchor();
+    if (!ortho && RC_DIAG_TOF) diag_anchor(run_x2, run_y2, run_h8, run_carry_mm);
     run_x2 = (int16_t)(run_x2 + n * slalom_step_x[run_h8]);
     run_y2 = (int16_t)(run_y2 + n * slalom_step_y[run_h8]);
     start_forward(mm, v, next ? run_v_turn : 0, RC_RUN_ACCEL_MM_S2);
@@ -1033,10 +1035,27 @@ static int diag_step(maze_cell_t *c, uint8_t *e)
     return 1;
 }
 
+/* 1: diagonals steer on the speed runs' diagonal reference (host builds) */
+#define CMD_DIAG_REF (PLAN_ENABLED && RC_CMD_DIAG_TOF)
+#if CMD_DIAG_REF
+/* The reference (diag_anchor, diag_centring) from the middle of the
+ * boundary the robot stands on: ex.cell's centre half a cell back along
+ * edge_dir(), in the half-unit grid. */
+static void cmd_diag_anchor(void)
+{
+    uint8_t e2 = (uint8_t)(2u * edge_dir());
+    diag_anchor((int16_t)(2 * maze_x(&ex.map, ex.cell) - slalom_step_x[e2]),
+                (int16_t)(2 * maze_y(&ex.map, ex.cell) - slalom_step_y[e2]), mouse_cmd_heading8(), 0);
+}
+#endif
+
 /* A diagonal move of `halves` half steps from a boundary: refused (-1) if
- * the map shows a wall at the middle of a boundary it would cross. Driven
- * blind on odometry's held heading: the side sensors see posts and walls
- * at every angle there, and the cells crossed are not sensed. */
+ * the map shows a wall at the middle of a boundary it would cross. The
+ * cells crossed are not sensed. Held on odometry's heading, steered by the
+ * side sensors' position reference where the map predicts their readings
+ * (RC_CMD_DIAG_TOF: the held heading carries a few tenths of a degree out
+ * of the move before, a few mm over a diagonal, and the wheels clear the
+ * posts by 3 mm); blind without it. */
 static int cmd_diagonal(uint16_t halves)
 {
     maze_cell_t c = ex.cell;
@@ -1044,6 +1063,9 @@ static int cmd_diagonal(uint16_t halves)
     if (!(cmd_flags & CF_HALF)) return -1; /* from a centre a diagonal aims at a post */
     for (uint16_t k = 0; k < halves; k++)
         if (!diag_step(&c, &e)) return -1;
+#if CMD_DIAG_REF
+    cmd_diag_anchor();
+#endif
     ex.cell = c;
     cmd_flags = (uint8_t)(CF_DIAG | CF_HALF | CF_UNSENSED | (e << CF_EDGE_SHIFT) | ((halves & 1u) ? CF_START_HALF : 0u));
     cmd_entered = (uint8_t)(halves >> 1); /* mouse_cmd_moved: 2 x cmd_entered + the odd half */
@@ -1177,7 +1199,13 @@ static void cmd_finish(uint8_t result)
 
 static void cmd_forward_step(void)
 {
-    if (cmd_flags & CF_DIAG) { /* a diagonal (cmd_diagonal): blind to its end */
+    if (cmd_flags & CF_DIAG) { /* a diagonal (cmd_diagonal): unsensed to its end */
+#if CMD_DIAG_REF
+        if (motion_busy(&mo)) {
+            diag_centring();
+            return;
+        }
+#endif
         no_centring();
         if (!motion_busy(&mo)) cmd_finish(MOUSE_CMD_DONE);
         return;

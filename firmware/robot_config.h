@@ -381,4 +381,11 @@
 #define RC_STALL_MM 40.0f       /* forward error that means we are stuck... */
 #define RC_STALL_MS 400u        /* ...for this long: crash stop */
 
+/* ---- command mode (mmsim --mms) ---- */
+/* 1: command mode's diagonals (mouse.c cmd_diagonal) steer on the speed
+ * runs' diagonal reference (RC_DIAG_TOF's, with its RC_DIAG_TOF_* figures),
+ * anchored at the middle of the boundary each starts from; 0: held blind
+ * on odometry's heading. Host builds only (diagref.c is PLAN_ENABLED code). */
+#define RC_CMD_DIAG_TOF 1
+
 #endif

@@ -14,6 +14,7 @@
 #define RC_DIAG_ENTRY_HALVES 2        /* half units */
 #define RC_DIAG_MAX_HALVES 6          /* half steps */
 #define RC_DIAG_TOF 0
+#define RC_CMD_DIAG_TOF 0
 #define RC_DIAG_TOF_START_MM 1.5f     /* mm, as robot_config.h */
 #define RC_DIAG_TOF_DRIFT_MM2 0.02f   /* mm^2 per mm, as robot_config.h */
 #define RC_SLALOM_ACCEL_DEG_S2 RC_SMOOTH_ACCEL_DEG_S2
