@@ -144,19 +144,21 @@
  * the planner; measured in mmsim, paper robot, seed 1):
  * - the feed-forward's cap during the run, command: 990 of 1023 leaves
  *   33 (1.1 mm of error at RC_KP_FWD) for the controller, and the wheels
- *   hold 728 mm/s. japan2018, japan2019 and five mazes that had touched
- *   at other figures: largest tracking error 4-7 mm per run; at 1000
+ *   hold 728 mm/s. japan2018, japan2019 and seven mazes that had touched
+ *   at other figures: largest tracking error 3-7 mm per run; at 1000
  *   (cruise 730) 11-18 mm, runs fell back, uk2025-megacon-b touched.
- * - cruise 720 mm/s (feed-forward 57 + 923 = 980): best runs 24.59 s
- *   (japan2018) and 24.54 s (japan2019), against 26.04 and 25.93 at 676
- *   (the most RC_CMD_FF_MAX holds) with 370 mm/s turns.
- * - 4,000 mm/s^2: 0.1 s faster than 3,000 on both; at 5,000 japan2001
+ * - cruise 720 mm/s (feed-forward 57 + 923 = 980): best runs 24.74 s
+ *   (japan2018) and 24.65 s (japan2019); at 650 (with 390 mm/s turns)
+ *   26.19 and 25.33.
+ * - acceleration and braking as the safe runs', 3,000 mm/s^2: 4,000 was
+ *   0.15 s faster on both but japan9p touched a wall twice as the third
+ *   run stopped at the goal, 0.5 s after its lap ended; at 5,000 japan2001
  *   touched (every 8th classic maze, 61), at 6,000 japan2019 and at 8,000
  *   both crashed in the first fast run (the robot pitches onto its nose
  *   in hard stops: centre of mass 3.5 mm behind the axle, no front skid). */
 #define RC_RUN_FAST_CMD_FF_MAX 990.0f
 #define RC_RUN_FAST_MM_S 720.0f
-#define RC_RUN_FAST_ACCEL_MM_S2 4000.0f
+#define RC_RUN_FAST_ACCEL_MM_S2 3000.0f
 /* in-place turns: a quarter turn peaks at 424 deg/s (wheels 355 mm/s),
  * feed-forward 57 + 455 + 133 (35 rad/s^2 of wheel arc) = 645. At 600
  * deg/s and 3,000 deg/s^2 (peak 520 deg/s) with the contacts as springs
