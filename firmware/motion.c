@@ -8,6 +8,15 @@
 
 #define DEG_TO_RAD 0.017453293f
 #define HALF_TRACK_MM (RC_TRACK_MM / 2)
+/* the feed-forward's cap: motion_t's, or a turn's given one (MOTION_FF_CAP
+ * 1); RC_CMD_FF_MAX (0) */
+#if MOTION_FF_CAP
+#define FF_MAX_CMD(m) ((m)->ff_max_cmd)
+#define FF_MAX_GIVEN(cmd) (cmd)
+#else
+#define FF_MAX_CMD(m) RC_CMD_FF_MAX
+#define FF_MAX_GIVEN(cmd) ((void)(cmd), RC_CMD_FF_MAX)
+#endif
 
 void motion_init(motion_t *m)
 {
@@ -23,6 +32,9 @@ void motion_init(motion_t *m)
     m->crashed = 0;
     m->enabled = 1;
     m->cmd[0] = m->cmd[1] = 0;
+#if MOTION_FF_CAP
+    m->ff_max_cmd = RC_CMD_FF_MAX;
+#endif
 }
 
 void motion_forward(motion_t *m, float distance_mm, float v_max, float v_end)
@@ -57,7 +69,7 @@ void motion_turn_smooth(motion_t *m, float degrees)
     m->heading_rad += degrees * DEG_TO_RAD;
 }
 
-static float ff_spare(float v_mm_s, float w_deg_s);
+static float ff_spare(float ff_max_cmd, float v_mm_s, float w_deg_s);
 
 /* A robot may turn only on the spot (RC_SMOOTH_TURNS 0): no smooth turn
  * then fits before any turn, however long the straight. */
@@ -67,10 +79,12 @@ static float ff_spare(float v_mm_s, float w_deg_s);
 
 /* Integrate a turn of `degrees` (> 0) at constant forward speed v_mm_s,
  * its rotation the profile the control tick runs (peak w_deg_s, accel
- * accel_deg_s2, speeding up within the outer wheel's spare command):
+ * accel_deg_s2, speeding up within the outer wheel's spare command under
+ * the cap ff_max_cmd):
  * where it ends (*x_mm to the turn's side, *y_mm along the entry heading)
  * and in how many ticks. */
-static uint16_t turn_integrate(float v_mm_s, float degrees, float w_deg_s, float accel_deg_s2, float *x_mm, float *y_mm)
+static uint16_t turn_integrate(float v_mm_s, float degrees, float w_deg_s, float accel_deg_s2, float ff_max_cmd, float *x_mm,
+                               float *y_mm)
 {
     const float dt_s = 1.0f / HAL_TICK_HZ;
     profile_t p;
@@ -80,7 +94,7 @@ static uint16_t turn_integrate(float v_mm_s, float degrees, float w_deg_s, float
     profile_start(&p, degrees, w_deg_s, 0, accel_deg_s2);
     while (p.active && ticks < 5000u) { /* ~250 ticks; the bound is for bad constants */
         /* as motion_tick: the rotation speeds up within the outer wheel's spare command */
-        profile_update_capped(&p, dt_s, ff_spare(v_mm_s, p.speed) * (1.0f / (RC_CMD_PER_ARC_MM_S2 * HALF_TRACK_MM * DEG_TO_RAD)));
+        profile_update_capped(&p, dt_s, ff_spare(FF_MAX_GIVEN(ff_max_cmd), v_mm_s, p.speed) * (1.0f / (RC_CMD_PER_ARC_MM_S2 * HALF_TRACK_MM * DEG_TO_RAD)));
         float w = p.speed * DEG_TO_RAD;
         along += v_mm_s * dt_s * cosf(theta + 0.5f * w * dt_s);
         side += v_mm_s * dt_s * sinf(theta + 0.5f * w * dt_s);
@@ -100,7 +114,7 @@ void motion_smooth_geometry(float v_mm_s, float *offset_mm, float *length_mm)
         return;
     }
     float side;
-    uint16_t ticks = turn_integrate(v_mm_s, 90.0f, RC_SMOOTH_DEG_S, RC_SMOOTH_ACCEL_DEG_S2, &side, offset_mm);
+    uint16_t ticks = turn_integrate(v_mm_s, 90.0f, RC_SMOOTH_DEG_S, RC_SMOOTH_ACCEL_DEG_S2, RC_CMD_FF_MAX, &side, offset_mm);
     /* the path is symmetric: the same along both lines */
     *length_mm = v_mm_s * (1.0f / HAL_TICK_HZ) * ticks;
 }
@@ -111,11 +125,11 @@ void motion_slalom(motion_t *m, float degrees, float w_deg_s, float accel_deg_s2
     m->heading_rad += degrees * DEG_TO_RAD;
 }
 
-void motion_slalom_geometry(float v_mm_s, float degrees, float w_deg_s, float accel_deg_s2, float *pre_mm, float *post_mm,
-                            float *length_mm)
+void motion_slalom_geometry(float v_mm_s, float degrees, float w_deg_s, float accel_deg_s2, float ff_max_cmd, float *pre_mm,
+                            float *post_mm, float *length_mm)
 {
     float x, y;
-    uint16_t ticks = turn_integrate(v_mm_s, degrees, w_deg_s, accel_deg_s2, &x, &y);
+    uint16_t ticks = turn_integrate(v_mm_s, degrees, w_deg_s, accel_deg_s2, ff_max_cmd, &x, &y);
     if (degrees > 179.0f) {
         *pre_mm = x; /* a U: how far to the side it ends, */
         *post_mm = y; /* and how far ahead of its start */
@@ -163,12 +177,12 @@ static int16_t clamp_cmd(float c)
     return (int16_t)lroundf(c);
 }
 
-/* Command left within RC_CMD_FF_MAX for acceleration by the faster wheel's
- * feed-forward at forward speed v_mm_s while turning at w_deg_s. */
-static float ff_spare(float v_mm_s, float w_deg_s)
+/* Command left within the cap ff_max_cmd for acceleration by the faster
+ * wheel's feed-forward at forward speed v_mm_s while turning at w_deg_s. */
+static float ff_spare(float ff_max_cmd, float v_mm_s, float w_deg_s)
 {
     float v_wheel = fabsf(v_mm_s) + fabsf(w_deg_s) * (DEG_TO_RAD * HALF_TRACK_MM);
-    return RC_CMD_FF_MAX - RC_CMD_FRICTION - v_wheel / RC_MM_S_PER_CMD;
+    return ff_max_cmd - RC_CMD_FRICTION - v_wheel / RC_MM_S_PER_CMD;
 }
 
 /* A wheel's command: back-EMF of its speed setpoint v_mm_s plus the
@@ -191,8 +205,8 @@ void motion_tick(motion_t *m, float dt_s)
     odom_update(&m->odom, hal_encoder(HAL_LEFT), hal_encoder(HAL_RIGHT), dt_s);
     if (!m->enabled || m->crashed) return;
     /* speed up no faster than the faster wheel's feed-forward allows
-     * within RC_CMD_FF_MAX: the motor's torque to spare falls with speed */
-    float spare = ff_spare(m->fwd.speed, m->rot.speed);
+     * within the cap: the motor's torque to spare falls with speed */
+    float spare = ff_spare(FF_MAX_CMD(m), m->fwd.speed, m->rot.speed);
     profile_update_capped(&m->fwd, dt_s, spare * (1.0f / RC_CMD_PER_MM_S2));
     profile_update_capped(&m->rot, dt_s, spare * (1.0f / (RC_CMD_PER_ARC_MM_S2 * HALF_TRACK_MM * DEG_TO_RAD)));
 

@@ -20,6 +20,19 @@
 #include "odom.h"
 #include "profile.h"
 
+/* 1: motion_t holds the feed-forward's cap (ff_max_cmd), which the
+ * planner's speed runs raise (mouse.c, plan.h PLAN_ENABLED); 0: the cap is
+ * RC_CMD_FF_MAX alone. The AVR builds have no planner and keep 0 (the
+ * cap as a variable costs the UKMARSBOT image 86 B of flash and 23 B of stack
+ * headroom); a target that enables the planner defines it 1 as well. */
+#ifndef MOTION_FF_CAP
+#if !defined(__AVR__)
+#define MOTION_FF_CAP 1
+#else
+#define MOTION_FF_CAP 0
+#endif
+#endif
+
 typedef struct motion_s {
     odom_t odom;
     profile_t fwd, rot;
@@ -32,6 +45,9 @@ typedef struct motion_s {
     uint8_t crashed;
     uint8_t enabled;
     int16_t cmd[2];                     /* last motor commands */
+#if MOTION_FF_CAP
+    float ff_max_cmd;                   /* the feed-forward's cap: RC_CMD_FF_MAX, a speed run's own */
+#endif
 } motion_t;
 
 void motion_init(motion_t *m);
@@ -58,14 +74,15 @@ void motion_smooth_geometry(float v_mm_s, float *offset_mm, float *length_mm);
  * the turn's own peak rate and acceleration (slalom.c). */
 void motion_slalom(motion_t *m, float degrees, float w_deg_s, float accel_deg_s2);
 /* Where a slalom of `degrees` (> 0, either side) at constant v_mm_s goes,
- * from the discrete profile the control tick runs: *pre_mm from its start
+ * from the discrete profile the control tick runs with the feed-forward
+ * capped at ff_max_cmd (motion_t's): *pre_mm from its start
  * to the crossing of the entry and exit lines, *post_mm from there to its
  * end (more than *pre_mm where the motor caps the speeding up of the
  * rotation but not its braking); for 180 degrees *pre_mm how far to the
  * side it ends, *post_mm how far ahead of its start. *length_mm its path
  * length. */
-void motion_slalom_geometry(float v_mm_s, float degrees, float w_deg_s, float accel_deg_s2, float *pre_mm, float *post_mm,
-                            float *length_mm);
+void motion_slalom_geometry(float v_mm_s, float degrees, float w_deg_s, float accel_deg_s2, float ff_max_cmd, float *pre_mm,
+                            float *post_mm, float *length_mm);
 /* Standing before a flat wall that both diagonal rays hit (at a cell
  * centre, each cone's inner edge meets the wall ahead 22 mm from its ends):
  * how far the robot is turned counter-clockwise from the wall's normal,

@@ -555,6 +555,7 @@ static float run_carry_mm;    /* the last turn's straight after it, not driven y
 static uint8_t run_turn_next; /* the straight under way leads into the turn run_moves[run_idx] */
 static uint8_t run_ortho;     /* the straight under way is orthogonal: centring */
 static float run_v_turn, run_v_diag;
+static float run_v_max, run_accel; /* this run's cruise speed (mm/s) and acceleration (mm/s^2) */
 static float run_err_mm;      /* the largest tracking error of this run */
 static uint8_t run_dirty;     /* the last run's tracking error reached RC_RUN_CLEAN_MM */
 static float run_align_mm;    /* a wall ahead: the straight ends this far before its cell's centre */
@@ -583,8 +584,10 @@ static int prun_diag_ok(int n)
 }
 
 /* At the start of a speed run: the moves (run_count 0 if plan_run finds
- * none: the orthogonal run then), at the safe speeds on the first run and
- * after one whose tracking error reached RC_RUN_CLEAN_MM, else the fast. */
+ * none: the orthogonal run then), at the safe speeds (cruise, acceleration,
+ * turns, diagonals) on the first run and after one whose tracking error
+ * reached RC_RUN_CLEAN_MM, else the fast: the runs climb from the safe to
+ * the fast figures and fall back after a run that was not clean. */
 static void prun_begin(void)
 {
     run_count = 0;
@@ -594,9 +597,10 @@ static void prun_begin(void)
     c.cell_mm = RC_CELL_MM;
     c.v_turn_mm_s = run_v_turn = fast ? RC_SLALOM_FAST_MM_S : RC_SLALOM_SAFE_MM_S;
     c.v_diag_mm_s = run_v_diag = fast ? RC_DIAG_FAST_MM_S : RC_DIAG_SAFE_MM_S;
-    c.v_max_mm_s = RC_RUN_MM_S;
-    c.accel_mm_s2 = RC_RUN_ACCEL_MM_S2;
-    slalom_fit(run_v_turn, run_drive, c.turn_s);
+    c.v_max_mm_s = run_v_max = fast ? RC_RUN_FAST_MM_S : RC_RUN_MM_S;
+    c.accel_mm_s2 = run_accel = fast ? RC_RUN_FAST_ACCEL_MM_S2 : RC_RUN_ACCEL_MM_S2;
+    float ff_max = fast ? RC_RUN_FAST_CMD_FF_MAX : RC_CMD_FF_MAX;
+    slalom_fit(run_v_turn, ff_max, run_drive, c.turn_s);
     float t_s;
     int n = plan_run(&ex.map, &c, run_moves, PLAN_MAX_MOVES, &t_s);
     if (n > 0 && !prun_diag_ok(n)) { /* the same without diagonals */
@@ -604,6 +608,7 @@ static void prun_begin(void)
         n = plan_run(&ex.map, &c, run_moves, PLAN_MAX_MOVES, &t_s);
     }
     if (n <= 0) return;
+    mo.ff_max_cmd = ff_max; /* until prun_end */
     unsigned diag = 0;
     for (int i = 0; i < n; i++) diag += run_moves[i].kind == SLALOM_DIAG || run_moves[i].kind >= SLALOM_F45;
     char line[HAL_LOG_MAX + 1];
@@ -704,12 +709,12 @@ static void prun_straight(uint8_t kind, uint8_t n, const slalom_move_t *next)
     float unit = (run_h8 & 1u) ? RC_CELL_MM * 0.70710678f : RC_CELL_MM / 2;
     float before = next ? run_drive[next->kind].before_mm : 0;
     float mm = n * unit + run_carry_mm + before;
-    float v = !ortho ? run_v_diag : RC_RUN_MM_S;
+    float v = !ortho ? run_v_diag : run_v_max;
     if (kind != SLALOM_ORTHO && kind != SLALOM_DIAG) v = run_v_turn; /* between two turns */
     if (!ortho && RC_DIAG_TOF) diag_anchor(run_x2, run_y2, run_h8, run_carry_mm);
     run_x2 = (int16_t)(run_x2 + n * slalom_step_x[run_h8]);
     run_y2 = (int16_t)(run_y2 + n * slalom_step_y[run_h8]);
-    start_forward(mm, v, next ? run_v_turn : 0, RC_RUN_ACCEL_MM_S2);
+    start_forward(mm, v, next ? run_v_turn : 0, run_accel);
     run_carry_mm = 0;
     run_ortho = ortho;
     run_turn_next = next != NULL;
@@ -735,7 +740,7 @@ static void prun_turn(void)
     run_x2 = (int16_t)(run_x2 + dx);
     run_y2 = (int16_t)(run_y2 + dy);
     run_h8 = (uint8_t)((run_h8 + mv->dir * g->turn) & 7u);
-    motion_forward_accel(&mo, d->arc_mm, run_v_turn, run_v_turn, RC_RUN_ACCEL_MM_S2);
+    motion_forward_accel(&mo, d->arc_mm, run_v_turn, run_v_turn, run_accel);
     motion_slalom(&mo, -45.0f * g->turn * mv->dir, d->w_deg_s, RC_SLALOM_ACCEL_DEG_S2); /* right (+1) is clockwise */
     no_centring();
     run_carry_mm = d->after_mm;
@@ -862,6 +867,7 @@ static void prun_end(void)
     st.heading = (uint8_t)(run_h8 >> 1);
     st.runs++;
     run_dirty = run_err_mm >= RC_RUN_CLEAN_MM;
+    mo.ff_max_cmd = RC_CMD_FF_MAX;
     log_line(HAL_STR("run %u reached the goal at %u s"), st.runs, (unsigned)((hal_micros() - start_us) / 1000000u));
     log_line(HAL_STR("run %u: largest tracking error %u mm"), st.runs, (unsigned)run_err_mm);
     run_count = 0;

@@ -58,7 +58,8 @@
  * controller's corrections (at RC_KP_* = 30 per mm, 3 mm of error). Forward
  * moves speed up at most at (RC_CMD_FF_MAX - 57 - 1.2814 * v) / 0.0833
  * mm/s^2: 2,700 at 500 mm/s, 1,200 at 600, none at 676 (the top speed the
- * controller can still hold). */
+ * controller can still hold). Speed runs after a clean one take their own
+ * cap, RC_RUN_FAST_CMD_FF_MAX. */
 #define RC_CMD_FF_MAX 923.0f
 
 /* ---- ToF sensors (positions as robots/paper.ini's [tof.*]) ---- */
@@ -136,6 +137,28 @@
  * below 481 mm/s (RC_CMD_FF_MAX), braking always */
 #define RC_ACCEL_MM_S2 3000.0f
 #define RC_RUN_ACCEL_MM_S2 3000.0f   /* speed runs: 5000 crashed on japan2019 (wheel slip in the stops) */
+/* The speed runs climb (mouse.c prun_begin): the first, and any after a
+ * run whose tracking error reached RC_RUN_CLEAN_MM, at the safe figures
+ * (RC_RUN_MM_S, RC_RUN_ACCEL_MM_S2, RC_CMD_FF_MAX, RC_SLALOM_SAFE_MM_S,
+ * RC_DIAG_SAFE_MM_S), each after a clean one at these (host builds with
+ * the planner; measured in mmsim, paper robot, seed 1):
+ * - the feed-forward's cap during the run, command: 990 of 1023 leaves
+ *   33 (1.1 mm of error at RC_KP_FWD) for the controller, and the wheels
+ *   hold 728 mm/s. japan2018, japan2019 and seven mazes that had touched
+ *   at other figures: largest tracking error 3-7 mm per run; at 1000
+ *   (cruise 730) 11-18 mm, runs fell back, uk2025-megacon-b touched.
+ * - cruise 720 mm/s (feed-forward 57 + 923 = 980): best runs 24.74 s
+ *   (japan2018) and 24.65 s (japan2019); at 650 (with 390 mm/s turns)
+ *   26.19 and 25.33.
+ * - acceleration and braking as the safe runs', 3,000 mm/s^2: 4,000 was
+ *   0.15 s faster on both but japan9p touched a wall twice as the third
+ *   run stopped at the goal, 0.5 s after its lap ended; at 5,000 japan2001
+ *   touched (every 8th classic maze, 61), at 6,000 japan2019 and at 8,000
+ *   both crashed in the first fast run (the robot pitches onto its nose
+ *   in hard stops: centre of mass 3.5 mm behind the axle, no front skid). */
+#define RC_RUN_FAST_CMD_FF_MAX 990.0f
+#define RC_RUN_FAST_MM_S 720.0f
+#define RC_RUN_FAST_ACCEL_MM_S2 3000.0f
 /* in-place turns: a quarter turn peaks at 424 deg/s (wheels 355 mm/s),
  * feed-forward 57 + 455 + 133 (35 rad/s^2 of wheel arc) = 645. At 600
  * deg/s and 3,000 deg/s^2 (peak 520 deg/s) with the contacts as springs
@@ -190,11 +213,17 @@
  * by smooth turns (run_plan) */
 #define RC_DIAG_RUNS 1
 /* Slaloms at 350 mm/s, the smooth 90's speed: the S90 (a 90 inside one
- * cell) fits its 90 mm of room up to there (above it the outer wheel runs
- * into the motor's top speed); at 300 the zigzags of staircases took
- * longer (japan2019 seed 1: best run 30.0 s against 27.0). */
+ * cell) fits its RC_SLALOM_S90_MM of room up to ~375 mm/s under
+ * RC_CMD_FF_MAX (above it the outer wheel runs into the feed-forward's
+ * cap); at 300 the zigzags of staircases took longer (japan2019 seed 1:
+ * best run 30.0 s against 27.0). The fast runs' 390 fits it under
+ * RC_RUN_FAST_CMD_FF_MAX (up to ~395): every turn of a plan is at one
+ * speed (plan.h), so the S90 sets it for the F90 and F180 too (the F180
+ * then clears its post by 11.6 mm, test_slalom). At 400 the S90 needs 88
+ * mm of room, and at 88 five of 61 classic mazes (every 8th) touched,
+ * taiwan2017f in its first run at 350. */
 #define RC_SLALOM_SAFE_MM_S 350.0f
-#define RC_SLALOM_FAST_MM_S 350.0f
+#define RC_SLALOM_FAST_MM_S 390.0f
 /* Diagonal straights: the wheels pass the posts 3.1 mm off on the
  * diagonal's centre line (posts 63.6 mm from it, minus 52 mm of wheel and
  * 8.5 mm of post across the diagonal); held on odometry's heading, nothing

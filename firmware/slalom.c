@@ -68,23 +68,23 @@ static const float corner_target_mm[SLALOM_KINDS] = {
  * the shortest path), by bisection; 0 if even the fastest rate the motor
  * allows does not. *pre_mm, *post_mm, *arc_mm: that turn's
  * (motion_slalom_geometry; a U: its width and its end's advance). */
-static float fit_rate(float v, float degrees, float target_mm, float *pre_mm, float *post_mm, float *arc_mm)
+static float fit_rate(float v, float ff_max_cmd, float degrees, float target_mm, float *pre_mm, float *post_mm, float *arc_mm)
 {
     float lo = RC_SLALOM_W_MIN_DEG_S, hi = RC_SLALOM_W_MAX_DEG_S, a, b, len;
     uint8_t u = degrees > 179.0f; /* a U: only its width counts */
-    motion_slalom_geometry(v, degrees, hi, RC_SLALOM_ACCEL_DEG_S2, &a, &b, &len);
+    motion_slalom_geometry(v, degrees, hi, RC_SLALOM_ACCEL_DEG_S2, ff_max_cmd, &a, &b, &len);
     if ((u ? a : fmaxf(a, b)) > target_mm) return 0;
     for (uint8_t i = 0; i < 24; i++) {
         float mid = 0.5f * (lo + hi);
-        motion_slalom_geometry(v, degrees, mid, RC_SLALOM_ACCEL_DEG_S2, &a, &b, &len);
+        motion_slalom_geometry(v, degrees, mid, RC_SLALOM_ACCEL_DEG_S2, ff_max_cmd, &a, &b, &len);
         if ((u ? a : fmaxf(a, b)) > target_mm) lo = mid;
         else hi = mid;
     }
-    motion_slalom_geometry(v, degrees, hi, RC_SLALOM_ACCEL_DEG_S2, pre_mm, post_mm, arc_mm);
+    motion_slalom_geometry(v, degrees, hi, RC_SLALOM_ACCEL_DEG_S2, ff_max_cmd, pre_mm, post_mm, arc_mm);
     return hi;
 }
 
-void slalom_fit(float v_mm_s, slalom_drive_t drive[SLALOM_KINDS], float turn_s[SLALOM_KINDS])
+void slalom_fit(float v_mm_s, float ff_max_cmd, slalom_drive_t drive[SLALOM_KINDS], float turn_s[SLALOM_KINDS])
 {
     for (uint8_t k = 0; k < SLALOM_KINDS; k++) {
         const slalom_geom_t *g = &slalom_geom[k];
@@ -93,7 +93,7 @@ void slalom_fit(float v_mm_s, slalom_drive_t drive[SLALOM_KINDS], float turn_s[S
         turn_s[k] = TURN_NO_FIT_S;
         if (k < SLALOM_S90 || corner_target_mm[k] <= 0) continue;
         float pre = 0, post = 0, arc = 0;
-        d->w_deg_s = fit_rate(v_mm_s, 45.0f * g->turn, corner_target_mm[k], &pre, &post, &arc);
+        d->w_deg_s = fit_rate(v_mm_s, ff_max_cmd, 45.0f * g->turn, corner_target_mm[k], &pre, &post, &arc);
         if (d->w_deg_s <= 0) continue;
         if (g->turn == 4) { /* F180: from the entry node to the exit node, level */
             d->before_mm = post < 0 ? -post : 0;

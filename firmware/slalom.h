@@ -86,9 +86,10 @@ typedef struct {
     float after_mm;  /* straight from its end to the exit node */
 } slalom_drive_t;
 
-/* Size every turn for forward speed v_mm_s: drive[] for the executor,
+/* Size every turn for forward speed v_mm_s, the feed-forward capped at
+ * ff_max_cmd (motion_t's while it is driven): drive[] for the executor,
  * turn_s[] the time from entry node to exit node for the planner (-1:
  * the turn does not fit, plan.h: not used). Host builds only (PLAN_ENABLED). */
-void slalom_fit(float v_mm_s, slalom_drive_t drive[SLALOM_KINDS], float turn_s[SLALOM_KINDS]);
+void slalom_fit(float v_mm_s, float ff_max_cmd, slalom_drive_t drive[SLALOM_KINDS], float turn_s[SLALOM_KINDS]);
 
 #endif

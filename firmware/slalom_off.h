@@ -10,6 +10,9 @@
 #define RC_SLALOM_FAST_MM_S RC_SMOOTH_MM_S
 #define RC_DIAG_SAFE_MM_S RC_SMOOTH_MM_S
 #define RC_DIAG_FAST_MM_S RC_SMOOTH_MM_S
+#define RC_RUN_FAST_MM_S RC_RUN_MM_S
+#define RC_RUN_FAST_ACCEL_MM_S2 RC_RUN_ACCEL_MM_S2
+#define RC_RUN_FAST_CMD_FF_MAX RC_CMD_FF_MAX
 #define RC_RUN_CLEAN_MM 10.0f         /* mm */
 #define RC_DIAG_ENTRY_HALVES 2        /* half units */
 #define RC_DIAG_MAX_HALVES 6          /* half steps */

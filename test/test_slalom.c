@@ -35,7 +35,8 @@
 #define DIAG_CLEAR_MM 3.0
 #define ORTHO_CLEAR_MM 10.0
 #define GRIP_MM_S2 2943.0  /* 0.3 g: a third of the tyres' mu 1.0 */
-#define WHEEL_TOP_MM_S 676.0 /* the speed RC_CMD_FF_MAX can hold (robot_config.h) */
+/* the wheel speed a feed-forward cap can hold, mm/s (robot_config.h: 676 at RC_CMD_FF_MAX) */
+#define WHEEL_TOP_MM_S(cap) (((cap) - RC_CMD_FRICTION) * RC_MM_S_PER_CMD)
 
 typedef struct {
     double x, y, th; /* mm, rad clockwise from the entry heading's frame's +y */
@@ -109,9 +110,11 @@ static double clearance(const slalom_geom_t *g, int vert)
     return best;
 }
 
-/* the turn kind as driven at v with d: its poses from the entry node (the
- * entry heading h0 rad), as motion.c integrates it; returns the peak rate */
-static double drive(const slalom_geom_t *g, const slalom_drive_t *d, double v, double *end_x, double *end_y, double *end_th)
+/* the turn kind as driven at v with d, the feed-forward capped at cap:
+ * its poses from the entry node (the entry heading h0 rad), as motion.c
+ * integrates it; returns the peak rate */
+static double drive(const slalom_geom_t *g, const slalom_drive_t *d, double v, float cap, double *end_x, double *end_y,
+                    double *end_th)
 {
     const float dt = 1.0f / HAL_TICK_HZ;
     double h0 = g->from_diag ? 45 * D2R : 0, x = 0, y = 0, th = h0, peak = 0;
@@ -124,7 +127,7 @@ static double drive(const slalom_geom_t *g, const slalom_drive_t *d, double v, d
     profile_start(&p, 45.0f * g->turn, d->w_deg_s, 0, RC_SLALOM_ACCEL_DEG_S2);
     while (p.active) {
         float vw = (float)v + fabsf(p.speed) * (float)D2R * (RC_TRACK_MM / 2);
-        float spare = RC_CMD_FF_MAX - RC_CMD_FRICTION - vw / RC_MM_S_PER_CMD;
+        float spare = cap - RC_CMD_FRICTION - vw / RC_MM_S_PER_CMD;
         profile_update_capped(&p, dt, spare * (1.0f / (RC_CMD_PER_ARC_MM_S2 * (RC_TRACK_MM / 2) * (float)D2R)));
         double w = p.speed * D2R;
         if (w > peak) peak = w;
@@ -140,11 +143,11 @@ static double drive(const slalom_geom_t *g, const slalom_drive_t *d, double v, d
     return peak;
 }
 
-static void check_speed(float v)
+static void check_speed(float v, float cap)
 {
     slalom_drive_t d[SLALOM_KINDS];
     float turn_s[SLALOM_KINDS];
-    slalom_fit(v, d, turn_s);
+    slalom_fit(v, cap, d, turn_s);
     for (int k = SLALOM_S90; k < SLALOM_KINDS; k++) {
         const slalom_geom_t *g = &slalom_geom[k];
         if (d[k].w_deg_s <= 0) {
@@ -152,7 +155,7 @@ static void check_speed(float v)
             continue;
         }
         double ex, ey, eth;
-        double peak = drive(g, &d[k], v, &ex, &ey, &eth);
+        double peak = drive(g, &d[k], v, cap, &ex, &ey, &eth);
         /* it ends on the exit node, on the exit heading */
         if (fabs(ex - g->exit_x * HALF_MM) >= 1.0 || fabs(ey - g->exit_y * HALF_MM) >= 1.0)
             print_message("kind %d at %.0f mm/s ends at (%.1f, %.1f) mm\n", k, (double)v, ex, ey);
@@ -162,7 +165,7 @@ static void check_speed(float v)
         assert_true(fabsf(turn_s[k] - (d[k].before_mm + d[k].arc_mm + d[k].after_mm) / v) < 1e-4f);
         /* grip and motor */
         assert_true(v * peak < GRIP_MM_S2);
-        assert_true(v + peak * RC_TRACK_MM / 2 < WHEEL_TOP_MM_S);
+        assert_true(v + peak * RC_TRACK_MM / 2 < WHEEL_TOP_MM_S(cap));
         /* the entry node's wall: along x, except where only the other kind
          * lets an orthogonal exit cross its own side (D135) */
         int exit_h = (g->from_diag + g->turn) & 7, vert = 0;
@@ -181,20 +184,20 @@ static void check_speed(float v)
 static void test_safe_speed(void **state)
 {
     (void)state;
-    check_speed(RC_SLALOM_SAFE_MM_S);
+    check_speed(RC_SLALOM_SAFE_MM_S, RC_CMD_FF_MAX);
 }
 
 static void test_fast_speed(void **state)
 {
     (void)state;
-    check_speed(RC_SLALOM_FAST_MM_S);
+    check_speed(RC_SLALOM_FAST_MM_S, RC_RUN_FAST_CMD_FF_MAX);
 }
 
 /* and below them, where robot_config.h's figures were checked too */
 static void test_300_mm_s(void **state)
 {
     (void)state;
-    check_speed(300.0f);
+    check_speed(300.0f, RC_CMD_FF_MAX);
 }
 
 /* the geometry function's corner agrees with the path: a 90 at 300 mm/s */
@@ -203,9 +206,9 @@ static void test_geometry_agrees(void **state)
     (void)state;
     slalom_drive_t d[SLALOM_KINDS];
     float turn_s[SLALOM_KINDS];
-    slalom_fit(300.0f, d, turn_s);
+    slalom_fit(300.0f, RC_CMD_FF_MAX, d, turn_s);
     float corner, post, len;
-    motion_slalom_geometry(300.0f, 90.0f, d[SLALOM_F90].w_deg_s, RC_SLALOM_ACCEL_DEG_S2, &corner, &post, &len);
+    motion_slalom_geometry(300.0f, 90.0f, d[SLALOM_F90].w_deg_s, RC_SLALOM_ACCEL_DEG_S2, RC_CMD_FF_MAX, &corner, &post, &len);
     assert_true(fabsf(corner - (3 * HALF_MM - d[SLALOM_F90].before_mm)) < 0.01f);
     assert_true(fabsf(post - (3 * HALF_MM - d[SLALOM_F90].after_mm)) < 0.01f);
     assert_true(fabsf(len - d[SLALOM_F90].arc_mm) < 0.01f);
