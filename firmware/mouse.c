@@ -571,8 +571,10 @@ static maze_cell_t run_cell(int16_t x2, int16_t y2)
  * is: each entered by an F45 at the end of an orthogonal straight of at
  * least RC_DIAG_ENTRY_HALVES (centred on its side walls) and left by a D45
  * into one as long (centred again before the next turn), none longer than
- * RC_DIAG_MAX_HALVES, and no V90, F135 or D135 (turns between diagonals,
- * or into one from a turn). */
+ * RC_DIAG_MAX_HALVES, no lane change (an F45 straight into a D45: with
+ * 3.2 mm to the posts it touched on alljapan-012-1991-exp-fin, seed 1),
+ * and no V90, F135 or D135 (turns between diagonals, or into one from a
+ * turn). */
 static int prun_diag_ok(int n)
 {
     for (int i = 0; i < n; i++) {
@@ -581,7 +583,8 @@ static int prun_diag_ok(int n)
         if (mv->kind == SLALOM_DIAG && mv->n > RC_DIAG_MAX_HALVES) return 0;
         if (mv->kind == SLALOM_F45 && (i == 0 || run_moves[i - 1].kind != SLALOM_ORTHO || run_moves[i - 1].n < RC_DIAG_ENTRY_HALVES))
             return 0;
-        if (mv->kind == SLALOM_D45 && (i + 1 >= n || run_moves[i + 1].kind != SLALOM_ORTHO || run_moves[i + 1].n < RC_DIAG_ENTRY_HALVES))
+        if (mv->kind == SLALOM_D45 && (i == 0 || run_moves[i - 1].kind != SLALOM_DIAG || i + 1 >= n ||
+                                       run_moves[i + 1].kind != SLALOM_ORTHO || run_moves[i + 1].n < RC_DIAG_ENTRY_HALVES))
             return 0;
     }
     return 1;
