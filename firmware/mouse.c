@@ -538,11 +538,11 @@ static void search_step(void)
 #if PLAN_ENABLED
 /* ---- Speed runs on plan_run's moves: orthogonal straights (centred on
  * the side walls as above), diagonal straights (odometry's heading held:
- * no side walls there) and slaloms at the turn speed (slalom.h). Each
- * turn's straight before it (slalom_drive_t before_mm) is driven as part
- * of the straight move ahead of it, its straight after as part of the one
- * behind it; between two turns those two alone make a straight at the
- * turn speed. The run tracks the node each move ends on in half units
+ * no side walls there) and slaloms, each turn kind at its own speed
+ * (slalom.h). Each turn's straight before it (slalom_drive_t before_mm) is
+ * driven as part of the straight move ahead of it, its straight after as
+ * part of the one behind it; between two turns those two alone make a
+ * straight from one turn's speed to the next's (plan.h's cost). The run tracks the node each move ends on in half units
  * (slalom.h's grid) and its heading in eighths, to tell where the walls
  * ahead and the cell centres are. ---- */
 static slalom_move_t run_moves[PLAN_MAX_MOVES];
@@ -554,7 +554,8 @@ static uint8_t run_h8;        /* the heading there, eighths clockwise from north
 static float run_carry_mm;    /* the last turn's straight after it, not driven yet */
 static uint8_t run_turn_next; /* the straight under way leads into the turn run_moves[run_idx] */
 static uint8_t run_ortho;     /* the straight under way is orthogonal: centring */
-static float run_v_turn, run_v_diag;
+static float run_v_turn[SLALOM_KINDS]; /* each turn kind's speed this run, mm/s */
+static float run_v_diag;
 static float run_v_max, run_accel; /* this run's cruise speed (mm/s) and acceleration (mm/s^2) */
 static float run_err_mm;      /* the largest tracking error of this run */
 static uint8_t run_dirty;     /* the last run's tracking error reached RC_RUN_CLEAN_MM */
@@ -568,9 +569,12 @@ static maze_cell_t run_cell(int16_t x2, int16_t y2)
 
 /* Whether the diagonals of a plan start where the robot knows where it
  * is: each entered by an F45 at the end of an orthogonal straight of at
- * least RC_DIAG_ENTRY_HALVES (centred on its side walls), none longer than
- * RC_DIAG_MAX_HALVES, and no V90, F135 or D135 (turns between diagonals,
- * or into one from a turn). */
+ * least RC_DIAG_ENTRY_HALVES (centred on its side walls) and left by a D45
+ * into one as long (centred again before the next turn), none longer than
+ * RC_DIAG_MAX_HALVES, no lane change (an F45 straight into a D45: with
+ * 3.2 mm to the posts it touched on alljapan-012-1991-exp-fin, seed 1),
+ * and no V90, F135 or D135 (turns between diagonals, or into one from a
+ * turn). */
 static int prun_diag_ok(int n)
 {
     for (int i = 0; i < n; i++) {
@@ -579,8 +583,27 @@ static int prun_diag_ok(int n)
         if (mv->kind == SLALOM_DIAG && mv->n > RC_DIAG_MAX_HALVES) return 0;
         if (mv->kind == SLALOM_F45 && (i == 0 || run_moves[i - 1].kind != SLALOM_ORTHO || run_moves[i - 1].n < RC_DIAG_ENTRY_HALVES))
             return 0;
+        if (mv->kind == SLALOM_D45 && (i == 0 || run_moves[i - 1].kind != SLALOM_DIAG || i + 1 >= n ||
+                                       run_moves[i + 1].kind != SLALOM_ORTHO || run_moves[i + 1].n < RC_DIAG_ENTRY_HALVES))
+            return 0;
     }
     return 1;
+}
+
+/* This run's turns (each kind at its own speed, RC_SLALOM_*_MM_S) and the
+ * planner's costs for them: each turn's legs are driven with the straights
+ * beside it (prun_straight), its arc at its speed (prun_turn). */
+static void prun_turns(uint8_t fast, float ff_max, plan_costs_t *c)
+{
+    float whole_s[SLALOM_KINDS];
+    slalom_run_speeds(fast, run_v_turn);
+    slalom_fit_kinds(run_v_turn, ff_max, run_drive, whole_s);
+    for (uint8_t k = 0; k < SLALOM_KINDS; k++) {
+        c->v_turn_mm_s[k] = run_v_turn[k];
+        c->before_mm[k] = run_drive[k].before_mm;
+        c->after_mm[k] = run_drive[k].after_mm;
+        c->turn_s[k] = whole_s[k] > 0 ? run_drive[k].arc_mm / run_v_turn[k] : -1.0f;
+    }
 }
 
 /* At the start of a speed run: the moves (run_count 0 if plan_run finds
@@ -595,12 +618,11 @@ static void prun_begin(void)
     uint8_t fast = st.runs > 0 && !run_dirty;
     plan_costs_t c;
     c.cell_mm = RC_CELL_MM;
-    c.v_turn_mm_s = run_v_turn = fast ? RC_SLALOM_FAST_MM_S : RC_SLALOM_SAFE_MM_S;
     c.v_diag_mm_s = run_v_diag = fast ? RC_DIAG_FAST_MM_S : RC_DIAG_SAFE_MM_S;
     c.v_max_mm_s = run_v_max = fast ? RC_RUN_FAST_MM_S : RC_RUN_MM_S;
     c.accel_mm_s2 = run_accel = fast ? RC_RUN_FAST_ACCEL_MM_S2 : RC_RUN_ACCEL_MM_S2;
     float ff_max = fast ? RC_RUN_FAST_CMD_FF_MAX : RC_CMD_FF_MAX;
-    slalom_fit(run_v_turn, ff_max, run_drive, c.turn_s);
+    prun_turns(fast, ff_max, &c);
     float t_s;
     int n = plan_run(&ex.map, &c, run_moves, PLAN_MAX_MOVES, &t_s);
     if (n > 0 && !prun_diag_ok(n)) { /* the same without diagonals */
@@ -612,7 +634,7 @@ static void prun_begin(void)
     unsigned diag = 0;
     for (int i = 0; i < n; i++) diag += run_moves[i].kind == SLALOM_DIAG || run_moves[i].kind >= SLALOM_F45;
     char line[HAL_LOG_MAX + 1];
-    hal_snprintf(line, sizeof line, HAL_STR("run %u: %u moves, %u diagonal, %u mm/s turns"), st.runs + 1u, (unsigned)n, diag, (unsigned)run_v_turn);
+    hal_snprintf(line, sizeof line, HAL_STR("run %u: %u moves, %u diagonal, %u mm/s turns"), st.runs + 1u, (unsigned)n, diag, (unsigned)run_v_turn[SLALOM_S90]);
     hal_log(line);
     run_count = (int16_t)n;
     run_idx = 0;
@@ -701,20 +723,21 @@ static void diag_centring(void)
     mo.lateral_valid = 1;
 }
 
-/* A straight of n half units or half steps (move kind) plus run_carry_mm,
- * leading into the turn `next` (NULL: the run's end, at rest). */
-static void prun_straight(uint8_t kind, uint8_t n, const slalom_move_t *next)
+/* A straight of n half units or half steps plus run_carry_mm, leading
+ * into the turn `next` (NULL: the run's end, at rest) at that turn's
+ * speed. Its top speed is the straights' (plan.h), or the speed it starts
+ * or ends with where that is higher. */
+static void prun_straight(uint8_t n, const slalom_move_t *next)
 {
     uint8_t ortho = !(run_h8 & 1u);
     float unit = (run_h8 & 1u) ? RC_CELL_MM * 0.70710678f : RC_CELL_MM / 2;
     float before = next ? run_drive[next->kind].before_mm : 0;
     float mm = n * unit + run_carry_mm + before;
-    float v = !ortho ? run_v_diag : run_v_max;
-    if (kind != SLALOM_ORTHO && kind != SLALOM_DIAG) v = run_v_turn; /* between two turns */
+    float v = !ortho ? run_v_diag : run_v_max, v_end = next ? run_v_turn[next->kind] : 0;
     if (!ortho && RC_DIAG_TOF) diag_anchor(run_x2, run_y2, run_h8, run_carry_mm);
     run_x2 = (int16_t)(run_x2 + n * slalom_step_x[run_h8]);
     run_y2 = (int16_t)(run_y2 + n * slalom_step_y[run_h8]);
-    start_forward(mm, v, next ? run_v_turn : 0, run_accel);
+    start_forward(mm, fmaxf(fmaxf(v, v_end), fabsf(mo.fwd.speed)), v_end, run_accel);
     run_carry_mm = 0;
     run_ortho = ortho;
     run_turn_next = next != NULL;
@@ -740,7 +763,7 @@ static void prun_turn(void)
     run_x2 = (int16_t)(run_x2 + dx);
     run_y2 = (int16_t)(run_y2 + dy);
     run_h8 = (uint8_t)((run_h8 + mv->dir * g->turn) & 7u);
-    motion_forward_accel(&mo, d->arc_mm, run_v_turn, run_v_turn, run_accel);
+    motion_forward_accel(&mo, d->arc_mm, run_v_turn[mv->kind], run_v_turn[mv->kind], run_accel);
     motion_slalom(&mo, -45.0f * g->turn * mv->dir, d->w_deg_s, RC_SLALOM_ACCEL_DEG_S2); /* right (+1) is clockwise */
     no_centring();
     run_carry_mm = d->after_mm;
@@ -885,11 +908,11 @@ static void prun_next(void)
     const slalom_move_t *mv = &run_moves[run_idx];
     if (mv->kind == SLALOM_ORTHO || mv->kind == SLALOM_DIAG) {
         run_idx++;
-        prun_straight(mv->kind, mv->n, run_idx < run_count ? &run_moves[run_idx] : NULL);
+        prun_straight(mv->n, run_idx < run_count ? &run_moves[run_idx] : NULL);
         return;
     }
     if (!run_turn_next && run_carry_mm + run_drive[mv->kind].before_mm > 0.5f) {
-        prun_straight(mv->kind, 0, mv); /* the straights after the last turn and before this one */
+        prun_straight(0, mv); /* the straights after the last turn and before this one */
         return;
     }
     prun_turn();

@@ -1,9 +1,12 @@
 /* plan.c - the speed run's time-optimal path (plan.h): Dijkstra with a
- * binary heap on static arrays over (half-cell grid node, heading) states.
+ * binary heap on static arrays over (half-cell grid node, heading, the
+ * turn that led there) states.
  *
  * Grid coordinates are slalom.h's: cell (x, y) has its centre at (2x, 2y);
  * a node (gx, gy) runs from -1 to 2 W - 1 (2 H - 1), stored at (gx + 1,
- * gy + 1) in a grid of (2 W + 1) x (2 H + 1) points, 8 headings each. */
+ * gy + 1) in a grid of (2 W + 1) x (2 H + 1) points, 8 headings each, each
+ * heading ARRIVALS states (one per turn kind; the start's is slot 0: no
+ * turn ends on a cell centre, so nothing else reaches it). */
 #include "plan.h"
 
 #if PLAN_ENABLED
@@ -13,37 +16,36 @@
 
 #define GRID_W (2 * MAZE_MAX_W + 1)
 #define GRID_H (2 * MAZE_MAX_H + 1)
-#define STATES (GRID_W * GRID_H * 8)
-#if STATES > 0xFFFD
-#error "plan: state indices are uint16_t: MAZE_MAX_SIZE too large"
-#endif
-#define NOT_SEEN 0xFFFFu /* hpos: never reached */
-#define DONE 0xFFFEu     /* hpos: settled */
+#define ARRIVALS (SLALOM_KINDS - SLALOM_S90) /* the turn kinds a state can be reached by */
+#define STATES ((uint32_t)GRID_W * GRID_H * 8 * ARRIVALS)
+#define NOT_SEEN 0xFFFFFFFFu /* hpos: never reached */
+#define DONE 0xFFFFFFFEu     /* hpos: settled */
 #define LEFT_BIT 0x80u   /* prev_turn: the turn was a left one */
 #define SQRT2 1.41421356f
 
 static float dist[STATES];        /* best time found to the state, s */
-static uint16_t prev[STATES];     /* the state the best edge starts from */
+static uint32_t prev[STATES];     /* the state the best edge starts from */
 static uint8_t prev_n[STATES];    /* that edge's straight, half units or half steps */
 static uint8_t prev_turn[STATES]; /* that edge's turn: kind | LEFT_BIT */
-static uint16_t heap[STATES];     /* binary min-heap of states by dist */
-static uint16_t hpos[STATES];     /* a state's place in heap, NOT_SEEN or DONE */
+static uint32_t heap[STATES];     /* binary min-heap of states by dist */
+static uint32_t hpos[STATES];     /* a state's place in heap, NOT_SEEN or DONE */
 
 
 typedef struct {
     const maze_t *m;
     const plan_costs_t *c;
     int gw;            /* grid points per row for this map */
-    uint16_t start;    /* the start state */
-    uint16_t heap_n;   /* states in the heap */
+    uint32_t start;    /* the start state */
+    uint32_t heap_n;   /* states in the heap */
     float best;        /* the cheapest run found so far, s */
-    uint16_t best_s;   /* its last turn's exit state */
+    uint32_t best_s;   /* its last turn's exit state */
     uint8_t best_n;    /* its last straight, half units */
 } search_t;
 
-static uint16_t state_of(const search_t *S, int gx, int gy, uint8_t h)
+/* the state at (gx, gy) heading h, reached by a turn of kind (the start: SLALOM_S90's slot) */
+static uint32_t state_of(const search_t *S, int gx, int gy, uint8_t h, uint8_t kind)
 {
-    return (uint16_t)((((gy + 1) * S->gw) + gx + 1) * 8 + h);
+    return ((uint32_t)(((gy + 1) * S->gw) + gx + 1) * 8 + h) * ARRIVALS + (uint32_t)(kind - SLALOM_S90);
 }
 
 /* Is the side whose middle is (gx, gy) known open? Posts, centres and
@@ -115,34 +117,34 @@ static int turn_exit(const maze_t *m, int gx, int gy, uint8_t h, uint8_t kind, i
     return 1;
 }
 
-static int heap_less(uint16_t a, uint16_t b) { return dist[heap[a]] < dist[heap[b]]; }
+static int heap_less(uint32_t a, uint32_t b) { return dist[heap[a]] < dist[heap[b]]; }
 
-static void heap_swap(uint16_t a, uint16_t b)
+static void heap_swap(uint32_t a, uint32_t b)
 {
-    uint16_t t = heap[a];
+    uint32_t t = heap[a];
     heap[a] = heap[b];
     heap[b] = t;
     hpos[heap[a]] = a;
     hpos[heap[b]] = b;
 }
 
-static void heap_up(uint16_t i)
+static void heap_up(uint32_t i)
 {
-    while (i > 0 && heap_less(i, (uint16_t)((i - 1) / 2))) {
-        heap_swap(i, (uint16_t)((i - 1) / 2));
-        i = (uint16_t)((i - 1) / 2);
+    while (i > 0 && heap_less(i, (i - 1) / 2)) {
+        heap_swap(i, (i - 1) / 2);
+        i = (i - 1) / 2;
     }
 }
 
-static uint16_t heap_pop(search_t *S)
+static uint32_t heap_pop(search_t *S)
 {
-    uint16_t top = heap[0], i = 0;
+    uint32_t top = heap[0], i = 0;
     hpos[top] = DONE;
     if (--S->heap_n == 0) return top;
     heap[0] = heap[S->heap_n];
     hpos[heap[0]] = 0;
     for (;;) {
-        uint16_t l = (uint16_t)(2 * i + 1), r = (uint16_t)(l + 1), k = i;
+        uint32_t l = 2 * i + 1, r = l + 1, k = i;
         if (l < S->heap_n && heap_less(l, k)) k = l;
         if (r < S->heap_n && heap_less(r, k)) k = r;
         if (k == i) return top;
@@ -152,7 +154,7 @@ static uint16_t heap_pop(search_t *S)
 }
 
 /* A cheaper way to state s: from state `from`, straight n, turn. */
-static void relax(search_t *S, uint16_t s, float t, uint16_t from, uint8_t n, uint8_t turn)
+static void relax(search_t *S, uint32_t s, float t, uint32_t from, uint8_t n, uint8_t turn)
 {
     if (hpos[s] == DONE || t >= dist[s]) return;
     dist[s] = t;
@@ -167,18 +169,22 @@ static void relax(search_t *S, uint16_t s, float t, uint16_t from, uint8_t n, ui
 }
 
 /* Every turn from (x, y) heading h, reached from state s by a straight of
- * n taking t_straight (or no turn if the straight cannot be driven). */
-static void try_turns(search_t *S, uint16_t s, int x, int y, uint8_t h, uint8_t n, float t_straight)
+ * n half units, d_mm with the leg of the turn before it, from v0 at top
+ * speed vtop: each turn kind's time with its own leg and speed (none where
+ * that straight cannot be driven). */
+static void try_turns(search_t *S, uint32_t s, int x, int y, uint8_t h, uint8_t n, float d_mm, float v0, float vtop)
 {
-    if (t_straight < 0.0f) return;
+    const plan_costs_t *c = S->c;
     for (uint8_t k = SLALOM_S90; k < SLALOM_KINDS; k++) {
-        if (!(S->c->turn_s[k] > 0.0f)) continue;
+        if (!(c->turn_s[k] > 0.0f)) continue;
+        float ts = -1.0f;
         for (int8_t dir = 1; dir >= -1; dir = (int8_t)(dir - 2)) {
             int ex, ey;
             uint8_t eh;
             if (!turn_exit(S->m, x, y, h, k, dir, &ex, &ey, &eh)) continue;
-            relax(S, state_of(S, ex, ey, eh), dist[s] + t_straight + S->c->turn_s[k], s, n,
-                  (uint8_t)(k | (dir < 0 ? LEFT_BIT : 0u)));
+            if (ts < 0.0f) ts = straight_s(d_mm + c->before_mm[k], v0, c->v_turn_mm_s[k], vtop, c->accel_mm_s2);
+            if (ts < 0.0f) break;
+            relax(S, state_of(S, ex, ey, eh, k), dist[s] + ts + c->turn_s[k], s, n, (uint8_t)(k | (dir < 0 ? LEFT_BIT : 0u)));
         }
     }
 }
@@ -186,20 +192,21 @@ static void try_turns(search_t *S, uint16_t s, int x, int y, uint8_t h, uint8_t 
 /* Every edge out of state s at (gx, gy) heading h: the straight ahead
  * grows half a unit (step) at a time while the sides it crosses are open;
  * at each side middle a turn may end it, at a goal cell's centre a stop. */
-static void expand(search_t *S, uint16_t s, int gx, int gy, uint8_t h)
+static void expand(search_t *S, uint32_t s, int gx, int gy, uint8_t h, uint8_t kind)
 {
     const plan_costs_t *c = S->c;
     const maze_t *m = S->m;
-    float v0 = s == S->start ? 0.0f : c->v_turn_mm_s;
+    uint8_t at_start = s == S->start;
+    float v0 = at_start ? 0.0f : c->v_turn_mm_s[kind];
+    float leg_mm = at_start ? 0.0f : c->after_mm[kind];
     float step_mm = (h & 1) ? c->cell_mm * 0.5f * SQRT2 : c->cell_mm * 0.5f;
     float vtop = (h & 1) ? c->v_diag_mm_s : c->v_max_mm_s;
     for (int n = 0; n <= 255; n++) {
         int x = gx + n * slalom_step_x[h], y = gy + n * slalom_step_y[h];
-        float d_mm = (float)n * step_mm;
+        float d_mm = leg_mm + (float)n * step_mm;
         if ((x ^ y) & 1) { /* a side middle */
             if (n > 0 && !side_open(m, x, y)) return;
-            try_turns(S, s, x, y, h, (uint8_t)n,
-                      straight_s(d_mm, v0, c->v_turn_mm_s, vtop, c->accel_mm_s2));
+            try_turns(S, s, x, y, h, (uint8_t)n, d_mm, v0, vtop);
         } else if (n > 0 && !(h & 1) && maze_is_goal(m, maze_cell(m, (uint8_t)(x / 2), (uint8_t)(y / 2)))) {
             float t = straight_s(d_mm, v0, 0.0f, vtop, c->accel_mm_s2);
             if (t >= 0.0f && dist[s] + t < S->best) {
@@ -216,23 +223,28 @@ static void expand(search_t *S, uint16_t s, int gx, int gy, uint8_t h)
 static int emit(const search_t *S, slalom_move_t *moves, int max)
 {
     int k = 1;
-    for (uint16_t s = S->best_s; s != S->start; s = prev[s]) k += 1 + (prev_n[s] > 0);
+    for (uint32_t s = S->best_s; s != S->start; s = prev[s]) k += 1 + (prev_n[s] > 0);
     if (k > max) return -1;
     int i = k;
     moves[--i] = (slalom_move_t){ SLALOM_ORTHO, 0, S->best_n };
-    for (uint16_t s = S->best_s; s != S->start; s = prev[s]) {
+    for (uint32_t s = S->best_s; s != S->start; s = prev[s]) {
         moves[--i] = (slalom_move_t){ (uint8_t)(prev_turn[s] & ~LEFT_BIT), (prev_turn[s] & LEFT_BIT) ? -1 : 1, 1 };
         if (prev_n[s] > 0)
-            moves[--i] = (slalom_move_t){ (prev[s] & 1) ? SLALOM_DIAG : SLALOM_ORTHO, 0, prev_n[s] };
+            moves[--i] = (slalom_move_t){ ((prev[s] / ARRIVALS) & 1) ? SLALOM_DIAG : SLALOM_ORTHO, 0, prev_n[s] };
     }
     return k;
 }
 
 static int costs_ok(const maze_t *map, const plan_costs_t *c)
 {
-    return map && c && map->width >= 1 && map->height >= 1 && map->width <= MAZE_MAX_W &&
-           map->height <= MAZE_MAX_H && c->cell_mm > 0.0f && c->v_turn_mm_s > 0.0f &&
-           c->v_max_mm_s > 0.0f && c->v_diag_mm_s > 0.0f && c->accel_mm_s2 > 0.0f;
+    if (!(map && c && map->width >= 1 && map->height >= 1 && map->width <= MAZE_MAX_W &&
+          map->height <= MAZE_MAX_H && c->cell_mm > 0.0f && c->v_max_mm_s > 0.0f && c->v_diag_mm_s > 0.0f &&
+          c->accel_mm_s2 > 0.0f))
+        return 0;
+    for (uint8_t k = SLALOM_S90; k < SLALOM_KINDS; k++)
+        if (c->turn_s[k] > 0.0f && !(c->v_turn_mm_s[k] > 0.0f && c->before_mm[k] >= 0.0f && c->after_mm[k] >= 0.0f))
+            return 0;
+    return 1;
 }
 
 int plan_run(const maze_t *map, const plan_costs_t *c, slalom_move_t *moves, int max, float *time_s)
@@ -244,21 +256,22 @@ int plan_run(const maze_t *map, const plan_costs_t *c, slalom_move_t *moves, int
         return 0;
     }
     search_t S = { map, c, 2 * map->width + 1, 0, 0, INFINITY, 0, 0 };
-    uint16_t n_states = (uint16_t)(S.gw * (2 * map->height + 1) * 8);
-    for (uint16_t i = 0; i < n_states; i++) {
+    uint32_t n_states = (uint32_t)S.gw * (uint32_t)(2 * map->height + 1) * 8 * ARRIVALS;
+    for (uint32_t i = 0; i < n_states; i++) {
         dist[i] = INFINITY;
         hpos[i] = NOT_SEEN;
     }
     S.start = state_of(&S, 2 * maze_x(map, map->start), 2 * maze_y(map, map->start),
-                       (uint8_t)(2 * (map->start_heading & 3)));
+                       (uint8_t)(2 * (map->start_heading & 3)), SLALOM_S90);
     dist[S.start] = 0.0f;
     hpos[S.start] = 0;
     heap[S.heap_n++] = S.start;
     while (S.heap_n > 0) {
-        uint16_t s = heap_pop(&S);
+        uint32_t s = heap_pop(&S);
         if (dist[s] >= S.best) break;
-        uint16_t p = (uint16_t)(s / 8);
-        expand(&S, s, p % S.gw - 1, p / S.gw - 1, (uint8_t)(s % 8));
+        uint32_t p = s / (8 * ARRIVALS);
+        expand(&S, s, (int)(p % (uint32_t)S.gw) - 1, (int)(p / (uint32_t)S.gw) - 1, (uint8_t)((s / ARRIVALS) % 8),
+               (uint8_t)(s % ARRIVALS + SLALOM_S90));
     }
     if (S.best == INFINITY) return 0;
     *time_s = S.best;

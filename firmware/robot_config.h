@@ -212,18 +212,35 @@
 /* 1: speed runs follow plan_run's moves; 0: orthogonal straights joined
  * by smooth turns (run_plan) */
 #define RC_DIAG_RUNS 1
-/* Slaloms at 350 mm/s, the smooth 90's speed: the S90 (a 90 inside one
- * cell) fits its RC_SLALOM_S90_MM of room up to ~375 mm/s under
- * RC_CMD_FF_MAX (above it the outer wheel runs into the feed-forward's
- * cap); at 300 the zigzags of staircases took longer (japan2019 seed 1:
- * best run 30.0 s against 27.0). The fast runs' 390 fits it under
- * RC_RUN_FAST_CMD_FF_MAX (up to ~395): every turn of a plan is at one
- * speed (plan.h), so the S90 sets it for the F90 and F180 too (the F180
- * then clears its post by 11.6 mm, test_slalom). At 400 the S90 needs 88
- * mm of room, and at 88 five of 61 classic mazes (every 8th) touched,
- * taiwan2017f in its first run at 350. */
+/* Each turn kind at its own speed (plan.h: the straights between turns
+ * speed up or brake from one turn's speed to the next's). The S90 (a 90
+ * inside one cell) at 350 mm/s, the smooth 90's speed: it fits its
+ * RC_SLALOM_S90_MM of room up to ~375 mm/s under RC_CMD_FF_MAX (above it
+ * the outer wheel runs into the feed-forward's cap); at 300 the zigzags
+ * of staircases took longer (japan2019 seed 1: best run 30.0 s against
+ * 27.0). The fast runs' 390 fits it under RC_RUN_FAST_CMD_FF_MAX (up to
+ * ~395). At 400 the S90 needs 88 mm of room, and at 88 five of 61
+ * classic mazes (every 8th) touched, taiwan2017f in its first run at 350.
+ * F135, D135 and V90 (not driven, RC_SLALOM_*_MM 0) take the S90's. */
 #define RC_SLALOM_SAFE_MM_S 350.0f
 #define RC_SLALOM_FAST_MM_S 390.0f
+/* F90, F180, F45 and D45 (D45 the F45's speed), each checked by
+ * test_slalom (the body 10 mm clear of posts and walls, 3 mm for turns to
+ * or from a diagonal; within 0.3 g and the wheels' top speed). The F90:
+ * the fastest in steps of 10 mm/s that slalom_fit fits in its room under
+ * the run's cap (at 450 and 480 no rate the outer wheel's feed-forward
+ * allows turns it within RC_SLALOM_F90_MM). The F180: 400 under the fast
+ * cap (10.8 mm from its post; 410: 9.9), 350 on the safe runs (14.0 mm;
+ * at 390, 10.5 mm, taiwan2017f crashed in its first speed run, seed 1).
+ * The F45 and D45 at the S90's speeds: they fit up to 430 and 460, but at
+ * a fast 460 uk2003f and uk2024-megacon-a touched (a lane change F45 D45
+ * after a staircase, 3.2 mm of clearance), at 430 uk2003f. */
+#define RC_SLALOM_F90_SAFE_MM_S 440.0f
+#define RC_SLALOM_F90_FAST_MM_S 470.0f
+#define RC_SLALOM_F180_SAFE_MM_S 350.0f
+#define RC_SLALOM_F180_FAST_MM_S 400.0f
+#define RC_SLALOM_F45_SAFE_MM_S 350.0f
+#define RC_SLALOM_F45_FAST_MM_S 390.0f
 /* Diagonal straights: the wheels pass the posts 3.1 mm off on the
  * diagonal's centre line (posts 63.6 mm from it, minus 52 mm of wheel and
  * 8.5 mm of post across the diagonal); held on odometry's heading, nothing
@@ -247,9 +264,15 @@
  * which puts the wheels into a post within 3-4 half steps. Every 8th
  * classic maze (61): diagonals of any length entered from anywhere, 18
  * touched; from a centred straight of 2, up to 6 half steps: uk1990f; of
- * 4, up to 4: japan2013eq; of 2, up to 2: none. */
+ * 4, up to 4: japan2013eq; of 2, up to 2: none. With each turn kind at
+ * its own speed the planner takes short diagonals (F45, 1-2 half steps,
+ * D45) where they save time, and 6 of the 479 reachable classic mazes
+ * touched a post on them (5 crashed); with none (0: every plan with a
+ * diagonal straight or a D45 is planned again without), those 6 are
+ * clean and japan2018 and japan2019 are as fast (no diagonal pays in
+ * their plans). */
 #define RC_DIAG_ENTRY_HALVES 2
-#define RC_DIAG_MAX_HALVES 2
+#define RC_DIAG_MAX_HALVES 0
 /* 1: a position reference on diagonal straights from the diagonal ToF
  * sensors (mouse.c diag_centring, diagref.h): each reading of a known wall
  * face square to the sensor's axis is compared with the one the map

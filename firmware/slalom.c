@@ -84,30 +84,56 @@ static float fit_rate(float v, float ff_max_cmd, float degrees, float target_mm,
     return hi;
 }
 
+/* Size turn kind k for forward speed v: *d, and its time from entry node
+ * to exit node, s (TURN_NO_FIT_S: it does not fit, or is not driven). */
+static float fit_kind(uint8_t k, float v, float ff_max_cmd, slalom_drive_t *d)
+{
+    const slalom_geom_t *g = &slalom_geom[k];
+    d->w_deg_s = d->before_mm = d->arc_mm = d->after_mm = 0;
+    if (k < SLALOM_S90 || corner_target_mm[k] <= 0 || !(v > 0)) return TURN_NO_FIT_S;
+    float pre = 0, post = 0, arc = 0;
+    d->w_deg_s = fit_rate(v, ff_max_cmd, 45.0f * g->turn, corner_target_mm[k], &pre, &post, &arc);
+    if (d->w_deg_s <= 0) return TURN_NO_FIT_S;
+    if (g->turn == 4) { /* F180: from the entry node to the exit node, level */
+        d->before_mm = post < 0 ? -post : 0;
+        d->after_mm = d->before_mm + post;
+    } else {
+        d->before_mm = HALF_MM * hypotf(g->corner_x, g->corner_y) - pre;
+        d->after_mm = HALF_MM * hypotf(g->exit_x - g->corner_x, g->exit_y - g->corner_y) - post;
+    }
+    d->arc_mm = arc;
+    if (d->before_mm < 0 || d->after_mm < 0) {
+        d->w_deg_s = 0;
+        return TURN_NO_FIT_S;
+    }
+    return (d->before_mm + d->arc_mm + d->after_mm) / v;
+}
+
 void slalom_fit(float v_mm_s, float ff_max_cmd, slalom_drive_t drive[SLALOM_KINDS], float turn_s[SLALOM_KINDS])
 {
-    for (uint8_t k = 0; k < SLALOM_KINDS; k++) {
-        const slalom_geom_t *g = &slalom_geom[k];
-        slalom_drive_t *d = &drive[k];
-        d->w_deg_s = d->before_mm = d->arc_mm = d->after_mm = 0;
-        turn_s[k] = TURN_NO_FIT_S;
-        if (k < SLALOM_S90 || corner_target_mm[k] <= 0) continue;
-        float pre = 0, post = 0, arc = 0;
-        d->w_deg_s = fit_rate(v_mm_s, ff_max_cmd, 45.0f * g->turn, corner_target_mm[k], &pre, &post, &arc);
-        if (d->w_deg_s <= 0) continue;
-        if (g->turn == 4) { /* F180: from the entry node to the exit node, level */
-            d->before_mm = post < 0 ? -post : 0;
-            d->after_mm = d->before_mm + post;
-        } else {
-            d->before_mm = HALF_MM * hypotf(g->corner_x, g->corner_y) - pre;
-            d->after_mm = HALF_MM * hypotf(g->exit_x - g->corner_x, g->exit_y - g->corner_y) - post;
-        }
-        d->arc_mm = arc;
-        if (d->before_mm < 0 || d->after_mm < 0) {
-            d->w_deg_s = 0;
-            continue;
-        }
-        turn_s[k] = (d->before_mm + d->arc_mm + d->after_mm) / v_mm_s;
-    }
+    for (uint8_t k = 0; k < SLALOM_KINDS; k++) turn_s[k] = fit_kind(k, v_mm_s, ff_max_cmd, &drive[k]);
+}
+
+void slalom_run_speeds(uint8_t fast, float v_mm_s[SLALOM_KINDS])
+{
+    static const float v_safe[SLALOM_KINDS] = {
+        [SLALOM_S90] = RC_SLALOM_SAFE_MM_S,       [SLALOM_F90] = RC_SLALOM_F90_SAFE_MM_S,
+        [SLALOM_F180] = RC_SLALOM_F180_SAFE_MM_S, [SLALOM_F45] = RC_SLALOM_F45_SAFE_MM_S,
+        [SLALOM_D45] = RC_SLALOM_F45_SAFE_MM_S,   [SLALOM_F135] = RC_SLALOM_SAFE_MM_S,
+        [SLALOM_D135] = RC_SLALOM_SAFE_MM_S,      [SLALOM_V90] = RC_SLALOM_SAFE_MM_S,
+    };
+    static const float v_fast[SLALOM_KINDS] = {
+        [SLALOM_S90] = RC_SLALOM_FAST_MM_S,       [SLALOM_F90] = RC_SLALOM_F90_FAST_MM_S,
+        [SLALOM_F180] = RC_SLALOM_F180_FAST_MM_S, [SLALOM_F45] = RC_SLALOM_F45_FAST_MM_S,
+        [SLALOM_D45] = RC_SLALOM_F45_FAST_MM_S,   [SLALOM_F135] = RC_SLALOM_FAST_MM_S,
+        [SLALOM_D135] = RC_SLALOM_FAST_MM_S,      [SLALOM_V90] = RC_SLALOM_FAST_MM_S,
+    };
+    for (uint8_t k = 0; k < SLALOM_KINDS; k++) v_mm_s[k] = fast ? v_fast[k] : v_safe[k];
+}
+
+void slalom_fit_kinds(const float v_mm_s[SLALOM_KINDS], float ff_max_cmd, slalom_drive_t drive[SLALOM_KINDS],
+                      float turn_s[SLALOM_KINDS])
+{
+    for (uint8_t k = 0; k < SLALOM_KINDS; k++) turn_s[k] = fit_kind(k, v_mm_s[k], ff_max_cmd, &drive[k]);
 }
 #endif

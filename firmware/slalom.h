@@ -92,4 +92,12 @@ typedef struct {
  * the turn does not fit, plan.h: not used). Host builds only (PLAN_ENABLED). */
 void slalom_fit(float v_mm_s, float ff_max_cmd, slalom_drive_t drive[SLALOM_KINDS], float turn_s[SLALOM_KINDS]);
 
+/* Each turn kind's speed on a speed run, mm/s (robot_config.h
+ * RC_SLALOM_*_MM_S): the safe figures, or the fast ones (fast 1). */
+void slalom_run_speeds(uint8_t fast, float v_mm_s[SLALOM_KINDS]);
+
+/* slalom_fit with each kind k at its own speed v_mm_s[k] (0: not driven). */
+void slalom_fit_kinds(const float v_mm_s[SLALOM_KINDS], float ff_max_cmd, slalom_drive_t drive[SLALOM_KINDS],
+                      float turn_s[SLALOM_KINDS]);
+
 #endif

@@ -42,11 +42,13 @@ static double turn_len_hu(double leg_in, double leg_out, double r, double a)
 
 /* Plausible classic costs: 400 mm/s in every turn, 650 / 500 mm/s on
  * straights / diagonals, 3000 mm/s^2; each turn's time its path length at
- * 400 mm/s (radii: S90 90 mm, F90 180, F180 90, F45 180, F135 50, V90 70). */
+ * 400 mm/s (radii: S90 90 mm, F90 180, F180 90, F45 180, F135 50, V90 70),
+ * no legs (each turn's time from entry node to exit node). */
 static plan_costs_t costs(float cell_mm)
 {
     const double pi = 3.14159265358979, s2 = sqrt(2.0), hu = cell_mm / 2.0, v = 400.0;
-    plan_costs_t c = { cell_mm, 400.0f, 650.0f, 500.0f, 3000.0f, { 0 } };
+    plan_costs_t c = { cell_mm, 650.0f, 500.0f, 3000.0f, { 0 }, { 0 }, { 0 }, { 0 } };
+    for (int k = 0; k < SLALOM_KINDS; k++) c.v_turn_mm_s[k] = 400.0f;
     c.turn_s[SLALOM_S90] = (float)(turn_len_hu(1, 1, 1, pi / 2) * hu / v);
     c.turn_s[SLALOM_F90] = (float)(turn_len_hu(3, 3, 2, pi / 2) * hu / v);
     c.turn_s[SLALOM_F180] = (float)(pi * hu / v);
@@ -55,6 +57,25 @@ static plan_costs_t costs(float cell_mm)
     c.turn_s[SLALOM_D45] = c.turn_s[SLALOM_F45];
     c.turn_s[SLALOM_D135] = c.turn_s[SLALOM_F135];
     c.turn_s[SLALOM_V90] = (float)(turn_len_hu(s2, s2, 70.0 / 90.0, pi / 2) * hu / v);
+    return c;
+}
+
+/* Each turn kind at its own speed with straight legs at its ends (as the
+ * firmware drives them, slalom_fit): the turn's time is its path length
+ * less the legs, at its speed. Speeds mm/s: S90 350, F90 600, F180 450,
+ * F45 and D45 500, F135 and D135 300, V90 380; legs: a tenth and a fifth of
+ * a half unit (before, after) for all but the S90, which has none. */
+static plan_costs_t costs_kinds(float cell_mm)
+{
+    static const float v[SLALOM_KINDS] = { 0, 0, 350, 600, 450, 500, 300, 500, 300, 380 };
+    plan_costs_t c = costs(cell_mm);
+    for (int k = SLALOM_S90; k < SLALOM_KINDS; k++) {
+        float len_mm = c.turn_s[k] * c.v_turn_mm_s[k];
+        c.before_mm[k] = k == SLALOM_S90 ? 0.0f : cell_mm * 0.05f;
+        c.after_mm[k] = k == SLALOM_S90 ? 0.0f : cell_mm * 0.1f;
+        c.v_turn_mm_s[k] = v[k];
+        c.turn_s[k] = (len_mm - c.before_mm[k] - c.after_mm[k]) / v[k];
+    }
     return c;
 }
 
@@ -125,35 +146,38 @@ static int drive_turn(const maze_t *m, pose_t p, int kind, int dir, pose_t *out)
 
 /* Replay moves from the start: every side crossed open, every turn legal,
  * the run ends orthogonally at a goal cell's centre; returns its cost, s,
- * or -1 where it breaks a rule. */
+ * or -1 where it breaks a rule. Each straight runs from the speed of the
+ * turn before it (at rest from the start) to that of the turn after it (to
+ * rest at the end), that turn's legs included. */
 static double replay(const maze_t *m, const plan_costs_t *c, const slalom_move_t *mv, int n)
 {
     pose_t p = { 2 * maze_x(m, m->start), 2 * maze_y(m, m->start), 2 * m->start_heading };
-    double t = 0, v0 = 0;
+    double t = 0, v0 = 0, len = 0; /* len: the straight so far, the leg of the turn before it included */
     for (int i = 0; i < n; i++) {
+        double vtop = (p.h & 1) ? c->v_diag_mm_s : c->v_max_mm_s;
         if (mv[i].kind == SLALOM_ORTHO || mv[i].kind == SLALOM_DIAG) {
             if ((mv[i].kind == SLALOM_DIAG) != (p.h & 1) || mv[i].n == 0) return -1;
+            if (i > 0 && mv[i - 1].kind <= SLALOM_DIAG) return -1;
             for (int k = 0; k < mv[i].n; k++) {
                 p.x += vx[p.h];
                 p.y += vy[p.h];
                 if (((p.x ^ p.y) & 1) && !side_is_open(m, p.x, p.y)) return -1;
             }
-            double len = mv[i].n * c->cell_mm / 2.0 * ((p.h & 1) ? sqrt(2.0) : 1.0);
-            double v1 = i + 1 < n ? c->v_turn_mm_s : 0.0;
-            double ts = straight_time(len, v0, v1, (p.h & 1) ? c->v_diag_mm_s : c->v_max_mm_s, c->accel_mm_s2);
-            if (ts < 0) return -1;
-            t += ts;
+            len += mv[i].n * c->cell_mm / 2.0 * ((p.h & 1) ? sqrt(2.0) : 1.0);
         } else {
-            if (i == 0 || mv[i].n != 1 || (mv[i].dir != 1 && mv[i].dir != -1) || !(c->turn_s[mv[i].kind] > 0)) return -1;
-            if (!drive_turn(m, p, mv[i].kind, mv[i].dir, &p)) return -1;
-            t += c->turn_s[mv[i].kind];
-            if (i + 1 < n && (mv[i + 1].kind == SLALOM_ORTHO || mv[i + 1].kind == SLALOM_DIAG)) continue;
+            int k = mv[i].kind;
+            if (i == 0 || mv[i].n != 1 || (mv[i].dir != 1 && mv[i].dir != -1) || !(c->turn_s[k] > 0)) return -1;
+            double ts = straight_time(len + c->before_mm[k], v0, c->v_turn_mm_s[k], vtop, c->accel_mm_s2);
+            if (ts < 0 || !drive_turn(m, p, k, mv[i].dir, &p)) return -1;
+            t += ts + c->turn_s[k];
+            v0 = c->v_turn_mm_s[k];
+            len = c->after_mm[k];
         }
-        v0 = c->v_turn_mm_s;
     }
-    if (n == 0 || (p.x & 1) || (p.y & 1) || (p.h & 1)) return -1;
+    if (n == 0 || (p.x & 1) || (p.y & 1) || (p.h & 1) || mv[n - 1].kind != SLALOM_ORTHO) return -1;
     if (!maze_is_goal(m, maze_cell(m, (uint8_t)(p.x / 2), (uint8_t)(p.y / 2)))) return -1;
-    return t;
+    double ts = straight_time(len, v0, 0, c->v_max_mm_s, c->accel_mm_s2);
+    return ts < 0 ? -1 : t + ts;
 }
 
 static void print_plan(const char *name, const slalom_move_t *mv, int n, float t)
@@ -184,20 +208,27 @@ static int plan_checked(const maze_t *m, const plan_costs_t *c, slalom_move_t *m
     return n;
 }
 
-/* ---- the reference: Bellman-Ford over (node, heading) after a turn ---- */
+/* ---- the reference: Bellman-Ford over (node, heading, the turn kind
+ * that led there) after a turn ---- */
 
 #define REF_MAX 8 /* cells per side */
-#define REF_STATES ((2 * REF_MAX + 1) * (2 * REF_MAX + 1) * 8)
+#define REF_STATES ((2 * REF_MAX + 1) * (2 * REF_MAX + 1) * 8 * SLALOM_KINDS)
 static double ref_d[REF_STATES];
 
-static int ref_idx(const maze_t *m, pose_t p) { return ((p.y + 1) * (2 * m->width + 1) + p.x + 1) * 8 + p.h; }
+static int ref_idx(const maze_t *m, pose_t p, int kind)
+{
+    return (((p.y + 1) * (2 * m->width + 1) + p.x + 1) * 8 + p.h) * SLALOM_KINDS + kind;
+}
 
-/* Every edge out of pose p (its time d so far): straights of 0.. half
- * units, each ended by a turn or a stop at a goal cell's centre. */
-static int ref_edges(const maze_t *m, const plan_costs_t *c, pose_t p, double d, int from_start, double *best)
+/* Every edge out of pose p reached by a turn of kind (the start: kind 0,
+ * at rest), its time d so far: straights of 0.. half units from that
+ * turn's speed and after its leg, each ended by a turn (its leg before
+ * and its speed) or a stop at a goal cell's centre. */
+static int ref_edges(const maze_t *m, const plan_costs_t *c, pose_t p, int kind, double d, double *best)
 {
     int changed = 0;
-    double v0 = from_start ? 0 : c->v_turn_mm_s, vtop = (p.h & 1) ? c->v_diag_mm_s : c->v_max_mm_s;
+    double v0 = kind ? c->v_turn_mm_s[kind] : 0, leg = kind ? c->after_mm[kind] : 0;
+    double vtop = (p.h & 1) ? c->v_diag_mm_s : c->v_max_mm_s;
     pose_t q = p;
     for (int n = 0;; n++) {
         if (n > 0) {
@@ -205,16 +236,17 @@ static int ref_edges(const maze_t *m, const plan_costs_t *c, pose_t p, double d,
             q.y += vy[p.h];
             if (((q.x ^ q.y) & 1) && !side_is_open(m, q.x, q.y)) return changed;
         }
-        double len = n * c->cell_mm / 2.0 * ((p.h & 1) ? sqrt(2.0) : 1.0);
+        double len = leg + n * c->cell_mm / 2.0 * ((p.h & 1) ? sqrt(2.0) : 1.0);
         if ((q.x ^ q.y) & 1) {
-            double ts = straight_time(len, v0, c->v_turn_mm_s, vtop, c->accel_mm_s2);
-            for (int k = SLALOM_S90; k < SLALOM_KINDS && ts >= 0; k++)
-                for (int dir = -1; dir <= 1 && c->turn_s[k] > 0; dir += 2) {
+            for (int k = SLALOM_S90; k < SLALOM_KINDS; k++) {
+                double ts = straight_time(len + c->before_mm[k], v0, c->v_turn_mm_s[k], vtop, c->accel_mm_s2);
+                for (int dir = -1; dir <= 1 && c->turn_s[k] > 0 && ts >= 0; dir += 2) {
                     pose_t e;
                     if (!drive_turn(m, q, k, dir, &e)) continue;
                     double nd = d + ts + c->turn_s[k];
-                    if (nd < ref_d[ref_idx(m, e)]) { ref_d[ref_idx(m, e)] = nd; changed = 1; }
+                    if (nd < ref_d[ref_idx(m, e, k)]) { ref_d[ref_idx(m, e, k)] = nd; changed = 1; }
                 }
+            }
         } else if (n > 0 && !(p.h & 1) && maze_is_goal(m, maze_cell(m, (uint8_t)(q.x / 2), (uint8_t)(q.y / 2)))) {
             double ts = straight_time(len, v0, 0, vtop, c->accel_mm_s2);
             if (ts >= 0 && d + ts < *best) *best = d + ts;
@@ -225,18 +257,19 @@ static int ref_edges(const maze_t *m, const plan_costs_t *c, pose_t p, double d,
 /* The best run's cost by relaxing every edge until nothing changes; HUGE_VAL if none. */
 static double ref_best(const maze_t *m, const plan_costs_t *c)
 {
-    int gw = 2 * m->width + 1, ns = gw * (2 * m->height + 1) * 8;
+    int gw = 2 * m->width + 1, ns = gw * (2 * m->height + 1) * 8 * SLALOM_KINDS;
     pose_t st = { 2 * maze_x(m, m->start), 2 * maze_y(m, m->start), 2 * m->start_heading };
     double best = HUGE_VAL;
     assert_true(m->width <= REF_MAX && m->height <= REF_MAX);
     for (int i = 0; i < ns; i++) ref_d[i] = HUGE_VAL;
-    ref_d[ref_idx(m, st)] = 0;
+    ref_d[ref_idx(m, st, 0)] = 0;
     for (int changed = 1; changed;) {
         changed = 0;
         for (int i = 0; i < ns; i++) {
             if (ref_d[i] == HUGE_VAL) continue;
-            pose_t p = { (i / 8) % gw - 1, (i / 8) / gw - 1, i % 8 };
-            changed |= ref_edges(m, c, p, ref_d[i], i == ref_idx(m, st), &best);
+            int kind = i % SLALOM_KINDS, ph = i / SLALOM_KINDS;
+            pose_t p = { (ph / 8) % gw - 1, (ph / 8) / gw - 1, ph % 8 };
+            changed |= ref_edges(m, c, p, kind, ref_d[i], &best);
         }
     }
     return best;
@@ -380,7 +413,8 @@ static uint32_t next_rand(void)
 }
 
 /* 200 generated 6x6 mazes (every other one with a quarter of its walls
- * forgotten, some with the start turned), 3 cost sets each. */
+ * forgotten, some with the start turned), 5 cost sets each (the last each
+ * turn kind at its own speed, with legs). */
 static void test_random_against_reference(void **state)
 {
     (void)state;
@@ -394,8 +428,8 @@ static void test_random_against_reference(void **state)
                 for (uint8_t d = 0; d < 2; d++)
                     if (next_rand() % 4 == 0) maze_set_wall(&m, (maze_cell_t)i, d, MAZE_WALL_UNKNOWN);
         if (seed % 5 == 0) m.start_heading = (uint8_t)(next_rand() % 4);
-        for (int set = 0; set < 4; set++) {
-            plan_costs_t c = set == 1 ? costs_s90_only(180.0f) : costs(set == 0 ? 180.0f : 90.0f);
+        for (int set = 0; set < 5; set++) {
+            plan_costs_t c = set == 1 ? costs_s90_only(180.0f) : set == 4 ? costs_kinds(180.0f) : costs(set == 0 ? 180.0f : 90.0f);
             if (set >= 2) c.accel_mm_s2 = 12000.0f;
             if (set == 3) { /* fast straights, and the large turns at half their time */
                 c.v_diag_mm_s = c.v_max_mm_s = 2000.0f;
@@ -427,7 +461,7 @@ static void test_random_open_maps(void **state)
     slalom_move_t mv[MOVES_MAX];
     int found = 0, diag_used = 0;
     plan_costs_t c = costs(180.0f);
-    for (int seed = 0; seed < 200; seed++) { /* odd seeds the plain costs, even ones the large turns at half time */
+    for (int seed = 0; seed < 200; seed++) { /* seeds 1 mod 4 the plain costs, 3 mod 4 each turn at its own speed, even ones the large turns at half time */
         closed_maze(&m, 6, 6);
         for (uint16_t i = 0; i < maze_cells(&m); i++)
             for (uint8_t d = 0; d < 2; d++)
@@ -437,7 +471,8 @@ static void test_random_open_maps(void **state)
         uint8_t gx = (uint8_t)(next_rand() % 5), gy = (uint8_t)(next_rand() % 5), g = (uint8_t)(next_rand() % 2);
         assert_int_equal(maze_set_goal_rect(&m, gx, gy, (uint8_t)(gx + g), (uint8_t)(gy + g)), 0);
         float t;
-        if (seed % 2) c = costs(180.0f);
+        if (seed % 4 == 1) c = costs(180.0f);
+        else if (seed % 4 == 3) c = costs_kinds(180.0f);
         else for (int k = SLALOM_F90; k < SLALOM_KINDS; k++) c.turn_s[k] *= 0.5f;
         int n = plan_checked(&m, &c, mv, &t);
         double r = ref_best(&m, &c);

@@ -143,13 +143,15 @@ static double drive(const slalom_geom_t *g, const slalom_drive_t *d, double v, f
     return peak;
 }
 
-static void check_speed(float v, float cap)
+/* every turn kind k at v_kind[k] mm/s */
+static void check_speeds(const float v_kind[SLALOM_KINDS], float cap)
 {
     slalom_drive_t d[SLALOM_KINDS];
     float turn_s[SLALOM_KINDS];
-    slalom_fit(v, cap, d, turn_s);
+    slalom_fit_kinds(v_kind, cap, d, turn_s);
     for (int k = SLALOM_S90; k < SLALOM_KINDS; k++) {
         const slalom_geom_t *g = &slalom_geom[k];
+        float v = v_kind[k];
         if (d[k].w_deg_s <= 0) {
             assert_true(turn_s[k] < 0); /* not planned */
             continue;
@@ -181,16 +183,30 @@ static void check_speed(float v, float cap)
     }
 }
 
+/* every turn kind at one speed v */
+static void check_speed(float v, float cap)
+{
+    float v_kind[SLALOM_KINDS];
+    for (int k = 0; k < SLALOM_KINDS; k++) v_kind[k] = v;
+    check_speeds(v_kind, cap);
+}
+
+/* the speed runs' turns, each kind at its own speed (robot_config.h
+ * RC_SLALOM_*_MM_S): safe, and fast under the fast runs' cap */
 static void test_safe_speed(void **state)
 {
     (void)state;
-    check_speed(RC_SLALOM_SAFE_MM_S, RC_CMD_FF_MAX);
+    float v[SLALOM_KINDS];
+    slalom_run_speeds(0, v);
+    check_speeds(v, RC_CMD_FF_MAX);
 }
 
 static void test_fast_speed(void **state)
 {
     (void)state;
-    check_speed(RC_SLALOM_FAST_MM_S, RC_RUN_FAST_CMD_FF_MAX);
+    float v[SLALOM_KINDS];
+    slalom_run_speeds(1, v);
+    check_speeds(v, RC_RUN_FAST_CMD_FF_MAX);
 }
 
 /* and below them, where robot_config.h's figures were checked too */
