@@ -227,7 +227,7 @@
 /* F90, F180, F45 and D45 (D45 the F45's speed), each checked by
  * test_slalom (the body 10 mm clear of posts and walls, 3 mm for turns to
  * or from a diagonal; within 0.3 g and the wheels' top speed). The F90:
- * the fastest in steps of 10 mm/s that slalom_fit fits in its room under
+ * the fastest in steps of 10 mm/s that slalom_fit_kinds fits in its room under
  * the run's cap (at 450 and 480 no rate the outer wheel's feed-forward
  * allows turns it within RC_SLALOM_F90_MM). The F180: 400 under the fast
  * cap (10.8 mm from its post; 410: 9.9), 350 on the safe runs (14.0 mm;

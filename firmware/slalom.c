@@ -50,7 +50,7 @@ void slalom_place(int8_t x, int8_t y, uint8_t from_diag, int8_t dir, uint8_t h8,
     *dy = b;
 }
 
-/* ---- The turns as driven (slalom.h slalom_fit) ---- */
+/* ---- The turns as driven (slalom.h slalom_fit_kinds) ---- */
 #if PLAN_ENABLED
 #define HALF_MM (RC_CELL_MM / 2) /* one half unit of the grid */
 #define TURN_NO_FIT_S (-1.0f)    /* plan_costs_t: a turn not used */
@@ -107,11 +107,6 @@ static float fit_kind(uint8_t k, float v, float ff_max_cmd, slalom_drive_t *d)
         return TURN_NO_FIT_S;
     }
     return (d->before_mm + d->arc_mm + d->after_mm) / v;
-}
-
-void slalom_fit(float v_mm_s, float ff_max_cmd, slalom_drive_t drive[SLALOM_KINDS], float turn_s[SLALOM_KINDS])
-{
-    for (uint8_t k = 0; k < SLALOM_KINDS; k++) turn_s[k] = fit_kind(k, v_mm_s, ff_max_cmd, &drive[k]);
 }
 
 void slalom_run_speeds(uint8_t fast, float v_mm_s[SLALOM_KINDS])

@@ -86,17 +86,15 @@ typedef struct {
     float after_mm;  /* straight from its end to the exit node */
 } slalom_drive_t;
 
-/* Size every turn for forward speed v_mm_s, the feed-forward capped at
- * ff_max_cmd (motion_t's while it is driven): drive[] for the executor,
- * turn_s[] the time from entry node to exit node for the planner (-1:
- * the turn does not fit, plan.h: not used). Host builds only (PLAN_ENABLED). */
-void slalom_fit(float v_mm_s, float ff_max_cmd, slalom_drive_t drive[SLALOM_KINDS], float turn_s[SLALOM_KINDS]);
-
 /* Each turn kind's speed on a speed run, mm/s (robot_config.h
  * RC_SLALOM_*_MM_S): the safe figures, or the fast ones (fast 1). */
 void slalom_run_speeds(uint8_t fast, float v_mm_s[SLALOM_KINDS]);
 
-/* slalom_fit with each kind k at its own speed v_mm_s[k] (0: not driven). */
+/* Size each turn kind k for its forward speed v_mm_s[k] (0: not driven),
+ * the feed-forward capped at ff_max_cmd (motion_t's while it is driven):
+ * drive[] for the executor, turn_s[] the time from entry node to exit node
+ * for the planner (-1: the turn does not fit, plan.h: not used). Host
+ * builds only (PLAN_ENABLED). */
 void slalom_fit_kinds(const float v_mm_s[SLALOM_KINDS], float ff_max_cmd, slalom_drive_t drive[SLALOM_KINDS],
                       float turn_s[SLALOM_KINDS]);
 

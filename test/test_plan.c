@@ -61,7 +61,7 @@ static plan_costs_t costs(float cell_mm)
 }
 
 /* Each turn kind at its own speed with straight legs at its ends (as the
- * firmware drives them, slalom_fit): the turn's time is its path length
+ * firmware drives them, slalom_fit_kinds): the turn's time is its path length
  * less the legs, at its speed. Speeds mm/s: S90 350, F90 600, F180 450,
  * F45 and D45 500, F135 and D135 300, V90 380; legs: a tenth and a fifth of
  * a half unit (before, after) for all but the S90, which has none. */

@@ -1,4 +1,4 @@
-/* test_slalom.c - the speed run's turns as slalom_fit sizes them for the
+/* test_slalom.c - the speed run's turns as slalom_fit_kinds sizes them for the
  * paper robot (firmware/robot_config.h): each turn's path, integrated from
  * the same discrete rotation profile the control tick runs, goes from its
  * entry node to its exit node on the exit heading, agrees with
@@ -222,7 +222,9 @@ static void test_geometry_agrees(void **state)
     (void)state;
     slalom_drive_t d[SLALOM_KINDS];
     float turn_s[SLALOM_KINDS];
-    slalom_fit(300.0f, RC_CMD_FF_MAX, d, turn_s);
+    float v[SLALOM_KINDS];
+    for (int k = 0; k < SLALOM_KINDS; k++) v[k] = 300.0f;
+    slalom_fit_kinds(v, RC_CMD_FF_MAX, d, turn_s);
     float corner, post, len;
     motion_slalom_geometry(300.0f, 90.0f, d[SLALOM_F90].w_deg_s, RC_SLALOM_ACCEL_DEG_S2, RC_CMD_FF_MAX, &corner, &post, &len);
     assert_true(fabsf(corner - (3 * HALF_MM - d[SLALOM_F90].before_mm)) < 0.01f);
