@@ -41,6 +41,24 @@ void walls_setup(void)
     for (uint8_t g = 0; g < HAL_EMITTER_GROUPS; g++) hal_emitter(g, 1);
 }
 
+#ifdef __AVR__
+/* hal/ukmarsbot's hal_ir_raw is already lit minus dark: its sensor
+ * schedule samples each sensor dark and lit every tick */
+#define ir_reading hal_ir_raw
+#else
+/* hal/sim's hal_ir_raw is one sample taken at the call with the emitters
+ * as they are (hal.h): a dark one with every emitter off, then a lit one,
+ * and their difference, as the board's schedule takes them */
+static uint16_t ir_reading(uint8_t sensor)
+{
+    for (uint8_t g = 0; g < HAL_EMITTER_GROUPS; g++) hal_emitter(g, 0);
+    uint16_t dark = hal_ir_raw(sensor);
+    for (uint8_t g = 0; g < HAL_EMITTER_GROUPS; g++) hal_emitter(g, 1);
+    uint16_t lit = hal_ir_raw(sensor);
+    return lit > dark ? (uint16_t)(lit - dark) : 0u;
+}
+#endif
+
 /* hal_ir index of each role for the robot's sensor set (walls_ir.h):
  * left, front left, front right, right; 255 none */
 static uint8_t ir_of(uint8_t role)
@@ -58,7 +76,7 @@ hal_distance_t walls_distance(uint8_t sensor)
     if (ir_of(0) == 255) return d;
     if (sensor == HAL_TOF_FRONT) {
 #ifdef RC_IR_FRONT_CURVE_MM
-        uint32_t sum = (uint32_t)hal_ir_raw(ir_of(1)) + hal_ir_raw(ir_of(2));
+        uint32_t sum = (uint32_t)ir_reading(ir_of(1)) + ir_reading(ir_of(2));
         uint32_t ref = (uint32_t)c->front_ref[0] + c->front_ref[1];
         hal_distance_t f = front_mm(sum * 64u / (ref ? ref : 1u));
         f.seq = d.seq;
@@ -68,7 +86,7 @@ hal_distance_t walls_distance(uint8_t sensor)
 #endif
     }
     uint8_t side = sensor == HAL_TOF_RIGHT;
-    uint16_t raw = hal_ir_raw(ir_of(side ? 3 : 0)), ref = c->side_ref[side];
+    uint16_t raw = ir_reading(ir_of(side ? 3 : 0)), ref = c->side_ref[side];
     if ((uint32_t)raw * 100u < (uint32_t)ref * c->side_pct || !raw) return d; /* no wall */
     d.mm = (uint16_t)(RC_SIDE_WALL_MM * sqrtf((float)ref / (float)raw) + 0.5f);
     d.timeout = 0;
