@@ -144,6 +144,14 @@ $(B)/half/firmware/%.o: firmware/%.c | deps $(LCM_STAMP)
 	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) -include robot_kerise.h -MMD -MP -c $< -o $@
 $(B)/half/mmsim: tools/mmsim.c $(HALF_FW_OBJ) $(B)/libmm.a
 	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(HALF_FW_OBJ) $(B)/libmm.a $(LIBS) -o $@
+# The UKMARSBOT build: mmsim whose in-process firmware is built for ORION
+# (firmware/robot_ukmarsbot.h, robots/ukmarsbot.ini) with the host's planner
+UKB_FW_OBJ := $(patsubst firmware/%.c,$(B)/ukb/firmware/%.o,$(FW_SRC))
+$(B)/ukb/firmware/%.o: firmware/%.c | deps $(LCM_STAMP)
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) -include robot_ukmarsbot.h -MMD -MP -c $< -o $@
+$(B)/ukb/mmsim: tools/mmsim.c $(UKB_FW_OBJ) $(B)/libmm.a
+	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(UKB_FW_OBJ) $(B)/libmm.a $(LIBS) -o $@
 
 # The source tree's absolute path, where a program built here finds boards/,
 # robots/ and contests/ from any working directory (sim/io/datadir.h).
@@ -190,6 +198,24 @@ $(B)/san/half/firmware/%.o: firmware/%.c | deps $(LCM_STAMP)
 $(B)/san-tools/half/mmsim: tools/mmsim.c $(HALF_SAN_OBJ) $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(HALF_SAN_OBJ) $(B)/libmm_san.a $(LIBS) -o $@
+# the UKMARSBOT build ($(B)/ukb/mmsim) sanitized, for test/cli_ukbhost.sh
+UKB_SAN_OBJ := $(patsubst firmware/%.c,$(B)/san/ukb/firmware/%.o,$(FW_SRC))
+$(B)/san/ukb/firmware/%.o: firmware/%.c | deps $(LCM_STAMP)
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) -include robot_ukmarsbot.h -MMD -MP -c $< -o $@
+$(B)/san-tools/ukb/mmsim: tools/mmsim.c $(UKB_SAN_OBJ) $(B)/libmm_san.a
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(UKB_SAN_OBJ) $(B)/libmm_san.a $(LIBS) -o $@
+
+# test_slalom for UKMARSBOT's turns (firmware/robot_ukmarsbot.h's host
+# figures): its firmware objects, and robots/ukmarsbot.ini's body (65 x 100
+# mm, 64 mm of it ahead of the axle, taken on both sides; 10 mm wheels on a
+# 77.4 mm track, out to 43.7 mm, 34 mm across)
+UKB_BODY := -DBODY_X_MM=32.5 -DBODY_Y_MM=64.0 -DWHEEL_X_MM=43.7 -DWHEEL_Y_MM=17.0 -DDIAG_CLEAR_MM=3.0
+$(B)/test/test_slalom_ukb: test/test_slalom.c $(UKB_SAN_OBJ) $(B)/libmm_san.a
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) -include robot_ukmarsbot.h $(UKB_BODY) $< $(UKB_SAN_OBJ) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
+TESTS += $(B)/test/test_slalom_ukb
 
 # XTEST input for test/cli_connect.sh (libxtst-dev)
 $(B)/test/xinput: test/xinput.c | deps
@@ -212,11 +238,11 @@ PERIPH_ELFS     := $(patsubst %,$(B)/arduino/nano/board/%.elf,$(PERIPH_SKETCHES)
 NPROC := $(shell nproc 2>/dev/null || echo 1)
 test: deps
 	@$(MAKE) -j$(NPROC) --no-print-directory test-run
-test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/,$(TOOLS)) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/san-tools/half/mmsim $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
+test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/,$(TOOLS)) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/san-tools/half/mmsim $(B)/san-tools/ukb/mmsim $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
 	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf $(B)/arduino/uno/OneCommand.elf $(B)/test/mrc_boot \
 	$(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf $(BOARD_SKETCHES) $(PERIPH_ELFS) \
 	client-mazerunner firmware-ukmarsbot
-	@LSAN_OPTIONS=suppressions=$(CURDIR)/test/lsan-simavr.supp MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim HALF_MMSIM=$(B)/san-tools/half/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
+	@LSAN_OPTIONS=suppressions=$(CURDIR)/test/lsan-simavr.supp MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim HALF_MMSIM=$(B)/san-tools/half/mmsim UKB_MMSIM=$(B)/san-tools/ukb/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
 # PlatformIO from PyPI in a venv, only to check that platformio.ini parses
 # (`pio run` cannot download its platforms here). No PyPI: the check skips.

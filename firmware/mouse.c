@@ -567,6 +567,36 @@ static maze_cell_t run_cell(int16_t x2, int16_t y2)
     return maze_cell(&ex.map, (uint8_t)(x2 / 2), (uint8_t)(y2 / 2)); /* a cell centre: both even */
 }
 
+#ifdef RC_DIAG_AFTER_TURN_HALVES
+/* Whether the diagonals of a plan start where the robot knows where it
+ * is, for a robot with room to spare on a diagonal (robot_ukmarsbot.h):
+ * any turn may enter one, V90s join them; the half steps driven on
+ * diagonals from an F45 or F135 to the turn back to an orthogonal heading
+ * are at most RC_DIAG_MAX_HALVES where that entry follows an orthogonal
+ * straight of at least RC_DIAG_ENTRY_HALVES (centred on its side walls),
+ * else at most RC_DIAG_AFTER_TURN_HALVES (the heading the turns before it
+ * left is held blind); that D45 or D135 leads into such a straight (the
+ * robot centred again before its next turn or stop). */
+static int prun_diag_ok(int n)
+{
+    int limit = 0, driven = 0;
+    for (int i = 0; i < n; i++) {
+        const slalom_move_t *mv = &run_moves[i];
+        if (mv->kind == SLALOM_F45 || mv->kind == SLALOM_F135) {
+            int centred = i > 0 && run_moves[i - 1].kind == SLALOM_ORTHO && run_moves[i - 1].n >= RC_DIAG_ENTRY_HALVES;
+            limit = centred ? RC_DIAG_MAX_HALVES : RC_DIAG_AFTER_TURN_HALVES;
+            driven = 0;
+        } else if (mv->kind == SLALOM_DIAG) {
+            driven += mv->n;
+            if (driven > limit) return 0;
+        } else if ((mv->kind == SLALOM_D45 || mv->kind == SLALOM_D135) &&
+                   (i + 1 >= n || run_moves[i + 1].kind != SLALOM_ORTHO || run_moves[i + 1].n < RC_DIAG_ENTRY_HALVES)) {
+            return 0;
+        }
+    }
+    return 1;
+}
+#else
 /* Whether the diagonals of a plan start where the robot knows where it
  * is: each entered by an F45 at the end of an orthogonal straight of at
  * least RC_DIAG_ENTRY_HALVES (centred on its side walls) and left by a D45
@@ -589,6 +619,7 @@ static int prun_diag_ok(int n)
     }
     return 1;
 }
+#endif
 
 /* This run's turns (each kind at its own speed, RC_SLALOM_*_MM_S) and the
  * planner's costs for them: each turn's legs are driven with the straights

@@ -135,9 +135,96 @@
 #define RC_SMOOTH_MM_S 300.0f
 #define RC_SMOOTH_DEG_S 245.6f
 #define RC_SMOOTH_ACCEL_DEG_S2 3000.0f
+#ifdef __AVR__
 /* speed runs with diagonals and slaloms: this build does not plan them
  * (PLAN_ENABLED is 0 on the AVR); the names as robot_config.h */
 #include "slalom_off.h"
+#else
+/* ---- speed runs with slaloms and diagonals (host builds: build/ukb/mmsim
+ * runs this firmware in-process with plan.c; robot_config.h explains each
+ * name). "ours": measured in mmsim with robots/ukmarsbot.ini, seed 1; the
+ * turns' clearances by build/test/test_slalom_ukb (UKMARSBOT's body swept
+ * along each turn as the control tick drives it). ---- */
+#define RC_DIAG_RUNS 1
+/* Fast runs (after a clean one): the safe runs' cap (the motor holds 2,485
+ * mm/s under it: (923 - 31) x 2.786), cruise 1,500 mm/s, and ORION's
+ * acceleration (config-robot-orion.h, 2,000 mm/s^2). Ours: with turns at
+ * 350 mm/s, cruise 1,000 gave best runs of 21.6 s (japan2018) and 25.0 s
+ * (japan2019), 1,500 20.9 and 24.3; at 2,500 and 3,000 mm/s^2 japan2019
+ * crashed in its first fast run (2,000: clean). */
+#define RC_RUN_FAST_CMD_FF_MAX RC_CMD_FF_MAX
+#define RC_RUN_FAST_MM_S 1500.0f         /* mm/s */
+#define RC_RUN_FAST_ACCEL_MM_S2 2000.0f  /* mm/s^2 */
+#define RC_RUN_CLEAN_MM 10.0f            /* mm, as robot_config.h */
+/* Each turn kind's speed, safe / fast, mm/s (the S90's also the V90's,
+ * F135's and D135's; D45 the F45's). Ours: at safe 300 / 350 / 300 / 350
+ * and fast 350 / 450 / 350 / 400 (S90, F90, F180, F45) best runs 20.9 s
+ * and 24.3 s; with these 19.5 and 22.1 (no diagonal), all within 0.3 g
+ * (test_slalom_ukb). The F45 at the S90's speed: at 350 / 450 the
+ * first speed run of japan2018 crashed where an S90 leads straight into
+ * an F45 (no straight between them to change speed on). Clearances
+ * (test_slalom_ukb), safe / fast: S90 34.3 / 33.5 mm, F90 29.5 / 32.0,
+ * F180 28.9 / 23.5, F45 and D45 11.5 / 11.5. */
+#define RC_SLALOM_SAFE_MM_S 300.0f
+#define RC_SLALOM_FAST_MM_S 400.0f
+#define RC_SLALOM_F90_SAFE_MM_S 400.0f
+#define RC_SLALOM_F90_FAST_MM_S 500.0f
+#define RC_SLALOM_F180_SAFE_MM_S 300.0f
+#define RC_SLALOM_F180_FAST_MM_S 400.0f
+#define RC_SLALOM_F45_SAFE_MM_S 300.0f
+#define RC_SLALOM_F45_FAST_MM_S 400.0f
+/* Diagonal straights, mm/s: the wheels pass the posts 11.4 mm off on the
+ * diagonal's centre line (posts 63.6 mm from it, minus 43.7 mm of wheel
+ * and 8.5 mm of post across the diagonal), held blind on odometry's
+ * heading (ours, not tuned further: the runs' diagonals are short). */
+#define RC_DIAG_SAFE_MM_S 500.0f
+#define RC_DIAG_FAST_MM_S 800.0f
+/* Which plans may drive diagonals (mouse.c prun_diag_ok): any turn may
+ * enter one; from an F45 or F135 to the turn back, at most
+ * RC_DIAG_MAX_HALVES half steps of diagonal after an orthogonal straight
+ * of at least RC_DIAG_ENTRY_HALVES, RC_DIAG_AFTER_TURN_HALVES after a
+ * turn; the turn back leads into such a straight. Ours, every 16th
+ * classic maze in name order (31, 30 reachable), the fast figures above:
+ * - no rule (up to 12 half steps, from and into any move): 6 of the first
+ *   27 touched (Portugal-2024-Final: S90 S90 S90 F45 and 5 half steps;
+ *   diag2: 9 half steps after an S90; japan2013eq, higashi-2017 and
+ *   uk2011follower: a D45 into a turn; alljapan-010-1989-fin), while
+ *   others gained up to 13 % (kw-2 12.84 s against 14.77);
+ * - no rule, up to 4 or 6 half steps: at 6 Portugal-2024-Final touched,
+ *   at 4 japan2019's plan (6 + 4 half steps about a V90) was dropped;
+ * - this rule without its last clause: japan2013eq, higashi-2017 and
+ *   uk2011follower touched (japan2019 19.51 s);
+ * - this rule: the 30 clean (docs/BENCHMARKS.md); the first speed runs of
+ *   higashi-2017, ies90 and portugal-2022 drive diagonals (V90s, F135 and
+ *   D135 too), and japan2018's best run does (japan2019's has none). */
+#define RC_DIAG_ENTRY_HALVES 2           /* half units */
+#define RC_DIAG_MAX_HALVES 12            /* half steps */
+#define RC_DIAG_AFTER_TURN_HALVES 2      /* half steps */
+/* No diagonal reference: the IR sensors' distances are calibrated for a
+ * side wall square to the corridor (walls.c); diagref.c models ToF cones. */
+#define RC_DIAG_TOF 0
+#define RC_CMD_DIAG_TOF 0
+#define RC_DIAG_TOF_START_MM 1.5f        /* mm, as robot_config.h (RC_DIAG_TOF 0: unused) */
+#define RC_DIAG_TOF_DRIFT_MM2 0.02f      /* mm^2 per mm, as robot_config.h (unused) */
+/* the slaloms' rotation: robot_config.h's (70 rad/s^2 is 2.7 m/s^2 of
+ * wheel arc on the 38.7 mm half track) */
+#define RC_SLALOM_ACCEL_DEG_S2 4010.7f   /* deg/s^2 */
+#define RC_SLALOM_W_MIN_DEG_S 57.3f      /* deg/s */
+#define RC_SLALOM_W_MAX_DEG_S 859.4f     /* deg/s */
+/* From each turn's start to its corner, mm: the paper robot's S90, F90,
+ * F45 and D45 (robot_config.h; clearances above). V90 80 (of 127): 9.6 mm
+ * from the posts at 300 mm/s, 10.9 at 400; at 100 it fails
+ * test_slalom_ukb at 300 mm/s, at 120 it touches. F135 and D135 120 (of 127): 8.3 and 8.4 mm at 300 mm/s; at
+ * 400 they do not fit (the fast runs plan without them); at 60-100 no
+ * rate the motor allows fits them. */
+#define RC_SLALOM_S90_MM 85.0f
+#define RC_SLALOM_F90_MM 120.0f
+#define RC_SLALOM_F45_MM 60.0f
+#define RC_SLALOM_D45_MM 60.0f
+#define RC_SLALOM_V90_MM 80.0f
+#define RC_SLALOM_F135_MM 120.0f
+#define RC_SLALOM_D135_MM 120.0f
+#endif
 #define RC_TOF_CV 0.042f              /* per mm of reading */
 #define RC_DIAG_TOF_MAX_MM 200.0f     /* mm */
 #define RC_DIAG_TOF_MARGIN_MM 8.0f    /* mm */

@@ -22,17 +22,22 @@
 
 #define HALF_MM (RC_CELL_MM / 2)
 #define D2R 0.017453293
+#ifndef BODY_X_MM
 /* the body as robots/paper.ini has it: 96 x 120 mm about the axle, wheels
- * 8 mm wide on a 96 mm track (out to 52 mm), 32 mm across */
+ * 8 mm wide on a 96 mm track (out to 52 mm), 32 mm across (a build for
+ * another robot gives its own: the Makefile's test_slalom_ukb) */
 #define BODY_X_MM 48.0
 #define BODY_Y_MM 60.0
 #define WHEEL_X_MM 52.0
 #define WHEEL_Y_MM 16.0
+#endif
 #define POST_HALF_MM 6.0 /* 12 mm posts and walls (classic rules, sim/world/config.c) */
 /* clearance asked: a diagonal itself passes the posts 3.1 mm off (robot_config.h
  * RC_DIAG_*), so turns to or from one get that; the others a margin for
  * the robot's lag behind its profile */
+#ifndef DIAG_CLEAR_MM
 #define DIAG_CLEAR_MM 3.0
+#endif
 #define ORTHO_CLEAR_MM 10.0
 #define GRIP_MM_S2 2943.0  /* 0.3 g: a third of the tyres' mu 1.0 */
 /* the wheel speed a feed-forward cap can hold, mm/s (robot_config.h: 676 at RC_CMD_FF_MAX) */
