@@ -148,16 +148,16 @@
 #define RC_DIAG_RUNS 1
 /* Fast runs (after a clean one): the safe runs' cap (the motor holds 2,485
  * mm/s under it: (923 - 31) x 2.786), cruise 1,500 mm/s, and ORION's
- * acceleration (config-robot-orion.h, 2,000 mm/s^2). Ours: with turns at
- * 350 mm/s, cruise 1,000 gave best runs of 21.6 s (japan2018) and 25.0 s
- * (japan2019), 1,500 20.9 and 24.3; at 2,500 and 3,000 mm/s^2 japan2019
- * crashed in its first fast run (2,000: clean). */
+ * acceleration (config-robot-orion.h, 2,000 mm/s^2). Ours: with the fast
+ * turns at 350-450 mm/s, cruise 1,000 gave best runs of 22.4 s
+ * (japan2018) and 25.0 s (japan2019), 1,500 20.9 and 24.3; at 2,500 and
+ * 3,000 mm/s^2 japan2019 crashed in its first fast run (2,000: clean). */
 #define RC_RUN_FAST_CMD_FF_MAX RC_CMD_FF_MAX
 #define RC_RUN_FAST_MM_S 1500.0f         /* mm/s */
 #define RC_RUN_FAST_ACCEL_MM_S2 2000.0f  /* mm/s^2 */
 #define RC_RUN_CLEAN_MM 10.0f            /* mm, as robot_config.h */
 /* Each turn kind's speed, safe / fast, mm/s (the S90's also the V90's,
- * F135's and D135's; D45 the F45's). Ours: at safe 300 / 350 / 300 / 350
+ * F135's and D135's; D45 the F45's). Ours: at safe 300 / 400 / 300 / 350
  * and fast 350 / 450 / 350 / 400 (S90, F90, F180, F45) best runs 20.9 s
  * and 24.3 s; with these 19.5 and 22.1 (no diagonal), all within 0.3 g
  * (test_slalom_ukb). The F45 at the S90's speed: at 350 / 450 the
