@@ -270,7 +270,7 @@ firmware: firmware-size arduino
 UKB_SRC       := $(FW_SRC) $(sort $(wildcard hal/ukmarsbot/*.c))
 UKB_FLASH_MAX := 30720
 UKB_SENSOR_BOARD ?= advanced
-UKB_FLAGS     := $(AVR_FLAGS) -Ihal/ukmarsbot -include robot_ukmarsbot.h -DHAL_LOG_MAX=50 -fno-inline-functions -fno-inline-small-functions -fno-inline-functions-called-once $(if $(filter basic,$(UKB_SENSOR_BOARD)),-DUKB_SENSOR_BOARD_BASIC)
+UKB_FLAGS     := $(AVR_FLAGS) -Ihal/ukmarsbot -include robot_ukmarsbot.h -DHAL_IR_LIT_MINUS_DARK -DHAL_LOG_MAX=50 -fno-inline-functions -fno-inline-small-functions -fno-inline-functions-called-once $(if $(filter basic,$(UKB_SENSOR_BOARD)),-DUKB_SENSOR_BOARD_BASIC)
 UKB_OUT       := $(B)/ukmarsbot$(if $(filter basic,$(UKB_SENSOR_BOARD)),-basic)
 $(UKB_OUT)/mouse.elf: $(UKB_SRC) $(wildcard hal/ukmarsbot/*.h firmware/*.h) hal/hal.h | deps
 	@mkdir -p $(dir $@)

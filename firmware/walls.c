@@ -41,14 +41,16 @@ void walls_setup(void)
     for (uint8_t g = 0; g < HAL_EMITTER_GROUPS; g++) hal_emitter(g, 1);
 }
 
-#ifdef __AVR__
-/* hal/ukmarsbot's hal_ir_raw is already lit minus dark: its sensor
- * schedule samples each sensor dark and lit every tick */
+#ifdef HAL_IR_LIT_MINUS_DARK
+/* the backend's hal_ir_raw is already lit minus dark (hal.h): its sensor
+ * schedule samples each sensor dark and lit every tick (hal/ukmarsbot) */
 #define ir_reading hal_ir_raw
 #else
-/* hal/sim's hal_ir_raw is one sample taken at the call with the emitters
- * as they are (hal.h): a dark one with every emitter off, then a lit one,
- * and their difference, as the board's schedule takes them */
+/* a backend that samples at the call with the emitters as they are
+ * (hal/sim): a dark sample with every emitter off, then a lit one, and
+ * their difference, as the board's schedule takes them. Over the wire
+ * (hal/arduino) a sample comes ticks after its hal_emitter, so both
+ * would be the same frame: this reading is for hal/sim and hal/ukmarsbot. */
 static uint16_t ir_reading(uint8_t sensor)
 {
     for (uint8_t g = 0; g < HAL_EMITTER_GROUPS; g++) hal_emitter(g, 0);

@@ -37,7 +37,9 @@
  *   once dark and once lit and subtract, as real firmware does. In
  *   hal/sim the sample is taken at the call; over the wire (hal/arduino)
  *   it is the newest sample the simulator sent, taken after the latest
- *   hal_emitter it received, and hal_ir_seq counts those samples.
+ *   hal_emitter it received, and hal_ir_seq counts those samples. A
+ *   backend whose own sensor schedule takes both and gives lit minus dark
+ *   (hal/ukmarsbot) is built with HAL_IR_LIT_MINUS_DARK defined.
  * - hal_gyro_mdps: the gyro's z rate in millidegrees per second,
  *   counter-clockwise (seen from above) positive, as its output data
  *   rate holds it; 0 on a robot without a gyro (hal_gyro_present 0).

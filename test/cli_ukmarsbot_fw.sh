@@ -46,7 +46,7 @@ make = sorted(open(sys.argv[1]).read().split())
 if pio != make:
     sys.exit(print("files differ: make only %s, pio only %s" % (set(make) - set(pio), set(pio) - set(make))) or 1)
 flags = env["build_flags"].split()
-for f in ("-DMAZE_MAX_SIZE=16", "-Ihal", "-Ifirmware", "-Ihal/ukmarsbot", "-std=c99"):
+for f in ("-DMAZE_MAX_SIZE=16", "-Ihal", "-Ifirmware", "-Ihal/ukmarsbot", "-std=c99", "-DHAL_IR_LIT_MINUS_DARK"):
     if f not in flags: sys.exit(print("build_flags lack", f) or 1)
 if env["board"] != "nanoatmega328" or env.get("framework"): sys.exit(print("board/framework:", env["board"], env.get("framework")) or 1)
 print("the same %d source files as make" % len(pio))
