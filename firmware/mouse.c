@@ -132,6 +132,18 @@ static int8_t quarter(uint8_t h, uint8_t d)
     return q == 3 ? -1 : q;
 }
 
+/* fw_loop runs with the control tick held off (hal_tick_hold): it reads
+ * and changes the motion state fw_tick drives. A flood (explore_next:
+ * 30-200 ms on a 16 MHz AVR) touches only the map, and the tick runs
+ * meanwhile. */
+static int explore_next_ticking(void)
+{
+    hal_tick_release();
+    int d = explore_next(&ex);
+    hal_tick_hold();
+    return d;
+}
+
 /* Walls of the cell ahead, read from the sensors (EXPLORE_WALL_* bits);
  * to_centre: mm from the robot to that cell's centre. */
 static uint8_t read_walls(float to_centre)
@@ -451,7 +463,7 @@ static void search_decide(float left)
      * 60 mm before it at search speed) instead of running on */
     float v_end = mo.fwd.v_end;
     mo.fwd.v_end = 0;
-    int d = explore_next(&ex);
+    int d = explore_next_ticking();
     left = profile_remaining(&mo.fwd); /* where the robot is now */
     wall_ahead = (walls & EXPLORE_WALL_FRONT) != 0;
     if (d >= 0 && (uint8_t)d == st.heading && mo.fwd.active) {
@@ -488,7 +500,7 @@ static void search_step(void)
             if (!f.timeout && f.mm < RC_FRONT_AT_CENTRE_MM + 60) w |= EXPLORE_WALL_FRONT;
             explore_sense(&ex, w);
         }
-        int d = explore_next(&ex);
+        int d = explore_next_ticking();
         if (d < 0) {
             st.mode = ex.phase == EXPLORE_DONE ? MOUSE_TO_RUN : MOUSE_NO_GOAL;
             return;
@@ -805,7 +817,10 @@ static void prun_turn(void)
 
 static int path_dir(int to_goal, maze_cell_t c, uint8_t h)
 {
-    return to_goal ? explore_run_dir(&ex, c, h) : explore_home_dir(&ex, c, h);
+    hal_tick_release(); /* a flood: the tick runs meanwhile (explore_next_ticking) */
+    int d = to_goal ? explore_run_dir(&ex, c, h) : explore_home_dir(&ex, c, h);
+    hal_tick_hold();
+    return d;
 }
 
 /* Speed runs and the way back: one move per straight of the known path,
@@ -988,6 +1003,7 @@ static void cmd_step(void);
 
 void fw_loop(void)
 {
+    hal_tick_hold();
     switch (st.mode) {
     case MOUSE_SEARCH:
         search_step();
@@ -1032,6 +1048,7 @@ void fw_loop(void)
     default:
         break;
     }
+    hal_tick_release();
 }
 
 const maze_t *mouse_map(void) { return &ex.map; }

@@ -9,6 +9,8 @@
  * fw_setup once, fw_tick at HAL_TICK_HZ from a timer interrupt (control:
  * odometry, profiles, motor commands; must return within one tick) and
  * fw_loop repeatedly from the main loop (planning: floods, decisions).
+ * fw_loop reads and changes what fw_tick uses (profiles, odometry) only
+ * between hal_tick_hold and hal_tick_release.
  *
  * Backend guarantees:
  * - hal_micros: microseconds since start, monotonic, wrapping at 2^32
@@ -27,6 +29,14 @@
  *   not block for longer than it takes to queue it.
  * - hal_belief: the mouse's map and position for telemetry; the backend
  *   may copy it or ignore it, and must not keep the pointer.
+ * - hal_tick_hold, hal_tick_release (fw_loop only, not nested): fw_tick
+ *   does not start in between; a tick due meanwhile starts at the release,
+ *   late but not lost, and other interrupts (encoders, serial) go on. An
+ *   8-bit MCU loads a float in four byte loads: a tick between them gives
+ *   the main loop half an old and half a new value (a profile position
+ *   crossing 128 mm, 127.2 -> 128.8, read as 508.8: 0x42FE6666 with the
+ *   new top byte 0x43). A backend that calls fw_tick and fw_loop in turn
+ *   (hal/sim) does nothing.
  * Sensors of robots other than the paper's (robot file, docs/ROBOTS.md):
  * - hal_ir_count: how many IR reflectance sensors the robot has (its
  *   [ir.*] sections, in the robot file's order); 0 on a robot without.
@@ -123,6 +133,8 @@ void hal_log(const char *line);
 void hal_log_P(const char *line_in_flash); /* hal_log of a PSTR() line */
 #endif
 void hal_belief(const struct maze_s *map, uint16_t cell, uint8_t heading, uint8_t state);
+void hal_tick_hold(void);
+void hal_tick_release(void);
 
 #define HAL_IR_MAX 8          /* IR sensors a robot may have */
 #define HAL_EMITTER_GROUPS 4  /* emitter groups */

@@ -10,6 +10,8 @@ uint32_t hal_micros(void) { return fake_us; }
 void hal_motor_set(int16_t left, int16_t right) { motor[0] = left; motor[1] = right; }
 int32_t hal_encoder(uint8_t side) { return motor[side & 1]; }
 void hal_encoder_reset(void) {}
+void hal_tick_hold(void) {}
+void hal_tick_release(void) {}
 hal_distance_t hal_distance(uint8_t sensor) { hal_distance_t d = { (uint16_t)(100u + sensor), 0, 0 }; return d; }
 void hal_log(const char *line) { (void)line; }
 void hal_log_P(const char *line) { (void)line; }

@@ -46,6 +46,10 @@ uint8_t hal_maze(hal_maze_t *m)
     return announced_ok;
 }
 
+/* fw_tick and fw_loop run in turn (sim/contest/run_firmware.c): nothing to hold */
+void hal_tick_hold(void) {}
+void hal_tick_release(void) {}
+
 uint32_t hal_micros(void)
 {
     if (sim) return (uint32_t)(sim->step * (uint64_t)llround(sim->model->cfg->sim.step_s * 1e6));

@@ -40,6 +40,7 @@ static volatile uint32_t ticks;
 static volatile uint8_t running;           /* fw_tick on */
 static volatile uint16_t motor_test_left;  /* ticks of the motor test still to run */
 static volatile uint16_t overruns;
+static volatile uint8_t tick_held, tick_due; /* hal_tick_hold: fw_tick left to the release */
 /* the longest time from a compare to the end of the sensor schedule and
  * to the end of the whole tick, Timer2 counts (16 us; command k) */
 static volatile uint8_t busy_sense_max, busy_tick_max;
@@ -62,7 +63,8 @@ ISR(TIMER2_COMPA_vect)
     ukb_sensors_sample();
     uint8_t t = TCNT2;
     if (t > busy_sense_max) busy_sense_max = t;
-    if (running) fw_tick();
+    if (running && tick_held) tick_due = 1;
+    else if (running) fw_tick();
     else if (motor_test_left && --motor_test_left == 0) hal_motor_set(0, 0);
     static uint8_t blink;
     if (++blink >= HAL_TICK_HZ / 4) { /* heartbeat: the Nano's LED toggles at 4 Hz, a 2 Hz blink */
@@ -74,6 +76,26 @@ ISR(TIMER2_COMPA_vect)
     if (TIFR2 & _BV(OCF2A)) overruns++;
     else if (t > busy_tick_max) busy_tick_max = t;
     TIMSK2 |= _BV(OCIE2A);
+}
+
+/* fw_loop holds the tick: a systick meanwhile runs its sensor pass and
+ * leaves fw_tick due, and the release runs it here, in the main loop, until
+ * none is due (a systick during that one leaves the next due). */
+void hal_tick_hold(void) { tick_held = 1; }
+
+void hal_tick_release(void)
+{
+    for (;;) {
+        cli();
+        if (!tick_due) {
+            tick_held = 0;
+            sei();
+            return;
+        }
+        tick_due = 0;
+        sei();
+        fw_tick();
+    }
 }
 
 uint32_t hal_micros(void)

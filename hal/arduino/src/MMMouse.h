@@ -8,7 +8,8 @@
  * UART keeps receiving at 1 Mbaud) and is the only code that touches the
  * link: it reads the sensors in, runs fw_tick, then sends the motor
  * command and any queued log line. hal_* called from fw_loop only read
- * copies or queue. When the mouse is done (or gives up) the runner sends
+ * copies or queue. While fw_loop holds the tick (hal_tick_hold) the
+ * interrupt leaves it due and hal_tick_release runs it from loop(). When the mouse is done (or gives up) the runner sends
  * RUN stop once, which ends the simulator's run (framed; in compat mode it
  * only stops the robot). */
 #ifndef MM_MOUSE_H

@@ -18,6 +18,7 @@ static char log_line[MM_LOG_TEXT_MAX + 1];
 static volatile uint8_t log_state;       /* 0 free, 1 being filled, 2 waits to be sent */
 static volatile uint16_t log_dropped, overruns;
 static volatile uint8_t busy;
+static volatile uint8_t tick_held, tick_due; /* hal_tick_hold: the tick left to the release */
 static uint8_t stop_sent;                /* RUN stop sent: the contest is over */
 static uint8_t done_ticks;               /* ticks since the mouse finished (26: report queued) */
 static volatile uint16_t worst_tick_half_us; /* longest tick, Timer1 counts (0.5 us at 16 MHz) */
@@ -147,6 +148,10 @@ ISR(TIMER1_COMPA_vect, ISR_NOBLOCK)
         overruns++;
         return;
     }
+    if (tick_held) { /* fw_loop holds it: hal_tick_release runs it */
+        tick_due = 1;
+        return;
+    }
     busy = 1;
     tick();
     uint16_t t = TCNT1; /* counts since this tick's compare match */
@@ -177,6 +182,28 @@ void mm_mouse_begin(Stream &s, uint8_t protocol)
 }
 
 void mm_mouse_loop() { fw_loop(); }
+
+/* fw_loop holds the tick: a tick interrupt meanwhile leaves the tick due,
+ * and the release runs it here, in loop(), until none is due (busy: a tick
+ * interrupt during one counts as an overrun, as in the interrupt) */
+void hal_tick_hold(void) { tick_held = 1; }
+
+void hal_tick_release(void)
+{
+    for (;;) {
+        noInterrupts();
+        if (!tick_due) {
+            tick_held = 0;
+            interrupts();
+            return;
+        }
+        tick_due = 0;
+        busy = 1;
+        interrupts();
+        tick();
+        busy = 0;
+    }
+}
 
 uint16_t mm_mouse_worst_tick_us()
 {
