@@ -633,6 +633,79 @@ static int prun_diag_ok(int n)
 }
 #endif
 
+#ifdef RC_BLIND_MAX_HALVES
+/* The orthogonal straight of n half units from the node (x2, y2) heading
+ * h8 (even): the half units at its end with no known wall on either side,
+ * since the last one with a wall (centring holds nothing there: the robot
+ * drives on the heading odometry kept from the turns before it), and in
+ * *walled the half units with one. Each half unit lies in the cell of the
+ * one of its two nodes that is a cell centre. */
+static int prun_blind_halves(int16_t x2, int16_t y2, uint8_t h8, int n, int *walled)
+{
+    uint8_t d = (uint8_t)(h8 >> 1);
+    int run = 0;
+    *walled = 0;
+    for (int k = 0; k < n; k++) {
+        int16_t nx = (int16_t)(x2 + slalom_step_x[h8]), ny = (int16_t)(y2 + slalom_step_y[h8]);
+        maze_cell_t c = ((x2 | y2) & 1) ? run_cell(nx, ny) : run_cell(x2, y2);
+        int w = maze_wall(&ex.map, c, (uint8_t)((d + 1u) & 3u)) == MAZE_WALL_CLOSED ||
+                maze_wall(&ex.map, c, (uint8_t)((d + 3u) & 3u)) == MAZE_WALL_CLOSED;
+        *walled += w;
+        run = w ? 0 : run + 1;
+        x2 = nx;
+        y2 = ny;
+    }
+    return run;
+}
+
+/* Whether the S90 entered at the node (x2, y2) heading h8 turns in a cell
+ * with a wall ahead (prun_straight: the straight into it aligns on it). */
+static int prun_s90_walled(int16_t x2, int16_t y2, uint8_t h8)
+{
+    if (!((x2 | y2) & 1)) return 0;
+    maze_cell_t c = run_cell((int16_t)(x2 + slalom_step_x[h8]), (int16_t)(y2 + slalom_step_y[h8]));
+    return !maze_passable(&ex.map, c, (uint8_t)(h8 >> 1), 0);
+}
+
+/* Whether a plan takes the robot out of each orthogonal straight that ends
+ * with more than RC_BLIND_MAX_HALVES half units without side walls into at
+ * most RC_BLIND_MAX_TURNS turns entered across that straight's line
+ * before the offset it drifted across that line is measured again: by a
+ * wall ahead of such a turn (an S90's straight aligns on it) or by
+ * centring on a straight along that line (RC_DIAG_ENTRY_HALVES half units
+ * with side walls). Off that straight's line the offset is an error along
+ * the robot's way, which sets where each turn starts. */
+static int prun_blind_ok(int n)
+{
+    int16_t x2 = (int16_t)(2 * maze_x(&ex.map, ex.map.start)), y2 = (int16_t)(2 * maze_y(&ex.map, ex.map.start));
+    uint8_t h8 = (uint8_t)(2u * ex.map.start_heading);
+    int axis = -1, turns = 0; /* the drifted straight's axis (h8 >> 1 & 1), -1: none */
+    for (int i = 0; i < n; i++) {
+        const slalom_move_t *mv = &run_moves[i];
+        uint8_t ax = (uint8_t)((h8 >> 1) & 1u), ortho = !(h8 & 1u);
+        if (mv->kind == SLALOM_ORTHO || mv->kind == SLALOM_DIAG) {
+            int walled = 0, blind = mv->kind == SLALOM_ORTHO ? prun_blind_halves(x2, y2, h8, mv->n, &walled) : 0;
+            if (axis == ax && ortho && walled >= RC_DIAG_ENTRY_HALVES) axis = -1;
+            if (blind > RC_BLIND_MAX_HALVES && i + 1 < n) axis = ax, turns = 0;
+            x2 = (int16_t)(x2 + mv->n * slalom_step_x[h8]);
+            y2 = (int16_t)(y2 + mv->n * slalom_step_y[h8]);
+            continue;
+        }
+        if (axis >= 0 && ortho && ax != axis) {
+            if (mv->kind == SLALOM_S90 && prun_s90_walled(x2, y2, h8)) axis = -1;
+            else if (++turns > RC_BLIND_MAX_TURNS) return 0;
+        }
+        const slalom_geom_t *g = &slalom_geom[mv->kind];
+        int dx, dy;
+        slalom_place(g->exit_x, g->exit_y, g->from_diag, mv->dir, h8, &dx, &dy);
+        x2 = (int16_t)(x2 + dx);
+        y2 = (int16_t)(y2 + dy);
+        h8 = (uint8_t)((h8 + mv->dir * g->turn) & 7u);
+    }
+    return 1;
+}
+#endif
+
 /* This run's turns (each kind at its own speed, RC_SLALOM_*_MM_S) and the
  * planner's costs for them: each turn's legs are driven with the straights
  * beside it (prun_straight), its arc at its speed (prun_turn). */
@@ -672,6 +745,12 @@ static void prun_begin(void)
         c.turn_s[SLALOM_F45] = c.turn_s[SLALOM_F135] = c.turn_s[SLALOM_D45] = c.turn_s[SLALOM_D135] = c.turn_s[SLALOM_V90] = -1;
         n = plan_run(&ex.map, &c, run_moves, PLAN_MAX_MOVES, &t_s);
     }
+#ifdef RC_BLIND_MAX_HALVES
+    if (n > 0 && !prun_blind_ok(n)) {
+        log_line(HAL_STR("run %u: orthogonal (a blind straight, a turn)"), st.runs + 1u, 0);
+        return;
+    }
+#endif
     if (n <= 0) return;
     mo.ff_max_cmd = ff_max; /* until prun_end */
     unsigned diag = 0;

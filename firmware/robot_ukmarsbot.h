@@ -200,6 +200,23 @@
 #define RC_DIAG_ENTRY_HALVES 2           /* half units */
 #define RC_DIAG_MAX_HALVES 12            /* half steps */
 #define RC_DIAG_AFTER_TURN_HALVES 2      /* half steps */
+/* Blind straights (mouse.c prun_blind_ok): after an orthogonal straight
+ * that ends with more than RC_BLIND_MAX_HALVES half units without side
+ * walls, at most RC_BLIND_MAX_TURNS turns entered across its line before
+ * a wall ahead of one (or centring along that line) measures the offset
+ * it drifted; else the run is the orthogonal one. Ours, in
+ * alljapan-019-1998-exp-fin's first speed run (seed 1; mmsim's MM_POSE
+ * against the plan's nodes): after a staircase of 4 S90s odometry's
+ * heading was 0.7-0.9 degrees off the true one, 12 half units (1,080 mm)
+ * without side walls drifted 6 -> 29 mm across, the F90 after them
+ * carried that on as an error along the way (each S90 entered across the
+ * line started 26-33 mm late, none had a wall ahead), and the 7th S90
+ * touched (34 mm of clearance). taiwan2017f has 14 such half units
+ * drifting 4.5 mm (0.2 degrees off) and an S90 with a wall ahead after
+ * them: clean. 8 half units at the 1.2 degrees of the first: 15 mm
+ * (not swept further). */
+#define RC_BLIND_MAX_HALVES 8            /* half units */
+#define RC_BLIND_MAX_TURNS 0             /* turns */
 /* No diagonal reference: the IR sensors' distances are calibrated for a
  * side wall square to the corridor (walls.c); diagref.c models ToF cones. */
 #define RC_DIAG_TOF 0
