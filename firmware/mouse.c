@@ -579,6 +579,23 @@ static maze_cell_t run_cell(int16_t x2, int16_t y2)
     return maze_cell(&ex.map, (uint8_t)(x2 / 2), (uint8_t)(y2 / 2)); /* a cell centre: both even */
 }
 
+/* The node and heading after the move mv from the node (*x2, *y2)
+ * heading *h8 (half units; eighths clockwise from north). */
+static void move_pose(const slalom_move_t *mv, int16_t *x2, int16_t *y2, uint8_t *h8)
+{
+    if (mv->kind == SLALOM_ORTHO || mv->kind == SLALOM_DIAG) {
+        *x2 = (int16_t)(*x2 + mv->n * slalom_step_x[*h8]);
+        *y2 = (int16_t)(*y2 + mv->n * slalom_step_y[*h8]);
+        return;
+    }
+    const slalom_geom_t *g = &slalom_geom[mv->kind];
+    int dx, dy;
+    slalom_place(g->exit_x, g->exit_y, g->from_diag, mv->dir, *h8, &dx, &dy);
+    *x2 = (int16_t)(*x2 + dx);
+    *y2 = (int16_t)(*y2 + dy);
+    *h8 = (uint8_t)((*h8 + mv->dir * g->turn) & 7u);
+}
+
 #ifdef RC_DIAG_AFTER_TURN_HALVES
 /* Whether the diagonals of a plan start where the robot knows where it
  * is, for a robot with room to spare on a diagonal (robot_ukmarsbot.h):
@@ -687,20 +704,11 @@ static int prun_blind_ok(int n)
             int walled = 0, blind = mv->kind == SLALOM_ORTHO ? prun_blind_halves(x2, y2, h8, mv->n, &walled) : 0;
             if (axis == ax && ortho && walled >= RC_DIAG_ENTRY_HALVES) axis = -1;
             if (blind > RC_BLIND_MAX_HALVES && i + 1 < n) axis = ax, turns = 0;
-            x2 = (int16_t)(x2 + mv->n * slalom_step_x[h8]);
-            y2 = (int16_t)(y2 + mv->n * slalom_step_y[h8]);
-            continue;
-        }
-        if (axis >= 0 && ortho && ax != axis) {
+        } else if (axis >= 0 && ortho && ax != axis) {
             if (mv->kind == SLALOM_S90 && prun_s90_walled(x2, y2, h8)) axis = -1;
             else if (++turns > RC_BLIND_MAX_TURNS) return 0;
         }
-        const slalom_geom_t *g = &slalom_geom[mv->kind];
-        int dx, dy;
-        slalom_place(g->exit_x, g->exit_y, g->from_diag, mv->dir, h8, &dx, &dy);
-        x2 = (int16_t)(x2 + dx);
-        y2 = (int16_t)(y2 + dy);
-        h8 = (uint8_t)((h8 + mv->dir * g->turn) & 7u);
+        move_pose(mv, &x2, &y2, &h8);
     }
     return 1;
 }
@@ -857,8 +865,7 @@ static void prun_straight(uint8_t n, const slalom_move_t *next)
     float mm = n * unit + run_carry_mm + before;
     float v = !ortho ? run_v_diag : run_v_max, v_end = next ? run_v_turn[next->kind] : 0;
     if (!ortho && RC_DIAG_TOF) diag_anchor(run_x2, run_y2, run_h8, run_carry_mm);
-    run_x2 = (int16_t)(run_x2 + n * slalom_step_x[run_h8]);
-    run_y2 = (int16_t)(run_y2 + n * slalom_step_y[run_h8]);
+    move_pose(&(slalom_move_t){.kind = ortho ? SLALOM_ORTHO : SLALOM_DIAG, .n = n}, &run_x2, &run_y2, &run_h8);
     start_forward(mm, fmaxf(fmaxf(v, v_end), fabsf(mo.fwd.speed)), v_end, run_accel);
     run_carry_mm = 0;
     run_ortho = ortho;
@@ -880,11 +887,7 @@ static void prun_turn(void)
     const slalom_move_t *mv = &run_moves[run_idx++];
     const slalom_geom_t *g = &slalom_geom[mv->kind];
     const slalom_drive_t *d = &run_drive[mv->kind];
-    int dx, dy;
-    slalom_place(g->exit_x, g->exit_y, g->from_diag, mv->dir, run_h8, &dx, &dy);
-    run_x2 = (int16_t)(run_x2 + dx);
-    run_y2 = (int16_t)(run_y2 + dy);
-    run_h8 = (uint8_t)((run_h8 + mv->dir * g->turn) & 7u);
+    move_pose(mv, &run_x2, &run_y2, &run_h8);
     motion_forward_accel(&mo, d->arc_mm, run_v_turn[mv->kind], run_v_turn[mv->kind], run_accel);
     motion_slalom(&mo, -45.0f * g->turn * mv->dir, d->w_deg_s, RC_SLALOM_ACCEL_DEG_S2); /* right (+1) is clockwise */
     no_centring();
