@@ -135,23 +135,31 @@ $(B)/%: tools/%.c $(B)/libmm.a
 	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(B)/libmm.a $(LIBS) -o $@
 tools: $(addprefix $(B)/,$(TOOLS))
 
-# The half-size build: mmsim whose in-process firmware is built for KERISE
-# v5 in 90 mm cells (firmware/robot_kerise.h, robots/kerise-v5.ini); its own
-# firmware objects come before libmm.a, so the library's are not linked.
-HALF_FW_OBJ := $(patsubst firmware/%.c,$(B)/half/firmware/%.o,$(FW_SRC))
-$(B)/half/firmware/%.o: firmware/%.c | deps $(LCM_STAMP)
-	@mkdir -p $(dir $@)
-	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) -include robot_kerise.h -MMD -MP -c $< -o $@
-$(B)/half/mmsim: tools/mmsim.c $(HALF_FW_OBJ) $(B)/libmm.a
-	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(HALF_FW_OBJ) $(B)/libmm.a $(LIBS) -o $@
-# The UKMARSBOT build: mmsim whose in-process firmware is built for ORION
-# (firmware/robot_ukmarsbot.h, robots/ukmarsbot.ini) with the host's planner
-UKB_FW_OBJ := $(patsubst firmware/%.c,$(B)/ukb/firmware/%.o,$(FW_SRC))
-$(B)/ukb/firmware/%.o: firmware/%.c | deps $(LCM_STAMP)
-	@mkdir -p $(dir $@)
-	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) -include robot_ukmarsbot.h -MMD -MP -c $< -o $@
-$(B)/ukb/mmsim: tools/mmsim.c $(UKB_FW_OBJ) $(B)/libmm.a
-	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(UKB_FW_OBJ) $(B)/libmm.a $(LIBS) -o $@
+# mmsim builds whose in-process firmware is built for another robot than
+# the paper's: the half-size build for KERISE v5 in 90 mm cells
+# (firmware/robot_kerise.h, robots/kerise-v5.ini) and the UKMARSBOT build
+# for ORION with the host's planner (firmware/robot_ukmarsbot.h,
+# robots/ukmarsbot.ini), each plain ($(B)/NAME/mmsim) and sanitized
+# ($(B)/san-tools/NAME/mmsim, for test/cli_halfsize.sh, cli_ukbhost.sh).
+# Their own firmware objects come before the library, so the library's
+# are not linked. ROBOT_MMSIM: $(1) the build's name, $(2) its header.
+define ROBOT_MMSIM
+$(1)_FW_OBJ := $$(patsubst firmware/%.c,$$(B)/$(1)/firmware/%.o,$$(FW_SRC))
+$$(B)/$(1)/firmware/%.o: firmware/%.c | deps $$(LCM_STAMP)
+	@mkdir -p $$(dir $$@)
+	$$(CC) $$(STD) $$(WARN) $$(INC) $$(CFLAGS) -include $(2) -MMD -MP -c $$< -o $$@
+$$(B)/$(1)/mmsim: tools/mmsim.c $$($(1)_FW_OBJ) $$(B)/libmm.a
+	$$(CC) $$(STD) $$(WARN) $$(INC) $$(CFLAGS) $$< $$($(1)_FW_OBJ) $$(B)/libmm.a $$(LIBS) -o $$@
+$(1)_SAN_OBJ := $$(patsubst firmware/%.c,$$(B)/san/$(1)/firmware/%.o,$$(FW_SRC))
+$$(B)/san/$(1)/firmware/%.o: firmware/%.c | deps $$(LCM_STAMP)
+	@mkdir -p $$(dir $$@)
+	$$(CC) $$(STD) $$(WARN) $$(INC) -O1 -g $$(SAN) -include $(2) -MMD -MP -c $$< -o $$@
+$$(B)/san-tools/$(1)/mmsim: tools/mmsim.c $$($(1)_SAN_OBJ) $$(B)/libmm_san.a
+	@mkdir -p $$(dir $$@)
+	$$(CC) $$(STD) $$(WARN) $$(INC) -O1 -g $$(SAN) $$< $$($(1)_SAN_OBJ) $$(B)/libmm_san.a $$(LIBS) -o $$@
+endef
+$(eval $(call ROBOT_MMSIM,half,robot_kerise.h))
+$(eval $(call ROBOT_MMSIM,ukb,robot_ukmarsbot.h))
 
 # The source tree's absolute path, where a program built here finds boards/,
 # robots/ and contests/ from any working directory (sim/io/datadir.h).
@@ -190,31 +198,15 @@ $(B)/test/test_flood_ref16: $(FLOOD16_SRC) $(wildcard firmware/*.h) sim/maze/maz
 $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
-# the half-size build ($(B)/half/mmsim) sanitized, for test/cli_halfsize.sh
-HALF_SAN_OBJ := $(patsubst firmware/%.c,$(B)/san/half/firmware/%.o,$(FW_SRC))
-$(B)/san/half/firmware/%.o: firmware/%.c | deps $(LCM_STAMP)
-	@mkdir -p $(dir $@)
-	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) -include robot_kerise.h -MMD -MP -c $< -o $@
-$(B)/san-tools/half/mmsim: tools/mmsim.c $(HALF_SAN_OBJ) $(B)/libmm_san.a
-	@mkdir -p $(dir $@)
-	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(HALF_SAN_OBJ) $(B)/libmm_san.a $(LIBS) -o $@
-# the UKMARSBOT build ($(B)/ukb/mmsim) sanitized, for test/cli_ukbhost.sh
-UKB_SAN_OBJ := $(patsubst firmware/%.c,$(B)/san/ukb/firmware/%.o,$(FW_SRC))
-$(B)/san/ukb/firmware/%.o: firmware/%.c | deps $(LCM_STAMP)
-	@mkdir -p $(dir $@)
-	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) -include robot_ukmarsbot.h -MMD -MP -c $< -o $@
-$(B)/san-tools/ukb/mmsim: tools/mmsim.c $(UKB_SAN_OBJ) $(B)/libmm_san.a
-	@mkdir -p $(dir $@)
-	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(UKB_SAN_OBJ) $(B)/libmm_san.a $(LIBS) -o $@
 
 # test_slalom for UKMARSBOT's turns (firmware/robot_ukmarsbot.h's host
 # figures): its firmware objects, and robots/ukmarsbot.ini's body (65 x 100
 # mm, 64 mm of it ahead of the axle, taken on both sides; 10 mm wheels on a
 # 77.4 mm track, out to 43.7 mm, 34 mm across)
 UKB_BODY := -DBODY_X_MM=32.5 -DBODY_Y_MM=64.0 -DWHEEL_X_MM=43.7 -DWHEEL_Y_MM=17.0 -DDIAG_CLEAR_MM=3.0
-$(B)/test/test_slalom_ukb: test/test_slalom.c $(UKB_SAN_OBJ) $(B)/libmm_san.a
+$(B)/test/test_slalom_ukb: test/test_slalom.c $(ukb_SAN_OBJ) $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
-	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) -include robot_ukmarsbot.h $(UKB_BODY) $< $(UKB_SAN_OBJ) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) -include robot_ukmarsbot.h $(UKB_BODY) $< $(ukb_SAN_OBJ) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
 TESTS += $(B)/test/test_slalom_ukb
 
 # XTEST input for test/cli_connect.sh (libxtst-dev)
