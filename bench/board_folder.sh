@@ -20,6 +20,7 @@ else
   make --no-print-directory firmware-ukmarsbot || exit 3
   BOARD=ukmarsbot ELF=$B/ukmarsbot/mouse.elf ROBOT=robots/ukmarsbot.ini HAND=lfs
 fi
+make --no-print-directory B="$B" "$B/mmsim" "$B/mmmaze" >/dev/null || exit 3 # the runner, the grader's solver
 sample=$(mktemp -d); trap 'rm -rf "$sample"' EXIT
 ls "$DIR"/*.txt | sort | awk -v n="$EVERY" '(NR - 1) % n == 0' | while read -r f; do ln -s "$(realpath "$f")" "$sample/"; done
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(date -u '+%Y-%m-%d %H:%M UTC'); every ${EVERY}th maze: $(ls "$sample" | wc -l)"
