@@ -103,8 +103,8 @@ float diagref_expect(const maze_t *m, float x_mm, float y_mm, float ang_rad, flo
     ray_hit_t h[RC_TOF_RAYS];
     int best = -1;
     for (int i = 0; i < RC_TOF_RAYS; i++) {
-        /* one ray: along the axis */
-        float a = RC_TOF_RAYS > 1 ? ang_rad + fov * ((float)i / (RC_TOF_RAYS > 1 ? RC_TOF_RAYS - 1 : 1) - 0.5f) : ang_rad;
+        float a = ang_rad; /* rays evenly over the cone; one ray on its axis */
+        if (RC_TOF_RAYS > 1) a += fov * ((float)i / (float)(RC_TOF_RAYS - 1) - 0.5f);
         float o[2] = {x_mm, y_mm}, d[2] = {cosf(a), sinf(a)};
         ray_cast(m, o, d, max_mm, &h[i]);
         if (h[i].face >= 0 && (best < 0 || h[i].t_mm < h[best].t_mm)) best = i;
