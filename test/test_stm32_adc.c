@@ -229,7 +229,7 @@ static void test_unmodeled(void **state)
     uint32_t v;
     assert_int_equal(stm32_adc_ops.write(&adc, CR1, 4, JAUTO), MMIO_UNMODELED);
     assert_int_equal(stm32_adc_ops.read(&adc, 0x50, 4, &v), MMIO_UNMODELED);
-    assert_int_equal(stm32_adc_ops.read(&adc, SR, 1, &v), MMIO_UNMODELED);
+    assert_int_equal(stm32_adc_ops.read(&adc, SR + 1, 2, &v), MMIO_UNMODELED); /* misaligned */
 }
 
 int main(void)

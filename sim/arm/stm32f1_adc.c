@@ -18,7 +18,7 @@
  * (AWDEN, JAWDEN, AWDSGL, AWDCH, HTR, LTR, AWDIE), EOC/JEOC/AWD interrupts,
  * the regular DMA request, channels 16/17 with TSVREFE.
  * Not modeled (a write that sets them answers MMIO_UNMODELED, the bits then
- * act as 0): DUALMOD, DISCEN/JDISCEN, JAUTO; byte accesses. Stated limits:
+ * act as 0): DUALMOD, DISCEN/JDISCEN, JAUTO. Stated limits:
  * an ideal converter (code = round(V * 4096 / VREF+), no offset, gain or
  * linearity error: DS5319 Table 47 gives ET +-2 LSB max); no tSTAB wait
  * after power-on; the extra 1/fPCLK2 of an external trigger's latency; the
@@ -343,13 +343,13 @@ static mmio_status_t adc_read(void *self, uint32_t off, unsigned size, uint32_t 
 {
     stm32_adc_t *a = self;
     uint32_t v;
-    if (size == 1 || (off & (size - 1)) || !peek(a, off & ~3u, &v)) return MMIO_UNMODELED;
+    if (!stm32_access_ok(off, size) || !peek(a, off & ~3u, &v)) return MMIO_UNMODELED;
     if ((off & ~3u) == DR) { /* reading DR clears EOC (RM0008 11.12.1) */
         a->sr &= ~SR_EOC;
         set_dma(a, false);
         update_irq(a);
     }
-    *value = (v >> (8 * (off & 2u))) & (size == 4 ? 0xFFFFFFFFu : 0xFFFFu);
+    *value = stm32_read_lanes(v, off, size);
     return MMIO_OK;
 }
 
@@ -385,12 +385,8 @@ static mmio_status_t adc_write(void *self, uint32_t off, unsigned size, uint32_t
 {
     stm32_adc_t *a = self;
     uint32_t old;
-    if (size == 1 || (off & (size - 1)) || !peek(a, off & ~3u, &old)) return MMIO_UNMODELED;
-    if (size == 2) { /* a half-word keeps the other half's stored bits */
-        unsigned sh = 8 * (off & 2u);
-        value = (old & ~(0xFFFFu << sh)) | ((value & 0xFFFFu) << sh);
-    }
-    return write_word(a, off & ~3u, value);
+    if (!stm32_access_ok(off, size) || !peek(a, off & ~3u, &old)) return MMIO_UNMODELED;
+    return write_word(a, off & ~3u, stm32_write_lanes(value, size));
 }
 
 static void adc_reset(void *self)

@@ -14,9 +14,10 @@
  * Stated limit: a transfer takes no time (the bus cycles of RM0008 13.3.1
  * are not counted); requests are served at the cycle the controller is next
  * advanced to, which the board does right after the peripheral that raised
- * them (next_event() returns that cycle while a request waits). Byte
- * accesses to the registers answer MMIO_UNMODELED. */
+ * them (next_event() returns that cycle while a request waits). */
 #include "arm/stm32f1_dma.h"
+
+#include "arm/stm32f1_clk.h"
 
 enum { ISR = 0x00, IFCR = 0x04, CH0 = 0x08, CH_STRIDE = 20, CH_END = 0x08 + 7 * 20 };
 #define CCR_EN      (1u << 0)
@@ -163,8 +164,8 @@ static bool peek(const stm32_dma_t *d, uint32_t off, uint32_t *v)
 static mmio_status_t dma_read(void *self, uint32_t off, unsigned size, uint32_t *value)
 {
     uint32_t v;
-    if (size == 1 || (off & (size - 1)) || !peek(self, off & ~3u, &v)) return MMIO_UNMODELED;
-    *value = (v >> (8 * (off & 2u))) & (size == 4 ? 0xFFFFFFFFu : 0xFFFFu);
+    if (!stm32_access_ok(off, size) || !peek(self, off & ~3u, &v)) return MMIO_UNMODELED;
+    *value = stm32_read_lanes(v, off, size);
     return MMIO_OK;
 }
 
@@ -201,13 +202,8 @@ static mmio_status_t dma_write(void *self, uint32_t off, unsigned size, uint32_t
 {
     stm32_dma_t *d = self;
     uint32_t old;
-    if (size == 1 || (off & (size - 1)) || !peek(d, off & ~3u, &old)) return MMIO_UNMODELED;
-    if (size == 2) {
-        unsigned sh = 8 * (off & 2u);
-        if ((off & ~3u) == IFCR) old = 0;
-        value = (old & ~(0xFFFFu << sh)) | ((value & 0xFFFFu) << sh);
-    }
-    write_word(d, off & ~3u, value);
+    if (!stm32_access_ok(off, size) || !peek(d, off & ~3u, &old)) return MMIO_UNMODELED;
+    write_word(d, off & ~3u, stm32_write_lanes(value, size));
     return MMIO_OK;
 }
 

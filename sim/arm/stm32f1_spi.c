@@ -13,7 +13,7 @@
  * SR read then a CR1 write. Not modeled (a write that sets them answers
  * MMIO_UNMODELED): slave mode (SPE without MSTR), bidirectional and
  * receive-only modes, CRC, I2S (I2SCFGR, I2SPR), the NSS pin as an input
- * (SSM 0 with SSOE 0 reads it as high); byte accesses. CPOL/CPHA select
+ * (SSM 0 with SSOE 0 reads it as high). CPOL/CPHA select
  * the clock's edges only, which the byte exchange does not see. */
 #include "arm/stm32f1_spi.h"
 
@@ -128,7 +128,7 @@ static mmio_status_t spi_read(void *self, uint32_t off, unsigned size, uint32_t 
 {
     stm32_spi_t *s = self;
     uint32_t v;
-    if (size == 1 || (off & (size - 1))) return MMIO_UNMODELED;
+    if (!stm32_access_ok(off, size)) return MMIO_UNMODELED;
     switch (off & ~3u) {
     case CR1: v = s->cr1; break;
     case CR2: v = s->cr2; break;
@@ -148,7 +148,7 @@ static mmio_status_t spi_read(void *self, uint32_t off, unsigned size, uint32_t 
     case CRCPR: v = s->crcpr; break;
     default: return MMIO_UNMODELED; /* RXCRCR, TXCRCR, I2SCFGR, I2SPR */
     }
-    *value = (v >> (8 * (off & 2u))) & (size == 4 ? 0xFFFFFFFFu : 0xFFFFu);
+    *value = stm32_read_lanes(v, off, size);
     return MMIO_OK;
 }
 
@@ -170,10 +170,9 @@ static mmio_status_t spi_write(void *self, uint32_t off, unsigned size, uint32_t
 {
     stm32_spi_t *s = self;
     mmio_status_t st = MMIO_OK;
-    if (size == 1 || (off & (size - 1))) return MMIO_UNMODELED;
-    if (off & 2u) return (off & ~3u) <= TXCRCR ? MMIO_OK : MMIO_UNMODELED; /* reserved upper halves */
-    value &= 0xFFFFu;
-    switch (off) {
+    if (!stm32_access_ok(off, size)) return MMIO_UNMODELED;
+    value = stm32_write_lanes(value, size) & 0xFFFFu; /* upper halves reserved */
+    switch (off & ~3u) {
     case CR1: st = write_cr1(s, value); break;
     case CR2: s->cr2 = value & 0xE7u; break;
     case SR: /* rc_w0 applies to CRCERR only (not modeled); the rest is read-only */ break;

@@ -15,7 +15,7 @@
  * DR write clears TC (27.6.1); RXNE and TC also clear by writing 0.
  * Not modeled (a write that sets them answers MMIO_UNMODELED): parity (PCE),
  * wake-up (RWU, WAKE), break (SBK), LIN, synchronous clock (CLKEN),
- * IrDA, smartcard, half-duplex, hardware flow control; byte accesses. */
+ * IrDA, smartcard, half-duplex, hardware flow control. */
 #include "arm/stm32f1_usart.h"
 
 #include "arm/stm32f1_clk.h"
@@ -169,7 +169,7 @@ static mmio_status_t usart_read(void *self, uint32_t off, unsigned size, uint32_
 {
     stm32_usart_t *u = self;
     uint32_t v;
-    if (size == 1 || (off & (size - 1))) return MMIO_UNMODELED;
+    if (!stm32_access_ok(off, size)) return MMIO_UNMODELED;
     switch (off & ~3u) {
     case SR: v = u->sr; u->sr_seen = u->sr; break;
     case DR:
@@ -185,7 +185,7 @@ static mmio_status_t usart_read(void *self, uint32_t off, unsigned size, uint32_
     case GTPR: v = u->gtpr; break;
     default: return MMIO_UNMODELED;
     }
-    *value = (v >> (8 * (off & 2u))) & (size == 4 ? 0xFFFFFFFFu : 0xFFFFu);
+    *value = stm32_read_lanes(v, off, size);
     return MMIO_OK;
 }
 
@@ -246,9 +246,8 @@ static mmio_status_t write_word(stm32_usart_t *u, uint32_t off, uint32_t v)
 static mmio_status_t usart_write(void *self, uint32_t off, unsigned size, uint32_t value)
 {
     stm32_usart_t *u = self;
-    if (size == 1 || (off & (size - 1)) || (off & ~3u) > GTPR) return MMIO_UNMODELED;
-    if (off & 2u) return MMIO_OK; /* the upper half-word of every USART register is reserved */
-    return write_word(u, off, value & (size == 4 ? 0xFFFFFFFFu : 0xFFFFu));
+    if (!stm32_access_ok(off, size) || (off & ~3u) > GTPR) return MMIO_UNMODELED;
+    return write_word(u, off & ~3u, stm32_write_lanes(value, size) & 0xFFFFu); /* upper halves reserved */
 }
 
 static void usart_reset(void *self)
