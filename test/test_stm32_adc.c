@@ -223,6 +223,24 @@ static void test_injection_interrupts_regular(void **state)
     assert_int_equal(rd(DR, 10000), 248); /* 0.2 V: the regular group's last rank */
 }
 
+/* The same conversions whatever the advance steps (arm/mmio.h): cycle by cycle or at once. */
+static void test_chunking(void **state)
+{
+    uint64_t at[2][16];
+    uint32_t jdr[2][4];
+    for (int run = 0; run < 2; run++) {
+        setup_injected();
+        wr(CR2, ADON | JEXTTRIG | JEXTSEL_SW | JSWSTART, 1000);
+        if (run == 0)
+            for (uint64_t t = 1000; t <= 3000; t++) stm32_adc_ops.advance(&adc, t);
+        else
+            stm32_adc_ops.advance(&adc, 3000);
+        for (int k = 0; k < 4; k++) { at[run][k] = call_at[k]; jdr[run][k] = rd(JDR1 + 4 * k, 3000); }
+    }
+    assert_memory_equal(at[0], at[1], 4 * sizeof at[0][0]);
+    assert_memory_equal(jdr[0], jdr[1], sizeof jdr[0]);
+}
+
 static void test_unmodeled(void **state)
 {
     setup_adc();
@@ -243,6 +261,7 @@ int main(void)
         cmocka_unit_test(test_regular_by_adon),
         cmocka_unit_test(test_dma_request_and_internal_channels),
         cmocka_unit_test(test_injection_interrupts_regular),
+        cmocka_unit_test(test_chunking),
         cmocka_unit_test(test_unmodeled),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
