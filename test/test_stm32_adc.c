@@ -223,6 +223,20 @@ static void test_injection_interrupts_regular(void **state)
     assert_int_equal(rd(DR, 10000), 248); /* 0.2 V: the regular group's last rank */
 }
 
+/* A timer's trigger event starts the injected group JEXTSEL selects (RM0008 11.7). */
+static void test_external_trigger(void **state)
+{
+    setup_injected();
+    wr(CR2, ADON | JEXTTRIG | (STM32_ADC_JEXT_TIM1_TRGO << 12), 20);
+    stm32_adc_ext_trigger(&adc, true, STM32_ADC_JEXT_TIM2_TRGO, 1000); /* not the one selected */
+    stm32_adc_ext_trigger(&adc, false, STM32_ADC_EXT_TIM1_CC1, 1000);  /* regular: EXTTRIG off */
+    assert_int_equal(stm32_adc_ops.next_event(&adc), MMIO_NEVER);
+    stm32_adc_ext_trigger(&adc, true, STM32_ADC_JEXT_TIM1_TRGO, 1000);
+    assert_int_equal(stm32_adc_ops.next_event(&adc), 1000 + 24);
+    assert_true(rd(SR, 1000 + 24 + 4 * 208) & S_JEOC);
+    assert_int_equal(calls, 4);
+}
+
 /* The same conversions whatever the advance steps (arm/mmio.h): cycle by cycle or at once. */
 static void test_chunking(void **state)
 {
@@ -261,6 +275,7 @@ int main(void)
         cmocka_unit_test(test_regular_by_adon),
         cmocka_unit_test(test_dma_request_and_internal_channels),
         cmocka_unit_test(test_injection_interrupts_regular),
+        cmocka_unit_test(test_external_trigger),
         cmocka_unit_test(test_chunking),
         cmocka_unit_test(test_unmodeled),
     };

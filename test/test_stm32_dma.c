@@ -173,6 +173,41 @@ static void test_usart_tx_by_dma(void **state)
     assert_false(irq[STM32_DMA1_IRQ(2)]);
 }
 
+/* bulebule's serial_receive and usart3_isr: DMA1 channel 3 moves each
+ * received byte to SRAM; the idle line after the command raises IDLE. */
+static void test_usart_rx_by_dma_and_idle(void **state)
+{
+    setup_bus();
+    const uint32_t U = STM32_USART3_BASE;
+    wr(U + 0x08, 39);
+    wr(U + 0x0C, (1u << 13) | (1u << 4) | (1u << 3) | (1u << 2)); /* UE, IDLEIE, TE, RE */
+    wr(CH(3, CPAR), U + 0x04);
+    wr(CH(3, CMAR), RAM + 0x200);
+    wr(CH(3, CNDTR), 64);
+    wr(CH(3, CCR), MINC | TCIE | PL(2) | EN); /* peripheral to memory, 8-bit */
+    wr(U + 0x14, 1u << 6);                    /* DMAR */
+    run_to(1000);
+    for (const char *c = "run"; ; c++) {
+        assert_true(stm32_usart_push(&usart, (uint8_t)*c, now));
+        if (!*c) break;
+    }
+    run_to(1000 + 4 * 780 - 1);
+    assert_int_equal(rd(CH(3, CNDTR)), 61);
+    run_to(1000 + 4 * 780);
+    assert_int_equal(rd(CH(3, CNDTR)), 60);
+    assert_memory_equal(ram + 0x200, "run", 4);
+    assert_false(usart.sr & (1u << 5)); /* the DMA read DR: RXNE clear */
+    run_to(1000 + 5 * 780 - 1);
+    assert_false(irq[STM32_USART_IRQ(3)]);
+    run_to(1000 + 5 * 780);
+    assert_true(usart.sr & (1u << 4)); /* IDLE one frame after the last byte */
+    assert_true(irq[STM32_USART_IRQ(3)]);
+    rd(U);        /* usart_clear_idle_line_detected: SR, then DR */
+    rd(U + 0x04);
+    assert_false(usart.sr & (1u << 4));
+    assert_false(irq[STM32_USART_IRQ(3)]);
+}
+
 /* ADC1 scans two channels continuously; DMA1 channel 1 circular, 16-bit, 2 items. */
 static unsigned conv;
 static double ramp(void *ctx, unsigned ch, uint64_t cycle) { return 0.1 * ++conv; }
@@ -262,6 +297,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_usart_tx_by_dma),
+        cmocka_unit_test(test_usart_rx_by_dma_and_idle),
         cmocka_unit_test(test_circular_adc_dma),
         cmocka_unit_test(test_transfer_error),
         cmocka_unit_test(test_priority),
