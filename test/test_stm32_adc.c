@@ -255,6 +255,21 @@ static void test_chunking(void **state)
     assert_memory_equal(jdr[0], jdr[1], sizeof jdr[0]);
 }
 
+/* The analog watchdog on one injected channel: AWD when the code leaves [LTR, HTR]. */
+static void test_analog_watchdog(void **state)
+{
+    setup_injected();
+    wr(0x24, 3000, 20); /* HTR */
+    wr(0x28, 100, 20);  /* LTR */
+    wr(CR1, SCAN | (1u << 22) | (1u << 9) | (1u << 6) | 3u, 20); /* JAWDEN, AWDSGL, AWDIE, channel 3 */
+    wr(CR2, ADON | JEXTTRIG | JEXTSEL_SW | JSWSTART, 1000);
+    assert_false(rd(SR, 3000) & 1u); /* channel 3: 2482, inside */
+    volts_of[3] = 3.0;               /* 3724 > HTR */
+    wr(CR2, ADON | JEXTTRIG | JEXTSEL_SW | JSWSTART, 3000);
+    assert_true(rd(SR, 5000) & 1u);
+    assert_true(irq_level);
+}
+
 static void test_unmodeled(void **state)
 {
     setup_adc();
@@ -277,6 +292,7 @@ int main(void)
         cmocka_unit_test(test_injection_interrupts_regular),
         cmocka_unit_test(test_external_trigger),
         cmocka_unit_test(test_chunking),
+        cmocka_unit_test(test_analog_watchdog),
         cmocka_unit_test(test_unmodeled),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

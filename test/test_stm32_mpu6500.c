@@ -65,6 +65,11 @@ static void test_reset_values(void **state)
     wreg(&m, 107, 0x80, 0); /* DEVICE_RESET */
     assert_int_equal(rreg(&m, 27, 0), 0x00);
     assert_int_equal(rreg(&m, 107, 0), 0x01);
+    assert_int_equal(m.unmodeled_count, 0);
+    wreg(&m, 0x23, 0x78, 0); /* FIFO_EN: not modeled, counted */
+    assert_true(mpu6500_unmodeled(&m, 0x23));
+    assert_false(mpu6500_unmodeled(&m, 107));
+    assert_int_equal(m.unmodeled_count, 1);
 }
 
 static void stats(mpu6500_t *m, unsigned n, uint64_t t0, double *mean, double *sd)

@@ -124,6 +124,29 @@ static void test_interrupt(void **state)
     assert_false(irq_level);
 }
 
+/* TXDMAEN/RXDMAEN: SPI2's requests on DMA1 channels 5 (TX) and 4 (RX) (RM0008 Table 78). */
+static bool req[8];
+static void dma_req(void *ctx, unsigned ch, bool level) { req[ch] = level; }
+
+static void test_dma_requests(void **state)
+{
+    setup_spi();
+    stm32_spi_init(&spi, 2, &clk, (mmio_irq_t){ irq_set, NULL }, (mmio_dma_req_t){ dma_req, NULL },
+                   (stm32_spi_slave_t){ NULL, NULL });
+    wr(CR1, MSTR | SSM | SSI | SPE, 0);
+    wr(CR2, 3u, 0); /* RXDMAEN, TXDMAEN */
+    assert_true(req[5]);
+    assert_false(req[4]);
+    wr(DR, 0xA5, 0);
+    wr(DR, 0x5A, 0);
+    assert_false(req[5]); /* TX buffer full */
+    stm32_spi_ops.advance(&spi, 32);
+    assert_true(req[5]);
+    assert_true(req[4]);
+    rd(DR, 32);
+    assert_false(req[4]);
+}
+
 static void test_mode_fault_and_unmodeled(void **state)
 {
     setup_spi();
@@ -146,6 +169,7 @@ int main(void)
         cmocka_unit_test(test_who_am_i),
         cmocka_unit_test(test_low_speed_and_back_to_back),
         cmocka_unit_test(test_interrupt),
+        cmocka_unit_test(test_dma_requests),
         cmocka_unit_test(test_mode_fault_and_unmodeled),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -133,6 +133,27 @@ static void latch_data(mpu6500_t *m)
     put16(m, GYRO_XOUT_H + 4, floor(m->z_dps * lsb + 0.5) + user_offset_lsb(m, ZG_OFFS_H));
 }
 
+/* The registers the model implements: the gyro offsets, SMPLRT_DIV, CONFIG,
+ * GYRO_CONFIG, ACCEL_CONFIG(2), the sensor data, SIGNAL_PATH_RESET,
+ * USER_CTRL, PWR_MGMT_1/2, WHO_AM_I, the accelerometer offsets. */
+static bool modeled(unsigned reg)
+{
+    return (reg >= 0x13 && reg <= 0x1D) || (reg >= 0x3B && reg <= 0x48) || reg == SIGNAL_PATH_RESET
+        || (reg >= USER_CTRL && reg <= PWR_MGMT_2) || reg == WHO_AM_I || (reg >= 0x77 && reg <= 0x7E);
+}
+
+static void note_access(mpu6500_t *m, unsigned reg)
+{
+    if (modeled(reg)) return;
+    m->unmodeled_count++;
+    m->unmodeled_map[reg / 8] |= (uint8_t)(1u << (reg % 8));
+}
+
+bool mpu6500_unmodeled(const mpu6500_t *m, unsigned reg)
+{
+    return reg < 128 && (m->unmodeled_map[reg / 8] >> (reg % 8)) & 1u;
+}
+
 static bool read_only(unsigned reg) { return reg == WHO_AM_I || (reg >= 0x3A && reg <= 0x60); }
 
 static void write_reg(mpu6500_t *m, unsigned reg, uint8_t v)
@@ -164,6 +185,7 @@ uint8_t mpu6500_exchange(void *dev, uint8_t mosi, uint64_t cycle)
         return 0x00u;
     }
     uint8_t out = 0x00u;
+    note_access(m, m->addr);
     if (m->reading) out = m->reg[m->addr];
     else write_reg(m, m->addr, mosi);
     m->addr = (m->addr + 1) & 0x7Fu; /* burst: the address increments (PS 7.5) */

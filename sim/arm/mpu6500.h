@@ -34,6 +34,10 @@ typedef struct {
     double t_s;                 /* seconds at last_cycle */
     int64_t sample;             /* index of the held sample, -1: none */
     double z_dps;               /* the held sample's rate, deg/s, before the user offset */
+    /* accesses to registers the model does not implement (FIFO, I2C master,
+     * interrupts, self-test, wake-on-motion ...): counted, for the board's report */
+    unsigned long unmodeled_count;
+    uint8_t unmodeled_map[16];  /* bit r: register r was accessed */
 } mpu6500_t;
 
 void mpu6500_init(mpu6500_t *m, const mmio_clocks_t *clk, mpu6500_rate_fn rate, void *rate_ctx,
@@ -45,6 +49,8 @@ void mpu6500_reset(mpu6500_t *m);
 void mpu6500_select(mpu6500_t *m, bool ncs_level);
 /* stm32_spi_slave_t.exchange */
 uint8_t mpu6500_exchange(void *dev, uint8_t mosi, uint64_t cycle);
+/* Whether register reg (0..127) was accessed though the model does not implement it. */
+bool mpu6500_unmodeled(const mpu6500_t *m, unsigned reg);
 /* The white noise's standard deviation per sample at the configured filter, deg/s. */
 double mpu6500_sigma_dps(const mpu6500_t *m);
 /* Sensitivity at the configured full scale, LSB per deg/s. */
