@@ -1,11 +1,12 @@
 /* mpu6500.c - InvenSense MPU-6500 on SPI. Sources: MPU-6500 Product
- * Specification PS-MPU-6500A-01 rev 1.1 ("PS"): Table 1 gyroscope
- * specifications (sensitivity 131/65.5/32.8/16.4 LSB/(deg/s) at FS_SEL
+ * Specification PS-MPU-6500A-01 rev 1.1, 03/05/2014 ("PS"): section 3.1,
+ * Table 1, gyroscope specifications (sensitivity 131/65.5/32.8/16.4 LSB/(deg/s) at FS_SEL
  * 0..3, initial ZRO tolerance +-5 deg/s, rate noise spectral density 0.01
  * deg/s/sqrt(Hz), total RMS noise 0.1 deg/s at DLPFCFG 2 (92 Hz), which
- * 0.01 x sqrt(92) = 0.096 matches), Table 2 accelerometer (16384 LSB/g at
- * +-2 g, halving per AFS_SEL), Table 3 temperature sensor (333.87 LSB/degC,
- * 0 LSB at 21 degC), section 7.5 SPI interface (first byte: R/W bit 7 and
+ * 0.01 x sqrt(92) = 0.096 matches), 3.2 Table 2 accelerometer (16384 LSB/g
+ * at +-2 g, halving per AFS_SEL), 3.3 Table 3 temperature sensor (333.87
+ * LSB/degC, 0 LSB at 21 degC), 4.7 (0 g on X and Y, +1 g on Z when flat),
+ * section 7.5 SPI interface (first byte: R/W bit 7 and
  * the address; data bytes follow, the address incrementing); Register Map
  * RM-MPU-6500A-00 rev 2.1 ("RM"): section 3 reset values (0x00 except
  * PWR_MGMT_1 0x01 and WHO_AM_I 0x70), registers 19-24 the gyro offsets

@@ -3,11 +3,11 @@
  * continuous and scan modes, injected channel management 11.3.9, data
  * alignment 11.5, sample time and conversion time 11.6, external triggers
  * 11.7, DMA 11.8, temperature sensor 11.10; registers 11.12). Timing and
- * analog figures from the STM32F103x8/B datasheet (DS5319 rev 17): Table 46
+ * analog figures from the STM32F103x8/B datasheet (DS5319), its tables
  * "ADC characteristics" (tCAL 83 1/fADC, tlat 3 and tlatr 2 1/fADC, tCONV =
- * Ts + 12.5 1/fADC), Table 50 "TS characteristics" (V25 1.43 V, Avg_Slope
- * 4.3 mV/degC) and Table 12 "Embedded internal reference voltage" (VREFINT
- * 1.20 V), each the typical value.
+ * Ts + 12.5 1/fADC; the same figures in the STM32F102 datasheet's), "TS
+ * characteristics" (V25 1.43 V, Avg_Slope 4.3 mV/degC) and "Embedded
+ * internal reference voltage" (VREFINT 1.20 V), each the typical value.
  *
  * Modeled: power on/off (ADON), calibration and its reset (CAL, RSTCAL clear
  * after their time), regular group (SQR1-3: SCAN, CONT, software start by a
@@ -20,7 +20,7 @@
  * Not modeled (a write that sets them answers MMIO_UNMODELED, the bits then
  * act as 0): DUALMOD, DISCEN/JDISCEN, JAUTO. Stated limits:
  * an ideal converter (code = round(V * 4096 / VREF+), no offset, gain or
- * linearity error: DS5319 Table 47 gives ET +-2 LSB max); no tSTAB wait
+ * linearity error: DS5319's "ADC accuracy" table gives ET +-2 LSB max); no tSTAB wait
  * after power-on; the extra 1/fPCLK2 of an external trigger's latency; the
  * ADC clock's phase against HCLK (times round up to a core cycle). */
 #include "arm/stm32f1_adc.h"
@@ -74,7 +74,7 @@ enum { SR = 0x00, CR1 = 0x04, CR2 = 0x08, SMPR1 = 0x0C, SMPR2 = 0x10, JOFR1 = 0x
 #define GROUP_REG  1
 #define GROUP_INJ  2
 
-/* DS5319 Table 46 (typical, in ADC clock cycles) */
+/* DS5319 "ADC characteristics" (typical, in ADC clock cycles) */
 #define TCAL_ADC        83u /* tCAL, calibration time */
 #define TRSTCAL_ADC     1u  /* ours: the datasheet gives no time for RSTCAL; one ADC clock */
 #define TLAT_INJ_ADC    3u  /* tlat, injection trigger conversion latency */
@@ -82,10 +82,10 @@ enum { SR = 0x00, CR1 = 0x04, CR2 = 0x08, SMPR1 = 0x0C, SMPR2 = 0x10, JOFR1 = 0x
 #define TCONV_HALF      25u /* 12.5 cycles of successive approximation (RM0008 11.6), x2 */
 /* RM0008 11.12.4/5 SMPx: 1.5, 7.5, 13.5, 28.5, 41.5, 55.5, 71.5, 239.5 cycles, x2 */
 static const uint16_t smp_half[8] = { 3, 15, 27, 57, 83, 111, 143, 479 };
-/* DS5319 Table 50 and Table 12 (typical) */
+/* DS5319 "TS characteristics" and "Embedded internal reference voltage" (typical) */
 #define TS_V25_V        1.43   /* V25, sensor voltage at 25 degC */
 #define TS_SLOPE_V_C    0.0043 /* Avg_Slope; the voltage falls as the die warms (RM0008 11.10) */
-#define VREFINT_V       1.20
+#define VREFINT_V       1.20   /* VREFINT */
 
 static uint64_t adc_cycles(const stm32_adc_t *a, uint64_t half_ticks)
 {

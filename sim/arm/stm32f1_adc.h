@@ -1,5 +1,5 @@
 /* stm32f1_adc.h - the STM32F1's ADC1/ADC2 at register level (RM0008 rev 21,
- * section 11; timing figures from the STM32F103x8/B datasheet DS5319).
+ * section 11; timing figures from the STM32F103x8/B datasheet, DS5319).
  * The board gives each ADC the voltage of a channel at the instant the
  * sample-and-hold opens (the end of the channel's sampling time), wires its
  * IRQ (ADC1_2, IRQ 18, shared: stm32_adc_share_irq) and, for ADC1, its DMA

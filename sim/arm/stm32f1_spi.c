@@ -1,7 +1,7 @@
 /* stm32f1_spi.c - STM32F1 SPI1/SPI2, full-duplex master: RM0008 rev 21
  * section 25 (25.3.3 master mode, 25.3.5 data transmission and reception:
  * TXE, RXNE, BSY, 25.3.7 status flags, 25.3.10 error flags: MODF, OVR,
- * 25.3.9 DMA, 25.4 interrupts, 25.5 registers).
+ * 25.3.9 DMA, 25.3.11 interrupts, 25.5 registers).
  *
  * Writing DR fills the TX buffer; the shifter takes it at once when empty
  * (TXE rises, BSY is set) and shifts 8 or 16 bits (DFF) at fSCK = fPCLK /
