@@ -94,6 +94,12 @@ static void test_calibration_time(void **state)
     assert_true(rd(CR2, 1000 + 83 * 8 - 1) & CAL);
     assert_false(rd(CR2, 1000 + 83 * 8) & CAL);
     assert_int_equal(calls, 0); /* no conversion was started by those writes */
+    /* CAL written while the ADC is off: the calibration runs once it is on */
+    setup_adc();
+    wr(CR2, CAL, 0);
+    assert_int_equal(stm32_adc_ops.next_event(&adc), MMIO_NEVER);
+    wr(CR2, ADON | CAL, 100);
+    assert_false(rd(CR2, 100 + 83 * 8) & CAL);
 }
 
 /* bulebule's setup_adc1 and sm_emitter_adc: channels 4, 3, 5, 2 injected, 13.5-cycle sampling. */

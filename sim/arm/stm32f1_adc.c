@@ -305,9 +305,11 @@ static void write_cr2(stm32_adc_t *a, uint32_t v)
     /* RM0008 11.12.3 ADON: writing 1 when it is 1 starts a regular conversion,
      * unless another bit changes in the same write */
     if ((old & CR2_ADON) && ((old ^ v) & CR2_MASK & ~CR2_ADON) == 0) trigger(a, GROUP_REG, false, t);
-    if ((v & CR2_RSTCAL) && a->rstcal_end == MMIO_NEVER && !(old & CR2_RSTCAL))
+    /* a calibration (or its reset) runs while the ADC is on; one asked for
+     * while it was off starts when it is powered */
+    if ((a->cr2 & CR2_RSTCAL) && a->rstcal_end == MMIO_NEVER)
         a->rstcal_end = stm32_at(t, adc_cycles(a, 2 * TRSTCAL_ADC));
-    if ((v & CR2_CAL) && a->cal_end == MMIO_NEVER && !(old & CR2_CAL))
+    if ((a->cr2 & CR2_CAL) && a->cal_end == MMIO_NEVER)
         a->cal_end = stm32_at(t, adc_cycles(a, 2 * TCAL_ADC));
     if ((v & CR2_SWSTART) && (v & CR2_EXTTRIG) && ((v >> CR2_EXTSEL_SHIFT) & 7u) == TRIG_SW)
         trigger(a, GROUP_REG, true, t);
