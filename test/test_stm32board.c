@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "arm/stm32board.h"
+#include "board/board.h"
 #include "world/config.h"
 #include "world/robot.h"
 #include "world/sim.h"
@@ -240,6 +241,19 @@ static void test_family(void **state)
     assert_non_null(strstr(err, "/nonexistent/board.ini"));
 }
 
+/* --board NAME finds boards/NAME.ini as it finds boards/NAME-VERSION.ini; the family then picks the loader */
+static void test_find(void **state)
+{
+    char out[512], err[600];
+    if (board_find("bulebule", out, sizeof out, err, sizeof err) != 0) fail_msg("%s", err);
+    assert_non_null(strstr(out, "boards/bulebule.ini"));
+    assert_int_equal(boardfile_family(out, err, sizeof err), BOARDFILE_STM32);
+    if (board_find("ukmarsbot", out, sizeof out, err, sizeof err) != 0) fail_msg("%s", err);
+    assert_non_null(strstr(out, "boards/ukmarsbot-v1.3.ini"));
+    assert_int_equal(boardfile_family(out, err, sizeof err), BOARDFILE_AVR);
+    assert_int_equal(board_find("bulebul", out, sizeof out, err, sizeof err), -1); /* a prefix is no name */
+}
+
 static void test_fits_robot(void **state)
 {
     stm32board_spec_t sp;
@@ -261,7 +275,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_bulebule_loads), cmocka_unit_test(test_bad_files), cmocka_unit_test(test_optional_parts),
-        cmocka_unit_test(test_family), cmocka_unit_test(test_fits_robot),
+        cmocka_unit_test(test_family), cmocka_unit_test(test_find), cmocka_unit_test(test_fits_robot),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
