@@ -263,6 +263,17 @@ static void test_fits_robot(void **state)
     config_defaults(c);
     if (robot_load(c, "robots/bulebule.ini", err, sizeof err) != 0) fail_msg("%s", err);
     if (stm32board_fits_robot(&sp, c, err, sizeof err) != 0) fail_msg("%s", err);
+    /* the robot's figures from bulebule's docs: 15:60 gears, IE2-512 x4, MICROMETERS_PER_COUNT 8.32 */
+    for (int m = 0; m < 2; m++) {
+        assert_true(c->robot.drive[m].gear_ratio == 4.0);
+        assert_true(c->robot.drive[m].encoder_ppr == 2048.0);
+        assert_true(c->robot.drive[m].rated_v == 9.0); /* Faulhaber 1524B009SR */
+    }
+    double um_per_count = 3.14159265358979 * c->robot.wheel_left_d_m * 1e6 / (2048.0 * 4.0);
+    assert_true(um_per_count > 8.31 && um_per_count < 8.33);
+    assert_int_equal(c->robot.casters, 2); /* the Tetra drive's axles as skids */
+    assert_int_equal(robot_count(c, "ir"), 4);
+    assert_int_equal(robot_count(c, "gyro"), 1);
     config_defaults(c);
     if (robot_load(c, "robots/ukmarsbot.ini", err, sizeof err) != 0) fail_msg("%s", err);
     assert_int_equal(stm32board_fits_robot(&sp, c, err, sizeof err), -1);
