@@ -241,6 +241,60 @@ static void test_family(void **state)
     assert_non_null(strstr(err, "/nonexistent/board.ini"));
 }
 
+/* Mutated copies of bulebule.ini (a character changed, a line dropped or
+ * doubled; a fixed seed): each loads, or fails with one line naming the
+ * file; never a crash (ASan, UBSan). */
+static void test_mutations(void **state)
+{
+    FILE *f = fopen(BOARD_FILE, "rb");
+    static char base[1 << 16], text[1 << 17];
+    size_t n = fread(base, 1, sizeof base - 1, f);
+    fclose(f);
+    base[n] = '\0';
+    static const char alphabet[] = "PABCDE0123456789_=[]. ;#\nTIMCHxa-+e";
+    unsigned seed = 38, loaded = 0, failed = 0;
+    char path[] = "/tmp/test_stm32board_XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    close(fd);
+    for (int round = 0; round < 400; round++) {
+        memcpy(text, base, n + 1);
+        size_t len = n;
+        for (int k = 0, edits = 1 + round % 4; k < edits; k++) {
+            size_t at = (size_t)rand_r(&seed) % len;
+            int what = rand_r(&seed) % 3;
+            char *bol = text + at, *eol;
+            while (bol > text && bol[-1] != '\n') bol--;
+            eol = strchr(bol, '\n');
+            size_t ll = eol ? (size_t)(eol - bol) + 1 : strlen(bol);
+            if (what == 0) {
+                text[at] = alphabet[rand_r(&seed) % (sizeof alphabet - 1)];
+            } else if (what == 1) { /* drop the line */
+                memmove(bol, bol + ll, len - (size_t)(bol - text) - ll + 1);
+                len -= ll;
+            } else if (len + ll < sizeof text - 1) { /* double it */
+                memmove(bol + ll, bol, len - (size_t)(bol - text) + 1);
+                len += ll;
+            }
+        }
+        f = fopen(path, "wb");
+        fwrite(text, 1, len, f);
+        fclose(f);
+        stm32board_spec_t sp;
+        char err[400] = "";
+        if (stm32board_load(&sp, path, err, sizeof err) == 0) {
+            loaded++;
+            continue;
+        }
+        failed++;
+        if (strncmp(err, path, strlen(path)) || err[strlen(path)] != ':' || strchr(err, '\n')) fail_msg("round %d: '%s'", round, err);
+    }
+    unlink(path);
+    printf("mutations: %u loaded, %u refused with one line\n", loaded, failed);
+    assert_true(failed > 40 && loaded > 40); /* both kinds happen: the test reaches the checks */
+    assert_true(loaded + failed == 400);
+}
+
 /* --board NAME finds boards/NAME.ini as it finds boards/NAME-VERSION.ini; the family then picks the loader */
 static void test_find(void **state)
 {
@@ -286,7 +340,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_bulebule_loads), cmocka_unit_test(test_bad_files), cmocka_unit_test(test_optional_parts),
-        cmocka_unit_test(test_family), cmocka_unit_test(test_find), cmocka_unit_test(test_fits_robot),
+        cmocka_unit_test(test_family), cmocka_unit_test(test_find), cmocka_unit_test(test_mutations), cmocka_unit_test(test_fits_robot),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
