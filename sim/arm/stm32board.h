@@ -6,7 +6,7 @@
  * INI path the config, robot and AVR board files share (world/inifile.h,
  * world/keytab.h); every check against the MCU (a pin its package has, a
  * timer channel on a pin the AFIO remaps allow, no pin twice) is done
- * there, so the board that runs the image (armboard.c) trusts the spec. */
+ * there, so the board that runs the image trusts the spec. */
 #ifndef STM32BOARD_H
 #define STM32BOARD_H
 

@@ -551,7 +551,7 @@ boardfile_family_t boardfile_family(const char *path, char *err, size_t errn)
 
 /* ---- the robot on the board ---- */
 
-/* A board part on the pin of ADC12_INch, NULL if none. */
+/* The board part wired to pin p, NULL if none. */
 static const char *pin_user(const stm32board_spec_t *sp, stm32_pin_t p)
 {
     const stm32_pin_t pins[] = { sp->motor[0].in_pin[0], sp->motor[0].in_pin[1], sp->motor[1].in_pin[0], sp->motor[1].in_pin[1],
