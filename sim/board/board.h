@@ -113,8 +113,8 @@ typedef struct {
 
 typedef struct board_s board_t;
 
-/* NAME (boards/NAME-VERSION.ini, VERSION without '-': the first in sorted
- * order) or a path into out.
+/* NAME (boards/NAME-VERSION.ini, VERSION without '-', or boards/NAME.ini:
+ * the first in sorted order) or a path into out.
  * 0, or -1 with one line in err. */
 int board_find(const char *name, char *out, size_t outn, char *err, size_t errn);
 /* Read a board file. 0, or -1 with one line "FILE:LINE: section.key:

@@ -350,9 +350,9 @@ int board_fits_robot(const board_spec_t *sp, const simcfg_t *c, char *err, size_
 
 static int cmp_str(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
 
-/* The board file NAME-VERSION.ini in dir/boards that sorts first into best,
- * or "". VERSION has no '-': boards/ukmarsbot-basic-v1.3.ini is the board
- * ukmarsbot-basic's, never --board ukmarsbot's. */
+/* The board file NAME-VERSION.ini or NAME.ini in dir/boards that sorts
+ * first into best, or "". VERSION has no '-': boards/ukmarsbot-basic-v1.3.ini
+ * is the board ukmarsbot-basic's, never --board ukmarsbot's. */
 static void find_in(const char *dir, const char *name, char *best, size_t bestn)
 {
     char path[DATADIR_PATH_MAX + 8];
@@ -363,8 +363,9 @@ static void find_in(const char *dir, const char *name, char *best, size_t bestn)
     struct dirent *e;
     while (d && (e = readdir(d)) != NULL) {
         size_t k = strlen(e->d_name);
-        if (strncmp(e->d_name, name, n) || e->d_name[n] != '-' || k < n + 6 || strcmp(e->d_name + k - 4, ".ini")) continue;
-        if (memchr(e->d_name + n + 1, '-', k - 4 - (n + 1))) continue; /* a longer NAME's board */
+        int exact = !strncmp(e->d_name, name, n) && !strcmp(e->d_name + n, ".ini"); /* NAME.ini (boards/bulebule.ini) */
+        if (!exact && (strncmp(e->d_name, name, n) || e->d_name[n] != '-' || k < n + 6 || strcmp(e->d_name + k - 4, ".ini"))) continue;
+        if (!exact && memchr(e->d_name + n + 1, '-', k - 4 - (n + 1))) continue; /* a longer NAME's board */
         const char *c = e->d_name;
         if (!best[0] || cmp_str(&c, &(const char *){ best }) < 0) snprintf(best, bestn, "%s", e->d_name);
     }
