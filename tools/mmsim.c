@@ -517,7 +517,7 @@ static int run(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
-    io_stdout_open();
+    io_stdout_open("mmsim");
     int rc = run(argc, argv);
     return io_stdout_close("mmsim") != 0 ? RUN_EXTERNAL : rc;
 }
