@@ -77,14 +77,21 @@ n_keys=$(grep -c '^[a-z_]* = ' "$T/out"); n_src=$(grep -c '^; source: ' "$T/out"
 [ "$n_keys" -gt 10 ] && [ "$n_keys" = "$n_src" ] && grep -q '^; source: UKR 1.1: 18 cm unit squares$' "$T/out" \
   && ok "--print-contest: each of $n_keys keys with its file's source" || bad "--print-contest: $n_keys keys, $n_src sources"
 
-# a Python mms algorithm that still writes when the time limit ends the run:
-# mmsim kills it as mms does (QProcess::kill, its pipes open), so no
-# BrokenPipeError traceback from it appears in the run (3 runs: the race)
+# a Python mms algorithm under way when the time limit ends the run: mmsim
+# kills it as mms does (QProcess::kill, its pipes still open), so it never
+# sees a closed pipe (no EOF, no BrokenPipeError traceback in the run)
 cat >"$T/naive.py" <<'PY'
-import sys
+import os, sys
 def cmd(c):
-    print(c, flush=True)
-    return sys.stdin.readline().strip()
+    try:
+        print(c, flush=True)
+    except BrokenPipeError:  # said at once (os.write), before a traceback could be
+        os.write(2, b"closed pipe: BrokenPipeError\n")
+        raise
+    r = sys.stdin.readline()
+    if not r:
+        os.write(2, b"closed pipe: EOF on stdin\n")
+    return r.strip()
 while True:
     print("setColor 0 0 G", flush=True)
     cmd("moveForward") if cmd("wallFront") == "false" else cmd("turnRight")
@@ -93,7 +100,7 @@ ONE_ERROR_LINE=0
 tb=0
 for i in 1 2 3; do
   $G "$S" --maze mazes/gen-16x16-s1.txt --mms "python3 $T/naive.py" --time-limit 2 >/dev/null 2>"$T/mms.err"
-  grep -q "Traceback\|BrokenPipeError" "$T/mms.err" && tb=$((tb+1))
+  grep -q "closed pipe\|Traceback" "$T/mms.err" && tb=$((tb+1))
 done
 [ $tb -eq 0 ] && ok "mms at the time limit: no traceback from the algorithm (3 runs)" || bad "mms at the time limit: $tb of 3 runs with a traceback: $(head -3 "$T/mms.err")"
 

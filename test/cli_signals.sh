@@ -67,6 +67,7 @@ rm -rf "$T/k"; mkdir "$T/k"
 want_rc 3 "ulimit -f: --lcm-log" bash -c 'ulimit -f 64; exec "$@"' sh "$S" --maze mazes/gen-16x16-s1.txt --lcm-log "$T/k/u.lcmlog"
 grep -q "u.lcmlog: .*File too large" "$T/err" && [ -z "$(ls "$T/k")" ] && ok "ulimit -f: --lcm-log: the reason, nothing left" \
   || bad "ulimit -f: --lcm-log: $(cat "$T/err") left: $(ls "$T/k")"
+rm -rf "$T/k"; mkdir "$T/k"
 want_rc 3 "ulimit -f: --report" bash -c 'ulimit -f 16; exec "$@"' sh "$S" --maze mazes/gen-5x5-s1.txt --report "$T/k/r.png"
 grep -q "File too large" "$T/err" && [ -z "$(ls "$T/k")" ] && ok "ulimit -f: --report: the reason, nothing left" \
   || bad "ulimit -f: --report: $(cat "$T/err") left: $(ls "$T/k")"
