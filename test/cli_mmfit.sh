@@ -77,8 +77,44 @@ grep -q '^; source: fitted from fwd_1.5.csv, fwd_3.txt, rot_1.csv, rot_2.csv by 
   && ok "fitted keys say: fitted from FILE, with the residual" || bad "fitted keys' sources: $(grep -m3 'fitted from' "$T/fit.ini")"
 want_rc 0 "the fitted robot file loads" "$S" --print-robot --robot "$T/fit.ini"
 [ "$(python3 test/pngcheck.py "$T/fit.png" size)" = "1600 480" ] && [ "$(python3 test/pngcheck.py "$T/fit.png" near:1e5adc:40)" -gt 500 ] \
-  && [ "$(python3 test/pngcheck.py "$T/fit.png" near:dc3228:40)" -gt 200 ] && ok "PNG: 3 panels, simulated (blue) and residual (red) curves" \
+  && [ "$(python3 test/pngcheck.py "$T/fit.png" near:dc3228:40)" -gt 200 ] && ok "PNG: 5 columns, simulated (blue) and residual (red) curves" \
   || bad "PNG: $(python3 test/pngcheck.py "$T/fit.png" size) blue $(python3 test/pngcheck.py "$T/fit.png" near:1e5adc:40)"
+# every panel of the picture: a title, both axes named with their unit in (), a legend
+PYM=python3; python3 -c "import matplotlib" 2>/dev/null || PYM=${BUILD:-build}/venv/bin/python
+"$PYM" - "$T/fwd_3.csv" <<'PY' >"$T/axes" 2>&1 && ok "plot: $(cat "$T/axes")" || bad "plot: $(cat "$T/axes")"
+import csv, sys, importlib.machinery, importlib.util
+ld = importlib.machinery.SourceFileLoader("mmfit", "tools/mmfit")
+m = importlib.util.module_from_spec(importlib.util.spec_from_loader("mmfit", ld)); ld.exec_module(m)
+rows = list(csv.DictReader(open(sys.argv[1])))
+t = [float(r["t_s"]) for r in rows]; x = [(int(r["left_counts"]) + int(r["right_counts"])) / 2 for r in rows]
+meas = {"path": "fwd_3.csv", "t": t, "x": [v * 1.02 for v in x]}
+sim = {"kind": "fwd", "volts": 3.0, "t": t, "x": x}
+fig = m.figure([(meas, sim)], [("lfs 60mm 0deg", 300.0, 290.0), ("lfs 90mm 0deg", 150.0, 160.0)])
+axes = [a for a in fig.axes if a.has_data()]
+bad = [i for i, a in enumerate(axes) if not (a.get_title() and "(" in a.get_xlabel() and "(" in a.get_ylabel() and a.get_legend())]
+print("%d panels, each with a title, axes with units and a legend; %s" % (len(axes), fig._suptitle.get_text()) if not bad and len(axes) == 4
+      else "panels %s lack a title, an axis unit or a legend" % bad)
+sys.exit(1 if bad or len(axes) != 4 else 0)
+PY
+
+# motorlab's own table (ukmars/motorlab, robot.h do_open_loop_trial): a '#Open Loop'
+# line, the '$time(ms) Volts(V) Speed(deg/s)' header, a row every 5 ms of elapsed ms,
+# volts and the wheel's speed (one decimal each), then 200 ms at 0 V; an echo line
+python3 - "$T/fwd_3.csv" >"$T/motorlab_3.txt" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+deg = 360.0 / (36 * 11.4)  # a wheel's degrees per count: encoder_ppr x gear_ratio counts a turn
+c = lambda r: 0.5 * (int(r["left_counts"]) + int(r["right_counts"]))
+print("VOLTS 3 1000\n#Open Loop Identification - 3.0 Volts\n$time(ms) Volts(V) Speed(deg/s)")
+for i in range(5, len(rows), 5):
+    print("%d %.1f %.1f" % (round(float(rows[i]["t_s"]) * 1000), float(rows[i]["volts"]), (c(rows[i]) - c(rows[i - 5])) / 0.005 * deg))
+end = round(float(rows[-1]["t_s"]) * 1000)
+for k in range(5, 201, 5):
+    print("%d 0.0 0.0" % (end + k))
+PY
+want_rc 0 "mmfit: motorlab's own table" "${FIT[@]}" --base $B --fwd "$T/fwd_1.5.csv" --fwd "$T/motorlab_3.txt" -o "$T/ml.ini"
+near "$T/ml.ini" motor.left no_load_rpm 1700 3 "motorlab table"
+near "$T/ml.ini" chassis.body body_mass_g 150 5 "motorlab table"
 
 # the gear ratio: wheels measured with calipers, counts over a distance
 want_rc 0 "mmfit: gear ratio from counts and calipers" "${FIT[@]}" --base $B --counts "$T/gear_counts.csv" --wheel-d-mm 34.06,33.90 -o "$T/gear.ini"
@@ -127,7 +163,54 @@ grep -q "^$T/cm.csv:2: unit 'cm' for straight" "$T/err" && ok "counts unit: FILE
 sed 's/^body_w_mm = 65$/body_w_mm = 5/' $B >"$T/badbase.ini"
 want_rc 2 "a bad base robot file" "${FIT[@]}" --base "$T/badbase.ini" --counts "$T/counts.csv" -o "$T/x.ini"
 grep -q "^$T/badbase.ini:[0-9]*: chassis.body.body_w_mm: " "$T/err" && ok "bad base: mmsim's FILE:LINE" || bad "bad base: $(cat "$T/err")"
+# the edges: a header in mV over volts, bad figures, an IR row at 0 mm or reading 0,
+# outputs that cannot be: one line, exit 2 (bad input) or 3 (external), no traceback
+sed '1s/volts/volts_mv/' "$T/fwd_3.csv" >"$T/mv.csv"
+want_rc 2 "a volts_mv column holding volts" "${FIT[@]}" --base $B --fwd "$T/mv.csv" -o "$T/x.ini"
+grep -q "^$T/mv.csv:1: column 'volts_mv' holds 3: that is volts, not millivolts" "$T/err" && ok "mV header over volts: says so" || bad "mV: $(cat "$T/err")"
+for f in "fwd_km_mm_s_v = 0" "fwd_tm_s = -0.1" "rot_km_deg_s_v = -5" "rot_tm_s = 0" "counts_500mm_left = 0" "bias_ff_v = -1"; do
+  printf '[measured]\n%s\n' "$f" >"$T/fig.ini"
+  want_rc 2 "--figures: $f" "${FIT[@]}" --base $B --figures "$T/fig.ini" -o "$T/x.ini"
+  grep -q "^$T/fig.ini:2: ${f%% *} .*: expected" "$T/err" || bad "--figures $f: $(cat "$T/err")"
+done
+for r in "lfs,0,0,90" "lfs,60,0,0" "lfs,60,0,-5"; do
+  printf 'sensor,distance_mm,angle_deg,counts\n%s\n' "$r" >"$T/ir_bad.csv"
+  want_rc 2 "--ir row $r" "${FIT[@]}" --base $B --ir "$T/ir_bad.csv" -o "$T/x.ini"
+  grep -q "^$T/ir_bad.csv:2: " "$T/err" || bad "--ir $r: $(cat "$T/err")"
+done
+mkdir "$T/adir"
+want_rc 2 "-o a directory" "${FIT[@]}" --base $B --counts "$T/counts.csv" -o "$T/adir"
+want_rc 2 "-o in a missing folder" "${FIT[@]}" --base $B --counts "$T/counts.csv" -o "$T/nofolder/x.ini"
+want_rc 3 "-o in /proc" "${FIT[@]}" --base $B --counts "$T/counts.csv" -o /proc/mmfit-test.ini
+want_rc 2 "--plot a directory" "${FIT[@]}" --base $B --counts "$T/counts.csv" -o "$T/x.ini" --plot "$T/adir/"
+grep -c Traceback "$T/err" >/dev/null && bad "a traceback: $(cat "$T/err")" || true
+# over the file size limit (ulimit -f: 4 KiB; the robot file is larger): exit 3, no file, no temporary
+mkdir "$T/small"
+want_rc 3 "ulimit -f: the output over the limit" bash -c 'ulimit -f 4; exec "$@"' sh "${FIT[@]}" --base $B --counts "$T/counts.csv" -o "$T/small/fit.ini"
+[ -z "$(ls "$T/small")" ] && ok "ulimit -f: nothing written (no 0-byte robot file, no temporary)" || bad "ulimit -f: left $(ls -l "$T/small")"
 ONE_ERROR_LINE=0
+# a full disk (an 8 KiB tmpfs) and a read-only folder, in a mount namespace of our own (root only)
+if [ "$(id -u)" = 0 ] && unshare -m true 2>/dev/null; then
+  mkdir -p "$T/full"
+  unshare -m bash -c 'mount -t tmpfs -o size=8k tmpfs "$1" && head -c 6000 /dev/zero >"$1/filler" && shift && exec "$@"' sh "$T/full" \
+    "${FIT[@]}" --base $B --counts "$T/counts.csv" -o "$T/full/fit.ini" >"$T/out" 2>"$T/err"; rc=$?
+  [ $rc = 3 ] && [ "$(wc -l <"$T/err")" = 1 ] && grep -q "fit.ini: cannot write: No space left on device" "$T/err" \
+    && ok "a full disk: one line, exit 3" || bad "a full disk: exit $rc: $(cat "$T/err")"
+  unshare -m bash -c 'mount -t tmpfs -o size=8k tmpfs "$1" && head -c 6000 /dev/zero >"$1/filler" && d=$1 && shift && "$@"; rc=$?; ls "$d"; exit $rc' sh "$T/full" \
+    "${FIT[@]}" --base $B --counts "$T/counts.csv" -o "$T/full/fit.ini" >"$T/out" 2>/dev/null
+  [ "$(cat "$T/out")" = filler ] && ok "a full disk: no 0-byte robot file, no temporary" || bad "a full disk left: $(cat "$T/out")"
+  unshare -m bash -c 'mount -t tmpfs -o ro tmpfs "$1" && shift && exec "$@"' sh "$T/full" \
+    "${FIT[@]}" --base $B --counts "$T/counts.csv" -o "$T/full/fit.ini" >"$T/out" 2>"$T/err"; rc=$?
+  [ $rc = 3 ] && [ "$(wc -l <"$T/err")" = 1 ] && grep -q "fit.ini: cannot write: Read-only file system" "$T/err" \
+    && ok "a read-only folder: one line, exit 3" || bad "a read-only folder: exit $rc: $(cat "$T/err")"
+else
+  echo "note: not root or no unshare: the full-disk and read-only checks left out"
+fi
+# a fit no robot explains (one sensor read 1000 far and 50 near): exit 1, the residuals on stderr
+printf 'sensor,distance_mm,angle_deg,counts\nlfs,120,0,1000\nlfs,40,0,50\n' >"$T/ir_odd.csv"
+want_rc 1 "a fit outside its tolerance" "${FIT[@]}" --base $B --ir "$T/ir_odd.csv" -o "$T/odd.ini"
+grep -q "^mmfit: residual ir lfs 120mm 0deg: measured 1000, simulated .*outside its tolerance +-10 % (rms of the sensor)" "$T/err" \
+  && [ -s "$T/odd.ini" ] && ok "outside tolerance: exit 1, each residual said, the best fit written" || bad "outside tolerance: $(cat "$T/err")"
 
 # ORION: its published figures ([measured.orion], BIAS_FF 0.340 V: config-robot-orion.h l.282) and
 # calibration readings (at the distances and angles bench/fit_ukmarsbot.py derives) from a

@@ -9,32 +9,38 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "io/escape.h"
+#include "io/number.h"
+
+/* arg as it may be printed in one line: a text with a control character
+ * (a newline in --input or --mms text) escaped whole; one without is
+ * printed as it is (a message whose foreign parts are escaped already) */
+static const char *printable(const char *arg, char *buf, size_t len)
+{
+    if (!arg) return "";
+    for (const unsigned char *p = (const unsigned char *)arg; *p; p++)
+        if (*p < 0x20 || *p == 0x7f) {
+            io_escape(buf, len, arg, strlen(arg));
+            return buf;
+        }
+    return arg;
+}
+
 int cli_bad(const char *prog, const char *fmt, const char *arg)
 {
+    char buf[1024];
     fprintf(stderr, "%s: ", prog);
-    fprintf(stderr, fmt, arg);
+    fprintf(stderr, fmt, printable(arg, buf, sizeof buf));
     fprintf(stderr, " (try '%s --help')\n", prog);
     return CLI_BAD_INPUT;
 }
 
-/* A plain decimal number: an optional '-', digits with an optional '.'
- * and fraction (no spaces, '+', exponent, hex, inf or nan). */
-static int plain_decimal(const char *s)
-{
-    size_t i = s[0] == '-', digits = 0;
-    while (isdigit((unsigned char)s[i])) i++, digits++;
-    if (s[i] == '.')
-        for (i++; isdigit((unsigned char)s[i]); i++) digits++;
-    return digits > 0 && s[i] == '\0';
-}
-
 int cli_number(const char *prog, const char *opt, const char *s, double lo, double hi, double *out)
 {
-    char *end;
-    errno = 0;
-    double v = plain_decimal(s) ? strtod(s, &end) : NAN;
-    if (errno || !(v >= lo && v <= hi)) {
-        fprintf(stderr, "%s: %s: expected a number from %g to %g, got '%s'\n", prog, opt, lo, hi, s);
+    double v = NAN;
+    if (io_decimal(s, strlen(s), &v) != 0 || !(v >= lo && v <= hi)) {
+        char buf[256];
+        fprintf(stderr, "%s: %s: expected a number from %g to %g, got '%s'\n", prog, opt, lo, hi, printable(s, buf, sizeof buf));
         return -1;
     }
     *out = v;
@@ -84,7 +90,8 @@ static int cli_store(const char *prog, const cli_opt_t *t, const char *arg, void
     case CLI_INT:
         if (cli_number(prog, opt, arg, t->lo, t->hi, &v)) return CLI_BAD_INPUT;
         if (v != floor(v)) {
-            fprintf(stderr, "%s: %s: expected a whole number from %g to %g, got '%s'\n", prog, opt, t->lo, t->hi, arg);
+            char buf[256];
+            fprintf(stderr, "%s: %s: expected a whole number from %g to %g, got '%s'\n", prog, opt, t->lo, t->hi, printable(arg, buf, sizeof buf));
             return CLI_BAD_INPUT;
         }
         *(int *)field = (int)v;
@@ -113,11 +120,19 @@ int cli_parse(const char *prog, const cli_opt_t *table, int argc, char **argv, v
     int c, rc = 0;
     opterr = 0;
     optind = 1;
+    int at = optind; /* the argument getopt_long is on */
     while (!rc && (c = getopt_long(argc, argv, "", lo, NULL)) != -1) {
         if (c < 1000 || c >= 1000 + (int)n) {
-            rc = cli_bad(prog, "unknown option or missing value: '%s'", argv[optind - 1]);
+            /* a flag that needs a value and has none (optopt names it); else
+             * an unknown one: the argument it came in, which getopt has
+             * passed (--bogus, a single -v) or, inside a cluster of single
+             * letters (-maze, -vv), is still on */
+            const char *arg = optind > at ? argv[optind - 1] : argv[optind];
+            rc = optopt >= 1000 && optopt < 1000 + (int)n ? cli_bad(prog, "%s: missing its value", arg)
+                                                           : cli_bad(prog, "unknown option: '%s'", arg);
             break;
         }
+        at = optind;
         if (seen) seen[c - 1000]++;
         rc = cli_store(prog, &table[c - 1000], optarg, opts);
     }

@@ -350,7 +350,7 @@ static int run(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
-    io_stdout_open();
+    io_stdout_open("mmlog");
     int rc = run(argc, argv);
     return io_stdout_close("mmlog") != 0 ? 3 : rc;
 }

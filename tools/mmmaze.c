@@ -372,7 +372,7 @@ static int run_command(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
-    io_stdout_open();
+    io_stdout_open("mmmaze");
     int rc = run_command(argc, argv);
     return io_stdout_close("mmmaze") != 0 ? EXIT_EXTERNAL : rc;
 }

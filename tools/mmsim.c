@@ -141,9 +141,16 @@ static int f_driver(const char *prog, void *o, const char *arg)
 
 static int f_lcm(const char *prog, void *o, const char *arg)
 {
+    /* the providers liblcm has (lcm/lcm.c: udpm, file, memq, tcpq, mpudpm): a
+     * name it cannot have is bad input now, not a failure to open later */
+    static const char *const providers[] = { "udpm", "file", "memq", "tcpq", "mpudpm" };
     run_of(o)->telem.url = arg ? arg : "";
-    if (arg && !strstr(arg, "://")) return bad("--lcm: expected an LCM URL like udpm://239.255.76.67:7667?ttl=0, got '%s'", arg);
-    return 0;
+    if (!arg) return 0;
+    const char *sep = strstr(arg, "://");
+    if (!sep) return bad("--lcm: expected an LCM URL like udpm://239.255.76.67:7667?ttl=0, got '%s'", arg);
+    for (size_t i = 0; i < sizeof providers / sizeof providers[0]; i++)
+        if ((size_t)(sep - arg) == strlen(providers[i]) && !strncmp(arg, providers[i], (size_t)(sep - arg))) return 0;
+    return bad("--lcm: '%s': the provider is udpm, file, memq, tcpq or mpudpm (e.g. udpm://239.255.76.67:7667?ttl=0)", arg);
 }
 
 static int f_lcm_log(const char *prog, void *o, const char *arg)
@@ -338,6 +345,11 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (o->watch && !o->avr_elf) return bad("%s", "--watch NAME needs --avr IMAGE.elf (with or without --board NAME): the image's variables");
     if (o->console_pty) o->realtime = 1; /* a person at a serial monitor: in real time */
     if (o->view.baud <= 0) o->view.baud = (long)link_default_baud(o->link.protocol); /* the viewer's Connect */
+    if (cli_seen(flags, seen, "at") && !o->shot) return bad("%s", "--at SECONDS needs --screenshot FILE.png (the moment it is taken)");
+    if (cli_seen(flags, seen, "speed") && !o->gui) return bad("%s", "--speed needs --gui (the viewer's playback speed)");
+    if (cli_seen(flags, seen, "jobs") && !m->batch) return bad("%s", "--jobs N needs --batch DIR (the mazes run at once)");
+    if ((m->validate || m->bench_log) && (m->maze || m->batch))
+        return bad("%s", "--validate and --bench-log run their own benches: not with --maze or --batch");
     if (o->print_config || o->print_robot || m->print_contest || m->validate || m->bench_log) return 0;
     if (m->batch && (o->telem.url || o->telem.log_path)) return bad("%s", "--lcm and --lcm-log work on one maze, not with --batch");
     if (m->batch && (o->report || o->gui || o->shot)) return bad("%s", "--report, --gui and --screenshot need --maze (one run), not --batch");
@@ -411,7 +423,7 @@ static int validate(const run_opts_t *o)
 static int board_default_robot(run_opts_t *o)
 {
     static board_spec_t spec; /* large */
-    char path[512], err[600];
+    char path[512], err[1200];
     if (board_find(o->board, path, sizeof path, err, sizeof err) != 0 || board_load(&spec, path, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         return CLI_BAD_INPUT;
@@ -517,7 +529,7 @@ static int run(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
-    io_stdout_open();
+    io_stdout_open("mmsim");
     int rc = run(argc, argv);
     return io_stdout_close("mmsim") != 0 ? RUN_EXTERNAL : rc;
 }

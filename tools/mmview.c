@@ -130,7 +130,7 @@ static int run(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
-    io_stdout_open();
+    io_stdout_open("mmview");
     int rc = run(argc, argv);
     return io_stdout_close("mmview") != 0 ? EXIT_EXTERNAL : rc;
 }

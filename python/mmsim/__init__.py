@@ -10,7 +10,7 @@ python/README.md describes both, the --vary SPEC forms and the mmsweep command.
 from .runner import run, default_mmsim
 from .variations import SpecError
 from .planning import plan
-from .sweep import sweep, execute
-from .store import read
+from .sweep import sweep, execute, ExternalError
+from .store import read, OutError
 
-__all__ = ["run", "sweep", "plan", "execute", "read", "default_mmsim", "SpecError"]
+__all__ = ["run", "sweep", "plan", "execute", "read", "default_mmsim", "SpecError", "ExternalError", "OutError"]

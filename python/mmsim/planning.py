@@ -43,22 +43,70 @@ def maze_files(mazes):
     return out
 
 
+MAX_RUNS = 100000  # runs in one sweep: its plan (a dict per run) stays in memory (~0.2 GB)
+SEED_MAX = 9007199254740992  # mmsim --seed's range (2^53)
+
+
 def seed_list(seeds):
-    """1-100, 1,5,9, 3-4,10 or a list of ints."""
+    """1-100, 1,5,9, 3-4,10 or a list of ints; counted before it is built, so
+    a range of 10^8 seeds is a SpecError, not gigabytes."""
     if isinstance(seeds, int):
-        return [seeds]
+        seeds = [seeds]
     if not isinstance(seeds, str):
-        return [int(s) for s in seeds]
-    out = []
+        seeds = ",".join(str(int(s)) for s in seeds)
+    parts = []
     for part in seeds.split(","):
         lo, dash, hi = part.strip().partition("-")
         try:
-            out += list(range(int(lo), int(hi) + 1)) if dash else [int(lo)]
+            a, b = int(lo), int(hi if dash else lo)
         except ValueError:
             raise SpecError("--seeds %r: want N, N-M or a list of them, e.g. 1-100" % seeds) from None
-    if not out:
+        if not 0 <= a <= b <= SEED_MAX:
+            raise SpecError("--seeds %r: want 0 <= N <= M <= %d" % (seeds, SEED_MAX))
+        parts.append((a, b))
+    n = sum(b - a + 1 for a, b in parts)
+    if n == 0:
         raise SpecError("--seeds %r: no seeds" % seeds)
-    return out
+    if n > MAX_RUNS:
+        raise SpecError("--seeds %r: %d seeds, more than the %d runs a sweep holds (split it)" % (seeds, n, MAX_RUNS))
+    return [s for a, b in parts for s in range(a, b + 1)]
+
+
+def check_size(mazes, seeds, combos, drivers):
+    """The sweep's run count before its plan is built: at most MAX_RUNS."""
+    n = len(mazes) * len(seeds) * combos * len(drivers)
+    if n > MAX_RUNS:
+        raise SpecError("%d mazes x %d seeds x %d combinations x %d drivers = %d runs, more than the %d a sweep holds"
+                        " (split it)" % (len(mazes), len(seeds), combos, len(drivers), n, MAX_RUNS))
+
+
+def check_runs(mmsim, mazes, drivers, time_limit_s, extra_args):
+    """Every driver, the time limit and the extra arguments as mmsim reads
+    them (mmsim --print-config checks its flags and their combinations:
+    an unknown driver, a negative limit), and every maze as mmmaze reads it
+    (the mmmaze beside mmsim, when there is one): a SpecError with their
+    own error line, before any run."""
+    if time_limit_s is not None:
+        try:
+            ok = 1 <= float(time_limit_s) <= 86400
+        except (TypeError, ValueError):
+            ok = False
+        if not ok:
+            raise SpecError("--time-limit %r: want seconds from 1 to 86400 (mmsim --time-limit)" % (time_limit_s,))
+    for d in drivers:
+        argv = [mmsim, "--print-config"] + runner.driver_args(d) + [str(a) for a in extra_args]
+        if time_limit_s is not None:
+            argv += ["--time-limit", repr(float(time_limit_s))]
+        p = subprocess.run(argv, capture_output=True, text=True)
+        if p.returncode != 0:
+            why = (p.stderr.strip().splitlines() or ["exit %d" % p.returncode])[-1]
+            raise SpecError("--driver %r: %s" % (d, why))
+    mmmaze = os.path.join(os.path.dirname(mmsim), "mmmaze")
+    if os.access(mmmaze, os.X_OK):
+        for i in range(0, len(mazes), 200):
+            p = subprocess.run([mmmaze, "check"] + mazes[i:i + 200], capture_output=True, text=True)
+            if p.returncode == 2:
+                raise SpecError((p.stderr.strip().splitlines() or ["mmmaze check: exit 2"])[0])
 
 
 def printed(mmsim, what, path):
@@ -107,6 +155,12 @@ def plan(mazes, seeds, vary=None, drivers=("firmware",), robot=None, config=None
     for k, v in vary.items():
         if not v:
             raise SpecError("--vary %s: no values" % k)
+    drivers = list(drivers)
+    n_combos = 1
+    for v in vary.values():
+        n_combos *= len(v)
+    check_size(mazes, seeds, n_combos, drivers)
+    check_runs(mmsim, mazes, drivers, time_limit_s, extra_args)
     robot_base = printed(mmsim, "robot", robot)
     config_base = printed(mmsim, "config", config)
     rkeys, ckeys = split_keys(vary, robot_base, config_base, robot, config)

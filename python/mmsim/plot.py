@@ -8,6 +8,7 @@ and each varied key's sensitivity: the least-squares slope of best_run_s
 against the key's value, times the values' standard deviation (seconds of
 best run per one standard deviation of the key).
 """
+import os
 import math
 
 import numpy as np
@@ -76,8 +77,15 @@ def draw(doc, path):
     if len(keys) % 2:
         axes[-1][1].axis("off")
     fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    # whole or not at all: a temporary beside path, renamed over it
+    tmp = "%s.tmp.%d" % (path, os.getpid())
+    try:
+        fig.savefig(tmp, format=os.path.splitext(path)[1].lstrip(".").lower() or "png")
+        os.replace(tmp, path)
+    finally:
+        plt.close(fig)
+        if os.path.exists(tmp):
+            os.unlink(tmp)
 
 
 def bars(ax, per, title):

@@ -17,6 +17,37 @@ import pandas as pd
 PART_GLOB = "part-*.parquet"
 
 
+class OutError(Exception):
+    """An --out that is not a results folder (exit 2), or one that cannot be
+    written (external = True: exit 3)."""
+
+    def __init__(self, msg, external=False):
+        super().__init__(msg)
+        self.external = external
+
+
+def check_out(out):
+    """Before any run: out is a folder of Parquet parts (or not there yet)
+    that can be written: a file, a folder whose parts are not Parquet, a
+    folder that refuses a file (read-only, /proc) are OutError."""
+    if out is None:
+        return
+    if os.path.exists(out) and not os.path.isdir(out):
+        raise OutError("--out %s: a file; --out is a folder of Parquet parts (a new name makes one)" % out)
+    try:
+        read(out)
+    except Exception as e:  # pyarrow's errors have no common base: any is a bad part
+        raise OutError("--out %s: not a Parquet results folder: %s" % (out, (str(e).splitlines() or [type(e).__name__])[0])) from None
+    try:
+        os.makedirs(out, exist_ok=True)
+        probe = os.path.join(out, ".probe-%d.tmp" % os.getpid())
+        with open(probe, "w"):
+            pass
+        os.unlink(probe)
+    except OSError as e:
+        raise OutError("--out %s: cannot write: %s" % (out, e.strerror), external=True) from None
+
+
 def read(out):
     """Every row of the dataset at out (a folder, or a single Parquet file)."""
     if out is None or not os.path.exists(out):
@@ -60,8 +91,13 @@ class Writer:
         df = to_frame(self.rows)
         name = "part-%d-%d-%06d.parquet" % (time.time_ns(), os.getpid(), len(self.rows))
         tmp = os.path.join(self.out, "." + name + ".tmp")
-        df.to_parquet(tmp, index=False)
-        os.replace(tmp, os.path.join(self.out, name))
+        try:
+            df.to_parquet(tmp, index=False)
+            os.replace(tmp, os.path.join(self.out, name))
+        except OSError as e:
+            if os.path.exists(tmp):
+                os.unlink(tmp)
+            raise OutError("--out %s: cannot write: %s" % (self.out, e.strerror), external=True) from None
         self.rows = []
 
 

@@ -58,18 +58,28 @@ def execute(spec):
     return row
 
 
+class ExternalError(Exception):
+    """A failure outside the sweep's inputs (a scheduler not reached, an
+    output that cannot be written): one line, exit 3."""
+
+
+SCHEDULER_TIMEOUT_S = 10  # a scheduler not reached within this is an external failure
+
+
 def connect(scheduler=None, workers=2):
-    """A Dask client: on a LocalCluster of `workers` processes (one thread
-    each: every run is a process of its own), or on the scheduler at the
-    address given. Returns (client, cluster or None)."""
+    """A Dask client: on a LocalCluster of `workers` workers in this process
+    (one thread each: every run is a process of its own, so the workers need
+    no process of their own, and a script without the `if __name__ ==
+    "__main__"` guard, a notebook or a script on stdin works), or on the
+    scheduler at the address given (ExternalError if it is not reached in
+    SCHEDULER_TIMEOUT_S). Returns (client, cluster or None)."""
     from distributed import Client, LocalCluster
     if scheduler:
-        return Client(scheduler, timeout="20s"), None
-    # Workers import this package: its folder on their path.
-    here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    paths = [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
-    if here not in paths:
-        os.environ["PYTHONPATH"] = os.pathsep.join([here] + paths)
+        try:
+            return Client(scheduler, timeout="%ds" % SCHEDULER_TIMEOUT_S), None
+        except (OSError, TimeoutError, ValueError) as e:
+            raise ExternalError("--scheduler %s: not reached in %d s: %s" % (
+                scheduler, SCHEDULER_TIMEOUT_S, (str(e).splitlines() or [type(e).__name__])[0])) from None
     import logging
     import dask
     # A run is a child process the worker waits for: Dask's statistical
@@ -80,7 +90,7 @@ def connect(scheduler=None, workers=2):
     dask.config.set({"distributed.worker.profile.enabled": False,
                      "distributed.scheduler.work-stealing": False,
                      "distributed.admin.tick.interval": "1s"})
-    cluster = LocalCluster(n_workers=int(workers), threads_per_worker=1, processes=True,
+    cluster = LocalCluster(n_workers=int(workers), threads_per_worker=1, processes=False,
                            dashboard_address=None, silence_logs=logging.ERROR)
     return Client(cluster), cluster
 
@@ -99,6 +109,7 @@ def sweep(mazes, seeds, vary=None, drivers=("firmware",), robot=None, config=Non
     """mazes x seeds x vary x drivers as a pandas DataFrame, one row per run.
     A SpecError (bad key, value, maze or seed list) is raised before any run."""
     specs = planner.plan(mazes, seeds, vary, drivers, robot, config, time_limit_s, extra_args, mmsim)
+    store.check_out(out)
     have = store.done_keys(out)
     todo = [s for s in specs if s["run_key"] not in have]
     state = {"total": len(specs), "skipped": len(specs) - len(todo), "done": 0, "failed": 0,

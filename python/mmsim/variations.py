@@ -60,6 +60,8 @@ def draws(key, m):
     rng = np.random.default_rng(int(m.group("seed") or DEFAULT_DIST_SEED))
     if count < 1:
         raise SpecError("--vary %s: xCOUNT must be at least 1" % key)
+    if count > RANGE_MAX_VALUES:
+        raise SpecError("--vary %s: x%d draws, more than %d" % (key, count, RANGE_MAX_VALUES))
     x = rng.normal(a, b, count) if m.group("kind") == "N" else rng.uniform(a, b, count)
     return [float("%.12g" % (scale * v)) for v in x]
 

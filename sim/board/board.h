@@ -113,9 +113,9 @@ typedef struct {
 
 typedef struct board_s board_t;
 
-/* NAME (boards/NAME-VERSION.ini, VERSION without '-', or boards/NAME.ini:
- * the first in sorted order) or a path into out.
- * 0, or -1 with one line in err. */
+/* NAME (boards/NAME.ini, the file's own name; else boards/NAME-VERSION.ini,
+ * VERSION without '-': the first in sorted order) or a path into out.
+ * 0, or -1 with one line in err naming the boards there. */
 int board_find(const char *name, char *out, size_t outn, char *err, size_t errn);
 /* Read a board file. 0, or -1 with one line "FILE:LINE: section.key:
  * reason" (or "FILE: section.key: missing") in err. */

@@ -350,9 +350,9 @@ int board_fits_robot(const board_spec_t *sp, const simcfg_t *c, char *err, size_
 
 static int cmp_str(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
 
-/* The board file NAME-VERSION.ini or NAME.ini in dir/boards that sorts
- * first into best, or "". VERSION has no '-': boards/ukmarsbot-basic-v1.3.ini
- * is the board ukmarsbot-basic's, never --board ukmarsbot's. */
+/* The board file NAME.ini (the file's own name, --board ukmarsbot-v1.3) or
+ * else NAME-VERSION.ini in dir/boards that sorts first into best, or "". VERSION has no '-': boards/ukmarsbot-basic-v1.3.ini is the board
+ * ukmarsbot-basic's, never --board ukmarsbot's. */
 static void find_in(const char *dir, const char *name, char *best, size_t bestn)
 {
     char path[DATADIR_PATH_MAX + 8];
@@ -363,11 +363,34 @@ static void find_in(const char *dir, const char *name, char *best, size_t bestn)
     struct dirent *e;
     while (d && (e = readdir(d)) != NULL) {
         size_t k = strlen(e->d_name);
-        int exact = !strncmp(e->d_name, name, n) && !strcmp(e->d_name + n, ".ini"); /* NAME.ini (boards/bulebule.ini) */
-        if (!exact && (strncmp(e->d_name, name, n) || e->d_name[n] != '-' || k < n + 6 || strcmp(e->d_name + k - 4, ".ini"))) continue;
-        if (!exact && memchr(e->d_name + n + 1, '-', k - 4 - (n + 1))) continue; /* a longer NAME's board */
+        if (k == n + 4 && !strncmp(e->d_name, name, n) && !strcmp(e->d_name + n, ".ini")) { /* the file's own name */
+            snprintf(best, bestn, "%s", e->d_name);
+            break;
+        }
+        if (strncmp(e->d_name, name, n) || e->d_name[n] != '-' || k < n + 6 || strcmp(e->d_name + k - 4, ".ini")) continue;
+        if (memchr(e->d_name + n + 1, '-', k - 4 - (n + 1))) continue; /* a longer NAME's board */
         const char *c = e->d_name;
         if (!best[0] || cmp_str(&c, &(const char *){ best }) < 0) snprintf(best, bestn, "%s", e->d_name);
+    }
+    if (d) closedir(d);
+}
+
+/* The boards in dir/boards appended to list ("NAME-VERSION, ..." sorted by
+ * readdir's order, no repeats), cut to stay one line. */
+static void list_in(const char *dir, char *list, size_t listn)
+{
+    char path[DATADIR_PATH_MAX + 8];
+    if (snprintf(path, sizeof path, "%s%sboards", dir, dir[0] ? "/" : "") >= (int)sizeof path) return;
+    DIR *d = opendir(path);
+    struct dirent *e;
+    while (d && (e = readdir(d)) != NULL) {
+        size_t k = strlen(e->d_name), w = strlen(list);
+        if (k < 5 || e->d_name[0] == '.' || strcmp(e->d_name + k - 4, ".ini")) continue;
+        char stem[256];
+        snprintf(stem, sizeof stem, "%.*s", (int)(k - 4), e->d_name);
+        const char *at = strstr(list, stem);
+        if (at && (at == list || at[-1] == ' ') && (at[strlen(stem)] == ',' || !at[strlen(stem)])) continue;
+        if (snprintf(list + w, listn - w, "%s%s", w ? ", " : "", stem) >= (int)(listn - w)) list[w] = '\0';
     }
     if (d) closedir(d);
 }
@@ -392,6 +415,9 @@ int board_find(const char *name, char *out, size_t outn, char *err, size_t errn)
             (int)(sizeof where - w))
             where[sizeof where - 1] = '\0'; /* cut: the message stays one line */
     }
-    snprintf(err, errn, "--board %s: no %s-*.ini in %s (give the board file's path)", name, name, where);
+    char boards[600] = "";
+    for (int i = 0; i < nd; i++) list_in(dirs[i], boards, sizeof boards);
+    snprintf(err, errn, "--board %s: no %s.ini or %s-VERSION.ini in %s; the boards there: %s (--board NAME or NAME-VERSION,"
+             " or the board file's path)", name, name, name, where, boards[0] ? boards : "none");
     return -1;
 }

@@ -78,6 +78,7 @@ static const keytab_t keys[] = {
     { "rules", "touch_penalty_s", OFF(rules.touch_penalty_s), 0, 0, 600, "s", "the contest file", NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL },
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
+_Static_assert(NKEYS <= CONTEST_KEYS, "contest_t.source has a row per key");
 
 int contest_find(const char *arg, char *path, size_t pathlen, char *err, size_t errlen)
 {
@@ -203,6 +204,49 @@ static int fail_at(const char *text, const char *path, const char *section, cons
     return -1;
 }
 
+/* The `; source:` text in the comment lines right above line (1-based) of
+ * text into out; 0, or -1 if they have none. */
+static int source_above(const char *text, int line, char *out, size_t n)
+{
+    const char *starts[64];
+    int count = 0, l = 1;
+    for (const char *p = text; *p && l < line; l++) { /* the starts of the up to 64 lines before line */
+        starts[count++ % 64] = p;
+        const char *e = strchr(p, '\n');
+        if (!e) break;
+        p = e + 1;
+    }
+    for (int i = 1; i <= count && i <= 64; i++) {
+        const char *s = starts[(count - i) % 64];
+        while (*s == ' ' || *s == '\t') s++;
+        if (*s != ';' && *s != '#') return -1; /* the comment block above the key has ended */
+        const char *t = s + 1;
+        while (*t == ' ' || *t == '\t') t++;
+        if (!strncmp(t, "source:", 7)) {
+            for (t += 7; *t == ' ' || *t == '\t'; t++) {}
+            size_t k = strcspn(t, "\r\n");
+            snprintf(out, n, "%.*s", (int)(k < n ? k : n - 1), t);
+            return 0;
+        }
+    }
+    return -1;
+}
+
+/* Every key given has its source (contests/README.md); kept for contest_print. */
+static int check_sources(const reader_t *r, const char *text, const char *path, char *err, size_t errlen)
+{
+    for (size_t i = 0; i < NKEYS; i++) {
+        if (!((r->seen >> i) & 1)) continue;
+        int kc = 1, vc = 1, line = find_key(text, keys[i].section, keys[i].key, &kc, &vc);
+        if (line > 0 && source_above(text, line, r->c->source[i], sizeof r->c->source[i]) != 0) {
+            snprintf(err, errlen, "%s:%d:%d: %s.%s: no '; source:' line above it (contests/README.md: every key says where its"
+                     " figure comes from, or \"not found\")", path, line, kc, keys[i].section, keys[i].key);
+            return -1;
+        }
+    }
+    return 0;
+}
+
 /* The checks between keys, once every key is read: 0, or -1 after one line. */
 static int check(const reader_t *r, const char *text, const char *path, char *err, size_t errlen)
 {
@@ -252,6 +296,7 @@ int contest_load(contest_t *out, const char *path, char *err, size_t errlen)
     int rc = inifile_parse(&ini, text, len, path, err, errlen);
     if (rc != 0) add_column(&r, text, path, err, errlen);
     else rc = check(&r, text, path, err, errlen);
+    if (rc == 0) rc = check_sources(&r, text, path, err, errlen);
     free(text);
     if (rc != 0) return -1;
     stem(path, work.name, sizeof work.name);
@@ -260,16 +305,49 @@ int contest_load(contest_t *out, const char *path, char *err, size_t errlen)
     return 0;
 }
 
+/* "; source: TEXT\n" of the key, as the file gave it; a key the file left to
+ * its default says so. */
+static void print_source(const contest_t *c, const char *section, const char *key, FILE *out)
+{
+    const keytab_t *k = keytab_find(keys, NKEYS, section, key);
+    const char *src = k ? c->source[k - keys] : "";
+    fprintf(out, "; source: %s\n", src[0] ? src : "not in the file: the default");
+}
+
 void contest_print(const contest_t *c, FILE *out)
 {
-    fprintf(out, "; contest %s (%s): the profile as resolved; the file gives each key's source\n[maze]\n", c->name, c->path);
-    fprintf(out, "max_width = %d\nmax_height = %d\n", c->max_width, c->max_height);
-    fprintf(out, "cell_mm = %.9g\nwall_thick_mm = %.9g\nwall_height_mm = %.9g\npost_mm = %.9g\n", c->cell_m * 1000,
-            c->wall_thick_m * 1000, c->wall_height_m * 1000, c->post_m * 1000);
-    fprintf(out, "centre_post = %d\nstart = %d,%d\nheading = %s\n", c->centre_post, c->start[0], c->start[1], headings[c->heading]);
+    fprintf(out, "; contest %s (%s): the profile as resolved, each key with the source its file gives\n[maze]\n", c->name, c->path);
+    print_source(c, "maze", "max_width", out);
+    fprintf(out, "max_width = %d\n", c->max_width);
+    print_source(c, "maze", "max_height", out);
+    fprintf(out, "max_height = %d\n", c->max_height);
+    print_source(c, "maze", "cell_mm", out);
+    fprintf(out, "cell_mm = %.9g\n", c->cell_m * 1000);
+    print_source(c, "maze", "wall_thick_mm", out);
+    fprintf(out, "wall_thick_mm = %.9g\n", c->wall_thick_m * 1000);
+    print_source(c, "maze", "wall_height_mm", out);
+    fprintf(out, "wall_height_mm = %.9g\n", c->wall_height_m * 1000);
+    print_source(c, "maze", "post_mm", out);
+    fprintf(out, "post_mm = %.9g\n", c->post_m * 1000);
+    print_source(c, "maze", "centre_post", out);
+    fprintf(out, "centre_post = %d\n", c->centre_post);
+    print_source(c, "maze", "start", out);
+    fprintf(out, "start = %d,%d\n", c->start[0], c->start[1]);
+    print_source(c, "maze", "heading", out);
+    fprintf(out, "heading = %s\n", headings[c->heading]);
+    print_source(c, "maze", "goal", out);
     fprintf(out, "goal = %d,%d %d,%d\n\n[rules]\n", c->goal[0], c->goal[1], c->goal[2], c->goal[3]);
-    fprintf(out, "time_limit_s = %.9g\nruns = %d\nscoring = %s\n", c->time_limit_s, c->rules.runs, rules_words[c->rules.rule]);
-    if (c->rules.rule == SCORE_RUN_PLUS_SEARCH) fprintf(out, "search_divisor = %.9g\n", c->rules.search_divisor);
+    print_source(c, "rules", "time_limit_s", out);
+    fprintf(out, "time_limit_s = %.9g\n", c->time_limit_s);
+    print_source(c, "rules", "runs", out);
+    fprintf(out, "runs = %d\n", c->rules.runs);
+    print_source(c, "rules", "scoring", out);
+    fprintf(out, "scoring = %s\n", rules_words[c->rules.rule]);
+    if (c->rules.rule == SCORE_RUN_PLUS_SEARCH) {
+        print_source(c, "rules", "search_divisor", out);
+        fprintf(out, "search_divisor = %.9g\n", c->rules.search_divisor);
+    }
+    print_source(c, "rules", "touch_penalty_s", out);
     fprintf(out, "touch_penalty_s = %.9g\n", c->rules.touch_penalty_s);
 }
 

@@ -30,6 +30,7 @@
 #include "world/race.h"
 
 #define CONTEST_MAX_BYTES (64u * 1024u) /* bytes of a contest file */
+#define CONTEST_KEYS 16 /* room for the keys a contest file has (contest.c's table: 15) */
 
 typedef struct contest_s {
     char name[64];          /* the file's name without folder and .ini */
@@ -42,13 +43,16 @@ typedef struct contest_s {
     int goal[4];            /* goal rectangle x0, y0, x1, y1 (x0 <= x1, y0 <= y1) */
     double time_limit_s;
     score_rules_t rules;    /* runs, scoring rule, search share, touch penalty */
+    char source[CONTEST_KEYS][160]; /* each key's `; source:` text, in the key table's order ("" not given) */
 } contest_t;
 
 /* NAME (no '/', no ".ini"): contests/NAME.ini in the working directory,
  * an installed tree or the source tree (io/datadir.h); else the path as
  * given. 0, or -1 with one line in err. */
 int contest_find(const char *arg, char *path, size_t pathlen, char *err, size_t errlen);
-/* Read the contest file at path into c. 0, or -1 with one line in err. */
+/* Read the contest file at path into c. 0, or -1 with one line in err: among
+ * the reasons, a key given without its `; source:` comment line in the
+ * comment lines right above it (contests/README.md: every key has one). */
 int contest_load(contest_t *c, const char *path, char *err, size_t errlen);
 /* The resolved profile as a contest file (its keys, in the file's units). */
 void contest_print(const contest_t *c, FILE *out);

@@ -7,10 +7,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "io/escape.h"
+#include "io/number.h"
+
 /* "COL: reason" (COL counted from 1); input_add puts "--input:N:" before it. */
 static int fail(char *err, size_t errlen, size_t col, const char *what, const char *word)
 {
-    snprintf(err, errlen, "%zu: %s%s%s", col + 1, what, word ? ": " : "", word ? word : "");
+    char w[IO_ESCAPE_MAX(100)]; /* the user's text: a newline in it must not end our line */
+    if (word) io_escape(w, sizeof w, word, strnlen(word, 100));
+    if (snprintf(err, errlen, "%zu: %s%s%s", col + 1, what, word ? ": " : "", word ? w : "") < 0) err[0] = '\0';
     return -1;
 }
 
@@ -31,11 +36,9 @@ static int add(input_t *in, double t, input_kind_t k, int v, const char *text, c
 /* One number of push's list at p (up to ',' or the end) into v: 0 or -1. */
 static int push_number(const char **p, double *v)
 {
-    char *end;
-    errno = 0;
-    *v = strtod(*p, &end);
-    if (end == *p || errno || !isfinite(*v) || (*end && *end != ',')) return -1;
-    *p = *end ? end + 1 : end;
+    size_t n = strcspn(*p, ",");
+    if (io_decimal(*p, n, v) != 0) return -1;
+    *p += (*p)[n] ? n + 1 : n;
     return 0;
 }
 
@@ -69,9 +72,9 @@ static int action(input_t *in, double t, const char *w, size_t n, char *err, siz
         return add(in, t, INPUT_SEND, 0, word + 5, err, errlen, col);
     }
     if (!strncmp(word, "switches=", 9)) {
-        char *end;
-        long v = strtol(word + 9, &end, 10);
-        if (end == word + 9 || *end || v < 0 || v > 15) return fail(err, errlen, col, "switches=N wants N in 0..15", word);
+        double v;
+        if (io_decimal(word + 9, strlen(word + 9), &v) != 0 || v != floor(v) || v < 0 || v > 15)
+            return fail(err, errlen, col, "switches=N wants N in 0..15", word);
         return add(in, t, INPUT_SWITCHES, (int)v, NULL, err, errlen, col);
     }
     if (!strcmp(word, "button"))
@@ -122,12 +125,11 @@ static int add_spec(input_t *in, const char *spec, char *err, size_t errlen)
         while (*p == ' ' || *p == ';') p++;
         if (!*p) break;
         size_t col = (size_t)(p - spec);
-        char *end;
-        errno = 0;
-        double t = strtod(p, &end);
-        if (end == p || errno || !isfinite(t) || t < 0 || t > 86400 || *end != ' ')
+        size_t tn = strcspn(p, " ;");
+        double t;
+        if (io_decimal(p, tn, &t) != 0 || t < 0 || t > 86400 || p[tn] != ' ')
             return fail(err, errlen, col, "want 'T ACTION' with T in simulation seconds (0..86400)", NULL);
-        p = end;
+        p += tn;
         while (*p == ' ') p++;
         const char *semi = strchr(p, ';');
         size_t n = semi ? (size_t)(semi - p) : strlen(p);

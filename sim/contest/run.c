@@ -25,7 +25,7 @@ static double ms3(double s) { return round(s * 1000.0) / 1000.0; }
 
 int run_load_config(const run_opts_t *o, simcfg_t *c)
 {
-    char err[400];
+    char err[2048]; /* INIFILE_ERR_MAX: an unknown key's line lists the section's every key */
     config_defaults(c);
     if (o->config_text ? config_load_string(c, o->config_text, "<stdin>", err, sizeof err) != 0
                        : o->config_path && config_load(c, o->config_path, err, sizeof err) != 0) {

@@ -175,7 +175,7 @@ static void mms_show(run_t *r, void *self, view_t *v)
 static void mms_headline(const run_t *r, const void *self)
 {
     printf("%s: %ux%u, seed %llu, mms algorithm '%s' (%s walls), score %g\n", r->maze_path, r->maze.width,
-           r->maze.height, (unsigned long long)r->o->seed, r->o->mms.command,
+           r->maze.height, (unsigned long long)r->o->seed, ((const fw_mms_t *)self)->mms.shown,
            r->o->mms.ideal_walls ? "ideal" : "sensed", (double)mms_stats_score(&((const fw_mms_t *)self)->mms.stats));
 }
 

@@ -2,7 +2,10 @@
  * folder, then rename over the target, so a reader never sees a file
  * half written and a failed write leaves nothing behind (an existing file
  * at the target stays as it was). Several files that belong together are
- * all written (outfile_finish) before any is renamed (outfile_rename). */
+ * all written (outfile_finish) before any is renamed (outfile_rename).
+ * A SIGINT, SIGTERM or SIGHUP removes every temporary still open (the
+ * first outfile_open installs the handler where the signal's action is
+ * the default); SIGKILL cannot be caught: its temporaries stay. */
 #ifndef OUTFILE_H
 #define OUTFILE_H
 
@@ -33,5 +36,8 @@ int outfile_finish(outfile_t *o, char *err, size_t errlen);
 int outfile_rename(outfile_t *o, char *err, size_t errlen);
 /* Close (if open) and remove the temporary. */
 void outfile_abort(outfile_t *o);
+/* Remove every temporary still open; async-signal-safe, for a program's
+ * own handler of a fatal signal and for an exit on a broken pipe. */
+void outfile_unlink_live(void);
 
 #endif

@@ -1,17 +1,35 @@
 /* stdstream.c - a tool's standard output, checked (see stdstream.h).
  * stdout is replaced by a glibc cookie stream (fopencookie; the GNU C
  * Library lets a program assign stdout) whose write loops over write(2)
- * on descriptor 1 and keeps the errno of the first failure. */
+ * on descriptor 1 and keeps the errno of the first failure. SIGPIPE and
+ * SIGXFSZ are ignored: a closed pipe or a file over its size limit is a
+ * write that fails (EPIPE, EFBIG), reported as every other. */
 #define _GNU_SOURCE
 #include "stdstream.h"
 
+#include "outfile.h"
+
 #include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
 
 static int first_errno; /* of the first write or close that failed; 0 none */
 static int installed;
+static const char *prog_name = "mmsim";
+
+/* The reader of a pipe has gone (`| head`): nothing more can reach it, so
+ * the tool stops now, one line and the external-failure exit code, its
+ * temporaries removed (exit() would flush this stream again). */
+static void on_broken_pipe(void)
+{
+    char line[128];
+    int n = snprintf(line, sizeof line, "%s: stdout: %s\n", prog_name, strerror(EPIPE));
+    if (n > 0 && write(STDERR_FILENO, line, (size_t)n) < 0) { /* nothing left to tell it to */ }
+    outfile_unlink_live();
+    _exit(3);
+}
 
 static ssize_t fd1_write(void *cookie, const char *buf, size_t size)
 {
@@ -19,6 +37,7 @@ static ssize_t fd1_write(void *cookie, const char *buf, size_t size)
     while (done < size) {
         ssize_t k = write(STDOUT_FILENO, buf + done, size - done);
         if (k < 0 && errno == EINTR) continue;
+        if (k < 0 && errno == EPIPE) on_broken_pipe();
         if (k <= 0) {
             if (!first_errno) first_errno = k < 0 ? errno : EIO;
             return -1;
@@ -37,8 +56,11 @@ static int fd1_close(void *cookie)
     return 0;
 }
 
-void io_stdout_open(void)
+void io_stdout_open(const char *prog)
 {
+    prog_name = prog;
+    signal(SIGPIPE, SIG_IGN);
+    signal(SIGXFSZ, SIG_IGN);
     static const cookie_io_functions_t fns = { .read = NULL, .write = fd1_write, .seek = NULL, .close = fd1_close };
     fflush(stdout);
     FILE *f = fopencookie(NULL, "w", fns);

@@ -4,6 +4,8 @@
 #define _GNU_SOURCE /* ppoll */
 #include "guard.h"
 
+#include "io/outfile.h"
+
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -228,6 +230,7 @@ void guard_stop_from_signal(void)
 static void on_fatal_signal(int sig)
 {
     guard_stop_from_signal();
+    outfile_unlink_live(); /* the run's temporary outputs (--lcm-log, --report) */
     signal(sig, SIG_DFL);
     raise(sig);
 }

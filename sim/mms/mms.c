@@ -125,6 +125,8 @@ void mms_init(mms_t *m, const mms_opts_t *o, const maze_t *truth)
     guard_init(&m->guard);
     m->exit_code = -1;
     m->reason = "running";
+    const char *c = o->command ? o->command : "";
+    io_escape(m->shown, sizeof m->shown, c, strnlen(c, 64));
     mms_stats_init(&m->stats);
 }
 
@@ -659,9 +661,9 @@ static int child_gone(mms_t *m)
 {
     char how[64];
     if (!shell_exited(m, m->o.timeout_ms / 1000.0))
-        return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' closed its output but did not exit", m->o.command);
+        return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' closed its output but did not exit", m->shown);
     if (m->exit_code == 0) return end_run(m, "mms_exited", NULL);
-    return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' %s", m->o.command, how_it_ended(m, how, sizeof how));
+    return end_run(m, "mms_failed", "mmsim: mms: the algorithm '%s' %s", m->shown, how_it_ended(m, how, sizeof how));
 }
 
 static void trace(const mms_t *m, const struct sim_state_s *s, const char *dir, const char *text)
@@ -710,22 +712,22 @@ static int read_line(mms_t *m, char *line)
         }
         if (m->len >= MMS_LINE_MAX)
             return end_run(m, "mms_garbage", "mmsim: mms: the algorithm '%s' printed a line longer than %d bytes",
-                           m->o.command, MMS_LINE_MAX);
+                           m->shown, MMS_LINE_MAX);
         double left_ms = m->o.timeout_ms - (now_s() - t0) * 1000.0;
         if (left_ms <= 0) {
             char how[64];
             if (shell_exited(m, 0)) /* e.g. 'algo & exit 0': a process it started holds the pipe */
                 return end_run(m, "mms_timeout",
                                "mmsim: mms: the algorithm '%s' %s, but a process it started keeps its output open "
-                               "and sent no command for %d ms", m->o.command, how_it_ended(m, how, sizeof how),
+                               "and sent no command for %d ms", m->shown, how_it_ended(m, how, sizeof how),
                                m->o.timeout_ms);
             return end_run(m, "mms_timeout", "mmsim: mms: the algorithm '%s' sent no command for %d ms",
-                           m->o.command, m->o.timeout_ms);
+                           m->shown, m->o.timeout_ms);
         }
         struct pollfd p[2] = { { m->from_child, POLLIN, 0 }, { m->err_fd, POLLIN, 0 } }; /* fd -1: not polled */
         int r = poll(p, 2, (int)ceil(left_ms));
         if (r < 0 && errno != EINTR)
-            return end_run(m, "mms_failed", "mmsim: mms: poll on the algorithm '%s' failed: %s", m->o.command, strerror(errno));
+            return end_run(m, "mms_failed", "mmsim: mms: poll on the algorithm '%s' failed: %s", m->shown, strerror(errno));
         if (r > 0 && p[1].revents) forward_stderr(m);
         if (r <= 0 || !p[0].revents) continue;
         ssize_t k = read(m->from_child, m->buf + m->len, MMS_LINE_MAX - m->len);
@@ -737,7 +739,7 @@ static int read_line(mms_t *m, char *line)
             return child_gone(m);
         }
         if (k < 0 && errno != EAGAIN && errno != EINTR)
-            return end_run(m, "mms_failed", "mmsim: mms: reading from the algorithm '%s' failed: %s", m->o.command, strerror(errno));
+            return end_run(m, "mms_failed", "mmsim: mms: reading from the algorithm '%s' failed: %s", m->shown, strerror(errno));
         if (k > 0) m->len += (size_t)k;
     }
 }
@@ -822,7 +824,7 @@ int mms_service(mms_t *m, struct sim_state_s *s)
         if (r != GO_ON) return r;
         if (m->since_move >= MMS_FLOOD_LIMIT)
             return end_run(m, "mms_flood", "mmsim: mms: the algorithm '%s' sent %ld commands without a move",
-                           m->o.command, MMS_FLOOD_LIMIT);
+                           m->shown, MMS_FLOOD_LIMIT);
         if (read_line(m, line) != MMS_STEP) return MMS_END;
         long inv = m->invalid;
         int move = mms_execute(m, s, line, resp, sizeof resp);
@@ -832,7 +834,7 @@ int mms_service(mms_t *m, struct sim_state_s *s)
             return end_run(m, "mms_idle",
                            "mmsim: mms: the algorithm '%s' waits for Reset (wasReset %d times without a move) and "
                            "none is coming: run ended (--mms-reset-at S or idle presses it)",
-                           m->o.command, MMS_IDLE_POLLS);
+                           m->shown, MMS_IDLE_POLLS);
         if (move) { /* a move: answered when done */
             m->move_start_s = sim_time_s(s);
             continue;
@@ -842,7 +844,7 @@ int mms_service(mms_t *m, struct sim_state_s *s)
             int w = send_line(m, resp);
             if (w == -2)
                 return end_run(m, "mms_timeout", "mmsim: mms: the algorithm '%s' does not read its input (%d ms)",
-                               m->o.command, m->o.timeout_ms);
+                               m->shown, m->o.timeout_ms);
             if (w != 0) return child_gone(m);
         }
     }
@@ -850,12 +852,15 @@ int mms_service(mms_t *m, struct sim_state_s *s)
 
 void mms_stop(mms_t *m)
 {
+    /* everything the algorithm started, killed and reaped by its guardian
+     * (guard.h), also what left its process group or session; its pipes
+     * closed only then, as mms kills its algorithm's process (QProcess::kill)
+     * with them open: an algorithm still running never sees a closed pipe
+     * (no BrokenPipeError or EOF traceback from it in the run's stderr) */
+    guard_stop(&m->guard);
     if (m->to_child >= 0) close(m->to_child);
     if (m->from_child >= 0) close(m->from_child);
     m->to_child = m->from_child = -1;
-    /* everything the algorithm started, killed and reaped by its guardian
-     * (guard.h), also what left its process group or session */
-    guard_stop(&m->guard);
     shell_exited(m, 0);
     forward_stderr(m); /* its last words, to the end (nothing writes any more) */
     if (m->err_fd >= 0) close(m->err_fd);

@@ -37,6 +37,7 @@
 
 #include "maze.h"
 #include "guard.h"
+#include "io/escape.h"
 
 struct sim_state_s;
 
@@ -109,6 +110,7 @@ typedef struct mms_s {
     int exit_signal;       /* the signal that killed it, 0 if none */
     const char *reason;    /* exit_reason for the JSON */
     char message[300];     /* one line for stderr, "" = none */
+    char shown[IO_ESCAPE_MAX(64)]; /* the command as messages print it: control bytes escaped, at most 64 bytes */
     long commands, invalid, since_move, moves, crashes, resets;
     long idle_polls;       /* wasReset answered false since the last move */
     int idle;              /* it idles and no Reset is coming: the run ends (mms_idle) */

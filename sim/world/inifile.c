@@ -22,7 +22,7 @@ typedef struct {
     const inifile_t *r;
     const char *name;
     int err_line;       /* the scan's first error's line, 0: none */
-    char err[400];      /* its message, "NAME:LINE: reason" */
+    char err[INIFILE_ERR_MAX]; /* its message, "NAME:LINE: reason" */
     char section[INIFILE_MAX_LINE + 1];
     char prev_key[INIFILE_MAX_LINE + 1]; /* the last key since the last [section], "" if none */
     GHashTable *keys;   /* "section\nkey" -> the line that gave it */
@@ -30,7 +30,7 @@ typedef struct {
 
 int inifile_verror(char *err, size_t errlen, const char *name, int line, const char *fmt, va_list ap)
 {
-    char why[300];
+    char why[INIFILE_ERR_MAX];
     vsnprintf(why, sizeof why, fmt, ap);
     if (line > 0) snprintf(err, errlen, "%s:%d: %s", name, line, why);
     else snprintf(err, errlen, "%s: %s", name, why);
@@ -150,7 +150,7 @@ static void scan_text(scan_t *s, const char *text, size_t len)
 typedef struct {
     const inifile_t *r;
     int failed;       /* a key handler failed: why holds its reason */
-    char why[300];
+    char why[INIFILE_ERR_MAX];
 } keys_t;
 
 static int on_key(void *user, const char *section, const char *key, const char *val)

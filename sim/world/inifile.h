@@ -25,6 +25,9 @@
 /* bytes of a line without its CR LF: libinih's line buffer (INI_MAX_LINE,
  * 200) holds them and a NUL (inifile.c checks the two agree) */
 #define INIFILE_MAX_LINE 197
+/* bytes of an error line: room for "unknown key" and every key name a
+ * section has (a chassis has about 40) */
+#define INIFILE_ERR_MAX 2048
 
 typedef struct {
     /* Each "[section]" line (the text between the brackets) in the file's

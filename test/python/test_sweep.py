@@ -237,3 +237,100 @@ def test_folder_reads_whole_when_a_part_has_only_nulls(tmp_path):
     assert df["best_run_s"].tolist()[2:] == [12.5, 11.0] and df["best_run_s"].isna().tolist()[:2] == [True, True]
     assert df["run_error"].tolist()[2] == "exit 3"
     pd.testing.assert_frame_equal(df, mmsim.store.read(out).sort_values("run_key").reset_index(drop=True), check_dtype=False)
+
+
+def quick(out, extra=(), mazes=(MAZES[0],), timeout=60):
+    """mmsweep with a small plan: (CompletedProcess, seconds it took)."""
+    t0 = time.monotonic()
+    q = subprocess.run(MMSWEEP + ["--mazes"] + list(mazes) + ["--seeds", "1-2", "--driver", "scripted", "--out", out,
+                                                              "--mmsim", MMSIM] + list(extra),
+                       cwd=REPO, capture_output=True, text=True, timeout=timeout)
+    return q, time.monotonic() - t0
+
+
+def one_line(q, rc):
+    assert q.returncode == rc, q.stderr
+    assert len(q.stderr.splitlines()) == 1 and q.stderr.startswith("mmsweep: "), q.stderr
+    assert "Traceback" not in q.stderr
+
+
+@pytest.mark.parametrize("extra,says", [
+    (["--driver", "bogus"], "--driver 'bogus': mmsim: --driver: expected firmware or scripted"),
+    (["--time-limit", "-5"], "--time-limit -5.0: want seconds from 1 to 86400"),
+    (["--time-limit", "0"], "--time-limit 0.0: want seconds from 1 to 86400"),
+    (["--", "--bogus-flag"], "unknown option: '--bogus-flag'"),
+    (["--seeds", "1-100000000"], "100000000 seeds, more than the 100000 runs a sweep holds"),
+    (["--vary", "motor.left.gear_ratio=29.86*N(1,0.01)x100000000"], "x100000000 draws, more than 100000"),
+])
+def test_bad_input_is_one_line_before_any_run(tmp_path, extra, says):
+    out = str(tmp_path / "bad.parquet")
+    q, took = quick(out, extra)
+    one_line(q, 2)
+    assert says in q.stderr and not os.path.exists(out), q.stderr
+    assert took < 30, "%.1f s before the refusal" % took  # 10^8 seeds refused up front, not built
+
+
+def test_junk_maze_is_one_line_before_any_run(tmp_path):
+    junk = tmp_path / "junk.txt"
+    junk.write_text("not a maze\n")
+    out = str(tmp_path / "bad.parquet")
+    q, _ = quick(out, mazes=[MAZES[0], str(junk)])
+    one_line(q, 2)
+    assert "junk.txt:1:1: " in q.stderr and not os.path.exists(out), q.stderr
+
+
+def test_outputs_that_cannot_be(tmp_path):
+    (tmp_path / "file.parquet").write_text("not parquet\n")
+    (tmp_path / "junkdir").mkdir()
+    (tmp_path / "junkdir" / "part-1-1-000001.parquet").write_text("junk")
+    for out, rc, says in (("/proc/mmsweep-test.parquet", 3, "cannot write"),
+                          (str(tmp_path / "file.parquet"), 2, "a file; --out is a folder"),
+                          (str(tmp_path / "junkdir"), 2, "not a Parquet results folder")):
+        q, _ = quick(out)
+        one_line(q, rc)
+        assert says in q.stderr, q.stderr
+    q = subprocess.run(MMSWEEP + ["plot", str(tmp_path / "file.parquet"), "-o", str(tmp_path / "x.png")],
+                       capture_output=True, text=True, timeout=60)
+    one_line(q, 2)
+
+
+def test_unreachable_scheduler_is_exit_3_in_bounded_time(tmp_path):
+    q, took = quick(str(tmp_path / "u.parquet"), ["--scheduler", "tcp://127.0.0.1:1"])
+    one_line(q, 3)
+    assert "not reached in 10 s" in q.stderr and took < 30, (took, q.stderr)
+
+
+def test_interrupted_before_any_run_says_nothing_written(tmp_path):
+    out = str(tmp_path / "n.parquet")
+    p = subprocess.Popen(MMSWEEP + ["--mazes", MAZES[0], "--seeds", "1-2", "--driver", "scripted", "--time-limit", "60",
+                                    "--out", out, "--mmsim", MMSIM, "--", "--realtime"],
+                         cwd=REPO, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    time.sleep(6)  # the plan made, the runs under way (60 s each, in real time)
+    p.send_signal(signal.SIGTERM)
+    _, err = p.communicate(timeout=60)
+    assert p.returncode == 130, err
+    assert not glob.glob(out + "/part-*.parquet")
+    assert "nothing written" in err and "the runs done are in" not in err, err
+
+
+NO_GUARD = """
+import sys
+sys.path.insert(0, %r)
+import mmsim
+df = mmsim.sweep([%r], "1-3", drivers=["scripted"], time_limit_s=5, mmsim=%r)
+print("rows", len(df), "errors", int(df["run_error"].notna().sum()))
+"""
+
+
+@pytest.mark.parametrize("how", ["script", "stdin"])
+def test_sweep_from_a_script_without_the_main_guard(tmp_path, how):
+    """No `if __name__ == "__main__"` guard, or the script on stdin: the local
+    workers are threads (each run is a process of its own), so nothing
+    re-imports the script."""
+    text = NO_GUARD % (os.path.join(REPO, "python"), os.path.join(REPO, MAZES[0]), MMSIM)
+    script = tmp_path / "noguard.py"
+    script.write_text(text)
+    argv, stdin = ([sys.executable, str(script)], None) if how == "script" else ([sys.executable, "-"], text)
+    q = subprocess.run(argv, input=stdin, cwd=str(tmp_path), capture_output=True, text=True, timeout=90)
+    assert q.returncode == 0 and "rows 3 errors 0" in q.stdout, q.stderr[-2000:]
+    assert "RuntimeError" not in q.stderr and "leaked semaphore" not in q.stderr, q.stderr[-2000:]
