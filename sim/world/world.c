@@ -92,7 +92,7 @@ static int ode_ready;
 
 static dGeomID static_box(world_t *w, double x, double y, double lx, double ly)
 {
-    double h = w->model->cfg->world.wall_height_m;
+    double h = w->model->arena.wall_height_m;
     dGeomID g = dCreateBox(w->statics, lx, ly, h);
     dGeomSetPosition(g, x, y, h / 2);
     dGeomSetCategoryBits(g, CAT_STATIC);
@@ -107,12 +107,12 @@ static dGeomID static_box(world_t *w, double x, double y, double lx, double ly)
  * out of memory. */
 static int build_maze(world_t *w, const maze_t *m)
 {
-    const simcfg_t *cf = w->model->cfg;
+    const simcfg_world_t *a = &w->model->arena;
     size_t most = (size_t)(m->width + 1) * (size_t)(m->height + 1) * 3u; /* posts, and two walls a post at most */
     w->wall = malloc(sizeof *w->wall * most);
     w->wall_bounds = malloc(sizeof *w->wall_bounds * most);
     if (!w->wall || !w->wall_bounds) return -1;
-    double cell = cf->world.cell_m, post = cf->world.post_m, thick = cf->world.wall_thick_m;
+    double cell = a->cell_m, post = a->post_m, thick = a->wall_thick_m;
     int cx = m->width % 2 == 0 ? m->width / 2 : -1, cy = m->height % 2 == 0 ? m->height / 2 : -1;
     for (int py = 0; py <= m->height; py++)
         for (int px = 0; px <= m->width; px++) {
@@ -195,20 +195,20 @@ static void frame_point(double x, double y, double heading, const double p[3], d
  * and mb is moved to it: ODE wants the centre of mass at the body's origin. */
 static void chassis_mass(const world_t *w, dMass *mb, double com[3])
 {
-    const simcfg_t *c = w->model->cfg;
+    const sim_chassis_t *c = &w->model->chassis;
     const double *bc = w->model->body_com_m;
     dMass mc;
-    dMassSetBoxTotal(mb, c->robot.body_mass_kg, c->robot.body_w_m, c->robot.body_l_m, c->robot.body_h_m);
-    if (c->robot.body_yaw_inertia_kgm2 > 0) mb->I[2 * 4 + 2] = c->robot.body_yaw_inertia_kgm2;
+    dMassSetBoxTotal(mb, c->body_mass_kg, c->body_w_m, c->body_l_m, c->body_h_m);
+    if (c->body_yaw_inertia_kgm2 > 0) mb->I[2 * 4 + 2] = c->body_yaw_inertia_kgm2;
     dMassTranslate(mb, bc[0], bc[1], bc[2]);
     for (int k = 0; k < w->model->casters && k < 2; k++) {
-        dMassSetSphereTotal(&mc, c->robot.caster_mass_kg, c->robot.caster_r_m);
-        dMassTranslate(&mc, 0, k == 0 ? c->robot.caster_y_m : c->robot.caster2_y_m, c->robot.caster_r_m);
+        dMassSetSphereTotal(&mc, c->caster_mass_kg, c->caster_r_m);
+        dMassTranslate(&mc, 0, c->caster_y_m[k], c->caster_r_m);
         dMassAdd(mb, &mc);
     }
     for (int s = 0; s < 2 && w->spin; s++) { /* spin bodies: the wheels ride in the chassis, their inertia about the axle too (spin_advance's note); their spin relative to it is the spin body's */
-        dMassSetCylinderTotal(&mc, c->robot.wheel_mass_kg, 1, w->model->wheel_r_m[s], c->robot.wheel_w_m);
-        dMassTranslate(&mc, s == WORLD_LEFT ? -c->robot.wheel_x_m : c->robot.wheel_x_m, c->robot.axle_y_m, w->model->wheel_r_m[s]);
+        dMassSetCylinderTotal(&mc, c->wheel_mass_kg, 1, w->model->wheel_r_m[s], c->wheel_w_m);
+        dMassTranslate(&mc, s == WORLD_LEFT ? -c->wheel_x_m : c->wheel_x_m, c->axle_y_m, w->model->wheel_r_m[s]);
         dMassAdd(mb, &mc);
     }
     for (int k = 0; k < 3; k++) com[k] = mb->c[k];
@@ -218,7 +218,7 @@ static void chassis_mass(const world_t *w, dMass *mb, double com[3])
 /* A skid: a sphere on the chassis at y_m along it, touching the floor. */
 static dGeomID caster_geom(world_t *w, double y_m)
 {
-    double r = w->model->cfg->robot.caster_r_m;
+    double r = w->model->chassis.caster_r_m;
     dGeomID g = dCreateSphere(w->robot, r);
     dGeomSetBody(g, w->chassis);
     dGeomSetOffsetPosition(g, 0 - w->com[0], y_m - w->com[1], r - w->com[2]);
@@ -269,8 +269,8 @@ static void loosen(world_t *w, dGeomID g, const double at_m[3], const dReal *rot
  * the casters as its geoms, offset from it. */
 static void build_chassis(world_t *w, double x, double y, double heading)
 {
-    const simcfg_t *c = w->model->cfg;
-    double box_z = c->robot.body_clearance_m + c->robot.body_h_m / 2, com_w[3];
+    const sim_chassis_t *c = &w->model->chassis;
+    double box_z = c->body_clearance_m + c->body_h_m / 2, com_w[3];
     dMass mb;
     dMatrix3 rot;
     chassis_mass(w, &mb, w->com);
@@ -283,9 +283,9 @@ static void build_chassis(world_t *w, double x, double y, double heading)
     w->box_offset[0] = 0 - w->com[0];
     w->box_offset[1] = 0 - w->com[1];
     w->box_offset[2] = box_z - w->com[2];
-    w->reach_m = 0.5 * hypot(c->robot.body_w_m, c->robot.body_l_m) + fabs(w->com[1]);
+    w->reach_m = 0.5 * hypot(c->body_w_m, c->body_l_m) + fabs(w->com[1]);
 
-    w->box = dCreateBox(w->robot, c->robot.body_w_m, c->robot.body_l_m, c->robot.body_h_m);
+    w->box = dCreateBox(w->robot, c->body_w_m, c->body_l_m, c->body_h_m);
     dGeomSetCategoryBits(w->box, CAT_ROBOT);
     dGeomSetCollideBits(w->box, CAT_STATIC | CAT_FLOOR);
     if (w->spin) {
@@ -294,17 +294,17 @@ static void build_chassis(world_t *w, double x, double y, double heading)
         dGeomSetBody(w->box, w->chassis);
         dGeomSetOffsetPosition(w->box, w->box_offset[0], w->box_offset[1], w->box_offset[2]);
     }
-    w->caster = caster_geom(w, c->robot.caster_y_m);
-    w->caster2 = w->model->casters > 1 ? caster_geom(w, c->robot.caster2_y_m) : NULL;
+    w->caster = caster_geom(w, c->caster_y_m[0]);
+    w->caster2 = w->model->casters > 1 ? caster_geom(w, c->caster_y_m[1]) : NULL;
 }
 
 /* Where wheel s's centre is in the chassis frame (its own radius above
  * the floor). */
 static void wheel_point(const world_t *w, int s, double p[3])
 {
-    const simcfg_t *c = w->model->cfg;
-    p[0] = s == WORLD_LEFT ? -c->robot.wheel_x_m : c->robot.wheel_x_m;
-    p[1] = c->robot.axle_y_m;
+    const sim_chassis_t *c = &w->model->chassis;
+    p[0] = s == WORLD_LEFT ? -c->wheel_x_m : c->wheel_x_m;
+    p[1] = c->axle_y_m;
     p[2] = w->model->wheel_r_m[s];
 }
 
@@ -326,15 +326,13 @@ static void wheel_rotation(double heading, const double *angle_rad, dMatrix3 out
  * through the gearbox as J * N^2) at its centre. */
 static void hinge_wheel_body(world_t *w, int s, const double at_w[3], double heading)
 {
-    const simcfg_t *c = w->model->cfg;
-    const drive_spec_t *dr = &c->robot.drive[s];
+    const sim_chassis_t *c = &w->model->chassis;
     dMass m;
     dMatrix3 r;
     w->wheel[s] = dBodyCreate(w->world);
     /* cylinder axis along z: the mass is set in the wheel frame */
-    dMassSetCylinderTotal(&m, c->robot.wheel_mass_kg, 3, w->model->wheel_r_m[s], c->robot.wheel_w_m);
-    if (dr->rotor_inertia_kgm2 > 0 && w->model->motor_model[s] != MOTOR_MODEL_PAPER)
-        m.I[2 * 4 + 2] += dr->rotor_inertia_kgm2 * dr->gear_ratio * dr->gear_ratio;
+    dMassSetCylinderTotal(&m, c->wheel_mass_kg, 3, w->model->wheel_r_m[s], c->wheel_w_m);
+    if (w->model->rotor_j_kgm2[s] > 0) m.I[2 * 4 + 2] += w->model->rotor_j_kgm2[s];
     dBodySetMass(w->wheel[s], &m);
     /* No gyroscopic term on a wheel. ODE's implicit one damps a wheel that
      * spins while the chassis yaws by an amount that grows with the step
@@ -361,7 +359,7 @@ static void hinge_wheel_geoms(world_t *w, int s)
     dGeomSetBody(w->wheel_geom[s], w->wheel[s]);
     dGeomSetCategoryBits(w->wheel_geom[s], CAT_TYRE);
     dGeomSetCollideBits(w->wheel_geom[s], CAT_FLOOR);
-    w->wheel_side[s] = dCreateCylinder(w->robot, r, w->model->cfg->robot.wheel_w_m);
+    w->wheel_side[s] = dCreateCylinder(w->robot, r, w->model->chassis.wheel_w_m);
     dGeomSetBody(w->wheel_side[s], w->wheel[s]);
     dGeomSetCategoryBits(w->wheel_side[s], CAT_WHEEL_SIDE);
     dGeomSetCollideBits(w->wheel_side[s], CAT_STATIC);
@@ -396,15 +394,14 @@ static void hinge_wheel_joints(world_t *w, int s, const double anchor_w[3])
  * (+ rolling forward), as a hinge's rate. */
 static void wheel_body(world_t *w, int s)
 {
-    const simcfg_t *c = w->model->cfg;
-    const drive_spec_t *dr = &c->robot.drive[s];
+    const sim_chassis_t *c = &w->model->chassis;
     dMass m;
-    double r = w->model->wheel_r_m[s], j = 0.5 * c->robot.wheel_mass_kg * r * r;
-    if (dr->rotor_inertia_kgm2 > 0 && w->model->motor_model[s] != MOTOR_MODEL_PAPER) j += dr->rotor_inertia_kgm2 * dr->gear_ratio * dr->gear_ratio;
+    double r = w->model->wheel_r_m[s], j = 0.5 * c->wheel_mass_kg * r * r;
+    if (w->model->rotor_j_kgm2[s] > 0) j += w->model->rotor_j_kgm2[s];
     w->wheel[s] = dBodyCreate(w->world);
     dMassSetParameters(&m, WORLD_SPIN_HEAVY, 0, 0, 0, j, WORLD_SPIN_HEAVY, WORLD_SPIN_HEAVY, 0, 0, 0);
     w->spin_j[s] = j;
-    w->wheel_j[s] = 0.5 * c->robot.wheel_mass_kg * r * r;
+    w->wheel_j[s] = 0.5 * c->wheel_mass_kg * r * r;
     dBodySetMass(w->wheel[s], &m);
     dBodySetGravityMode(w->wheel[s], 0);
     /* No gyroscopic term on a wheel (its spin is relative to the chassis,
@@ -431,7 +428,7 @@ static void wheel_geoms(world_t *w, int s, const double at[3])
     dGeomSetOffsetPosition(w->wheel_geom[s], at[0] - w->com[0], at[1] - w->com[1], at[2] - w->com[2]);
     dGeomSetCategoryBits(w->wheel_geom[s], CAT_TYRE);
     dGeomSetCollideBits(w->wheel_geom[s], CAT_FLOOR);
-    w->wheel_side[s] = dCreateCylinder(w->robot, r, w->model->cfg->robot.wheel_w_m);
+    w->wheel_side[s] = dCreateCylinder(w->robot, r, w->model->chassis.wheel_w_m);
     const double side_at[3] = { at[0] - w->com[0], at[1] - w->com[1], at[2] - w->com[2] };
     dRFromAxisAndAngle(axle, 0, 1, 0, M_PI / 2); /* the cylinder's z to the chassis' x */
     dGeomSetCategoryBits(w->wheel_side[s], CAT_WHEEL_SIDE);
@@ -647,16 +644,16 @@ world_t *world_create(const sim_model_t *model, const maze_t *m, double x_m, dou
     /* quickstep shuffles constraints with ODE's global PRNG: reseed it so
      * every world steps the same way, whatever ran before it */
     dRandSetSeed(1);
-    const simcfg_t *c = model->cfg;
+    const simcfg_world_t *c = &model->arena;
     w->model = model;
-    w->spin = model->cfg->sim.wheels == SIM_WHEELS_SPIN;
+    w->spin = model->wheels == SIM_WHEELS_SPIN;
     w->world = dWorldCreate();
     dWorldSetGravity(w->world, 0, 0, -9.81);
     dWorldSetQuickStepNumIterations(w->world, model->solver_iterations);
     dWorldSetCFM(w->world, 1e-6); /* joints (hinges): near rigid */
     dWorldSetERP(w->world, 0.4);  /* joint drift corrected in ~2 steps */
     w->top = dSimpleSpaceCreate(0);
-    double wx = m->width * c->world.cell_m, wy = m->height * c->world.cell_m, ext = fmax(wx, wy) + 0.1;
+    double wx = m->width * c->cell_m, wy = m->height * c->cell_m, ext = fmax(wx, wy) + 0.1;
     dVector3 centre = { wx / 2, wy / 2, 0, 0 }, extents = { ext, ext, ext, 0 };
     w->statics = dQuadTreeSpaceCreate(w->top, centre, extents, 5);
     dGeomSetCategoryBits((dGeomID)w->statics, CAT_STATIC);
@@ -684,7 +681,7 @@ world_t *world_create(const sim_model_t *model, const maze_t *m, double x_m, dou
     dGeomSetCategoryBits(w->ray, CAT_RAY);
     dGeomSetCollideBits(w->ray, CAT_STATIC);
     dGeomRaySetClosestHit(w->ray, 1);
-    if (!c->world.centre_post) world_set_centre_post(w, 0);
+    if (!c->centre_post) world_set_centre_post(w, 0);
     return w;
 }
 
@@ -718,7 +715,7 @@ static unsigned contact_kind(const world_t *w, dGeomID a, const dReal *p)
     if (a != w->box) return a == w->caster || a == w->caster2 ? 1u << WORLD_CONTACT_FRONT : 1u << WORLD_CONTACT_SIDE;
     dVector3 q;
     dBodyGetPosRelPoint(w->chassis, p[0], p[1], p[2], q);
-    double y = q[1] + w->com[1], half = w->model->cfg->robot.body_l_m / 2, edge = 0.002; /* m */
+    double y = q[1] + w->com[1], half = w->model->chassis.body_l_m / 2, edge = 0.002; /* m */
     if (y > half - edge) return 1u << WORLD_CONTACT_FRONT;
     if (y >= -half + edge) return 1u << WORLD_CONTACT_SIDE;
     double v, om;
@@ -735,7 +732,7 @@ static int body_near(const world_t *w, double margin_m)
     dGeomBoxGetLengths(w->box, len);
     const double c[3] = { p[0], p[1], p[2] }, half[3] = { len[0] / 2, len[1] / 2, len[2] / 2 };
     const double axis[3][3] = { { R[0], R[4], R[8] }, { R[1], R[5], R[9] }, { R[2], R[6], R[10] } };
-    return wallgrid_any_box(w->grid, c, axis, half, 0, w->model->cfg->world.wall_height_m, margin_m);
+    return wallgrid_any_box(w->grid, c, axis, half, 0, w->model->arena.wall_height_m, margin_m);
 }
 
 #define WORLD_BOX_SLACK_M 1e-6 /* parts_bounds and box_floor's lowest corner allow this much more, m: beyond any rounding of ODE's own bounds */
@@ -792,7 +789,7 @@ static int clear_of_walls(world_t *w, double margin_m, int tyres)
  * force mixing"), so the N/m and N*s/m hold at every step. */
 static void soft_contact(const world_t *w, dGeomID a, int wall, int n, dContact *c)
 {
-    const simcfg_world_t *k = &w->model->cfg->world;
+    const simcfg_world_t *k = &w->model->arena;
     double kp = k->wall_kp_n_m, kd = k->wall_kd_n_s_m, h = w->h_s;
     if (!wall && (a == w->wheel_geom[0] || a == w->wheel_geom[1])) kp = k->tyre_kp_n_m, kd = k->tyre_kd_n_s_m;
     else if (!wall && (a == w->caster || a == w->caster2)) kp = k->caster_kp_n_m, kd = k->caster_kd_n_s_m;
@@ -854,16 +851,16 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
         for (int i = 0; i < n; i++) w->wall_depth_m = fmax(w->wall_depth_m, c[i].geom.depth);
     }
     for (int i = 0; i < n; i++) {
-        double mu = w->model->cfg->world.body_wall_mu;
+        double mu = w->model->arena.body_wall_mu;
         if (a == w->caster || a == w->caster2) {
-            mu = w->model->cfg->robot.skid_mu; /* a skid slides: Coulomb friction */
+            mu = w->model->chassis.skid_mu; /* a skid slides: Coulomb friction */
         } else if (!wall && (a == w->wheel_geom[0] || a == w->wheel_geom[1])) {
             int side = a == w->wheel_geom[WORLD_LEFT] ? WORLD_LEFT : WORLD_RIGHT;
             dVector3 v, vs = { 0, 0, 0, 0 }; /* the tyre's point; with spin bodies the chassis' motion less the spin body's (below) */
             dBodyGetPointVel(dGeomGetBody(a), c[i].geom.pos[0], c[i].geom.pos[1], c[i].geom.pos[2], v);
             if (w->spin) dBodyGetPointVel(w->wheel[side], c[i].geom.pos[0], c[i].geom.pos[1], c[i].geom.pos[2], vs);
             double slip = hypot(v[0] - vs[0], v[1] - vs[1]);
-            mu = slip > w->model->cfg->robot.tyre_slip_m_s ? w->model->tyre_mu_dynamic[side] : w->model->tyre_mu[side];
+            mu = slip > w->model->chassis.tyre_slip_m_s ? w->model->tyre_mu_dynamic[side] : w->model->tyre_mu[side];
         }
         c[i].surface.mode = dContactApprox1 | dContactSoftERP | dContactSoftCFM;
         if (!wall && (a == w->wheel_geom[0] || a == w->wheel_geom[1])) {
@@ -1022,7 +1019,7 @@ static void spin_advance(world_t *w)
 
 void world_step(world_t *w, const motor_drive_t drive[2])
 {
-    double h = w->model->cfg->sim.step_s;
+    double h = w->model->step_s;
     w->loose_placed = 0; /* the chassis may have been moved since (world_place) */
     int n = sub_steps(w, h);
     w->touching = 0;
@@ -1154,7 +1151,7 @@ void world_hand(world_t *w, int on, double v_m_s, double omega_rad_s)
     double r_w = (w->model->wheel_r_m[0] + w->model->wheel_r_m[1]) / 2;
     dBodyVectorToWorld(w->chassis, 0, 1, 0, fwd);
     /* the axle's middle, from the centre of mass (the body's origin) */
-    dBodyGetRelPointPos(w->chassis, -w->com[0], w->model->cfg->robot.axle_y_m - w->com[1], r_w - w->com[2], axle);
+    dBodyGetRelPointPos(w->chassis, -w->com[0], w->model->chassis.axle_y_m - w->com[1], r_w - w->com[2], axle);
     const dReal *c = dBodyGetPosition(w->chassis);
     double n = hypot(fwd[0], fwd[1]), rx = c[0] - axle[0], ry = c[1] - axle[1];
     /* the centre of mass's velocity when the axle's middle goes v_m_s ahead and the chassis turns omega_rad_s */

@@ -19,7 +19,7 @@ const sensor_kind_t *sensor_kind(const char *name)
 
 const sensor_kind_t *sensor_kind_at(unsigned i) { return i < NKINDS ? kinds[i] : NULL; }
 
-const sim_pose_t *sensor_pose(const sim_model_t *m, const robot_part_t *p) { return &m->pose[p - m->cfg->robot.part]; }
+const sim_pose_t *sensor_pose(const sim_model_t *m, const robot_part_t *p) { return &m->pose[p - m->part]; }
 
 void sensor_frame(const world_t *w, const sim_pose_t *pose, double pos_m[3], double axis[3], double left[3], double up[3])
 {
