@@ -8,6 +8,7 @@
 #include "world/robot.h"
 #include "world/world.h"
 #include "world/sensors/ir.h"
+#include "world/sensors/sensor.h"
 
 bench_t bench; /* one at a time; maze_t and sim_state_t are large */
 
@@ -141,7 +142,7 @@ void bench_fit(validate_check_t *v, int *n, const char *name, double expected, d
 /* Sensor i's mean lit-minus-dark over 64 samples, the robot where it is. */
 double bench_lit_minus_dark(sim_state_t *s, unsigned i)
 {
-    const robot_part_t *p = &s->model->part[sim_model_part_of_kind(s->model, "ir", i)];
+    const robot_part_t *p = &s->model->part[sensor_of_kind(s->model, "ir", i)];
     unsigned g = (unsigned)((const ir_part_spec_t *)p->spec)->emitter;
     double sum = 0;
     for (int k = 0; k < 64; k++) {

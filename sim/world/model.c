@@ -3,10 +3,8 @@
 #include "model.h"
 
 #include <math.h>
-#include <string.h>
 
 #include "rng.h"
-#include "world/sensors/sensor.h"
 
 /* The seed's asymmetries: the configured ones plus the [variation]'s
  * draws (one stream, drawn in this order), right minus left. */
@@ -114,18 +112,4 @@ void sim_model_build(sim_model_t *m, const simcfg_t *c, uint64_t seed)
     m->nparts = c->robot.nparts;
     for (int i = 0; i < c->robot.nparts; i++) m->part[i] = c->robot.part[i];
     sensor_poses(m, c);
-}
-
-int sim_model_part_of_kind(const sim_model_t *m, const char *kind, unsigned i)
-{
-    for (int k = 0; k < m->nparts; k++)
-        if (!strcmp(m->part[k].kind->name, kind) && i-- == 0) return k;
-    return -1;
-}
-
-unsigned sim_model_count(const sim_model_t *m, const char *kind)
-{
-    unsigned n = 0;
-    for (int k = 0; k < m->nparts; k++) n += !strcmp(m->part[k].kind->name, kind);
-    return n;
 }

@@ -73,9 +73,5 @@ typedef struct sim_model_s {
 /* Build m from the loaded c (which must outlive m) and the run's seed:
  * the per-seed [variation] is drawn from its own stream (rng.h). */
 void sim_model_build(sim_model_t *m, const simcfg_t *c, uint64_t seed);
-/* The index in m->part of the i-th sensor of a kind ("ir", "tof",
- * "gyro"), -1 if there is none; how many of that kind there are. */
-int sim_model_part_of_kind(const sim_model_t *m, const char *kind, unsigned i);
-unsigned sim_model_count(const sim_model_t *m, const char *kind);
 
 #endif

@@ -205,7 +205,7 @@ void sim_step(const sim_model_t *m, sim_state_t *s)
     race_update(&s->race, sim_time_s(s), px, py);
 }
 
-int sim_ir_count(const sim_state_t *s) { return (int)sim_model_count(s->model, "ir"); }
+int sim_ir_count(const sim_state_t *s) { return (int)sensor_count(s->model, "ir"); }
 
 void sim_emitter_set(sim_state_t *s, unsigned group, int on)
 {
@@ -216,7 +216,7 @@ int sim_emitter(const sim_state_t *s, unsigned group) { return group < SIM_EMITT
 
 unsigned sim_ir_read(sim_state_t *s, unsigned i)
 {
-    int k = sim_model_part_of_kind(s->model, "ir", i);
+    int k = sensor_of_kind(s->model, "ir", i);
     if (k < 0) return 0;
     sensor_ctx_t x = ctx(s);
     return (unsigned)ir_sample(s->part_state[k], &s->model->part[k], &x);
@@ -268,11 +268,11 @@ void sim_occlude(sim_state_t *s, int part, double d_m, double dur_s)
     }
 }
 
-int sim_has_gyro(const sim_state_t *s) { return sim_model_count(s->model, "gyro") > 0; }
+int sim_has_gyro(const sim_state_t *s) { return sensor_count(s->model, "gyro") > 0; }
 
 double sim_gyro_rad_s(const sim_state_t *s)
 {
-    int k = sim_model_part_of_kind(s->model, "gyro", 0);
+    int k = sensor_of_kind(s->model, "gyro", 0);
     return k < 0 ? 0.0 : ((const gyro_t *)s->part_state[k])->held_rad_s;
 }
 
