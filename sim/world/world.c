@@ -185,8 +185,8 @@ static int parts_box(world_t *w)
         dGeomID g = w->part[i];
         double half[3];
         int loose = -1;
-        for (int k = 0; k < w->nloose; k++)
-            if (g == w->loose[k]) loose = k;
+        for (int k = 0; k < w->loose.n; k++)
+            if (g == w->loose.geom[k]) loose = k;
         if (loose < 0 && dGeomGetBody(g) != w->chassis) return 0;
         if (dGeomGetClass(g) == dSphereClass) {
             half[0] = half[1] = half[2] = dGeomSphereGetRadius(g);
@@ -201,7 +201,7 @@ static int parts_box(world_t *w)
         } else {
             return 0;
         }
-        const dReal *o = loose >= 0 ? w->loose_at[loose] : dGeomGetOffsetPosition(g), *R = loose >= 0 ? w->loose_rot[loose] : dGeomGetOffsetRotation(g);
+        const dReal *o = loose >= 0 ? w->loose.at[loose] : dGeomGetOffsetPosition(g), *R = loose >= 0 ? w->loose.rot[loose] : dGeomGetOffsetRotation(g);
         for (int k = 0; k < 3; k++) {
             double e = fabs(R[4 * k]) * half[0] + fabs(R[4 * k + 1]) * half[1] + fabs(R[4 * k + 2]) * half[2];
             w->parts_box[0][k] = fmin(w->parts_box[0][k], o[k] - e);
@@ -374,7 +374,7 @@ static int clear_of_walls(world_t *w, double margin_m, int tyres)
         parts_bounds(w, margin_m + WORLD_UNION_SLACK_M + WORLD_BOX_SLACK_M, r);
         if (!wallgrid_any(w->grid, r)) return 1;
     }
-    for (int k = 0; k < w->nloose && !w->loose_placed; k++) world_part_place(w, k);
+    for (int k = 0; k < w->loose.n && !w->loose_placed; k++) world_loose_place(&w->loose, w->chassis, k);
     w->loose_placed = 1;
     dReal aabb[WORLD_PARTS][6];
     double all[4] = { INFINITY, -INFINITY, INFINITY, -INFINITY }, e = margin_m + WORLD_UNION_SLACK_M;
@@ -499,7 +499,7 @@ static void near_cb(void *data, dGeomID a, dGeomID b)
         soft_contact(w, a, wall, n, &c[i]);
         dJointID j = dJointCreateContact(w->world, w->contacts, &c[i]);
         /* the second body is the wheel form's (with spin bodies a wheel's contact holds the chassis against its spin body) */
-        dBodyID b1 = dGeomGetBody(c[i].geom.g1); /* a loose part has none: it stands on the chassis (world_part_place) */
+        dBodyID b1 = dGeomGetBody(c[i].geom.g1); /* a loose part has none: it stands on the chassis (world_loose_place) */
         dJointAttach(j, b1 ? b1 : w->chassis, w->wheels->contact_body(w, a, c[i].geom.g2));
     }
 }
@@ -564,7 +564,7 @@ static void box_floor(world_t *w)
     dGeomBoxGetLengths(w->box, len);
     double low = p[2] + R[8] * o[0] + R[9] * o[1] + R[10] * o[2] - (fabs(R[8]) * len[0] + fabs(R[9]) * len[1] + fabs(R[10]) * len[2]) / 2;
     int near = !(low - WORLD_BOX_SLACK_M > w->floor_top_m); /* a NaN too */
-    if ((near || w->box_low) && !w->loose_placed) world_part_place(w, 0);
+    if ((near || w->box_low) && !w->loose_placed) world_loose_place(&w->loose, w->chassis, 0);
     w->box_low = near;
 }
 
@@ -598,9 +598,9 @@ void world_step(world_t *w, const motor_drive_t drive[2])
         drive_wheel(w, WORLD_LEFT, &drive[WORLD_LEFT]);
         drive_wheel(w, WORLD_RIGHT, &drive[WORLD_RIGHT]);
         brake_wheels(w);
-        /* before the collision pass, which may not move a geom (world_part_place) */
+        /* before the collision pass, which may not move a geom (world_loose_place) */
         if (!w->clear_now) w->clear_now = clear_of_walls(w, WORLD_TOUCH_SLACK_M, 0);
-        if (w->nloose) box_floor(w);
+        if (w->loose.n) box_floor(w);
         dSpaceCollide(w->top, w, near_cb);
         if (w->model->solver == SIM_SOLVER_EXACT) dWorldStep(w->world, w->h_s);
         else dWorldQuickStep(w->world, w->h_s);

@@ -1,7 +1,7 @@
 /* world_body.c - what the ODE world (world.c) and both forms of its
  * wheels (world_wheel_spin.c, world_wheel_hinge.c) use: the chassis' frame,
- * its loose parts, axle torques and motor rows (world_impl.h). */
-#include "world_impl.h"
+ * its loose parts, axle torques and motor rows (world_body.h). */
+#include "world_body.h"
 
 #include <math.h>
 
@@ -16,12 +16,12 @@ void world_frame_point(double x, double y, double heading, const double p[3], do
 
 /* Where wheel s's centre is in the chassis frame (its own radius above
  * the floor). */
-void world_wheel_point(const world_t *w, int s, double p[3])
+void world_wheel_point(const sim_model_t *m, int s, double p[3])
 {
-    const sim_chassis_t *c = &w->model->chassis;
-    p[0] = s == WORLD_LEFT ? -c->wheel_x_m : c->wheel_x_m;
+    const sim_chassis_t *c = &m->chassis;
+    p[0] = s == 0 ? -c->wheel_x_m : c->wheel_x_m; /* 0: the left wheel */
     p[1] = c->axle_y_m;
-    p[2] = w->model->wheel_r_m[s];
+    p[2] = m->wheel_r_m[s];
 }
 
 /* Loose part k (the box or a wheel side) put where it stands on the
@@ -32,34 +32,34 @@ void world_wheel_point(const world_t *w, int s, double p[3])
  * same arithmetic as ODE's for a geom offset on a body (position R p + c,
  * rotation R R_offset, each sum in ODE's order), so it stands exactly where
  * that geom would. */
-void world_part_place(world_t *w, int k)
+void world_loose_place(world_loose_t *l, dBodyID chassis, int k)
 {
-    const dReal *R = dBodyGetRotation(w->chassis);
-    const double *o = w->loose_rot[k], *at = w->loose_at[k];
+    const dReal *R = dBodyGetRotation(chassis);
+    const double *o = l->rot[k], *at = l->at[k];
     dVector3 p;
     dMatrix3 rot;
-    dBodyGetRelPointPos(w->chassis, at[0], at[1], at[2], p);
+    dBodyGetRelPointPos(chassis, at[0], at[1], at[2], p);
     for (int i = 0; i < 3; i++) {
         for (int j = 0; j < 3; j++) rot[4 * i + j] = o[j] * R[4 * i] + o[4 + j] * R[4 * i + 1] + o[8 + j] * R[4 * i + 2];
         rot[4 * i + 3] = 0;
     }
-    dGeomSetPosition(w->loose[k], p[0], p[1], p[2]);
-    dGeomSetRotation(w->loose[k], rot);
+    dGeomSetPosition(l->geom[k], p[0], p[1], p[2]);
+    dGeomSetRotation(l->geom[k], rot);
 }
 
-/* Geom g made loose part number nloose, at at_m (the chassis' frame from
+/* Geom g made loose part number l->n, at at_m (the chassis' frame from
  * its centre of mass) turned by rot (NULL: not turned), and put in place. */
-void world_part_loosen(world_t *w, dGeomID g, const double at_m[3], const dReal *rot)
+void world_loose_add(world_loose_t *l, dBodyID chassis, dGeomID g, const double at_m[3], const dReal *rot)
 {
-    int k = w->nloose++;
-    w->loose[k] = g;
-    for (int i = 0; i < 3; i++) w->loose_at[k][i] = at_m[i];
+    int k = l->n++;
+    l->geom[k] = g;
+    for (int i = 0; i < 3; i++) l->at[k][i] = at_m[i];
     if (rot) {
-        for (int i = 0; i < 12; i++) w->loose_rot[k][i] = rot[i];
+        for (int i = 0; i < 12; i++) l->rot[k][i] = rot[i];
     } else {
-        dRSetIdentity(w->loose_rot[k]);
+        dRSetIdentity(l->rot[k]);
     }
-    world_part_place(w, k);
+    world_loose_place(l, chassis, k);
 }
 
 /* A torque t_nm about body b's own x axis (its rotation's first column):
@@ -86,8 +86,8 @@ void world_amotor_param(dJointID j, int param, double v, double *was)
 }
 
 /* The chassis' rate about its axle (its x), rad/s, + nose up. */
-double world_pitch_rate(const world_t *w)
+double world_pitch_rate(dBodyID chassis)
 {
-    const dReal *om = dBodyGetAngularVel(w->chassis), *R = dBodyGetRotation(w->chassis);
+    const dReal *om = dBodyGetAngularVel(chassis), *R = dBodyGetRotation(chassis);
     return om[0] * R[0] + om[1] * R[4] + om[2] * R[8];
 }

@@ -1,8 +1,7 @@
 /* world_impl.h - the inside of the ODE world (world.h), shared by world.c
  * (the maze, the chassis, contacts, the step), the two forms a wheel may
  * take in it (world_wheel_spin.c, world_wheel_hinge.c: each the same table
- * of operations, world_wheels_t) and what all of them use (world_body.c:
- * the chassis' frame, its loose parts, axle torques, motor rows). Nothing
+ * of operations, world_wheels_t), which all use world_body.h. Nothing
  * outside those files includes it. */
 #ifndef WORLD_IMPL_H
 #define WORLD_IMPL_H
@@ -10,6 +9,7 @@
 #include <ode/ode.h>
 
 #include "world.h"
+#include "world_body.h"
 #include "wallgrid.h"
 
 #define CAT_STATIC 1u
@@ -97,11 +97,8 @@ struct world {
     int ranked;             /* every box has its place: maze contacts by cell (else ODE's tree walk) */
     dGeomID part[WORLD_PARTS]; /* the robot's geoms in its space's order (ODE's), nparts of them */
     int nparts;
-    /* With spin bodies the body box and the wheel sides are loose: geoms of no body, put where they stand on the chassis only when a wall or the floor may be near (place_part) */
-    dGeomID loose[3];      /* the box, the left and the right wheel side; none with hinged wheels */
-    double loose_at[3][3]; /* each one's centre in the chassis' frame from its centre of mass, m */
-    dMatrix3 loose_rot[3]; /* and its orientation in the chassis' frame */
-    int nloose;
+    /* With spin bodies the body box and the wheel sides are loose: geoms of no body, put where they stand on the chassis only when a wall or the floor may be near (world_loose_place) */
+    world_loose_t loose;   /* the box, the left and the right wheel side; none with hinged wheels */
     int box_low;           /* the box was last put where its bounds may reach the floor's: put it again before the next collision pass */
     int loose_placed;      /* the loose parts stand where the chassis now puts them (world_step clears it as the chassis moves) */
     double floor_top_m;    /* the top of the floor's bounds as ODE has them (dGeomGetAABB), m */
@@ -122,22 +119,5 @@ struct world {
     double wall_depth_m;   /* deepest wall contact of the last world_step, m */
     double brake_nm;       /* world_brake's load for the next world_step, N*m */
 };
-
-/* world_body.c: what world.c and both wheel forms use. */
-/* Robot-frame point -> world point for a robot at (x, y) facing heading. */
-void world_frame_point(double x, double y, double heading, const double p[3], double out[3]);
-/* Where wheel s's centre is in the chassis frame (its own radius above the floor). */
-void world_wheel_point(const world_t *w, int s, double p[3]);
-/* Loose part k put where it stands on the chassis; geom g made the next
- * loose part, at at_m (the chassis' frame from its centre of mass) turned
- * by rot (NULL: not turned), and put in place. */
-void world_part_place(world_t *w, int k);
-void world_part_loosen(world_t *w, dGeomID g, const double at_m[3], const dReal *rot);
-/* A torque t_nm about body b's own x axis. */
-void world_axle_torque(dBodyID b, double t_nm);
-/* An angular motor's parameter set to v where it differs from *was. */
-void world_amotor_param(dJointID j, int param, double v, double *was);
-/* The chassis' rate about its axle (its x), rad/s, + nose up. */
-double world_pitch_rate(const world_t *w);
 
 #endif

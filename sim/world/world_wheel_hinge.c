@@ -98,7 +98,7 @@ static void attach_box(world_t *w)
 static void build(world_t *w, int s, double x_m, double y_m, double heading_rad)
 {
     double wp[3], ww[3];
-    world_wheel_point(w, s, wp);
+    world_wheel_point(w->model, s, wp);
     world_frame_point(x_m, y_m, heading_rad, wp, ww);
     hinge_wheel_body(w, s, ww, heading_rad);
     hinge_wheel_geoms(w, s);
@@ -173,7 +173,7 @@ static void place(world_t *w, int s, double x_m, double y_m, double heading_rad,
 {
     double wp[3], ww[3];
     dMatrix3 r;
-    world_wheel_point(w, s, wp);
+    world_wheel_point(w->model, s, wp);
     world_frame_point(x_m, y_m, heading_rad, wp, ww);
     wheel_rotation(heading_rad, &angle_rad, r);
     dBodySetPosition(w->wheel[s], ww[0], ww[1], ww[2]);

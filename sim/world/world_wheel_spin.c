@@ -61,7 +61,7 @@ static void wheel_geoms(world_t *w, int s, const double at[3])
     dRFromAxisAndAngle(axle, 0, 1, 0, M_PI / 2); /* the cylinder's z to the chassis' x */
     dGeomSetCategoryBits(w->wheel_side[s], CAT_WHEEL_SIDE);
     dGeomSetCollideBits(w->wheel_side[s], CAT_STATIC);
-    world_part_loosen(w, w->wheel_side[s], side_at, axle);
+    world_loose_add(&w->loose, w->chassis, w->wheel_side[s], side_at, axle);
 }
 
 /* An angular motor row on wheel s's spin body about its axle (the body's
@@ -101,7 +101,7 @@ static void spin_place(world_t *w, int s, double rate_rad_s)
     double wp[3];
     dVector3 at;
     const dReal *x = dBodyGetRotation(w->chassis); /* its x axis: x[0], x[4], x[8] */
-    world_wheel_point(w, s, wp);
+    world_wheel_point(w->model, s, wp);
     dBodyGetRelPointPos(w->chassis, wp[0] - w->com[0], wp[1] - w->com[1], wp[2] - w->com[2], at);
     dBodySetPosition(w->wheel[s], at[0], at[1], at[2]);
     dBodySetQuaternion(w->wheel[s], dBodyGetQuaternion(w->chassis));
@@ -152,7 +152,7 @@ static double wrap_angle(double a_rad)
 
 static void spin_advance(world_t *w)
 {
-    w->pitch_acc = (world_pitch_rate(w) - w->pitch_before) / w->h_s;
+    w->pitch_acc = (world_pitch_rate(w->chassis) - w->pitch_before) / w->h_s;
     for (int s = 0; s < 2; s++) {
         double rate = spin_rate(w, s);
         w->wheel_angle[s] = wrap_angle(w->wheel_angle[s] + rate * w->h_s);
@@ -174,15 +174,15 @@ static void chassis_mass(const world_t *w, dMass *mb)
 }
 
 /* The body box is loose: a geom of no body, put on the chassis where a
- * wall or the floor may be near (world_part_place). */
-static void attach_box(world_t *w) { world_part_loosen(w, w->box, w->box_offset, NULL); }
+ * wall or the floor may be near (world_loose_place). */
+static void attach_box(world_t *w) { world_loose_add(&w->loose, w->chassis, w->box, w->box_offset, NULL); }
 
 /* Wheel s: its geoms on the chassis, its spin body at rest, its rows. */
 static void build(world_t *w, int s, double x_m, double y_m, double heading_rad)
 {
     double wp[3];
     (void)x_m, (void)y_m, (void)heading_rad; /* the chassis, built already, places it */
-    world_wheel_point(w, s, wp);
+    world_wheel_point(w->model, s, wp);
     wheel_geoms(w, s, wp);
     wheel_body(w, s);
     spin_place(w, s, 0);
@@ -219,7 +219,7 @@ static void before_ode(world_t *w)
         w->spin_before[s] = spin_rate(w, s);
         spin_place(w, s, w->spin_before[s]);
     }
-    w->pitch_before = world_pitch_rate(w);
+    w->pitch_before = world_pitch_rate(w->chassis);
 }
 
 /* A wheel's contact holds the chassis against its spin body as its second
