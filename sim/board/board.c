@@ -28,6 +28,7 @@
 
 _Static_assert(BOARD_IN_MAX == AVRHOST_IN_MAX, "board_send's queue is the AVR host's");
 _Static_assert(BOARD_LED_PINS_MAX >= BOARD_LEDS_MAX && BOARD_LED_PINS_MAX >= SIM_EMITTER_GROUPS, "LED part too small");
+_Static_assert(BOARD_ADC_EMITTERS >= BOARD_LED_PINS_MAX, "every emitter pin has an ADC input");
 
 struct board_s {
     board_spec_t spec;
@@ -87,8 +88,12 @@ static int wire(board_t *b, char *err, size_t errn)
     board_leds_init(&b->emitters, avr, sp->emitter_pin, sp->nemitters, NULL);
     avr_int_table_p t = &avr->interrupts;
     for (int i = 0; i < t->vector_count; i++) avr_irq_register_notify(&t->vector[i]->irq[AVR_INT_IRQ_RUNNING], on_vector, b);
-    board_switches_init(&b->sw, sp);
-    if (board_adc_init(&b->adc, avr, sp, b->sim, &b->sw, &b->emitters, &b->st, err, errn) != 0) return -1;
+    board_switches_init(&b->sw, avr, sp);
+    if (board_adc_init(&b->adc, avr, sp, b->sim, &b->st, err, errn) != 0) return -1;
+    /* the parts' outputs onto the ADC's inputs (simavr's IRQ chaining), then the ladder's voltage raised once */
+    avr_connect_irq(b->sw.out, &b->adc.input[BOARD_ADC_IN_LADDER]);
+    for (int e = 0; e < sp->nemitters && e < BOARD_ADC_EMITTERS; e++) avr_connect_irq(board_leds_irq(&b->emitters, e), &b->adc.input[BOARD_ADC_IN_EMITTER + e]);
+    board_switches_set(&b->sw, 0, 0);
     board_encoder_init(&b->enc, avr, sp, b->sim, &b->st);
     return board_motor_init(&b->motor, avr, sp, &b->st, err, errn);
 }
@@ -142,8 +147,8 @@ void board_close(board_t *b)
     if (b) avrhost_close(&b->host);
 }
 
-void board_set_switches(board_t *b, unsigned n) { b->sw.switches = n & 15u; }
-void board_button(board_t *b, int down) { b->sw.button = down != 0; }
+void board_set_switches(board_t *b, unsigned n) { board_switches_set(&b->sw, n & 15u, b->sw.button); }
+void board_button(board_t *b, int down) { board_switches_set(&b->sw, b->sw.switches, down != 0); }
 
 void board_panel(const board_t *b, board_panel_t *out)
 {

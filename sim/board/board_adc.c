@@ -4,8 +4,10 @@
  * board answers at once with that channel's voltage, so each conversion
  * samples the world at its own moment:
  *   - an IR detector (the robot file's [ir.*] adc_channel): sim_ir_read with
- *     the emitter groups lit as their pins are at that moment;
- *   - the switch ladder: the voltage for the switches and button now;
+ *     the emitter groups lit as their pins are at that moment (the emitter
+ *     part's output IRQs, which board.c connects to this part's inputs);
+ *   - the switch ladder: the voltage for the switches and button now (the
+ *     switches part's output IRQ, connected likewise);
  *   - the battery: its terminal voltage through the divider;
  *   - A4/A5 with no IR sensor on them: the board file's [analog] voltage,
  *     or for an `open` (unconnected) pin its own state: driven as an output,
@@ -48,19 +50,33 @@ static double undriven_volts(board_adc_t *a, unsigned ch)
     return a->held_mv / 1000.0;
 }
 
-/* channel ch's voltage now, V */
+/* channel ch's voltage now (not the ladder's), V */
 static double channel_volts(board_adc_t *a, unsigned ch)
 {
     const board_spec_t *sp = a->spec;
-    if ((int)ch == sp->sw_channel) return board_switches_volts(a->sw);
     if ((int)ch == sp->bat_channel) /* the supply after the diode (board.c sets its drop on the sim), divided */
         return sim_supply_v(a->sim) * sp->bat_r_bottom_ohm / (sp->bat_r_top_ohm + sp->bat_r_bottom_ohm);
     int ir = a->ir_of_channel[ch];
     if (ir < 0) return undriven_volts(a, ch);
-    for (int e = 0; e < sp->nemitters; e++) sim_emitter_set(a->sim, (unsigned)sp->emitter_group[e], board_leds_level(a->emitters, e));
+    for (int e = 0; e < sp->nemitters; e++) sim_emitter_set(a->sim, (unsigned)sp->emitter_group[e], (int)a->emitter_on[e]);
     /* counts -> the voltage that converts back to the same count (rounded up to the mV) */
     unsigned c = sim_ir_read(a->sim, (unsigned)ir);
     return ceil(c * sp->vcc_v * 1000.0 / 1023.0) / 1000.0;
+}
+
+/* channel ch's input now, mV rounded up (the ladder's as its part gives it) */
+static double channel_mv(board_adc_t *a, unsigned ch)
+{
+    if ((int)ch == a->spec->sw_channel) return (double)a->ladder_mv;
+    return ceil(channel_volts(a, ch) * 1000.0 - 1e-9);
+}
+
+/* the inputs from the other parts (board.c connects their outputs) */
+static void on_input(struct avr_irq_t *irq, uint32_t value, void *param)
+{
+    board_adc_t *a = param;
+    if (irq->irq == BOARD_ADC_IN_LADDER) a->ladder_mv = value;
+    else if (irq->irq - BOARD_ADC_IN_EMITTER < BOARD_ADC_EMITTERS) a->emitter_on[irq->irq - BOARD_ADC_IN_EMITTER] = value != 0;
 }
 
 static void on_trigger(struct avr_irq_t *irq, uint32_t value, void *param)
@@ -74,7 +90,7 @@ static void on_trigger(struct avr_irq_t *irq, uint32_t value, void *param)
     if (e.mux.kind != ADC_MUX_SINGLE || e.mux.src >= BOARD_ADC_CHANNELS) return;
     unsigned ch = e.mux.src;
     a->st->adc_conversions[ch]++;
-    double mv = ceil(channel_volts(a, ch) * 1000.0 - 1e-9);
+    double mv = channel_mv(a, ch);
     if (mv < 0) mv = 0;
     if (mv > a->spec->vcc_v * 1000.0) mv = a->spec->vcc_v * 1000.0;
     a->held_mv = mv;
@@ -84,7 +100,7 @@ static void on_trigger(struct avr_irq_t *irq, uint32_t value, void *param)
 /* the robot's IR sensors onto the channels their adc_channel names */
 static int map_ir(board_adc_t *a, char *err, size_t errn)
 {
-    const simcfg_t *c = a->sim->model->cfg;
+    const simcfg_t *c = a->sim->model->cfg; /* the robot file as given: its path and names for the message */
     int nir = sim_ir_count(a->sim);
     for (int i = 0; i < nir; i++) {
         int k = robot_part_of_kind(c, "ir", (unsigned)i);
@@ -101,16 +117,18 @@ static int map_ir(board_adc_t *a, char *err, size_t errn)
     return 0;
 }
 
-int board_adc_init(board_adc_t *a, avr_t *avr, const board_spec_t *spec, sim_state_t *sim, const board_switches_t *sw,
-                   const board_leds_t *emitters, board_stats_t *st, char *err, size_t errn)
+int board_adc_init(board_adc_t *a, avr_t *avr, const board_spec_t *spec, sim_state_t *sim, board_stats_t *st, char *err,
+                   size_t errn)
 {
+    static const char *names[BOARD_ADC_INPUTS] = { "adc.ladder_mv", "adc.emitter0", "adc.emitter1", "adc.emitter2", "adc.emitter3",
+                                                   "adc.emitter4", "adc.emitter5", "adc.emitter6", "adc.emitter7" };
     memset(a, 0, sizeof *a);
     a->avr = avr;
     a->spec = spec;
     a->sim = sim;
-    a->sw = sw;
-    a->emitters = emitters;
     a->st = st;
+    a->input = avr_alloc_irq(&avr->irq_pool, 0, BOARD_ADC_INPUTS, names);
+    for (int i = 0; i < BOARD_ADC_INPUTS; i++) avr_irq_register_notify(&a->input[i], on_input, a);
     for (int ch = 0; ch < BOARD_ADC_CHANNELS; ch++) {
         a->ir_of_channel[ch] = -1;
         a->in[ch] = avr_io_getirq(avr, AVR_IOCTL_ADC_GETIRQ, ch);

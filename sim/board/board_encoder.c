@@ -34,7 +34,7 @@ void board_encoder_init(board_encoder_t *e, avr_t *avr, const board_spec_t *spec
     e->st = st;
     e->nedges = e->next = 0;
     for (int w = 0; w < 2; w++) {
-        const drive_spec_t *d = &sim->model->cfg->robot.drive[w];
+        const drive_spec_t *d = &sim->model->drive[w];
         e->int_pin[w] = avrhost_pin_irq(avr, spec->enc_int[w].port, spec->enc_int[w].bit);
         e->b_pin[w] = avrhost_pin_irq(avr, spec->enc_b[w].port, spec->enc_b[w].bit);
         e->a_leads[w] = spec->enc_a_leads[w];

@@ -8,6 +8,7 @@
 #include "world/robot.h"
 #include "world/world.h"
 #include "world/sensors/ir.h"
+#include "world/sensors/sensor.h"
 
 bench_t bench; /* one at a time; maze_t and sim_state_t are large */
 
@@ -96,18 +97,19 @@ bench_step_t bench_voltage_step(const simcfg_t *c, double v_volt, int rot)
     bench_field(&bench.maze, 10, 10, 4);
     sim_state_t *s = &bench.sim;
     if (bench_init(c) != 0) return r;
-    if (rot) world_place(s->world, 4.5 * c->world.cell_m, 4.5 * c->world.cell_m, M_PI / 2, NULL); /* the field's middle */
-    long n = bench_steps(c, STEP_S);
+    const sim_model_t *md = s->model; /* the robot as simulated: each wheel's radius with the seed's asymmetry */
+    if (rot) world_place(s->world, 4.5 * md->arena.cell_m, 4.5 * md->arena.cell_m, M_PI / 2, NULL); /* the field's middle */
+    long n = lround(STEP_S / md->step_s);
     if (n > STEP_MAX) n = STEP_MAX;
     double dist = 0;
     for (long i = 0; i < n; i++) {
         s->cmd[WORLD_LEFT] = bench_volt_cmd(s, rot ? -v_volt : v_volt);
         s->cmd[WORLD_RIGHT] = bench_volt_cmd(s, v_volt);
-        sim_step(s->model, s);
-        double vl = world_wheel_rate(s->world, WORLD_LEFT) * c->robot.wheel_left_d_m / 2;
-        double vr = world_wheel_rate(s->world, WORLD_RIGHT) * c->robot.wheel_right_d_m / 2;
-        dist += (rot ? (vr - vl) / (2 * c->robot.wheel_x_m) : (vr + vl) / 2) * c->sim.step_s;
-        t[i] = (i + 1) * c->sim.step_s, x[i] = dist;
+        sim_step(md, s);
+        double vl = world_wheel_rate(s->world, WORLD_LEFT) * md->wheel_r_m[WORLD_LEFT];
+        double vr = world_wheel_rate(s->world, WORLD_RIGHT) * md->wheel_r_m[WORLD_RIGHT];
+        dist += (rot ? (vr - vl) / (2 * md->chassis.wheel_x_m) : (vr + vl) / 2) * md->step_s;
+        t[i] = (i + 1) * md->step_s, x[i] = dist;
     }
     sim_free(s);
     return bench_step_fit(t, x, n);
@@ -140,7 +142,7 @@ void bench_fit(validate_check_t *v, int *n, const char *name, double expected, d
 /* Sensor i's mean lit-minus-dark over 64 samples, the robot where it is. */
 double bench_lit_minus_dark(sim_state_t *s, unsigned i)
 {
-    const robot_part_t *p = &s->model->cfg->robot.part[robot_part_of_kind(s->model->cfg, "ir", i)];
+    const robot_part_t *p = &s->model->part[sensor_of_kind(s->model, "ir", i)];
     unsigned g = (unsigned)((const ir_part_spec_t *)p->spec)->emitter;
     double sum = 0;
     for (int k = 0; k < 64; k++) {

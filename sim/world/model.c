@@ -43,6 +43,9 @@ static void wheels(sim_model_t *m, const simcfg_t *c, const asym_t *a)
         /* right minus left, in per cent of the mean */
         m->motor_k_scale[s] = 1.0 + (s == 0 ? -0.005 : 0.005) * a->motor_k_pct;
         m->motor_model[s] = c->robot.drive[s].motor_model;
+        const drive_spec_t *dr = &c->robot.drive[s];
+        m->drive[s] = *dr;
+        m->rotor_j_kgm2[s] = dr->rotor_inertia_kgm2 > 0 && dr->motor_model != MOTOR_MODEL_PAPER ? dr->rotor_inertia_kgm2 * dr->gear_ratio * dr->gear_ratio : 0;
     }
 }
 
@@ -66,18 +69,47 @@ static void sensor_poses(sim_model_t *m, const simcfg_t *c)
     }
 }
 
+/* The chassis' numbers as the robot file gives them. */
+static void chassis(sim_chassis_t *ch, const simcfg_robot_t *r)
+{
+    ch->body_w_m = r->body_w_m;
+    ch->body_l_m = r->body_l_m;
+    ch->body_h_m = r->body_h_m;
+    ch->body_mass_kg = r->body_mass_kg;
+    ch->body_clearance_m = r->body_clearance_m;
+    ch->body_yaw_inertia_kgm2 = r->body_yaw_inertia_kgm2;
+    ch->wheel_w_m = r->wheel_w_m;
+    ch->wheel_mass_kg = r->wheel_mass_kg;
+    ch->wheel_x_m = r->wheel_x_m;
+    ch->axle_y_m = r->axle_y_m;
+    ch->caster_r_m = r->caster_r_m;
+    ch->caster_mass_kg = r->caster_mass_kg;
+    ch->caster_y_m[0] = r->caster_y_m;
+    ch->caster_y_m[1] = r->caster2_y_m;
+    ch->skid_mu = r->skid_mu;
+    ch->tyre_slip_m_s = r->tyre_slip_m_s;
+}
+
 void sim_model_build(sim_model_t *m, const simcfg_t *c, uint64_t seed)
 {
     asym_t a = asymmetry(c, seed);
     m->cfg = c;
+    m->step_s = c->sim.step_s;
     m->solver = c->sim.solver;
     m->solver_iterations = c->sim.solver_iterations;
+    m->wheels = c->sim.wheels;
+    m->time_limit_s = c->sim.time_limit_s;
+    m->arena = c->world;
     m->start = c->robot.start;
     m->casters = c->robot.casters;
+    chassis(&m->chassis, &c->robot);
+    m->battery = c->robot.battery;
     wheels(m, c, &a);
     /* the body's mass may sit off its geometric centre (asymmetry, and the robot file's) */
     m->body_com_m[0] = 0.0 + a.com_x_m;
     m->body_com_m[1] = 0.0 + a.com_y_m + c->robot.body_com_y_m;
     m->body_com_m[2] = c->robot.body_clearance_m + c->robot.body_h_m / 2;
+    m->nparts = c->robot.nparts;
+    for (int i = 0; i < c->robot.nparts; i++) m->part[i] = c->robot.part[i];
     sensor_poses(m, c);
 }

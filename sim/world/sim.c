@@ -32,16 +32,16 @@ static sensor_ctx_t ctx(const sim_state_t *s)
 /* The sensors' states, each from its kind; ToF sensors also the HAL's. */
 static int parts_init(sim_state_t *s, uint64_t seed)
 {
-    const simcfg_t *c = s->model->cfg;
+    const sim_model_t *m = s->model;
     s->ntof = 0;
     s->tof_range_m = 1.2;
-    for (int i = 0; i < c->robot.nparts; i++) {
-        const robot_part_t *p = &c->robot.part[i];
+    for (int i = 0; i < m->nparts; i++) {
+        const robot_part_t *p = &m->part[i];
         const sensor_kind_t *k = p->kind;
         unsigned n = 0, kind_index = 0;
-        for (int j = 0; j < c->robot.nparts; j++) {
-            n += c->robot.part[j].kind == k;
-            kind_index += j < i && c->robot.part[j].kind == k;
+        for (int j = 0; j < m->nparts; j++) {
+            n += m->part[j].kind == k;
+            kind_index += j < i && m->part[j].kind == k;
         }
         s->part_state[i] = calloc(1, k->state_size);
         if (!s->part_state[i]) return -1;
@@ -67,25 +67,24 @@ static void tof_mirror(sim_state_t *s)
 
 int sim_init(sim_state_t *s, const sim_model_t *model, const maze_t *m, uint64_t seed)
 {
-    const simcfg_t *c = model->cfg;
     memset(s->part_state, 0, sizeof s->part_state);
     s->world = NULL;
     s->model = model;
-    double cell = c->world.cell_m;
+    double cell = model->arena.cell_m;
     s->maze = m;
     s->seed = seed;
     double h = start_heading(m->start_heading), back = 0; /* m behind the cell's centre */
-    if (model->start == ROBOT_START_BACK_TO_WALL) back = cell / 2 - c->world.wall_thick_m / 2 - c->robot.body_l_m / 2 - ROBOT_START_GAP_M;
+    if (model->start == ROBOT_START_BACK_TO_WALL) back = cell / 2 - model->arena.wall_thick_m / 2 - model->chassis.body_l_m / 2 - ROBOT_START_GAP_M;
     s->world = world_create(model, m, (maze_x(m, m->start) + 0.5) * cell - back * cos(h),
                             (maze_y(m, m->start) + 0.5) * cell - back * sin(h), h);
     if (!s->world) {
         sim_free(s);
         return -1;
     }
-    battery_init(&s->battery, &c->robot.battery);
+    battery_init(&s->battery, &model->battery);
     for (int i = 0; i < 2; i++) {
-        const drive_spec_t *d = &c->robot.drive[i];
-        motor_init(&s->motor[i], d, battery_ocv(&s->battery), c->robot.battery.r_ohm, model->motor_k_scale[i]);
+        const drive_spec_t *d = &model->drive[i];
+        motor_init(&s->motor[i], d, battery_ocv(&s->battery), model->battery.r_ohm, model->motor_k_scale[i]);
         encoder_init(&s->encoder[i], d->encoder_ppr * d->gear_ratio, world_wheel_angle(s->world, i));
         s->cmd[i] = 0;
     }
@@ -107,7 +106,7 @@ int sim_init(sim_state_t *s, const sim_model_t *model, const maze_t *m, uint64_t
         return -1;
     }
     tof_mirror(s);
-    race_init(&s->race, m, cell, c->sim.time_limit_s);
+    race_init(&s->race, m, cell, model->time_limit_s);
     return 0;
 }
 
@@ -121,7 +120,7 @@ void sim_free(sim_state_t *s)
     }
 }
 
-double sim_time_s(const sim_state_t *s) { return (double)s->step * s->model->cfg->sim.step_s; }
+double sim_time_s(const sim_state_t *s) { return (double)s->step * s->model->step_s; }
 
 /* The battery: each motor sees the open-circuit voltage less the other
  * motor's share of the sag (its own is solved in its circuit, motor.c);
@@ -134,7 +133,7 @@ static void battery_step(sim_state_t *s, double dt)
 {
     double i_in[2] = { bridge_in_a(&s->motor[0]), bridge_in_a(&s->motor[1]) };
     battery_draw(&s->battery, i_in[0] + i_in[1], dt);
-    double ocv = battery_ocv(&s->battery), r = s->model->cfg->robot.battery.r_ohm;
+    double ocv = battery_ocv(&s->battery), r = s->model->battery.r_ohm;
     for (int i = 0; i < 2; i++) s->motor[i].battery_v = fmax(ocv - r * i_in[1 - i] - s->supply_drop_v, 0.0);
 }
 
@@ -149,7 +148,7 @@ double sim_supply_v(const sim_state_t *s) { return fmax(sim_battery_v(s) - s->su
 int sim_push(sim_state_t *s, double dx_m, double dyaw_rad, double dur_s)
 {
     if (world_carried(s->world)) return -1;
-    double n = round(dur_s / s->model->cfg->sim.step_s);
+    double n = round(dur_s / s->model->step_s);
     s->push_from = s->step;
     s->push_steps = n < 1 ? 1 : (uint64_t)n;
     s->push_m = dx_m;
@@ -182,7 +181,7 @@ static void hand_step(sim_state_t *s, double dt)
 void sim_step(const sim_model_t *m, sim_state_t *s)
 {
     assert(m == s->model);
-    double dt = m->cfg->sim.step_s;
+    double dt = m->step_s;
     if (s->diverged) return;
     motor_drive_t d[2];
     for (int i = 0; i < 2; i++) d[i] = motor_drive(&s->motor[i], s->cmd[i], world_wheel_rate(s->world, i), dt);
@@ -198,15 +197,15 @@ void sim_step(const sim_model_t *m, sim_state_t *s)
     battery_step(s, dt);
     sensor_ctx_t x = ctx(s);
     for (int i = 0; i < s->ntof; i++) ((tof_state_t *)s->part_state[s->tof_part[i]])->enabled = s->tof_enabled;
-    for (int i = 0; i < m->cfg->robot.nparts; i++)
-        if (m->cfg->robot.part[i].kind->step) m->cfg->robot.part[i].kind->step(s->part_state[i], &m->cfg->robot.part[i], &x);
+    for (int i = 0; i < m->nparts; i++)
+        if (m->part[i].kind->step) m->part[i].kind->step(s->part_state[i], &m->part[i], &x);
     tof_mirror(s);
     double px, py, h;
     world_pose(s->world, &px, &py, &h);
     race_update(&s->race, sim_time_s(s), px, py);
 }
 
-int sim_ir_count(const sim_state_t *s) { return (int)robot_count(s->model->cfg, "ir"); }
+int sim_ir_count(const sim_state_t *s) { return (int)sensor_count(s->model, "ir"); }
 
 void sim_emitter_set(sim_state_t *s, unsigned group, int on)
 {
@@ -217,10 +216,10 @@ int sim_emitter(const sim_state_t *s, unsigned group) { return group < SIM_EMITT
 
 unsigned sim_ir_read(sim_state_t *s, unsigned i)
 {
-    int k = robot_part_of_kind(s->model->cfg, "ir", i);
+    int k = sensor_of_kind(s->model, "ir", i);
     if (k < 0) return 0;
     sensor_ctx_t x = ctx(s);
-    return (unsigned)ir_sample(s->part_state[k], &s->model->cfg->robot.part[k], &x);
+    return (unsigned)ir_sample(s->part_state[k], &s->model->part[k], &x);
 }
 
 /* A sensor an object can be held before: IR or ToF. */
@@ -228,12 +227,12 @@ static int occludable(const robot_part_t *p) { return !strcmp(p->kind->name, "ir
 
 int sim_occlude_find(const sim_state_t *s, const char *name)
 {
-    const simcfg_robot_t *rc = &s->model->cfg->robot;
-    for (int k = 0; k < rc->nparts; k++)
-        if (occludable(&rc->part[k]) && !strcmp(rc->part[k].name, name)) return k;
+    const sim_model_t *m = s->model;
+    for (int k = 0; k < m->nparts; k++)
+        if (occludable(&m->part[k]) && !strcmp(m->part[k].name, name)) return k;
     int side = !strcmp(name, "left") ? 0 : !strcmp(name, "right") ? 1 : -1;
-    for (int k = 0; side >= 0 && k < rc->nparts; k++) { /* the aliases: a forward IR sensor off the centre line */
-        const robot_part_t *p = &rc->part[k];
+    for (int k = 0; side >= 0 && k < m->nparts; k++) { /* the aliases: a forward IR sensor off the centre line */
+        const robot_part_t *p = &m->part[k];
         if (strcmp(p->kind->name, "ir") != 0 || fabs(p->yaw_deg) > 30 || (side ? p->x_m <= 0 : p->x_m >= 0)) continue;
         return k;
     }
@@ -242,12 +241,12 @@ int sim_occlude_find(const sim_state_t *s, const char *name)
 
 void sim_occlude_names(const sim_state_t *s, char *out, size_t len)
 {
-    const simcfg_robot_t *rc = &s->model->cfg->robot;
+    const sim_model_t *m = s->model;
     size_t used = 0;
     out[0] = '\0';
-    for (int k = 0; k < rc->nparts && used < len; k++)
-        if (occludable(&rc->part[k])) {
-            int n = snprintf(out + used, len - used, "%s%s", used ? ", " : "", rc->part[k].name);
+    for (int k = 0; k < m->nparts && used < len; k++)
+        if (occludable(&m->part[k])) {
+            int n = snprintf(out + used, len - used, "%s%s", used ? ", " : "", m->part[k].name);
             if (n > 0) used += (size_t)n;
         }
     if (!out[0]) snprintf(out, len, "none");
@@ -255,8 +254,8 @@ void sim_occlude_names(const sim_state_t *s, char *out, size_t len)
 
 void sim_occlude(sim_state_t *s, int part, double d_m, double dur_s)
 {
-    if (part < 0 || part >= s->model->cfg->robot.nparts) return;
-    const robot_part_t *p = &s->model->cfg->robot.part[part];
+    if (part < 0 || part >= s->model->nparts) return;
+    const robot_part_t *p = &s->model->part[part];
     double until_s = sim_time_s(s) + dur_s;
     if (!strcmp(p->kind->name, "ir")) {
         ir_state_t *st = s->part_state[part];
@@ -269,11 +268,11 @@ void sim_occlude(sim_state_t *s, int part, double d_m, double dur_s)
     }
 }
 
-int sim_has_gyro(const sim_state_t *s) { return robot_count(s->model->cfg, "gyro") > 0; }
+int sim_has_gyro(const sim_state_t *s) { return sensor_count(s->model, "gyro") > 0; }
 
 double sim_gyro_rad_s(const sim_state_t *s)
 {
-    int k = robot_part_of_kind(s->model->cfg, "gyro", 0);
+    int k = sensor_of_kind(s->model, "gyro", 0);
     return k < 0 ? 0.0 : ((const gyro_t *)s->part_state[k])->held_rad_s;
 }
 
@@ -281,7 +280,7 @@ double sim_battery_v(const sim_state_t *s)
 {
     /* the terminal voltage: the open-circuit voltage less the sag of both motors' input currents */
     double i_in = bridge_in_a(&s->motor[0]) + bridge_in_a(&s->motor[1]);
-    return battery_ocv(&s->battery) - s->model->cfg->robot.battery.r_ohm * i_in;
+    return battery_ocv(&s->battery) - s->model->battery.r_ohm * i_in;
 }
 
 void sim_tof_origin(const sim_state_t *s, int i, double pos_m[3], double *dir_rad)
@@ -293,7 +292,7 @@ void sim_tof_origin(const sim_state_t *s, int i, double pos_m[3], double *dir_ra
 
 int sim_part_values(const sim_state_t *s, int i, double v[4])
 {
-    if (i < 0 || i >= s->model->cfg->robot.nparts) return 0;
+    if (i < 0 || i >= s->model->nparts) return 0;
     sensor_ctx_t x = ctx(s);
-    return s->model->cfg->robot.part[i].kind->read(s->part_state[i], &s->model->cfg->robot.part[i], &x, v);
+    return s->model->part[i].kind->read(s->part_state[i], &s->model->part[i], &x, v);
 }

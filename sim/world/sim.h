@@ -38,7 +38,7 @@ typedef struct sim_state_s {
      * and the link name them: left, front, right. A copy of their state
      * after each step; WORLD_TOF_COUNT slots, ntof used. */
     int ntof;
-    int tof_part[WORLD_TOF_COUNT];     /* index in model->cfg->part */
+    int tof_part[WORLD_TOF_COUNT];     /* index in model->part */
     tof_reading_t tof_last[WORLD_TOF_COUNT];
     double tof_true_m[WORLD_TOF_COUNT]; /* ray distance behind the last reading, -1 none */
     uint32_t tof_count[WORLD_TOF_COUNT]; /* readings taken */

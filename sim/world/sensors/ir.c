@@ -234,8 +234,8 @@ static const keytab_t keys[] = {
 static void part_init(void *state, const robot_part_t *p, const sim_model_t *md, uint64_t seed, unsigned index, unsigned count)
 {
     ir_state_t *st = state;
-    ir_init(&st->ir, &((const ir_part_spec_t *)p->spec)->model, md->cfg->world.wall_reflectivity, seed, index);
-    ir_set_finish(&st->ir, md->cfg->world.wall_gloss, md->cfg->world.wall_gloss_exp);
+    ir_init(&st->ir, &((const ir_part_spec_t *)p->spec)->model, md->arena.wall_reflectivity, seed, index);
+    ir_set_finish(&st->ir, md->arena.wall_gloss, md->arena.wall_gloss_exp);
     st->last[0] = st->last[1] = -1;
     st->count = 0;
 }

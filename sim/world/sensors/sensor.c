@@ -19,7 +19,21 @@ const sensor_kind_t *sensor_kind(const char *name)
 
 const sensor_kind_t *sensor_kind_at(unsigned i) { return i < NKINDS ? kinds[i] : NULL; }
 
-const sim_pose_t *sensor_pose(const sim_model_t *m, const robot_part_t *p) { return &m->pose[p - m->cfg->robot.part]; }
+int sensor_of_kind(const sim_model_t *m, const char *kind, unsigned i)
+{
+    for (int k = 0; k < m->nparts; k++)
+        if (!strcmp(m->part[k].kind->name, kind) && i-- == 0) return k;
+    return -1;
+}
+
+unsigned sensor_count(const sim_model_t *m, const char *kind)
+{
+    unsigned n = 0;
+    for (int k = 0; k < m->nparts; k++) n += !strcmp(m->part[k].kind->name, kind);
+    return n;
+}
+
+const sim_pose_t *sensor_pose(const sim_model_t *m, const robot_part_t *p) { return &m->pose[p - m->part]; }
 
 void sensor_frame(const world_t *w, const sim_pose_t *pose, double pos_m[3], double axis[3], double left[3], double up[3])
 {

@@ -49,7 +49,11 @@ const sensor_kind_t *sensor_kind(const char *name);
 /* The i-th kind, NULL past the end. */
 const sensor_kind_t *sensor_kind_at(unsigned i);
 
-/* Part p's pose in model m (p is one of m->cfg->part). */
+/* The index in m->part of the i-th sensor of a kind ("ir", "tof",
+ * "gyro"), -1 if there is none; how many of that kind m has. */
+int sensor_of_kind(const sim_model_t *m, const char *kind, unsigned i);
+unsigned sensor_count(const sim_model_t *m, const char *kind);
+/* Part p's pose in model m (p is one of m->part). */
 const sim_pose_t *sensor_pose(const sim_model_t *m, const robot_part_t *p);
 /* Where a sensor at this pose sits in the world now and its frame: axis
  * (where it looks: yaw then pitch), left and up, unit vectors. */

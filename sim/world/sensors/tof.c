@@ -94,7 +94,7 @@ static void init(void *state, const robot_part_t *p, const sim_model_t *md, uint
     tof_state_t *t = state;
     const tof_spec_t *s = (const tof_spec_t *)p->spec;
     tof_init(&t->tof, s, seed, index);
-    t->period_steps = (uint64_t)llround(s->period_s / md->cfg->sim.step_s);
+    t->period_steps = (uint64_t)llround(s->period_s / md->step_s);
     if (t->period_steps == 0) t->period_steps = 1;
     t->next_step = (uint64_t)index * t->period_steps / count; /* staggered */
     t->last.dist_m = s->range_m;
