@@ -250,7 +250,7 @@ static void forward_step(drive_t *dr)
          * the first fresh readings (under 90 mm from its centre the side
          * rays still meet its side walls, past its entry posts) */
         if (!drive_fresh(dr)) return;
-        uint8_t walls = drive_read_walls(dr, RC_CELL_MM / 2 - dr->mo.fwd.pos);
+        uint8_t walls = drive_read_walls(RC_CELL_MM / 2 - dr->mo.fwd.pos);
         explore_moved(&dr->ex, dr->st.heading);
         explore_sense(&dr->ex, walls);
         if (cm.left == 0) dr->wall_ahead = (walls & EXPLORE_WALL_FRONT) != 0;
@@ -305,9 +305,7 @@ void cmd_step(drive_t *dr)
     case CMD_SENSE: /* standing still: wait for a reading taken now */
         if (motion_busy(&dr->mo) || !drive_fresh(dr)) return;
         {
-            hal_distance_t f = walls_distance(HAL_TOF_FRONT);
-            uint8_t w = 0;
-            if (!f.timeout && f.mm < RC_FRONT_AT_CENTRE_MM + 60) w |= EXPLORE_WALL_FRONT;
+            uint8_t w = drive_front_wall_here();
             /* the diagonal sensors look past a cell's end when standing at
              * its centre: the sides come from the rules (start cell) or
              * from when the cell was entered */

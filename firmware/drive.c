@@ -27,7 +27,7 @@ int8_t drive_quarter(uint8_t h, uint8_t d)
 
 /* Walls of the cell ahead, read from the sensors (EXPLORE_WALL_* bits);
  * to_centre: mm from the robot to that cell's centre. */
-uint8_t drive_read_walls(drive_t *dr, float to_centre)
+uint8_t drive_read_walls(float to_centre)
 {
     uint8_t w = 0;
     hal_distance_t l = walls_distance(HAL_TOF_LEFT), f = walls_distance(HAL_TOF_FRONT), r = walls_distance(HAL_TOF_RIGHT);
@@ -36,6 +36,14 @@ uint8_t drive_read_walls(drive_t *dr, float to_centre)
     if (!l.timeout && l.mm < RC_SIDE_THRESHOLD_MM) w |= EXPLORE_WALL_LEFT;
     if (!r.timeout && r.mm < RC_SIDE_THRESHOLD_MM) w |= EXPLORE_WALL_RIGHT;
     return w;
+}
+
+/* Standing at a cell centre: EXPLORE_WALL_FRONT if the front sensor sees
+ * this cell's far wall (within 60 mm of where it reads it), else 0. */
+uint8_t drive_front_wall_here(void)
+{
+    hal_distance_t f = walls_distance(HAL_TOF_FRONT);
+    return !f.timeout && f.mm < RC_FRONT_AT_CENTRE_MM + 60 ? EXPLORE_WALL_FRONT : 0;
 }
 
 /* Where the robot is along its heading relative to the nearest cell
@@ -244,7 +252,7 @@ int drive_sense_point(drive_t *dr, float left_mm)
 uint8_t drive_sense_cell_ahead(drive_t *dr, float to_centre)
 {
     dr->sensed = SENSE_DONE;
-    uint8_t walls = drive_read_walls(dr, to_centre);
+    uint8_t walls = drive_read_walls(to_centre);
     explore_moved(&dr->ex, dr->st.heading); /* committed to the cell ahead */
     explore_sense(&dr->ex, walls);
     return walls;

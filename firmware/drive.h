@@ -45,14 +45,14 @@ typedef struct {
     uint8_t front_seq;       /* front-wall alignment: the reading last used */
     uint8_t last_lateral_ok; /* last_lateral_mm holds an estimate of this straight */
     uint32_t stage_us;       /* when the current U-turn or front-fix step began */
-    uint32_t start_us;       /* when the contest began (fw_setup) */
     float smooth_offset_mm;  /* a smooth turn starts this far before the turn cell's centre */
     float smooth_length_mm;  /* and drives this far along its arc */
     float run_offset_mm;     /* speed runs: how far past st.cell's centre the robot is */
     float move_shift_mm;     /* the move under way ends this far before a cell centre */
     float last_lateral_mm;   /* the last centring estimate of this straight */
-    motion_t mo;
     explore_t ex;
+    uint32_t start_us;       /* when the contest began (fw_setup) */
+    motion_t mo;
 } drive_t;
 
 /* a console line: fmt a HAL_STR with up to two %u */
@@ -60,7 +60,9 @@ void drive_log(const char *fmt, unsigned a, unsigned b);
 /* Relative quarter turns from heading h to heading d: 0, 1 (right), 2, -1. */
 int8_t drive_quarter(uint8_t h, uint8_t d);
 /* The walls of the cell ahead (EXPLORE_WALL_* bits), its centre to_centre mm away. */
-uint8_t drive_read_walls(drive_t *dr, float to_centre);
+uint8_t drive_read_walls(float to_centre);
+/* Standing at a cell centre: EXPLORE_WALL_FRONT if a wall is ahead, else 0. */
+uint8_t drive_front_wall_here(void);
 void drive_centring(drive_t *dr);
 void drive_no_centring(drive_t *dr);
 void drive_align_front(drive_t *dr, float before_mm);

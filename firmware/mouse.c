@@ -86,22 +86,6 @@ void fw_tick(void)
     if (dr.mo.crashed && dr.st.mode != MOUSE_CRASHED) dr.st.mode = MOUSE_CRASHED;
 }
 
-/* At the start, between runs: another speed run, or the contest is over
- * (MOUSE_RUN_DEADLINE_S, or speed_runs made). */
-static void to_run(void)
-{
-    if (motion_busy(&dr.mo)) return;
-    if ((hal_micros() - dr.start_us) / 1000000u >= MOUSE_RUN_DEADLINE_S || dr.st.runs >= speed_runs) {
-        dr.st.mode = MOUSE_DONE;
-        motion_stop(&dr.mo);
-        HAL_LOG_STR("contest done");
-        return;
-    }
-    dr.st.mode = MOUSE_RUN;
-    dr.waiting = WAIT_NONE;
-    if (PLAN_ENABLED) slalomrun_begin(&dr);
-}
-
 void fw_loop(void)
 {
     hal_tick_hold();
@@ -114,8 +98,17 @@ void fw_loop(void)
             dr.waiting = WAIT_NONE;
         }
         break;
-    case MOUSE_TO_RUN:
-        to_run();
+    case MOUSE_TO_RUN: /* at the start: another speed run, or the contest is over */
+        if (motion_busy(&dr.mo)) break;
+        if ((hal_micros() - dr.start_us) / 1000000u >= MOUSE_RUN_DEADLINE_S || dr.st.runs >= speed_runs) {
+            dr.st.mode = MOUSE_DONE;
+            motion_stop(&dr.mo);
+            HAL_LOG_STR("contest done");
+            break;
+        }
+        dr.st.mode = MOUSE_RUN;
+        dr.waiting = WAIT_NONE;
+        if (PLAN_ENABLED) slalomrun_begin(&dr);
         break;
     case MOUSE_RUN:
         runs_step(&dr, 1);

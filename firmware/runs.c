@@ -71,17 +71,17 @@ static void run_plan(drive_t *dr, int to_goal)
     int8_t qq = dd >= 0 ? drive_quarter(dr->st.heading, (uint8_t)dd) : 0;
     dr->st.cell = c;
     dr->ex.path_cost = (uint16_t)(dr->ex.path_cost - n);
+    uint8_t wall = !maze_passable(&dr->ex.map, c, dr->st.heading, 0);
     if ((qq == 1 || qq == -1) && mm >= dr->smooth_offset_mm) {
         dr->ex.path_cost--; /* the smooth turn's quarter */
         drive_forward(dr, mm - dr->smooth_offset_mm, v_max, RC_SMOOTH_MM_S, accel);
         dr->move_shift_mm = dr->smooth_offset_mm;
         dr->turn_pending = qq;
-        dr->wall_ahead = !maze_passable(&dr->ex.map, c, dr->st.heading, 0);
         dr->st.heading = (uint8_t)dd;
     } else {
         drive_forward(dr, mm, v_max, 0, accel);
-        dr->wall_ahead = !maze_passable(&dr->ex.map, c, dr->st.heading, 0);
     }
+    dr->wall_ahead = wall;
     dr->run_offset_mm = 0;
 }
 

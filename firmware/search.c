@@ -63,6 +63,9 @@ static void search_decide(drive_t *dr, float left)
     dr->next_dir = (int8_t)d; /* stop in the cell ahead */
 }
 
+/* a straight of mm at the search's speed, on into the next cell */
+static void search_forward(drive_t *dr, float mm) { drive_forward(dr, mm, RC_SEARCH_MM_S, RC_SEARCH_MM_S, RC_ACCEL_MM_S2); }
+
 /* Search: decide at the sensing point of each cell. st.heading is the way
  * the robot faces (or will face once a pending turn is made); ex.cell is
  * the cell it is in or committed to. */
@@ -71,11 +74,8 @@ void search_step(drive_t *dr)
     if (dr->waiting == WAIT_NONE) {
         /* standing at a cell centre: the start (or after the last stop) */
         if (dr->ex.steps == 0 && dr->ex.phase == EXPLORE_TO_GOAL) {
-            hal_distance_t f = walls_distance(HAL_TOF_FRONT);
             /* the start cell: by the rules open only ahead */
-            uint8_t w = EXPLORE_WALL_LEFT | EXPLORE_WALL_RIGHT;
-            if (!f.timeout && f.mm < RC_FRONT_AT_CENTRE_MM + 60) w |= EXPLORE_WALL_FRONT;
-            explore_sense(&dr->ex, w);
+            explore_sense(&dr->ex, (uint8_t)(EXPLORE_WALL_LEFT | EXPLORE_WALL_RIGHT | drive_front_wall_here()));
         }
         int d = explore_next_ticking(dr);
         if (d < 0) {
@@ -85,18 +85,18 @@ void search_step(drive_t *dr)
         int8_t q = drive_quarter(dr->st.heading, (uint8_t)d);
         dr->st.heading = (uint8_t)d;
         if (q) drive_turn(dr, q);
-        else drive_forward(dr, RC_CELL_MM + (dr->ex.steps ? 0.0f : RC_START_BEHIND_MM), RC_SEARCH_MM_S, RC_SEARCH_MM_S, RC_ACCEL_MM_S2);
+        else search_forward(dr, RC_CELL_MM + (dr->ex.steps ? 0.0f : RC_START_BEHIND_MM));
         return;
     }
     if (dr->waiting == WAIT_TURN) {
         if (!drive_turn_done(dr)) return;
-        drive_forward(dr, RC_CELL_MM, RC_SEARCH_MM_S, RC_SEARCH_MM_S, RC_ACCEL_MM_S2);
+        search_forward(dr, RC_CELL_MM);
         return;
     }
     if (dr->waiting == WAIT_SMOOTH) {
         if (dr->mo.rot.active) return;
         /* on the new heading, the offset past the turn cell's centre */
-        drive_forward(dr, RC_CELL_MM - dr->smooth_offset_mm, RC_SEARCH_MM_S, RC_SEARCH_MM_S, RC_ACCEL_MM_S2);
+        search_forward(dr, RC_CELL_MM - dr->smooth_offset_mm);
         return;
     }
     /* WAIT_MOVE */
