@@ -70,61 +70,42 @@ static void move_pose(const slalom_move_t *mv, int16_t *x2, int16_t *y2, uint8_t
     *h8 = (uint8_t)((*h8 + mv->dir * g->turn) & 7u);
 }
 
-#ifdef RC_DIAG_AFTER_TURN_HALVES
 /* Whether the diagonals of a plan start where the robot knows where it
- * is, for a robot with room to spare on a diagonal (robot_ukmarsbot.h):
- * any turn may enter one, V90s join them; the half steps driven on
- * diagonals from an F45 or F135 to the turn back to an orthogonal heading
- * are at most RC_DIAG_MAX_HALVES where that entry follows an orthogonal
- * straight of at least RC_DIAG_ENTRY_HALVES (centred on its side walls),
- * else at most RC_DIAG_AFTER_TURN_HALVES (the heading the turns before it
- * left is held blind); that D45 or D135 leads into such a straight (the
- * robot centred again before its next turn or stop). */
-static int diag_ok(drive_t *dr, int n)
+ * is. The half steps driven on diagonals from an F45 or F135 to the turn
+ * back to an orthogonal heading are at most RC_DIAG_MAX_HALVES where that
+ * entry follows an orthogonal straight of at least RC_DIAG_ENTRY_HALVES
+ * (centred on its side walls), else at most RC_DIAG_AFTER_TURN_HALVES
+ * (the heading the turns before it left is held blind; -1: no diagonal
+ * entered from a turn); the D45 or D135 back leads into such a straight
+ * (the robot centred again before its next turn or stop). Without
+ * RC_DIAG_ALL_TURNS, no V90, F135 or D135 (turns between diagonals, or
+ * into one from a turn) and no lane change (an F45 straight into a D45:
+ * with 3.2 mm to the posts it touched on alljapan-012-1991-exp-fin, seed
+ * 1, paper robot). The planner alternates straights and turns, so one
+ * diagonal's half steps are one DIAG move. */
+static int diag_ok(int n)
 {
     int limit = 0, driven = 0;
     for (int i = 0; i < n; i++) {
         const slalom_move_t *mv = &sr.moves[i];
-        if (mv->kind == SLALOM_F45 || mv->kind == SLALOM_F135) {
+        uint8_t k = mv->kind;
+        if (!RC_DIAG_ALL_TURNS && (k == SLALOM_V90 || k == SLALOM_F135 || k == SLALOM_D135)) return 0;
+        if (k == SLALOM_F45 || k == SLALOM_F135) {
             int centred = i > 0 && sr.moves[i - 1].kind == SLALOM_ORTHO && sr.moves[i - 1].n >= RC_DIAG_ENTRY_HALVES;
+            if (!centred && RC_DIAG_AFTER_TURN_HALVES < 0) return 0;
             limit = centred ? RC_DIAG_MAX_HALVES : RC_DIAG_AFTER_TURN_HALVES;
             driven = 0;
-        } else if (mv->kind == SLALOM_DIAG) {
+        } else if (k == SLALOM_DIAG) {
             driven += mv->n;
             if (driven > limit) return 0;
-        } else if ((mv->kind == SLALOM_D45 || mv->kind == SLALOM_D135) &&
-                   (i + 1 >= n || sr.moves[i + 1].kind != SLALOM_ORTHO || sr.moves[i + 1].n < RC_DIAG_ENTRY_HALVES)) {
-            return 0;
+        } else if (k == SLALOM_D45 || k == SLALOM_D135) {
+            if (!RC_DIAG_ALL_TURNS && (i == 0 || sr.moves[i - 1].kind != SLALOM_DIAG)) return 0;
+            if (i + 1 >= n || sr.moves[i + 1].kind != SLALOM_ORTHO || sr.moves[i + 1].n < RC_DIAG_ENTRY_HALVES) return 0;
         }
     }
     return 1;
 }
-#else
-/* Whether the diagonals of a plan start where the robot knows where it
- * is: each entered by an F45 at the end of an orthogonal straight of at
- * least RC_DIAG_ENTRY_HALVES (centred on its side walls) and left by a D45
- * into one as long (centred again before the next turn), none longer than
- * RC_DIAG_MAX_HALVES, no lane change (an F45 straight into a D45: with
- * 3.2 mm to the posts it touched on alljapan-012-1991-exp-fin, seed 1),
- * and no V90, F135 or D135 (turns between diagonals, or into one from a
- * turn). */
-static int diag_ok(drive_t *dr, int n)
-{
-    for (int i = 0; i < n; i++) {
-        const slalom_move_t *mv = &sr.moves[i];
-        if (mv->kind == SLALOM_V90 || mv->kind == SLALOM_F135 || mv->kind == SLALOM_D135) return 0;
-        if (mv->kind == SLALOM_DIAG && mv->n > RC_DIAG_MAX_HALVES) return 0;
-        if (mv->kind == SLALOM_F45 && (i == 0 || sr.moves[i - 1].kind != SLALOM_ORTHO || sr.moves[i - 1].n < RC_DIAG_ENTRY_HALVES))
-            return 0;
-        if (mv->kind == SLALOM_D45 && (i == 0 || sr.moves[i - 1].kind != SLALOM_DIAG || i + 1 >= n ||
-                                       sr.moves[i + 1].kind != SLALOM_ORTHO || sr.moves[i + 1].n < RC_DIAG_ENTRY_HALVES))
-            return 0;
-    }
-    return 1;
-}
-#endif
 
-#ifdef RC_BLIND_MAX_HALVES
 /* The orthogonal straight of n half units from the node (x2, y2) heading
  * h8 (even): the half units at its end with no known wall on either side,
  * since the last one with a wall (centring holds nothing there: the robot
@@ -150,7 +131,7 @@ static int blind_halves(drive_t *dr, int16_t x2, int16_t y2, uint8_t h8, int n, 
 }
 
 /* Whether the S90 entered at the node (x2, y2) heading h8 turns in a cell
- * with a wall ahead (prun_straight: the straight into it aligns on it). */
+ * with a wall ahead (straight(): the straight into it aligns on it). */
 static int s90_walled(drive_t *dr, int16_t x2, int16_t y2, uint8_t h8)
 {
     if (!((x2 | y2) & 1)) return 0;
@@ -186,11 +167,10 @@ static int blind_ok(drive_t *dr, int n)
     }
     return 1;
 }
-#endif
 
 /* This run's turns (each kind at its own speed, RC_SLALOM_*_MM_S) and the
  * planner's costs for them: each turn's legs are driven with the straights
- * beside it (prun_straight), its arc at its speed (prun_turn). */
+ * beside it (straight()), its arc at its speed (turn()). */
 static void fit_turns(drive_t *dr, uint8_t fast, float ff_max, plan_costs_t *c)
 {
     float whole_s[SLALOM_KINDS];
@@ -223,18 +203,16 @@ void slalomrun_begin(drive_t *dr)
     fit_turns(dr, fast, ff_max, &c);
     float t_s;
     int n = plan_run(&dr->ex.map, &c, sr.moves, PLAN_MAX_MOVES, &t_s);
-    if (n > 0 && !diag_ok(dr, n)) { /* the same without diagonals */
+    if (n > 0 && !diag_ok(n)) { /* the same without diagonals */
         c.turn_s[SLALOM_F45] = c.turn_s[SLALOM_F135] = c.turn_s[SLALOM_D45] = c.turn_s[SLALOM_D135] = c.turn_s[SLALOM_V90] = -1;
         n = plan_run(&dr->ex.map, &c, sr.moves, PLAN_MAX_MOVES, &t_s);
     }
-#ifdef RC_BLIND_MAX_HALVES
-    if (n > 0 && !blind_ok(dr, n)) {
+    if (RC_BLIND_MAX_HALVES >= 0 && n > 0 && !blind_ok(dr, n)) {
         drive_log(HAL_STR("run %u: orthogonal (a blind straight, a turn)"), dr->st.runs + 1u, 0);
         return;
     }
-#endif
     if (n <= 0) return;
-    dr->mo.ff_max_cmd = ff_max; /* until prun_end */
+    dr->mo.ff_max_cmd = ff_max; /* until run_end */
     unsigned diag = 0;
     for (int i = 0; i < n; i++) diag += sr.moves[i].kind == SLALOM_DIAG || sr.moves[i].kind >= SLALOM_F45;
     char line[HAL_LOG_MAX + 1];

@@ -1,6 +1,6 @@
 /* walls.h - the mouse's wall sensors, ToF or IR, as three distance readings.
  *
- * mouse.c judges walls, centres and aligns on the wall ahead from three
+ * drive.c judges walls, centres and aligns on the wall ahead from three
  * readings in mm (HAL_TOF_LEFT, _FRONT, _RIGHT). walls_distance gives them
  * from the robot's sensors:
  *   - a robot configuration without RC_WALLS_IR (ToF robots): hal_distance
