@@ -18,6 +18,12 @@
 #define RC_ODOM_TRACK_MM 96.2f
 #define RC_COUNTS_PER_REV 358.32f    /* 12 PPR on the motor x 29.86 gear */
 #define RC_MM_PER_COUNT (3.14159265f * RC_WHEEL_DIAMETER_MM / RC_COUNTS_PER_REV) /* 0.2806 mm */
+/* each wheel's own mm per count (odom.c): wheels of one size here */
+#define RC_MM_PER_COUNT_LEFT RC_MM_PER_COUNT
+#define RC_MM_PER_COUNT_RIGHT RC_MM_PER_COUNT
+/* The robot stands this far behind the start cell's centre at the start
+ * (mm; 0: on the centre; UKMARSBOT starts backed against the rear wall). */
+#define RC_START_BEHIND_MM 0.0f
 
 /* ---- motor model, for feed-forward ---- */
 /* The Pololu 30:1 LP 6V gearmotor as mmsim's datasheet model has it
@@ -204,6 +210,8 @@
  * had slipped ~0.5 degrees per turn pair in staircases (7.7 m/s^2). A
  * shorter offset leaves the 30 ms ToF sensors time to deliver a fresh
  * reading of the next cell before its own turn must start. */
+/* 1: smooth turns (0: on the spot only, motion.c) */
+#define RC_SMOOTH_TURNS 1
 #define RC_SMOOTH_MM_S 350.0f
 #define RC_SMOOTH_DEG_S 315.1f       /* 5.5 rad/s */
 #define RC_SMOOTH_ACCEL_DEG_S2 4010.7f /* 70 rad/s^2 */
@@ -429,6 +437,8 @@
  * entered turns up to 10 degrees off. Above this speed the centring P is
  * scaled by RC_LATERAL_REF_MM_S / v, which keeps the loop as at 500 mm/s. */
 #define RC_LATERAL_REF_MM_S 500.0f
+#else
+#define RC_LATERAL_REF_MM_S 0.0f /* mm/s; 0: the centring P is not scaled */
 #endif
 #define RC_KP_HEADING 10.0f /* rad/s of steering per rad of heading error */
 

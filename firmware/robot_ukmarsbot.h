@@ -20,6 +20,8 @@
 #define RC_ODOM_TRACK_MM 75.0f
 #define RC_COUNTS_PER_REV 234.6f     /* encoder_ppr 12 (both edges of the XOR) x gear_ratio 19.55 */
 #define RC_MM_PER_COUNT (3.14159265f * RC_WHEEL_DIAMETER_MM / RC_COUNTS_PER_REV) /* 0.4285 mm */
+#define RC_MM_PER_COUNT_LEFT RC_MM_PER_COUNT
+#define RC_MM_PER_COUNT_RIGHT RC_MM_PER_COUNT
 /* [motor.*] no_load_rpm 1050 at the wheel, 6 V: 1759 mm/s, 293 mm/s per V
  * x 5.865 mV */
 #define RC_MM_S_PER_CMD 1.719f

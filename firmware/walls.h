@@ -27,12 +27,6 @@
 #include "hal.h"
 #include "robot_config.h"
 
-/* The robot stands this far behind the start cell's centre at the start
- * (mm; 0: on the centre). UKMARSBOT starts backed against the rear wall. */
-#ifndef RC_START_BEHIND_MM
-#define RC_START_BEHIND_MM 0.0f
-#endif
-
 #ifdef RC_WALLS_IR
 /* Switches on the emitters of the robot's IR sensors (if any); from fw_setup. */
 void walls_setup(void);
