@@ -80,6 +80,10 @@
  * cosine and sine of that angle turn a reading into distances. */
 #define RC_TOF_FOV_DEG 25.0f
 #define RC_TOF_RAYS 5                /* the cone as robots/paper.ini's rays = 5 models it */
+/* 0: the wall sensors are ToF (walls.h); no IR front curve (unused) */
+#define RC_WALLS_IR 0
+#define RC_IR_FRONT_CURVE_RATIO64 { 0 }
+#define RC_IR_FRONT_CURVE_MM { 0 }
 #define RC_DIAG_EDGE_COS 0.8434f     /* cos(32.5 deg) */
 #define RC_DIAG_EDGE_SIN 0.5373f     /* sin(32.5 deg) */
 /* A diagonal sensor sees a side wall 84 - 40 = 44 mm away sideways:

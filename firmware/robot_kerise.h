@@ -49,6 +49,10 @@
 #define RC_TOF_SIDE_Y_MM 11.0f       /* mm ahead of the body centre */
 #define RC_TOF_FOV_DEG 25.0f         /* deg, full cone */
 #define RC_TOF_RAYS 5                 /* rays across the cone, robots/kerise-v5.ini */
+/* 0: the wall sensors are ToF (walls.h); no IR front curve (unused) */
+#define RC_WALLS_IR 0
+#define RC_IR_FRONT_CURVE_RATIO64 { 0 }
+#define RC_IR_FRONT_CURVE_MM { 0 }
 #define RC_DIAG_EDGE_COS 0.8434f     /* cos(32.5 deg): robot_config.h */
 #define RC_DIAG_EDGE_SIN 0.5373f     /* sin(32.5 deg) */
 /* a side wall 45 - 3 - 12 = 30 mm out from the sensor: 30 / cos(32.5 deg) */

@@ -1,14 +1,11 @@
 /* walls.c - ToF or IR readings as distances (walls.h). */
 #include "walls.h"
 
-#ifdef RC_WALLS_IR /* else walls.h makes walls_distance hal_distance */
-
 #include <math.h>
 
 #include "robot_config.h"
 #include "walls_ir.h"
 
-#ifdef RC_IR_FRONT_CURVE_MM
 /* the forward pair's sum in 1/64 of its calibrated sum, falling, and the
  * distance to the wall ahead at each (robot_config: RC_IR_FRONT_CURVE_*) */
 static const uint16_t curve_ratio64[] HAL_FLASH = RC_IR_FRONT_CURVE_RATIO64;
@@ -33,11 +30,10 @@ static hal_distance_t front_mm(uint32_t ratio64)
     d.timeout = 1;
     return d;
 }
-#endif
 
 void walls_setup(void)
 {
-    if (!hal_ir_count()) return;
+    if (!RC_WALLS_IR || !hal_ir_count()) return;
     for (uint8_t g = 0; g < HAL_EMITTER_GROUPS; g++) hal_emitter(g, 1);
 }
 
@@ -72,20 +68,16 @@ static uint8_t ir_of(uint8_t role)
 
 hal_distance_t walls_distance(uint8_t sensor)
 {
-    if (!hal_ir_count()) return hal_distance(sensor);
+    if (!RC_WALLS_IR || !hal_ir_count()) return hal_distance(sensor);
     hal_distance_t d = { 0, 1, hal_ir_seq() };
     const walls_ir_cal_t *c = walls_ir_cal();
     if (ir_of(0) == 255) return d;
     if (sensor == HAL_TOF_FRONT) {
-#ifdef RC_IR_FRONT_CURVE_MM
         uint32_t sum = (uint32_t)ir_reading(ir_of(1)) + ir_reading(ir_of(2));
         uint32_t ref = (uint32_t)c->front_ref[0] + c->front_ref[1];
         hal_distance_t f = front_mm(sum * 64u / (ref ? ref : 1u));
         f.seq = d.seq;
         return f;
-#else
-        return d;
-#endif
     }
     uint8_t side = sensor == HAL_TOF_RIGHT;
     uint16_t raw = ir_reading(ir_of(side ? 3 : 0)), ref = c->side_ref[side];
@@ -94,5 +86,3 @@ hal_distance_t walls_distance(uint8_t sensor)
     d.timeout = 0;
     return d;
 }
-
-#endif
