@@ -305,7 +305,7 @@ void cmd_step(drive_t *dr)
     case CMD_SENSE: /* standing still: wait for a reading taken now */
         if (motion_busy(&dr->mo) || !drive_fresh(dr)) return;
         {
-            uint8_t w = drive_front_wall_here();
+            uint8_t w = walls_ahead(WALLS_HERE_FRONT_MM);
             /* the diagonal sensors look past a cell's end when standing at
              * its centre: the sides come from the rules (start cell) or
              * from when the cell was entered */

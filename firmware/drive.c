@@ -29,21 +29,8 @@ int8_t drive_quarter(uint8_t h, uint8_t d)
  * to_centre: mm from the robot to that cell's centre. */
 uint8_t drive_read_walls(float to_centre)
 {
-    uint8_t w = 0;
-    hal_distance_t l = walls_distance(HAL_TOF_LEFT), f = walls_distance(HAL_TOF_FRONT), r = walls_distance(HAL_TOF_RIGHT);
     /* the far wall of the cell ahead is RC_FRONT_AT_CENTRE_MM beyond its centre */
-    if (!f.timeout && f.mm < to_centre + RC_FRONT_AT_CENTRE_MM + RC_FRONT_WALL_MARGIN_MM) w |= EXPLORE_WALL_FRONT;
-    if (!l.timeout && l.mm < RC_SIDE_THRESHOLD_MM) w |= EXPLORE_WALL_LEFT;
-    if (!r.timeout && r.mm < RC_SIDE_THRESHOLD_MM) w |= EXPLORE_WALL_RIGHT;
-    return w;
-}
-
-/* Standing at a cell centre: EXPLORE_WALL_FRONT if the front sensor sees
- * this cell's far wall (within 60 mm of where it reads it), else 0. */
-uint8_t drive_front_wall_here(void)
-{
-    hal_distance_t f = walls_distance(HAL_TOF_FRONT);
-    return !f.timeout && f.mm < RC_FRONT_AT_CENTRE_MM + 60 ? EXPLORE_WALL_FRONT : 0;
+    return walls_around(to_centre + RC_FRONT_AT_CENTRE_MM + RC_FRONT_WALL_MARGIN_MM);
 }
 
 /* Where the robot is along its heading relative to the nearest cell

@@ -61,8 +61,6 @@ void drive_log(const char *fmt, unsigned a, unsigned b);
 int8_t drive_quarter(uint8_t h, uint8_t d);
 /* The walls of the cell ahead (EXPLORE_WALL_* bits), its centre to_centre mm away. */
 uint8_t drive_read_walls(float to_centre);
-/* Standing at a cell centre: EXPLORE_WALL_FRONT if a wall is ahead, else 0. */
-uint8_t drive_front_wall_here(void);
 void drive_centring(drive_t *dr);
 void drive_no_centring(drive_t *dr);
 void drive_align_front(drive_t *dr, float before_mm);

@@ -75,7 +75,7 @@ void search_step(drive_t *dr)
         /* standing at a cell centre: the start (or after the last stop) */
         if (dr->ex.steps == 0 && dr->ex.phase == EXPLORE_TO_GOAL) {
             /* the start cell: by the rules open only ahead */
-            explore_sense(&dr->ex, (uint8_t)(EXPLORE_WALL_LEFT | EXPLORE_WALL_RIGHT | drive_front_wall_here()));
+            explore_sense(&dr->ex, (uint8_t)(EXPLORE_WALL_LEFT | EXPLORE_WALL_RIGHT | walls_ahead(WALLS_HERE_FRONT_MM)));
         }
         int d = explore_next_ticking(dr);
         if (d < 0) {

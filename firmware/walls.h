@@ -25,6 +25,19 @@
 #include "hal.h"
 #include "robot_config.h"
 
+/* Standing in a cell, its far wall reads at most this far (mm): 60 mm
+ * beyond where it reads from the cell's centre. */
+#define WALLS_HERE_FRONT_MM (RC_FRONT_AT_CENTRE_MM + 60)
+
+/* The wall decision (the search's, the speed runs', command mode's and
+ * the console's): EXPLORE_WALL_LEFT, _FRONT, _RIGHT bits (explore.h),
+ * relative to the robot. A side wall: a side reading (not timed out)
+ * nearer than RC_SIDE_THRESHOLD_MM; the wall ahead: a front reading
+ * nearer than front_limit_mm (where the far wall of the cell ahead, or of
+ * this one, stands: WALLS_HERE_FRONT_MM standing in a cell). walls_ahead
+ * reads the front sensor only. */
+uint8_t walls_around(float front_limit_mm);
+uint8_t walls_ahead(float front_limit_mm);
 /* Switches on the emitters of the robot's IR sensors (if any); from fw_setup. */
 void walls_setup(void);
 /* The latest reading of role HAL_TOF_LEFT, _FRONT or _RIGHT (see above). */
