@@ -15,8 +15,8 @@
 /* ---- External command mode (mmsim --mms): the caller orders each move ----
  * The moves reuse the search's primitives: a straight senses the walls of
  * every cell it enters at RC_SENSE_BEFORE_MM before that cell's centre
- * (read_walls, into the map), centres on the side walls, aligns on a wall
- * ahead and ends with a front fix; turns are start_turn's in-place turns.
+ * (drive_read_walls, into the map), centres on the side walls, aligns on a wall
+ * ahead and ends with a front fix; turns are drive_turn's in-place turns.
  * Between commands the mouse stands at a cell centre or, after an odd
  * number of half steps, on the boundary between two cells (RC_CELL_MM / 2
  * before the centre of ex.cell, the cell it was entering: sensed on the
@@ -24,7 +24,7 @@
  * circle as at a centre: the boundary's posts are as far as the walls);
  * facing along the boundary it faces a post and cannot move. It may also
  * turn by 45 degrees (CF_DIAG): facing a diagonal on a boundary, forward
- * moves go from boundary middle to boundary middle (cmd_diagonal; ex.cell
+ * moves go from boundary middle to boundary middle (diagonal(); ex.cell
  * and the edge bits then name the boundary reached as above, the cell
  * being the one the diagonal heads into). */
 enum { CMD_NONE = 0, CMD_SENSE, CMD_FORWARD, CMD_TURN };
@@ -78,7 +78,7 @@ static int diag_step(drive_t *dr, maze_cell_t *c, uint8_t *e)
 
 /* 1: diagonals steer on the speed runs' diagonal reference (host builds) */
 #define CMD_DIAG_REF (PLAN_ENABLED && RC_CMD_DIAG_TOF)
-/* The reference (diag_anchor, diag_centring) from the middle of the
+/* The reference (diagref_anchor, diagref_centring) from the middle of the
  * boundary the robot stands on: ex.cell's centre half a cell back along
  * edge_dir(), in the half-unit grid. */
 static void diag_anchor(drive_t *dr)
@@ -105,7 +105,7 @@ static int diagonal(drive_t *dr, uint16_t halves)
     if (CMD_DIAG_REF) diag_anchor(dr);
     dr->ex.cell = c;
     cm.flags = (uint8_t)(CF_DIAG | CF_HALF | CF_UNSENSED | (e << CF_EDGE_SHIFT) | ((halves & 1u) ? CF_START_HALF : 0u));
-    cm.entered = (uint8_t)(halves >> 1); /* mouse_cmd_moved: 2 x cmd_entered + the odd half */
+    cm.entered = (uint8_t)(halves >> 1); /* cmd_moved: 2 x entered + the odd half */
     cm.kind = CMD_FORWARD;
     /* at the smooth turns' speed: at the search's, the robot touched a
      * post on gen-8x8-s1's first diagonals (seed 1) */
@@ -236,7 +236,7 @@ static void finish(drive_t *dr, uint8_t result)
 
 static void forward_step(drive_t *dr)
 {
-    if (cm.flags & CF_DIAG) { /* a diagonal (cmd_diagonal): unsensed to its end */
+    if (cm.flags & CF_DIAG) { /* a diagonal (diagonal()): unsensed to its end */
         if (CMD_DIAG_REF && motion_busy(&dr->mo)) {
             diagref_centring(&cm_ref, &dr->mo, &dr->ex.map);
             return;

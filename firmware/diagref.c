@@ -132,11 +132,12 @@ float diagref_expect(const maze_t *m, float x_mm, float y_mm, float ang_rad, flo
  * var: RC_DIAG_TOF_START_MM at the start, growing by
  * RC_DIAG_TOF_DRIFT_MM2 per mm driven; a reading's variance (RC_TOF_CV x
  * its distance)^2). */
+
 /* A diagonal straight starts from the node (x2, y2) (half units: cell
  * (x, y)'s centre at (2x, 2y)) heading h8 (eighths clockwise from north),
  * the robot carry_mm short of it (a speed run: a turn's straight after
  * it): the reference's starting point. Speed runs and command mode's
- * diagonals (cmd_diagonal). */
+ * diagonals (cmd.c diagonal). */
 void diagref_anchor(diagref_t *g, const motion_t *mo, int16_t x2, int16_t y2, uint8_t h8, float carry_mm)
 {
     float a = 1.5707963f - 0.7853982f * (float)h8; /* the heading, counter-clockwise from east */

@@ -111,7 +111,7 @@ void drive_centring(drive_t *dr)
     float el = 0.1f * (float)dr->side_dmm[0], er = 0.1f * (float)dr->side_dmm[1];
     dr->mo.lateral_mm = dr->side_ok[0] && dr->side_ok[1] ? 0.5f * (el + er) : dr->side_ok[0] ? el : dr->side_ok[1] ? er : 0.0f;
     dr->mo.lateral_valid = (uint8_t)(dr->side_ok[0] || dr->side_ok[1]);
-    if (dr->mo.lateral_valid && news) { /* averaged over the last few readings for start_turn */
+    if (dr->mo.lateral_valid && news) { /* averaged over the last few readings for drive_turn */
         dr->last_lateral_mm = dr->last_lateral_ok ? dr->last_lateral_mm + RC_PIVOT_AVG * (dr->mo.lateral_mm - dr->last_lateral_mm) : dr->mo.lateral_mm;
         dr->last_lateral_ok = 1;
     }
@@ -305,7 +305,7 @@ void drive_turn(drive_t *dr, int8_t q)
     dr->waiting = WAIT_TURN;
 }
 
-/* 1 when the turn started by start_turn (all its stages) is over. */
+/* 1 when the turn started by drive_turn (all its stages) is over. */
 int drive_turn_done(drive_t *dr)
 {
     if (motion_busy(&dr->mo)) return 0;

@@ -184,7 +184,7 @@ static void fit_turns(drive_t *dr, uint8_t fast, float ff_max, plan_costs_t *c)
     }
 }
 
-/* At the start of a speed run: the moves (run_count 0 if plan_run finds
+/* At the start of a speed run: the moves (sr.count 0 if plan_run finds
  * none: the orthogonal run then), at the safe speeds (cruise, acceleration,
  * turns, diagonals) on the first run and after one whose tracking error
  * reached RC_RUN_CLEAN_MM, else the fast: the runs climb from the safe to
@@ -257,7 +257,7 @@ static void straight(drive_t *dr, uint8_t n, const slalom_move_t *next)
         dr->wall_ahead = !maze_passable(&dr->ex.map, node_cell(dr, sr.x2 + slalom_step_x[sr.h8], sr.y2 + slalom_step_y[sr.h8]), (uint8_t)(sr.h8 >> 1), 0);
 }
 
-/* The turn run_moves[run_idx]: its slalom, at the turn speed throughout. */
+/* The turn sr.moves[sr.idx]: its slalom, at the turn speed throughout. */
 static void turn(drive_t *dr)
 {
     const slalom_move_t *mv = &sr.moves[sr.idx++];
@@ -272,7 +272,7 @@ static void turn(drive_t *dr)
     dr->waiting = WAIT_SMOOTH;
 }
 
-/* The run reached the goal: as run_plan's end of a run. */
+/* The run reached the goal: as runs.c run_plan's end of a run. */
 static void run_end(drive_t *dr)
 {
     dr->waiting = WAIT_NONE;
@@ -308,7 +308,7 @@ static void next_move(drive_t *dr)
     turn(dr);
 }
 
-/* One loop of a planned speed run (run_step while run_count > 0). */
+/* One loop of a planned speed run (runs_step while sr.count > 0). */
 void slalomrun_step(drive_t *dr)
 {
     float e = fmaxf(fabsf(dr->mo.fwd_err_mm), fabsf(dr->mo.rot_err_mm));
