@@ -8,6 +8,7 @@
 #include <math.h>
 
 #include "robot_config.h"
+#include "walls.h"
 
 #define HALF_WALL_MM (RC_WALL_MM / 2) /* posts are as wide as the walls */
 
@@ -119,5 +120,74 @@ float diagref_expect(const maze_t *m, float x_mm, float y_mm, float ang_rad, flo
         if (h[i].face >= 0 && !same && h[i].t_mm < h[best].t_mm + margin_mm) return -1.0f;
     }
     return h[best].t_mm;
+}
+
+/* The diagonal reference (RC_DIAG_TOF, diagref.h): the robot's position in
+ * the maze (mm from the outer corner of cell (0, 0), x east, y north) is
+ * p plus odometry's travel since the diagonal began, turned into the
+ * maze's frame by psi; p starts where the plan has the robot then and
+ * each trusted side reading moves it. On a diagonal the left sensor looks
+ * along one maze axis and the right one along the other, so the estimate's
+ * x and y are two independent one-dimensional Kalman filters (variance
+ * var: RC_DIAG_TOF_START_MM at the start, growing by
+ * RC_DIAG_TOF_DRIFT_MM2 per mm driven; a reading's variance (RC_TOF_CV x
+ * its distance)^2). */
+
+/* A diagonal straight starts from the node (x2, y2) (half units: cell
+ * (x, y)'s centre at (2x, 2y)) heading h8 (eighths clockwise from north),
+ * the robot carry_mm short of it (a speed run: a turn's straight after
+ * it): the reference's starting point. Speed runs and command mode's
+ * diagonals (cmd.c diagonal). */
+void diagref_anchor(diagref_t *g, const motion_t *mo, int16_t x2, int16_t y2, uint8_t h8, float carry_mm)
+{
+    float a = 1.5707963f - 0.7853982f * (float)h8; /* the heading, counter-clockwise from east */
+    g->lx = (float)(x2 + 1) * (RC_CELL_MM / 2);
+    g->ly = (float)(y2 + 1) * (RC_CELL_MM / 2);
+    g->px = g->lx - carry_mm * cosf(a);
+    g->py = g->ly - carry_mm * sinf(a);
+    g->ox = mo->odom.x_mm;
+    g->oy = mo->odom.y_mm;
+    g->psi = a - 1.5707963f - mo->heading_rad;
+    g->a = a;
+    g->var[0] = g->var[1] = RC_DIAG_TOF_START_MM * RC_DIAG_TOF_START_MM;
+    g->dist_mm = mo->odom.dist_mm;
+    g->seq[0] = walls_distance(HAL_TOF_LEFT).seq;
+    g->seq[1] = walls_distance(HAL_TOF_RIGHT).seq;
+}
+
+/* On a diagonal straight: each new side reading that diagref_expect
+ * trusts (and within RC_DIAG_TOF_GATE_MM of it) moves the position
+ * estimate along the sensor's axis by the filter's gain times the
+ * difference; the estimate's offset right of the diagonal's line steers
+ * (mo->lateral_mm) as wall centring does. */
+void diagref_centring(diagref_t *g, motion_t *mo, const maze_t *map)
+{
+    float cp = cosf(g->psi), sp = sinf(g->psi), dx = mo->odom.x_mm - g->ox, dy = mo->odom.y_mm - g->oy;
+    float px = g->px + cp * dx - sp * dy, py = g->py + sp * dx + cp * dy;
+    float b = 1.5707963f + mo->odom.theta_rad + g->psi, cb = cosf(b), sb = sinf(b);
+    float grow = RC_DIAG_TOF_DRIFT_MM2 * (mo->odom.dist_mm - g->dist_mm);
+    g->var[0] += grow;
+    g->var[1] += grow;
+    g->dist_mm = mo->odom.dist_mm;
+    for (uint8_t i = 0; i < 2; i++) {
+        hal_distance_t d = walls_distance(i ? HAL_TOF_RIGHT : HAL_TOF_LEFT);
+        if (d.seq == g->seq[i]) continue;
+        g->seq[i] = d.seq;
+        if (d.timeout || fabsf(mo->odom.theta_rad - mo->heading_rad) > 0.035f) continue; /* 2 degrees: turning */
+        float side = i ? -RC_TOF_SIDE_X_MM : RC_TOF_SIDE_X_MM; /* to the left */
+        float sx = px + RC_TOF_SIDE_Y_MM * cb - side * sb, sy = py + RC_TOF_SIDE_Y_MM * sb + side * cb;
+        float ax = b + (i ? -0.7853982f : 0.7853982f);
+        float e = diagref_expect(map, sx, sy, ax, RC_DIAG_TOF_MAX_MM, RC_DIAG_TOF_MARGIN_MM);
+        if (e < 0 || fabsf((float)d.mm - e) > RC_DIAG_TOF_GATE_MM) continue;
+        uint8_t ay = fabsf(cosf(ax)) < fabsf(sinf(ax)); /* the axis is the maze's y */
+        float r = RC_TOF_CV * e, gain = g->var[ay] / (g->var[ay] + r * r), k = gain * (e - (float)d.mm);
+        g->var[ay] *= 1.0f - gain;
+        g->px += k * cosf(ax);
+        g->py += k * sinf(ax);
+        px += k * cosf(ax);
+        py += k * sinf(ax);
+    }
+    mo->lateral_mm = (px - g->lx) * sinf(g->a) - (py - g->ly) * cosf(g->a);
+    mo->lateral_valid = 1;
 }
 #endif

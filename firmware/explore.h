@@ -36,8 +36,6 @@ enum {
 #define EXPLORE_WALL_LEFT 4u
 
 typedef struct {
-    maze_t map;              /* the mouse's belief */
-    flood_t flood;           /* scratch for every flood */
     maze_cell_t cell;        /* where the mouse is */
     uint8_t heading;         /* MAZE_NORTH.. */
     uint8_t phase;           /* EXPLORE_TO_GOAL.. */
@@ -45,8 +43,10 @@ typedef struct {
     uint16_t proven_at_step; /* step when the path was proven, or EXPLORE_NEVER */
     uint16_t goal_at_step;   /* step when the goal was first entered, or EXPLORE_NEVER */
     uint16_t run_cost;       /* cost of the proven run path */
-    uint32_t plan_us_max;    /* longest explore_next so far, hal_micros us */
     uint16_t path_cost;      /* cost from where the last explore_run/home_dir asked */
+    uint32_t plan_us_max;    /* longest explore_next so far, hal_micros us */
+    maze_t map;              /* the mouse's belief */
+    flood_t flood;           /* scratch for every flood */
 } explore_t;
 
 /* Start exploring with a map holding size, start and goal (walls ignored:

@@ -73,9 +73,6 @@ static float ff_spare(float ff_max_cmd, float v_mm_s, float w_deg_s);
 
 /* A robot may turn only on the spot (RC_SMOOTH_TURNS 0): no smooth turn
  * then fits before any turn, however long the straight. */
-#ifndef RC_SMOOTH_TURNS
-#define RC_SMOOTH_TURNS 1
-#endif
 
 /* Integrate a turn of `degrees` (> 0) at constant forward speed v_mm_s,
  * its rotation the profile the control tick runs (peak w_deg_s, accel
@@ -223,9 +220,7 @@ void motion_tick(motion_t *m, float dt_s)
         if (m->lateral_valid) {
             m->heading_rad += RC_KI_LATERAL * m->lateral_mm * dt_s;
             offset_rad = RC_KP_LATERAL * m->lateral_mm;
-#ifdef RC_LATERAL_REF_MM_S
-            if (m->fwd.speed > RC_LATERAL_REF_MM_S) offset_rad *= RC_LATERAL_REF_MM_S / m->fwd.speed;
-#endif
+            if (RC_LATERAL_REF_MM_S > 0 && m->fwd.speed > RC_LATERAL_REF_MM_S) offset_rad *= RC_LATERAL_REF_MM_S / m->fwd.speed;
             if (offset_rad > RC_LATERAL_MAX_RAD) offset_rad = RC_LATERAL_MAX_RAD;
             if (offset_rad < -RC_LATERAL_MAX_RAD) offset_rad = -RC_LATERAL_MAX_RAD;
         }

@@ -21,7 +21,7 @@
 #include "profile.h"
 
 /* 1: motion_t holds the feed-forward's cap (ff_max_cmd), which the
- * planner's speed runs raise (mouse.c, plan.h PLAN_ENABLED); 0: the cap is
+ * planner's speed runs raise (slalomrun.c, plan.h PLAN_ENABLED); 0: the cap is
  * RC_CMD_FF_MAX alone. The AVR builds have no planner and keep 0 (the
  * cap as a variable costs the UKMARSBOT image 86 B of flash and 23 B of stack
  * headroom); a target that enables the planner defines it 1 as well. */

@@ -5,11 +5,7 @@
 
 #include "robot_config.h"
 
-/* wheels of different sizes: each side's own mm per count (else both alike) */
-#ifndef RC_MM_PER_COUNT_LEFT
-#define RC_MM_PER_COUNT_LEFT RC_MM_PER_COUNT
-#define RC_MM_PER_COUNT_RIGHT RC_MM_PER_COUNT
-#endif
+/* each wheel's mm per count: RC_MM_PER_COUNT_LEFT, _RIGHT (robot_config.h) */
 
 void odom_init(odom_t *o, int32_t left, int32_t right)
 {

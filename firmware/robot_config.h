@@ -18,6 +18,12 @@
 #define RC_ODOM_TRACK_MM 96.2f
 #define RC_COUNTS_PER_REV 358.32f    /* 12 PPR on the motor x 29.86 gear */
 #define RC_MM_PER_COUNT (3.14159265f * RC_WHEEL_DIAMETER_MM / RC_COUNTS_PER_REV) /* 0.2806 mm */
+/* each wheel's own mm per count (odom.c): wheels of one size here */
+#define RC_MM_PER_COUNT_LEFT RC_MM_PER_COUNT
+#define RC_MM_PER_COUNT_RIGHT RC_MM_PER_COUNT
+/* The robot stands this far behind the start cell's centre at the start
+ * (mm; 0: on the centre; UKMARSBOT starts backed against the rear wall). */
+#define RC_START_BEHIND_MM 0.0f
 
 /* ---- motor model, for feed-forward ---- */
 /* The Pololu 30:1 LP 6V gearmotor as mmsim's datasheet model has it
@@ -74,6 +80,10 @@
  * cosine and sine of that angle turn a reading into distances. */
 #define RC_TOF_FOV_DEG 25.0f
 #define RC_TOF_RAYS 5                /* the cone as robots/paper.ini's rays = 5 models it */
+/* 0: the wall sensors are ToF (walls.h); no IR front curve (unused) */
+#define RC_WALLS_IR 0
+#define RC_IR_FRONT_CURVE_RATIO64 { 0 }
+#define RC_IR_FRONT_CURVE_MM { 0 }
 #define RC_DIAG_EDGE_COS 0.8434f     /* cos(32.5 deg) */
 #define RC_DIAG_EDGE_SIN 0.5373f     /* sin(32.5 deg) */
 /* A diagonal sensor sees a side wall 84 - 40 = 44 mm away sideways:
@@ -137,7 +147,7 @@
  * below 481 mm/s (RC_CMD_FF_MAX), braking always */
 #define RC_ACCEL_MM_S2 3000.0f
 #define RC_RUN_ACCEL_MM_S2 3000.0f   /* speed runs: 5000 crashed on japan2019 (wheel slip in the stops) */
-/* The speed runs climb (mouse.c prun_begin): the first, and any after a
+/* The speed runs climb (slalomrun.c slalomrun_begin): the first, and any after a
  * run whose tracking error reached RC_RUN_CLEAN_MM, at the safe figures
  * (RC_RUN_MM_S, RC_RUN_ACCEL_MM_S2, RC_CMD_FF_MAX, RC_SLALOM_SAFE_MM_S,
  * RC_DIAG_SAFE_MM_S), each after a clean one at these (host builds with
@@ -204,6 +214,8 @@
  * had slipped ~0.5 degrees per turn pair in staircases (7.7 m/s^2). A
  * shorter offset leaves the 30 ms ToF sensors time to deliver a fresh
  * reading of the next cell before its own turn must start. */
+/* 1: smooth turns (0: on the spot only, motion.c) */
+#define RC_SMOOTH_TURNS 1
 #define RC_SMOOTH_MM_S 350.0f
 #define RC_SMOOTH_DEG_S 315.1f       /* 5.5 rad/s */
 #define RC_SMOOTH_ACCEL_DEG_S2 4010.7f /* 70 rad/s^2 */
@@ -255,8 +267,8 @@
 #define RC_DIAG_SAFE_MM_S 400.0f
 #define RC_DIAG_FAST_MM_S 400.0f
 #define RC_RUN_CLEAN_MM 10.0f
-/* Diagonals only where the robot knows where it is (mouse.c
- * prun_diag_ok), else the run is planned without them: entered from an
+/* Diagonals only where the robot knows where it is (slalomrun.c
+ * diag_ok), else the run is planned without them: entered from an
  * orthogonal straight of at least RC_DIAG_ENTRY_HALVES (centred on its
  * side walls) and at most RC_DIAG_MAX_HALVES long. Measured in mmsim
  * (seed 1, the true pose against the plan's): a diagonal starts with the
@@ -273,8 +285,15 @@
  * their plans). */
 #define RC_DIAG_ENTRY_HALVES 2
 #define RC_DIAG_MAX_HALVES 0
+/* -1: no diagonal entered from a turn (slalomrun.c diag_ok), half steps */
+#define RC_DIAG_AFTER_TURN_HALVES (-1)
+/* 0: no V90, F135, D135 or lane change (slalomrun.c diag_ok) */
+#define RC_DIAG_ALL_TURNS 0
+/* blind straights (slalomrun.c blind_ok, robot_ukmarsbot.h): -1, no limit */
+#define RC_BLIND_MAX_HALVES (-1)
+#define RC_BLIND_MAX_TURNS 0             /* turns */
 /* 1: a position reference on diagonal straights from the diagonal ToF
- * sensors (mouse.c diag_centring, diagref.h): each reading of a known wall
+ * sensors (diagref.c diagref_centring): each reading of a known wall
  * face square to the sensor's axis is compared with the one the map
  * predicts from the estimated pose, a Kalman filter per maze axis moves the
  * estimate, and its offset from the diagonal's line steers as wall
@@ -349,7 +368,7 @@
  * and centred: it meets that line 28 mm ahead of the sensor) runs past the
  * post at the cell's entry (+-6 mm about the boundary) by this much; the
  * robot's turn towards the wall moves the sensor back and turns the edge
- * towards the post (mouse.c clear_of_entry_post). Square, every reading
+ * towards the post (drive.c clear_of_entry_post). Square, every reading
  * after RC_SENSE_FROM_MM is clear by 12 mm; turned 4.4 degrees left (a
  * centring that took the turn for an offset weaved +-6 degrees), at 148.4
  * mm before the centre of (15,0) by odometry (152.4 true), hk90's left
@@ -374,7 +393,7 @@
 /* front-wall alignment works in the last part of a move towards a wall */
 #define RC_ALIGN_FROM_MM 90.0f
 #define RC_ALIGN_GAIN 0.35f /* share of the sensor's correction taken per reading */
-/* Heading from the wall ahead, standing at a cell centre (mouse.c
+/* Heading from the wall ahead, standing at a cell centre (drive.c
  * wall_heading): the diagonal rays meet it ~48 mm out, 10 mm from the side
  * walls; one pair of readings (5 % noise each) gives the angle to ~0.9
  * degrees. */
@@ -422,6 +441,8 @@
  * entered turns up to 10 degrees off. Above this speed the centring P is
  * scaled by RC_LATERAL_REF_MM_S / v, which keeps the loop as at 500 mm/s. */
 #define RC_LATERAL_REF_MM_S 500.0f
+#else
+#define RC_LATERAL_REF_MM_S 0.0f /* mm/s; 0: the centring P is not scaled */
 #endif
 #define RC_KP_HEADING 10.0f /* rad/s of steering per rad of heading error */
 
@@ -434,7 +455,7 @@
 #define RC_STALL_MS 400u        /* ...for this long: crash stop */
 
 /* ---- command mode (mmsim --mms) ---- */
-/* 1: command mode's diagonals (mouse.c cmd_diagonal) steer on the speed
+/* 1: command mode's diagonals (cmd.c diagonal) steer on the speed
  * runs' diagonal reference (RC_DIAG_TOF's, with its RC_DIAG_TOF_* figures),
  * anchored at the middle of the boundary each starts from; 0: held blind
  * on odometry's heading. Host builds only (diagref.c is PLAN_ENABLED code). */

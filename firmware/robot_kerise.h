@@ -18,6 +18,9 @@
 #define RC_ODOM_TRACK_MM 29.0f
 #define RC_COUNTS_PER_REV 4096.0f    /* encoder_ppr 970.2 x gear_ratio 4.222 */
 #define RC_MM_PER_COUNT (3.14159265f * RC_WHEEL_DIAMETER_MM / RC_COUNTS_PER_REV) /* 0.00976 mm */
+#define RC_MM_PER_COUNT_LEFT RC_MM_PER_COUNT  /* wheels of one size */
+#define RC_MM_PER_COUNT_RIGHT RC_MM_PER_COUNT
+#define RC_START_BEHIND_MM 0.0f      /* mm: on the start cell's centre */
 
 /* ---- motor, for feed-forward (1023 = the battery's 3.7 V) ---- */
 /* [motor.*]: R = 3.7 V / stall_a 0.4 + driver_r_ohm 0.305 = 9.56 ohm;
@@ -46,6 +49,10 @@
 #define RC_TOF_SIDE_Y_MM 11.0f       /* mm ahead of the body centre */
 #define RC_TOF_FOV_DEG 25.0f         /* deg, full cone */
 #define RC_TOF_RAYS 5                 /* rays across the cone, robots/kerise-v5.ini */
+/* 0: the wall sensors are ToF (walls.h); no IR front curve (unused) */
+#define RC_WALLS_IR 0
+#define RC_IR_FRONT_CURVE_RATIO64 { 0 }
+#define RC_IR_FRONT_CURVE_MM { 0 }
 #define RC_DIAG_EDGE_COS 0.8434f     /* cos(32.5 deg): robot_config.h */
 #define RC_DIAG_EDGE_SIN 0.5373f     /* sin(32.5 deg) */
 /* a side wall 45 - 3 - 12 = 30 mm out from the sensor: 30 / cos(32.5 deg) */
@@ -74,6 +81,7 @@
 #define RC_PIVOT_MAX_MM 4.0f          /* mm */
 #define RC_PIVOT_AVG 0.3f             /* share per reading */
 /* smooth turns at 200 mm/s, 5 rad/s: a ~40 mm radius in a 90 mm cell */
+#define RC_SMOOTH_TURNS 1
 #define RC_SMOOTH_MM_S 200.0f         /* mm/s */
 #define RC_SMOOTH_DEG_S 286.5f       /* 5 rad/s */
 #define RC_SMOOTH_ACCEL_DEG_S2 4010.7f /* 70 rad/s^2, as robot_config.h */
@@ -114,6 +122,7 @@
 #define RC_KP_LATERAL 0.01f       /* rad per mm, as robot_config.h */
 #define RC_KI_LATERAL 0.01f       /* rad/s per mm */
 #define RC_LATERAL_MAX_RAD 0.15f  /* rad */
+#define RC_LATERAL_REF_MM_S 0.0f  /* mm/s; 0: the centring P is not scaled */
 #define RC_KP_HEADING 10.0f       /* rad/s per rad */
 
 #define RC_SETTLE_MM 1.0f         /* mm: a move is over within this, */

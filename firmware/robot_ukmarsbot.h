@@ -20,6 +20,8 @@
 #define RC_ODOM_TRACK_MM 75.0f
 #define RC_COUNTS_PER_REV 234.6f     /* encoder_ppr 12 (both edges of the XOR) x gear_ratio 19.55 */
 #define RC_MM_PER_COUNT (3.14159265f * RC_WHEEL_DIAMETER_MM / RC_COUNTS_PER_REV) /* 0.4285 mm */
+#define RC_MM_PER_COUNT_LEFT RC_MM_PER_COUNT
+#define RC_MM_PER_COUNT_RIGHT RC_MM_PER_COUNT
 /* [motor.*] no_load_rpm 1050 at the wheel, 6 V: 1759 mm/s, 293 mm/s per V
  * x 5.865 mV */
 #define RC_MM_S_PER_CMD 1.719f
@@ -78,7 +80,7 @@
 /* The diagonal pair ([ir.lds], [ir.rds]: x -+22, 14 mm ahead of the body's
  * centre = 28 ahead of the axle, 45 degrees out, a 3 degree beam): walls.c
  * reports each one's distance to its side wall along that axis, so the
- * "cone's edge" of mouse.c's geometry is the axis itself, 45 degrees off
+ * "cone's edge" of drive.c's geometry is the axis itself, 45 degrees off
  * the wall's normal */
 #define RC_TOF_SIDE_X_MM 22.0f
 #define RC_TOF_SIDE_Y_MM 28.0f
@@ -103,7 +105,7 @@
  * half a cell (without it the next wall is a cell further: mostly beyond
  * the front curve, a timeout) */
 #define RC_FRONT_WALL_MARGIN_MM 90.0f
-/* a side reading may be of the cell's entry post (mouse.c
+/* a side reading may be of the cell's entry post (drive.c
  * clear_of_entry_post) up to this beyond the post's half width: the
  * beam's 3 degrees at 88 mm are +-5 mm */
 #define RC_POST_MARGIN_MM 6.0f
@@ -179,7 +181,7 @@
  * heading (ours, not tuned further: the runs' diagonals are short). */
 #define RC_DIAG_SAFE_MM_S 500.0f
 #define RC_DIAG_FAST_MM_S 800.0f
-/* Which plans may drive diagonals (mouse.c prun_diag_ok): any turn may
+/* Which plans may drive diagonals (slalomrun.c diag_ok): any turn may
  * enter one; from an F45 or F135 to the turn back, at most
  * RC_DIAG_MAX_HALVES half steps of diagonal after an orthogonal straight
  * of at least RC_DIAG_ENTRY_HALVES, RC_DIAG_AFTER_TURN_HALVES after a
@@ -200,7 +202,8 @@
 #define RC_DIAG_ENTRY_HALVES 2           /* half units */
 #define RC_DIAG_MAX_HALVES 12            /* half steps */
 #define RC_DIAG_AFTER_TURN_HALVES 2      /* half steps */
-/* Blind straights (mouse.c prun_blind_ok): after an orthogonal straight
+#define RC_DIAG_ALL_TURNS 1              /* V90, F135, D135 and lane changes too */
+/* Blind straights (slalomrun.c blind_ok): after an orthogonal straight
  * that ends with more than RC_BLIND_MAX_HALVES half units without side
  * walls, at most RC_BLIND_MAX_TURNS turns entered across its line before
  * a wall ahead of one (or centring along that line) measures the offset

@@ -22,6 +22,10 @@
 #define RC_RUN_CLEAN_MM 10.0f         /* mm */
 #define RC_DIAG_ENTRY_HALVES 2        /* half units */
 #define RC_DIAG_MAX_HALVES 6          /* half steps */
+#define RC_DIAG_AFTER_TURN_HALVES (-1) /* half steps; -1: none */
+#define RC_DIAG_ALL_TURNS 0
+#define RC_BLIND_MAX_HALVES (-1)      /* half units; -1: no limit */
+#define RC_BLIND_MAX_TURNS 0          /* turns */
 #define RC_DIAG_TOF 0
 #define RC_CMD_DIAG_TOF 0
 #define RC_DIAG_TOF_START_MM 1.5f     /* mm, as robot_config.h */

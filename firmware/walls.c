@@ -1,14 +1,12 @@
 /* walls.c - ToF or IR readings as distances (walls.h). */
 #include "walls.h"
 
-#ifdef RC_WALLS_IR /* else walls.h makes walls_distance hal_distance */
-
 #include <math.h>
 
+#include "explore.h"
 #include "robot_config.h"
 #include "walls_ir.h"
 
-#ifdef RC_IR_FRONT_CURVE_MM
 /* the forward pair's sum in 1/64 of its calibrated sum, falling, and the
  * distance to the wall ahead at each (robot_config: RC_IR_FRONT_CURVE_*) */
 static const uint16_t curve_ratio64[] HAL_FLASH = RC_IR_FRONT_CURVE_RATIO64;
@@ -33,11 +31,10 @@ static hal_distance_t front_mm(uint32_t ratio64)
     d.timeout = 1;
     return d;
 }
-#endif
 
 void walls_setup(void)
 {
-    if (!hal_ir_count()) return;
+    if (!RC_WALLS_IR || !hal_ir_count()) return;
     for (uint8_t g = 0; g < HAL_EMITTER_GROUPS; g++) hal_emitter(g, 1);
 }
 
@@ -61,38 +58,38 @@ static uint16_t ir_reading(uint8_t sensor)
 }
 #endif
 
-/* hal_ir index of each role for the robot's sensor set (walls_ir.h):
- * left, front left, front right, right; 255 none */
-static uint8_t ir_of(uint8_t role)
-{
-    static const uint8_t advanced[4] HAL_FLASH = { 1, 0, 3, 2 }, basic[4] HAL_FLASH = { 2, 0, 0, 1 };
-    uint8_t n = hal_ir_count();
-    return n == 4 ? hal_flash_u8(&advanced[role]) : n == 3 ? hal_flash_u8(&basic[role]) : 255;
-}
-
 hal_distance_t walls_distance(uint8_t sensor)
 {
-    if (!hal_ir_count()) return hal_distance(sensor);
+    if (!RC_WALLS_IR || !hal_ir_count()) return hal_distance(sensor);
     hal_distance_t d = { 0, 1, hal_ir_seq() };
     const walls_ir_cal_t *c = walls_ir_cal();
-    if (ir_of(0) == 255) return d;
+    if (walls_ir_sensor(WALLS_IR_LEFT) == 255) return d;
     if (sensor == HAL_TOF_FRONT) {
-#ifdef RC_IR_FRONT_CURVE_MM
-        uint32_t sum = (uint32_t)ir_reading(ir_of(1)) + ir_reading(ir_of(2));
+        uint32_t sum = (uint32_t)ir_reading(walls_ir_sensor(WALLS_IR_FRONT_L)) + ir_reading(walls_ir_sensor(WALLS_IR_FRONT_R));
         uint32_t ref = (uint32_t)c->front_ref[0] + c->front_ref[1];
         hal_distance_t f = front_mm(sum * 64u / (ref ? ref : 1u));
         f.seq = d.seq;
         return f;
-#else
-        return d;
-#endif
     }
     uint8_t side = sensor == HAL_TOF_RIGHT;
-    uint16_t raw = ir_reading(ir_of(side ? 3 : 0)), ref = c->side_ref[side];
+    uint16_t raw = ir_reading(walls_ir_sensor(side ? WALLS_IR_RIGHT : WALLS_IR_LEFT)), ref = c->side_ref[side];
     if ((uint32_t)raw * 100u < (uint32_t)ref * c->side_pct || !raw) return d; /* no wall */
     d.mm = (uint16_t)(RC_SIDE_WALL_MM * sqrtf((float)ref / (float)raw) + 0.5f);
     d.timeout = 0;
     return d;
 }
 
-#endif
+/* ---- the wall decision ---- */
+static uint8_t front_wall(hal_distance_t f, float limit_mm) { return !f.timeout && f.mm < limit_mm ? EXPLORE_WALL_FRONT : 0u; }
+
+uint8_t walls_ahead(float front_limit_mm) { return front_wall(walls_distance(HAL_TOF_FRONT), front_limit_mm); }
+
+uint8_t walls_around(float front_limit_mm)
+{
+    uint8_t w = 0;
+    hal_distance_t l = walls_distance(HAL_TOF_LEFT), f = walls_distance(HAL_TOF_FRONT), r = walls_distance(HAL_TOF_RIGHT);
+    w |= front_wall(f, front_limit_mm);
+    if (!l.timeout && l.mm < RC_SIDE_THRESHOLD_MM) w |= EXPLORE_WALL_LEFT;
+    if (!r.timeout && r.mm < RC_SIDE_THRESHOLD_MM) w |= EXPLORE_WALL_RIGHT;
+    return w;
+}

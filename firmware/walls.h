@@ -1,11 +1,10 @@
 /* walls.h - the mouse's wall sensors, ToF or IR, as three distance readings.
  *
- * mouse.c judges walls, centres and aligns on the wall ahead from three
+ * drive.c judges walls, centres and aligns on the wall ahead from three
  * readings in mm (HAL_TOF_LEFT, _FRONT, _RIGHT). walls_distance gives them
  * from the robot's sensors:
- *   - a robot configuration without RC_WALLS_IR (ToF robots): hal_distance
- *     itself, as a macro (no code, no RAM: the Uno's budget);
- *   - with RC_WALLS_IR, chosen at run time: hal_distance on a robot without
+ *   - RC_WALLS_IR 0 (ToF robots): hal_distance itself;
+ *   - RC_WALLS_IR 1, chosen at run time: hal_distance on a robot without
  *     IR sensors (hal_ir_count() == 0), else each role's lit-minus-dark
  *     reading (walls_ir.h's roles and
  *     calibration) turned into a distance:
@@ -17,8 +16,7 @@
  *         sum of the pair against its calibrated sum through the robot's
  *         response curve (RC_IR_FRONT_CURVE_*), timeout below its last point.
  *     seq counts the backend's sensor passes (hal_ir_seq).
- * Robot numbers come from the robot's configuration header; the defaults
- * below keep a ToF robot's header as it is. */
+ * Robot numbers come from the robot's configuration header. */
 #ifndef WALLS_H
 #define WALLS_H
 
@@ -27,22 +25,22 @@
 #include "hal.h"
 #include "robot_config.h"
 
-/* The robot stands this far behind the start cell's centre at the start
- * (mm; 0: on the centre). UKMARSBOT starts backed against the rear wall. */
-#ifndef RC_START_BEHIND_MM
-#define RC_START_BEHIND_MM 0.0f
-#endif
+/* Standing in a cell, its far wall reads at most this far (mm): 60 mm
+ * beyond where it reads from the cell's centre. */
+#define WALLS_HERE_FRONT_MM (RC_FRONT_AT_CENTRE_MM + 60)
 
-#ifdef RC_WALLS_IR
+/* The wall decision (the search's, the speed runs', command mode's and
+ * the console's): EXPLORE_WALL_LEFT, _FRONT, _RIGHT bits (explore.h),
+ * relative to the robot. A side wall: a side reading (not timed out)
+ * nearer than RC_SIDE_THRESHOLD_MM; the wall ahead: a front reading
+ * nearer than front_limit_mm (where the far wall of the cell ahead, or of
+ * this one, stands: WALLS_HERE_FRONT_MM standing in a cell). walls_ahead
+ * reads the front sensor only. */
+uint8_t walls_around(float front_limit_mm);
+uint8_t walls_ahead(float front_limit_mm);
 /* Switches on the emitters of the robot's IR sensors (if any); from fw_setup. */
 void walls_setup(void);
 /* The latest reading of role HAL_TOF_LEFT, _FRONT or _RIGHT (see above). */
 hal_distance_t walls_distance(uint8_t sensor);
-#else
-#define walls_setup() ((void)0)
-/* (a caller's `#define hal_distance walls_distance` ends here: a macro is
- * not expanded again inside its own expansion) */
-#define walls_distance hal_distance
-#endif
 
 #endif

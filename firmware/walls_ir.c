@@ -1,7 +1,6 @@
 /* walls_ir.c - IR wall detection against a calibration (walls_ir.h). */
 #include "walls_ir.h"
 
-#include "explore.h"
 #include "hal.h"
 
 /* ORION's calibration (mazerunner-core config-robot-orion.h, EVENT_HOME):
@@ -10,10 +9,14 @@
 static walls_ir_cal_t cal = { WALLS_IR_MAGIC, { 152, 192 }, { 90, 110 }, WALLS_IR_SIDE_PCT, WALLS_IR_FRONT_PCT, 0 };
 static uint8_t sealed;
 
-enum { ROLE_FRONT_L, ROLE_FRONT_R, ROLE_LEFT, ROLE_RIGHT, ROLES };
+#define ROLES WALLS_IR_ROLES
+#define ROLE_FRONT_L WALLS_IR_FRONT_L
+#define ROLE_FRONT_R WALLS_IR_FRONT_R
+#define ROLE_LEFT WALLS_IR_LEFT
+#define ROLE_RIGHT WALLS_IR_RIGHT
+#define sensor_of walls_ir_sensor
 
-/* the hal_ir index of each role for the robot's sensor set, 255 none */
-static uint8_t sensor_of(uint8_t role)
+uint8_t walls_ir_sensor(uint8_t role)
 {
     static const uint8_t advanced[ROLES] HAL_FLASH = { 0, 3, 1, 2 }, basic[ROLES] HAL_FLASH = { 0, 0, 2, 1 };
     uint8_t n = hal_ir_count();
@@ -93,14 +96,4 @@ void walls_ir_levels(uint16_t pct[3])
     pct[0] = (uint16_t)(l * 100u / (c->side_ref[0] ? c->side_ref[0] : 1));
     pct[1] = (uint16_t)(f * 100u / ((uint32_t)c->front_ref[0] + c->front_ref[1] ? (uint32_t)c->front_ref[0] + c->front_ref[1] : 1));
     pct[2] = (uint16_t)(r * 100u / (c->side_ref[1] ? c->side_ref[1] : 1));
-}
-
-uint8_t walls_ir_walls(void)
-{
-    const walls_ir_cal_t *c = walls_ir_cal();
-    uint16_t pct[3];
-    if (sensor_of(0) == 255) return 0;
-    walls_ir_levels(pct);
-    return (uint8_t)((pct[0] >= c->side_pct ? EXPLORE_WALL_LEFT : 0) | (pct[1] >= c->front_pct ? EXPLORE_WALL_FRONT : 0) |
-                     (pct[2] >= c->side_pct ? EXPLORE_WALL_RIGHT : 0));
 }

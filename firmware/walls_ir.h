@@ -27,6 +27,12 @@
 #define WALLS_IR_FRONT_PCT 45u
 #define WALLS_IR_PASSES 16u /* schedule passes averaged by a calibration */
 
+/* the sensors' roles */
+enum { WALLS_IR_FRONT_L, WALLS_IR_FRONT_R, WALLS_IR_LEFT, WALLS_IR_RIGHT, WALLS_IR_ROLES };
+/* The hal_ir index of role (WALLS_IR_*) for the robot's sensor set, 255:
+ * none (no IR sensors, or a set of another size). */
+uint8_t walls_ir_sensor(uint8_t role);
+
 typedef struct {
     uint16_t magic;        /* WALLS_IR_MAGIC */
     uint16_t side_ref[2];  /* left, right side sensor's reading in the side pose */
@@ -49,9 +55,6 @@ void walls_ir_cal_seal(walls_ir_cal_t *c);
  * reading is too small to be a wall. */
 uint8_t walls_ir_calibrate_sides(void);
 uint8_t walls_ir_calibrate_front(void);
-/* The walls the sensors see now: EXPLORE_WALL_LEFT, _FRONT, _RIGHT bits
- * (explore.h), relative to the robot. */
-uint8_t walls_ir_walls(void);
 /* Each role's reading in % of its reference (left, front, right). */
 void walls_ir_levels(uint16_t pct[3]);
 

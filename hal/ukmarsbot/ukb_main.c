@@ -24,6 +24,7 @@
 #include "ukb_motors.h"
 #include "ukb_sensors.h"
 #include "explore.h"
+#include "walls.h"
 #include "walls_ir.h"
 
 #define UKB_SYSTICK_CLK_HZ (F_CPU / 256UL) /* Timer2 clock, Hz */
@@ -242,7 +243,7 @@ static void calibrate(char which)
 static void report_walls(void)
 {
     uint16_t pct[3];
-    uint8_t w = walls_ir_walls();
+    uint8_t w = walls_around(WALLS_HERE_FRONT_MM);
     walls_ir_levels(pct);
     ukb_console_printf_P(PSTR("walls %c%c%c (%u %u %u %%)"), w & EXPLORE_WALL_LEFT ? 'L' : '-', w & EXPLORE_WALL_FRONT ? 'F' : '-',
                          w & EXPLORE_WALL_RIGHT ? 'R' : '-', pct[0], pct[1], pct[2]);
