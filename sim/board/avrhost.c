@@ -17,6 +17,7 @@
 #include <simavr/sim_io.h>
 #include <simavr/sim_irq.h>
 
+#include "image_mcu.h"
 #include "io/infile.h"
 
 static elf_firmware_t fw; /* the ELF between avrhost_read and avrhost_put (large: off the stack) */
@@ -257,6 +258,9 @@ static int put_hex(avrhost_t *h, avrhost_image_t *img, const char *path, const c
                  h->avr->flashend + 1u);
         rc = -1;
     }
+    char why[300];
+    if (rc == 0 && image_mcu_check(x->flash, x->end, mcu, why, sizeof why) != 0)
+        rc = -1, snprintf(err, errn, "%s: %s", path, why);
     for (int i = 0; i < x->nchunks && rc == 0; i++)
         avr_loadcode(h->avr, x->flash + x->chunks[i].base, x->chunks[i].size, x->chunks[i].base);
     image_hex_free(x);
@@ -277,6 +281,9 @@ static int check_elf_sizes(const avrhost_t *h, const char *path, const char *mcu
     if (fw.eesize > avr->e2end + 1u)
         return snprintf(err, errn, "%s: %u bytes of .eeprom: more than the %s's EEPROM (%u bytes)", path, fw.eesize, mcu,
                         avr->e2end + 1u), -1;
+    char why[300];
+    if (fw.flash && fw.flashbase == 0 && image_mcu_check(fw.flash, fw.flashsize, mcu, why, sizeof why) != 0)
+        return snprintf(err, errn, "%s: %s", path, why), -1;
     return 0;
 }
 
