@@ -169,9 +169,10 @@ $(B)/host/sim/io/datadir.o $(B)/san/sim/io/datadir.o: INC += -DMMSIM_DATADIR='"$
 # DIR/share/mmsim, where DIR/bin/mmsim finds them from any working directory.
 PREFIX ?= /usr/local
 install: $(addprefix $(B)/,$(TOOLS))
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/mmsim/boards $(DESTDIR)$(PREFIX)/share/mmsim/robots $(DESTDIR)$(PREFIX)/share/mmsim/contests
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/mmsim/boards/parts $(DESTDIR)$(PREFIX)/share/mmsim/robots $(DESTDIR)$(PREFIX)/share/mmsim/contests
 	install -m 755 $^ $(DESTDIR)$(PREFIX)/bin
 	install -m 644 boards/*.ini $(DESTDIR)$(PREFIX)/share/mmsim/boards
+	install -m 644 boards/parts/*.ini $(DESTDIR)$(PREFIX)/share/mmsim/boards/parts
 	install -m 644 robots/*.ini $(DESTDIR)$(PREFIX)/share/mmsim/robots
 	install -m 644 contests/*.ini $(DESTDIR)$(PREFIX)/share/mmsim/contests
 .PHONY: install

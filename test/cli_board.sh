@@ -34,22 +34,39 @@ js() { python3 -c "import json,sys; j=json.loads(open(sys.argv[1]).read().splitl
 
 # ---- bad input: one line, exit 2 ----
 ONE_ERROR_LINE=1
+# the board file and its mainboard's parts file (boards/parts/), each copied: a fault in either is
+# named by its own file and line
 cp boards/ukmarsbot-v1.3.ini "$T/good.ini"
-sed 's/^pwm_pin = D9$/pwm_pin = D6/' "$T/good.ini" >"$T/pwm.ini"
-sed 's/^int_pin = D2$/int_pin = D22/' "$T/good.ini" >"$T/pin.ini"
-sed 's/^pin = D13$/pin = D7/' "$T/good.ini" >"$T/twice.ini"
-sed '/^r_ground_ohm/d' "$T/good.ini" >"$T/missing.ini"
+mkdir -p "$T/parts"
+MB=parts/ukmarsbot-mainboard-v1.3.ini
+# part NAME SED: the board file NAME.ini naming parts/NAME.ini, the mainboard's parts edited by SED
+part() { sed "s|^mainboard = .*|mainboard = parts/$1.ini|" "$T/good.ini" >"$T/$1.ini"; sed "$2" boards/$MB >"$T/parts/$1.ini"; }
+part pwm 's/^pwm_pin = D9$/pwm_pin = D6/'
+part pin 's/^int_pin = D2$/int_pin = D22/'
+part missing '/^r_ground_ohm/d'
+cp boards/$MB "$T/$MB"
+sed 's/^pin = D13$/pin = D3/' "$T/good.ini" >"$T/twice.ini"
 sed 's/^vcc_v = 5.0$/vcc_v = 12/' "$T/good.ini" >"$T/vcc.ini"
 printf '[board]\nnmae = x\n' >"$T/unknown.ini"
 # a key given twice (an emitter's pin = D11 then pin = A0: the last won) and an indented line
 sed 's/^pin = D11$/pin = D11\npin = A0/' "$T/good.ini" >"$T/dupkey.ini"
 sed 's/^vcc_v = 5.0$/vcc_v = 5.0\n  3.3/' "$T/good.ini" >"$T/cont.ini"
-for f in pwm pin twice missing vcc unknown dupkey cont; do
+# a mainboard figure given in the board file too (the diode's drop), and a parts file that is not there
+sed 's/^\[analog\]$/[battery]\ndiode_drop_v = 0\n\n[analog]/' "$T/good.ini" >"$T/again.ini"
+sed 's|^mainboard = .*|mainboard = parts/nosuch.ini|' "$T/good.ini" >"$T/nomb.ini"
+for f in pwm pin missing twice vcc unknown dupkey cont again; do
   want_rc 2 "bad board file ($f): exit 2" run $SK/MotorPwm.elf "$T/open.txt" --board "$T/$f.ini" --time-limit 1
   cp "$T/err" "$T/err.$f"
-  grep -qE "^$T/$f.ini:[0-9]+: [a-z]+(\.[a-z]+)?\.[a-z_]+: " "$T/err" && ok "bad board file ($f): FILE:LINE: section.key: reason" \
+  case $f in pwm|pin|missing|again) file=$T/parts/$f.ini ;; *) file=$T/$f.ini ;; esac
+  [ $f = again ] && file=$T/$MB
+  grep -qE "^$file:[0-9]+: [a-z]+(\.[a-z]+)?\.[a-z_]+: " "$T/err" && ok "bad board file ($f): FILE:LINE: section.key: reason" \
     || bad "bad board file ($f): $(cat "$T/err")"
 done
+grep -q "battery.diode_drop_v: given in $T/again.ini too: a figure of the mainboard has one place" "$T/err.again" \
+  && ok "a mainboard figure in the board file too: refused" || bad "again: $(cat "$T/err.again")"
+want_rc 2 "a mainboard file that is not there" run $SK/MotorPwm.elf "$T/open.txt" --board "$T/nomb.ini" --time-limit 1
+grep -qx "$T/nomb.ini: board.mainboard: $T/parts/nosuch.ini: no such file" "$T/err" \
+  && ok "no mainboard file: its line" || bad "no mainboard file: $(cat "$T/err")"
 n=$(grep -n '^pin = D11$' "$T/good.ini" | cut -d: -f1)
 grep -qx "$T/dupkey.ini:$((n + 1)): emitter.front.pin: given twice (first on line $n)" "$T/err.dupkey" \
   && ok "board file: a named part's key twice: its line" || bad "board key twice: $(cat "$T/err.dupkey")"
@@ -111,7 +128,7 @@ ONE_ERROR_LINE=0
 
 # ---- motors: both wheels forward at duty 40/255 for 0.8 s, in two Timer1 modes ----
 # D1 (the board file's battery.diode_drop_v) feeds the H-bridge's VM and the A7 divider
-DROP=$(sed -n 's/^diode_drop_v *= *\([0-9.]*\).*/\1/p' boards/ukmarsbot-v1.3.ini); DROP=${DROP:-0}
+DROP=$(sed -n 's/^diode_drop_v *= *\([0-9.]*\).*/\1/p' boards/parts/ukmarsbot-mainboard-v1.3.ini); DROP=${DROP:-0}
 want_rc 1 "MotorPwm runs (no goal: exit 1)" run $SK/MotorPwm.elf "$T/open.txt" --time-limit 2
 cp "$T/out" "$T/motor.json"
 js "$T/motor.json" "

@@ -30,6 +30,7 @@ read -r _ first _ bat _ a4 _ sw _ a5 _ up _ low <"$T/line"
 [ "$up" = 1023 ] && ok "A4 with its pull-up on: 1023" || bad "A4 pull-up: $(cat "$T/line")"
 [ "$low" = 0 ] && ok "A5 driven low: 0 (after A7)" || bad "A5 low: $(cat "$T/line")"
 
+mkdir -p "$T/parts" && cp boards/parts/*.ini "$T/parts/"  # the mainboard's parts, named from the board file's folder
 sed 's/^a4 = open/a4 = 2.5/' boards/ukmarsbot-v1.3.ini >"$T/fixed.ini"
 probe "$T/fixed.ini"
 read -r _ first _ bat _ a4 _ <"$T/line"

@@ -268,7 +268,7 @@ got=$(awk '$1 >= 1750 && $1 < 1760 {print $3; exit}' "$T/sw16.dec")
 
 # ---- Battery: A7 through D1 and the 1:2 divider vs the simulated battery (MM_PARTS) less D1's drop
 brun bat Battery 2 "1.05 end" --lcm-log "$T/bat.lcmlog"
-DROP=$(sed -n 's/^diode_drop_v *= *\([0-9.]*\).*/\1/p' boards/ukmarsbot-v1.3.ini); DROP=${DROP:-0}
+DROP=$(sed -n 's/^diode_drop_v *= *\([0-9.]*\).*/\1/p' boards/parts/ukmarsbot-mainboard-v1.3.ini); DROP=${DROP:-0}
 if [ -s "$T/bat.lcmlog" ] && "$MMLOG" --dump MM_PARTS "$T/bat.lcmlog" >"$T/parts.jsonl" 2>"$T/err"; then
   python3 - "$T/bat.con" "$T/parts.jsonl" "$DROP" >"$T/bat.chk" <<'EOF'
 import bisect, json, sys

@@ -7,6 +7,10 @@
 #   jump       icall to a word address past the 32 KiB flash
 #   sleep      cli(); sleep_cpu();
 #   wdt        the watchdog enabled and never fed: resets forever
+#   erased     icall to erased flash inside the 32 KiB (opcode 0xFFFF)
+#   jmp0       `jmp 0` at the end of main: starts over forever, no reset
+#   badisr     Timer0's overflow interrupt enabled without a handler:
+#              avr-libc's __bad_interrupt jumps to 0, forever
 # Each: exit 1, exit_reason firmware_crashed, the cause and PC in the JSON
 # ("board"/"avr": {"crash": {...}}), one error line, no signal and no
 # sanitizer report (run it with the sanitized build: MMSIM=build/san-tools/mmsim
@@ -63,7 +67,20 @@ int main(void)
     for (;;) {}
 }
 EOF
-for p in recursion call jump sleep wdt wdt_once; do
+cat >"$T/erased.c" <<'EOF'
+/* word address 0x3000 = byte 0x6000: inside the 32 KiB flash, past the program: erased (0xFFFF) */
+int main(void) { void (*f)(void) = (void (*)(void))0x3000u; f(); for (;;) {} }
+EOF
+cat >"$T/jmp0.c" <<'EOF'
+volatile unsigned char n;
+int main(void) { n++; __asm__ volatile("jmp 0"); for (;;) {} }
+EOF
+cat >"$T/badisr.c" <<'EOF'
+#include <avr/interrupt.h>
+#include <avr/io.h>
+int main(void) { TCCR0B = 1 << CS00; TIMSK0 = 1 << TOIE0; sei(); for (;;) {} }
+EOF
+for p in recursion call jump sleep wdt wdt_once erased jmp0 badisr; do
   avr-gcc -mmcu=atmega328p -Os -o "$T/$p.elf" "$T/$p.c" 2>"$T/cc.err" || bad "avr-gcc $p: $(head -2 "$T/cc.err")"
 done
 
@@ -87,10 +104,14 @@ print(d['exit_reason'], c.get('cause'), c.get('pc') if sys.argv[3] == '' else c.
 for mode in board avr; do
   if [ $mode = board ]; then args=(--board ukmarsbot --robot robots/ukmarsbot.ini); key=board; else args=(); key=avr; fi
   for p in recursion:stack_overflow: call:stack_overflow: jump:bad_jump: sleep:sleep_with_interrupts_off: \
-           wdt:watchdog_reset_loop:; do
+           erased:erased_flash: jmp0:reset_loop: badisr:reset_loop: wdt:watchdog_reset_loop:; do
     IFS=: read -r name cause pc <<<"$p"
     want_rc 1 "$mode $name: exit 1" "$MMSIM" --maze $MAZE "${args[@]}" --avr "$T/$name.elf" --time-limit 3 --json
     check "$mode $name" $key "$cause" "$pc"
+    # erased flash is seen where a batch of simavr's instructions ends: between the jump's target and the flash's end
+    [ $name = erased ] && { python3 -c "
+import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1]); sys.exit(not 0x6000 <= d[sys.argv[2]]['crash']['pc'] < 0x8000)" \
+      "$T/out" $key && ok "$mode erased: the PC in the erased flash" || bad "$mode erased: PC $(tail -c 200 "$T/out")"; }
   done
   got=$(python3 -c "
 import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1]); print(d['exit_reason'], d[sys.argv[2]].get('watchdog_resets'))" \

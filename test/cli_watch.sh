@@ -11,7 +11,9 @@
 # holds the variables beside the pose. The same with --avr alone
 # (processor in the loop). An image without DWARF is read by size (one note
 # line, the same ticks); bad names and images, crafted symbol tables and
-# DWARF: one line, exit 2.
+# DWARF: one line, exit 2. WatchLto (an -flto build whose statics the
+# linker renamed NAME.lto_priv.N): by the source name and by the symbol, a
+# float from DWARF; two statics of one name: one line, exit 2.
 set -u
 B=${BUILD:-build}
 SHARED=${SHARED:-../shared}
@@ -158,5 +160,35 @@ for f in "$T"/mut*.elf; do
   grep -q "AddressSanitizer\|runtime error" "$T/err" && bad "$(basename "$f"): a sanitizer's report"
 done
 want_rc 2 "--watch without --avr" "$MMSIM" --maze mazes/gen-5x5-s1.txt --watch ticks
+
+# ---- an LTO build (test/arduino/board/WatchLto): -flto renames each file-scope static whose
+# name two files share NAME.lto_priv.N; --watch finds it by its source name in DWARF (its
+# DW_AT_location, its float type) and types its renamed symbol from DWARF too ----
+ONE_ERROR_LINE=
+want_rc 0 "WatchLto builds (-flto)" python3 tools/arduino-build test/arduino/board/WatchLto --board nano \
+  -o "$T/lto/WatchLto.elf" --cache "$B/arduino-build" --warnings more
+LTO=$T/lto/WatchLto.elf
+SYM=$(avr-nm "$LTO" | awk '$2 == "b" && $3 ~ /^_ZL13s_robot_angle\.lto_priv\./ {print $3}')
+[ -n "$SYM" ] && ok "the SRAM static's symbol is renamed: $SYM" || bad "no _ZL13s_robot_angle.lto_priv.N in SRAM: $(avr-nm "$LTO" | grep s_robot)"
+for name in s_robot_angle "$SYM"; do
+  want_rc 1 "--watch $name (LTO)" run --avr "$LTO" --watch "$name" --lcm-log "$T/l.lcmlog" --lcm-rate 1000
+  [ -s "$T/err" ] && bad "--watch $name: no note expected: $(cat "$T/err")"
+  "$MMLOG" --dump MM_WATCH "$T/l.lcmlog" >"$T/l.jsonl"
+  python3 - "$T/l.jsonl" "$T/out" "$name" <<'PY' && ok "--watch $name: f32 from DWARF, the angles the console printed" || bad "--watch $name: values"
+import json, sys
+m = [json.loads(l) for l in open(sys.argv[1])]
+con = json.loads(open(sys.argv[2]).read().splitlines()[-1])["console"]
+printed = {float(l.split()[1]) for l in con.splitlines() if l.startswith("ANGLE ")}
+v = [x["value"][0] for x in m]
+ok = len(m) == 2000 and all(x["type"] == ["f32"] and x["name"] == [sys.argv[3]] for x in m)
+ok = ok and len(printed) > 150 and v[-1] in printed | {max(printed) + 0.5} and set(v) - {0.0} <= printed | {max(printed) + 0.5}
+ok = ok and all(b - a in (0, 0.5) for a, b in zip(v, v[1:]))
+print(m[0]["type"], v[-1], max(printed)); sys.exit(0 if ok else 1)
+PY
+done
+ONE_ERROR_LINE=1
+want_rc 2 "--watch s_count: two SRAM statics of that name (LTO)" run --avr "$LTO" --watch s_count
+grep -q "^mmsim: --watch: 's_count' in .*: its DWARF has two variables of that name (at 0x8001.. and 0x8001..): watch one by its symbol" "$T/err" \
+  && ok "two statics of one name: its line" || bad "two statics: $(cat "$T/err")"
 echo "$fails failed"
 [ "$fails" -eq 0 ]

@@ -17,6 +17,7 @@
 #include <simavr/sim_io.h>
 #include <simavr/sim_irq.h>
 
+#include "image_mcu.h"
 #include "io/infile.h"
 
 static elf_firmware_t fw; /* the ELF between avrhost_read and avrhost_put (large: off the stack) */
@@ -144,6 +145,8 @@ static void on_reset(avr_io_t *io)
 {
     avrhost_t *h = ((struct avrhost_watch_t *)io)->h;
     uint64_t now = h->avr->cycle, second = h->avr->frequency; /* cycles of one second */
+    h->init_sp_known = 0; /* a reset: the start-up code's stack setup runs again, as it should */
+    if (!h->running) h->restarts_in_row = 0;
     if (!h->running) {
         h->wdt_in_row = 0;
         return;
@@ -158,6 +161,38 @@ static void on_reset(avr_io_t *io)
     }
 }
 
+/* The instruction at flash byte address pc is `out SPH, Rr` (1011 111r rrrr 1110, datasheet's instruction set). */
+static int is_out_sph(const avr_t *avr, uint32_t pc)
+{
+    if (pc + 1u > avr->flashend) return 0;
+    unsigned op = avr->flash[pc] | (unsigned)avr->flash[pc + 1u] << 8;
+    return (op & 0xFE0Fu) == 0xBE0Eu;
+}
+
+/* SPH set to RAMEND's high byte by the instruction at pc: the first such
+ * `out` after a reset is the start-up code's; the same instruction again
+ * without a reset between is the program started over by a jump to 0.
+ * AVRHOST_WDT_LOOP_RESETS of those in a row, each within a second of the
+ * last, end the run as a reset loop. */
+static void on_sp_init(avrhost_t *h, avr_t *avr, uint8_t v)
+{
+    if (v != (uint8_t)(avr->ramend >> 8)) return;
+    if (!h->init_sp_known) {
+        if (is_out_sph(avr, avr->pc)) h->init_sp_known = 1, h->init_sp_pc = avr->pc;
+        return;
+    }
+    if (avr->pc != h->init_sp_pc) return;
+    uint64_t now = avr->cycle, second = avr->frequency;
+    h->restarts++;
+    h->restarts_in_row = h->restarts_in_row > 0 && now - h->restart_last_cycle <= second ? h->restarts_in_row + 1u : 1u;
+    h->restart_last_cycle = now;
+    if (h->restarts_in_row >= AVRHOST_WDT_LOOP_RESETS && !h->crash) {
+        h->crash = "reset_loop";
+        h->crash_pc = avr->pc;
+        avr->state = cpu_Crashed; /* avr_run returns after this instruction */
+    }
+}
+
 /* SPH written through simavr's IO write hooks: the firmware's out and sts,
  * and every push, pop, call and return (simavr sets SP through the same
  * path): the stack pointer checked against SRAM before the next
@@ -167,6 +202,7 @@ static void on_sph(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param)
 {
     avrhost_t *h = param;
     avr->data[addr] = v;
+    on_sp_init(h, avr, v);
     if (h->watch->sph_bad[v] && !h->crash) {
         h->crash = "stack_overflow";
         h->crash_pc = avr->pc;
@@ -222,6 +258,9 @@ static int put_hex(avrhost_t *h, avrhost_image_t *img, const char *path, const c
                  h->avr->flashend + 1u);
         rc = -1;
     }
+    char why[300];
+    if (rc == 0 && image_mcu_check(x->flash, x->end, mcu, why, sizeof why) != 0)
+        rc = -1, snprintf(err, errn, "%s: %s", path, why);
     for (int i = 0; i < x->nchunks && rc == 0; i++)
         avr_loadcode(h->avr, x->flash + x->chunks[i].base, x->chunks[i].size, x->chunks[i].base);
     image_hex_free(x);
@@ -242,6 +281,9 @@ static int check_elf_sizes(const avrhost_t *h, const char *path, const char *mcu
     if (fw.eesize > avr->e2end + 1u)
         return snprintf(err, errn, "%s: %u bytes of .eeprom: more than the %s's EEPROM (%u bytes)", path, fw.eesize, mcu,
                         avr->e2end + 1u), -1;
+    char why[300];
+    if (fw.flash && fw.flashbase == 0 && image_mcu_check(fw.flash, fw.flashsize, mcu, why, sizeof why) != 0)
+        return snprintf(err, errn, "%s: %s", path, why), -1;
     return 0;
 }
 
@@ -374,6 +416,16 @@ static void sp_check(avrhost_t *h)
     h->crash_sp = sp;
 }
 
+/* The PC at a word 0xFFFF after a run: erased flash (a reserved opcode; simavr would run through it). */
+static void erased_check(avrhost_t *h)
+{
+    const avr_t *avr = h->avr;
+    if (h->crash || avr->pc + 1u > avr->flashend || avr->flash[avr->pc] != 0xFFu || avr->flash[avr->pc + 1u] != 0xFFu)
+        return;
+    h->crash = "erased_flash";
+    h->crash_pc = avr->pc;
+}
+
 static int crash_line(const avrhost_t *h, char *err, size_t errn)
 {
     char detail[260] = "";
@@ -385,6 +437,12 @@ static int crash_line(const avrhost_t *h, char *err, size_t errn)
                  h->avr->flashend);
     else if (!strcmp(h->crash, "watchdog_reset_loop"))
         snprintf(detail, sizeof detail, " (%u watchdog resets in a row)", h->wdt_in_row);
+    else if (!strcmp(h->crash, "reset_loop"))
+        snprintf(detail, sizeof detail,
+                 " (the program started over %u times in a row without a reset: a jump to 0, as avr-libc's "
+                 "__bad_interrupt makes for an enabled interrupt without a handler)", h->restarts_in_row);
+    else if (!strcmp(h->crash, "erased_flash"))
+        snprintf(detail, sizeof detail, " (the opcode 0xFFFF, erased flash: a jump or call past the program)");
     else if (last_log[0]) snprintf(detail, sizeof detail, " (simavr: %s)", last_log);
     return snprintf(err, errn, "firmware crashed at cycle %llu, PC 0x%04X: %s%s", (unsigned long long)h->avr->cycle,
                     h->crash_pc, h->crash, detail), -1;
@@ -430,6 +488,7 @@ int avrhost_run_to(avrhost_t *h, uint64_t until, char *err, size_t errn)
         uint32_t pc_was = avr->pc;
         int state = run_once(h);
         sp_check(h);
+        erased_check(h);
         if (h->crash || state == cpu_Done || state == cpu_Crashed) {
             avr_cycle_timer_cancel(avr, on_stop, h);
             crash_cause(h, state, pc_was);

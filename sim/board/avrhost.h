@@ -24,7 +24,10 @@ struct avr_t;
 struct avr_irq_t;
 
 #define AVRHOST_IN_MAX 4096u              /* bytes waiting for the UART's receive FIFO */
-#define AVRHOST_BATCH_MAX_CYCLES 100000u /* AVR cycles simavr may run in one avr_run call (its run_cycle_limit) */
+/* AVR cycles simavr may run in one avr_run call (its run_cycle_limit); the
+ * PC is checked for erased flash (0xFFFF) at each batch's end, so a slide
+ * through erased flash of about this many words is caught there */
+#define AVRHOST_BATCH_MAX_CYCLES 1024u
 #define AVRHOST_NO_TIMER_SLEEP_CYCLES 1000u /* AVR cycles simavr lets a core sleep when no cycle timer is set */
 #define AVRHOST_IMAGE_MAX_BYTES (64u << 20) /* an ELF with its debug sections; a Mega's flash is 256 KiB */
 #define AVRHOST_F_CPU_MIN_HZ 1000000u      /* the clocks an AVR is run at: 1 to 32 MHz */
@@ -63,6 +66,12 @@ typedef struct {
     uint64_t wdt_resets;          /* watchdog resets so far */
     uint32_t wdt_in_row;          /* watchdog resets since the last other reset, each within a second of the last */
     uint64_t wdt_last_cycle;      /* the cycle of the last watchdog reset */
+    int init_sp_known;            /* init_sp_pc found since the last reset */
+    uint32_t init_sp_pc;          /* flash byte address of the first `out SPH` of RAMEND's high byte after a reset
+                                   * (avr-libc's start-up code setting the stack) */
+    uint64_t restarts;            /* that instruction run again without a reset: the program started over (a jump to 0) */
+    uint32_t restarts_in_row;     /* ... in a row, each within a second of the last */
+    uint64_t restart_last_cycle;  /* the cycle of the last one */
     const char *crash;            /* why the firmware crashed (NULL: it has not): see avrhost_run_to */
     uint32_t crash_pc;            /* the program counter then, a byte address in flash */
     uint32_t crash_sp;            /* the stack pointer then */
@@ -121,7 +130,13 @@ int avrhost_gdb(avrhost_t *h, unsigned port, char *err, size_t errn);
  * next push, which simavr would write past its data array), "bad_jump" (the
  * PC past the program's code or back to 0: simavr stops there),
  * "sleep_with_interrupts_off" (simavr's cpu_Done: nothing can wake it),
- * "watchdog_reset_loop" (AVRHOST_WDT_LOOP_RESETS in a row) or "crashed"
+ * "watchdog_reset_loop" (AVRHOST_WDT_LOOP_RESETS in a row), "reset_loop"
+ * (the program started over without a reset, AVRHOST_WDT_LOOP_RESETS times
+ * in a row: a jump to 0, as avr-libc's __bad_interrupt makes for an enabled
+ * interrupt without a handler), "erased_flash" (the PC at a word 0xFFFF,
+ * what erased flash reads: a reserved opcode; seen where a batch of
+ * AVRHOST_BATCH_MAX_CYCLES ends, so a run of fewer erased words that ends
+ * in code is not seen) or "crashed"
  * (simavr's cpu_Crashed for another reason). The core is never run again
  * after a crash: later calls return -1 at once. */
 int avrhost_run_to(avrhost_t *h, uint64_t until, char *err, size_t errn);

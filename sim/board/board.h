@@ -64,6 +64,7 @@ typedef struct board_spec_s {
     char name[64];
     char mcu[32];
     char default_robot[64];       /* the robot a run on this board uses without --robot: robots/NAME.ini ("": none) */
+    char mainboard[128];          /* the mainboard's parts file, relative to the board file's folder ("": none) */
     uint32_t f_cpu;               /* Hz */
     double vcc_v;                 /* VCC = AVCC = AREF, V */
     /* motor driver, [motor.left] / [motor.right] (WORLD_LEFT, WORLD_RIGHT) */

@@ -3,7 +3,12 @@
  * keytab tables (world/keytab.h). Every key is required; a bad value is
  * "FILE:LINE: section.key: reason", a missing key "FILE:LINE: section.key:
  * missing" (the section's line), or "FILE: section.key: missing (no
- * [section] section)". */
+ * [section] section)". A board file may
+ * name its mainboard's parts file ([board] mainboard = parts/NAME.ini, from
+ * the board file's folder): the parts one mainboard has whatever sensor
+ * board is on it (motors, encoders, switches, battery, A4/A5), read after
+ * the board file; each key is given in one of the two files only, so a
+ * mainboard's figure has one place. */
 #include "board.h"
 
 #include <ctype.h>
@@ -81,6 +86,8 @@ static const keytab_t keys[] = {
     TEXT("board", "mcu", mcu, "the MCU, as simavr names it"),
     { "board", "default_robot", OFF(default_robot), 0, 0, 0, "name", "the robot file a run uses without --robot: robots/NAME.ini", NULL, 0, 0, 0,
       KEYTAB_TEXT, sizeof ((board_spec_t *)0)->default_robot, NULL },
+    { "board", "mainboard", OFF(mainboard), 0, 0, 0, "path", "the mainboard's parts file, from this file's folder", NULL, 0, 0, 0,
+      KEYTAB_TEXT, sizeof ((board_spec_t *)0)->mainboard, NULL },
     NUM("board", "f_cpu_hz", KEYTAB_U32, f_cpu, 1e6, 32e6, "Hz", "the MCU's clock"),
     NUM("board", "vcc_v", KEYTAB_DOUBLE, vcc_v, 1.8, 5.5, "V", "VCC = AVCC = AREF"),
     PIN("motor.left", "dir_pin", motor_dir[0], "the H-bridge's direction input"),
@@ -131,10 +138,14 @@ static const keytab_t emitter_keys[] = {
 #define LED_KEYS 1 /* of emitter_keys: pin only */
 
 typedef struct {
-    const char *path;
+    const char *path;   /* the file being read */
+    const char *board_path; /* the board file's (path is the mainboard file's while that is read) */
+    int in_mainboard;
     board_spec_t work;
     uint64_t seen;     /* keys[] given */
     int line[N(fixed)]; /* each fixed section's line, 0: none */
+    const char *sec_path[N(fixed)]; /* ... and its file */
+    char mb_path[sizeof ((board_spec_t *)0)->path + 128]; /* the mainboard file's path */
     part_t emitter[SIM_EMITTER_GROUPS], led[BOARD_LEDS_MAX];
     int nemitters, nleds;
     char *err;
@@ -157,9 +168,14 @@ static part_t *named(bload_t *l, const char *section, int *led)
 static int on_section(void *user, const char *section, int line, char *why, size_t len)
 {
     bload_t *l = user;
+    if (l->in_mainboard && (!strcmp(section, "board") || !strncmp(section, "emitter.", 8) || !strncmp(section, "led.", 4))) {
+        snprintf(why, len, "[%s]: not a mainboard part (motor.*, encoder.*, switches, battery, analog): it goes in the board file",
+                 section);
+        return -1;
+    }
     for (size_t i = 0; i < N(fixed); i++)
         if (!strcmp(section, fixed[i])) {
-            if (!l->line[i]) l->line[i] = line;
+            if (!l->line[i]) l->line[i] = line, l->sec_path[i] = l->path;
             return 0;
         }
     int led;
@@ -195,6 +211,10 @@ static int on_key(void *user, const char *section, const char *key, const char *
         snprintf(why, len, "%s.%s: unknown key", section, key);
         return -1;
     }
+    if (!p && (l->seen >> (k - keys) & 1u)) {
+        snprintf(why, len, "%s.%s: given in %s too: a figure of the mainboard has one place", section, key, l->board_path);
+        return -1;
+    }
     if (keytab_set(k, p ? (void *)p : (void *)&l->work, section, val, why, len) != 0) return -1;
     if (p) p->seen |= 1ull << (k - emitter_keys);
     else l->seen |= 1ull << (k - keys);
@@ -219,11 +239,27 @@ static int line_of(const bload_t *l, const char *section)
     return 0;
 }
 
+/* line_of's section's file (the board file's when it has none) */
+static const char *path_of(const bload_t *l, const char *section)
+{
+    for (size_t i = 0; i < N(fixed); i++)
+        if (!strcmp(section, fixed[i]) && l->sec_path[i]) return l->sec_path[i];
+    return l->board_path;
+}
+
+/* The section's line, its file made the one fail() names. */
+static int at(bload_t *l, const char *section)
+{
+    l->path = path_of(l, section);
+    return line_of(l, section);
+}
+
 /* Every key given; the named parts into the spec. */
 static int missing(bload_t *l)
 {
     const keytab_t *k = keytab_missing(keys, N(keys), l->seen);
-    if (k && line_of(l, k->section)) return fail(l, line_of(l, k->section), "%s.%s: missing", k->section, k->key);
+    if (k && line_of(l, k->section)) return fail(l, at(l, k->section), "%s.%s: missing", k->section, k->key);
+    l->path = l->board_path;
     if (k) return fail(l, 0, "%s.%s: missing (no [%s] section)", k->section, k->key, k->section);
     board_spec_t *sp = &l->work;
     for (int i = 0; i < l->nemitters; i++) {
@@ -253,22 +289,26 @@ static int check_pins(bload_t *l)
     board_pin_t pins[8 + SIM_EMITTER_GROUPS + BOARD_LEDS_MAX];
     char secs[N(pins)][24];
     int lines[N(pins)], n = 0;
+    const char *paths[N(pins)];
     static const char *const side[2] = { "left", "right" };
     for (int m = 0; m < 2; m++) {
         board_pin_t mine[4] = { sp->motor_dir[m], sp->motor_pwm[m], sp->enc_int[m], sp->enc_b[m] };
         for (int j = 0; j < 4; j++, n++) {
             snprintf(secs[n], sizeof secs[n], "%s.%s", j < 2 ? "motor" : "encoder", side[m]);
             lines[n] = line_of(l, secs[n]);
+            paths[n] = path_of(l, secs[n]);
             pins[n] = mine[j];
         }
     }
     for (int i = 0; i < l->nemitters; i++, n++)
-        snprintf(secs[n], sizeof secs[n], "emitter.%s", l->emitter[i].name), pins[n] = sp->emitter_pin[i], lines[n] = l->emitter[i].line;
+        snprintf(secs[n], sizeof secs[n], "emitter.%s", l->emitter[i].name), pins[n] = sp->emitter_pin[i], lines[n] = l->emitter[i].line,
+            paths[n] = l->board_path;
     for (int i = 0; i < l->nleds; i++, n++)
-        snprintf(secs[n], sizeof secs[n], "led.%s", l->led[i].name), pins[n] = sp->led_pin[i], lines[n] = l->led[i].line;
+        snprintf(secs[n], sizeof secs[n], "led.%s", l->led[i].name), pins[n] = sp->led_pin[i], lines[n] = l->led[i].line,
+            paths[n] = l->board_path;
     for (int i = 0; i < n; i++)
         for (int j = 0; j < i; j++)
-            if (pins[j].port == pins[i].port && pins[j].bit == pins[i].bit)
+            if (pins[j].port == pins[i].port && pins[j].bit == pins[i].bit && (l->path = paths[i]) != NULL)
                 return fail(l, lines[i], "%s: a pin already wired to another part (%s)", secs[i], secs[j]);
     return 0;
 }
@@ -280,23 +320,40 @@ static int check(bload_t *l)
     int known = 0;
     for (size_t i = 0; i < N(mcus); i++) known |= !strcmp(sp->mcu, mcus[i]);
     if (!known)
-        return fail(l, line_of(l, "board"), "board.mcu: '%s': the board emulation knows the ATmega48/88/168/328 registers only", sp->mcu);
+        return fail(l, at(l, "board"), "board.mcu: '%s': the board emulation knows the ATmega48/88/168/328 registers only", sp->mcu);
     for (int m = 0; m < 2; m++) {
         board_pin_t p = sp->motor_pwm[m];
         const char *sec = m ? "motor.right" : "motor.left";
         if (p.port != 'B' || (p.bit != 1 && p.bit != 2))
-            return fail(l, line_of(l, sec), "%s.pwm_pin: not a Timer1 output (OC1A = D9, OC1B = D10)", sec);
+            return fail(l, at(l, sec), "%s.pwm_pin: not a Timer1 output (OC1A = D9, OC1B = D10)", sec);
         sp->motor_oc[m] = p.bit == 2;
     }
+    l->path = l->board_path; /* the emitters' lines are the board file's */
     for (int i = 0; i < sp->nemitters; i++)
         for (int j = 0; j < i; j++)
             if (sp->emitter_group[j] == sp->emitter_group[i])
                 return fail(l, l->emitter[i].line, "emitter.%s.group: another emitter lights that group", l->emitter[i].name);
-    if (sp->sw_channel == sp->bat_channel) return fail(l, line_of(l, "battery"), "battery.adc_channel: the switches' channel too");
+    if (sp->sw_channel == sp->bat_channel) return fail(l, at(l, "battery"), "battery.adc_channel: the switches' channel too");
     for (int i = 0; i < BOARD_ANALOG_N; i++)
         if (sp->analog[i].wired && sp->analog[i].v > sp->vcc_v)
-            return fail(l, line_of(l, "analog"), "analog.a%d: %g V is above vcc_v (%g V)", BOARD_ANALOG_FIRST + i, sp->analog[i].v, sp->vcc_v);
+            return fail(l, at(l, "analog"), "analog.a%d: %g V is above vcc_v (%g V)", BOARD_ANALOG_FIRST + i, sp->analog[i].v, sp->vcc_v);
     return check_pins(l);
+}
+
+/* The mainboard's parts file named by the board file, from its folder: 0, or -1 with err. */
+static int load_mainboard(bload_t *l, const inifile_t *r)
+{
+    const char *slash = strrchr(l->board_path, '/');
+    int dir = slash ? (int)(slash - l->board_path) + 1 : 0;
+    if (snprintf(l->mb_path, sizeof l->mb_path, "%.*s%s", dir, l->board_path, l->work.mainboard) >= (int)sizeof l->mb_path)
+        return snprintf(l->err, l->errn, "%s: board.mainboard: the path is too long", l->board_path), -1;
+    l->path = l->mb_path;
+    l->in_mainboard = 1;
+    int rc = inifile_load(r, l->mb_path, BOARD_MAX_BYTES, l->err, l->errn);
+    if (rc != 0 && strstr(l->err, "No such file")) /* say who names it */
+        snprintf(l->err, l->errn, "%s: board.mainboard: %s: no such file", l->board_path, l->mb_path);
+    l->path = l->board_path;
+    return rc;
 }
 
 int board_load(board_spec_t *spec, const char *path, char *err, size_t errn)
@@ -310,8 +367,10 @@ int board_load(board_spec_t *spec, const char *path, char *err, size_t errn)
     l->err = err;
     l->errn = errn;
     keytab_defaults(keys, N(keys), &l->work);
+    l->board_path = path;
     const inifile_t r = { on_section, on_key, l, "want key = value or [section]" };
     int rc = inifile_load(&r, path, BOARD_MAX_BYTES, err, errn);
+    if (rc == 0 && l->work.mainboard[0]) rc = load_mainboard(l, &r);
     if (rc == 0 && missing(l) == 0 && check(l) == 0) {
         snprintf(l->work.path, sizeof l->work.path, "%s", path);
         *spec = l->work;

@@ -3,6 +3,7 @@
  * (image_elf_object); the types come from watch_dwarf.c. */
 #include "watch.h"
 
+#include <ctype.h>
 #include <simavr/sim_avr.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,28 +26,70 @@ static void type_word(watch_var_t *v)
              (unsigned)(v->size * 8));
 }
 
+/* The source name behind a symbol: g++'s _ZL<length> prefix of a file-scope
+ * static and LTO's .lto_priv.N suffix off ("_ZL13s_robot_angle.lto_priv.82"
+ * -> "s_robot_angle"); any other name as it is. */
+static void source_name(const char *sym, char *out, size_t outn)
+{
+    const char *dot = strstr(sym, ".lto_priv.");
+    size_t n = dot ? (size_t)(dot - sym) : strlen(sym);
+    const char *p = sym;
+    if (!strncmp(sym, "_ZL", 3) && isdigit((unsigned char)sym[3])) {
+        char *end;
+        unsigned long k = strtoul(sym + 3, &end, 10);
+        if (k > 0 && k == n - (size_t)(end - sym)) p = end, n = k;
+    }
+    snprintf(out, outn, "%.*s", (int)n, p);
+}
+
+/* The symbol's type from DWARF by its name, else by its source name: 1, 0 (no entry), -1 with why. */
+static int symbol_type(char *buf, size_t len, uint32_t value, watch_var_t *v, char *why, size_t whyn)
+{
+    int typed = watch_dwarf_type(buf, len, value, v, why, whyn);
+    watch_var_t src = *v;
+    source_name(v->name, src.name, sizeof src.name);
+    if (typed != 0 || !strcmp(src.name, v->name)) return typed;
+    typed = watch_dwarf_type(buf, len, value, &src, why, whyn);
+    v->kind = src.kind, v->size = src.size;
+    return typed;
+}
+
+/* A name's ELF data address and type: its object symbol (or the _ZL name of
+ * a C++ file-scope static), else its DWARF entry alone (a static LTO
+ * renamed NAME.lto_priv.N). 0 with *value, v->typed (and v's type when
+ * typed) and *size, or -1 with err. */
+static int find_var(char *buf, size_t len, const char *image, watch_var_t *v, uint32_t *value, uint32_t *size,
+                    char *err, size_t errn)
+{
+    char zl[WATCH_NAME_BYTES + 24]; /* "_ZL", the length's digits, the name */
+    snprintf(zl, sizeof zl, "_ZL%zu%s", strlen(v->name), v->name); /* C++'s name for a file-scope static */
+    int f = image_elf_object((const uint8_t *)buf, len, v->name, value, size);
+    if (f == 0) f = image_elf_object((const uint8_t *)buf, len, zl, value, size);
+    if (f == -2) return snprintf(err, errn, "--watch: %s has no symbol table (a stripped image?): --watch needs one", image), -1;
+    if (f < 0) return snprintf(err, errn, "--watch: '%s' names two static variables in %s", v->name, image), -1;
+    if (f == 1 && (*value < WATCH_DATA_OFFSET || *value >= WATCH_EEPROM_OFFSET))
+        return snprintf(err, errn, "--watch: '%s' in %s is not in SRAM (address 0x%X): --watch reads SRAM variables",
+                        v->name, image, (unsigned)*value), -1;
+    char why[200] = "";
+    int typed = f == 1 ? symbol_type(buf, len, *value, v, why, sizeof why)
+                       : watch_dwarf_find(buf, len, WATCH_DATA_OFFSET, WATCH_EEPROM_OFFSET, value, v, why, sizeof why);
+    if (typed == -2) return snprintf(err, errn, "--watch: '%s' in %s: %s", v->name, image, why), -1;
+    if (typed < 0)
+        return snprintf(err, errn, "--watch: '%s' in %s: %s: --watch reads 8/16/32-bit integers and floats", v->name,
+                        image, why), -1;
+    if (f == 0 && typed == 0) return snprintf(err, errn, "--watch: no global variable '%s' in %s", v->name, image), -1;
+    if (f == 0) *size = v->size;
+    v->typed = typed;
+    return 0;
+}
+
 /* One name looked up and typed: 0, or -1 with err. */
 static int look_up(char *buf, size_t len, const char *image, uint32_t ram_bytes, watch_var_t *v, char *err, size_t errn)
 {
     uint32_t value = 0, size = 0;
-    char zl[WATCH_NAME_BYTES + 24]; /* "_ZL", the length's digits, the name */
-    snprintf(zl, sizeof zl, "_ZL%zu%s", strlen(v->name), v->name); /* C++'s name for a file-scope static */
-    int f = image_elf_object((const uint8_t *)buf, len, v->name, &value, &size);
-    if (f == 0) f = image_elf_object((const uint8_t *)buf, len, zl, &value, &size);
-    if (f == -2) return snprintf(err, errn, "--watch: %s has no symbol table (a stripped image?): --watch needs one", image), -1;
-    if (f == 0) return snprintf(err, errn, "--watch: no global variable '%s' in %s", v->name, image), -1;
-    if (f < 0) return snprintf(err, errn, "--watch: '%s' names two static variables in %s", v->name, image), -1;
-    if (value < WATCH_DATA_OFFSET || value >= WATCH_EEPROM_OFFSET)
-        return snprintf(err, errn, "--watch: '%s' in %s is not in SRAM (address 0x%X): --watch reads SRAM variables",
-                        v->name, image, (unsigned)value), -1;
+    if (find_var(buf, len, image, v, &value, &size, err, errn) != 0) return -1;
     v->addr = value - WATCH_DATA_OFFSET;
-    char why[200] = "";
-    int typed = watch_dwarf_type(buf, len, value, v, why, sizeof why);
-    if (typed < 0)
-        return snprintf(err, errn, "--watch: '%s' in %s: %s: --watch reads 8/16/32-bit integers and floats", v->name,
-                        image, why), -1;
-    v->typed = typed;
-    if (!typed) v->kind = WATCH_UNSIGNED, v->size = size;
+    if (!v->typed) v->kind = WATCH_UNSIGNED, v->size = size;
     if (v->size != 1 && v->size != 2 && v->size != 4)
         return snprintf(err, errn, "--watch: '%s' in %s is %u bytes: --watch reads 8/16/32-bit integers and floats",
                         v->name, image, (unsigned)v->size), -1;

@@ -118,6 +118,64 @@ static int search(Dwarf *dw, uint32_t elf_addr, watch_var_t *v, char *err, size_
     return 0;
 }
 
+/* Does die define a variable named name with a DW_OP_addr location in [lo, hi)? Its address into *addr. */
+static int is_placed_var(Dwarf_Die *die, const char *name, uint32_t lo, uint32_t hi, uint32_t *addr)
+{
+    if (dwarf_tag(die) != DW_TAG_variable) return 0;
+    const char *n = dwarf_diename(die);
+    if (!n || strcmp(n, name) != 0) return 0;
+    Dwarf_Attribute a;
+    Dwarf_Op *ops;
+    size_t nops;
+    if (!dwarf_attr(die, DW_AT_location, &a) || dwarf_getlocation(&a, &ops, &nops) != 0 || nops != 1 ||
+        ops[0].atom != DW_OP_addr || ops[0].number < lo || ops[0].number >= hi)
+        return 0;
+    *addr = (uint32_t)ops[0].number;
+    return 1;
+}
+
+/* Every compilation unit's top-level variables named v->name placed in
+ * [lo, hi): 1 with the one address and its type, 0 none, -1 with err (two
+ * places, or a type --watch cannot read). */
+static int search_placed(Dwarf *dw, uint32_t lo, uint32_t hi, uint32_t *elf_addr, watch_var_t *v, char *err,
+                         size_t errn)
+{
+    Dwarf_Off off = 0, next;
+    size_t hsize;
+    long seen = 0;
+    int found = 0;
+    Dwarf_Die hit;
+    while (dwarf_nextcu(dw, off, &next, &hsize, NULL, NULL, NULL) == 0 && next > off) {
+        Dwarf_Die cu, die;
+        if (dwarf_offdie(dw, off + hsize, &cu) && dwarf_child(&cu, &die) == 0) {
+            do {
+                uint32_t a;
+                if (++seen > DIES_MAX) break;
+                if (!is_placed_var(&die, v->name, lo, hi, &a) || (found && a == *elf_addr)) continue;
+                if (found)
+                    return snprintf(err, errn, "its DWARF has two variables of that name (at 0x%X and 0x%X): watch one by its symbol (avr-nm lists them)",
+                                    (unsigned)*elf_addr, (unsigned)a), -2;
+                found = 1, *elf_addr = a, hit = die;
+            } while (dwarf_siblingof(&die, &die) == 0);
+        }
+        off = next;
+    }
+    return found ? resolve(&hit, v, err, errn) : 0;
+}
+
+int watch_dwarf_find(char *buf, size_t len, uint32_t lo, uint32_t hi, uint32_t *elf_addr, watch_var_t *v, char *err,
+                     size_t errn)
+{
+    if (elf_version(EV_CURRENT) == EV_NONE) return 0;
+    Elf *e = elf_memory(buf, len);
+    if (!e) return 0;
+    Dwarf *dw = dwarf_begin_elf(e, DWARF_C_READ, NULL);
+    int rc = dw ? search_placed(dw, lo, hi, elf_addr, v, err, errn) : 0;
+    if (dw) dwarf_end(dw);
+    elf_end(e);
+    return rc;
+}
+
 int watch_dwarf_type(char *buf, size_t len, uint32_t elf_addr, watch_var_t *v, char *err, size_t errn)
 {
     if (elf_version(EV_CURRENT) == EV_NONE) return 0;

@@ -15,5 +15,13 @@
  * for it; -1 with one line in err if it has one of a type --watch cannot
  * read (a struct, an array, a 64-bit number). */
 int watch_dwarf_type(char *buf, size_t len, uint32_t elf_addr, watch_var_t *v, char *err, size_t errn);
+/* The variable v->name found by its DWARF entry alone (a static whose
+ * symbol the linker renamed, as LTO's NAME.lto_priv.N): the compilation
+ * units' top-level variables of that name whose DW_AT_location is one
+ * DW_OP_addr in [lo, hi) (ELF data addresses). 1 with *elf_addr and v's
+ * type, 0 none, -1 with one line in err for a type --watch cannot read,
+ * -2 with one line in err for two such variables at different addresses. */
+int watch_dwarf_find(char *buf, size_t len, uint32_t lo, uint32_t hi, uint32_t *elf_addr, watch_var_t *v, char *err,
+                     size_t errn);
 
 #endif

@@ -11,8 +11,12 @@
 // right forward) the same way to TURN_DEG's arc; stops. It prints
 // "TARGET counts", "FWD ms left right" when it stops, "REST ms left right"
 // 0.5 s later; the same for the turn ("TURNTARGET", "TURN", "REST").
+// GEAR_RATIO may be given with -D (test/cli_board_builds.sh builds it with
+// the 11:1's 11.4 for robots/ukmarsbot-basic-11.ini).
 #define ENCODER_COUNTS 12.0 // per motor turn
+#ifndef GEAR_RATIO
 #define GEAR_RATIO 19.55    // the Pimoroni 20:1's gear train
+#endif
 #define WHEEL_DIAMETER 32.0 // mm
 #define WHEEL_TRACK 75.0    // mm, wheel centre to wheel centre
 #define DISTANCE_MM 500.0
