@@ -11,20 +11,24 @@ SHELL := /bin/bash
 # python3-matplotlib: tools/mmplot draws a run's log against time;
 # python3-dask, python3-distributed, python3-pandas, python3-pytest: the
 # python/mmsim package and tools/mmsweep (sweeps on Dask, their tests).
+# gcc-arm-none-eabi, libnewlib-arm-none-eabi, libstdc++-arm-none-eabi-newlib:
+# our ARM test firmware (test/arm) and bulebule's build; libunicorn-dev: the
+# Cortex-M core (sim/arm); gdb-multiarch: gdb for an ARM image.
 DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev libinih-dev \
 	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev libdw-dev \
 	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev \
 	liblcm-java default-jdk-headless default-jre libjchart2d-java xvfb iproute2 \
 	libpng-dev libglfw3-dev libgl-dev python3-venv libx11-dev libxtst-dev gdb-avr gdb universal-ctags \
-	python3-matplotlib python3-dask python3-distributed python3-pandas python3-pytest valgrind
+	python3-matplotlib python3-dask python3-distributed python3-pandas python3-pytest valgrind \
+	gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib libunicorn-dev gdb-multiarch
 
 CC      ?= gcc
 STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
 WARN    := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wno-unused-parameter
-INC      = -Ifirmware -Ihal -Ihal/sim -Ihal/wire -Isim -I$(B)/lcmgen $(shell pkg-config --cflags glib-2.0 ode libpng 2>/dev/null)
+INC      = -Ifirmware -Ihal -Ihal/sim -Ihal/wire -Isim -I$(B)/lcmgen $(shell pkg-config --cflags glib-2.0 ode libpng unicorn 2>/dev/null)
 CFLAGS  ?= -O2 -g
 SAN     := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
-LIBS     = -ljansson -linih -llcm $(shell pkg-config --libs glib-2.0 ode libpng glfw3 gl 2>/dev/null) -lsimavr -ldw -lelf -lm
+LIBS     = -ljansson -linih -llcm $(shell pkg-config --libs glib-2.0 ode libpng glfw3 gl unicorn 2>/dev/null) -lsimavr -ldw -lelf -lm
 B       := build
 # ../shared: the maze database and the real clients (tests skip what is absent)
 SHARED  ?= ../shared
