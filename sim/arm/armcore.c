@@ -40,6 +40,8 @@ struct armcore {
     uint64_t cyc, target, target_ps, ev_next, now;
     uint32_t blk_addr, blk_size;
     uint64_t blk_start;                  /* the cycle the current block started at */
+    uint64_t nat_start;                  /* the cycle the current untranslated-by-stops block started at */
+    bool stop_mid;                       /* the split block was a split's remainder */
     uint32_t resume_mid;                 /* a split's remainder starts here: no checks, as without the stop */
     bool partial;                        /* running the first instructions of a split block */
     int stop, intno;
@@ -108,19 +110,42 @@ static uint32_t insn_addr(armcore_t *c, uint32_t addr, uint32_t k)
 static uint32_t reg(armcore_t *c, int r) { uint32_t v = 0; uc_reg_read(c->uc, r, &v); return v; }
 static void set_reg(armcore_t *c, int r, uint32_t v) { uc_reg_write(c->uc, r, &v); }
 
-/* The cycle of the access the instruction at PC makes (within the current block). */
-static uint64_t access_cycle(armcore_t *c)
-{
-    uint32_t pc = reg(c, UC_ARM_REG_PC);
-    if (pc < c->blk_addr || pc >= c->blk_addr + c->blk_size) return c->cyc;
-    return c->blk_start + count_insns(c, c->blk_addr, pc);
-}
+/* The cycle an access is made at: its translated block's start. Unicorn
+ * keeps the PC at the block's start until the block ends (it syncs it per
+ * instruction only under a code hook, about 7 ns an instruction), so an
+ * access sees the state of the cycle its block began at: two reads of
+ * DWT CYCCNT in one block read the same count. A split's remainder keeps
+ * its block's start, so the cycle never depends on the chunking. */
+static uint64_t access_cycle(const armcore_t *c) { return c->nat_start; }
 
 static void crash(armcore_t *c, uint32_t pc, const char *cause)
 {
     if (c->crashed) return;
     c->crashed = true, c->crash_pc = pc;
     snprintf(c->cause, sizeof c->cause, "%s", cause);
+}
+
+/* ---- time ---- */
+__extension__ typedef unsigned __int128 u128;
+
+static uint64_t time_at(const armcore_t *c, uint64_t cyc)
+{
+    return c->seg_ps + (uint64_t)((u128)(cyc - c->seg_cycle) * ARMCORE_PS_PER_S / c->hclk);
+}
+
+/* the first cycle at or after time t (within the current clock's segment) */
+static uint64_t cycle_at(const armcore_t *c, uint64_t t)
+{
+    if (t <= c->seg_ps) return c->seg_cycle;
+    return c->seg_cycle + (uint64_t)(((u128)(t - c->seg_ps) * c->hclk + ARMCORE_PS_PER_S - 1) / ARMCORE_PS_PER_S);
+}
+
+/* RCC changed HCLK: a new segment from cycle c->now (the access that changed it, or the cycle a check runs at) */
+static void clock_check(armcore_t *c)
+{
+    if (!c->clocks || !c->clocks->hclk || c->clocks->hclk == c->hclk) return;
+    c->seg_ps = time_at(c, c->now), c->seg_cycle = c->now, c->hclk = c->clocks->hclk;
+    if (c->target_ps != NO_TIME) c->target = cycle_at(c, c->target_ps);
 }
 
 /* ---- the bus ---- */
@@ -166,6 +191,7 @@ static mmio_status_t periph(armcore_t *c, uint32_t addr, unsigned size, bool wri
         s = write ? (r->ops->write ? r->ops->write(r->self, addr - r->base, size, *v) : MMIO_UNMODELED)
                   : (r->ops->read ? r->ops->read(r->self, addr - r->base, size, v) : MMIO_UNMODELED);
     }
+    if (write) clock_check(c); /* RCC's write switching HCLK: the new clock from this access's cycle */
     if (s == MMIO_UNMODELED) {
         unmodeled(c, addr, r, write);
         if (!write) *v = 0;
@@ -254,35 +280,12 @@ static bool dma_write(void *ctx, uint32_t addr, unsigned size, uint32_t v)
     return false; /* flash is written through the FLASH controller only */
 }
 
-/* ---- time ---- */
-__extension__ typedef unsigned __int128 u128;
-
-static uint64_t time_at(const armcore_t *c, uint64_t cyc)
-{
-    return c->seg_ps + (uint64_t)((u128)(cyc - c->seg_cycle) * ARMCORE_PS_PER_S / c->hclk);
-}
-
-/* the first cycle at or after time t (within the current clock's segment) */
-static uint64_t cycle_at(const armcore_t *c, uint64_t t)
-{
-    if (t <= c->seg_ps) return c->seg_cycle;
-    return c->seg_cycle + (uint64_t)(((u128)(t - c->seg_ps) * c->hclk + ARMCORE_PS_PER_S - 1) / ARMCORE_PS_PER_S);
-}
-
-/* RCC changed HCLK: a new segment from this cycle on */
-static void clock_check(armcore_t *c)
-{
-    if (!c->clocks || !c->clocks->hclk || c->clocks->hclk == c->hclk) return;
-    c->seg_ps = time_at(c, c->cyc), c->seg_cycle = c->cyc, c->hclk = c->clocks->hclk;
-    if (c->target_ps != NO_TIME) c->target = cycle_at(c, c->target_ps);
-}
-
 /* ---- events and exceptions to take ---- */
 /* Every model whose event is due brought to the current cycle; the next event found. */
 static void advance_due(armcore_t *c)
 {
     uint64_t next = MMIO_NEVER;
-    c->now = c->cyc;
+    c->now = c->cyc, c->nat_start = c->cyc;
     for (int i = 0; i < c->nreg; i++) {
         mmio_region_t *r = &c->reg[i];
         if (!r->ops->next_event) continue;
@@ -302,6 +305,7 @@ static int exec_prio(armcore_t *c)
 static unsigned check(armcore_t *c)
 {
     c->cm.attention = false;
+    c->now = c->cyc;
     clock_check(c);
     advance_due(c);
     if (c->cm.reset_request) return EXC_RESET;
@@ -319,9 +323,13 @@ static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
     uint32_t addr = (uint32_t)address, n = block_insns(c, addr, size);
     c->blk_addr = addr, c->blk_size = size, c->blk_start = c->cyc;
     if (c->partial || c->stop != STOP_NONE) return;
-    if (addr == c->resume_mid) {
+    c->stop_mid = addr == c->resume_mid;
+    if (c->stop_mid) {
         c->resume_mid = NO_ADDR;
-    } else if (c->cm.attention || c->cyc >= c->ev_next) {
+    } else {
+        c->nat_start = c->cyc;
+    }
+    if (!c->stop_mid && (c->cm.attention || c->cyc >= c->ev_next)) {
         unsigned e = check(c);
         if (e) { c->take = e, c->stop = STOP_TAKE, c->stop_addr = addr; uc_emu_stop(uc); return; }
     }
@@ -510,6 +518,11 @@ static void on_stop_none(armcore_t *c, uc_err e)
 {
     char m[160];
     uint32_t pc = reg(c, UC_ARM_REG_PC);
+    if (e == UC_ERR_INSN_INVALID) {
+        c->cm.cfsr |= 0x10000u, c->cm.hfsr |= 1u << 30;
+        crash(c, pc, "HardFault: UsageFault UNDEFINSTR: an undefined instruction");
+        return;
+    }
     if (e != UC_ERR_OK) {
         const char *what = c->bad_type == UC_MEM_FETCH_UNMAPPED || c->bad_type == UC_MEM_FETCH_PROT ? "fetching"
                          : c->bad_type == UC_MEM_WRITE_UNMAPPED || c->bad_type == UC_MEM_WRITE_PROT ? "writing" : "reading";
@@ -534,6 +547,7 @@ static void on_stop_none(armcore_t *c, uc_err e)
 /* Asleep: wake on an exception that would preempt were PRIMASK clear (B1.5.19), else skip to the next event or the target. */
 static void sleep_step(armcore_t *c)
 {
+    c->now = c->cyc;
     clock_check(c);
     advance_due(c);
     int group;
@@ -554,7 +568,10 @@ static void run_split(armcore_t *c)
 {
     uint64_t k = c->target - c->cyc;
     c->pc = c->stop_addr;
-    if (k == 0) return;
+    if (k == 0) {
+        if (c->stop_mid) c->resume_mid = c->stop_addr; /* still a remainder when it resumes */
+        return;
+    }
     uint32_t until = insn_addr(c, c->stop_addr, (uint32_t)k);
     uc_ctl_remove_cache(c->uc, c->stop_addr, until + 4);
     c->partial = true, c->stop = STOP_NONE, c->bad_type = -1;
@@ -613,7 +630,6 @@ static int run(armcore_t *c)
         if (c->sleeping) sleep_step(c);
         else run_once(c);
     }
-    if (!c->crashed) c->cm.now = c->cm.now > c->cyc ? c->cm.now : c->cyc;
     return c->crashed;
 }
 
@@ -625,6 +641,7 @@ int armcore_run_to(armcore_t *c, uint64_t target)
 
 int armcore_run_until_ps(armcore_t *c, uint64_t t_ps)
 {
+    c->now = c->cyc;
     clock_check(c);
     c->target_ps = t_ps, c->target = cycle_at(c, t_ps);
     int rc = run(c);
