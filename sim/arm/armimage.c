@@ -113,6 +113,7 @@ static int parse_attrs(const uint8_t *p, uint32_t n, attrs_t *a)
 typedef struct {
     elf32_t x;
     const armimage_mcu_t *mcu;
+    int vectors; /* a segment loads the vector table's first words at the start of flash */
 } img_t;
 
 static int check_attrs(img_t *e, const uint8_t *s)
@@ -174,6 +175,7 @@ static int check_segments(img_t *e, armimage_t *out)
             return snprintf(msg, sizeof msg, "segment %u's %u bytes load at 0x%08x, not within the %s's flash (0x%08x, %u bytes)", i,
                             filesz, pa, m->name, m->flash_base, m->flash_bytes), elf32_fail(&e->x, msg);
         memcpy(out->flash + (pa - m->flash_base), e->x.b + off, filesz);
+        if (pa == m->flash_base && filesz >= VECTOR_BYTES) e->vectors = 1;
         if (pa - m->flash_base + filesz > out->flash_end) out->flash_end = pa - m->flash_base + filesz;
     }
     return 0;
@@ -184,7 +186,7 @@ static int check_vectors(img_t *e, armimage_t *out)
 {
     const armimage_mcu_t *m = e->mcu;
     char msg[240];
-    if (out->flash_end < VECTOR_BYTES)
+    if (!e->vectors)
         return snprintf(msg, sizeof msg, "no vector table at the start of flash (0x%08x): the image loads %u bytes there", m->flash_base,
                         out->flash_end), elf32_fail(&e->x, msg);
     out->initial_sp = elf32_le32(out->flash), out->reset = elf32_le32(out->flash + 4);
