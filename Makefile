@@ -530,8 +530,11 @@ docs-img: $(B)/mmsim $(B)/mmview
 bench: deps
 	@$(MAKE) --no-print-directory bench-run
 bench-run: $(B)/mmmaze $(B)/mmsim $(B)/bench_flood $(B)/simavr_cycles $(B)/avr/flood.elf \
-	$(B)/avr/tick0.elf $(B)/avr/tick100.elf arduino $(B)/clients/board/EncPoll.elf $(B)/clients/board/EncPollEdge.elf $(B)/ode_rows
+	$(B)/avr/tick0.elf $(B)/avr/tick100.elf arduino $(B)/clients/board/EncPoll.elf $(B)/clients/board/EncPollEdge.elf $(B)/ode_rows \
+	$(B)/armcore_speed $(ARM_TEST_ELFS)
 	BENCH_MAZE=$(BENCH_MAZE) bash bench/run.sh
+$(B)/armcore_speed: bench/armcore_speed.c $(B)/libmm.a
+	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(B)/libmm.a $(LIBS) -o $@
 $(B)/ode_rows: bench/ode_rows.c | deps
 	$(CC) -O2 $< $$(pkg-config --cflags --libs ode) -lm -o $@
 $(B)/simavr_cycles: bench/simavr_cycles.c | deps

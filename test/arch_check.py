@@ -12,7 +12,7 @@
    or files. `#include <...>` is allowed by class: `<c>` the C99 standard
    headers, `<posix>` any other system header that is not one of the
    libraries below, `<lib:NAME>` one library (ode, gl, glfw, lcm, simavr,
-   jansson, inih, png, avr, arduino, micromouse:
+   jansson, inih, png, avr, arduino, unicorn, micromouse:
    hal/arduino as an installed Arduino library): each library enters through the
    folders that name it.
 2. Function lengths: no function in the folders named on the rules block's
@@ -50,6 +50,7 @@ LIBS = {  # library: header prefixes (a prefix ending in / is a folder)
     "simavr": ["simavr/"], "jansson": ["jansson.h"], "inih": ["ini.h"],
     "png": ["png.h"], "avr": ["avr/", "util/"], "arduino": ["Arduino.h"],
     "micromouse": ["Micromouse.h"],  # hal/arduino as a sketch sees it, installed
+    "unicorn": ["unicorn/"],  # the Cortex-M core (sim/arm)
 }
 
 

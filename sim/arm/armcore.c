@@ -610,6 +610,7 @@ static void core_reset(armcore_t *c)
 static void run_once(armcore_t *c)
 {
     c->stop = STOP_NONE, c->intno = -1, c->bad_type = -1;
+    c->st.starts++;
     uc_err e = uc_emu_start(c->uc, c->pc | 1u, 0, 0, 0);
     switch (c->stop) {
     case STOP_TAKE:

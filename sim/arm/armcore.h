@@ -60,6 +60,7 @@ typedef struct {
     uint64_t sleeps;                  /* WFI/WFE that slept */
     uint64_t idle_cycles;             /* cycles asleep */
     uint64_t splits;                  /* stops inside a translated block */
+    uint64_t starts;                  /* uc_emu_start calls */
 } armcore_stats_t;
 
 /* A core at reset (SP and PC from the vector table). NULL with one line in err. */

@@ -8,7 +8,7 @@
 __attribute__((section(".mailbox"))) mailbox_t mb;
 
 enum { PREEMPT = 1, PREEMPT_HW, TAILCHAIN, PRIMASK, BASEPRI, SYSTICK, COUNTFLAG, DWT, VTOR, WFI, FAULT_UNMAPPED, FAULT_PERIPH,
-       UNDEF, SVC, UNMODELED, BITBAND, CLOCK, CHURN, RESET, PRIGROUP_SUB, PRIGROUP_NONE };
+       UNDEF, SVC, UNMODELED, BITBAND, CLOCK, CHURN, RESET, PRIGROUP_SUB, PRIGROUP_NONE, SPIN, STORM };
 
 #define ISB() __asm volatile("dsb\n isb" ::: "memory")
 static void log_ev(uint32_t e) { if (mb.nlog < MAILBOX_LOG) mb.log[mb.nlog++] = e; }
@@ -38,6 +38,7 @@ void systick_handler(void)
         if (ticks < 16) mb.v[ticks] = DWT_CYCCNT;
         if (++ticks == (mb.scenario == WFI ? 50u : 5u)) SYST_CSR = 0;
         break;
+    case STORM: ticks++; break;
     case CHURN:
         acc = acc * 31u + DWT_CYCCNT;
         FAKE_AFTER = 333u + (acc & 255u);
@@ -156,6 +157,12 @@ static void timer_scenarios(uint32_t s)
         for (volatile int i = 0; i < 100; i++) {}
         FAKE_HCLK = 72000000u;
         break;
+    case SPIN: case STORM: /* bench/armcore_speed.c: the loop alone, and under SysTick every 200 cycles */
+        if (s == STORM) systick(199, 7);
+        for (uint32_t i = 0;; i++) {
+            acc += i * i;
+            if ((i & 63u) == 0) ((volatile uint32_t *)mb.v)[0] = acc;
+        }
     case CHURN:
         dwt_on();
         NVIC_IPR(2) = 0x40; NVIC_ISER0 = 4u;
