@@ -29,7 +29,7 @@
 #define SRAM_BYTES (20u << 10)
 
 enum { PREEMPT = 1, PREEMPT_HW, TAILCHAIN, PRIMASK, BASEPRI, SYSTICK, COUNTFLAG, DWT, VTOR, WFI, FAULT_UNMAPPED, FAULT_PERIPH,
-       UNDEF, SVC, UNMODELED, BITBAND, CLOCK, CHURN, RESET, PRIGROUP_SUB, PRIGROUP_NONE };
+       UNDEF, SVC, UNMODELED, BITBAND, CLOCK, CHURN, RESET, PRIGROUP_SUB, PRIGROUP_NONE, SPIN, STORM, PSP };
 
 typedef struct {
     uint32_t scenario, scratch;
@@ -217,6 +217,19 @@ static void test_svc_pendsv(void **state)
     rig_free(run_log(SVC, 20000, want, 4));
 }
 
+static void test_process_stack(void **state)
+{
+    const uint32_t want[] = { 'V' };
+    rig_t *r = run_log(PSP, 20000, want, 1);
+    mailbox_t mb = mailbox(r);
+    assert_int_equal(mb.v[2], 0xFFFFFFFDu); /* EXC_RETURN: thread mode, PSP (B1.5.8) */
+    assert_true(mb.v[3] > 0x20004000u);      /* the handler on the main stack */
+    assert_int_equal(mb.v[0], 2);            /* CONTROL.SPSEL back after the return */
+    assert_true(mb.v[1] <= mb.v[4] && mb.v[4] - mb.v[1] < 64); /* thread code's SP: the process stack, the frame popped */
+    assert_int_equal(mb.v[5], 0x4444u);
+    rig_free(r);
+}
+
 static void test_reset_request(void **state)
 {
     const uint32_t want[] = { 'R' };
@@ -331,7 +344,7 @@ int main(void)
         cmocka_unit_test(test_preempt_ispr), cmocka_unit_test(test_preempt_peripheral), cmocka_unit_test(test_tail_chain),
         cmocka_unit_test(test_primask), cmocka_unit_test(test_basepri), cmocka_unit_test(test_prigroup),
         cmocka_unit_test(test_systick_period), cmocka_unit_test(test_countflag), cmocka_unit_test(test_dwt),
-        cmocka_unit_test(test_vtor), cmocka_unit_test(test_svc_pendsv), cmocka_unit_test(test_reset_request),
+        cmocka_unit_test(test_vtor), cmocka_unit_test(test_svc_pendsv), cmocka_unit_test(test_process_stack), cmocka_unit_test(test_reset_request),
         cmocka_unit_test(test_bitband), cmocka_unit_test(test_unmodeled), cmocka_unit_test(test_faults),
         cmocka_unit_test(test_clock_switch), cmocka_unit_test(test_wfi_skip_same_state), cmocka_unit_test(test_chunking_same_state),
     };

@@ -8,7 +8,7 @@
 __attribute__((section(".mailbox"))) mailbox_t mb;
 
 enum { PREEMPT = 1, PREEMPT_HW, TAILCHAIN, PRIMASK, BASEPRI, SYSTICK, COUNTFLAG, DWT, VTOR, WFI, FAULT_UNMAPPED, FAULT_PERIPH,
-       UNDEF, SVC, UNMODELED, BITBAND, CLOCK, CHURN, RESET, PRIGROUP_SUB, PRIGROUP_NONE, SPIN, STORM };
+       UNDEF, SVC, UNMODELED, BITBAND, CLOCK, CHURN, RESET, PRIGROUP_SUB, PRIGROUP_NONE, SPIN, STORM, PSP };
 
 #define ISB() __asm volatile("dsb\n isb" ::: "memory")
 static void log_ev(uint32_t e) { if (mb.nlog < MAILBOX_LOG) mb.log[mb.nlog++] = e; }
@@ -66,7 +66,13 @@ void irq2_handler(void)
     else log_ev('I' << 8 | '2');
 }
 static void alt_systick(void) { log_ev('A'); SYST_CSR = 0; }
-void svc_handler(void) { log_ev('V'); SCB_ICSR = 1u << 28; ISB(); log_ev('v'); }
+void svc_handler(void)
+{
+    uint32_t lr, msp;
+    __asm volatile("mov %0, lr\n mrs %1, msp" : "=r"(lr), "=r"(msp));
+    if (mb.scenario == PSP) { mb.v[2] = lr, mb.v[3] = msp; log_ev('V'); return; }
+    log_ev('V'); SCB_ICSR = 1u << 28; ISB(); log_ev('v');
+}
 void pendsv_handler(void) { log_ev('P'); }
 
 static void prio_scenarios(uint32_t s)
@@ -213,6 +219,16 @@ static void fault_scenarios(uint32_t s)
         REG(0x42000000u + (FAKE_BASE + 0x18u - 0x40000000u) * 32u + 5u * 4u) = 1u;
         mb.v[2] = REG(FAKE_BASE + 0x18u);
         break;
+    case PSP: { /* thread mode on the process stack: the frame goes there, the handler runs on MSP, the return restores it */
+        static uint32_t pstack[64] __attribute__((aligned(8)));
+        uint32_t psp = (uint32_t)&pstack[64], ctrl, sp_after, r4 = 0x4444u;
+        __asm volatile("msr psp, %0\n mov r0, #2\n msr control, r0\n isb" :: "r"(psp) : "r0");
+        __asm volatile("mov r4, %1\n svc #1\n mov %0, r4" : "=r"(r4) : "r"(r4) : "r4");
+        __asm volatile("mrs %0, control\n mov %1, sp" : "=r"(ctrl), "=r"(sp_after));
+        mb.v[0] = ctrl, mb.v[1] = sp_after, mb.v[4] = psp, mb.v[5] = r4;
+        __asm volatile("mov r0, #0\n msr control, r0\n isb" ::: "r0");
+        break;
+    }
     case RESET:
         if (mb.step == 0) {
             mb.step = 1;
