@@ -47,8 +47,8 @@
 #define CSR_RMVF (1u << 24)
 #define CSR_FLAGS 0xFC000000u
 
-/* Start-up times, ns (DS5319, the STM32F103x8/B datasheet, 5.3.6-5.3.11:
- * HSE, LSE, HSI, LSI oscillator and PLL characteristics): tsu(HSI) 2 us
+/* Start-up times, ns (DS5319, the STM32F103x8/B datasheet, section 5.3:
+ * the HSE, LSE, HSI and LSI oscillator and the PLL characteristics): tsu(HSI) 2 us
  * max, tSU(HSE) 2 ms typical for a crystal (an external clock on HSEBYP is
  * ready at once), tLOCK 200 us max, tsu(LSI) 85 us max, tSU(LSE) 3 s
  * typical. */

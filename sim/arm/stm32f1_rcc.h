@@ -8,7 +8,7 @@
  * derived here from the registers (RM0008 figure 8, the clock tree).
  *
  * Ready bits come after the oscillator's start-up time from the STM32F103
- * datasheet (DS5319 5.3.6-5.3.11), counted in core cycles
+ * datasheet (DS5319 section 5.3), counted in core cycles
  * at the HCLK of the moment it was switched on: firmware that waits for
  * them (every F1 startup code does) spends the time the chip spends.
  *
