@@ -5,8 +5,9 @@
  * CCR/(ARR+1) with polarity and TIM1's MOE, compare interrupts on TIM1's
  * CC line, the repetition counter, one-pulse mode, center-aligned
  * periods, the update's DMA request, encoder modes (4x and 2x the lines
- * per turn, wrap at ARR, DIR), a long jump in time, and the registers not
- * modeled reported. */
+ * per turn, wrap at ARR, DIR), input capture (polarity, ICxPSC, CCxOF,
+ * the CCR read clearing the flag), a long jump in time, and the registers
+ * not modeled reported. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -322,10 +323,42 @@ static void test_unmodeled(void **state)
     assert_int_equal(wr(SMCR, 3), MMIO_OK);
     assert_int_equal(wr(CR2, 2u << 4), MMIO_UNMODELED); /* MMS: TRGO */
     assert_int_equal(wr(0x48, 0), MMIO_UNMODELED);      /* DCR */
-    assert_int_equal(wr(CCMR1, 1), MMIO_OK);
-    assert_int_equal(wr(CCER, 1), MMIO_UNMODELED);      /* input capture enabled */
+    assert_int_equal(wr(CCMR1, 3), MMIO_OK);
+    assert_int_equal(wr(CCER, 1), MMIO_UNMODELED);      /* a capture from TRC */
     uint32_t v;
     assert_int_equal(stm32f1_tim_ops[1].read(&tim, BDTR, 4, &v), MMIO_UNMODELED);
+}
+
+/* input capture: CH1 from TI1 on rising edges, CH2 from TI1 (CCxS 10) on falling, every 2nd */
+static void test_input_capture(void **state)
+{
+    init(2);
+    wr(CCMR1, 1u | 2u << 8 | 1u << 10); /* CC1S 01; CC2S 10, IC2PSC /2 */
+    wr(CCER, 1u | 1u << 4 | 1u << 5);   /* CC1E; CC2E, CC2P falling */
+    wr(DIER, 1u << 1);
+    wr(CR1, 1);
+    at(100);
+    stm32f1_tim_input(&tim, 1, 1);
+    assert_int_equal(rd(SR), 1u << 1);
+    assert_true(irq_level[28]);
+    assert_int_equal(rd(CCR1), 100); /* the read clears CC1IF */
+    assert_int_equal(rd(SR), 0);
+    assert_false(irq_level[28]);
+    at(150);
+    stm32f1_tim_input(&tim, 1, 0);
+    assert_int_equal(rd(SR), 0); /* CH2: first falling edge of two */
+    at(170);
+    stm32f1_tim_input(&tim, 1, 1);
+    at(200);
+    stm32f1_tim_input(&tim, 1, 0);
+    assert_int_equal(rd(SR), 1u << 1 | 1u << 2);
+    assert_int_equal(rd(CCR1 + 4), 200);
+    at(300);
+    stm32f1_tim_input(&tim, 1, 1);
+    assert_int_equal(rd(SR), 1u << 1 | 1u << 9); /* CC1OF: CC1IF still set from 170 */
+    assert_int_equal(rd(CCR1), 300);
+    assert_int_equal(stm32f1_tim_ops[1].write(&tim, CCR1, 4, 5), MMIO_OK); /* read-only in capture */
+    assert_int_equal(rd(CCR1), 300);
 }
 
 int main(void)
@@ -344,6 +377,7 @@ int main(void)
         cmocka_unit_test(test_encoder_mode3),
         cmocka_unit_test(test_encoder_mode1_2),
         cmocka_unit_test(test_unmodeled),
+        cmocka_unit_test(test_input_capture),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -274,6 +274,28 @@ void stm32f1_tim_encoder(stm32f1_tim_t *t, int64_t edges)
     update_irq(t);
 }
 
+/* ---- input capture ---- */
+
+/* RM0008 15.3.5: an edge of the selected polarity on the channel's input
+ * (CCxS 01: its own TIx; 10: the pair's other) copies CNT into CCRx at
+ * every ICxPSC-th edge: CCxIF, or CCxOF if CCxIF was still set. */
+void stm32f1_tim_input(stm32f1_tim_t *t, unsigned ti, int rising)
+{
+    if (ti < 1 || ti > 4) return;
+    for (unsigned i = 0; i < 4; i++) {
+        unsigned sel = ccs(t, i), src = sel == 1 ? i : sel == 2 ? (i ^ 1u) : 99u;
+        int falling_wanted = (t->ccer >> (4 * i + 1)) & 1u;
+        if (src != ti - 1 || !((t->ccer >> (4 * i)) & 1u) || (!rising) != falling_wanted) continue;
+        unsigned every = 1u << ((t->ccmr[i / 2] >> (8 * (i % 2) + 2)) & 3u); /* ICxPSC: 1, 2, 4, 8 */
+        if (++t->ic_edges[i] < every) continue;
+        t->ic_edges[i] = 0;
+        t->ccr[i] = t->ccr_sh[i] = t->cnt;
+        if (t->sr & CCIF(i)) t->sr |= 1u << (9 + i); /* CCxOF */
+        cc_match(t, i);
+    }
+    update_irq(t);
+}
+
 /* ---- registers ---- */
 
 static void tim_reset(void *self)
@@ -291,6 +313,7 @@ static void tim_reset(void *self)
     t->down = 0, t->acc = 0;
     memset(t->ccr, 0, sizeof t->ccr);
     memset(t->ccr_sh, 0, sizeof t->ccr_sh);
+    memset(t->ic_edges, 0, sizeof t->ic_edges);
     update_irq(t);
 }
 
@@ -325,11 +348,11 @@ static mmio_status_t write_cr1(stm32f1_tim_t *t, uint32_t v, uint32_t m)
     return MMIO_OK;
 }
 
-/* Does a channel use what is not modeled: input capture enabled, OCxCE? */
+/* Does a channel use what is not modeled: a capture from TRC, OCxCE? */
 static mmio_status_t channels_status(const stm32f1_tim_t *t)
 {
     for (unsigned i = 0; i < 4; i++) {
-        if (ccs(t, i) != 0 && ((t->ccer >> (4 * i)) & 1u)) return MMIO_UNMODELED;
+        if (ccs(t, i) == 3 && ((t->ccer >> (4 * i)) & 1u)) return MMIO_UNMODELED;
         if (ccs(t, i) == 0 && ((t->ccmr[i / 2] >> (8 * (i % 2) + 7)) & 1u)) return MMIO_UNMODELED;
     }
     return MMIO_OK;
@@ -403,7 +426,7 @@ static mmio_status_t tim_write(void *self, uint32_t off, unsigned size, uint32_t
 
 static mmio_status_t tim_read(void *self, uint32_t off, unsigned size, uint32_t *value)
 {
-    const stm32f1_tim_t *t = self;
+    stm32f1_tim_t *t = self;
     uint32_t w = stm32f1_reg_word(off), reg;
     switch (w) {
     case 0x00: reg = (cms(t) || encoder(t)) ? (t->cr1 & ~DIR) | (t->down ? DIR : 0) : t->cr1; break;
@@ -418,7 +441,10 @@ static mmio_status_t tim_read(void *self, uint32_t off, unsigned size, uint32_t 
     case 0x28: reg = t->psc; break;
     case 0x2C: reg = t->arr; break;
     case 0x30: if (!adv(t)) return MMIO_UNMODELED; reg = t->rcr; break;
-    case 0x34: case 0x38: case 0x3C: case 0x40: reg = t->ccr[(w - 0x34) / 4]; break;
+    case 0x34: case 0x38: case 0x3C: case 0x40:
+        reg = t->ccr[(w - 0x34) / 4];
+        if (ccs(t, (w - 0x34) / 4) != 0) t->sr &= ~CCIF((w - 0x34) / 4), update_irq(t); /* a capture read */
+        break;
     case 0x44: if (!adv(t)) return MMIO_UNMODELED; reg = t->bdtr; break;
     default: return MMIO_UNMODELED;
     }

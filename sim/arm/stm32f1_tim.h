@@ -24,9 +24,13 @@
  *   DMA         update and CCx requests on DMA1's channels (RM0008 table 78),
  *               CCDS moving the CCx requests to the update event; each
  *               request is a pulse (raised then lowered at once)
+ *   capture     CCxS 01/10 with CCxE: an edge the board reports on TIx
+ *               (stm32f1_tim_input) of the CCxP polarity, every ICxPSC-th,
+ *               copies CNT to CCRx with CCxIF (CCxOF if still set); reading
+ *               CCRx clears CCxIF. The input filter (ICxF) is not applied.
  * Not modeled (answer MMIO_UNMODELED when a firmware sets them): slave
  * modes 4-7 and the external clock (ECE), master mode (CR2 MMS: TRGO),
- * input capture (an input channel enabled in CCER), OCxCE (clear on ETRF),
+ * a capture from TRC (CCxS 11), OCxCE (clear on ETRF),
  * BDTR's break input and dead time, DCR/DMAR (DMA burst); the prescaler in
  * encoder mode (counts are taken undivided); a reserved register (RCR and
  * BDTR on TIM2-4). The pin's waveform edge by edge is not produced: the
@@ -57,7 +61,8 @@ typedef struct {
     const mmio_clocks_t *clk;
     mmio_irq_t irq;
     mmio_dma_req_t dma;
-    uint32_t irq_out;           /* the interrupt lines held high (bit per line of irqs[]) */
+    uint32_t ic_edges[4];       /* input capture: edges since the last capture (ICxPSC) */
+    uint32_t irq_out;           /* the interrupt lines held high, one bit per line */
 } stm32f1_tim_t;
 
 /* Channel x's output as a board part sees it. */
@@ -80,6 +85,9 @@ void stm32f1_tim_init(stm32f1_tim_t *t, unsigned n, const mmio_clocks_t *clk, mm
  * forward: channel 1 leads), at the cycle of the last advance(). In an
  * encoder mode with CEN the counter follows it. */
 void stm32f1_tim_encoder(stm32f1_tim_t *t, int64_t edges);
+/* An edge on input TIti (1-4), rising or falling, at the cycle of the last
+ * advance(): captured by the channels that select it (input capture). */
+void stm32f1_tim_input(stm32f1_tim_t *t, unsigned ti, int rising);
 /* Channel ch (1-4) now. */
 stm32f1_tim_out_t stm32f1_tim_output(const stm32f1_tim_t *t, unsigned ch);
 
