@@ -130,6 +130,21 @@ static void test_hsi_pll_and_no_crystal(void **state)
     assert_int_equal(stm32f1_rcc_clocks(&rcc)->sysclk, 64000000);
 }
 
+/* the PLL does not lock on a stopped input: HSE enabled with the PLL, lock 200 us after HSE's 2 ms */
+static void test_pll_waits_for_its_input(void **state)
+{
+    wr(CFGR, 7u << 18 | 1u << 16);
+    wr(CR, 0x83 | 1u << 16 | 1u << 24);
+    at(1600);
+    assert_false(rd(CR) & (1u << 25));
+    at(16000);
+    assert_true(rd(CR) & (1u << 17));
+    assert_false(rd(CR) & (1u << 25));
+    assert_int_equal(stm32f1_rcc_ops.next_event(&rcc), 16000 + 1600);
+    at(16000 + 1600);
+    assert_true(rd(CR) & (1u << 25));
+}
+
 static void test_ready_interrupt(void **state)
 {
     wr(CIR, 1u << 11); /* HSERDYIE */
@@ -212,6 +227,7 @@ int main(void)
         cmocka_unit_test_setup(test_hse_ready_after_startup, setup),
         cmocka_unit_test_setup(test_pll_72mhz_and_switch, setup),
         cmocka_unit_test_setup(test_hsi_pll_and_no_crystal, setup),
+        cmocka_unit_test_setup(test_pll_waits_for_its_input, setup),
         cmocka_unit_test_setup(test_ready_interrupt, setup),
         cmocka_unit_test_setup(test_csr_flags, setup),
         cmocka_unit_test_setup(test_gate, setup),

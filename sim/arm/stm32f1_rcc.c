@@ -121,6 +121,12 @@ static void ready(stm32f1_rcc_t *r, unsigned which)
     if (r->cir & (1u << (8 + which))) r->cir |= 1u << which;
 }
 
+/* The PLL's input (HSI/2 or HSE) runs (RM0008 7.2.3). */
+static int pll_input_ready(const stm32f1_rcc_t *r)
+{
+    return (r->cfgr & (1u << 16)) ? (r->cr & CR_HSERDY) != 0 : (r->cr & CR_HSIRDY) != 0;
+}
+
 static void rcc_advance(void *self, uint64_t now)
 {
     stm32f1_rcc_t *r = self;
@@ -128,7 +134,12 @@ static void rcc_advance(void *self, uint64_t now)
     r->now = now;
     if (r->hsi_at <= now) r->cr |= CR_HSIRDY, r->hsi_at = MMIO_NEVER, ready(r, RDY_HSI);
     if (r->hse_at <= now) r->cr |= CR_HSERDY, r->hse_at = MMIO_NEVER, ready(r, RDY_HSE);
-    if (r->pll_at <= now) r->cr |= CR_PLLRDY, r->pll_at = MMIO_NEVER, ready(r, RDY_PLL);
+    if (r->pll_at <= now) {
+        r->pll_at = MMIO_NEVER;
+        if (pll_input_ready(r)) r->cr |= CR_PLLRDY, ready(r, RDY_PLL);
+        else r->pll_waits = 1; /* no input clock: it locks once its source is ready */
+    }
+    if (r->pll_waits && (r->cr & CR_PLLON) && pll_input_ready(r)) r->pll_waits = 0, r->pll_at = after_ns(r, PLL_LOCK_NS);
     if (r->lsi_at <= now) r->csr |= CSR_LSIRDY, r->lsi_at = MMIO_NEVER, ready(r, RDY_LSI);
     if (r->lse_at <= now) r->bdcr |= BDCR_LSERDY, r->lse_at = MMIO_NEVER, ready(r, RDY_LSE);
     try_switch(r);
@@ -156,6 +167,7 @@ static void rcc_reset(void *self)
     r->ahbenr = AHBENR_RESET;
     r->csr &= CSR_FLAGS;
     r->hsi_at = r->hse_at = r->pll_at = r->lsi_at = MMIO_NEVER;
+    r->pll_waits = 0;
     update_clocks(r);
     update_irq(r);
 }
@@ -208,6 +220,7 @@ static mmio_status_t write_cr(stm32f1_rcc_t *r, uint32_t v, uint32_t mask)
     osc(r, &r->cr, CR_HSEON, CR_HSERDY, (old & CR_HSEON) != 0, &r->hse_at, (r->cr & CR_HSEBYP) ? 0 : HSE_STARTUP_NS);
     if (!r->hse_hz) r->hse_at = MMIO_NEVER; /* no crystal on the board: HSE never starts */
     osc(r, &r->cr, CR_PLLON, CR_PLLRDY, (old & CR_PLLON) != 0, &r->pll_at, PLL_LOCK_NS);
+    if (!(r->cr & CR_PLLON)) r->pll_waits = 0;
     rcc_advance(r, r->now); /* a start-up of 0 ns is ready now */
     return (r->cr & CR_CSSON) ? MMIO_UNMODELED : MMIO_OK; /* the clock security system */
 }

@@ -46,6 +46,7 @@ typedef struct stm32f1_rcc {
     uint64_t now;               /* core cycle the state is at */
     /* core cycle each oscillator becomes ready (MMIO_NEVER: off or ready) */
     uint64_t hsi_at, hse_at, pll_at, lsi_at, lse_at;
+    int pll_waits;              /* PLLON without a running input: locks once the input runs */
     mmio_clocks_t clocks;
     mmio_irq_t irq;
     struct stm32f1_gate *gates[STM32F1_RCC_GATES];
