@@ -175,6 +175,7 @@ static void test_pwm_duty(void **state)
     o = stm32f1_tim_output(&tim, 1);
     assert_true(o.duty == 750.0 / 3000.0);
     assert_false(o.running);
+    assert_true(o.freq_hz == 24000.0); /* 72 MHz / 3000 */
     o = stm32f1_tim_output(&tim, 2); /* PWM2, active low */
     assert_true(o.duty == 1.0 - 750.0 / 3000.0);
     assert_true(o.active_low);

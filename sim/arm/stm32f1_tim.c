@@ -485,5 +485,7 @@ stm32f1_tim_out_t stm32f1_tim_output(const stm32f1_tim_t *t, unsigned ch)
     else if (mode == 7) o.duty = 1.0 - pwm1_duty(t, t->ccr_sh[i]);
     else o.duty = -1.0;
     o.high = o.pwm ? (o.active_low ? 1.0 - o.duty : o.duty) : -1.0;
+    double counts = cms(t) ? 2.0 * t->arr_sh : t->arr_sh + 1.0;
+    o.freq_hz = counts > 0 ? tim_hz(t) / ((t->psc_sh + 1.0) * counts) : 0.0;
     return o;
 }

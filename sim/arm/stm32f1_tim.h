@@ -73,6 +73,7 @@ typedef struct {
     double duty;     /* fraction of the period OCxREF is active, 0..1 */
     int active_low;  /* CCxP: the pin is high while OCxREF is inactive */
     double high;     /* fraction of the period the pin is high (duty, or 1 - duty if active_low) */
+    double freq_hz;  /* the PWM period's frequency: timer clock / ((PSC+1)(ARR+1)), center-aligned / ((PSC+1) 2 ARR) */
 } stm32f1_tim_out_t;
 
 /* TIM1..TIM4's tables (index n-1): the same model under each name */
