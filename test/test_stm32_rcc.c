@@ -115,6 +115,48 @@ static void test_pll_72mhz_and_switch(void **state)
     assert_int_equal(c->tim_apb2, 36000000);
 }
 
+/* libopencm3's rcc_clock_setup_in_hse_8mhz_out_72mhz as bulebule calls it:
+ * HSI, SW HSI; HSE, wait, SW HSE; prescalers (ADC /8, APB1 /2); PLL x9
+ * from HSE; PLLON, wait; SW PLL. Each wait polls the ready bit. */
+static uint64_t now_cycle;
+static void poll_cr(uint32_t bit)
+{
+    for (int i = 0; i < 100000 && !(rd(CR) & bit); i++) at(now_cycle += 10);
+    assert_true(rd(CR) & bit);
+}
+
+static void test_libopencm3_72mhz_sequence(void **state)
+{
+    now_cycle = 0;
+    wr(CR, rd(CR) | 1u);
+    poll_cr(1u << 1);
+    wr(CFGR, rd(CFGR) & ~3u);
+    wr(CR, rd(CR) | 1u << 16);
+    poll_cr(1u << 17);
+    assert_true(now_cycle >= 16000 && now_cycle < 16010); /* 2 ms at 8 MHz */
+    wr(CFGR, (rd(CFGR) & ~3u) | 1u);
+    assert_int_equal((rd(CFGR) >> 2) & 3u, 1); /* HSE ready: switched at once */
+    wr(CFGR, (rd(CFGR) & ~(0xFu << 4)));
+    wr(CFGR, (rd(CFGR) & ~(3u << 14)) | 3u << 14);
+    wr(CFGR, (rd(CFGR) & ~(7u << 8)) | 4u << 8);
+    wr(CFGR, (rd(CFGR) & ~(7u << 11)));
+    wr(CFGR, (rd(CFGR) & ~(0xFu << 18)) | 7u << 18);
+    wr(CFGR, rd(CFGR) | 1u << 16);
+    wr(CFGR, rd(CFGR) & ~(1u << 17));
+    wr(CR, rd(CR) | 1u << 24);
+    uint64_t pll_on = now_cycle;
+    poll_cr(1u << 25);
+    assert_true(now_cycle - pll_on >= 1600 && now_cycle - pll_on < 1610); /* 200 us at 8 MHz */
+    wr(CFGR, (rd(CFGR) & ~3u) | 2u);
+    assert_int_equal((rd(CFGR) >> 2) & 3u, 2);
+    const mmio_clocks_t *c = stm32f1_rcc_clocks(&rcc);
+    assert_int_equal(c->hclk, 72000000);
+    assert_int_equal(c->pclk1, 36000000);
+    assert_int_equal(c->pclk2, 72000000);
+    assert_int_equal(c->tim_apb1, 72000000);
+    assert_int_equal(c->adcclk, 9000000);
+}
+
 static void test_hsi_pll_and_no_crystal(void **state)
 {
     stm32f1_rcc_init(&rcc, 0, (mmio_irq_t){ irq_set, NULL });
@@ -226,6 +268,7 @@ int main(void)
         cmocka_unit_test_setup(test_reset_values, setup),
         cmocka_unit_test_setup(test_hse_ready_after_startup, setup),
         cmocka_unit_test_setup(test_pll_72mhz_and_switch, setup),
+        cmocka_unit_test_setup(test_libopencm3_72mhz_sequence, setup),
         cmocka_unit_test_setup(test_hsi_pll_and_no_crystal, setup),
         cmocka_unit_test_setup(test_pll_waits_for_its_input, setup),
         cmocka_unit_test_setup(test_ready_interrupt, setup),

@@ -122,6 +122,29 @@ static void test_clock_ratio(void **state)
     assert_int_equal(rd(SR) & 1, 1);
 }
 
+/* bulebule's setup_emitters after a TIM1 reset: PSC 449 and ARR 9 written,
+ * CEN and UIE set, no UG: the first update comes after 10 clocks at the
+ * old PSC 0, then every 4,500 clocks (16 kHz at 72 MHz) */
+static void test_bulebule_emitter_timer(void **state)
+{
+    init(1);
+    at(1000);
+    wr(CR1, 0);
+    wr(PSC, 72000000 / 160000 - 1);
+    wr(ARR, 10 - 1);
+    wr(CR1, 1);
+    wr(DIER, 1);
+    assert_int_equal(next(), 1010);
+    at(1010);
+    assert_true(irq_level[25]);
+    wr(SR, ~1u);
+    assert_int_equal(next(), 1010 + 4500);
+    at(1010 + 4500);
+    assert_true(irq_level[25]);
+    wr(SR, ~1u);
+    assert_int_equal(next(), 1010 + 2 * 4500);
+}
+
 /* PSC is preloaded: a new value takes effect at the next update */
 static void test_psc_preload(void **state)
 {
@@ -368,6 +391,7 @@ int main(void)
         cmocka_unit_test(test_reset_values),
         cmocka_unit_test(test_update_interrupt_period),
         cmocka_unit_test(test_clock_ratio),
+        cmocka_unit_test(test_bulebule_emitter_timer),
         cmocka_unit_test(test_psc_preload),
         cmocka_unit_test(test_arr_preload),
         cmocka_unit_test(test_pwm_duty),
