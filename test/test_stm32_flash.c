@@ -174,6 +174,39 @@ static void test_eop_interrupt(void **state)
     assert_false(irq_level[STM32F1_FLASH_IRQ]);
 }
 
+/* libopencm3's flash_unlock (LOCK set first, then the keys) twice, then
+ * bulebule's eeprom_flash_page: erase, status EOP only, a word as two
+ * half-words, status EOP only after each */
+static uint64_t t_now;
+static uint32_t wait_status(void)
+{
+    while (rd(SR) & 1) at(t_now += 100);
+    return rd(SR) & (0x01 | 0x04 | 0x10 | 0x20);
+}
+
+static void test_libopencm3_page_write(void **state)
+{
+    t_now = 0;
+    for (int i = 0; i < 2; i++) {
+        wr(CR, rd(CR) | 0x80);
+        assert_int_equal(wr(KEYR, 0x45670123), MMIO_OK);
+        assert_int_equal(wr(KEYR, 0xCDEF89AB), MMIO_OK);
+    }
+    wr(CR, rd(CR) | 0x02);
+    wr(AR, 0x0800F800);
+    wr(CR, rd(CR) | 0x40);
+    assert_int_equal(wait_status(), 0x20);
+    wr(CR, rd(CR) & ~0x02u);
+    for (int h = 0; h < 2; h++) {
+        wr(CR, rd(CR) | 0x01);
+        assert_int_equal(stm32f1_flash_mem_write(&fl, 0xF800 + 2 * h, 2, h ? 0xDEAD : 0xBEEF), MMIO_OK);
+        assert_int_equal(wait_status(), 0x20);
+        wr(CR, rd(CR) & ~0x01u);
+    }
+    assert_int_equal(hw(0xF800), 0xBEEF);
+    assert_int_equal(hw(0xF802), 0xDEAD);
+}
+
 static void test_file_round_trip(void **state)
 {
     char dir[] = "/tmp/test_stm32_flash_XXXXXX", path[600], err[700];
@@ -214,6 +247,7 @@ int main(void)
         cmocka_unit_test_setup(test_erase_then_program, setup),
         cmocka_unit_test_setup(test_pgerr_on_programmed_halfword, setup),
         cmocka_unit_test_setup(test_eop_interrupt, setup),
+        cmocka_unit_test_setup(test_libopencm3_page_write, setup),
         cmocka_unit_test_setup(test_file_round_trip, setup),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
