@@ -11,7 +11,9 @@
 
 #include <stdint.h>
 
+#include "arm/stm32f1_map.h"
 #include "arm/stm32f1_rcc.h"
+#include "arm/stm32f1_tim.h"
 
 #define CR 0x00
 #define CFGR 0x04
@@ -250,6 +252,31 @@ static void test_gate(void **state)
     assert_int_equal(p.resets, 1);
 }
 
+/* TIM1 behind its gate (APB2 bit 11): off until rcc_periph_clock_enable;
+ * rcc_periph_reset_pulse(RST_TIM1) (APB2RSTR bit 11 set then cleared)
+ * resets its registers */
+static void test_tim1_gate_and_reset_pulse(void **state)
+{
+    stm32f1_tim_t tim;
+    stm32f1_gate_t g;
+    stm32f1_tim_init(&tim, 1, stm32f1_rcc_clocks(&rcc), (mmio_irq_t){ irq_set, NULL }, (mmio_dma_req_t){ NULL, NULL });
+    assert_int_equal(stm32f1_gate_init(&g, &rcc, STM32F1_APB2, STM32F1_EN_TIM1, &stm32f1_tim_ops[0], &tim), 0);
+    assert_string_equal(g.bus_ops.name, "TIM1");
+    g.bus_ops.write(&g, 0x28, 4, 449); /* PSC, clock off: dropped */
+    assert_int_equal(tim.psc, 0);
+    assert_int_equal(g.off_writes, 1);
+    wr(0x18, STM32F1_EN_TIM1);
+    g.bus_ops.write(&g, 0x28, 4, 449);
+    uint32_t v = 0;
+    g.bus_ops.read(&g, 0x28, 4, &v);
+    assert_int_equal(v, 449);
+    wr(APB2RSTR, STM32F1_EN_TIM1);
+    wr(APB2RSTR, 0);
+    g.bus_ops.read(&g, 0x28, 4, &v);
+    assert_int_equal(v, 0);
+    assert_int_equal(stm32f1_rcc_clocks(&rcc)->tim_apb2, 8000000); /* the clock TIM1 counts */
+}
+
 static void test_subword_access(void **state)
 {
     /* a byte write to CFGR's second byte: PPRE1 /2 without touching SW */
@@ -274,6 +301,7 @@ int main(void)
         cmocka_unit_test_setup(test_ready_interrupt, setup),
         cmocka_unit_test_setup(test_csr_flags, setup),
         cmocka_unit_test_setup(test_gate, setup),
+        cmocka_unit_test_setup(test_tim1_gate_and_reset_pulse, setup),
         cmocka_unit_test_setup(test_subword_access, setup),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
