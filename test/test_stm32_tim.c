@@ -298,11 +298,10 @@ static void test_encoder_mode3(void **state)
     wr(SMCR, 3);
     wr(CCMR1, 1u | 1u << 8); /* CC1S = TI1, CC2S = TI2 */
     wr(CR1, 1);
-    at(1000);
-    stm32f1_tim_encoder(&tim, 2048);
+    stm32f1_tim_encoder(&tim, 1000, 2048);
     assert_int_equal(rd(CNT), 2048);
     assert_int_equal(rd(CR1) & (1u << 4), 0);
-    stm32f1_tim_encoder(&tim, 2048 - 3000); /* backwards past 0: wraps to 0xFFFF */
+    stm32f1_tim_encoder(&tim, tim.now, 2048 - 3000); /* backwards past 0: wraps to 0xFFFF */
     assert_int_equal(rd(CNT), 0x10000 - 952);
     assert_int_equal(rd(CR1) & (1u << 4), 1u << 4);
     assert_int_equal(rd(SR) & 1, 1);
@@ -314,12 +313,12 @@ static void test_encoder_mode3(void **state)
     wr(ARR, 999);
     wr(SMCR, 3);
     wr(CR1, 1);
-    stm32f1_tim_encoder(&tim, 2048);
+    stm32f1_tim_encoder(&tim, tim.now, 2048);
     assert_int_equal(rd(CNT), 48);
     assert_int_equal(rd(SR) & 1, 1);
     /* CC1P reverses the direction */
     wr(CCER, 1u << 1);
-    stm32f1_tim_encoder(&tim, 2048 + 10);
+    stm32f1_tim_encoder(&tim, tim.now, 2048 + 10);
     assert_int_equal(rd(CNT), 38);
 }
 
@@ -330,12 +329,12 @@ static void test_encoder_mode1_2(void **state)
         init(2);
         wr(SMCR, mode);
         wr(CR1, 1);
-        stm32f1_tim_encoder(&tim, 2048);
+        stm32f1_tim_encoder(&tim, tim.now, 2048);
         assert_int_equal(rd(CNT), 1024);
-        stm32f1_tim_encoder(&tim, 2047);
-        stm32f1_tim_encoder(&tim, 2046);
+        stm32f1_tim_encoder(&tim, tim.now, 2047);
+        stm32f1_tim_encoder(&tim, tim.now, 2046);
         assert_int_equal(rd(CNT), 1023);
-        for (int64_t p = 2046; p >= 0; p--) stm32f1_tim_encoder(&tim, p);
+        for (int64_t p = 2046; p >= 0; p--) stm32f1_tim_encoder(&tim, tim.now, p);
         assert_int_equal(rd(CNT), 0);
     }
 }
@@ -362,23 +361,22 @@ static void test_input_capture(void **state)
     wr(DIER, 1u << 1);
     wr(CR1, 1);
     at(100);
-    stm32f1_tim_input(&tim, 1, 1);
+    stm32f1_tim_input(&tim, tim.now, 1, 1);
     assert_int_equal(rd(SR), 1u << 1);
     assert_true(irq_level[28]);
     assert_int_equal(rd(CCR1), 100); /* the read clears CC1IF */
     assert_int_equal(rd(SR), 0);
     assert_false(irq_level[28]);
     at(150);
-    stm32f1_tim_input(&tim, 1, 0);
+    stm32f1_tim_input(&tim, tim.now, 1, 0);
     assert_int_equal(rd(SR), 0); /* CH2: first falling edge of two */
     at(170);
-    stm32f1_tim_input(&tim, 1, 1);
+    stm32f1_tim_input(&tim, tim.now, 1, 1);
     at(200);
-    stm32f1_tim_input(&tim, 1, 0);
+    stm32f1_tim_input(&tim, tim.now, 1, 0);
     assert_int_equal(rd(SR), 1u << 1 | 1u << 2);
     assert_int_equal(rd(CCR1 + 4), 200);
-    at(300);
-    stm32f1_tim_input(&tim, 1, 1);
+    stm32f1_tim_input(&tim, 300, 1, 1); /* brings the timer to cycle 300 itself */
     assert_int_equal(rd(SR), 1u << 1 | 1u << 9); /* CC1OF: CC1IF still set from 170 */
     assert_int_equal(rd(CCR1), 300);
     assert_int_equal(stm32f1_tim_ops[1].write(&tim, CCR1, 4, 5), MMIO_OK); /* read-only in capture */

@@ -263,8 +263,9 @@ static void encoder_counts(stm32f1_tim_t *t, int64_t n)
     }
 }
 
-void stm32f1_tim_encoder(stm32f1_tim_t *t, int64_t edges)
+void stm32f1_tim_encoder(stm32f1_tim_t *t, uint64_t now, int64_t edges)
 {
+    tim_advance(t, now);
     int64_t a = t->enc;
     t->enc = edges;
     if (!(t->cr1 & CEN) || !encoder(t) || t->arr_sh == 0) return;
@@ -279,8 +280,9 @@ void stm32f1_tim_encoder(stm32f1_tim_t *t, int64_t edges)
 /* RM0008 15.3.5: an edge of the selected polarity on the channel's input
  * (CCxS 01: its own TIx; 10: the pair's other) copies CNT into CCRx at
  * every ICxPSC-th edge: CCxIF, or CCxOF if CCxIF was still set. */
-void stm32f1_tim_input(stm32f1_tim_t *t, unsigned ti, int rising)
+void stm32f1_tim_input(stm32f1_tim_t *t, uint64_t now, unsigned ti, int rising)
 {
+    tim_advance(t, now);
     if (ti < 1 || ti > 4) return;
     for (unsigned i = 0; i < 4; i++) {
         unsigned sel = ccs(t, i), src = sel == 1 ? i : sel == 2 ? (i ^ 1u) : 99u;

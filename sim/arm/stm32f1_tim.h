@@ -83,12 +83,12 @@ extern const mmio_ops_t stm32f1_tim_ops[4];
  * (see tim_reset). dma may have a NULL request (no DMA controller). */
 void stm32f1_tim_init(stm32f1_tim_t *t, unsigned n, const mmio_clocks_t *clk, mmio_irq_t irq, mmio_dma_req_t dma);
 /* The wheel's quadrature position, edges (4 per encoder line; positive
- * forward: channel 1 leads), at the cycle of the last advance(). In an
- * encoder mode with CEN the counter follows it. */
-void stm32f1_tim_encoder(stm32f1_tim_t *t, int64_t edges);
-/* An edge on input TIti (1-4), rising or falling, at the cycle of the last
- * advance(): captured by the channels that select it (input capture). */
-void stm32f1_tim_input(stm32f1_tim_t *t, unsigned ti, int rising);
+ * forward: channel 1 leads), from core cycle now (>= the last access).
+ * In an encoder mode with CEN the counter follows it. */
+void stm32f1_tim_encoder(stm32f1_tim_t *t, uint64_t now, int64_t edges);
+/* An edge on input TIti (1-4), rising or falling, at core cycle now:
+ * captured by the channels that select it (input capture). */
+void stm32f1_tim_input(stm32f1_tim_t *t, uint64_t now, unsigned ti, int rising);
 /* Channel ch (1-4) now. */
 stm32f1_tim_out_t stm32f1_tim_output(const stm32f1_tim_t *t, unsigned ch);
 
