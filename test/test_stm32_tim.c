@@ -219,6 +219,40 @@ static void test_pwm_duty(void **state)
     assert_true(stm32f1_tim_output(&tim, 1).enabled);
 }
 
+/* output compare modes: active on match, toggle (a square wave at half
+ * the update rate), forced; the pin follows OCxREF and CCxP */
+static void test_output_compare_levels(void **state)
+{
+    init(2);
+    wr(ARR, 99);
+    wr(CCR1, 50);
+    wr(CCR1 + 4, 20);
+    wr(CCMR1, 1u << 4 | 3u << 12); /* CH1 active on match, CH2 toggle */
+    wr(CCMR2, 5u << 4 | 4u << 12); /* CH3 forced active, CH4 forced inactive */
+    wr(CCER, 1u | 1u << 4 | 1u << 8 | 1u << 12 | 1u << 13); /* CH4 active low */
+    assert_int_equal(stm32f1_tim_output(&tim, 1).level, 0);
+    assert_int_equal(stm32f1_tim_output(&tim, 3).level, 1);
+    assert_int_equal(stm32f1_tim_output(&tim, 4).level, 1);
+    wr(CR1, 1);
+    at(49);
+    assert_int_equal(stm32f1_tim_output(&tim, 1).ref, 0);
+    assert_int_equal(stm32f1_tim_output(&tim, 2).ref, 1); /* toggled at 20 */
+    at(50);
+    assert_int_equal(stm32f1_tim_output(&tim, 1).ref, 1);
+    at(120);
+    assert_int_equal(stm32f1_tim_output(&tim, 2).ref, 0); /* toggled again at 120 */
+    at(120 + 100 * 1001);
+    assert_int_equal(stm32f1_tim_output(&tim, 2).ref, 1); /* 1,001 more periods: odd */
+    stm32f1_tim_out_t o = stm32f1_tim_output(&tim, 2);
+    assert_true(o.pwm && o.duty == 0.5 && o.freq_hz == 72000000.0 / 100 / 2);
+    /* PWM1: OCxREF from the counter */
+    wr(CCMR1, 6u << 4);
+    wr(CNT, 10);
+    assert_int_equal(stm32f1_tim_output(&tim, 1).ref, 1);
+    wr(CNT, 60);
+    assert_int_equal(stm32f1_tim_output(&tim, 1).ref, 0);
+}
+
 /* TIM1: CC1 on its CC line (27), update on UP (25), DMA request of the update on channel 5 */
 static void test_tim1_compare_and_lines(void **state)
 {
@@ -393,6 +427,7 @@ int main(void)
         cmocka_unit_test(test_psc_preload),
         cmocka_unit_test(test_arr_preload),
         cmocka_unit_test(test_pwm_duty),
+        cmocka_unit_test(test_output_compare_levels),
         cmocka_unit_test(test_tim1_compare_and_lines),
         cmocka_unit_test(test_repetition_counter),
         cmocka_unit_test(test_one_pulse),

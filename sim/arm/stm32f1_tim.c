@@ -69,6 +69,10 @@ static void dma_pulse(stm32f1_tim_t *t, unsigned ch)
 /* Channel i matched: CCxIF, and its DMA request (unless CCDS moves it to the update). */
 static void cc_match(stm32f1_tim_t *t, unsigned i)
 {
+    unsigned mode = ocm(t, i);
+    if (mode == 1) t->ref |= 1u << i;            /* active on match */
+    else if (mode == 2) t->ref &= ~(1u << i);    /* inactive on match */
+    else if (mode == 3) t->ref ^= 1u << i;       /* toggle */
     t->sr |= CCIF(i);
     if ((t->dier & CCDE(i)) && !(t->cr2 & CCDS)) dma_pulse(t, dma_cc[t->n - 1][i]);
 }
@@ -316,6 +320,7 @@ static void tim_reset(void *self)
     memset(t->ccr, 0, sizeof t->ccr);
     memset(t->ccr_sh, 0, sizeof t->ccr_sh);
     memset(t->ic_edges, 0, sizeof t->ic_edges);
+    t->ref = 0;
     update_irq(t);
 }
 
@@ -325,6 +330,22 @@ void stm32f1_tim_init(stm32f1_tim_t *t, unsigned n, const mmio_clocks_t *clk, mm
     t->n = n >= 1 && n <= 4 ? n : 2;
     t->clk = clk, t->irq = irq, t->dma = dma;
     tim_reset(t);
+}
+
+/* t->ref with channel i's OCxREF as it is now: PWM modes from the
+ * counter (RM0008 15.3.9), forced modes their level, the others as the
+ * last match left it. */
+static uint32_t ref_now(const stm32f1_tim_t *t, unsigned i)
+{
+    unsigned mode = ocm(t, i);
+    uint32_t ccr = t->ccr_sh[i], cnt = t->cnt;
+    int on;
+    if (mode == 4 || mode == 5) on = mode == 5;
+    else if (mode >= 6) {
+        on = (!cms(t) && t->down) ? cnt <= ccr : cnt < ccr;
+        if (mode == 7) on = !on;
+    } else return t->ref;
+    return on ? t->ref | 1u << i : t->ref & ~(1u << i);
 }
 
 /* EGR (RM0008 15.4.6): UG reinitializes the counter and the prescaler
@@ -385,7 +406,9 @@ static mmio_status_t write_ctl(stm32f1_tim_t *t, uint32_t w, uint32_t v, uint32_
         uint32_t keep = 0; /* CCxS only while the channel is off */
         for (unsigned j = 0; j < 2; j++)
             if ((t->ccer >> (4 * (2 * k + j))) & 1u) keep |= 3u << (8 * j);
+        for (unsigned j = 0; j < 2; j++) t->ref = ref_now(t, 2 * k + j); /* the level it leaves */
         t->ccmr[k] = stm32f1_reg_merge(t->ccmr[k], v, m, 0xFFFFu & ~keep);
+        for (unsigned j = 0; j < 2; j++) t->ref = ref_now(t, 2 * k + j); /* a forced level at once */
         return channels_status(t);
     }
     case 0x20:
@@ -485,9 +508,13 @@ stm32f1_tim_out_t stm32f1_tim_output(const stm32f1_tim_t *t, unsigned ch)
     else if (mode == 5) o.duty = 1.0;            /* force active */
     else if (mode == 6) o.duty = pwm1_duty(t, t->ccr_sh[i]);
     else if (mode == 7) o.duty = 1.0 - pwm1_duty(t, t->ccr_sh[i]);
+    else if (mode == 3 && t->ccr_sh[i] <= t->arr_sh) o.pwm = 1, o.duty = 0.5; /* toggle: a square wave */
     else o.duty = -1.0;
     o.high = o.pwm ? (o.active_low ? 1.0 - o.duty : o.duty) : -1.0;
     double counts = cms(t) ? 2.0 * t->arr_sh : t->arr_sh + 1.0;
     o.freq_hz = counts > 0 ? tim_hz(t) / ((t->psc_sh + 1.0) * counts) : 0.0;
+    if (mode == 3) o.freq_hz /= 2.0; /* one toggle a period: half the update rate */
+    o.ref = (ref_now(t, i) >> i) & 1u;
+    o.level = o.enabled ? o.ref ^ o.active_low : -1;
     return o;
 }

@@ -10,7 +10,8 @@
  *               RCR (TIM1), EGR (UG, CCxG, TG, COMG, BG set their flags)
  *   compare     CCMR1/2 output modes (frozen, active/inactive/toggle on
  *               match, forced, PWM1, PWM2) with OCxPE preload, CCRx; CCxIF
- *               at each match (center-aligned: in the CMS's direction)
+ *               and the match modes' OCxREF at each match (center-aligned:
+ *               in the CMS's direction)
  *   outputs     CCER (CCxE, CCxP), BDTR MOE (TIM1); the board reads each
  *               channel as a duty and a polarity (stm32f1_tim_output)
  *   encoder     SMCR SMS 1-3: the counter follows the wheel's quadrature
@@ -62,6 +63,7 @@ typedef struct {
     mmio_irq_t irq;
     mmio_dma_req_t dma;
     uint32_t ic_edges[4];       /* input capture: edges since the last capture (ICxPSC) */
+    uint32_t ref;               /* OCxREF per channel (bit i) in the modes that hold it: match, toggle, forced */
     uint32_t irq_out;           /* the interrupt lines held high, one bit per line */
 } stm32f1_tim_t;
 
@@ -69,11 +71,15 @@ typedef struct {
 typedef struct {
     int enabled;     /* CCxE (and MOE on TIM1): the pin is driven by the timer */
     int running;     /* CEN: the counter runs (stopped: the level stays as it was) */
-    int pwm;         /* 1: a PWM or forced mode, duty valid; 0: another mode (duty -1) */
+    int pwm;         /* 1: a PWM, forced or toggle mode (toggle: a 50 % square wave), duty valid;
+                        0: another mode (duty -1) */
     double duty;     /* fraction of the period OCxREF is active, 0..1 */
     int active_low;  /* CCxP: the pin is high while OCxREF is inactive */
     double high;     /* fraction of the period the pin is high (duty, or 1 - duty if active_low) */
-    double freq_hz;  /* the PWM period's frequency: timer clock / ((PSC+1)(ARR+1)), center-aligned / ((PSC+1) 2 ARR) */
+    double freq_hz;  /* the PWM period's frequency: timer clock / ((PSC+1)(ARR+1)), center-aligned / ((PSC+1) 2 ARR);
+                        toggle mode half that */
+    int ref;         /* OCxREF now (0/1) */
+    int level;       /* the pin now: OCxREF xor CCxP if enabled, else -1 */
 } stm32f1_tim_out_t;
 
 /* TIM1..TIM4's tables (index n-1): the same model under each name */
