@@ -186,6 +186,15 @@ static void test_exti_rising_edge(void **state)
     stm32f1_gpio_drive(&gpa, 12, STM32F1_DRIVE_LOW);
     stm32f1_gpio_drive(&gpa, 12, STM32F1_DRIVE_HIGH);
     assert_true(irq_level[40]); /* EXTI15_10 */
+    /* an analog pin never reaches EXTI (its Schmitt trigger is off) */
+    ewr(0x14, 1u << 12);
+    wr(&gpa, CRH, 0x44404444); /* PA12 analog */
+    stm32f1_gpio_drive(&gpa, 12, STM32F1_DRIVE_LOW);
+    stm32f1_gpio_drive(&gpa, 12, STM32F1_DRIVE_HIGH);
+    assert_int_equal(erd(0x14) & (1u << 12), 0);
+    wr(&gpa, CRH, 0x44444444);
+    assert_int_equal(erd(0x14) & (1u << 12), 1u << 12); /* back to an input: it rises */
+    ewr(0x14, 1u << 12);
     /* a falling edge when FTSR selects it; writing 0 to PR changes nothing */
     ewr(0x0C, 1u << 12);
     ewr(0x14, 1u << 12);

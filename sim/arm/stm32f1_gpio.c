@@ -34,7 +34,16 @@ stm32f1_pin_t stm32f1_gpio_pin(const stm32f1_gpio_t *g, unsigned pin)
     return p;
 }
 
-/* Recompute the levels; tell EXTI and the board about each change. */
+static uint32_t idr(const stm32f1_gpio_t *g)
+{
+    uint32_t v = g->level;
+    for (unsigned pin = 0; pin < 16; pin++)
+        if (cfg(g, pin) == 0) v &= ~(1u << pin); /* analog input: the Schmitt trigger is off, reads 0 */
+    return v;
+}
+
+/* Recompute the levels; tell the board about each pin's change and EXTI
+ * about each input data bit's (what EXTI sees: RM0008 figure 13). */
 static void update(stm32f1_gpio_t *g)
 {
     uint16_t now = 0;
@@ -42,20 +51,12 @@ static void update(stm32f1_gpio_t *g)
         if (stm32f1_gpio_pin(g, pin).level) now |= (uint16_t)(1u << pin);
     uint16_t changed = now ^ g->level;
     g->level = now;
-    for (unsigned pin = 0; changed && pin < 16; pin++) {
-        if (!((changed >> pin) & 1u)) continue;
-        int l = (now >> pin) & 1u;
-        if (g->exti) stm32f1_exti_pin(g->exti, g->port, pin, l);
-        if (g->on_change) g->on_change(g->ctx, g->port, pin, l);
+    uint16_t idr_now = (uint16_t)idr(g), idr_changed = idr_now ^ g->idr_seen;
+    g->idr_seen = idr_now;
+    for (unsigned pin = 0; (changed | idr_changed) && pin < 16; pin++) {
+        if (((idr_changed >> pin) & 1u) && g->exti) stm32f1_exti_pin(g->exti, g->port, pin, (idr_now >> pin) & 1u);
+        if (((changed >> pin) & 1u) && g->on_change) g->on_change(g->ctx, g->port, pin, (now >> pin) & 1u);
     }
-}
-
-static uint32_t idr(const stm32f1_gpio_t *g)
-{
-    uint32_t v = g->level;
-    for (unsigned pin = 0; pin < 16; pin++)
-        if (cfg(g, pin) == 0) v &= ~(1u << pin); /* analog input: reads 0 */
-    return v;
 }
 
 static void gpio_reset(void *self)
@@ -74,7 +75,7 @@ void stm32f1_gpio_init(stm32f1_gpio_t *g, unsigned port, stm32f1_exti_t *exti)
     g->port = port, g->exti = exti;
     memset(g->ext, STM32F1_DRIVE_FLOAT, sizeof g->ext);
     gpio_reset(g);
-    for (unsigned pin = 0; exti && pin < 16; pin++) stm32f1_exti_pin(exti, port, pin, (g->level >> pin) & 1u);
+    for (unsigned pin = 0; exti && pin < 16; pin++) stm32f1_exti_pin(exti, port, pin, (g->idr_seen >> pin) & 1u);
 }
 
 void stm32f1_gpio_on_change(stm32f1_gpio_t *g, stm32f1_pin_cb cb, void *ctx) { g->on_change = cb, g->ctx = ctx; }

@@ -13,8 +13,8 @@
  *   input floating           the outside's drive, else 0 (an undriven pin
  *                            floats; we read it low)
  *   input analog             the outside's drive; IDR reads 0 (Schmitt trigger off)
- * IDR reads the levels in every mode but analog. Each change also reaches
- * EXTI (stm32f1_exti_pin). An alternate function's output level is set by
+ * IDR reads the levels in every mode but analog. Each change of IDR
+ * reaches EXTI (stm32f1_exti_pin): an analog pin never triggers it. An alternate function's output level is set by
  * whoever models that peripheral's pin (stm32f1_gpio_af_level). The JTAG
  * pins' reset state (PA13-15, PB3-4 in JTAG mode with pulls) is not
  * modeled: they start as the other pins do. */
@@ -50,6 +50,7 @@ typedef struct {
     int8_t ext[16];                /* the outside's drive per pin */
     uint8_t af_level[16];          /* the alternate function's output level per pin */
     uint16_t level;                /* the pins' levels as last computed */
+    uint16_t idr_seen;             /* the input data (IDR) as last computed: what EXTI sees */
     stm32f1_exti_t *exti;          /* NULL: none */
     stm32f1_pin_cb on_change;      /* NULL: none */
     void *ctx;
