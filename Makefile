@@ -77,6 +77,7 @@ help:
 	@echo "make firmware    our mouse for the ATmega328P and the Arduino library's sketches (sizes printed)"
 	@echo "make arduino     the Arduino sketches (hal/arduino) for the Uno, Mega and Nano"
 	@echo "make client-mazerunner   UKMARSBOT's mazerunner-core images from ../shared/clients"
+	@echo "make client-bulebule     Bulebots' bulebule (STM32F103) from ../shared/clients, in a copy"
 	@echo "make view LOG=F  a log in the 3D viewer      make spy [LOG=F]   lcm-spy on a log or a live URL"
 	@echo "make replay LOG=F  a log replayed on LCM     make install PREFIX=DIR   the tools and their files"
 	@echo "make fuzz        the parsers under libFuzzer (FUZZ_SECONDS=)"

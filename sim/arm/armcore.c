@@ -110,6 +110,21 @@ static uint32_t insn_addr(armcore_t *c, uint32_t addr, uint32_t k)
 static uint32_t reg(armcore_t *c, int r) { uint32_t v = 0; uc_reg_read(c->uc, r, &v); return v; }
 static void set_reg(armcore_t *c, int r, uint32_t v) { uc_reg_write(c->uc, r, &v); }
 
+/* n registers in one call (an exception's entry and return read and write a dozen) */
+static void regs_read(armcore_t *c, const int *r, uint32_t *v, int n)
+{
+    void *p[16];
+    for (int i = 0; i < n; i++) p[i] = &v[i], v[i] = 0;
+    uc_reg_read_batch(c->uc, (int *)r, p, n);
+}
+
+static void regs_write(armcore_t *c, const int *r, const uint32_t *v, int n)
+{
+    void *p[16];
+    for (int i = 0; i < n; i++) p[i] = (void *)&v[i];
+    uc_reg_write_batch(c->uc, (int *)r, p, n);
+}
+
 /* The cycle an access is made at: its translated block's start. Unicorn
  * keeps the PC at the block's start until the block ends (it syncs it per
  * instruction only under a code hook, about 7 ns an instruction), so an
@@ -298,7 +313,10 @@ static void advance_due(armcore_t *c)
 
 static int exec_prio(armcore_t *c)
 {
-    return cortexm_exec_prio(&c->cm, reg(c, UC_ARM_REG_PRIMASK), reg(c, UC_ARM_REG_BASEPRI), reg(c, UC_ARM_REG_FAULTMASK));
+    static const int masks[] = { UC_ARM_REG_PRIMASK, UC_ARM_REG_BASEPRI, UC_ARM_REG_FAULTMASK };
+    uint32_t v[3];
+    regs_read(c, masks, v, 3);
+    return cortexm_exec_prio(&c->cm, v[0], v[1], v[2]);
 }
 
 /* At a block's start: events due, then the exception to take now, 0 if none. */
@@ -393,14 +411,17 @@ static const char *exc_name(unsigned exc)
 /* Exception exc taken with ret the address to return to: the 8-word frame pushed, LR = EXC_RETURN, the handler's PC. */
 static void enter(armcore_t *c, unsigned exc, uint32_t ret)
 {
-    uint32_t ipsr = reg(c, UC_ARM_REG_IPSR) & 0x1FFu, ctrl = reg(c, UC_ARM_REG_CONTROL), apsr = reg(c, UC_ARM_REG_APSR), handler_pc;
+    static const int rd[] = { UC_ARM_REG_R0, UC_ARM_REG_R1, UC_ARM_REG_R2, UC_ARM_REG_R3, UC_ARM_REG_R12, UC_ARM_REG_LR,
+                              UC_ARM_REG_IPSR, UC_ARM_REG_CONTROL, UC_ARM_REG_APSR, UC_ARM_REG_PSP, UC_ARM_REG_MSP };
+    uint32_t v[11], handler_pc;
+    regs_read(c, rd, v, 11);
+    uint32_t ipsr = v[6] & 0x1FFu, ctrl = v[7], apsr = v[8];
     bool psp = !ipsr && (ctrl & CONTROL_SPSEL);
-    uint32_t sp = reg(c, psp ? UC_ARM_REG_PSP : UC_ARM_REG_MSP), xpsr = (apsr & 0xF80F0000u) | XPSR_T | ipsr;
+    uint32_t sp = psp ? v[9] : v[10], xpsr = (apsr & 0xF80F0000u) | XPSR_T | ipsr;
     if ((c->cm.ccr & CCR_STKALIGN) && (sp & 4u)) sp -= 4, xpsr |= XPSR_ALIGN;
     sp -= 32;
-    static const int saved[] = { UC_ARM_REG_R0, UC_ARM_REG_R1, UC_ARM_REG_R2, UC_ARM_REG_R3, UC_ARM_REG_R12, UC_ARM_REG_LR };
     uint8_t f[32];
-    for (int i = 0; i < 6; i++) wr32(f + 4 * i, reg(c, saved[i]));
+    for (int i = 0; i < 6; i++) wr32(f + 4 * i, v[i]);
     wr32(f + 24, ret), wr32(f + 28, xpsr);
     if (exc >= EXC_HARDFAULT && exc <= EXC_USAGEFAULT) {
         char m[120];
@@ -451,10 +472,12 @@ static void unstack(armcore_t *c, uint32_t excret)
     } else {
         set_reg(c, UC_ARM_REG_MSP, nsp);
     }
-    static const int saved[] = { UC_ARM_REG_R0, UC_ARM_REG_R1, UC_ARM_REG_R2, UC_ARM_REG_R3, UC_ARM_REG_R12, UC_ARM_REG_LR };
-    for (int i = 0; i < 6; i++) set_reg(c, saved[i], rd32(f + 4 * i));
-    set_reg(c, UC_ARM_REG_APSR, xpsr);
-    set_reg(c, UC_ARM_REG_APSR_NZCV, xpsr);
+    static const int wr[] = { UC_ARM_REG_R0, UC_ARM_REG_R1, UC_ARM_REG_R2, UC_ARM_REG_R3, UC_ARM_REG_R12, UC_ARM_REG_LR,
+                              UC_ARM_REG_APSR, UC_ARM_REG_APSR_NZCV };
+    uint32_t v[8];
+    for (int i = 0; i < 6; i++) v[i] = rd32(f + 4 * i);
+    v[6] = v[7] = xpsr;
+    regs_write(c, wr, v, 8);
     c->pc = ret & ~1u;
     c->cyc += ARMCORE_EXC_EXIT_CYCLES;
 }
