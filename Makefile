@@ -11,20 +11,24 @@ SHELL := /bin/bash
 # python3-matplotlib: tools/mmplot draws a run's log against time;
 # python3-dask, python3-distributed, python3-pandas, python3-pytest: the
 # python/mmsim package and tools/mmsweep (sweeps on Dask, their tests).
+# gcc-arm-none-eabi, libnewlib-arm-none-eabi, libstdc++-arm-none-eabi-newlib:
+# our ARM test firmware (test/arm) and bulebule's build; libunicorn-dev: the
+# Cortex-M core (sim/arm); gdb-multiarch: gdb for an ARM image.
 DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev libinih-dev \
 	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev libdw-dev \
 	liblcm-dev liblcm-bin libglib2.0-dev clang libclang-rt-14-dev \
 	liblcm-java default-jdk-headless default-jre libjchart2d-java xvfb iproute2 \
 	libpng-dev libglfw3-dev libgl-dev python3-venv libx11-dev libxtst-dev gdb-avr gdb universal-ctags \
-	python3-matplotlib python3-dask python3-distributed python3-pandas python3-pytest valgrind
+	python3-matplotlib python3-dask python3-distributed python3-pandas python3-pytest valgrind \
+	gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib libunicorn-dev gdb-multiarch
 
 CC      ?= gcc
 STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
 WARN    := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wno-unused-parameter
-INC      = -Ifirmware -Ihal -Ihal/sim -Ihal/wire -Isim -I$(B)/lcmgen $(shell pkg-config --cflags glib-2.0 ode libpng 2>/dev/null)
+INC      = -Ifirmware -Ihal -Ihal/sim -Ihal/wire -Isim -I$(B)/lcmgen $(shell pkg-config --cflags glib-2.0 ode libpng unicorn 2>/dev/null)
 CFLAGS  ?= -O2 -g
 SAN     := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
-LIBS     = -ljansson -linih -llcm $(shell pkg-config --libs glib-2.0 ode libpng glfw3 gl 2>/dev/null) -lsimavr -ldw -lelf -lm
+LIBS     = -ljansson -linih -llcm $(shell pkg-config --libs glib-2.0 ode libpng glfw3 gl unicorn 2>/dev/null) -lsimavr -ldw -lelf -lm
 B       := build
 # ../shared: the maze database and the real clients (tests skip what is absent)
 SHARED  ?= ../shared
@@ -73,6 +77,7 @@ help:
 	@echo "make firmware    our mouse for the ATmega328P and the Arduino library's sketches (sizes printed)"
 	@echo "make arduino     the Arduino sketches (hal/arduino) for the Uno, Mega and Nano"
 	@echo "make client-mazerunner   UKMARSBOT's mazerunner-core images from ../shared/clients"
+	@echo "make client-bulebule     Bulebots' bulebule (STM32F103) from ../shared/clients, in a copy"
 	@echo "make view LOG=F  a log in the 3D viewer      make spy [LOG=F]   lcm-spy on a log or a live URL"
 	@echo "make replay LOG=F  a log replayed on LCM     make install PREFIX=DIR   the tools and their files"
 	@echo "make fuzz        the parsers under libFuzzer (FUZZ_SECONDS=)"
@@ -215,6 +220,34 @@ $(B)/test/xinput: test/xinput.c | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) -O1 $< -lX11 -lXtst -o $@
 
+# ---- our ARM test firmware (test/arm: register-level C, our own startup and
+# linker script) for the Cortex-M core's tests (test/test_armcore.c,
+# test/test_armimage.c), built with Debian's arm-none-eabi-gcc ----
+ARM_CC    := arm-none-eabi-gcc
+ARM_FLAGS := -mcpu=cortex-m3 -mthumb -std=gnu99 -Os -g -Wall -Wextra -ffreestanding -nostdlib -Wl,--gc-sections
+ARM_TEST_ELFS := $(B)/arm/coretest.elf
+$(B)/arm/%.elf: test/arm/%.c test/arm/startup.c test/arm/armtest.h test/arm/link.ld | deps
+	@mkdir -p $(dir $@)
+	$(ARM_CC) $(ARM_FLAGS) -T test/arm/link.ld test/arm/startup.c $< -o $@
+arm-test-firmware: $(ARM_TEST_ELFS)
+.PHONY: arm-test-firmware
+
+# ---- Bulebots' bulebule (STM32F103, libopencm3), unmodified, built in a copy
+# under $(B)/clients/bulebule as ../shared/clients/README.md says: libopencm3's
+# stm32/f1 target, then the firmware with newlib-nano (the full newlib
+# overflows its 63 KB flash region) ----
+BULEBULE_SRC := $(SHARED)/clients/bulebule
+BULEBULE_ELF := $(B)/clients/bulebule/src/main.elf
+$(BULEBULE_ELF): | deps
+	@[ -d $(BULEBULE_SRC)/src ] || { echo "make: $(BULEBULE_SRC) missing (../shared/clients)" >&2; exit 3; }
+	@[ -f $(BULEBULE_SRC)/src/opencm3/libopencm3/include/libopencm3/cm3/nvic.h ] || { echo "make: $(BULEBULE_SRC)/src/opencm3/libopencm3/include/libopencm3/cm3/nvic.h missing (libopencm3's .gitignore names it; the copy in ../shared lost it)" >&2; exit 3; }
+	rm -rf $(B)/clients/bulebule && mkdir -p $(B)/clients && cp -r $(BULEBULE_SRC) $(B)/clients/bulebule && chmod -R u+w $(B)/clients/bulebule
+	$(MAKE) -s -C $(B)/clients/bulebule/src/opencm3/libopencm3 TARGETS=stm32/f1 SRCLIBDIR=$(CURDIR)/$(B)/clients/bulebule/src/opencm3/libopencm3/lib
+	$(MAKE) -s -C $(B)/clients/bulebule/src LDFLAGS="-L./ -Lopencm3/libopencm3/lib --specs=nano.specs"
+	arm-none-eabi-size $@
+client-bulebule: $(BULEBULE_ELF)
+.PHONY: client-bulebule
+
 # Boots an AVR image in simavr and prints its UART0 (test/cli_mazerunner.sh)
 $(B)/test/mrc_boot: test/mrc_boot.c | deps
 	@mkdir -p $(dir $@)
@@ -233,7 +266,7 @@ test: deps
 	@$(MAKE) -j$(NPROC) --no-print-directory test-run
 test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/,$(TOOLS)) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/san-tools/half/mmsim $(B)/san-tools/ukb/mmsim $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
 	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf $(B)/arduino/uno/OneCommand.elf $(B)/test/mrc_boot \
-	$(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf $(BOARD_SKETCHES) $(PERIPH_ELFS) \
+	$(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf $(BOARD_SKETCHES) $(PERIPH_ELFS) $(ARM_TEST_ELFS) \
 	client-mazerunner firmware-ukmarsbot
 	@LSAN_OPTIONS=suppressions=$(CURDIR)/test/lsan-simavr.supp MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim HALF_MMSIM=$(B)/san-tools/half/mmsim UKB_MMSIM=$(B)/san-tools/ukb/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
 
@@ -515,8 +548,11 @@ docs-img: $(B)/mmsim $(B)/mmview
 bench: deps
 	@$(MAKE) --no-print-directory bench-run
 bench-run: $(B)/mmmaze $(B)/mmsim $(B)/bench_flood $(B)/simavr_cycles $(B)/avr/flood.elf \
-	$(B)/avr/tick0.elf $(B)/avr/tick100.elf arduino $(B)/clients/board/EncPoll.elf $(B)/clients/board/EncPollEdge.elf $(B)/ode_rows
+	$(B)/avr/tick0.elf $(B)/avr/tick100.elf arduino $(B)/clients/board/EncPoll.elf $(B)/clients/board/EncPollEdge.elf $(B)/ode_rows \
+	$(B)/armcore_speed $(ARM_TEST_ELFS)
 	BENCH_MAZE=$(BENCH_MAZE) bash bench/run.sh
+$(B)/armcore_speed: bench/armcore_speed.c $(B)/libmm.a
+	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(B)/libmm.a $(LIBS) -o $@
 $(B)/ode_rows: bench/ode_rows.c | deps
 	$(CC) -O2 $< $$(pkg-config --cflags --libs ode) -lm -o $@
 $(B)/simavr_cycles: bench/simavr_cycles.c | deps

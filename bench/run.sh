@@ -143,3 +143,5 @@ print("PIL uno/Mouse.elf classic/japan2019: %s, sim %.1f s, wall %.1f s, real-ti
     d["exit_reason"], d["sim_time_s"], d["wall_time_s"], d["real_time_factor"], [l["run_s"] for l in d["laps"]], d["collisions"]))' \
   || echo "SKIP PIL japan2019: no $DB/classic/japan2019.txt"
 rm -f "$B/pil-bench.err"
+# The Cortex-M core on libunicorn (sim/arm): host ns per simulated instruction, exception round trip
+$B/armcore_speed || echo "SKIP ARM core: build/armcore_speed failed"

@@ -64,6 +64,9 @@ harmless "an 80-line function" sim/maze/solve.c "$(printf '%s\n' "$long" | sed '
 plant hal/sim/hal_sim.c '#include "view/view.h"' "hal/sim may not include sim/view/view.h"
 plant sim/board/board_adc.c '#include "view/hud.h"' "sim/board may not include sim/view/hud.h"
 plant sim/board/board_motor.c '#include <GL/gl.h>' "sim/board may not include <GL/gl.h> (library gl)"
+plant sim/board/board_motor.c '#include <unicorn/unicorn.h>' "sim/board may not include <unicorn/unicorn.h> (library unicorn)"
+plant sim/arm/armcore.c '#include "board/board.h"' "sim/arm may not include sim/board/board.h"
+plant sim/arm/cortexm.c '#include <simavr/sim_avr.h>' "sim/arm may not include <simavr/sim_avr.h> (library simavr)"
 plant sim/io/infile.c '#include "world/sim.h"' "sim/io may not include sim/world/sim.h"
 # the observers read the run's state, never the in-process backend's globals
 plant sim/telemetry/telem.c '#include "hal_sim.h"' "sim/telemetry may not include hal/sim/hal_sim.h"

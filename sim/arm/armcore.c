@@ -1,0 +1,761 @@
+/* armcore.c - a Cortex-M core on libunicorn, its bus and its run (see armcore.h). */
+#include "armcore.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <unicorn/unicorn.h>
+
+#define PERIPH_BASE 0x40000000u
+#define PERIPH_BYTES 0x20000000u
+#define PERIPH_BB_BASE 0x42000000u /* bit-band alias of 0x40000000-0x400FFFFF (ARMv7-M A3.7, PM0056 2.2.5) */
+#define SRAM_BB_BASE 0x22000000u   /* bit-band alias of 0x20000000-0x200FFFFF */
+#define BB_ALIAS_BYTES 0x02000000u
+#define BB_REGION_BYTES 0x00100000u
+#define BLK_CACHE 8192u            /* translated blocks whose instruction count is remembered */
+#define BLK_BYTES_MAX 4096u        /* a translated block's bytes (QEMU: at most 512 instructions) */
+#define NO_ADDR 0xFFFFFFFFu
+#define NO_TIME UINT64_MAX
+#define EXC_RETURN_INTNO 8         /* QEMU's EXCP_EXCEPTION_EXIT: a bx to 0xFFFFFFFx */
+#define XPSR_T (1u << 24)
+#define XPSR_ALIGN (1u << 9)       /* the frame was aligned to 8 bytes (B1.5.7) */
+#define CCR_STKALIGN (1u << 9)
+#define CONTROL_SPSEL 2u
+
+enum { STOP_NONE, STOP_TAKE, STOP_SPLIT, STOP_INTR, STOP_FAULT };
+
+typedef struct { uint32_t addr, size, n; } blk_t;
+
+struct armcore {
+    uc_engine *uc;
+    const armimage_mcu_t *mcu;
+    uint8_t *flash, *sram;
+    mmio_region_t reg[ARMCORE_REGIONS_MAX + 1];
+    int nreg;
+    cortexm_t cm;
+    const mmio_clocks_t *clocks;
+    uint32_t hclk;
+    uint64_t seg_cycle, seg_ps;          /* the current clock's segment: its first cycle and time */
+    uint64_t cyc, target, target_ps, ev_next, now;
+    uint32_t blk_addr, blk_size;
+    uint64_t blk_start;                  /* the cycle the current block started at */
+    uint64_t nat_start;                  /* the cycle the current untranslated-by-stops block started at */
+    bool stop_mid;                       /* the split block was a split's remainder */
+    uint32_t resume_mid;                 /* a split's remainder starts here: no checks, as without the stop */
+    bool partial;                        /* running the first instructions of a split block */
+    int stop, intno;
+    unsigned take;                       /* the exception to take (STOP_TAKE) */
+    uint32_t stop_addr, pc;              /* the block a stop was asked at; where to resume */
+    bool sleeping, verbose, no_idle_skip, crashed;
+    uint32_t crash_pc, bad_addr;
+    int bad_type;
+    char cause[200];
+    armcore_unmodeled_t unm[ARMCORE_UNMODELED_MAX];
+    int nunm;
+    armcore_stats_t st;
+    blk_t blk[BLK_CACHE];
+};
+
+/* ---- memory and instruction lengths ---- */
+static uint8_t *host(armcore_t *c, uint32_t addr, uint32_t n)
+{
+    const armimage_mcu_t *m = c->mcu;
+    if (addr >= m->flash_base && (uint64_t)addr + n <= (uint64_t)m->flash_base + m->flash_bytes) return c->flash + (addr - m->flash_base);
+    if ((uint64_t)addr + n <= m->flash_bytes) return c->flash + addr; /* the boot alias at 0 */
+    if (addr >= m->sram_base && (uint64_t)addr + n <= (uint64_t)m->sram_base + m->sram_bytes) return c->sram + (addr - m->sram_base);
+    return NULL;
+}
+
+static uint32_t rd32(const uint8_t *p) { return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24; }
+static void wr32(uint8_t *p, uint32_t v) { p[0] = (uint8_t)v, p[1] = (uint8_t)(v >> 8), p[2] = (uint8_t)(v >> 16), p[3] = (uint8_t)(v >> 24); }
+
+/* Instructions starting in [addr, end): a halfword 0b11101, 0b11110 or 0b11111 in its top five bits opens a 32-bit one (A6.1). */
+static uint32_t count_insns(armcore_t *c, uint32_t addr, uint32_t end)
+{
+    uint8_t tmp[BLK_BYTES_MAX];
+    uint32_t size = end - addr;
+    if (size > BLK_BYTES_MAX) size = BLK_BYTES_MAX;
+    const uint8_t *p = host(c, addr, size);
+    if (!p) {
+        if (uc_mem_read(c->uc, addr, tmp, size) != UC_ERR_OK) return size / 2;
+        p = tmp;
+    }
+    uint32_t n = 0;
+    for (uint32_t i = 0; i + 2 <= size; n++) i += ((p[i + 1] >> 3) >= 0x1D) ? 4u : 2u;
+    return n;
+}
+
+static uint32_t block_insns(armcore_t *c, uint32_t addr, uint32_t size)
+{
+    blk_t *b = &c->blk[(addr >> 1) & (BLK_CACHE - 1)];
+    if (b->addr != addr || b->size != size) b->addr = addr, b->size = size, b->n = count_insns(c, addr, addr + size);
+    return b->n;
+}
+
+/* The address of instruction k of the block at addr. */
+static uint32_t insn_addr(armcore_t *c, uint32_t addr, uint32_t k)
+{
+    const uint8_t *p = host(c, addr, 4u * k + 4u);
+    uint32_t a = addr;
+    for (uint32_t i = 0; i < k; i++) {
+        uint8_t hi;
+        if (p) hi = p[a - addr + 1];
+        else if (uc_mem_read(c->uc, a + 1, &hi, 1) != UC_ERR_OK) hi = 0;
+        a += (hi >> 3) >= 0x1D ? 4u : 2u;
+    }
+    return a;
+}
+
+static uint32_t reg(armcore_t *c, int r) { uint32_t v = 0; uc_reg_read(c->uc, r, &v); return v; }
+static void set_reg(armcore_t *c, int r, uint32_t v) { uc_reg_write(c->uc, r, &v); }
+
+/* n registers in one call (an exception's entry and return read and write a dozen) */
+static void regs_read(armcore_t *c, const int *r, uint32_t *v, int n)
+{
+    void *p[16];
+    for (int i = 0; i < n; i++) p[i] = &v[i], v[i] = 0;
+    uc_reg_read_batch(c->uc, (int *)r, p, n);
+}
+
+static void regs_write(armcore_t *c, const int *r, const uint32_t *v, int n)
+{
+    void *p[16];
+    for (int i = 0; i < n; i++) p[i] = (void *)&v[i];
+    uc_reg_write_batch(c->uc, (int *)r, p, n);
+}
+
+/* The cycle an access is made at: its translated block's start. Unicorn
+ * keeps the PC at the block's start until the block ends (it syncs it per
+ * instruction only under a code hook, about 7 ns an instruction), so an
+ * access sees the state of the cycle its block began at: two reads of
+ * DWT CYCCNT in one block read the same count. A split's remainder keeps
+ * its block's start, so the cycle never depends on the chunking. */
+static uint64_t access_cycle(const armcore_t *c) { return c->nat_start; }
+
+static void crash(armcore_t *c, uint32_t pc, const char *cause)
+{
+    if (c->crashed) return;
+    c->crashed = true, c->crash_pc = pc;
+    snprintf(c->cause, sizeof c->cause, "%s", cause);
+}
+
+/* ---- time ---- */
+__extension__ typedef unsigned __int128 u128;
+
+static uint64_t time_at(const armcore_t *c, uint64_t cyc)
+{
+    return c->seg_ps + (uint64_t)((u128)(cyc - c->seg_cycle) * ARMCORE_PS_PER_S / c->hclk);
+}
+
+/* the first cycle at or after time t (within the current clock's segment) */
+static uint64_t cycle_at(const armcore_t *c, uint64_t t)
+{
+    if (t <= c->seg_ps) return c->seg_cycle;
+    return c->seg_cycle + (uint64_t)(((u128)(t - c->seg_ps) * c->hclk + ARMCORE_PS_PER_S - 1) / ARMCORE_PS_PER_S);
+}
+
+/* RCC changed HCLK: a new segment from cycle c->now (the access that changed it, or the cycle a check runs at) */
+static void clock_check(armcore_t *c)
+{
+    if (!c->clocks || !c->clocks->hclk || c->clocks->hclk == c->hclk) return;
+    c->seg_ps = time_at(c, c->now), c->seg_cycle = c->now, c->hclk = c->clocks->hclk;
+    if (c->target_ps != NO_TIME) c->target = cycle_at(c, c->target_ps);
+}
+
+/* ---- the bus ---- */
+static void unmodeled(armcore_t *c, uint32_t addr, const mmio_region_t *r, bool write)
+{
+    int i = 0;
+    while (i < c->nunm && c->unm[i].addr != addr) i++;
+    if (i == c->nunm) {
+        if (c->nunm == ARMCORE_UNMODELED_MAX) return; /* the list is full: the first ones are kept */
+        c->nunm++;
+        memset(&c->unm[i], 0, sizeof c->unm[i]);
+        c->unm[i].addr = addr;
+        snprintf(c->unm[i].region, sizeof c->unm[i].region, "%s", r ? r->ops->name : "");
+        if (c->verbose)
+            fprintf(stderr, "mmsim: the firmware %s 0x%08x (%s), a register not modeled (pc 0x%08x)\n", write ? "writes" : "reads",
+                    addr, r ? r->ops->name : "no peripheral modeled there", reg(c, UC_ARM_REG_PC));
+    }
+    if (write) c->unm[i].writes++;
+    else c->unm[i].reads++;
+}
+
+static mmio_region_t *region_at(armcore_t *c, uint32_t addr)
+{
+    int lo = 0, hi = c->nreg - 1;
+    while (lo <= hi) {
+        int mid = (lo + hi) / 2;
+        mmio_region_t *r = &c->reg[mid];
+        if (addr < r->base) hi = mid - 1;
+        else if (addr - r->base >= r->size) lo = mid + 1;
+        else return r;
+    }
+    return NULL;
+}
+
+/* One access to a peripheral at cycle c->now: MMIO_BUS_FAULT, or OK (an unmodeled register listed, read as 0). */
+static mmio_status_t periph(armcore_t *c, uint32_t addr, unsigned size, bool write, uint32_t *v)
+{
+    mmio_region_t *r = region_at(c, addr);
+    mmio_status_t s = MMIO_UNMODELED;
+    c->cm.attention = true; /* a model may have changed its next event or a line */
+    if (r) {
+        if (r->ops->advance) r->ops->advance(r->self, c->now);
+        s = write ? (r->ops->write ? r->ops->write(r->self, addr - r->base, size, *v) : MMIO_UNMODELED)
+                  : (r->ops->read ? r->ops->read(r->self, addr - r->base, size, v) : MMIO_UNMODELED);
+    }
+    if (write) clock_check(c); /* RCC's write switching HCLK: the new clock from this access's cycle */
+    if (s == MMIO_UNMODELED) {
+        unmodeled(c, addr, r, write);
+        if (!write) *v = 0;
+        return MMIO_OK;
+    }
+    return s;
+}
+
+/* The bit-band alias (one bit of a word) or the word itself. */
+static mmio_status_t periph_or_bb(armcore_t *c, uint32_t addr, unsigned size, bool write, uint32_t *v)
+{
+    if (addr < PERIPH_BB_BASE || addr >= PERIPH_BB_BASE + BB_ALIAS_BYTES) return periph(c, addr, size, write, v);
+    uint32_t off = addr - PERIPH_BB_BASE, byte = PERIPH_BASE + off / 32, bit = (off % 32) / 4 + 8 * (byte & 3u), w = 0;
+    mmio_status_t s = periph(c, byte & ~3u, 4, false, &w);
+    if (s != MMIO_OK || !write) return *v = (w >> bit) & 1u, s;
+    w = (*v & 1u) ? w | 1u << bit : w & ~(1u << bit);
+    return periph(c, byte & ~3u, 4, true, &w);
+}
+
+static void bus_fault(armcore_t *c, uint32_t addr, bool write)
+{
+    char m[120];
+    c->cm.bfar = addr, c->cm.cfsr |= 0x8200u; /* BFARVALID, PRECISERR (B3.2.15) */
+    c->cm.hfsr |= 1u << 30;                    /* FORCED: escalated to HardFault */
+    snprintf(m, sizeof m, "HardFault: precise bus fault %s 0x%08x", write ? "writing" : "reading", addr);
+    crash(c, reg(c, UC_ARM_REG_PC), m);
+    c->stop = STOP_FAULT;
+    uc_emu_stop(c->uc);
+}
+
+static uint64_t mmio_read(armcore_t *c, uint32_t addr, unsigned size)
+{
+    uint32_t v = 0;
+    c->now = access_cycle(c);
+    if (periph_or_bb(c, addr, size, false, &v) != MMIO_OK) bus_fault(c, addr, false);
+    return v;
+}
+
+static void mmio_write(armcore_t *c, uint32_t addr, unsigned size, uint32_t v)
+{
+    c->now = access_cycle(c);
+    if (periph_or_bb(c, addr, size, true, &v) != MMIO_OK) bus_fault(c, addr, true);
+}
+
+static uint64_t on_periph_read(uc_engine *uc, uint64_t off, unsigned size, void *u) { return mmio_read(u, PERIPH_BASE + (uint32_t)off, size); }
+static void on_periph_write(uc_engine *uc, uint64_t off, unsigned size, uint64_t v, void *u) { mmio_write(u, PERIPH_BASE + (uint32_t)off, size, (uint32_t)v); }
+static uint64_t on_ppb_read(uc_engine *uc, uint64_t off, unsigned size, void *u) { return mmio_read(u, CORTEXM_PPB_BASE + (uint32_t)off, size); }
+static void on_ppb_write(uc_engine *uc, uint64_t off, unsigned size, uint64_t v, void *u) { mmio_write(u, CORTEXM_PPB_BASE + (uint32_t)off, size, (uint32_t)v); }
+
+/* SRAM's bit-band alias: bit (off % 32) / 4 of byte off / 32 */
+static uint64_t on_sram_bb_read(uc_engine *uc, uint64_t off, unsigned size, void *u)
+{
+    armcore_t *c = u;
+    uint32_t byte = (uint32_t)off / 32;
+    if (byte >= c->mcu->sram_bytes) return bus_fault(c, SRAM_BB_BASE + (uint32_t)off, false), 0;
+    return (c->sram[byte] >> ((off % 32) / 4)) & 1u;
+}
+
+static void on_sram_bb_write(uc_engine *uc, uint64_t off, unsigned size, uint64_t v, void *u)
+{
+    armcore_t *c = u;
+    uint32_t byte = (uint32_t)off / 32, bit = ((uint32_t)off % 32) / 4;
+    if (byte >= c->mcu->sram_bytes) { bus_fault(c, SRAM_BB_BASE + (uint32_t)off, true); return; }
+    c->sram[byte] = (uint8_t)((v & 1u) ? c->sram[byte] | 1u << bit : c->sram[byte] & ~(1u << bit));
+}
+
+/* The DMA's bus: memory and peripherals at the cycle the core is at. */
+static bool dma_read(void *ctx, uint32_t addr, unsigned size, uint32_t *v)
+{
+    armcore_t *c = ctx;
+    uint8_t *p = host(c, addr, size);
+    if (p) { *v = size == 4 ? rd32(p) : size == 2 ? (uint32_t)p[0] | (uint32_t)p[1] << 8 : p[0]; return true; }
+    if (addr >= PERIPH_BASE && addr - PERIPH_BASE < PERIPH_BYTES) return periph(c, addr, size, false, v) == MMIO_OK;
+    return false;
+}
+
+static bool dma_write(void *ctx, uint32_t addr, unsigned size, uint32_t v)
+{
+    armcore_t *c = ctx;
+    const armimage_mcu_t *m = c->mcu;
+    if (addr >= m->sram_base && (uint64_t)addr + size <= (uint64_t)m->sram_base + m->sram_bytes) {
+        for (unsigned i = 0; i < size; i++) c->sram[addr - m->sram_base + i] = (uint8_t)(v >> (8 * i));
+        return true;
+    }
+    if (addr >= PERIPH_BASE && addr - PERIPH_BASE < PERIPH_BYTES) return periph(c, addr, size, true, &v) == MMIO_OK;
+    return false; /* flash is written through the FLASH controller only */
+}
+
+/* ---- events and exceptions to take ---- */
+/* Every model whose event is due brought to the current cycle; the next event found. */
+static void advance_due(armcore_t *c)
+{
+    uint64_t next = MMIO_NEVER;
+    c->now = c->cyc, c->nat_start = c->cyc;
+    for (int i = 0; i < c->nreg; i++) {
+        mmio_region_t *r = &c->reg[i];
+        if (!r->ops->next_event) continue;
+        uint64_t e = r->ops->next_event(r->self);
+        if (e <= c->cyc && r->ops->advance) r->ops->advance(r->self, c->cyc), e = r->ops->next_event(r->self);
+        if (e < next) next = e;
+    }
+    c->ev_next = next;
+}
+
+static int exec_prio(armcore_t *c)
+{
+    static const int masks[] = { UC_ARM_REG_PRIMASK, UC_ARM_REG_BASEPRI, UC_ARM_REG_FAULTMASK };
+    uint32_t v[3];
+    regs_read(c, masks, v, 3);
+    return cortexm_exec_prio(&c->cm, v[0], v[1], v[2]);
+}
+
+/* At a block's start: events due, then the exception to take now, 0 if none. */
+static unsigned check(armcore_t *c)
+{
+    c->cm.attention = false;
+    c->now = c->cyc;
+    clock_check(c);
+    advance_due(c);
+    if (c->cm.reset_request) return EXC_RESET;
+    int group;
+    unsigned best = cortexm_best(&c->cm, &group);
+    if (!best) return 0;
+    if (group < exec_prio(c)) return best;
+    c->cm.attention = true; /* pending but masked: look again at each block (CPSIE and MSR end a block) */
+    return 0;
+}
+
+static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
+{
+    armcore_t *c = u;
+    uint32_t addr = (uint32_t)address, n = block_insns(c, addr, size);
+    c->blk_addr = addr, c->blk_size = size, c->blk_start = c->cyc;
+    if (c->partial || c->stop != STOP_NONE) return;
+    c->stop_mid = addr == c->resume_mid;
+    if (c->stop_mid) {
+        c->resume_mid = NO_ADDR;
+    } else {
+        c->nat_start = c->cyc;
+    }
+    if (!c->stop_mid && (c->cm.attention || c->cyc >= c->ev_next)) {
+        unsigned e = check(c);
+        if (e) { c->take = e, c->stop = STOP_TAKE, c->stop_addr = addr; uc_emu_stop(uc); return; }
+    }
+    if (c->cyc + n > c->target) { c->stop = STOP_SPLIT, c->stop_addr = addr; uc_emu_stop(uc); return; }
+    c->cyc += n;
+}
+
+static void on_intr(uc_engine *uc, uint32_t intno, void *u)
+{
+    armcore_t *c = u;
+    if (c->stop != STOP_NONE) return;
+    c->stop = STOP_INTR, c->intno = (int)intno;
+    uc_emu_stop(uc);
+}
+
+static bool on_bad_mem(uc_engine *uc, uc_mem_type type, uint64_t addr, int size, int64_t value, void *u)
+{
+    armcore_t *c = u;
+    c->bad_addr = (uint32_t)addr, c->bad_type = (int)type;
+    return false;
+}
+
+/* ---- exception entry and return (ARMv7-M B1.5.6-B1.5.8), done by the host ---- */
+static bool mem_rw(armcore_t *c, uint32_t addr, uint8_t *buf, uint32_t n, bool write)
+{
+    const armimage_mcu_t *m = c->mcu;
+    if (addr < m->sram_base || (uint64_t)addr + n > (uint64_t)m->sram_base + m->sram_bytes) return false; /* a frame lives in SRAM */
+    if (write) memcpy(c->sram + (addr - m->sram_base), buf, n);
+    else memcpy(buf, c->sram + (addr - m->sram_base), n);
+    return true;
+}
+
+/* IPSR written, then APSR_NZCV once more: unicorn's translator otherwise keeps the old mode (platform facts) */
+static void set_ipsr(armcore_t *c, uint32_t ipsr, uint32_t apsr)
+{
+    set_reg(c, UC_ARM_REG_IPSR, ipsr);
+    set_reg(c, UC_ARM_REG_APSR, apsr);
+    set_reg(c, UC_ARM_REG_APSR_NZCV, apsr);
+}
+
+static bool vector(armcore_t *c, unsigned exc, uint32_t *pc)
+{
+    char m[120];
+    uint32_t at = c->cm.vtor + 4u * exc;
+    const uint8_t *p = host(c, at, 4);
+    if (!p) return snprintf(m, sizeof m, "HardFault: vector %u at 0x%08x is outside flash and SRAM (VTOR 0x%08x)", exc, at, c->cm.vtor),
+                  crash(c, c->pc, m), false;
+    *pc = rd32(p);
+    if (!(*pc & 1u))
+        return snprintf(m, sizeof m, "HardFault: vector %u (0x%08x) has no Thumb bit: UsageFault INVSTATE", exc, *pc), crash(c, c->pc, m),
+               false;
+    return true;
+}
+
+static const char *exc_name(unsigned exc)
+{
+    static const char *const names[] = { "", "Reset", "NMI", "HardFault", "MemManage", "BusFault", "UsageFault" };
+    return exc < 7 ? names[exc] : "exception";
+}
+
+/* Exception exc taken with ret the address to return to: the 8-word frame pushed, LR = EXC_RETURN, the handler's PC. */
+static void enter(armcore_t *c, unsigned exc, uint32_t ret)
+{
+    static const int rd[] = { UC_ARM_REG_R0, UC_ARM_REG_R1, UC_ARM_REG_R2, UC_ARM_REG_R3, UC_ARM_REG_R12, UC_ARM_REG_LR,
+                              UC_ARM_REG_IPSR, UC_ARM_REG_CONTROL, UC_ARM_REG_APSR, UC_ARM_REG_PSP, UC_ARM_REG_MSP };
+    uint32_t v[11], handler_pc;
+    regs_read(c, rd, v, 11);
+    uint32_t ipsr = v[6] & 0x1FFu, ctrl = v[7], apsr = v[8];
+    bool psp = !ipsr && (ctrl & CONTROL_SPSEL);
+    uint32_t sp = psp ? v[9] : v[10], xpsr = (apsr & 0xF80F0000u) | XPSR_T | ipsr;
+    if ((c->cm.ccr & CCR_STKALIGN) && (sp & 4u)) sp -= 4, xpsr |= XPSR_ALIGN;
+    sp -= 32;
+    uint8_t f[32];
+    for (int i = 0; i < 6; i++) wr32(f + 4 * i, v[i]);
+    wr32(f + 24, ret), wr32(f + 28, xpsr);
+    if (exc >= EXC_HARDFAULT && exc <= EXC_USAGEFAULT) {
+        char m[120];
+        snprintf(m, sizeof m, "%s taken (CFSR 0x%08x, HFSR 0x%08x)", exc_name(exc), c->cm.cfsr, c->cm.hfsr);
+        crash(c, ret, m);
+        return;
+    }
+    if (!mem_rw(c, sp, f, 32, true)) {
+        char m[120];
+        snprintf(m, sizeof m, "HardFault: stacking for %s at SP 0x%08x outside SRAM (STKERR)", exc == EXC_SVCALL ? "SVCall" : "an exception", sp);
+        crash(c, ret, m);
+        return;
+    }
+    if (!vector(c, exc, &handler_pc)) return;
+    if (psp) set_reg(c, UC_ARM_REG_PSP, sp), set_reg(c, UC_ARM_REG_CONTROL, ctrl & ~CONTROL_SPSEL);
+    else set_reg(c, UC_ARM_REG_MSP, sp);
+    set_ipsr(c, exc, apsr);
+    set_reg(c, UC_ARM_REG_LR, ipsr ? 0xFFFFFFF1u : psp ? 0xFFFFFFFDu : 0xFFFFFFF9u);
+    cortexm_take(&c->cm, exc);
+    c->pc = handler_pc & ~1u;
+    c->cyc += ARMCORE_EXC_ENTRY_CYCLES;
+    c->st.exceptions++;
+}
+
+/* The frame popped per EXC_RETURN: to thread or handler mode, from MSP or PSP. */
+static void unstack(armcore_t *c, uint32_t excret)
+{
+    bool psp = excret & 4u, thread = excret & 8u;
+    uint32_t sp = reg(c, psp ? UC_ARM_REG_PSP : UC_ARM_REG_MSP), msp = reg(c, UC_ARM_REG_MSP);
+    uint8_t f[32];
+    char m[120];
+    if (!mem_rw(c, sp, f, 32, false)) {
+        snprintf(m, sizeof m, "HardFault: unstacking at SP 0x%08x outside SRAM (UNSTKERR)", sp);
+        crash(c, c->pc, m);
+        return;
+    }
+    uint32_t xpsr = rd32(f + 28), ret = rd32(f + 24), nsp = sp + 32u + ((xpsr & XPSR_ALIGN) ? 4u : 0u);
+    if (!(xpsr & XPSR_T)) {
+        snprintf(m, sizeof m, "HardFault: return to 0x%08x with the frame's Thumb bit clear (UsageFault INVSTATE)", ret);
+        crash(c, ret, m);
+        return;
+    }
+    set_ipsr(c, thread ? 0 : (xpsr & 0x1FFu), xpsr);
+    if (psp) {
+        set_reg(c, UC_ARM_REG_MSP, msp);
+        set_reg(c, UC_ARM_REG_CONTROL, reg(c, UC_ARM_REG_CONTROL) | CONTROL_SPSEL);
+        set_reg(c, UC_ARM_REG_PSP, nsp);
+    } else {
+        set_reg(c, UC_ARM_REG_MSP, nsp);
+    }
+    static const int wr[] = { UC_ARM_REG_R0, UC_ARM_REG_R1, UC_ARM_REG_R2, UC_ARM_REG_R3, UC_ARM_REG_R12, UC_ARM_REG_LR,
+                              UC_ARM_REG_APSR, UC_ARM_REG_APSR_NZCV };
+    uint32_t v[8];
+    for (int i = 0; i < 6; i++) v[i] = rd32(f + 4 * i);
+    v[6] = v[7] = xpsr;
+    regs_write(c, wr, v, 8);
+    c->pc = ret & ~1u;
+    c->cyc += ARMCORE_EXC_EXIT_CYCLES;
+}
+
+/* bx to EXC_RETURN: the exception deactivated, then a tail-chain to a pending one or the frame popped. */
+static void exc_return(armcore_t *c)
+{
+    uint32_t excret = reg(c, UC_ARM_REG_PC) | 1u, exc = reg(c, UC_ARM_REG_IPSR) & 0x1FFu;
+    char m[120];
+    uint32_t low = excret & 0xFu;
+    if ((excret & 0xFFFFFFF0u) != 0xFFFFFFF0u || (low != 1u && low != 9u && low != 0xDu) || cortexm_return(&c->cm, exc) != 0) {
+        snprintf(m, sizeof m, "HardFault: exception return 0x%08x from exception %u (UsageFault INVPC)", excret, exc);
+        crash(c, c->blk_addr, m);
+        return;
+    }
+    int group;
+    unsigned next = cortexm_best(&c->cm, &group);
+    if (next && group < exec_prio(c) && next != EXC_RESET) {
+        uint32_t pc, apsr = reg(c, UC_ARM_REG_APSR);
+        if (!vector(c, next, &pc)) return;
+        set_ipsr(c, next, apsr);
+        set_reg(c, UC_ARM_REG_LR, excret);
+        cortexm_take(&c->cm, next);
+        c->pc = pc & ~1u;
+        c->cyc += ARMCORE_TAIL_CHAIN_CYCLES;
+        c->st.exceptions++, c->st.tail_chains++;
+        return;
+    }
+    unstack(c, excret);
+}
+
+/* ---- stops ---- */
+static void on_stop_intr(armcore_t *c)
+{
+    char m[120];
+    uint32_t pc = reg(c, UC_ARM_REG_PC);
+    if (c->intno == EXC_RETURN_INTNO) { exc_return(c); return; }
+    if (c->intno == 2) { /* SVC: PC is past it; SVCall at its priority or escalated to HardFault */
+        c->pc = pc;
+        if (cortexm_group(&c->cm, cortexm_prio(&c->cm, EXC_SVCALL)) < exec_prio(c)) {
+            cortexm_pend(&c->cm, EXC_SVCALL);
+            cortexm_best(&c->cm, NULL);
+            enter(c, EXC_SVCALL, pc);
+            return;
+        }
+        c->cm.hfsr |= 1u << 30;
+        crash(c, pc - 2, "HardFault: SVC at or above the execution priority (escalated)");
+        return;
+    }
+    static const char *const why[] = { [1] = "UsageFault UNDEFINSTR: an undefined instruction", [3] = "a prefetch abort",
+        [4] = "a data abort", [7] = "a breakpoint (BKPT) with no debugger", [17] = "UsageFault NOCP: a coprocessor instruction",
+        [18] = "UsageFault INVSTATE: Thumb bit clear", [22] = "UsageFault UNALIGNED: an unaligned access" };
+    const char *w = c->intno >= 0 && c->intno < (int)(sizeof why / sizeof why[0]) && why[c->intno] ? why[c->intno] : "an exception unicorn raised";
+    snprintf(m, sizeof m, "HardFault: %s (unicorn exception %d)", w, c->intno);
+    c->cm.cfsr |= c->intno == 1 ? 0x10000u : c->intno == 18 ? 0x20000u : c->intno == 22 ? 0x1000000u : 0u;
+    crash(c, pc, m);
+}
+
+/* emu_start returned on its own: WFI/WFE (the PC past it) or a memory fault. */
+static void on_stop_none(armcore_t *c, uc_err e)
+{
+    char m[160];
+    uint32_t pc = reg(c, UC_ARM_REG_PC);
+    if (e == UC_ERR_INSN_INVALID) {
+        c->cm.cfsr |= 0x10000u, c->cm.hfsr |= 1u << 30;
+        crash(c, pc, "HardFault: UsageFault UNDEFINSTR: an undefined instruction");
+        return;
+    }
+    if (e != UC_ERR_OK) {
+        const char *what = c->bad_type == UC_MEM_FETCH_UNMAPPED || c->bad_type == UC_MEM_FETCH_PROT ? "fetching"
+                         : c->bad_type == UC_MEM_WRITE_UNMAPPED || c->bad_type == UC_MEM_WRITE_PROT ? "writing" : "reading";
+        c->cm.bfar = c->bad_addr, c->cm.cfsr |= 0x8200u, c->cm.hfsr |= 1u << 30;
+        snprintf(m, sizeof m, "HardFault: bus fault %s 0x%08x (%s)", what, c->bad_addr, uc_strerror(e));
+        crash(c, pc, m);
+        return;
+    }
+    uint8_t h[4] = { 0 };
+    uint16_t h1 = 0, h2 = 0;
+    if (uc_mem_read(c->uc, pc - 4, h, 4) == UC_ERR_OK) h1 = (uint16_t)(h[2] | h[3] << 8), h2 = (uint16_t)(h[0] | h[1] << 8);
+    bool wfx = h1 == 0xBF30u || h1 == 0xBF20u || (h2 == 0xF3AFu && (h1 == 0x8003u || h1 == 0x8002u));
+    if (!wfx) {
+        snprintf(m, sizeof m, "the emulation stopped at 0x%08x for no reason mmsim knows", pc);
+        crash(c, pc, m);
+        return;
+    }
+    c->pc = pc, c->sleeping = true;
+    c->st.sleeps++;
+}
+
+/* Asleep: wake on an exception that would preempt were PRIMASK clear (B1.5.19), else skip to the next event or the target. */
+static void sleep_step(armcore_t *c)
+{
+    c->now = c->cyc;
+    clock_check(c);
+    advance_due(c);
+    int group;
+    unsigned best = cortexm_best(&c->cm, &group);
+    if ((best && group < cortexm_exec_prio(&c->cm, 0, reg(c, UC_ARM_REG_BASEPRI), reg(c, UC_ARM_REG_FAULTMASK))) || c->cm.reset_request) {
+        c->sleeping = false;
+        c->cm.attention = true;
+        return;
+    }
+    uint64_t to = c->ev_next < c->target ? c->ev_next : c->target;
+    if (c->no_idle_skip && to > c->cyc + 1) to = c->cyc + 1;
+    c->st.idle_cycles += to - c->cyc;
+    c->cyc = to;
+}
+
+/* The first k = target - cycle instructions of the block at stop_addr, through an exit there (its cached translation dropped before and after). */
+static void run_split(armcore_t *c)
+{
+    uint64_t k = c->target - c->cyc;
+    c->pc = c->stop_addr;
+    if (k == 0) {
+        if (c->stop_mid) c->resume_mid = c->stop_addr; /* still a remainder when it resumes */
+        return;
+    }
+    uint32_t until = insn_addr(c, c->stop_addr, (uint32_t)k);
+    uc_ctl_remove_cache(c->uc, c->stop_addr, until + 4);
+    c->partial = true, c->stop = STOP_NONE, c->bad_type = -1;
+    uc_err e = uc_emu_start(c->uc, c->stop_addr | 1u, until, 0, 0);
+    c->partial = false;
+    uc_ctl_remove_cache(c->uc, c->stop_addr, until + 4);
+    if (c->crashed) return;
+    if (e != UC_ERR_OK) { on_stop_none(c, e); return; }
+    uint32_t pc = reg(c, UC_ARM_REG_PC);
+    if (pc != until) {
+        char m[120];
+        snprintf(m, sizeof m, "a stop inside the block at 0x%08x ended at 0x%08x, not 0x%08x", c->stop_addr, pc, until);
+        crash(c, pc, m);
+        return;
+    }
+    c->cyc += k, c->pc = until, c->resume_mid = until;
+    c->st.splits++;
+}
+
+/* ---- reset and the run ---- */
+static void core_reset(armcore_t *c)
+{
+    c->cm.now = c->cyc;
+    for (int i = 0; i < c->nreg; i++)
+        if (c->reg[i].ops->reset) c->reg[i].ops->reset(c->reg[i].self);
+    c->cm.reset_request = false;
+    set_ipsr(c, 0, 0);
+    set_reg(c, UC_ARM_REG_CONTROL, 0);
+    set_reg(c, UC_ARM_REG_PRIMASK, 0), set_reg(c, UC_ARM_REG_BASEPRI, 0), set_reg(c, UC_ARM_REG_FAULTMASK, 0);
+    set_reg(c, UC_ARM_REG_MSP, rd32(c->flash) & ~3u);
+    set_reg(c, UC_ARM_REG_LR, 0xFFFFFFFFu);
+    c->pc = rd32(c->flash + 4) & ~1u;
+    c->sleeping = false, c->resume_mid = NO_ADDR, c->cm.attention = true;
+}
+
+static void run_once(armcore_t *c)
+{
+    c->stop = STOP_NONE, c->intno = -1, c->bad_type = -1;
+    c->st.starts++;
+    uc_err e = uc_emu_start(c->uc, c->pc | 1u, 0, 0, 0);
+    switch (c->stop) {
+    case STOP_TAKE:
+        c->pc = c->stop_addr;
+        if (c->take == EXC_RESET) core_reset(c);
+        else enter(c, c->take, c->stop_addr);
+        break;
+    case STOP_SPLIT: run_split(c); break;
+    case STOP_INTR: on_stop_intr(c); break;
+    case STOP_FAULT: break;
+    default: on_stop_none(c, e); break;
+    }
+}
+
+static int run(armcore_t *c)
+{
+    while (!c->crashed && c->cyc < c->target) {
+        if (c->sleeping) sleep_step(c);
+        else run_once(c);
+    }
+    return c->crashed;
+}
+
+int armcore_run_to(armcore_t *c, uint64_t target)
+{
+    c->target = target, c->target_ps = NO_TIME;
+    return run(c);
+}
+
+int armcore_run_until_ps(armcore_t *c, uint64_t t_ps)
+{
+    c->now = c->cyc;
+    clock_check(c);
+    c->target_ps = t_ps, c->target = cycle_at(c, t_ps);
+    int rc = run(c);
+    c->target_ps = NO_TIME;
+    return rc;
+}
+
+static bool map_memories(armcore_t *c, char *err, size_t errn)
+{
+    const armimage_mcu_t *m = c->mcu;
+    uc_err e = uc_mem_map_ptr(c->uc, m->flash_base, m->flash_bytes, UC_PROT_READ | UC_PROT_EXEC, c->flash);
+    if (!e) e = uc_mem_map_ptr(c->uc, 0, m->flash_bytes, UC_PROT_READ | UC_PROT_EXEC, c->flash); /* BOOT0 = 0: flash at 0 */
+    if (!e) e = uc_mem_map_ptr(c->uc, m->sram_base, m->sram_bytes, UC_PROT_ALL, c->sram);
+    if (!e) e = uc_mmio_map(c->uc, PERIPH_BASE, PERIPH_BYTES, on_periph_read, c, on_periph_write, c);
+    if (!e) e = uc_mmio_map(c->uc, CORTEXM_PPB_BASE, CORTEXM_PPB_BYTES, on_ppb_read, c, on_ppb_write, c);
+    if (!e) e = uc_mmio_map(c->uc, SRAM_BB_BASE, BB_ALIAS_BYTES, on_sram_bb_read, c, on_sram_bb_write, c);
+    uc_hook h;
+    if (!e) e = uc_hook_add(c->uc, &h, UC_HOOK_BLOCK, (void *)on_block, c, 1, 0);
+    if (!e) e = uc_hook_add(c->uc, &h, UC_HOOK_INTR, (void *)on_intr, c, 1, 0);
+    if (!e) e = uc_hook_add(c->uc, &h, UC_HOOK_MEM_INVALID, (void *)on_bad_mem, c, 1, 0);
+    if (e) snprintf(err, errn, "mmsim: unicorn: %s", uc_strerror(e));
+    return e == UC_ERR_OK;
+}
+
+static int by_base(const void *a, const void *b)
+{
+    const mmio_region_t *x = a, *y = b;
+    return x->base < y->base ? -1 : x->base > y->base;
+}
+
+armcore_t *armcore_new(const armcore_cfg_t *cfg, char *err, size_t errn)
+{
+    const armimage_mcu_t *m = cfg->image->mcu;
+    if (cfg->nregions < 0 || cfg->nregions > ARMCORE_REGIONS_MAX)
+        return snprintf(err, errn, "mmsim: %d peripheral regions (at most %d)", cfg->nregions, ARMCORE_REGIONS_MAX), NULL;
+    armcore_t *c = calloc(1, sizeof *c);
+    if (c) c->flash = malloc(m->flash_bytes), c->sram = calloc(1, m->sram_bytes);
+    if (!c || !c->flash || !c->sram) return snprintf(err, errn, "mmsim: out of memory"), armcore_free(c), NULL;
+    memcpy(c->flash, cfg->image->flash, m->flash_bytes);
+    c->mcu = m, c->clocks = cfg->clocks, c->verbose = cfg->verbose, c->no_idle_skip = cfg->no_idle_skip;
+    c->hclk = cfg->clocks && cfg->clocks->hclk ? cfg->clocks->hclk : cfg->hclk_hz;
+    c->target_ps = NO_TIME, c->resume_mid = NO_ADDR;
+    cortexm_init(&c->cm, m->nirq, m->prio_bits, m->cpuid);
+    memcpy(c->reg, cfg->regions, sizeof *c->reg * (size_t)cfg->nregions);
+    c->reg[cfg->nregions] = (mmio_region_t){ CORTEXM_PPB_BASE, CORTEXM_PPB_BYTES, &cortexm_ops, &c->cm };
+    c->nreg = cfg->nregions + 1;
+    qsort(c->reg, (size_t)c->nreg, sizeof *c->reg, by_base);
+    uc_err e = uc_open(UC_ARCH_ARM, UC_MODE_THUMB, &c->uc);
+    if (!e) e = uc_ctl_set_cpu_model(c->uc, m->core == ARMCORE_M4 ? UC_CPU_ARM_CORTEX_M4 : UC_CPU_ARM_CORTEX_M3);
+    if (e) return snprintf(err, errn, "mmsim: unicorn: %s", uc_strerror(e)), armcore_free(c), NULL;
+    if (!c->hclk) return snprintf(err, errn, "mmsim: no core clock"), armcore_free(c), NULL;
+    if (!map_memories(c, err, errn)) return armcore_free(c), NULL;
+    core_reset(c);
+    return c;
+}
+
+void armcore_free(armcore_t *c)
+{
+    if (!c) return;
+    if (c->uc) uc_close(c->uc);
+    free(c->flash);
+    free(c->sram);
+    free(c);
+}
+
+uint64_t armcore_cycles(const armcore_t *c) { return c->cyc; }
+uint64_t armcore_time_ps(const armcore_t *c) { return time_at(c, c->cyc); }
+mmio_irq_t armcore_irq(armcore_t *c) { return (mmio_irq_t){ cortexm_set_irq, &c->cm }; }
+mmio_bus_t armcore_bus(armcore_t *c) { return (mmio_bus_t){ dma_read, dma_write, c }; }
+cortexm_t *armcore_cortexm(armcore_t *c) { return &c->cm; }
+uint8_t *armcore_flash(armcore_t *c) { return c->flash; }
+void armcore_flash_changed(armcore_t *c, uint32_t addr, uint32_t bytes)
+{
+    uc_ctl_remove_cache(c->uc, addr, (uint64_t)addr + bytes);
+    if (addr >= c->mcu->flash_base) uc_ctl_remove_cache(c->uc, addr - c->mcu->flash_base, (uint64_t)addr - c->mcu->flash_base + bytes);
+}
+int armcore_crashed(const armcore_t *c, uint32_t *pc, const char **cause)
+{
+    if (!c->crashed) return 0;
+    if (pc) *pc = c->crash_pc;
+    if (cause) *cause = c->cause;
+    return 1;
+}
+uint32_t armcore_reg(armcore_t *c, int r) { return r == UC_ARM_REG_PC ? c->pc : reg(c, r); }
+int armcore_read(armcore_t *c, uint32_t addr, void *buf, size_t n)
+{
+    const uint8_t *p = n <= UINT32_MAX ? host(c, addr, (uint32_t)n) : NULL;
+    if (!p) return -1;
+    memcpy(buf, p, n);
+    return 0;
+}
+const armcore_unmodeled_t *armcore_unmodeled(const armcore_t *c, int *n) { *n = c->nunm; return c->unm; }
+armcore_stats_t armcore_stats(const armcore_t *c) { return c->st; }

@@ -1,0 +1,101 @@
+/* stm32f1_tim.h - the STM32F1's TIM1 (advanced-control, RM0008 section 14)
+ * and TIM2-TIM4 (general-purpose, section 15): one model, the advanced
+ * timer's extras (repetition counter, BDTR's MOE, its four interrupt lines)
+ * enabled for TIM1.
+ *
+ * Modeled (RM0008 15.3, 15.4 registers; 14.3, 14.4 for TIM1):
+ *   time base   CR1 (CEN, UDIS, URS, OPM, DIR, CMS edge/center 1-3, ARPE),
+ *               PSC and ARR with their preloads (PSC takes effect at the
+ *               update event, ARR at once or at the update with ARPE), CNT,
+ *               RCR (TIM1), EGR (UG, CCxG, TG, COMG, BG set their flags)
+ *   compare     CCMR1/2 output modes (frozen, active/inactive/toggle on
+ *               match, forced, PWM1, PWM2) with OCxPE preload, CCRx; CCxIF
+ *               and the match modes' OCxREF at each match (center-aligned:
+ *               in the CMS's direction)
+ *   outputs     CCER (CCxE, CCxP), BDTR MOE (TIM1); the board reads each
+ *               channel as a duty and a polarity (stm32f1_tim_output)
+ *   encoder     SMCR SMS 1-3: the counter follows the wheel's quadrature
+ *               position the board sets (stm32f1_tim_encoder), in edges:
+ *               mode 3 counts every edge (4 per line), modes 1 and 2 the
+ *               edges of one channel (2 per line); wraps at ARR with an
+ *               update event; DIR reads the last count's direction; CC1P
+ *               xor CC2P reverses it
+ *   interrupts  DIER, SR (rc_w0) -> TIM1_BRK 24, TIM1_UP 25, TIM1_TRG_COM 26,
+ *               TIM1_CC 27, TIM2 28, TIM3 29, TIM4 30 (RM0008 table 63)
+ *   DMA         update and CCx requests on DMA1's channels (RM0008 table 78),
+ *               CCDS moving the CCx requests to the update event; each
+ *               request is a pulse (raised then lowered at once)
+ *   capture     CCxS 01/10 with CCxE: an edge the board reports on TIx
+ *               (stm32f1_tim_input) of the CCxP polarity, every ICxPSC-th,
+ *               copies CNT to CCRx with CCxIF (CCxOF if still set); reading
+ *               CCRx clears CCxIF. The input filter (ICxF) is not applied.
+ * Not modeled (answer MMIO_UNMODELED when a firmware sets them): slave
+ * modes 4-7 and the external clock (ECE), master mode (CR2 MMS: TRGO),
+ * a capture from TRC (CCxS 11), OCxCE (clear on ETRF),
+ * BDTR's break input and dead time, DCR/DMAR (DMA burst); the prescaler in
+ * encoder mode (counts are taken undivided); a reserved register (RCR and
+ * BDTR on TIM2-4). The pin's waveform edge by edge is not produced: the
+ * board reads the duty.
+ *
+ * Time: the counter counts the timer clock (mmio_clocks_t tim_apb2 for
+ * TIM1, tim_apb1 for TIM2-4) divided by PSC+1, converted from core cycles
+ * (HCLK) exactly, with the remainder kept; a clock change applies to the
+ * whole interval since the last access. */
+#ifndef STM32F1_TIM_H
+#define STM32F1_TIM_H
+
+#include <stdint.h>
+
+#include "arm/mmio.h"
+
+typedef struct {
+    unsigned n;                 /* 1-4: TIMn */
+    uint32_t cr1, cr2, smcr, dier, sr, ccmr[2], ccer, psc, arr, rcr, ccr[4], bdtr;
+    uint32_t cnt;               /* the 16-bit counter */
+    uint32_t psc_sh, arr_sh, rcr_sh, ccr_sh[4]; /* the shadow (active) registers */
+    uint32_t pc;                /* the prescaler's counter: timer clocks since the last count */
+    uint32_t rep;               /* TIM1's repetition counter */
+    int down;                   /* counting down (DIR, the center-aligned phase, the encoder's last count) */
+    uint64_t now;               /* core cycle the state is at */
+    uint64_t acc;               /* timer clock progress in 1/hclk of a tick */
+    int64_t enc;                /* the wheel's quadrature position (edges) as last set */
+    const mmio_clocks_t *clk;
+    mmio_irq_t irq;
+    mmio_dma_req_t dma;
+    uint32_t ic_edges[4];       /* input capture: edges since the last capture (ICxPSC) */
+    uint32_t ref;               /* OCxREF per channel (bit i) in the modes that hold it: match, toggle, forced */
+    uint32_t irq_out;           /* the interrupt lines held high, one bit per line */
+} stm32f1_tim_t;
+
+/* Channel x's output as a board part sees it. */
+typedef struct {
+    int enabled;     /* CCxE (and MOE on TIM1): the pin is driven by the timer */
+    int running;     /* CEN: the counter runs (stopped: the level stays as it was) */
+    int pwm;         /* 1: a PWM, forced or toggle mode (toggle: a 50 % square wave), duty valid;
+                        0: another mode (duty -1) */
+    double duty;     /* fraction of the period OCxREF is active, 0..1 */
+    int active_low;  /* CCxP: the pin is high while OCxREF is inactive */
+    double high;     /* fraction of the period the pin is high (duty, or 1 - duty if active_low) */
+    double freq_hz;  /* the PWM period's frequency: timer clock / ((PSC+1)(ARR+1)), center-aligned / ((PSC+1) 2 ARR);
+                        toggle mode half that */
+    int ref;         /* OCxREF now (0/1) */
+    int level;       /* the pin now: OCxREF xor CCxP if enabled, else -1 */
+} stm32f1_tim_out_t;
+
+/* TIM1..TIM4's tables (index n-1): the same model under each name */
+extern const mmio_ops_t stm32f1_tim_ops[4];
+
+/* Power-on for TIMn (1-4): every register 0 (RM0008 15.4) but ARR 0xFFFF
+ * (see tim_reset). dma may have a NULL request (no DMA controller). */
+void stm32f1_tim_init(stm32f1_tim_t *t, unsigned n, const mmio_clocks_t *clk, mmio_irq_t irq, mmio_dma_req_t dma);
+/* The wheel's quadrature position, edges (4 per encoder line; positive
+ * forward: channel 1 leads), from core cycle now (>= the last access).
+ * In an encoder mode with CEN the counter follows it. */
+void stm32f1_tim_encoder(stm32f1_tim_t *t, uint64_t now, int64_t edges);
+/* An edge on input TIti (1-4), rising or falling, at core cycle now:
+ * captured by the channels that select it (input capture). */
+void stm32f1_tim_input(stm32f1_tim_t *t, uint64_t now, unsigned ti, int rising);
+/* Channel ch (1-4) now. */
+stm32f1_tim_out_t stm32f1_tim_output(const stm32f1_tim_t *t, unsigned ch);
+
+#endif
