@@ -221,6 +221,40 @@ static void test_circular_adc(void **state)
     assert_int_equal(irq_rises[56], 2);
 }
 
+/* The Cube mouse's sensor scan: TIM1 CC3 starts a 3-channel scan (not
+ * continuous) each period; DMA2 stream 4 channel 0 (ADC1's other stream)
+ * circular over 2 scans: HT after the 1st scan, TC after the 2nd, the 3rd
+ * wraps onto the buffer's start. */
+static void test_timer_triggered_adc(void **state)
+{
+    setup_bus();
+    const uint16_t *buf = (const uint16_t *)ram;
+    const uint32_t A = STM32F4_ADC_BASE(1);
+    wr(SPAR(D2, 4), A + 0x4C);
+    wr(SM0AR(D2, 4), RAM);
+    wr(SNDTR(D2, 4), 6);
+    wr(SCR(D2, 4), CHSEL(0) | CIRC | MINC | PSIZE16 | MSIZE16 | HTIE | TCIE | EN);
+    wr(A + 0x04, 1u << 8);                                  /* SCAN */
+    wr(A + 0x2C, 2u << 20);                                 /* 3 ranks */
+    wr(A + 0x08, 1u | (1u << 8) | (1u << 9) | (2u << 24) | (1u << 28)); /* ADON, DMA, DDS, TIM1_CC3 rising */
+    for (unsigned k = 0; k < 3; k++) {
+        uint64_t t = 10000u * (k + 1);
+        run_to(t);
+        stm32f4_adc_ext_trigger(&adc, false, STM32F4_ADC_EXT_TIM1_CC3, true, t);
+        run_to(t + 8 + 3 * 60 - 1);
+        assert_int_equal(rd(SNDTR(D2, 4)), k == 2 ? 4 : 6 - 3 * k - 2); /* the 3rd rank still converting */
+        run_to(t + 8 + 3 * 60);
+        if (k == 0) { assert_int_equal(rd(D2 + 0x04) & 0x3Du, 0x10); wr(D2 + 0x0C, 0x3Du); }
+        if (k == 1) { assert_int_equal(rd(D2 + 0x04) & 0x3Du, 0x20); wr(D2 + 0x0C, 0x3Du); }
+    }
+    assert_int_equal(conv, 9);
+    assert_int_equal(buf[0], 869); /* the 7th conversion: 0.7 V */
+    assert_int_equal(buf[5], 745); /* the 6th: 0.6 V */
+    assert_int_equal(rd(SNDTR(D2, 4)), 3);
+    assert_int_equal(irq_rises[60], 2);
+    assert_int_equal(rd(A + 0x00) & (1u << 5), 0);
+}
+
 static void test_mem_to_mem(void **state)
 {
     setup_bus();
@@ -312,6 +346,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_map_and_reset),
         cmocka_unit_test(test_circular_adc),
+        cmocka_unit_test(test_timer_triggered_adc),
         cmocka_unit_test(test_mem_to_mem),
         cmocka_unit_test(test_timer_to_bsrr),
         cmocka_unit_test(test_errors_and_disable),
