@@ -203,6 +203,46 @@ static void test_nack_and_errors(void **state)
     assert_int_equal(stm32_i2c_ops.read(&i2c, 0x24, 4, &v), MMIO_UNMODELED);
 }
 
+/* DMAEN: TxE and RxNE raise the DMA requests the board numbered (27.3.7). */
+static bool req[8];
+static void dma_req(void *ctx, unsigned ch, bool level) { req[ch] = level; }
+
+static void test_dma_requests(void **state)
+{
+    setup_bus(210);
+    for (unsigned k = 0; k < 8; k++) req[k] = false;
+    stm32_i2c_init(&i2c, 1, &clk, (mmio_irq_t){ irq_set, NULL }, (mmio_dma_req_t){ dma_req, NULL }, 6, 5);
+    assert_true(stm32_i2c_attach(&i2c, (stm32_i2c_slave_t){ 0x68, mpu6500_i2c_start, mpu6500_i2c_write,
+                                                              mpu6500_i2c_read, mpu6500_i2c_stop, &mpu }));
+    wr(CR2, 42 | (1u << 11)); /* DMAEN */
+    wr(CCR, 210);
+    wr(CR1, PE | ACK | START);
+    wait(SB);
+    wr(DR, 0x68u << 1);
+    wait(ADDR);
+    assert_false(req[6]);
+    rd(SR1);
+    rd(SR2);
+    assert_true(req[6]);  /* TxE: the TX request */
+    wr(DR, 0x75);
+    wr(DR, 0x00);         /* DR full behind the shift register */
+    assert_false(req[6]);
+    wait(TXE);
+    assert_true(req[6]);
+    wait(BTF);
+    wr(CR1, PE | ACK | START);
+    wait(SB);
+    assert_false(req[6]);
+    wr(DR, (0x68u << 1) | 1u);
+    wait(ADDR);
+    rd(SR1);
+    rd(SR2);
+    wait(RXNE);
+    assert_true(req[5]);  /* RxNE: the RX request */
+    rd(DR);
+    assert_false(req[5]);
+}
+
 static void test_fast_mode(void **state)
 {
     setup_bus((1u << 15) | 35u); /* F/S, DUTY 0: 3 x 35 / 42 MHz = 2.5 us = 420 cycles */
@@ -221,6 +261,7 @@ int main(void)
         cmocka_unit_test(test_who_am_i),
         cmocka_unit_test(test_mpu6050_registers),
         cmocka_unit_test(test_nack_and_errors),
+        cmocka_unit_test(test_dma_requests),
         cmocka_unit_test(test_fast_mode),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

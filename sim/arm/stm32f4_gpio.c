@@ -160,7 +160,7 @@ void stm32f4_gpio_init(stm32f4_gpio_t *g, unsigned port, stm32f4_gpio_pin_fn cha
 {
     *g = (stm32f4_gpio_t){ 0 };
     g->port = port;
-    gpio_reset(g); /* levels computed before the callback is wired: no edges at power-on */
     g->changed = changed;
     g->ctx = ctx;
+    gpio_reset(g); /* the pins that read 1 at power-on (the pulled-up debug pins) are told once */
 }

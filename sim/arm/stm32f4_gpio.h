@@ -33,6 +33,8 @@ typedef struct {
 
 extern const mmio_ops_t stm32f4_gpio_ops;
 
+/* Power-on; changed is told the pins that read 1 at reset (from 0), so an
+ * EXTI fed by it starts from the ports' levels. */
 void stm32f4_gpio_init(stm32f4_gpio_t *g, unsigned port, stm32f4_gpio_pin_fn changed, void *ctx);
 /* The outside drives pin at level (0/1), or lets it float (driven false). */
 void stm32f4_gpio_input(stm32f4_gpio_t *g, unsigned pin, bool driven, int level);

@@ -98,29 +98,33 @@ static void update_irq(stm32f4_exti_t *e)
     }
 }
 
+/* Line `line` now at level: an enabled edge on an unmasked line sets its pending bit. */
 static void edge(stm32f4_exti_t *e, unsigned line, int level)
 {
     uint32_t b = 1u << line;
-    bool was = e->lines & b;
-    if ((level != 0) == was) return;
     e->lines = level ? e->lines | b : e->lines & ~b;
     bool hit = level ? (e->rtsr & b) : (e->ftsr & b);
     if (hit && (e->imr & b)) e->pr |= b;
     update_irq(e);
 }
 
+/* A pin's edge reaches line `pin` when EXTICR selects its port; the edge is
+ * the pin's own, so a port selected later starts from its pin's level. */
 void stm32f4_exti_pin(void *exti, unsigned port, unsigned pin, int level)
 {
     stm32f4_exti_t *e = exti;
     if (port >= STM32F4_EXTI_PORTS || pin >= 16) return;
-    e->pins[port] = level ? e->pins[port] | (uint16_t)(1u << pin) : e->pins[port] & (uint16_t)~(1u << pin);
+    uint16_t b = (uint16_t)(1u << pin);
+    bool was = e->pins[port] & b;
+    e->pins[port] = level ? e->pins[port] | b : e->pins[port] & (uint16_t)~b;
     unsigned sel = (e->syscfg->exticr[pin / 4] >> (4 * (pin % 4))) & 0xFu;
-    if (sel == port) edge(e, pin, level);
+    if (sel == port && was != (level != 0)) edge(e, pin, level);
 }
 
 void stm32f4_exti_line(stm32f4_exti_t *e, unsigned line, int level)
 {
-    if (line >= 16 && line < STM32F4_EXTI_LINES) edge(e, line, level);
+    if (line < 16 || line >= STM32F4_EXTI_LINES || ((e->lines >> line) & 1u) == (level != 0)) return;
+    edge(e, line, level);
 }
 
 static uint32_t *exti_reg(stm32f4_exti_t *e, uint32_t off)
