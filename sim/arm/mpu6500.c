@@ -43,30 +43,43 @@ enum { ZG_OFFS_H = 0x17, ZG_OFFS_L = 0x18, SMPLRT_DIV = 0x19, CONFIG = 0x1A, GYR
        SIGNAL_PATH_RESET = 0x68, USER_CTRL = 0x6A, PWR_MGMT_1 = 0x6B, PWR_MGMT_2 = 0x6C, WHO_AM_I = 0x75 };
 
 #define READ_BIT        0x80u
-#define WHO_AM_I_VALUE  0x70u  /* RM 4.40 */
 #define PWR1_RESET      0x80u
 #define PWR1_SLEEP      0x40u
-#define PWR1_DEFAULT    0x01u  /* RM section 3 */
 #define PWR2_DISABLE_ZG 0x01u
 #define USER_CTRL_AUTOCLEAR 0x07u /* SIG_COND_RST, I2C_MST_RST, FIFO_RST clear themselves */
 
-#define NOISE_DPS_RTHZ  0.01   /* PS Table 1: rate noise spectral density */
-#define ZRO_BOUND_DPS   5.0    /* PS Table 1: initial ZRO tolerance */
 #define ZRO_SIGMAS      3.0    /* ours: the tolerance as a 3-sigma bound */
-#define TEMP_LSB_C      333.87 /* PS Table 3 */
-#define TEMP_ROOM_C     21.0   /* PS Table 3: 0 LSB at 21 degC */
 #define DIE_TEMP_C      25.0   /* ours */
 #define DEG_PER_RAD     (180.0 / M_PI)
 
-static const double lsb_dps[4] = { 131.0, 65.5, 32.8, 16.4 }; /* PS Table 1 */
+static const double lsb_dps[4] = { 131.0, 65.5, 32.8, 16.4 }; /* PS Table 1 (the MPU-6050's PS 6.1 the same) */
+
+struct mpu6500_part {
+    uint8_t who_am_i, pwr1_default;
+    double noise_dps_rthz, zro_bound_dps; /* rate noise spectral density; initial ZRO tolerance */
+    double temp_lsb_c, temp_zero_c;       /* temperature sensitivity; the temperature reading 0 LSB */
+    double dlpf_bw_hz[8];                 /* gyro bandwidth by CONFIG DLPF_CFG */
+    bool fchoice;                         /* GYRO_CONFIG FCHOICE_B exists */
+};
+
+/* MPU-6500: RM 4.40 WHO_AM_I 0x70, RM section 3 PWR_MGMT_1 0x01, PS Table 1
+ * noise and ZRO, PS Table 3 333.87 LSB/degC with 0 LSB at 21 degC, RM 4.3. */
+const mpu6500_part_t mpu6500_part_6500 = { 0x70u, 0x01u, 0.01, 5.0, 333.87, 21.0,
+                                           { 250, 184, 92, 41, 20, 10, 5, 3600 }, true };
+/* MPU-6050: RM-MPU-6000A-00 rev 4.2 4.32 WHO_AM_I 0x68 and section 3
+ * PWR_MGMT_1 0x40 (asleep), 4.3 DLPF_CFG bandwidths 256/188/98/42/20/10/5
+ * Hz (7 reserved: taken as 256), 4.18 temperature = LSB / 340 + 36.53
+ * degC; PS-MPU-6000A-00 rev 3.4 6.1 rate noise spectral density 0.005
+ * deg/s/sqrt(Hz), initial ZRO tolerance +-20 deg/s; no FCHOICE. */
+const mpu6500_part_t mpu6500_part_6050 = { 0x68u, 0x40u, 0.005, 20.0, 340.0, 36.53,
+                                           { 256, 188, 98, 42, 20, 10, 5, 256 }, false };
 
 /* The output rate (Hz) and noise bandwidth (Hz) of the current configuration (RM 4.3, 4.5). */
 static void output_rate(const mpu6500_t *m, double *f_hz, double *bw_hz)
 {
-    static const double dlpf_bw[8] = { 250, 184, 92, 41, 20, 10, 5, 3600 };
-    unsigned fchoice_b = m->reg[GYRO_CONFIG] & 3u, dlpf = m->reg[CONFIG] & 7u;
+    unsigned fchoice_b = m->part->fchoice ? m->reg[GYRO_CONFIG] & 3u : 0u, dlpf = m->reg[CONFIG] & 7u;
     if (fchoice_b) { *f_hz = 32000.0; *bw_hz = (fchoice_b & 1u) ? 8800.0 : 3600.0; return; }
-    *bw_hz = dlpf_bw[dlpf];
+    *bw_hz = m->part->dlpf_bw_hz[dlpf];
     *f_hz = (dlpf == 0 || dlpf == 7) ? 8000.0 : 1000.0 / (1.0 + m->reg[SMPLRT_DIV]);
 }
 
@@ -74,7 +87,7 @@ double mpu6500_sigma_dps(const mpu6500_t *m)
 {
     double f, bw;
     output_rate(m, &f, &bw);
-    return NOISE_DPS_RTHZ * sqrt(bw);
+    return m->part->noise_dps_rthz * sqrt(bw);
 }
 
 double mpu6500_lsb_per_dps(const mpu6500_t *m) { return lsb_dps[(m->reg[GYRO_CONFIG] >> 3) & 3u]; }
@@ -100,7 +113,7 @@ static void sample_gyro(mpu6500_t *m)
     uint64_t dk = (uint64_t)llround(((double)k / f - m->t_s) * (m->clk ? m->clk->hclk : 0));
     uint64_t at = m->last_cycle >= dk ? m->last_cycle - dk : 0; /* the sample's own cycle (<= now) */
     double w = m->rate ? m->rate(m->rate_ctx, at) : 0.0;
-    m->z_dps = w * DEG_PER_RAD + m->zro_dps + NOISE_DPS_RTHZ * sqrt(bw) * n;
+    m->z_dps = w * DEG_PER_RAD + m->zro_dps + m->part->noise_dps_rthz * sqrt(bw) * n;
 }
 
 static void put16(mpu6500_t *m, unsigned reg, double v)
@@ -128,7 +141,7 @@ static void latch_data(mpu6500_t *m)
     put16(m, ACCEL_XOUT_H, 0.0);
     put16(m, ACCEL_XOUT_H + 2, 0.0);
     put16(m, ACCEL_XOUT_H + 4, g_lsb);
-    put16(m, TEMP_OUT_H, (DIE_TEMP_C - TEMP_ROOM_C) * TEMP_LSB_C);
+    put16(m, TEMP_OUT_H, (DIE_TEMP_C - m->part->temp_zero_c) * m->part->temp_lsb_c);
     put16(m, GYRO_XOUT_H, user_offset_lsb(m, 0x13));
     put16(m, GYRO_XOUT_H + 2, user_offset_lsb(m, 0x15));
     put16(m, GYRO_XOUT_H + 4, floor(m->z_dps * lsb + 0.5) + user_offset_lsb(m, ZG_OFFS_H));
@@ -202,25 +215,80 @@ void mpu6500_select(mpu6500_t *m, bool ncs_level)
 void mpu6500_reset(mpu6500_t *m)
 {
     for (unsigned i = 0; i < sizeof m->reg; i++) m->reg[i] = 0;
-    m->reg[PWR_MGMT_1] = PWR1_DEFAULT;
-    m->reg[WHO_AM_I] = WHO_AM_I_VALUE;
+    m->reg[PWR_MGMT_1] = m->part->pwr1_default;
+    m->reg[WHO_AM_I] = m->part->who_am_i;
     double f, bw;
     output_rate(m, &f, &bw);
     m->sample = (int64_t)floor(m->t_s * f) - 1; /* the current sample is computed when read */
     m->z_dps = 0.0;
 }
 
-void mpu6500_init(mpu6500_t *m, const mmio_clocks_t *clk, mpu6500_rate_fn rate, void *rate_ctx,
-                  uint64_t seed, unsigned index)
+static void init_part(mpu6500_t *m, const mpu6500_part_t *part, const mmio_clocks_t *clk, mpu6500_rate_fn rate,
+                      void *rate_ctx, uint64_t seed, unsigned index)
 {
     *m = (mpu6500_t){ 0 };
+    m->part = part;
     m->clk = clk;
     m->rate = rate;
     m->rate_ctx = rate_ctx;
     rng_init(&m->rng, seed, MPU6500_RNG_STREAM + index);
-    double z = ZRO_BOUND_DPS / ZRO_SIGMAS * rng_gauss(&m->rng);
-    m->zro_dps = z > ZRO_BOUND_DPS ? ZRO_BOUND_DPS : z < -ZRO_BOUND_DPS ? -ZRO_BOUND_DPS : z;
+    double bound = part->zro_bound_dps, z = bound / ZRO_SIGMAS * rng_gauss(&m->rng);
+    m->zro_dps = z > bound ? bound : z < -bound ? -bound : z;
     m->selected = false;
     m->sample = -1;
     mpu6500_reset(m);
+}
+
+void mpu6500_init(mpu6500_t *m, const mmio_clocks_t *clk, mpu6500_rate_fn rate, void *rate_ctx,
+                  uint64_t seed, unsigned index)
+{
+    init_part(m, &mpu6500_part_6500, clk, rate, rate_ctx, seed, index);
+}
+
+void mpu6050_init(mpu6500_t *m, const mmio_clocks_t *clk, mpu6500_rate_fn rate, void *rate_ctx,
+                  uint64_t seed, unsigned index)
+{
+    init_part(m, &mpu6500_part_6050, clk, rate, rate_ctx, seed, index);
+}
+
+/* I2C (PS 9.3 / MPU-6050 PS 9.3): a write transfer's first byte sets the
+ * register address, later bytes write registers; a read transfer reads from
+ * the address, incrementing; the data registers are latched at the read
+ * transfer's START so a burst sees one sample. */
+bool mpu6500_i2c_start(void *dev, bool read, uint64_t cycle)
+{
+    mpu6500_t *m = dev;
+    set_time(m, cycle);
+    m->reading = read;
+    m->have_addr = read; /* a read continues from the address set before */
+    if (read) latch_data(m);
+    return true;
+}
+
+bool mpu6500_i2c_write(void *dev, uint8_t byte, uint64_t cycle)
+{
+    mpu6500_t *m = dev;
+    set_time(m, cycle);
+    if (!m->have_addr) { m->have_addr = true; m->addr = byte & 0x7Fu; return true; }
+    note_access(m, m->addr);
+    write_reg(m, m->addr, byte);
+    m->addr = (m->addr + 1) & 0x7Fu;
+    return true;
+}
+
+uint8_t mpu6500_i2c_read(void *dev, uint64_t cycle)
+{
+    mpu6500_t *m = dev;
+    set_time(m, cycle);
+    note_access(m, m->addr);
+    uint8_t out = m->reg[m->addr];
+    m->addr = (m->addr + 1) & 0x7Fu;
+    return out;
+}
+
+void mpu6500_i2c_stop(void *dev, uint64_t cycle)
+{
+    mpu6500_t *m = dev;
+    set_time(m, cycle);
+    m->have_addr = false;
 }

@@ -2,7 +2,10 @@
  * (stm32f1_spi.h's interface): the registers firmware uses, gyro Z from the
  * physics' yaw rate with the datasheet's noise and zero-rate offset. Sources
  * in mpu6500.c: the MPU-6500 Product Specification (PS-MPU-6500A-01 rev
- * 1.1) and Register Map (RM-MPU-6500A-00 rev 2.1). */
+ * 1.1) and Register Map (RM-MPU-6500A-00 rev 2.1).
+ * The same register engine is the MPU-6050 (its own figures: WHO_AM_I
+ * 0x68, SLEEP at reset, noise, ZRO, DLPF, temperature scale) on I2C
+ * (stm32_i2c.h's slave interface, address 0x68 or 0x69). */
 #ifndef ARM_MPU6500_H
 #define ARM_MPU6500_H
 
@@ -18,7 +21,13 @@
 /* The true z rate the chip's axis turns at, rad/s, at core cycle `cycle`. */
 typedef double (*mpu6500_rate_fn)(void *ctx, uint64_t cycle);
 
+/* A part's figures (mpu6500.c: mpu6500_part_6500, mpu6500_part_6050). */
+typedef struct mpu6500_part mpu6500_part_t;
+extern const mpu6500_part_t mpu6500_part_6500;
+extern const mpu6500_part_t mpu6500_part_6050;
+
 typedef struct {
+    const mpu6500_part_t *part;
     const mmio_clocks_t *clk;   /* HCLK: core cycles to seconds */
     mpu6500_rate_fn rate;
     void *rate_ctx;
@@ -42,6 +51,17 @@ typedef struct {
 
 void mpu6500_init(mpu6500_t *m, const mmio_clocks_t *clk, mpu6500_rate_fn rate, void *rate_ctx,
                   uint64_t seed, unsigned index);
+/* An MPU-6050 (PS-MPU-6000A-00 rev 3.4, RM-MPU-6000A-00 rev 4.2) on I2C. */
+void mpu6050_init(mpu6500_t *m, const mmio_clocks_t *clk, mpu6500_rate_fn rate, void *rate_ctx,
+                  uint64_t seed, unsigned index);
+/* The I2C slave side (stm32_i2c_slave_t): a START addressed to the chip
+ * (read: the R/W bit), a byte written (the first of a write transfer is the
+ * register address, PS 9.3 "I2C communications protocol"), a byte read
+ * (the address incrementing), the STOP. Each acknowledges with true. */
+bool mpu6500_i2c_start(void *dev, bool read, uint64_t cycle);
+bool mpu6500_i2c_write(void *dev, uint8_t byte, uint64_t cycle);
+uint8_t mpu6500_i2c_read(void *dev, uint64_t cycle);
+void mpu6500_i2c_stop(void *dev, uint64_t cycle);
 /* Power-on reset: the register defaults (the part's offset stays). */
 void mpu6500_reset(mpu6500_t *m);
 /* nCS, wired by the board from a GPIO output: low selects the chip; a rising
