@@ -477,6 +477,7 @@ static mmio_status_t write_cr1(stm32f1_tim_t *t, uint32_t v, uint32_t m)
 {
     uint32_t wmask = CR1_WMASK;
     if (cms(t) || encoder(t)) wmask &= ~DIR; /* DIR is read-only then */
+    if (t->d->up_only) wmask &= ~(DIR | 3u << CMS_SHIFT);
     t->cr1 = stm32f1_reg_merge(t->cr1, v, m, wmask);
     if (!cms(t) && !encoder(t)) t->down = (t->cr1 & DIR) != 0;
     if (!(t->cr1 & ARPE)) t->arr_sh = t->arr;

@@ -66,6 +66,7 @@ typedef struct {
     uint8_t has_smcr;      /* SMCR exists (encoder modes when channels == 4) */
     uint16_t irq[4];       /* advanced: BRK, UP, TRG_COM, CC lines; else irq[0] for all */
     uint16_t dma_up, dma_cc[4]; /* the number given to mmio_dma_req_t.request; 0: no request */
+    uint8_t up_only;       /* CR1 has no DIR/CMS: counts up only (TIM6/7, TIM9-14) */
 } stm32_tim_desc_t;
 
 /* Trigger sources a timer offers other peripherals (an ADC's EXTSEL, another
