@@ -104,6 +104,16 @@ static void test_tim5_32bit(void **state)
     assert_int_equal(rd(CNT), 0);
     wr(CNT, 0x89ABCDEFu);
     assert_int_equal(rd(CNT), 0x89ABCDEFu);
+    /* downcounting from 5: the underflow reloads 0xFFFF FFFF, then counts down on */
+    wr(CR1, 1u | 1u << 4);
+    wr(ARR, 0xFFFFFFFFu);
+    wr(CNT, 5);
+    wr(SR, 0);
+    at(tim.now + 2 * 6);
+    assert_int_equal(rd(CNT), 0xFFFFFFFFu);
+    assert_int_equal(rd(SR) & 1u, 1);
+    at(tim.now + 2 * 0x10000);
+    assert_int_equal(rd(CNT), 0xFFFEFFFFu);
     /* TIM3 stays 16-bit */
     init(STM32F4_TIM3);
     wr(ARR, 0x12345678u);

@@ -193,7 +193,7 @@ static uint64_t to_update(stm32f1_tim_t *t)
         if (t->down && t->cnt == 0) t->down = 0;
         return t->down ? t->cnt : arr - t->cnt;
     }
-    if (t->down) return t->cnt + 1;
+    if (t->down) return t->cnt + 1ull;
     return t->cnt <= arr ? arr - t->cnt + 1 : cmax(t) + 1ull - t->cnt; /* above ARR: on to the top first */
 }
 
@@ -262,7 +262,8 @@ static void run_ticks(stm32f1_tim_t *t, uint64_t n)
         if (overflowed) since += need;
         overflowed = 1;
         uint64_t cyc = cycle_ticks(t);
-        if (since >= cyc && n >= cyc) t->ev_done += n - n % cyc, n %= cyc;
+        int listened = t->trig.trigger && t->trig_want; /* each trigger edge counts: no skipping */
+        if (since >= cyc && n >= cyc && !listened) t->ev_done += n - n % cyc, n %= cyc;
     }
 }
 
