@@ -4,7 +4,8 @@
  * (EXTSEL 2, table 69) at the exact cycle of the compare each period, the
  * TIM1 CC2/CC4 DMA requests at their compare cycles, TRGO from the update,
  * UG, CEN, CC1 and OC1REF (CR2 MMS), TIM9's two PWM channels and its
- * absent registers, TIM8's interrupt lines, one-pulse mode stopping CEN. */
+ * absent registers, TIM8's interrupt lines, one-pulse mode stopping CEN,
+ * the slave modes trigger (ITR), gated (TI1FP1) and reset (TI2FP2). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -334,13 +335,57 @@ static void test_one_pulse(void **state)
     assert_int_equal(next(), MMIO_NEVER);
 }
 
+/* slave modes (SMCR, RM0090 18.3.14): trigger from ITR1, gated by TI1FP1, reset by TI2FP2 */
+static void test_slave_modes(void **state)
+{
+    init(STM32F4_TIM3);
+    assert_int_equal(wr(SMCR, 6u | 1u << 4), MMIO_UNMODELED); /* ITR1 while no TRGO is routed */
+    stm32_tim_route_itr(&tim);
+    assert_int_equal(wr(SMCR, 6u | 1u << 4), MMIO_OK); /* trigger mode, TS ITR1 */
+    wr(DIER, 1u << 6);                                  /* TIE */
+    stm32_tim_itr(&tim, 2, 1, 100);                      /* ITR2: not selected */
+    assert_int_equal(rd(CR1) & 1u, 0);
+    stm32_tim_itr(&tim, 1, 1, 500);
+    assert_int_equal(rd(CR1) & 1u, 1);
+    assert_int_equal(rd(SR), 1u << 6);
+    assert_true(irq_level[29]);
+    at(1500);
+    assert_int_equal(rd(CNT), 500); /* counting from cycle 500, one count per 2 cycles */
+
+    init(STM32F4_TIM3);
+    assert_int_equal(wr(SMCR, 5u | 5u << 4), MMIO_OK); /* gated by TI1FP1 */
+    wr(CR1, 1);
+    at(100);
+    assert_int_equal(rd(CNT), 0);
+    stm32f1_tim_input(&tim, 100, 1, 1);
+    at(300);
+    assert_int_equal(rd(CNT), 100);
+    stm32f1_tim_input(&tim, 300, 1, 0);
+    at(1000);
+    assert_int_equal(rd(CNT), 100);
+    assert_int_equal(rd(SR), 1u << 6);
+    assert_int_equal(next(), MMIO_NEVER);
+
+    init(STM32F4_TIM3);
+    assert_int_equal(wr(SMCR, 4u | 6u << 4), MMIO_OK); /* reset by TI2FP2 */
+    wr(CCER, 1u << 5);                                   /* CC2P: the falling edge */
+    wr(CR1, 1);
+    at(400);
+    stm32f1_tim_input(&tim, 400, 2, 1);
+    assert_int_equal(rd(CNT), 200);
+    stm32f1_tim_input(&tim, 400, 2, 0);
+    assert_int_equal(rd(CNT), 0);
+    assert_int_equal(rd(SR), 1u | 1u << 6); /* UIF from the update, TIF */
+    assert_int_equal(wr(SMCR, 7u), MMIO_UNMODELED); /* external clock mode 1 */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_tim5_32bit),     cmocka_unit_test(test_tim1_cc3_triggers_adc),
         cmocka_unit_test(test_tim1_cc_dma),    cmocka_unit_test(test_trgo),
         cmocka_unit_test(test_tim9_pwm),       cmocka_unit_test(test_tim8_irqs),
-        cmocka_unit_test(test_one_pulse),
+        cmocka_unit_test(test_one_pulse),      cmocka_unit_test(test_slave_modes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

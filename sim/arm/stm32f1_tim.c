@@ -45,6 +45,13 @@ static unsigned mms(const stm32f1_tim_t *t) { return (t->cr2 >> 4) & 7u; }
 static unsigned cms(const stm32f1_tim_t *t) { return (t->cr1 >> CMS_SHIFT) & 3u; }
 static unsigned sms(const stm32f1_tim_t *t) { return t->smcr & 7u; }
 static int encoder(const stm32f1_tim_t *t) { return sms(t) >= 1 && sms(t) <= 3; }
+static unsigned ts(const stm32f1_tim_t *t) { return (t->smcr >> 4) & 7u; }
+/* Does the counter stand still: stopped, an encoder (moved by the wheel),
+ * the external clock (not modeled), or gated with TRGI low? */
+static int held(const stm32f1_tim_t *t)
+{
+    return !(t->cr1 & CEN) || encoder(t) || sms(t) == 7 || (sms(t) == 5 && !t->trgi);
+}
 static unsigned ccs(const stm32f1_tim_t *t, unsigned i) { return (t->ccmr[i / 2] >> (8 * (i % 2))) & 3u; }
 static unsigned ocm(const stm32f1_tim_t *t, unsigned i) { return (t->ccmr[i / 2] >> (8 * (i % 2) + 4)) & 7u; }
 static int ocpe(const stm32f1_tim_t *t, unsigned i) { return (t->ccmr[i / 2] >> (8 * (i % 2) + 3)) & 1u; }
@@ -274,7 +281,7 @@ void stm32_tim_advance(void *self, uint64_t now)
     uint64_t dc = now - t->now;
     t->ev_now0 = t->now, t->ev_acc0 = t->acc, t->ev_done = 0;
     t->now = now;
-    if (!(t->cr1 & CEN) || encoder(t) || sms(t) >= 4) return;
+    if (held(t)) return;
     uint32_t hz = tim_hz(t), hclk = t->clk->hclk;
     if (hz == 0 || hclk == 0) return;
     unsigned __int128 x = (unsigned __int128)dc * hz + t->acc;
@@ -315,7 +322,7 @@ static int want_cc(const stm32f1_tim_t *t, unsigned i)
 uint64_t stm32_tim_next_event(void *self)
 {
     stm32f1_tim_t *t = self;
-    if (!(t->cr1 & CEN) || encoder(t) || sms(t) >= 4 || t->arr_sh == 0) return MMIO_NEVER;
+    if (held(t) || t->arr_sh == 0) return MMIO_NEVER;
     uint64_t d = to_update(t), k = UINT64_MAX;
     int any = 0;
     if (((t->dier & UIF) && !(t->sr & UIF)) || (t->dier & UDE) || want_update(t)) k = d, any = 1;
@@ -380,6 +387,55 @@ void stm32f1_tim_encoder(stm32f1_tim_t *t, uint64_t now, int64_t edges)
     update_irq(t);
 }
 
+/* ---- slave mode (RM0090 18.3.14) ---- */
+
+/* TRGI is now level at core cycle now (brought there): TIF on a rising
+ * edge (gated mode: on both), and the slave mode's action: reset (100)
+ * reinitializes the counter with an update event as UG does, gated (101)
+ * counts while TRGI is high, trigger (110) sets CEN. */
+static void trgi_level(stm32f1_tim_t *t, int level)
+{
+    if (level == t->trgi) return;
+    t->trgi = level;
+    unsigned m = sms(t);
+    if (m < 4 || m == 7) return;
+    if (m == 5 || level) t->sr |= TIF;
+    if (!level) return;
+    if (m == 4) {
+        t->cnt = (t->down && !cms(t)) ? t->arr : 0;
+        t->pc = 0;
+        update_event(t, 0, t->now);
+        t->rep = t->rcr_sh;
+    } else if (m == 6 && !(t->cr1 & CEN)) {
+        t->cr1 |= CEN;
+        if (mms(t) == 1) trgo_level(t, 1, t->now);
+    }
+}
+
+void stm32_tim_itr(stm32f1_tim_t *t, unsigned itr, int rising, uint64_t now)
+{
+    stm32_tim_advance(t, now);
+    if (sms(t) < 4 || ts(t) != itr) return;
+    trgi_level(t, rising != 0);
+    update_irq(t);
+}
+
+void stm32_tim_route_itr(stm32f1_tim_t *t) { t->itr_routed = 1; }
+
+/* An edge of TIti as TRGI: TI1F_ED (TS 100) every edge as a pulse,
+ * TI1FP1 (101) and TI2FP2 (110) the level after the CCxP polarity. */
+static void trgi_input(stm32f1_tim_t *t, unsigned ti, int rising)
+{
+    if (sms(t) < 4) return;
+    if (ts(t) == 4 && ti == 1) {
+        trgi_level(t, 1);
+        trgi_level(t, 0);
+    } else if ((ts(t) == 5 && ti == 1) || (ts(t) == 6 && ti == 2)) {
+        int inverted = (t->ccer >> (4 * (ti - 1) + 1)) & 1u;
+        trgi_level(t, (rising != 0) ^ inverted);
+    }
+}
+
 /* ---- input capture ---- */
 
 /* RM0008 15.3.5: an edge of the selected polarity on the channel's input
@@ -400,6 +456,7 @@ void stm32f1_tim_input(stm32f1_tim_t *t, uint64_t now, unsigned ti, int rising)
         if (t->sr & CCIF(i)) t->sr |= 1u << (9 + i); /* CCxOF */
         cc_match(t, i);
     }
+    trgi_input(t, ti, rising);
     update_irq(t);
 }
 
@@ -421,7 +478,7 @@ void stm32_tim_reset(void *self)
     memset(t->ccr, 0, sizeof t->ccr);
     memset(t->ccr_sh, 0, sizeof t->ccr_sh);
     memset(t->ic_edges, 0, sizeof t->ic_edges);
-    t->ref = 0, t->trgo = 0;
+    t->ref = 0, t->trgo = 0, t->trgi = 0;
     update_irq(t);
 }
 
@@ -545,7 +602,10 @@ static mmio_status_t write_ctl(stm32f1_tim_t *t, uint32_t w, uint32_t v, uint32_
     case 0x08:
         t->smcr = stm32f1_reg_merge(t->smcr, v, m, 0xFFF7u);
         if (encoder(t) && nch(t) < 4) return MMIO_UNMODELED; /* TIM9/12: no encoder modes (RM0090 19.5.2) */
-        return (sms(t) >= 4 || (t->smcr & (1u << 14))) ? MMIO_UNMODELED : MMIO_OK;
+        /* the external clock (SMS 111, ECE), ETRF, an ITRx no other timer's TRGO reaches */
+        if (sms(t) == 7 || (t->smcr & (1u << 14)) || (sms(t) >= 4 && (ts(t) == 7 || (ts(t) <= 3 && !t->itr_routed))))
+            return MMIO_UNMODELED;
+        return MMIO_OK;
     case 0x0C: t->dier = stm32f1_reg_merge(t->dier, v, m, dier_mask(t)); return MMIO_OK;
     case 0x10: t->sr &= ~(~v & m & SR_FLAGS); return MMIO_OK; /* rc_w0 */
     case 0x14: write_egr(t, v & m); return MMIO_OK;
