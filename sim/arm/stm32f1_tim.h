@@ -1,7 +1,9 @@
 /* stm32f1_tim.h - the STM32F1's TIM1 (advanced-control, RM0008 section 14)
  * and TIM2-TIM4 (general-purpose, section 15): one model, the advanced
  * timer's extras (repetition counter, BDTR's MOE, its four interrupt lines)
- * enabled for TIM1.
+ * enabled for TIM1. The same timer design on the F4 (RM0090 17-20) runs on
+ * this model from per-instance descriptions (stm32_tim_desc_t: counter
+ * width, channels, registers present, IRQs, DMA requests): stm32f4_tim.h.
  *
  * Modeled (RM0008 15.3, 15.4 registers; 14.3, 14.4 for TIM1):
  *   time base   CR1 (CEN, UDIS, URS, OPM, DIR, CMS edge/center 1-3, ARPE),
@@ -37,8 +39,9 @@
  *               TI1F_ED, TI1FP1, TI2FP2 (the board's input edges) or ITR0-3
  *               (another timer's TRGO the board routes): TIF, the action
  * Not modeled (answer MMIO_UNMODELED when a firmware sets them): external
- * clock mode 1 (SMS 111) and 2 (ECE), ETRF (TS 111), an unrouted ITRx, TRGO from OCxREF in PWM mode
- * while center-aligned, TI1S,
+ * clock mode 1 (SMS 111) and 2 (ECE), ETRF (TS 111), an unrouted ITRx,
+ * a non-reset MMS on a timer no trigger listener takes (the F1 board),
+ * TRGO from OCxREF in PWM mode while center-aligned, TI1S,
  * a capture from TRC (CCxS 11), OCxCE (clear on ETRF),
  * BDTR's break input and dead time, DCR/DMAR (DMA burst); the prescaler in
  * encoder mode (counts are taken undivided); a reserved register (RCR and
@@ -90,7 +93,7 @@ typedef struct {
     unsigned n;                 /* TIMn */
     const stm32_tim_desc_t *d;  /* the instance's description */
     uint32_t cr1, cr2, smcr, dier, sr, ccmr[2], ccer, psc, arr, rcr, ccr[4], bdtr;
-    uint32_t cnt;               /* the 16-bit counter */
+    uint32_t cnt;               /* the counter, 16 or 32 bits (d->bits) */
     uint32_t psc_sh, arr_sh, rcr_sh, ccr_sh[4]; /* the shadow (active) registers */
     uint32_t pc;                /* the prescaler's counter: timer clocks since the last count */
     uint32_t rep;               /* TIM1's repetition counter */
