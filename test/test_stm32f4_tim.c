@@ -255,6 +255,13 @@ static void test_trgo(void **state)
     assert_int_equal(trig[1].rising, 1);
     assert_int_equal(trig[1].now, 2000);
     assert_int_equal(trig[2].now, 2800);
+    /* forced active (101) past the compare: OC1REF and so TRGO rise at the write */
+    ntrig = 0;
+    at(3000);
+    wr(CCMR1, 5u << 4);
+    assert_int_equal(ntrig, 1);
+    assert_int_equal(trig[0].rising, 1);
+    assert_int_equal(trig[0].now, 3000);
 }
 
 /* TIM9: two channels, upcounting only, no CR2, no DMA (RM0090 19.5) */

@@ -617,6 +617,7 @@ static mmio_status_t write_ctl(stm32f1_tim_t *t, uint32_t w, uint32_t v, uint32_
         for (unsigned j = 0; j < 2; j++) t->ref = ref_now(t, 2 * k + j); /* the level it leaves */
         t->ccmr[k] = stm32f1_reg_merge(t->ccmr[k], v, m, 0xFFFFu & ~keep);
         for (unsigned j = 0; j < 2; j++) t->ref = ref_now(t, 2 * k + j); /* a forced level at once */
+        if (mms(t) >= 4 && (mms(t) - 4) / 2 == k) trgo_level(t, (t->ref >> (mms(t) - 4)) & 1u, t->now);
         return channels_status(t);
     }
     case 0x20:
