@@ -1,7 +1,9 @@
 /* stm32f1_tim.h - the STM32F1's TIM1 (advanced-control, RM0008 section 14)
  * and TIM2-TIM4 (general-purpose, section 15): one model, the advanced
  * timer's extras (repetition counter, BDTR's MOE, its four interrupt lines)
- * enabled for TIM1.
+ * enabled for TIM1. The same timer design on the F4 (RM0090 17-20) runs on
+ * this model from per-instance descriptions (stm32_tim_desc_t: counter
+ * width, channels, registers present, IRQs, DMA requests): stm32f4_tim.h.
  *
  * Modeled (RM0008 15.3, 15.4 registers; 14.3, 14.4 for TIM1):
  *   time base   CR1 (CEN, UDIS, URS, OPM, DIR, CMS edge/center 1-3, ARPE),
@@ -29,8 +31,17 @@
  *               (stm32f1_tim_input) of the CCxP polarity, every ICxPSC-th,
  *               copies CNT to CCRx with CCxIF (CCxOF if still set); reading
  *               CCRx clears CCxIF. The input filter (ICxF) is not applied.
- * Not modeled (answer MMIO_UNMODELED when a firmware sets them): slave
- * modes 4-7 and the external clock (ECE), master mode (CR2 MMS: TRGO),
+ *   master      CR2 MMS (RM0090 17.4.2): TRGO on UG (reset), CEN (enable),
+ *               the update event, CC1IF (compare pulse), OC1-4REF (match
+ *               modes, and PWM modes when edge-aligned); the CCx events,
+ *               each a trigger source (stm32_tim_trigger_t) at its cycle
+ *   slave       SMCR SMS reset (100), gated (101), trigger (110) from
+ *               TI1F_ED, TI1FP1, TI2FP2 (the board's input edges) or ITR0-3
+ *               (another timer's TRGO the board routes): TIF, the action
+ * Not modeled (answer MMIO_UNMODELED when a firmware sets them): external
+ * clock mode 1 (SMS 111) and 2 (ECE), ETRF (TS 111), an unrouted ITRx,
+ * a non-reset MMS on a timer no trigger listener takes (the F1 board),
+ * TRGO from OCxREF in PWM mode while center-aligned, TI1S,
  * a capture from TRC (CCxS 11), OCxCE (clear on ETRF),
  * BDTR's break input and dead time, DCR/DMAR (DMA burst); the prescaler in
  * encoder mode (counts are taken undivided); a reserved register (RCR and
@@ -48,10 +59,41 @@
 
 #include "arm/mmio.h"
 
+/* What one timer instance has: the same model serves the F1's TIM1-4 and
+ * the F4's TIM1-14 (stm32f4_tim.h) from this description. */
 typedef struct {
-    unsigned n;                 /* 1-4: TIMn */
+    const char *name;      /* "TIM1" */
+    unsigned n;            /* TIMn */
+    uint8_t bits;          /* counter, ARR and CCRx width: 16, or 32 (F4 TIM2/TIM5, RM0090 18.1) */
+    uint8_t channels;      /* capture/compare channels: 4, 2 (TIM9/12), 1 (TIM10/11/13/14), 0 (TIM6/7) */
+    uint8_t advanced;      /* TIM1/TIM8: RCR, BDTR, complementary bits, four interrupt lines */
+    uint8_t apb;           /* 1: counts tim_apb1, 2: tim_apb2 */
+    uint8_t has_cr2;       /* CR2 (MMS, CCDS) exists */
+    uint8_t has_smcr;      /* SMCR exists (encoder modes when channels == 4) */
+    uint16_t irq[4];       /* advanced: BRK, UP, TRG_COM, CC lines; else irq[0] for all */
+    uint16_t dma_up, dma_cc[4]; /* the number given to mmio_dma_req_t.request; 0: no request */
+    uint8_t up_only;       /* CR1 has no DIR/CMS: counts up only (TIM6/7, TIM9-14) */
+} stm32_tim_desc_t;
+
+/* Trigger sources a timer offers other peripherals (an ADC's EXTSEL, another
+ * timer's ITR): TRGO (CR2 MMS) and the CCx events, as bits of want masks
+ * and as kind in STM32_TIM_TRIG. */
+enum { STM32_TIM_TRGO = 0, STM32_TIM_CC1 = 1, STM32_TIM_CC2, STM32_TIM_CC3, STM32_TIM_CC4 };
+#define STM32_TIM_TRIG(n, kind) ((unsigned)(n) * 8u + (unsigned)(kind)) /* a source: timer n's kind */
+
+/* An edge on a trigger source at core cycle now (the exact cycle of the
+ * compare or the update, whatever the advance's step): a CCx event is a
+ * pulse (a rising then a falling edge at the same cycle); TRGO follows MMS. */
+typedef struct {
+    void (*trigger)(void *ctx, unsigned source, int rising, uint64_t now);
+    void *ctx;
+} stm32_tim_trigger_t;
+
+typedef struct {
+    unsigned n;                 /* TIMn */
+    const stm32_tim_desc_t *d;  /* the instance's description */
     uint32_t cr1, cr2, smcr, dier, sr, ccmr[2], ccer, psc, arr, rcr, ccr[4], bdtr;
-    uint32_t cnt;               /* the 16-bit counter */
+    uint32_t cnt;               /* the counter, 16 or 32 bits (d->bits) */
     uint32_t psc_sh, arr_sh, rcr_sh, ccr_sh[4]; /* the shadow (active) registers */
     uint32_t pc;                /* the prescaler's counter: timer clocks since the last count */
     uint32_t rep;               /* TIM1's repetition counter */
@@ -65,6 +107,15 @@ typedef struct {
     uint32_t ic_edges[4];       /* input capture: edges since the last capture (ICxPSC) */
     uint32_t ref;               /* OCxREF per channel (bit i) in the modes that hold it: match, toggle, forced */
     uint32_t irq_out;           /* the interrupt lines held high, one bit per line */
+    stm32_tim_trigger_t trig;   /* NULL trigger: no listener */
+    uint32_t trig_want;         /* the sources (1 << kind) the listener takes: the compares it stops at */
+    int trgo;                   /* TRGO's level in the level modes of MMS (enable, OCxREF) */
+    int trgi;                   /* the slave mode's trigger input (TRGI) level */
+    int itr_routed;             /* the board routes other timers' TRGO to ITR0-3 (stm32_tim_itr) */
+    /* the cycle of an event inside an advance: state at its start */
+    int ev_run;                 /* 1 while run_ticks counts */
+    uint64_t ev_now0, ev_acc0, ev_done; /* start cycle, its acc, timer clocks before this batch */
+    uint32_t ev_pc;             /* the prescaler's counter at this batch's start */
 } stm32f1_tim_t;
 
 /* Channel x's output as a board part sees it. */
@@ -88,6 +139,28 @@ extern const mmio_ops_t stm32f1_tim_ops[4];
 /* Power-on for TIMn (1-4): every register 0 (RM0008 15.4) but ARR 0xFFFF
  * (see tim_reset). dma may have a NULL request (no DMA controller). */
 void stm32f1_tim_init(stm32f1_tim_t *t, unsigned n, const mmio_clocks_t *clk, mmio_irq_t irq, mmio_dma_req_t dma);
+/* Power-on for the instance desc (which outlives t) with a trigger
+ * listener (trig.trigger may be NULL); the listener takes every source
+ * until stm32_tim_trigger_want narrows it. */
+void stm32_tim_init(stm32f1_tim_t *t, const stm32_tim_desc_t *desc, const mmio_clocks_t *clk, mmio_irq_t irq,
+                    mmio_dma_req_t dma, stm32_tim_trigger_t trig);
+/* The sources (bits 1 << STM32_TIM_TRGO / _CCx) the listener takes now
+ * (an ADC's EXTSEL): only their compares become next_event()s. */
+void stm32_tim_trigger_want(stm32f1_tim_t *t, uint32_t kinds);
+/* Another timer's TRGO, routed to this one's input ITRitr (0-3; which
+ * timer is which ITR: RM0090 table 93/94, the board's data), is now at
+ * level rising (an edge) at core cycle now: the slave mode acts if SMCR
+ * TS selects it. stm32_tim_route_itr tells the model the board does so
+ * (else a slave mode on ITRx is reported unmodeled). */
+void stm32_tim_itr(stm32f1_tim_t *t, unsigned itr, int rising, uint64_t now);
+void stm32_tim_route_itr(stm32f1_tim_t *t);
+/* The model's bus functions, for another family's ops tables. */
+mmio_status_t stm32_tim_read(void *self, uint32_t off, unsigned size, uint32_t *value);
+mmio_status_t stm32_tim_write(void *self, uint32_t off, unsigned size, uint32_t value);
+void stm32_tim_advance(void *self, uint64_t now);
+uint64_t stm32_tim_next_event(void *self);
+void stm32_tim_reset(void *self);
+
 /* The wheel's quadrature position, edges (4 per encoder line; positive
  * forward: channel 1 leads), from core cycle now (>= the last access).
  * In an encoder mode with CEN the counter follows it. */
