@@ -16,6 +16,7 @@
 #include <strings.h>
 
 #include "cli.h"
+#include "arm/stm32board.h"
 #include "board/board.h"
 #include "contest/batch.h"
 #include "contest/contest.h"
@@ -424,7 +425,16 @@ static int board_default_robot(run_opts_t *o)
 {
     static board_spec_t spec; /* large */
     char path[512], err[1200];
-    if (board_find(o->board, path, sizeof path, err, sizeof err) != 0 || board_load(&spec, path, err, sizeof err) != 0) {
+    if (board_find(o->board, path, sizeof path, err, sizeof err) != 0) {
+        fprintf(stderr, "%s\n", err);
+        return CLI_BAD_INPUT;
+    }
+    /* an STM32 board file is read by sim/arm's reader, and no run driver takes an ARM image */
+    if (boardfile_family(path, err, sizeof err) == BOARDFILE_STM32) {
+        fprintf(stderr, "mmsim: --board %s: %s is an STM32 board: mmsim runs firmware images on AVR boards only\n", o->board, path);
+        return CLI_BAD_INPUT;
+    }
+    if (board_load(&spec, path, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         return CLI_BAD_INPUT;
     }
