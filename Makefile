@@ -233,18 +233,13 @@ arm-test-firmware: $(ARM_TEST_ELFS)
 .PHONY: arm-test-firmware
 
 # ---- Bulebots' bulebule (STM32F103, libopencm3), unmodified, built in a copy
-# under $(B)/clients/bulebule as ../shared/clients/README.md says: libopencm3's
-# stm32/f1 target, then the firmware with newlib-nano (the full newlib
-# overflows its 63 KB flash region) ----
+# under $(B)/clients/bulebule by tools/build-bulebule.sh as ../shared/clients/README.md
+# says (libopencm3's stm32/f1 target, then the firmware with newlib-nano); the
+# files the snapshot lost come from tools/opencm3-compat ----
 BULEBULE_SRC := $(SHARED)/clients/bulebule
 BULEBULE_ELF := $(B)/clients/bulebule/src/main.elf
-$(BULEBULE_ELF): | deps
-	@[ -d $(BULEBULE_SRC)/src ] || { echo "make: $(BULEBULE_SRC) missing (../shared/clients)" >&2; exit 3; }
-	@[ -f $(BULEBULE_SRC)/src/opencm3/libopencm3/include/libopencm3/cm3/nvic.h ] || { echo "make: $(BULEBULE_SRC)/src/opencm3/libopencm3/include/libopencm3/cm3/nvic.h missing (libopencm3's .gitignore names it; the copy in ../shared lost it)" >&2; exit 3; }
-	rm -rf $(B)/clients/bulebule && mkdir -p $(B)/clients && cp -r $(BULEBULE_SRC) $(B)/clients/bulebule && chmod -R u+w $(B)/clients/bulebule
-	$(MAKE) -s -C $(B)/clients/bulebule/src/opencm3/libopencm3 TARGETS=stm32/f1 SRCLIBDIR=$(CURDIR)/$(B)/clients/bulebule/src/opencm3/libopencm3/lib
-	$(MAKE) -s -C $(B)/clients/bulebule/src LDFLAGS="-L./ -Lopencm3/libopencm3/lib --specs=nano.specs"
-	arm-none-eabi-size $@
+$(BULEBULE_ELF): tools/build-bulebule.sh $(wildcard tools/opencm3-compat/*/*/* tools/opencm3-compat/*/*/*/* tools/opencm3-compat/*.mk) | deps
+	tools/build-bulebule.sh $(BULEBULE_SRC) $(B)/clients/bulebule
 client-bulebule: $(BULEBULE_ELF)
 .PHONY: client-bulebule
 
