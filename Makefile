@@ -12,7 +12,7 @@ SHELL := /bin/bash
 # python3-dask, python3-distributed, python3-pandas, python3-pytest: the
 # python/mmsim package and tools/mmsweep (sweeps on Dask, their tests).
 # gcc-arm-none-eabi, libnewlib-arm-none-eabi, libstdc++-arm-none-eabi-newlib:
-# our ARM test firmware (test/arm) and bulebule's build; libunicorn-dev: the
+# our ARM test firmware (test/firmware/arm) and bulebule's build; libunicorn-dev: the
 # Cortex-M core (sim/arm); gdb-multiarch: gdb for an ARM image.
 DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev libinih-dev \
 	gcc-avr avr-libc arduino-core-avr simavr libsimavr-dev libelf-dev libdw-dev \
@@ -46,22 +46,22 @@ SIM_SRC  := $(sort $(shell find sim -name '*.c'))
 HOST_SRC := $(SIM_SRC) tools/cli.c hal/sim/hal_sim.c hal/wire/wire.c $(LCM_C) $(B)/gen/robot_paper.c
 LIB_SRC  := $(FW_SRC) $(HOST_SRC)
 TOOLS    := mmmaze mmsim mmlog mmview
-TEST_SRC := $(wildcard test/test_*.c)
-TESTS    := $(patsubst test/%.c,$(B)/test/%,$(TEST_SRC)) $(B)/test/test_flood_ref16
+TEST_SRC := $(wildcard test/unit/test_*.c)
+TESTS    := $(patsubst test/unit/%.c,$(B)/test/%,$(TEST_SRC)) $(B)/test/test_flood_ref16
 
 # Link-time mocks: a test that wraps HAL calls names them here.
 WRAP_test_explore := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros
 WRAP_test_firmware := -Wl,--wrap=hal_log -Wl,--wrap=hal_micros -Wl,--wrap=hal_motor_set \
 	-Wl,--wrap=hal_encoder -Wl,--wrap=hal_distance -Wl,--wrap=hal_maze
 # Extra sources a test links (shared test vectors).
-EXTRA_test_wire := test/wire_vectors.c
+EXTRA_test_wire := test/unit/wire_vectors.c
 # The MCU's decoder buffers (see ARD_RAM): a build for an MCU takes no LOG.
 MCU_RX_FLAGS := -DWIRE_RX_LOG_MAX=14
 # test_wire again with the MCU's decoder buffers, so its fault runs check the
 # decoder as shipped: its own wire.c with the flag (libmm_san's has the host's).
 TESTS += $(B)/test/test_wire_rx14
-# Our sketches for the board emulation (test/cli_board.sh, test/test_board.c), built for the Nano.
-BOARD_SKETCHES := $(patsubst test/arduino/board/%.ino,$(B)/clients/board/%.elf,$(wildcard test/arduino/board/*.ino))
+# Our sketches for the board emulation (test/cli/cli_board.sh, test/unit/test_board.c), built for the Nano.
+BOARD_SKETCHES := $(patsubst test/firmware/arduino/board/%.ino,$(B)/clients/board/%.elf,$(wildcard test/firmware/arduino/board/*.ino))
 
 .PHONY: help all deps test test-run client-mazerunner mrc-images board-sketches sim sim-run bench bench-run fuzz firmware firmware-size arduino arduino-lib mazes clean tools spy replay view docs-img
 all: tools
@@ -94,7 +94,7 @@ deps:
 	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null || { echo "make deps: apt-get failed" >&2; exit 3; }; \
 	fi
 	@$(MAKE) -s --no-print-directory $(VENV_STAMP) \
-	  || echo "make deps: no project venv ($(VENV)): tools/mmsweep needs it and test/cli_sweep.sh skips" >&2
+	  || echo "make deps: no project venv ($(VENV)): tools/mmsweep needs it and test/cli/cli_sweep.sh skips" >&2
 
 # The project venv: Debian's python3 (/usr/bin/python3) with its site
 # packages (dask, distributed, pandas, matplotlib) visible, plus the pinned
@@ -145,7 +145,7 @@ tools: $(addprefix $(B)/,$(TOOLS))
 # (firmware/robot_kerise.h, robots/kerise-v5.ini) and the UKMARSBOT build
 # for ORION with the host's planner (firmware/robot_ukmarsbot.h,
 # robots/ukmarsbot.ini), each plain ($(B)/NAME/mmsim) and sanitized
-# ($(B)/san-tools/NAME/mmsim, for test/cli_halfsize.sh, cli_ukbhost.sh).
+# ($(B)/san-tools/NAME/mmsim, for test/cli/cli_halfsize.sh, cli_ukbhost.sh).
 # Their own firmware objects come before the library, so the library's
 # are not linked. ROBOT_MMSIM: $(1) the build's name, $(2) its header.
 define ROBOT_MMSIM
@@ -188,16 +188,16 @@ $(B)/san/%.o: %.c | deps $(LCM_STAMP)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) -MMD -MP -c $< -o $@
 $(B)/libmm_san.a: $(patsubst %.c,$(B)/san/%.o,$(LIB_SRC))
 	@rm -f $@; ar rcs $@ $^
-$(B)/test/%: test/%.c $(B)/libmm_san.a test/wire_vectors.c
+$(B)/test/%: test/unit/%.c $(B)/libmm_san.a test/unit/wire_vectors.c
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(EXTRA_$*) $(WRAP_$*) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
-$(B)/test/test_wire_rx14: test/test_wire.c $(B)/libmm_san.a test/wire_vectors.c hal/wire/wire.c hal/wire/wire.h
+$(B)/test/test_wire_rx14: test/unit/test_wire.c $(B)/libmm_san.a test/unit/wire_vectors.c hal/wire/wire.c hal/wire/wire.h
 	@mkdir -p $(dir $@)
-	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $(MCU_RX_FLAGS) test/test_wire.c $(EXTRA_test_wire) hal/wire/wire.c \
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $(MCU_RX_FLAGS) test/unit/test_wire.c $(EXTRA_test_wire) hal/wire/wire.c \
 	  $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
 # The flood against its reference again with the AVR's 16x16 maximum, where
 # maze_cell_t is uint8_t (the host library is built for 32x32)
-FLOOD16_SRC := test/test_flood_ref.c firmware/flood.c firmware/maze.c sim/maze/mazefile.c sim/io/infile.c
+FLOOD16_SRC := test/unit/test_flood_ref.c firmware/flood.c firmware/maze.c sim/maze/mazefile.c sim/io/infile.c
 $(B)/test/test_flood_ref16: $(FLOOD16_SRC) $(wildcard firmware/*.h) sim/maze/mazefile.h sim/io/infile.h | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) -Ifirmware -Isim -O1 -g $(SAN) -DMAZE_MAX_SIZE=16 $(FLOOD16_SRC) -lcmocka -o $@
@@ -210,25 +210,25 @@ $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
 # mm, 64 mm of it ahead of the axle, taken on both sides; 10 mm wheels on a
 # 77.4 mm track, out to 43.7 mm, 34 mm across)
 UKB_BODY := -DBODY_X_MM=32.5 -DBODY_Y_MM=64.0 -DWHEEL_X_MM=43.7 -DWHEEL_Y_MM=17.0 -DDIAG_CLEAR_MM=3.0
-$(B)/test/test_slalom_ukb: test/test_slalom.c $(ukb_SAN_OBJ) $(B)/libmm_san.a
+$(B)/test/test_slalom_ukb: test/unit/test_slalom.c $(ukb_SAN_OBJ) $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) -include robot_ukmarsbot.h $(UKB_BODY) $< $(ukb_SAN_OBJ) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
 TESTS += $(B)/test/test_slalom_ukb
 
-# XTEST input for test/cli_connect.sh (libxtst-dev)
-$(B)/test/xinput: test/xinput.c | deps
+# XTEST input for test/cli/cli_connect.sh (libxtst-dev)
+$(B)/test/xinput: test/tools/xinput.c | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) -O1 $< -lX11 -lXtst -o $@
 
-# ---- our ARM test firmware (test/arm: register-level C, our own startup and
-# linker script) for the Cortex-M core's tests (test/test_armcore.c,
-# test/test_armimage.c), built with Debian's arm-none-eabi-gcc ----
+# ---- our ARM test firmware (test/firmware/arm: register-level C, our own startup and
+# linker script) for the Cortex-M core's tests (test/unit/test_armcore.c,
+# test/unit/test_armimage.c), built with Debian's arm-none-eabi-gcc ----
 ARM_CC    := arm-none-eabi-gcc
 ARM_FLAGS := -mcpu=cortex-m3 -mthumb -std=gnu99 -Os -g -Wall -Wextra -ffreestanding -nostdlib -Wl,--gc-sections
 ARM_TEST_ELFS := $(B)/arm/coretest.elf
-$(B)/arm/%.elf: test/arm/%.c test/arm/startup.c test/arm/armtest.h test/arm/link.ld | deps
+$(B)/arm/%.elf: test/firmware/arm/%.c test/firmware/arm/startup.c test/firmware/arm/armtest.h test/firmware/arm/link.ld | deps
 	@mkdir -p $(dir $@)
-	$(ARM_CC) $(ARM_FLAGS) -T test/arm/link.ld test/arm/startup.c $< -o $@
+	$(ARM_CC) $(ARM_FLAGS) -T test/firmware/arm/link.ld test/firmware/arm/startup.c $< -o $@
 arm-test-firmware: $(ARM_TEST_ELFS)
 .PHONY: arm-test-firmware
 
@@ -248,13 +248,13 @@ $(BULEBULE_ELF): | deps
 client-bulebule: $(BULEBULE_ELF)
 .PHONY: client-bulebule
 
-# Boots an AVR image in simavr and prints its UART0 (test/cli_mazerunner.sh)
-$(B)/test/mrc_boot: test/mrc_boot.c | deps
+# Boots an AVR image in simavr and prints its UART0 (test/cli/cli_mazerunner.sh)
+$(B)/test/mrc_boot: test/tools/mrc_boot.c | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) -O1 -g $(SAN) $< -lsimavr -lelf -o $@
 
 # Our sketches for the UKMARSBOT board's peripherals, one folder each in
-# test/arduino/board (rules below, by the clients')
+# test/firmware/arduino/board (rules below, by the clients')
 PERIPH_SKETCHES := MotorPwm Encoders AdcIr Switches Battery UartEcho Persist
 PERIPH_ELFS     := $(patsubst %,$(B)/arduino/nano/board/%.elf,$(PERIPH_SKETCHES) UartEcho9600)
 
@@ -268,7 +268,7 @@ test-run: $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/,$(TOOLS)) $(addprefix $(B)
 	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf $(B)/arduino/uno/OneCommand.elf $(B)/test/mrc_boot \
 	$(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf $(BOARD_SKETCHES) $(PERIPH_ELFS) $(ARM_TEST_ELFS) \
 	client-mazerunner firmware-ukmarsbot
-	@LSAN_OPTIONS=suppressions=$(CURDIR)/test/lsan-simavr.supp MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim HALF_MMSIM=$(B)/san-tools/half/mmsim UKB_MMSIM=$(B)/san-tools/ukb/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli_*.sh)
+	@LSAN_OPTIONS=suppressions=$(CURDIR)/test/tools/lsan-simavr.supp MMMAZE=$(B)/san-tools/mmmaze MMSIM=$(B)/san-tools/mmsim HALF_MMSIM=$(B)/san-tools/half/mmsim UKB_MMSIM=$(B)/san-tools/ukb/mmsim MMLOG=$(B)/san-tools/mmlog MMVIEW=$(B)/san-tools/mmview XINPUT=$(B)/test/xinput LCM_JAR=$(LCM_JAR) SHARED=$${SHARED:-../shared} bash test/run.sh $(TESTS) $(wildcard test/cli/cli_*.sh)
 
 # PlatformIO from PyPI in a venv, only to check that platformio.ini parses
 # (`pio run` cannot download its platforms here). No PyPI: the check skips.
@@ -283,7 +283,7 @@ AVR_FLAGS := -mmcu=atmega328p -DF_CPU=16000000L -Os -std=c99 -Wall -Wextra -DMAZ
 	-ffunction-sections -fdata-sections -Ifirmware -Ihal
 firmware-size: | deps
 	@mkdir -p $(B)/avr
-	$(AVR_CC) $(AVR_FLAGS) -Wl,--gc-sections $(FW_SRC) test/avr_main.c -o $(B)/avr/firmware.elf
+	$(AVR_CC) $(AVR_FLAGS) -Wl,--gc-sections $(FW_SRC) test/firmware/avr/avr_main.c -o $(B)/avr/firmware.elf
 	avr-size $(B)/avr/firmware.elf
 	@avr-nm -S --size-sort $(B)/avr/firmware.elf | grep -i ' [bd] ' | tail -8
 firmware: firmware-size arduino
@@ -292,7 +292,7 @@ firmware: firmware-size arduino
 # a user flashes; mmsim --board ukmarsbot --avr runs the ELF) and prints its
 # flash (limit UKB_FLASH_MAX: the Nano's 32 KB less its 2 KB bootloader) and
 # static RAM. UKB_SENSOR_BOARD=basic builds for the BASIC wall sensor board.
-# platformio.ini [env:ukmarsbot] builds the same files (UKB_SRC; test/cli_ukmarsbot_fw.sh).
+# platformio.ini [env:ukmarsbot] builds the same files (UKB_SRC; test/cli/cli_ukmarsbot_fw.sh).
 UKB_SRC       := $(FW_SRC) $(sort $(wildcard hal/ukmarsbot/*.c))
 UKB_FLASH_MAX := 30720
 UKB_SENSOR_BOARD ?= advanced
@@ -326,15 +326,15 @@ firmware-ukmarsbot: $(UKB_OUT)/mouse.elf $(UKB_OUT)/mouse.hex $(UKB_OUT)/stack.t
 	  if (f > max) { print "ukmarsbot: flash over the limit"; exit 1 } }'
 ukmarsbot-stack: $(UKB_OUT)/stack.txt
 	@echo "ukmarsbot: stack never used after a contest: $$(cat $<) B"
-# the source list, one a line (test/cli_ukmarsbot_fw.sh compares platformio.ini's)
+# the source list, one a line (test/cli/cli_ukmarsbot_fw.sh compares platformio.ini's)
 ukmarsbot-src:
 	@printf '%s\n' $(UKB_SRC)
 .PHONY: firmware-ukmarsbot ukmarsbot-src ukmarsbot-stack
-# The wire codec's shared vectors on the ATmega328P, run in simavr by test/cli_hil.sh.
-$(B)/avr/wire_selftest.elf: test/avr_wire.c test/wire_vectors.c hal/wire/wire.c hal/wire/wire.h | deps
+# The wire codec's shared vectors on the ATmega328P, run in simavr by test/cli/cli_hil.sh.
+$(B)/avr/wire_selftest.elf: test/firmware/avr/avr_wire.c test/unit/wire_vectors.c hal/wire/wire.c hal/wire/wire.h | deps
 	@mkdir -p $(dir $@)
 	$(AVR_CC) -mmcu=atmega328p -DF_CPU=16000000L -Os -std=c99 -Wall -Wextra -ffunction-sections -fdata-sections $(MCU_RX_FLAGS) \
-	  -Ihal/wire -Itest -Wl,--gc-sections test/avr_wire.c test/wire_vectors.c hal/wire/wire.c -o $@
+	  -Ihal/wire -Itest/unit -Wl,--gc-sections test/firmware/avr/avr_wire.c test/unit/wire_vectors.c hal/wire/wire.c -o $@
 
 # ---- Arduino builds: hal/arduino + firmware/ + Debian's arduino-core-avr, for the
 # Uno (ATmega328P) and the Mega 2560, every example sketch; flags as the core's
@@ -397,19 +397,19 @@ $(B)/arduino/$(1)/$(e).elf: hal/arduino/examples/$(e)/$(e).ino $(B)/arduino/$(1)
 endef
 $(foreach b,$(ARD_BOARDS),$(eval $(call ARD_BOARD_RULES,$(b))))
 ARD_ELFS := $(foreach b,$(ARD_BOARDS),$(foreach e,$(ARD_EXAMPLES),$(B)/arduino/$(b)/$(e).elf))
-# The processor-in-the-loop test image: the Mouse sketch on a 5x5 maze (test/cli_pil.sh).
+# The processor-in-the-loop test image: the Mouse sketch on a 5x5 maze (test/cli/cli_pil.sh).
 $(B)/arduino/%/Mouse-5x5.elf: hal/arduino/examples/Mouse/Mouse.ino $(B)/arduino/%/libmicromouse.a $(B)/arduino/%/core.a $(ARD_HDRS)
 	avr-g++ $(ARD_$*) $(ARD_COMMON) $(ARD_CXX) -DMM_MAZE_SIZE=5 -Wall -x c++ -include Arduino.h -c $< -o $@.o
 	avr-gcc $(ARD_$*) -Os -Wl,--gc-sections $@.o $(B)/arduino/$*/libmicromouse.a $(B)/arduino/$*/core.a -lm -o $@
-# A test sketch (test/cli_pil.sh): one motor command, then only reads, as a
+# A test sketch (test/cli/cli_pil.sh): one motor command, then only reads, as a
 # sketch of the paper's library that sets its motors once.
-$(B)/arduino/uno/OneCommand.elf: test/arduino/OneCommand/OneCommand.ino $(B)/arduino/uno/libmicromouse.a $(B)/arduino/uno/core.a $(ARD_HDRS)
+$(B)/arduino/uno/OneCommand.elf: test/firmware/arduino/OneCommand/OneCommand.ino $(B)/arduino/uno/libmicromouse.a $(B)/arduino/uno/core.a $(ARD_HDRS)
 	avr-g++ $(ARD_uno) $(ARD_COMMON) $(ARD_CXX) -Wall -x c++ -include Arduino.h -c $< -o $@.o
 	avr-gcc $(ARD_uno) -Os -Wl,--gc-sections $@.o $(B)/arduino/uno/libmicromouse.a $(B)/arduino/uno/core.a -lm -o $@
-# A test sketch (test/cli_pil.sh): the runner with a stand-in firmware that
+# A test sketch (test/cli/cli_pil.sh): the runner with a stand-in firmware that
 # calls hal_emitter / hal_ir_raw / hal_gyro_* / hal_battery_mv (protocol
 # version 2), framed and compat.
-IRPROBE_SRC := test/arduino/IrProbe/IrProbe.ino $(B)/arduino/uno/libmicromouse.a $(B)/arduino/uno/core.a $(ARD_HDRS)
+IRPROBE_SRC := test/firmware/arduino/IrProbe/IrProbe.ino $(B)/arduino/uno/libmicromouse.a $(B)/arduino/uno/core.a $(ARD_HDRS)
 $(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf: $(B)/arduino/uno/IrProbe%.elf: $(IRPROBE_SRC)
 	avr-g++ $(ARD_uno) $(ARD_COMMON) $(ARD_CXX) $(if $*,-DIRPROBE_COMPAT) -Wall -x c++ -include Arduino.h -c $< -o $@.o
 	avr-gcc $(ARD_uno) -Os -Wl,--gc-sections $@.o $(B)/arduino/uno/libmicromouse.a $(B)/arduino/uno/core.a -lm -o $@
@@ -450,13 +450,13 @@ mrc-images: $(MRC_ELFS) $(MRC_ELFS:.elf=.hex) $(B)/clients/mazerunner-core-uk-me
 SKETCH_BUILD = python3 tools/arduino-build $(1) --board nano -o $(2) --cache $(B)/arduino-build $(3)
 # MRC_BUILD (sketch folder, image): quiet (-w) as the IDE's default.
 MRC_BUILD = $(call SKETCH_BUILD,$(1),$(2),)
-# Our test sketches for the board emulation (test/cli_board.sh), one .ino each,
+# Our test sketches for the board emulation (test/cli/cli_board.sh), one .ino each,
 # built for the Nano with -Wall.
 board-sketches: $(BOARD_SKETCHES)
-$(B)/clients/board/%.elf: test/arduino/board/%.ino tools/arduino-build | deps
+$(B)/clients/board/%.elf: test/firmware/arduino/board/%.ino tools/arduino-build | deps
 	$(call SKETCH_BUILD,$<,$@,--warnings more)
 # EncPoll with INT0/INT1 in edge mode: the other half of the benchmark pair (bench/run.sh)
-$(B)/clients/board/EncPollEdge.elf: test/arduino/board/EncPoll.ino tools/arduino-build | deps
+$(B)/clients/board/EncPollEdge.elf: test/firmware/arduino/board/EncPoll.ino tools/arduino-build | deps
 	$(call SKETCH_BUILD,$<,$@,--warnings more -DENCPOLL_EDGE)
 $(B)/clients/mazerunner-core.elf: $(MRC_FILES) tools/arduino-build | deps
 	$(call MRC_BUILD,$(MRC_SRC),$@)
@@ -482,8 +482,8 @@ $(B)/clients/mazerunner-core-uk-mended.elf: $(B)/clients/mazerunner-core-uk-mend
 $(B)/clients/%.hex: $(B)/clients/%.elf
 	avr-objcopy -O ihex -R .eeprom $< $@
 
-# ---- our sketches for the UKMARSBOT board's peripherals (test/arduino/board,
-# test/cli_board_periph.sh): sketch folders built for the Nano by
+# ---- our sketches for the UKMARSBOT board's peripherals (test/firmware/arduino/board,
+# test/cli/cli_board_periph.sh): sketch folders built for the Nano by
 # tools/arduino-build, as the mazerunner-core images are. UartEcho9600:
 # UartEcho at 9600 baud.
 .PHONY: periph-sketches
@@ -491,8 +491,8 @@ periph-sketches: $(PERIPH_ELFS)
 	@avr-size $(PERIPH_ELFS)
 # PERIPH_SKETCH (image name, sketch folder, extra flags)
 define PERIPH_SKETCH
-$(B)/arduino/nano/board/$(1).elf: $(wildcard test/arduino/board/$(2)/*) tools/arduino-build | deps
-	$$(call SKETCH_BUILD,test/arduino/board/$(2),$$@,--warnings more $(3))
+$(B)/arduino/nano/board/$(1).elf: $(wildcard test/firmware/arduino/board/$(2)/*) tools/arduino-build | deps
+	$$(call SKETCH_BUILD,test/firmware/arduino/board/$(2),$$@,--warnings more $(3))
 endef
 $(foreach s,$(PERIPH_SKETCHES),$(eval $(call PERIPH_SKETCH,$(s),$(s),)))
 $(eval $(call PERIPH_SKETCH,UartEcho9600,UartEcho,-DECHO_BAUD=9600))
@@ -527,9 +527,9 @@ view: $(B)/mmview
 X_RUN = $(if $(DISPLAY),,xvfb-run -a -s '-screen 0 1024x768x24 -nolisten tcp')
 # The figures and pictures the docs show, written by the programs that make
 # them: docs/VALIDATION.md's --validate tables (tools/docs-validation;
-# test/cli_validate.sh checks them) and the README's three pictures with the
+# test/cli/cli_validate.sh checks them) and the README's three pictures with the
 # README's commands (docs-img, into IMG_DIR; without a display under
-# xvfb-run; test/cli_docs_img.sh checks them)
+# xvfb-run; test/cli/cli_docs_img.sh checks them)
 .PHONY: docs
 docs: $(B)/mmsim $(B)/mmview
 	python3 tools/docs-validation --mmsim $(B)/mmsim
@@ -601,7 +601,7 @@ FUZZ_LEN_wire     := 512
 FUZZ_LEN_lcmlog   := 16384
 FUZZ_LEN_config   := 4096
 FUZZ_LEN_robot    := 16384
-$(B)/fuzz/fuzz_%: test/fuzz_%.c $(LCM_STAMP) | deps
+$(B)/fuzz/fuzz_%: test/fuzz/fuzz_%.c $(LCM_STAMP) | deps
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(INC) $< $(FUZZ_SRC_$*) $(FUZZ_LIBS_$*) -o $@
 $(B)/fuzz/fuzz_config $(B)/fuzz/fuzz_robot: $(B)/gen/robot_paper.c
