@@ -6,8 +6,11 @@
 # the core in an archive so Tone.cpp, which also defines TIMER2_COMPA_vect,
 # stays out; -flto).
 # Two images: as shipped (config.h: EVENT_HOME, goal (1,0)) and -uk, set up
-# for a contest as its README says (config.h's EVENT = EVENT_UK, goal (7,7)),
-# on a copy in $(B). MRC_DIR: a clone of github.com/ukmars/mazerunner-core.
+# for a contest as its README says (EVENT_UK, goal (7,7)) by our header
+# test/firmware/mazerunner-core/config-robot-orion.h in place of the
+# client's in a copy of its files in $(B) (the client's own header is read
+# from its folder: MRC_ROBOT_CONFIG). MRC_DIR: a clone of
+# github.com/ukmars/mazerunner-core.
 MRC_DIR    ?= $(SHARED)/clients/mazerunner-core
 MRC_SKETCH := $(firstword $(wildcard $(MRC_DIR)/mazerunner-core/mazerunner-core.ino $(MRC_DIR)/mazerunner-core.ino))
 MRC_SRC    := $(dir $(MRC_SKETCH))
@@ -26,25 +29,20 @@ mrc-images: $(MRC_ELFS) $(MRC_ELFS:.elf=.hex) $(B)/clients/mazerunner-core-uk-me
 MRC_BUILD = $(call SKETCH_BUILD,$(1),$(2),)
 $(B)/clients/mazerunner-core.elf: $(MRC_FILES) tools/arduino-build | deps
 	$(call MRC_BUILD,$(MRC_SRC),$@)
-$(B)/clients/mazerunner-core-uk/mazerunner-core/config.h: $(MRC_FILES)
-	@rm -rf $(dir $@); mkdir -p $(dir $@); cp $(MRC_FILES) $(dir $@)
-	sed -i 's/^#define EVENT EVENT_HOME\b/#define EVENT EVENT_UK/' $@
-	@grep -q '^#define EVENT EVENT_UK' $@ || { echo "client-mazerunner: no '#define EVENT EVENT_HOME' line in config.h to set to EVENT_UK" >&2; exit 1; }
-$(B)/clients/mazerunner-core-uk.elf: $(B)/clients/mazerunner-core-uk/mazerunner-core/config.h tools/arduino-build
-	$(call MRC_BUILD,$(dir $<),$@)
-# For tests only, never shipped: the EVENT_UK copy with one firmware bug
-# mended. search_to() checks heading_to_smallest() for BLOCKED before it
-# checks for the target, and the target's cost is 0 with no smaller
-# neighbour, so every search panics "ERR: no route to target" on entering
-# its target (the simulator shows it). The mend: that
-# check only short of the target. The rest of the search (home, the map)
-# is tested with this image; the shipped ones stay untouched.
-$(B)/clients/mazerunner-core-uk-mended/mazerunner-core/mouse.h: $(B)/clients/mazerunner-core-uk/mazerunner-core/config.h
-	@rm -rf $(dir $@); mkdir -p $(dir $@); cp $(dir $<)*.h $(dir $<)*.ino $(dir $@)
-	sed -i 's/^\( *\)if (newHeading == BLOCKED) {/\1if (newHeading == BLOCKED \&\& m_location != target) {/' $@
-	@grep -q 'newHeading == BLOCKED && m_location != target' $@ || { echo "client-mazerunner: search_to's BLOCKED check not found in mouse.h" >&2; exit 1; }
+MRC_UK_DIR  := $(B)/clients/mazerunner-core-uk/mazerunner-core
+MRC_UK_CONF := test/firmware/mazerunner-core/config-robot-orion.h
+MRC_UK_DEFS := -D 'MRC_ROBOT_CONFIG="$(abspath $(MRC_SRC))/config-robot-orion.h"'
+$(MRC_UK_DIR)/config-robot-orion.h: $(MRC_FILES) $(MRC_UK_CONF)
+	@rm -rf $(dir $@); mkdir -p $(dir $@); cp $(filter-out %/config-robot-orion.h,$(MRC_FILES)) $(dir $@)
+	cp $(MRC_UK_CONF) $@
+$(B)/clients/mazerunner-core-uk.elf: $(MRC_UK_DIR)/config-robot-orion.h tools/arduino-build
+	$(call SKETCH_BUILD,$(dir $<),$@,$(MRC_UK_DEFS))
+# For tests only, never shipped: the -uk copy with one firmware bug mended
+# (test/firmware/mazerunner-core/mend-search-to.sh says which and why).
+$(B)/clients/mazerunner-core-uk-mended/mazerunner-core/mouse.h: $(MRC_UK_DIR)/config-robot-orion.h test/firmware/mazerunner-core/mend-search-to.sh
+	bash test/firmware/mazerunner-core/mend-search-to.sh $(MRC_UK_DIR) $(dir $@)
 $(B)/clients/mazerunner-core-uk-mended.elf: $(B)/clients/mazerunner-core-uk-mended/mazerunner-core/mouse.h tools/arduino-build
-	$(call MRC_BUILD,$(dir $<),$@)
+	$(call SKETCH_BUILD,$(dir $<),$@,$(MRC_UK_DEFS))
 $(B)/clients/%.hex: $(B)/clients/%.elf
 	avr-objcopy -O ihex -R .eeprom $< $@
 

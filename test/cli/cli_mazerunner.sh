@@ -31,8 +31,16 @@ grep -q "^SKIP" "$T/out" && bad "SKIP with the sources: $(cat "$T/out")" || ok "
 [ -x "$BOOT" ] || mk "$BOOT" >/dev/null 2>&1
 SRC=$(dirname "$(ls "$MRC_DIR"/mazerunner-core/mazerunner-core.ino "$MRC_DIR"/mazerunner-core.ino 2>/dev/null | head -1)")
 grep -q '^#define EVENT EVENT_HOME' "$SRC/config.h" && ok "the sources untouched (config.h: EVENT_HOME)" || bad "$SRC/config.h changed"
-grep -q '^#define EVENT EVENT_UK' "$B/clients/mazerunner-core-uk/mazerunner-core/config.h" \
-  && ok "the -uk copy's config.h: EVENT_UK" || bad "the -uk copy's config.h has no EVENT_UK"
+# the -uk copy: the client's files unchanged but its robot header, which
+# is ours (EVENT_UK, goal (7,7)); the images differing shows it took effect
+UK=$B/clients/mazerunner-core-uk/mazerunner-core changed=
+for f in "$SRC"/*.h "$SRC"/*.ino; do
+  n=$(basename "$f"); [ "$n" = config-robot-orion.h ] && continue
+  cmp -s "$f" "$UK/$n" || changed="$changed $n"
+done
+[ -z "$changed" ] && ok "the -uk copy: the client's files unchanged" || bad "the -uk copy changed:$changed"
+cmp -s test/firmware/mazerunner-core/config-robot-orion.h "$UK/config-robot-orion.h" && grep -q '^#define EVENT EVENT_UK' "$UK/config-robot-orion.h" \
+  && ok "the -uk copy: our config-robot-orion.h (EVENT_UK)" || bad "the -uk copy: its config-robot-orion.h is not ours"
 cmp -s "$B/clients/mazerunner-core.elf" "$B/clients/mazerunner-core-uk.elf" && bad "the two images are the same" || ok "the two images differ"
 
 for img in mazerunner-core mazerunner-core-uk; do
