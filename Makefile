@@ -10,7 +10,7 @@ all: tools
 help:
 	@echo "make sim         install what is missing, build every tool, run a contest (MAZE=, SEED=, DRIVER=, GUI=1)"
 	@echo "make test        install what is missing, build, run every test (one line each; the last: N passed, M failed, K skipped)"
-	@echo "make test ONLY=NAME   one test: test_wire or wire (test/unit/test_wire.c), cli_mms or mms (test/cli/cli_mms.sh)"
+	@echo "make test ONLY=NAME   one test: test_wire or wire (test/unit/test_wire.c), cli_contest or contest (test/cli/cli_contest.sh)"
 	@echo "make             build every tool: build/mmsim, build/mmmaze, build/mmlog, build/mmview"
 	@echo "make deps        install the Debian packages that are missing (idempotent)"
 	@echo "make docs        rewrite the figures and pictures the docs show (docs/VALIDATION.md, docs/img) from the code"
