@@ -93,7 +93,7 @@ parts of the run the firmware does not drive (bumping walls).
 
 The diagonal bound is never above the orthogonal one: its graph holds the
 orthogonal path (whole-cell straights and S90s of 90 mm radius), and its
-model is at least as favourable on it (test/cli_lower_bound.sh).
+model is at least as favourable on it (test/cli/cli_lower_bound.sh).
 """
 import argparse
 import json

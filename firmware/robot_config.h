@@ -2,7 +2,7 @@
  * unit and where it comes from. Port the firmware to another mouse by
  * changing this file only. Defaults: the paper's robot as simulated by
  * mmsim (robots/paper.ini holds the simulator's side of the same numbers;
- * test/robot_config_check.py checks that the two agree). */
+ * test/tools/robot_config_check.py checks that the two agree). */
 #ifndef ROBOT_CONFIG_H
 #define ROBOT_CONFIG_H
 
@@ -330,7 +330,7 @@
  * the body nearer the inner post. Checked at 300 and 350 mm/s by
  * sweeping the body (96 x 120 mm, wheels to +-52 mm) along the integrated
  * path against 12 mm posts and every wall the turn does not cross
- * (test/test_slalom.c; at 350): S90 85 (of 90: 22 mm from the wall
+ * (test/unit/test_slalom.c; at 350): S90 85 (of 90: 22 mm from the wall
  * ahead), F90 120 (of 270: 20 mm from the inner post; 160: 2.4 mm), F45
  * and D45 60 (of 127: 3.2 mm, as on the diagonal itself; 100: 0.3 mm),
  * V90 70 (of 127: 3.1 mm; 85: 0.2 mm). V90 is not driven (0): it joins

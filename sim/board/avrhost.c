@@ -307,7 +307,7 @@ int avrhost_put(avrhost_t *h, avrhost_image_t *img, const char *path, const char
     h->avr->frequency = f_cpu;
     h->avr->sleep = no_sleep;
     /* MMSIM_SIMAVR_LEVEL=1 leaves INT0/INT1's level check to simavr (every
-     * cycle while a pin is low): test/cli_board.sh compares the two */
+     * cycle while a pin is low): test/cli/cli_board.sh compares the two */
     const char *lvl = getenv("MMSIM_SIMAVR_LEVEL");
     if (!lvl || strcmp(lvl, "1") != 0) extint_level_init(&h->lvl, h->avr);
     h->cycles_per_step = (uint64_t)llround((double)f_cpu * step_s);

@@ -6,8 +6,8 @@ the mouse back on the start cell, facing north) and go again with the walls
 it learned. With an argument N: N runs to the goal, polling for Reset after
 each but the last; then it exits 0. With a second argument 'forever' it
 polls for Reset after the last run too, for ever. Tells on its stderr when
-it is at the goal and when it is done. Written for test/cli_mms.sh and
-test/cli_mms_view.sh."""
+it is at the goal and when it is done. Written for test/cli/cli_mms.sh and
+test/cli/cli_mms_view.sh."""
 import sys
 
 runs = int(sys.argv[1]) if len(sys.argv) > 1 else 2
@@ -77,7 +77,7 @@ def wait_for_reset():
 
 for r in range(runs):
     run()
-    print("resetwait: run %d at the goal" % (r + 1), file=sys.stderr, flush=True)  # for test/cli_mms_view.sh
+    print("resetwait: run %d at the goal" % (r + 1), file=sys.stderr, flush=True)  # for test/cli/cli_mms_view.sh
     if r + 1 < runs or forever:
         wait_for_reset()
 print("resetwait: done", file=sys.stderr, flush=True)

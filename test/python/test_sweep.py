@@ -1,4 +1,4 @@
-"""test_sweep.py - python/mmsim and tools/mmsweep (run by test/cli_sweep.sh).
+"""test_sweep.py - python/mmsim and tools/mmsweep (run by test/cli/cli_sweep.sh).
 
 A sweep on Dask gives the rows the same runs give one by one with mmsim;
 no run is lost or counted twice when a worker dies or the sweep is stopped

@@ -61,7 +61,7 @@ extern MMLink mmLink;
  * or hal_battery_mv. The callers hold a weak reference (the linker pulls
  * no archive member for one; it is NULL without that file) and call it
  * only if it is there: a firmware without those calls keeps every byte
- * of SRAM (the Uno Mouse: 1,536 B, test/cli_pil.sh). */
+ * of SRAM (the Uno Mouse: 1,536 B, test/cli/cli_pil.sh). */
 uint8_t hal_wire_extra(const wire_msg_t *m, wire_msg_t *out) __attribute__((weak));
 
 #endif

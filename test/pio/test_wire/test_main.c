@@ -2,7 +2,7 @@
  * PlatformIO's Unity (the cmocka suite in test/ is what `make test` runs). */
 #include <unity.h>
 
-#include "../../wire_vectors.c" /* the shared vectors, one file for every build */
+#include "../../unit/wire_vectors.c" /* the shared vectors, one file for every build */
 
 void setUp(void) {}
 void tearDown(void) {}

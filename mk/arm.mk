@@ -1,0 +1,13 @@
+# arm.mk - our ARM test firmware for the Cortex-M core (sim/arm).
+
+# ---- our ARM test firmware (test/firmware/arm: register-level C, our own startup and
+# linker script) for the Cortex-M core's tests (test/unit/test_armcore.c,
+# test/unit/test_armimage.c), built with Debian's arm-none-eabi-gcc ----
+ARM_CC    := arm-none-eabi-gcc
+ARM_FLAGS := -mcpu=cortex-m3 -mthumb -std=gnu99 -Os -g -Wall -Wextra -ffreestanding -nostdlib -Wl,--gc-sections
+ARM_TEST_ELFS := $(B)/arm/coretest.elf
+$(B)/arm/%.elf: test/firmware/arm/%.c test/firmware/arm/startup.c test/firmware/arm/armtest.h test/firmware/arm/link.ld | deps
+	@mkdir -p $(dir $@)
+	$(ARM_CC) $(ARM_FLAGS) -T test/firmware/arm/link.ld test/firmware/arm/startup.c $< -o $@
+arm-test-firmware: $(ARM_TEST_ELFS)
+.PHONY: arm-test-firmware

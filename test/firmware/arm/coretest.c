@@ -1,0 +1,252 @@
+/* coretest.c - scenarios for the Cortex-M core and its system peripherals,
+ * one chosen by the host through the fake peripheral (test/unit/test_armcore.c
+ * checks what each logs in the mailbox against the ARMv7-M ARM / PM0056). */
+#include <stdint.h>
+
+#include "armtest.h"
+
+__attribute__((section(".mailbox"))) mailbox_t mb;
+
+enum { PREEMPT = 1, PREEMPT_HW, TAILCHAIN, PRIMASK, BASEPRI, SYSTICK, COUNTFLAG, DWT, VTOR, WFI, FAULT_UNMAPPED, FAULT_PERIPH,
+       UNDEF, SVC, UNMODELED, BITBAND, CLOCK, CHURN, RESET, PRIGROUP_SUB, PRIGROUP_NONE, SPIN, STORM, PSP };
+
+#define ISB() __asm volatile("dsb\n isb" ::: "memory")
+static void log_ev(uint32_t e) { if (mb.nlog < MAILBOX_LOG) mb.log[mb.nlog++] = e; }
+static volatile uint32_t flag, ticks, acc;
+
+static void dwt_on(void) { SCB_DEMCR |= 1u << 24; DWT_CYCCNT = 0; DWT_CTRL |= 1u; }
+static void systick(uint32_t reload, uint32_t csr) { SYST_RVR = reload; SYST_CVR = 0; SYST_CSR = csr; }
+
+void systick_handler(void)
+{
+    switch (mb.scenario) {
+    case PREEMPT:
+        log_ev('S' << 8 | '1');
+        NVIC_ISPR0 = 1u;
+        ISB();
+        log_ev('S' << 8 | '2');
+        SYST_CSR = 0;
+        break;
+    case PREEMPT_HW:
+        log_ev('S' << 8 | '1');
+        FAKE_AFTER = 50;
+        while (!flag) {}
+        log_ev('S' << 8 | '2');
+        SYST_CSR = 0;
+        break;
+    case SYSTICK: case WFI:
+        if (ticks < 16) mb.v[ticks] = DWT_CYCCNT;
+        if (++ticks == (mb.scenario == WFI ? 50u : 5u)) SYST_CSR = 0;
+        break;
+    case STORM: ticks++; break;
+    case CHURN:
+        acc = acc * 31u + DWT_CYCCNT;
+        FAKE_AFTER = 333u + (acc & 255u);
+        ticks++;
+        break;
+    default: log_ev('S'); SYST_CSR = 0; break;
+    }
+}
+
+void irq0_handler(void)
+{
+    log_ev('I' << 8 | '0');
+    if (mb.scenario == PRIGROUP_SUB || mb.scenario == PRIGROUP_NONE) {
+        NVIC_ISPR0 = 2u;
+        ISB();
+        log_ev('I' << 8 | 'b');
+    }
+}
+void irq1_handler(void) { log_ev('I' << 8 | '1'); }
+void irq2_handler(void)
+{
+    FAKE_LOWER = 2;
+    flag = 1;
+    if (mb.scenario == CHURN) acc ^= DWT_CYCCNT;
+    else log_ev('I' << 8 | '2');
+}
+static void alt_systick(void) { log_ev('A'); SYST_CSR = 0; }
+void svc_handler(void)
+{
+    uint32_t lr, msp;
+    __asm volatile("mov %0, lr\n mrs %1, msp" : "=r"(lr), "=r"(msp));
+    if (mb.scenario == PSP) { mb.v[2] = lr, mb.v[3] = msp; log_ev('V'); return; }
+    log_ev('V'); SCB_ICSR = 1u << 28; ISB(); log_ev('v');
+}
+void pendsv_handler(void) { log_ev('P'); }
+
+static void prio_scenarios(uint32_t s)
+{
+    switch (s) {
+    case PREEMPT:
+        NVIC_IPR(0) = 0x00; SCB_SHPR(15) = 0xF0; NVIC_ISER0 = 1u;
+        systick(999, 7);
+        while (SYST_CSR & 1u) {}
+        break;
+    case PREEMPT_HW:
+        NVIC_IPR(2) = 0x00; SCB_SHPR(15) = 0xF0; NVIC_ISER0 = 4u;
+        systick(999, 7);
+        while (SYST_CSR & 1u) {}
+        break;
+    case TAILCHAIN:
+        __asm volatile("cpsid i");
+        NVIC_IPR(0) = 0x40; NVIC_IPR(1) = 0x40; NVIC_ISER0 = 3u; NVIC_ISPR0 = 3u;
+        __asm volatile("cpsie i");
+        ISB();
+        log_ev('M');
+        break;
+    case PRIMASK:
+        __asm volatile("cpsid i");
+        NVIC_ISER0 = 1u; NVIC_ISPR0 = 1u;
+        ISB();
+        for (volatile int i = 0; i < 100; i++) {}
+        mb.v[0] = mb.nlog, mb.v[1] = NVIC_ISPR0;
+        __asm volatile("cpsie i");
+        ISB();
+        log_ev('M');
+        break;
+    case BASEPRI:
+        NVIC_IPR(0) = 0x80; NVIC_IPR(1) = 0x20; NVIC_ISER0 = 3u;
+        __asm volatile("msr basepri, %0" :: "r"(0x40u));
+        NVIC_ISPR0 = 3u;
+        ISB();
+        log_ev('M' << 8 | '1');
+        __asm volatile("msr basepri, %0" :: "r"(0u));
+        ISB();
+        log_ev('M' << 8 | '2');
+        break;
+    case PRIGROUP_SUB: case PRIGROUP_NONE:
+        SCB_AIRCR = 0x05FA0000u | (s == PRIGROUP_SUB ? 5u : 0u) << 8; /* PRIGROUP 5: group [7:6], subpriority [5:0] */
+        NVIC_IPR(0) = 0x60; NVIC_IPR(1) = 0x40; NVIC_ISER0 = 3u;
+        NVIC_ISPR0 = 1u;
+        ISB();
+        log_ev('M');
+        break;
+    }
+}
+
+static void timer_scenarios(uint32_t s)
+{
+    switch (s) {
+    case SYSTICK:
+        dwt_on();
+        systick(99, 7);
+        while (ticks < 5) __asm volatile("wfi");
+        break;
+    case COUNTFLAG:
+        dwt_on();
+        systick(49, 1); /* HCLK / 8, no interrupt */
+        while (!(SYST_CSR & (1u << 16))) {}
+        mb.v[2] = DWT_CYCCNT;
+        while (!((mb.v[0] = SYST_CSR) & (1u << 16))) {}
+        mb.v[3] = DWT_CYCCNT;
+        mb.v[1] = SYST_CSR;
+        break;
+    case DWT: {
+        DWT_CTRL |= 1u; /* TRCENA clear: no counting */
+        uint32_t a = DWT_CYCCNT, b, c;
+        for (volatile int i = 0; i < 10; i++) {}
+        mb.v[0] = DWT_CYCCNT - a;
+        SCB_DEMCR |= 1u << 24;
+        __asm volatile("b 2f\n 2: ldr %0, [%2]\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n b 1f\n 1: ldr %1, [%2]"
+                       : "=&r"(b), "=&r"(c) : "r"(&DWT_CYCCNT));
+        mb.v[1] = c - b;
+        break;
+    }
+    case WFI:
+        dwt_on();
+        systick(999, 7);
+        while (ticks < 50) __asm volatile("wfi");
+        mb.v[15] = DWT_CYCCNT;
+        break;
+    case CLOCK:
+        for (volatile int i = 0; i < 100; i++) {}
+        FAKE_HCLK = 72000000u;
+        break;
+    case SPIN: case STORM: /* bench/armcore_speed.c: the loop alone, and under SysTick every 200 cycles */
+        if (s == STORM) systick(199, 7);
+        for (uint32_t i = 0;; i++) {
+            acc += i * i;
+            if ((i & 63u) == 0) ((volatile uint32_t *)mb.v)[0] = acc;
+        }
+    case CHURN:
+        dwt_on();
+        NVIC_IPR(2) = 0x40; NVIC_ISER0 = 4u;
+        systick(777, 7);
+        for (uint32_t i = 0;; i++) {
+            acc += i * i;
+            if ((i & 63u) == 0) ((volatile uint32_t *)mb.v)[0] = acc, ((volatile uint32_t *)mb.v)[1] = ticks;
+        }
+    }
+}
+
+static uint32_t vtable[64] __attribute__((aligned(256)));
+
+static void fault_scenarios(uint32_t s)
+{
+    extern void (*const vectors[])(void);
+    switch (s) {
+    case VTOR:
+        for (int i = 0; i < 59; i++) vtable[i] = (uint32_t)vectors[i];
+        vtable[15] = (uint32_t)alt_systick;
+        SCB_VTOR = (uint32_t)vtable;
+        mb.v[0] = SCB_VTOR;
+        systick(99, 7);
+        while (SYST_CSR & 1u) {}
+        break;
+    case FAULT_UNMAPPED:
+        __asm volatile("ldr r2, =0x60000000\n adr r1, 1f\n str r1, [%0]\n .balign 4\n 1: ldr r0, [r2]" :: "r"(&mb.v[0]) : "r0", "r1", "r2", "memory");
+        break;
+    case FAULT_PERIPH:
+        __asm volatile("ldr r2, =0x40010014\n adr r1, 1f\n str r1, [%0]\n .balign 4\n 1: ldr r0, [r2]" :: "r"(&mb.v[0]) : "r0", "r1", "r2", "memory");
+        break;
+    case UNDEF:
+        __asm volatile("adr r1, 1f\n str r1, [%0]\n .balign 4\n 1: udf #0" :: "r"(&mb.v[0]) : "r1", "memory");
+        break;
+    case SVC:
+        SCB_SHPR(11) = 0x80; SCB_SHPR(14) = 0xF0;
+        __asm volatile("svc #0");
+        log_ev('M');
+        break;
+    case UNMODELED:
+        mb.v[0] = REG(0x40007000u);
+        REG(0xE000EDF0u) = 0; /* DHCSR: debug, not modeled */
+        break;
+    case BITBAND:
+        mb.v[0] = 0;
+        REG(0x22000000u + ((uint32_t)&mb.v[0] - 0x20000000u) * 32u + 3u * 4u) = 1u;
+        mb.v[1] = REG(0x22000000u + ((uint32_t)&mb.v[0] - 0x20000000u) * 32u + 3u * 4u);
+        REG(0x42000000u + (FAKE_BASE + 0x18u - 0x40000000u) * 32u + 5u * 4u) = 1u;
+        mb.v[2] = REG(FAKE_BASE + 0x18u);
+        break;
+    case PSP: { /* thread mode on the process stack: the frame goes there, the handler runs on MSP, the return restores it */
+        static uint32_t pstack[64] __attribute__((aligned(8)));
+        uint32_t psp = (uint32_t)&pstack[64], ctrl, sp_after, r4 = 0x4444u;
+        __asm volatile("msr psp, %0\n mov r0, #2\n msr control, r0\n isb" :: "r"(psp) : "r0");
+        __asm volatile("mov r4, %1\n svc #1\n mov %0, r4" : "=r"(r4) : "r"(r4) : "r4");
+        __asm volatile("mrs %0, control\n mov %1, sp" : "=r"(ctrl), "=r"(sp_after));
+        mb.v[0] = ctrl, mb.v[1] = sp_after, mb.v[4] = psp, mb.v[5] = r4;
+        __asm volatile("mov r0, #0\n msr control, r0\n isb" ::: "r0");
+        break;
+    }
+    case RESET:
+        if (mb.step == 0) {
+            mb.step = 1;
+            SCB_AIRCR = 0x05FA0004u; /* SYSRESETREQ */
+            for (;;) {}
+        }
+        log_ev('R');
+        break;
+    }
+}
+
+int main(void)
+{
+    mb.scenario = FAKE_SCENARIO;
+    mb.v[14] = SCB_CPUID;
+    prio_scenarios(mb.scenario);
+    timer_scenarios(mb.scenario);
+    fault_scenarios(mb.scenario);
+    mb.done = 1;
+    return 0;
+}

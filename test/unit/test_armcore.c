@@ -1,0 +1,352 @@
+/* test_armcore.c - the Cortex-M core on libunicorn (sim/arm/armcore.c) and
+ * its system peripherals (cortexm.c) running our own register-level
+ * firmware (test/firmware/arm/coretest.c, built by the Makefile into
+ * build/arm/coretest.elf), one scenario per test, checked against the
+ * ARMv7-M ARM (DDI 0403E) and PM0056: preemption by priority (a pend
+ * through NVIC ISPR, an interrupt raised by a peripheral at a cycle),
+ * tail-chaining, PRIMASK, BASEPRI, priority grouping, SysTick's period and
+ * COUNTFLAG, DWT CYCCNT, VTOR, SVCall and PendSV, SYSRESETREQ, the
+ * bit-band aliases, unmodeled registers listed, faults ending the run with
+ * the faulting PC; WFI skipping and any chunking giving the same state.
+ * A fake peripheral at 0x40010000 stands for the MCU's (armtest.h). */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <unicorn/unicorn.h>
+
+#include "arm/armcore.h"
+#include "arm/armimage.h"
+#include "../test/firmware/arm/armtest.h"
+
+#define IMAGE "build/arm/coretest.elf"
+#define HSI_HZ 8000000u /* the STM32F1's clock out of reset (RM0008 7.2) */
+#define SRAM_BYTES (20u << 10)
+
+enum { PREEMPT = 1, PREEMPT_HW, TAILCHAIN, PRIMASK, BASEPRI, SYSTICK, COUNTFLAG, DWT, VTOR, WFI, FAULT_UNMAPPED, FAULT_PERIPH,
+       UNDEF, SVC, UNMODELED, BITBAND, CLOCK, CHURN, RESET, PRIGROUP_SUB, PRIGROUP_NONE, SPIN, STORM, PSP };
+
+typedef struct {
+    uint32_t scenario, scratch;
+    mmio_irq_t irq;
+    uint64_t now, fire_at, hclk_cycle;
+    mmio_clocks_t clocks;
+} fake_t;
+
+static mmio_status_t fake_read(void *self, uint32_t off, unsigned size, uint32_t *v)
+{
+    fake_t *f = self;
+    if (off == 0x00) { *v = f->scenario; return MMIO_OK; }
+    if (off == 0x18) { *v = f->scratch; return MMIO_OK; }
+    return off == 0x14 ? MMIO_BUS_FAULT : MMIO_UNMODELED;
+}
+
+static mmio_status_t fake_write(void *self, uint32_t off, unsigned size, uint32_t v)
+{
+    fake_t *f = self;
+    switch (off) {
+    case 0x04: f->irq.set(f->irq.ctx, v, true); return MMIO_OK;
+    case 0x08: f->irq.set(f->irq.ctx, v, false); return MMIO_OK;
+    case 0x0C: f->fire_at = f->now + v; return MMIO_OK;
+    case 0x10: f->clocks.hclk = v, f->hclk_cycle = f->now; return MMIO_OK;
+    case 0x14: return MMIO_BUS_FAULT;
+    case 0x18: f->scratch = v; return MMIO_OK;
+    default: return MMIO_UNMODELED;
+    }
+}
+
+static void fake_advance(void *self, uint64_t now)
+{
+    fake_t *f = self;
+    f->now = now;
+    if (f->fire_at <= now) f->fire_at = MMIO_NEVER, f->irq.set(f->irq.ctx, 2, true);
+}
+
+static uint64_t fake_next(void *self) { return ((fake_t *)self)->fire_at; }
+static const mmio_ops_t fake_ops = { "FAKE", fake_read, fake_write, fake_advance, fake_next, NULL };
+
+typedef struct {
+    armimage_t img;
+    fake_t fake;
+    armcore_t *core;
+} rig_t;
+
+static rig_t *rig_new(uint32_t scenario, bool no_skip)
+{
+    rig_t *r = calloc(1, sizeof *r);
+    char err[300];
+    assert_non_null(r);
+    if (armimage_read(IMAGE, armimage_mcu("stm32f103x8"), &r->img, err, sizeof err) != 0) fail_msg("%s (make %s)", err, IMAGE);
+    r->fake.scenario = scenario, r->fake.fire_at = MMIO_NEVER, r->fake.clocks.hclk = HSI_HZ;
+    mmio_region_t reg = { FAKE_BASE, 0x400, &fake_ops, &r->fake };
+    armcore_cfg_t cfg = { .image = &r->img, .regions = &reg, .nregions = 1, .clocks = &r->fake.clocks, .hclk_hz = HSI_HZ,
+                          .no_idle_skip = no_skip };
+    r->core = armcore_new(&cfg, err, sizeof err);
+    if (!r->core) fail_msg("%s", err);
+    r->fake.irq = armcore_irq(r->core);
+    return r;
+}
+
+static void rig_free(rig_t *r)
+{
+    armcore_free(r->core);
+    armimage_free(&r->img);
+    free(r);
+}
+
+static mailbox_t mailbox(rig_t *r)
+{
+    mailbox_t mb;
+    assert_int_equal(armcore_read(r->core, 0x20000000u, &mb, sizeof mb), 0);
+    return mb;
+}
+
+static void no_crash(rig_t *r)
+{
+    uint32_t pc;
+    const char *cause;
+    if (armcore_crashed(r->core, &pc, &cause)) fail_msg("crashed at 0x%08x: %s", pc, cause);
+}
+
+/* Run the scenario to cycles; its log must be want (n words). */
+static rig_t *run_log(uint32_t scenario, uint64_t cycles, const uint32_t *want, uint32_t n)
+{
+    rig_t *r = rig_new(scenario, false);
+    armcore_run_to(r->core, cycles);
+    no_crash(r);
+    mailbox_t mb = mailbox(r);
+    assert_int_equal(mb.done, 1);
+    for (uint32_t i = 0; i < n && i < mb.nlog; i++)
+        if (mb.log[i] != want[i]) fail_msg("scenario %u: event %u is 0x%x, want 0x%x", scenario, i, mb.log[i], want[i]);
+    assert_int_equal(mb.nlog, n);
+    return r;
+}
+
+#define EV(a, b) ((uint32_t)(a) << 8 | (uint32_t)(b))
+
+static void test_preempt_ispr(void **state)
+{
+    const uint32_t want[] = { EV('S', '1'), EV('I', '0'), EV('S', '2') };
+    rig_free(run_log(PREEMPT, 20000, want, 3));
+}
+
+static void test_preempt_peripheral(void **state)
+{
+    const uint32_t want[] = { EV('S', '1'), EV('I', '2'), EV('S', '2') };
+    rig_free(run_log(PREEMPT_HW, 20000, want, 3));
+}
+
+static void test_tail_chain(void **state)
+{
+    const uint32_t want[] = { EV('I', '0'), EV('I', '1'), 'M' };
+    rig_t *r = run_log(TAILCHAIN, 20000, want, 3);
+    assert_true(armcore_stats(r->core).tail_chains >= 1);
+    rig_free(r);
+}
+
+static void test_primask(void **state)
+{
+    const uint32_t want[] = { EV('I', '0'), 'M' };
+    rig_t *r = run_log(PRIMASK, 20000, want, 2);
+    mailbox_t mb = mailbox(r);
+    assert_int_equal(mb.v[0], 0); /* nothing taken while masked */
+    assert_int_equal(mb.v[1], 1); /* IRQ0 pending in ISPR meanwhile */
+    rig_free(r);
+}
+
+static void test_basepri(void **state)
+{
+    const uint32_t want[] = { EV('I', '1'), EV('M', '1'), EV('I', '0'), EV('M', '2') };
+    rig_free(run_log(BASEPRI, 20000, want, 4));
+}
+
+static void test_prigroup(void **state)
+{
+    const uint32_t sub[] = { EV('I', '0'), EV('I', 'b'), EV('I', '1'), 'M' };  /* same group: no preemption */
+    const uint32_t none[] = { EV('I', '0'), EV('I', '1'), EV('I', 'b'), 'M' }; /* 0x40 preempts 0x60 */
+    rig_free(run_log(PRIGROUP_SUB, 20000, sub, 4));
+    rig_free(run_log(PRIGROUP_NONE, 20000, none, 4));
+}
+
+static void test_systick_period(void **state)
+{
+    rig_t *r = run_log(SYSTICK, 20000, NULL, 0);
+    mailbox_t mb = mailbox(r);
+    for (int i = 1; i < 5; i++) assert_int_equal(mb.v[i] - mb.v[i - 1], 100); /* RVR + 1 cycles (B3.3.1) */
+    assert_int_equal(mb.v[14], 0x411FC231u);                                   /* CPUID (PM0056 4.4.1) */
+    rig_free(r);
+}
+
+static void test_countflag(void **state)
+{
+    rig_t *r = run_log(COUNTFLAG, 20000, NULL, 0);
+    mailbox_t mb = mailbox(r);
+    assert_true(mb.v[0] & (1u << 16));    /* set at the wrap */
+    assert_false(mb.v[1] & (1u << 16));   /* cleared by the read */
+    int64_t d = (int64_t)(mb.v[3] - mb.v[2]) - 400; /* (RVR + 1) x 8 cycles at HCLK/8, within a poll loop */
+    if (d < -12 || d > 12) fail_msg("COUNTFLAG %u cycles apart, want 400", mb.v[3] - mb.v[2]);
+    rig_free(r);
+}
+
+static void test_dwt(void **state)
+{
+    rig_t *r = run_log(DWT, 20000, NULL, 0);
+    mailbox_t mb = mailbox(r);
+    assert_int_equal(mb.v[0], 0);  /* DEMCR.TRCENA clear: CYCCNT stands */
+    assert_int_equal(mb.v[1], 12); /* ldr, 10 nops, b: the second ldr's block starts 12 cycles later */
+    rig_free(r);
+}
+
+static void test_vtor(void **state)
+{
+    const uint32_t want[] = { 'A' };
+    rig_t *r = run_log(VTOR, 20000, want, 1);
+    mailbox_t mb = mailbox(r);
+    assert_true(mb.v[0] >= 0x20000000u && (mb.v[0] & 0xFFu) == 0);
+    rig_free(r);
+}
+
+static void test_svc_pendsv(void **state)
+{
+    const uint32_t want[] = { 'V', 'v', 'P', 'M' }; /* PendSV (0xF0) waits for SVCall (0x80), then tail-chains */
+    rig_free(run_log(SVC, 20000, want, 4));
+}
+
+static void test_process_stack(void **state)
+{
+    const uint32_t want[] = { 'V' };
+    rig_t *r = run_log(PSP, 20000, want, 1);
+    mailbox_t mb = mailbox(r);
+    assert_int_equal(mb.v[2], 0xFFFFFFFDu); /* EXC_RETURN: thread mode, PSP (B1.5.8) */
+    assert_true(mb.v[3] > 0x20004000u);      /* the handler on the main stack */
+    assert_int_equal(mb.v[0], 2);            /* CONTROL.SPSEL back after the return */
+    assert_true(mb.v[1] <= mb.v[4] && mb.v[4] - mb.v[1] < 64); /* thread code's SP: the process stack, the frame popped */
+    assert_int_equal(mb.v[5], 0x4444u);
+    rig_free(r);
+}
+
+static void test_reset_request(void **state)
+{
+    const uint32_t want[] = { 'R' };
+    rig_free(run_log(RESET, 20000, want, 1));
+}
+
+static void test_bitband(void **state)
+{
+    rig_t *r = run_log(BITBAND, 20000, NULL, 0);
+    mailbox_t mb = mailbox(r);
+    assert_int_equal(mb.v[0], 8);
+    assert_int_equal(mb.v[1], 1);
+    assert_int_equal(mb.v[2], 0x20);
+    rig_free(r);
+}
+
+static void test_unmodeled(void **state)
+{
+    rig_t *r = run_log(UNMODELED, 20000, NULL, 0);
+    int n, seen = 0;
+    const armcore_unmodeled_t *u = armcore_unmodeled(r->core, &n);
+    for (int i = 0; i < n; i++) {
+        if (u[i].addr == 0x40007000u && u[i].reads == 1 && !strcmp(u[i].region, "")) seen |= 1;
+        if (u[i].addr == 0xE000EDF0u && u[i].writes == 1 && !strcmp(u[i].region, "PPB")) seen |= 2;
+    }
+    assert_int_equal(seen, 3);
+    rig_free(r);
+}
+
+static void crash_at(uint32_t scenario, const char *want)
+{
+    rig_t *r = rig_new(scenario, false);
+    uint32_t pc;
+    const char *cause;
+    assert_int_equal(armcore_run_to(r->core, 20000), 1);
+    assert_int_equal(armcore_crashed(r->core, &pc, &cause), 1);
+    mailbox_t mb = mailbox(r);
+    /* the PC: the faulting instruction's (an exception unicorn raises) or its translated block's start (a bad access) */
+    if (pc > mb.v[0] || mb.v[0] - pc > 16 || !strstr(cause, want)) fail_msg("crash at 0x%08x (%s), want 0x%08x (%s)", pc, cause, mb.v[0], want);
+    assert_int_equal(armcore_run_to(r->core, 40000), 1); /* never run again */
+    rig_free(r);
+}
+
+static void test_faults(void **state)
+{
+    crash_at(FAULT_UNMAPPED, "0x60000000");
+    crash_at(FAULT_PERIPH, "0x40010014");
+    crash_at(UNDEF, "UNDEFINSTR");
+}
+
+static void test_clock_switch(void **state)
+{
+    rig_t *r = run_log(CLOCK, 20000, NULL, 0);
+    uint64_t c = armcore_cycles(r->core), s = r->fake.hclk_cycle;
+    assert_true(s > 100 && s < c);
+    assert_int_equal(armcore_time_ps(r->core), s * 125000u + (c - s) * 1000000000000ull / 72000000u);
+    rig_free(r);
+}
+
+/* The state a determinism test compares: cycles, registers, SRAM. */
+static void snapshot(rig_t *r, uint8_t *out)
+{
+    static const int regs[] = { UC_ARM_REG_R0, UC_ARM_REG_R1, UC_ARM_REG_R2, UC_ARM_REG_R3, UC_ARM_REG_R4, UC_ARM_REG_R5,
+        UC_ARM_REG_R6, UC_ARM_REG_R7, UC_ARM_REG_R8, UC_ARM_REG_R12, UC_ARM_REG_MSP, UC_ARM_REG_PC, UC_ARM_REG_IPSR };
+    uint64_t c = armcore_cycles(r->core);
+    memcpy(out, &c, 8);
+    for (size_t i = 0; i < sizeof regs / sizeof regs[0]; i++) {
+        uint32_t v = armcore_reg(r->core, regs[i]);
+        memcpy(out + 8 + 4 * i, &v, 4);
+    }
+    assert_int_equal(armcore_read(r->core, 0x20000000u, out + 64, SRAM_BYTES), 0);
+}
+
+static void test_wfi_skip_same_state(void **state)
+{
+    static uint8_t a[64 + SRAM_BYTES], b[64 + SRAM_BYTES];
+    rig_t *r = rig_new(WFI, false), *q = rig_new(WFI, true);
+    armcore_run_to(r->core, 80000), armcore_run_to(q->core, 80000);
+    no_crash(r), no_crash(q);
+    mailbox_t mb = mailbox(r);
+    assert_int_equal(mb.done, 1);
+    for (int i = 1; i < 15; i++) assert_int_equal(mb.v[i] - mb.v[i - 1], 1000); /* v[15]: main's own read */
+    assert_true(armcore_stats(r->core).idle_cycles > 40000);
+    snapshot(r, a), snapshot(q, b);
+    assert_memory_equal(a, b, sizeof a);
+    rig_free(r), rig_free(q);
+}
+
+static void test_chunking_same_state(void **state)
+{
+    static uint8_t a[64 + SRAM_BYTES], b[64 + SRAM_BYTES];
+    const uint64_t end = 3000000;
+    rig_t *r = rig_new(CHURN, false), *q = rig_new(CHURN, false);
+    armcore_run_to(r->core, end);
+    uint32_t x = 12345;
+    for (uint64_t t = 0; t < end;) {
+        x = x * 1103515245u + 12345u;
+        t += 1 + (x >> 16) % 3000;
+        armcore_run_to(q->core, t < end ? t : end);
+    }
+    no_crash(r), no_crash(q);
+    assert_true(mailbox(r).v[1] > 1000); /* SysTick and the peripheral's interrupts kept coming */
+    assert_true(armcore_stats(q->core).splits > 100);
+    snapshot(r, a), snapshot(q, b);
+    assert_memory_equal(a, b, sizeof a);
+    rig_free(r), rig_free(q);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_preempt_ispr), cmocka_unit_test(test_preempt_peripheral), cmocka_unit_test(test_tail_chain),
+        cmocka_unit_test(test_primask), cmocka_unit_test(test_basepri), cmocka_unit_test(test_prigroup),
+        cmocka_unit_test(test_systick_period), cmocka_unit_test(test_countflag), cmocka_unit_test(test_dwt),
+        cmocka_unit_test(test_vtor), cmocka_unit_test(test_svc_pendsv), cmocka_unit_test(test_process_stack), cmocka_unit_test(test_reset_request),
+        cmocka_unit_test(test_bitband), cmocka_unit_test(test_unmodeled), cmocka_unit_test(test_faults),
+        cmocka_unit_test(test_clock_switch), cmocka_unit_test(test_wfi_skip_same_state), cmocka_unit_test(test_chunking_same_state),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
