@@ -25,6 +25,7 @@
 #include "../test/arm/armtest.h"
 
 #define IMAGE "build/arm/coretest.elf"
+#define FPU_IMAGE "build/arm/fputest.elf"
 #define HSI_HZ 8000000u /* the STM32F1's clock out of reset (RM0008 7.2) */
 #define SRAM_BYTES (20u << 10)
 
@@ -76,12 +77,12 @@ typedef struct {
     armcore_t *core;
 } rig_t;
 
-static rig_t *rig_new(uint32_t scenario, bool no_skip)
+static rig_t *rig_image(const char *image, const char *mcu, uint32_t scenario, bool no_skip)
 {
     rig_t *r = calloc(1, sizeof *r);
     char err[300];
     assert_non_null(r);
-    if (armimage_read(IMAGE, armimage_mcu("stm32f103x8"), &r->img, err, sizeof err) != 0) fail_msg("%s (make %s)", err, IMAGE);
+    if (armimage_read(image, armimage_mcu(mcu), &r->img, err, sizeof err) != 0) fail_msg("%s (make %s)", err, image);
     r->fake.scenario = scenario, r->fake.fire_at = MMIO_NEVER, r->fake.clocks.hclk = HSI_HZ;
     mmio_region_t reg = { FAKE_BASE, 0x400, &fake_ops, &r->fake };
     armcore_cfg_t cfg = { .image = &r->img, .regions = &reg, .nregions = 1, .clocks = &r->fake.clocks, .hclk_hz = HSI_HZ,
@@ -91,6 +92,8 @@ static rig_t *rig_new(uint32_t scenario, bool no_skip)
     r->fake.irq = armcore_irq(r->core);
     return r;
 }
+
+static rig_t *rig_new(uint32_t scenario, bool no_skip) { return rig_image(IMAGE, "stm32f103x8", scenario, no_skip); }
 
 static void rig_free(rig_t *r)
 {
@@ -338,6 +341,44 @@ static void test_chunking_same_state(void **state)
     rig_free(r), rig_free(q);
 }
 
+/* The M4F's FP context (fputest.c): thread S0-S15 and FPSCR survive IRQ0, whose own survive IRQ1 preempting it (B1.5.7). */
+static void test_fpu_extended_frame(void **state)
+{
+    rig_t *r = rig_image(FPU_IMAGE, "stm32f405xg", 1, false);
+    armcore_run_to(r->core, 20000);
+    no_crash(r);
+    mailbox_t mb = mailbox(r);
+    assert_int_equal(mb.done, 1);
+    assert_int_equal(mb.v[15], 0xC0000000u);         /* FPCCR at reset: ASPEN, LSPEN */
+    assert_int_equal(mb.v[0] & 4u, 4u);               /* CONTROL.FPCA after the thread's first FP instruction */
+    assert_int_equal(mb.v[2] & 4u, 0u);               /* cleared on entry */
+    assert_int_equal(mb.v[3], 0xFFFFFFE9u);           /* EXC_RETURN: thread, MSP, extended frame */
+    assert_true(mb.v[6] >= mb.v[9] + 0x20u && mb.v[6] < mb.v[9] + 0x60u && !(mb.v[6] & 7u)); /* FPCAR: in the frame above the handler's SP */
+    assert_int_equal(mb.v[12], 0x3F800000u);          /* at FPCAR: the thread's S0 */
+    assert_int_equal(mb.v[13], 0x03C00000u);          /* at FPCAR + 0x40: its FPSCR */
+    assert_int_equal(mb.v[4] & 4u, 4u);               /* the handler's own FP use sets it again */
+    assert_int_equal(mb.v[5], 0xFFFFFFE1u);           /* IRQ1 preempting it: handler, extended frame */
+    for (uint32_t i = 0; i < 16; i++) {
+        uint32_t want_irq0 = 0xC0000001u + i;
+        if (mb.log[16 + i] != want_irq0) fail_msg("IRQ0's S%u is 0x%08x after IRQ1, want 0x%08x", i, mb.log[16 + i], want_irq0);
+    }
+    static const uint32_t thread_vals[16] = { 0x3F800000, 0x40000000, 0x40400000, 0x40800000, 0x40A00000, 0x40C00000, 0x40E00000,
+        0x41000000, 0x41100000, 0x41200000, 0x41300000, 0x41400000, 0x41500000, 0x41600000, 0x41700000, 0x41800000 };
+    for (uint32_t i = 0; i < 16; i++)
+        if (mb.log[i] != thread_vals[i]) fail_msg("thread S%u is 0x%08x after the interrupts, want 0x%08x", i, mb.log[i], thread_vals[i]);
+    assert_int_equal(mb.v[10], 0x00800000u);          /* IRQ0's FPSCR after IRQ1 */
+    assert_int_equal(mb.v[8], 0x03C00000u);           /* the thread's FPSCR */
+    assert_int_equal(mb.v[1] & 4u, 4u);               /* FPCA back after the return (NOT EXC_RETURN[4]) */
+    rig_free(r);
+    r = rig_image(FPU_IMAGE, "stm32f405xg", 2, false); /* no FP instruction before the interrupt: the basic frame */
+    armcore_run_to(r->core, 20000);
+    no_crash(r);
+    mb = mailbox(r);
+    assert_int_equal(mb.v[3], 0xFFFFFFF9u);
+    assert_int_equal(mb.v[1] & 4u, 0u);
+    rig_free(r);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -346,7 +387,7 @@ int main(void)
         cmocka_unit_test(test_systick_period), cmocka_unit_test(test_countflag), cmocka_unit_test(test_dwt),
         cmocka_unit_test(test_vtor), cmocka_unit_test(test_svc_pendsv), cmocka_unit_test(test_process_stack), cmocka_unit_test(test_reset_request),
         cmocka_unit_test(test_bitband), cmocka_unit_test(test_unmodeled), cmocka_unit_test(test_faults),
-        cmocka_unit_test(test_clock_switch), cmocka_unit_test(test_wfi_skip_same_state), cmocka_unit_test(test_chunking_same_state),
+        cmocka_unit_test(test_clock_switch), cmocka_unit_test(test_fpu_extended_frame), cmocka_unit_test(test_wfi_skip_same_state), cmocka_unit_test(test_chunking_same_state),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -22,6 +22,10 @@
 #define XPSR_ALIGN (1u << 9)       /* the frame was aligned to 8 bytes (B1.5.7) */
 #define CCR_STKALIGN (1u << 9)
 #define CONTROL_SPSEL 2u
+#define CONTROL_FPCA 4u            /* an FP context is active (B1.4.4) */
+#define BASIC_FRAME_BYTES 32u      /* R0-R3, R12, LR, return address, xPSR (B1.5.7) */
+#define FP_FRAME_BYTES 0x68u       /* the extended frame: the basic one, S0-S15, FPSCR, a reserved word (B1.5.7) */
+#define EXC_RETURN_BASIC 0x10u     /* EXC_RETURN bit 4: 1 a basic frame, 0 an extended one (B1.5.8) */
 
 enum { STOP_NONE, STOP_TAKE, STOP_SPLIT, STOP_INTR, STOP_FAULT };
 
@@ -408,7 +412,32 @@ static const char *exc_name(unsigned exc)
     return exc < 7 ? names[exc] : "exception";
 }
 
-/* Exception exc taken with ret the address to return to: the 8-word frame pushed, LR = EXC_RETURN, the handler's PC. */
+/* S0-S15 (as D0-D7: S2n the low word of Dn) and FPSCR into or out of an extended frame f at 0x20 and 0x60 (B1.5.7). */
+static void fp_save(armcore_t *c, uint8_t *f)
+{
+    static const int rd[] = { UC_ARM_REG_D0, UC_ARM_REG_D1, UC_ARM_REG_D2, UC_ARM_REG_D3, UC_ARM_REG_D4, UC_ARM_REG_D5,
+                              UC_ARM_REG_D6, UC_ARM_REG_D7, UC_ARM_REG_FPSCR };
+    uint64_t d[8] = { 0 };
+    uint32_t fpscr = 0;
+    void *p[9];
+    for (int i = 0; i < 8; i++) p[i] = &d[i];
+    p[8] = &fpscr;
+    uc_reg_read_batch(c->uc, (int *)rd, p, 9);
+    for (int i = 0; i < 8; i++) wr32(f + 32 + 8 * i, (uint32_t)d[i]), wr32(f + 36 + 8 * i, (uint32_t)(d[i] >> 32));
+    wr32(f + 0x60, fpscr), wr32(f + 0x64, 0);
+}
+
+static void fp_load(armcore_t *c, const uint8_t *f)
+{
+    for (int i = 0; i < 8; i++) {
+        uint64_t d = (uint64_t)rd32(f + 36 + 8 * i) << 32 | rd32(f + 32 + 8 * i);
+        uc_reg_write(c->uc, UC_ARM_REG_D0 + i, &d);
+    }
+    set_reg(c, UC_ARM_REG_FPSCR, rd32(f + 0x60));
+}
+
+/* Exception exc taken with ret the address to return to: the frame pushed (the extended one when CONTROL.FPCA on an
+ * FPU: its S0-S15 and FPSCR saved at entry, see fp_save), LR = EXC_RETURN, the handler's PC. */
 static void enter(armcore_t *c, unsigned exc, uint32_t ret)
 {
     static const int rd[] = { UC_ARM_REG_R0, UC_ARM_REG_R1, UC_ARM_REG_R2, UC_ARM_REG_R3, UC_ARM_REG_R12, UC_ARM_REG_LR,
@@ -416,30 +445,32 @@ static void enter(armcore_t *c, unsigned exc, uint32_t ret)
     uint32_t v[11], handler_pc;
     regs_read(c, rd, v, 11);
     uint32_t ipsr = v[6] & 0x1FFu, ctrl = v[7], apsr = v[8];
-    bool psp = !ipsr && (ctrl & CONTROL_SPSEL);
-    uint32_t sp = psp ? v[9] : v[10], xpsr = (apsr & 0xF80F0000u) | XPSR_T | ipsr;
-    if ((c->cm.ccr & CCR_STKALIGN) && (sp & 4u)) sp -= 4, xpsr |= XPSR_ALIGN;
-    sp -= 32;
-    uint8_t f[32];
+    bool psp = !ipsr && (ctrl & CONTROL_SPSEL), fp = c->mcu->fpu && (ctrl & CONTROL_FPCA);
+    uint32_t sp = psp ? v[9] : v[10], xpsr = (apsr & 0xF80F0000u) | XPSR_T | ipsr, size = fp ? FP_FRAME_BYTES : BASIC_FRAME_BYTES;
+    if ((fp || (c->cm.ccr & CCR_STKALIGN)) && (sp & 4u)) sp -= 4, xpsr |= XPSR_ALIGN; /* an extended frame is always aligned */
+    sp -= size;
+    uint8_t f[FP_FRAME_BYTES];
     for (int i = 0; i < 6; i++) wr32(f + 4 * i, v[i]);
     wr32(f + 24, ret), wr32(f + 28, xpsr);
+    if (fp) fp_save(c, f), c->cm.fpcar = sp + BASIC_FRAME_BYTES;
     if (exc >= EXC_HARDFAULT && exc <= EXC_USAGEFAULT) {
         char m[120];
         snprintf(m, sizeof m, "%s taken (CFSR 0x%08x, HFSR 0x%08x)", exc_name(exc), c->cm.cfsr, c->cm.hfsr);
         crash(c, ret, m);
         return;
     }
-    if (!mem_rw(c, sp, f, 32, true)) {
+    if (!mem_rw(c, sp, f, size, true)) {
         char m[120];
         snprintf(m, sizeof m, "HardFault: stacking for %s at SP 0x%08x outside SRAM (STKERR)", exc == EXC_SVCALL ? "SVCall" : "an exception", sp);
         crash(c, ret, m);
         return;
     }
     if (!vector(c, exc, &handler_pc)) return;
-    if (psp) set_reg(c, UC_ARM_REG_PSP, sp), set_reg(c, UC_ARM_REG_CONTROL, ctrl & ~CONTROL_SPSEL);
+    if (psp) set_reg(c, UC_ARM_REG_PSP, sp);
     else set_reg(c, UC_ARM_REG_MSP, sp);
+    if (psp || c->mcu->fpu) set_reg(c, UC_ARM_REG_CONTROL, ctrl & ~(CONTROL_SPSEL | CONTROL_FPCA)); /* B1.5.6: FPCA cleared */
     set_ipsr(c, exc, apsr);
-    set_reg(c, UC_ARM_REG_LR, ipsr ? 0xFFFFFFF1u : psp ? 0xFFFFFFFDu : 0xFFFFFFF9u);
+    set_reg(c, UC_ARM_REG_LR, (ipsr ? 0xFFFFFFF1u : psp ? 0xFFFFFFFDu : 0xFFFFFFF9u) & ~(fp ? EXC_RETURN_BASIC : 0u));
     cortexm_take(&c->cm, exc);
     c->pc = handler_pc & ~1u;
     c->cyc += ARMCORE_EXC_ENTRY_CYCLES;
@@ -449,28 +480,31 @@ static void enter(armcore_t *c, unsigned exc, uint32_t ret)
 /* The frame popped per EXC_RETURN: to thread or handler mode, from MSP or PSP. */
 static void unstack(armcore_t *c, uint32_t excret)
 {
-    bool psp = excret & 4u, thread = excret & 8u;
-    uint32_t sp = reg(c, psp ? UC_ARM_REG_PSP : UC_ARM_REG_MSP), msp = reg(c, UC_ARM_REG_MSP);
-    uint8_t f[32];
+    bool psp = excret & 4u, thread = excret & 8u, fp = !(excret & EXC_RETURN_BASIC);
+    uint32_t sp = reg(c, psp ? UC_ARM_REG_PSP : UC_ARM_REG_MSP), msp = reg(c, UC_ARM_REG_MSP), size = fp ? FP_FRAME_BYTES : BASIC_FRAME_BYTES;
+    uint8_t f[FP_FRAME_BYTES];
     char m[120];
-    if (!mem_rw(c, sp, f, 32, false)) {
+    if (!mem_rw(c, sp, f, size, false)) {
         snprintf(m, sizeof m, "HardFault: unstacking at SP 0x%08x outside SRAM (UNSTKERR)", sp);
         crash(c, c->pc, m);
         return;
     }
-    uint32_t xpsr = rd32(f + 28), ret = rd32(f + 24), nsp = sp + 32u + ((xpsr & XPSR_ALIGN) ? 4u : 0u);
+    uint32_t xpsr = rd32(f + 28), ret = rd32(f + 24), nsp = sp + size + ((xpsr & XPSR_ALIGN) ? 4u : 0u);
     if (!(xpsr & XPSR_T)) {
         snprintf(m, sizeof m, "HardFault: return to 0x%08x with the frame's Thumb bit clear (UsageFault INVSTATE)", ret);
         crash(c, ret, m);
         return;
     }
+    if (fp) fp_load(c, f);
     set_ipsr(c, thread ? 0 : (xpsr & 0x1FFu), xpsr);
+    uint32_t ctrl = (reg(c, UC_ARM_REG_CONTROL) & ~CONTROL_FPCA) | (fp ? CONTROL_FPCA : 0u); /* B1.5.8: FPCA = NOT EXC_RETURN[4] */
     if (psp) {
         set_reg(c, UC_ARM_REG_MSP, msp);
-        set_reg(c, UC_ARM_REG_CONTROL, reg(c, UC_ARM_REG_CONTROL) | CONTROL_SPSEL);
+        set_reg(c, UC_ARM_REG_CONTROL, ctrl | CONTROL_SPSEL);
         set_reg(c, UC_ARM_REG_PSP, nsp);
     } else {
         set_reg(c, UC_ARM_REG_MSP, nsp);
+        if (c->mcu->fpu) set_reg(c, UC_ARM_REG_CONTROL, ctrl);
     }
     static const int wr[] = { UC_ARM_REG_R0, UC_ARM_REG_R1, UC_ARM_REG_R2, UC_ARM_REG_R3, UC_ARM_REG_R12, UC_ARM_REG_LR,
                               UC_ARM_REG_APSR, UC_ARM_REG_APSR_NZCV };
@@ -488,7 +522,8 @@ static void exc_return(armcore_t *c)
     uint32_t excret = reg(c, UC_ARM_REG_PC) | 1u, exc = reg(c, UC_ARM_REG_IPSR) & 0x1FFu;
     char m[120];
     uint32_t low = excret & 0xFu;
-    if ((excret & 0xFFFFFFF0u) != 0xFFFFFFF0u || (low != 1u && low != 9u && low != 0xDu) || cortexm_return(&c->cm, exc) != 0) {
+    bool fp_ok = c->mcu->fpu || (excret & EXC_RETURN_BASIC); /* an extended frame only with an FPU */
+    if ((excret & 0xFFFFFFE0u) != 0xFFFFFFE0u || !fp_ok || (low != 1u && low != 9u && low != 0xDu) || cortexm_return(&c->cm, exc) != 0) {
         snprintf(m, sizeof m, "HardFault: exception return 0x%08x from exception %u (UsageFault INVPC)", excret, exc);
         crash(c, c->blk_addr, m);
         return;
@@ -498,6 +533,7 @@ static void exc_return(armcore_t *c)
     if (next && group < exec_prio(c) && next != EXC_RESET) {
         uint32_t pc, apsr = reg(c, UC_ARM_REG_APSR);
         if (!vector(c, next, &pc)) return;
+        if (c->mcu->fpu) set_reg(c, UC_ARM_REG_CONTROL, reg(c, UC_ARM_REG_CONTROL) & ~CONTROL_FPCA); /* a new handler: no FP context */
         set_ipsr(c, next, apsr);
         set_reg(c, UC_ARM_REG_LR, excret);
         cortexm_take(&c->cm, next);
@@ -709,6 +745,7 @@ armcore_t *armcore_new(const armcore_cfg_t *cfg, char *err, size_t errn)
     c->hclk = cfg->clocks && cfg->clocks->hclk ? cfg->clocks->hclk : cfg->hclk_hz;
     c->target_ps = NO_TIME, c->resume_mid = NO_ADDR;
     cortexm_init(&c->cm, m->nirq, m->prio_bits, m->cpuid);
+    cortexm_set_fpu(&c->cm, m->fpu != 0);
     memcpy(c->reg, cfg->regions, sizeof *c->reg * (size_t)cfg->nregions);
     c->reg[cfg->nregions] = (mmio_region_t){ CORTEXM_PPB_BASE, CORTEXM_PPB_BYTES, &cortexm_ops, &c->cm };
     c->nreg = cfg->nregions + 1;
