@@ -30,7 +30,8 @@
 #define SRAM_BYTES (20u << 10)
 
 enum { PREEMPT = 1, PREEMPT_HW, TAILCHAIN, PRIMASK, BASEPRI, SYSTICK, COUNTFLAG, DWT, VTOR, WFI, FAULT_UNMAPPED, FAULT_PERIPH,
-       UNDEF, SVC, UNMODELED, BITBAND, CLOCK, CHURN, RESET, PRIGROUP_SUB, PRIGROUP_NONE, SPIN, STORM, PSP };
+       UNDEF, SVC, UNMODELED, BITBAND, CLOCK, CHURN, RESET, PRIGROUP_SUB, PRIGROUP_NONE, SPIN, STORM, PSP,
+       IDLE_CYCCNT, IDLE_TICK, IDLE_COUNTFLAG };
 
 typedef struct {
     uint32_t scenario, scratch;
@@ -321,6 +322,43 @@ static void test_wfi_skip_same_state(void **state)
     rig_free(r), rig_free(q);
 }
 
+/* Idle loops jumped over (armcore.c, "idle loops"): at several targets (some inside a wait) and in random
+ * chunks, the same cycles, registers and SRAM as running every iteration; and the skips did happen. */
+static void idle_same_state(uint32_t scenario, uint64_t end, uint32_t nv)
+{
+    static uint8_t a[64 + SRAM_BYTES], b[64 + SRAM_BYTES];
+    const uint64_t stops[] = { 3001, 40000, 77777, 120003, end };
+    rig_t *r = rig_new(scenario, false), *q = rig_new(scenario, true), *k = rig_new(scenario, false);
+    uint32_t x = 777;
+    for (size_t i = 0; i < sizeof stops / sizeof stops[0]; i++) {
+        if (stops[i] > end) continue;
+        armcore_run_to(r->core, stops[i]), armcore_run_to(q->core, stops[i]);
+        for (uint64_t t = armcore_cycles(k->core); t < stops[i];) {
+            x = x * 1103515245u + 12345u;
+            t += 1 + (x >> 16) % 20000;
+            armcore_run_to(k->core, t < stops[i] ? t : stops[i]);
+        }
+        no_crash(r), no_crash(q), no_crash(k);
+        snapshot(r, a), snapshot(q, b);
+        if (memcmp(a, b, sizeof a)) fail_msg("scenario %u at cycle %llu: skipping changed the state", scenario, (unsigned long long)stops[i]);
+        snapshot(k, b);
+        if (memcmp(a, b, sizeof a)) fail_msg("scenario %u at cycle %llu: skipping in chunks changed the state", scenario, (unsigned long long)stops[i]);
+    }
+    mailbox_t mb = mailbox(r);
+    assert_int_equal(mb.done, 1);
+    for (uint32_t i = 1; i < nv; i++) assert_true(mb.v[i] > mb.v[i - 1]);
+    armcore_stats_t st = armcore_stats(r->core);
+    if (st.loop_skips < nv || st.loop_cycles + st.idle_cycles < end / 2)
+        fail_msg("scenario %u: %llu skips, %llu cycles skipped of %llu", scenario, (unsigned long long)st.loop_skips,
+                 (unsigned long long)(st.loop_cycles + st.idle_cycles), (unsigned long long)end);
+    assert_int_equal(armcore_stats(q->core).loop_skips, 0);
+    rig_free(r), rig_free(q), rig_free(k);
+}
+
+static void test_idle_cyccnt(void **state) { idle_same_state(IDLE_CYCCNT, 160000, 5); }
+static void test_idle_hal_delay(void **state) { idle_same_state(IDLE_TICK, 60000, 8); }
+static void test_idle_countflag(void **state) { idle_same_state(IDLE_COUNTFLAG, 180000, 4); }
+
 static void test_chunking_same_state(void **state)
 {
     static uint8_t a[64 + SRAM_BYTES], b[64 + SRAM_BYTES];
@@ -387,7 +425,8 @@ int main(void)
         cmocka_unit_test(test_systick_period), cmocka_unit_test(test_countflag), cmocka_unit_test(test_dwt),
         cmocka_unit_test(test_vtor), cmocka_unit_test(test_svc_pendsv), cmocka_unit_test(test_process_stack), cmocka_unit_test(test_reset_request),
         cmocka_unit_test(test_bitband), cmocka_unit_test(test_unmodeled), cmocka_unit_test(test_faults),
-        cmocka_unit_test(test_clock_switch), cmocka_unit_test(test_fpu_extended_frame), cmocka_unit_test(test_wfi_skip_same_state), cmocka_unit_test(test_chunking_same_state),
+        cmocka_unit_test(test_clock_switch), cmocka_unit_test(test_fpu_extended_frame), cmocka_unit_test(test_idle_cyccnt),
+        cmocka_unit_test(test_idle_hal_delay), cmocka_unit_test(test_idle_countflag), cmocka_unit_test(test_wfi_skip_same_state), cmocka_unit_test(test_chunking_same_state),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

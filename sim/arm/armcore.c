@@ -7,6 +7,8 @@
 
 #include <unicorn/unicorn.h>
 
+#include "thumbuse.h"
+
 #define PERIPH_BASE 0x40000000u
 #define PERIPH_BYTES 0x20000000u
 #define PERIPH_BB_BASE 0x42000000u /* bit-band alias of 0x40000000-0x400FFFFF (ARMv7-M A3.7, PM0056 2.2.5) */
@@ -27,9 +29,28 @@
 #define FP_FRAME_BYTES 0x68u       /* the extended frame: the basic one, S0-S15, FPSCR, a reserved word (B1.5.7) */
 #define EXC_RETURN_BASIC 0x10u     /* EXC_RETURN bit 4: 1 a basic frame, 0 an extended one (B1.5.8) */
 
-enum { STOP_NONE, STOP_TAKE, STOP_SPLIT, STOP_INTR, STOP_FAULT };
+#define LOOP_BLOCKS_MAX 4u         /* a wait loop: a cycle of at most 4 translated blocks (a call to HAL_GetTick and back) */
+#define LOOP_HIST 16u              /* the last blocks run, for finding such a cycle (2 x 4 + 1 needed) */
+#define LOOP_CACHE 64u             /* loops analysed, by their head's address */
+#define LOOP_SKIP_MIN 16u          /* whole iterations before the next event for a skip to be worth its probes */
+#define LOOP_GRID 16u              /* probes spread over the iterations before the bisection */
+#define DWT_CYCCNT_ADDR 0xE0001004u
+#define SYST_CSR_ADDR 0xE000E010u
+#define SYST_CVR_ADDR 0xE000E018u
+
+enum { STOP_NONE, STOP_TAKE, STOP_SPLIT, STOP_INTR, STOP_FAULT, STOP_SKIP };
+enum { LOOP_UNKNOWN, LOOP_PURE, LOOP_NEVER };
+enum { PROBE_STAYS = 0, PROBE_EXITS = 1, PROBE_AGAIN = -1, PROBE_NEVER = -2, PROBE_RUNNING = 2 };
 
 typedef struct { uint32_t addr, size, n; } blk_t;
+
+/* A cycle of translated blocks that repeats: its blocks from the head, its instructions (= cycles) an iteration. */
+typedef struct {
+    uint32_t head, p, n;
+    uint32_t addr[LOOP_BLOCKS_MAX], size[LOOP_BLOCKS_MAX];
+    int verdict;
+    uint64_t retry_at;                   /* no new attempt before this cycle */
+} loop_t;
 
 struct armcore {
     uc_engine *uc;
@@ -59,6 +80,16 @@ struct armcore {
     int nunm;
     armcore_stats_t st;
     blk_t blk[BLK_CACHE];
+    /* idle loops: the blocks run last (a ring), the loops analysed, the one a probe runs */
+    uint32_t hist_addr[LOOP_HIST], hist_size[LOOP_HIST];
+    unsigned hist_pos, hist_n;
+    loop_t loops[LOOP_CACHE];
+    loop_t *skip;
+    bool probe, probe_timed;
+    int probe_res;
+    uint32_t probe_idx;
+    uc_context *ctx;
+    cortexm_t cm_saved;
 };
 
 /* ---- memory and instruction lengths ---- */
@@ -241,9 +272,20 @@ static void bus_fault(armcore_t *c, uint32_t addr, bool write)
     uc_emu_stop(c->uc);
 }
 
+/* A probe (see skip_loop) reads only registers that are functions of time, or gives up for good. */
+static bool probe_access(armcore_t *c, uint32_t addr, bool write)
+{
+    if (!write && (addr == DWT_CYCCNT_ADDR || addr == SYST_CVR_ADDR)) return c->probe_timed = true;
+    if (!write && addr == SYST_CSR_ADDR) return true; /* COUNTFLAG is set only at a wrap: a model event */
+    c->probe_res = PROBE_NEVER;
+    uc_emu_stop(c->uc);
+    return false;
+}
+
 static uint64_t mmio_read(armcore_t *c, uint32_t addr, unsigned size)
 {
     uint32_t v = 0;
+    if (c->probe && !probe_access(c, addr, false)) return 0;
     c->now = access_cycle(c);
     if (periph_or_bb(c, addr, size, false, &v) != MMIO_OK) bus_fault(c, addr, false);
     return v;
@@ -251,6 +293,7 @@ static uint64_t mmio_read(armcore_t *c, uint32_t addr, unsigned size)
 
 static void mmio_write(armcore_t *c, uint32_t addr, unsigned size, uint32_t v)
 {
+    if (c->probe && !probe_access(c, addr, true)) return;
     c->now = access_cycle(c);
     if (periph_or_bb(c, addr, size, true, &v) != MMIO_OK) bus_fault(c, addr, true);
 }
@@ -339,15 +382,108 @@ static unsigned check(armcore_t *c)
     return 0;
 }
 
+/* ---- idle loops ----
+ * A wait loop is a cycle of at most LOOP_BLOCKS_MAX translated blocks run
+ * twice in a row, whose instructions (thumbuse.c) store nothing and whose
+ * registers read before written in an iteration are never written in it:
+ * every iteration starts from the same values, and what it reads is RAM or
+ * flash (unchanged: nothing stores until the next event), SysTick CSR
+ * (COUNTFLAG only changes at a wrap, an event), or DWT CYCCNT and SysTick
+ * CVR (functions of the cycle). Whether iteration j exits is then a function
+ * of its start cycle alone, found by probes (skip_loop): the iteration run
+ * from the head's saved state at that cycle, the registers and the system
+ * peripherals restored after. The core then starts the iteration before the
+ * first that exits (or before the next event or the target) at its exact
+ * cycle and runs it and the rest for real, so the state the firmware sees
+ * is the one it would have had. */
+
+/* The path from the head of a loop whose blocks were just run twice (hist), or 0. */
+static uint32_t loop_period(const armcore_t *c)
+{
+    for (uint32_t p = 1; p <= LOOP_BLOCKS_MAX && 2 * p + 1 <= c->hist_n; p++) {
+        uint32_t k = 0;
+        for (; k <= p; k++) {
+            unsigned a = (c->hist_pos - 1 - k) % LOOP_HIST, b = (c->hist_pos - 1 - k - p) % LOOP_HIST;
+            if (c->hist_addr[a] != c->hist_addr[b] || c->hist_size[a] != c->hist_size[b]) break;
+        }
+        if (k > p) return p;
+    }
+    return 0;
+}
+
+/* LOOP_PURE if every iteration starts from the same registers and stores nothing (see above), else LOOP_NEVER. */
+static int loop_analyse(armcore_t *c, loop_t *l)
+{
+    uint32_t live_in = 0, written = 0;
+    l->n = 0;
+    for (uint32_t b = 0; b < l->p; b++) {
+        const uint8_t *p = host(c, l->addr[b], l->size[b]);
+        if (!p) return LOOP_NEVER;
+        for (uint32_t i = 0; i + 2 <= l->size[b];) {
+            thumb_use_t u;
+            uint16_t h1 = (uint16_t)(p[i] | p[i + 1] << 8), h2 = i + 4 <= l->size[b] ? (uint16_t)(p[i + 2] | p[i + 3] << 8) : 0;
+            if (thumb_use(h1, h2, &u) != THUMB_OK || i + u.len > l->size[b]) return LOOP_NEVER;
+            live_in |= u.rd & ~written, written |= u.wr;
+            i += u.len;
+        }
+        l->n += block_insns(c, l->addr[b], l->size[b]);
+    }
+    return (live_in & written & ~(1u << 15)) || l->n == 0 ? LOOP_NEVER : LOOP_PURE;
+}
+
+/* At an untouched block's start: true if it heads a wait loop worth a skip (c->skip set). */
+static bool idle_loop(armcore_t *c, uint32_t addr, uint32_t size)
+{
+    c->hist_addr[c->hist_pos % LOOP_HIST] = addr, c->hist_size[c->hist_pos % LOOP_HIST] = size;
+    c->hist_pos++, c->hist_n += c->hist_n < LOOP_HIST;
+    uint32_t p = loop_period(c);
+    if (!p) return false;
+    loop_t *l = &c->loops[(addr >> 1) % LOOP_CACHE];
+    bool same = l->head == addr && l->p == p;
+    for (uint32_t b = 0; same && b < p; b++) {
+        unsigned h = (c->hist_pos - 1 - p + b) % LOOP_HIST;
+        same = l->addr[b] == c->hist_addr[h] && l->size[b] == c->hist_size[h];
+    }
+    if (!same) {
+        memset(l, 0, sizeof *l);
+        l->head = addr, l->p = p;
+        for (uint32_t b = 0; b < p; b++) {
+            unsigned h = (c->hist_pos - 1 - p + b) % LOOP_HIST;
+            l->addr[b] = c->hist_addr[h], l->size[b] = c->hist_size[h];
+        }
+        l->verdict = loop_analyse(c, l);
+    }
+    uint64_t end = c->ev_next < c->target ? c->ev_next : c->target;
+    if (l->verdict != LOOP_PURE || c->cyc < l->retry_at || end < c->cyc || (end - c->cyc) / l->n < LOOP_SKIP_MIN) return false;
+    c->skip = l;
+    c->hist_pos--, c->hist_n--; /* the head runs again after the skip */
+    return true;
+}
+
+/* A block in a probe: the loop's next one, or the exit (the block not run), or back at the head. */
+static void probe_block(armcore_t *c, uint32_t addr, uint32_t size, uint32_t n)
+{
+    const loop_t *l = c->skip;
+    if (c->probe_idx == l->p || addr != l->addr[c->probe_idx] || size != l->size[c->probe_idx]) {
+        bool head = addr == l->head && size == l->size[0];
+        c->probe_res = c->probe_idx == 0 ? PROBE_AGAIN : c->probe_idx == l->p && head ? PROBE_STAYS : PROBE_EXITS;
+        uc_emu_stop(c->uc);
+        return;
+    }
+    c->nat_start = c->cyc, c->cyc += n, c->probe_idx++;
+}
+
 static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
 {
     armcore_t *c = u;
     uint32_t addr = (uint32_t)address, n = block_insns(c, addr, size);
+    if (c->probe) { if (c->probe_res == PROBE_RUNNING) probe_block(c, addr, size, n); return; }
     c->blk_addr = addr, c->blk_size = size, c->blk_start = c->cyc;
     if (c->partial || c->stop != STOP_NONE) return;
     c->stop_mid = addr == c->resume_mid;
     if (c->stop_mid) {
         c->resume_mid = NO_ADDR;
+        c->hist_n = 0;
     } else {
         c->nat_start = c->cyc;
     }
@@ -355,6 +491,7 @@ static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
         unsigned e = check(c);
         if (e) { c->take = e, c->stop = STOP_TAKE, c->stop_addr = addr; uc_emu_stop(uc); return; }
     }
+    if (!c->stop_mid && !c->no_idle_skip && idle_loop(c, addr, size)) { c->stop = STOP_SKIP, c->stop_addr = addr; uc_emu_stop(uc); return; }
     if (c->cyc + n > c->target) { c->stop = STOP_SPLIT, c->stop_addr = addr; uc_emu_stop(uc); return; }
     c->cyc += n;
 }
@@ -362,6 +499,7 @@ static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
 static void on_intr(uc_engine *uc, uint32_t intno, void *u)
 {
     armcore_t *c = u;
+    if (c->probe) { c->probe_res = PROBE_NEVER; uc_emu_stop(uc); return; }
     if (c->stop != STOP_NONE) return;
     c->stop = STOP_INTR, c->intno = (int)intno;
     uc_emu_stop(uc);
@@ -370,6 +508,7 @@ static void on_intr(uc_engine *uc, uint32_t intno, void *u)
 static bool on_bad_mem(uc_engine *uc, uc_mem_type type, uint64_t addr, int size, int64_t value, void *u)
 {
     armcore_t *c = u;
+    if (c->probe) { c->probe_res = PROBE_NEVER; return false; }
     c->bad_addr = (uint32_t)addr, c->bad_type = (int)type;
     return false;
 }
@@ -622,6 +761,63 @@ static void sleep_step(armcore_t *c)
     c->cyc = to;
 }
 
+/* Iteration j of loop c->skip from its head's saved state (c->ctx, c->cm_saved) at cycle t0 + j x n:
+ * PROBE_EXITS, PROBE_STAYS, or PROBE_AGAIN / PROBE_NEVER (give up now / for good). The state is restored after. */
+static int probe(armcore_t *c, uint64_t t0, uint64_t j)
+{
+    c->probe = true, c->probe_res = PROBE_RUNNING, c->probe_idx = 0, c->cyc = t0 + j * c->skip->n;
+    uc_err e = uc_emu_start(c->uc, c->skip->head | 1u, 0, 0, 0);
+    c->probe = false;
+    int r = e != UC_ERR_OK && c->probe_res == PROBE_RUNNING ? PROBE_NEVER : c->probe_res == PROBE_RUNNING ? PROBE_AGAIN : c->probe_res;
+    uc_context_restore(c->uc, c->ctx);
+    c->cm = c->cm_saved, c->cyc = t0;
+    return r;
+}
+
+/* The first iteration in (0, k) that exits, k if none: LOOP_GRID probes spread over them, then a bisection
+ * between the last that stays and the first that exits (the exit taken as monotone in time within one
+ * interval of the grid: elapsed-time comparisons are); 0 if a probe gives up. */
+static uint64_t first_exit(armcore_t *c, uint64_t t0, uint64_t k)
+{
+    uint64_t lo = 0, hi = k;
+    for (uint64_t i = 1; i <= LOOP_GRID; i++) {
+        uint64_t g = (k - 1) * i / LOOP_GRID;
+        if (g <= lo) continue;
+        int r = probe(c, t0, g);
+        if (r < 0) return 0;
+        if (r == PROBE_EXITS) { hi = g; break; }
+        lo = g;
+    }
+    while (hi < k && hi - lo > 1) {
+        uint64_t mid = lo + (hi - lo) / 2;
+        int r = probe(c, t0, mid);
+        if (r < 0) return 0;
+        if (r == PROBE_EXITS) hi = mid;
+        else lo = mid;
+    }
+    return hi;
+}
+
+/* Stopped at the head of loop c->skip: jump to the start of the iteration before the first that exits,
+ * or before the last whole one ahead of the next event or the target; then run on from there. */
+static void skip_loop(armcore_t *c)
+{
+    loop_t *l = c->skip;
+    uint64_t t0 = c->cyc, end = c->ev_next < c->target ? c->ev_next : c->target, k = (end - t0) / l->n, m = 0;
+    c->pc = l->head;
+    if (!c->ctx && uc_context_alloc(c->uc, &c->ctx) != UC_ERR_OK) { l->verdict = LOOP_NEVER; return; }
+    uc_context_save(c->uc, c->ctx);
+    c->cm_saved = c->cm, c->probe_timed = false;
+    int r = probe(c, t0, 0);
+    if (r == PROBE_STAYS) m = c->probe_timed ? first_exit(c, t0, k) : k; /* untimed: the same outcome until the next event */
+    if (r == PROBE_NEVER) l->verdict = LOOP_NEVER;
+    if (m >= 2) {
+        c->cyc = t0 + (m - 1) * l->n;
+        c->st.loop_skips++, c->st.loop_cycles += (m - 1) * l->n;
+    }
+    l->retry_at = t0 + (m + 1) * l->n;
+}
+
 /* The first k = target - cycle instructions of the block at stop_addr, through an exit there (its cached translation dropped before and after). */
 static void run_split(armcore_t *c)
 {
@@ -678,6 +874,7 @@ static void run_once(armcore_t *c)
         else enter(c, c->take, c->stop_addr);
         break;
     case STOP_SPLIT: run_split(c); break;
+    case STOP_SKIP: skip_loop(c); break;
     case STOP_INTR: on_stop_intr(c); break;
     case STOP_FAULT: break;
     default: on_stop_none(c, e); break;
@@ -762,6 +959,7 @@ armcore_t *armcore_new(const armcore_cfg_t *cfg, char *err, size_t errn)
 void armcore_free(armcore_t *c)
 {
     if (!c) return;
+    if (c->ctx) uc_context_free(c->ctx);
     if (c->uc) uc_close(c->uc);
     free(c->flash);
     free(c->sram);
