@@ -47,6 +47,7 @@ typedef struct { uint32_t addr, size, n; } blk_t;
 /* A cycle of translated blocks that repeats: its blocks from the head, its instructions (= cycles) an iteration. */
 typedef struct {
     uint32_t head, p, n;
+    uint32_t written;                    /* registers (bits 0-15) and flags (thumbuse.h) an iteration writes */
     uint32_t addr[LOOP_BLOCKS_MAX], size[LOOP_BLOCKS_MAX];
     int verdict;
     uint64_t retry_at;                   /* no new attempt before this cycle */
@@ -88,7 +89,7 @@ struct armcore {
     bool probe, probe_timed;
     int probe_res;
     uint32_t probe_idx;
-    uc_context *ctx;
+    uint32_t saved[17];                  /* the registers a probe may change (R0-R12, SP, LR, APSR), as at the loop's head */
     cortexm_t cm_saved;
 };
 
@@ -148,14 +149,14 @@ static void set_reg(armcore_t *c, int r, uint32_t v) { uc_reg_write(c->uc, r, &v
 /* n registers in one call (an exception's entry and return read and write a dozen) */
 static void regs_read(armcore_t *c, const int *r, uint32_t *v, int n)
 {
-    void *p[16];
+    void *p[20];
     for (int i = 0; i < n; i++) p[i] = &v[i], v[i] = 0;
     uc_reg_read_batch(c->uc, (int *)r, p, n);
 }
 
 static void regs_write(armcore_t *c, const int *r, const uint32_t *v, int n)
 {
-    void *p[16];
+    void *p[20];
     for (int i = 0; i < n; i++) p[i] = (void *)&v[i];
     uc_reg_write_batch(c->uc, (int *)r, p, n);
 }
@@ -428,6 +429,7 @@ static int loop_analyse(armcore_t *c, loop_t *l)
         }
         l->n += block_insns(c, l->addr[b], l->size[b]);
     }
+    l->written = written & ~(1u << 15);
     return (live_in & written & ~(1u << 15)) || l->n == 0 ? LOOP_NEVER : LOOP_PURE;
 }
 
@@ -761,7 +763,22 @@ static void sleep_step(armcore_t *c)
     c->cyc = to;
 }
 
-/* Iteration j of loop c->skip from its head's saved state (c->ctx, c->cm_saved) at cycle t0 + j x n:
+static const int loop_regs[17] = { UC_ARM_REG_R0, UC_ARM_REG_R1, UC_ARM_REG_R2, UC_ARM_REG_R3, UC_ARM_REG_R4, UC_ARM_REG_R5,
+    UC_ARM_REG_R6, UC_ARM_REG_R7, UC_ARM_REG_R8, UC_ARM_REG_R9, UC_ARM_REG_R10, UC_ARM_REG_R11, UC_ARM_REG_R12, UC_ARM_REG_SP,
+    UC_ARM_REG_LR, UC_ARM_REG_APSR, UC_ARM_REG_APSR_NZCV };
+
+/* The registers and flags loop l writes back to their values at its head (c->saved). */
+static void loop_restore(armcore_t *c, const loop_t *l)
+{
+    int r[17], n = 0;
+    uint32_t v[17];
+    for (int i = 0; i < 15; i++)
+        if (l->written & (1u << i)) r[n] = loop_regs[i], v[n++] = c->saved[i];
+    if (l->written & THUMB_NZCV) r[n] = UC_ARM_REG_APSR, v[n++] = c->saved[15], r[n] = UC_ARM_REG_APSR_NZCV, v[n++] = c->saved[15];
+    if (n) regs_write(c, r, v, n);
+}
+
+/* Iteration j of loop c->skip from its head's saved state (c->saved, c->cm_saved) at cycle t0 + j x n:
  * PROBE_EXITS, PROBE_STAYS, or PROBE_AGAIN / PROBE_NEVER (give up now / for good). The state is restored after. */
 static int probe(armcore_t *c, uint64_t t0, uint64_t j)
 {
@@ -769,7 +786,7 @@ static int probe(armcore_t *c, uint64_t t0, uint64_t j)
     uc_err e = uc_emu_start(c->uc, c->skip->head | 1u, 0, 0, 0);
     c->probe = false;
     int r = e != UC_ERR_OK && c->probe_res == PROBE_RUNNING ? PROBE_NEVER : c->probe_res == PROBE_RUNNING ? PROBE_AGAIN : c->probe_res;
-    uc_context_restore(c->uc, c->ctx);
+    loop_restore(c, c->skip);
     c->cm = c->cm_saved, c->cyc = t0;
     return r;
 }
@@ -805,8 +822,7 @@ static void skip_loop(armcore_t *c)
     loop_t *l = c->skip;
     uint64_t t0 = c->cyc, end = c->ev_next < c->target ? c->ev_next : c->target, k = (end - t0) / l->n, m = 0;
     c->pc = l->head;
-    if (!c->ctx && uc_context_alloc(c->uc, &c->ctx) != UC_ERR_OK) { l->verdict = LOOP_NEVER; return; }
-    uc_context_save(c->uc, c->ctx);
+    regs_read(c, loop_regs, c->saved, 16);
     c->cm_saved = c->cm, c->probe_timed = false;
     int r = probe(c, t0, 0);
     if (r == PROBE_STAYS) m = c->probe_timed ? first_exit(c, t0, k) : k; /* untimed: the same outcome until the next event */
@@ -959,7 +975,6 @@ armcore_t *armcore_new(const armcore_cfg_t *cfg, char *err, size_t errn)
 void armcore_free(armcore_t *c)
 {
     if (!c) return;
-    if (c->ctx) uc_context_free(c->ctx);
     if (c->uc) uc_close(c->uc);
     free(c->flash);
     free(c->sram);
