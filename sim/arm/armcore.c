@@ -8,6 +8,7 @@
 #include <unicorn/unicorn.h>
 
 #include "thumbuse.h"
+#include "ucdl.h"
 
 #define PERIPH_BASE 0x40000000u
 #define PERIPH_BYTES 0x20000000u
@@ -948,6 +949,7 @@ static int by_base(const void *a, const void *b)
 armcore_t *armcore_new(const armcore_cfg_t *cfg, char *err, size_t errn)
 {
     const armimage_mcu_t *m = cfg->image->mcu;
+    if (ucdl_load(err, errn) != 0) return NULL; /* libunicorn missing: an external failure (exit 3) */
     if (cfg->nregions < 0 || cfg->nregions > ARMCORE_REGIONS_MAX)
         return snprintf(err, errn, "mmsim: %d peripheral regions (at most %d)", cfg->nregions, ARMCORE_REGIONS_MAX), NULL;
     armcore_t *c = calloc(1, sizeof *c);
