@@ -49,6 +49,7 @@ typedef struct { uint32_t addr, size, n; } blk_t;
 typedef struct {
     uint32_t head, p, n;
     uint32_t written;                    /* registers (bits 0-15) and flags (thumbuse.h) an iteration writes */
+    bool bits;                           /* it takes bits apart (thumbuse.h): its exit need not be monotone in time */
     uint32_t addr[LOOP_BLOCKS_MAX], size[LOOP_BLOCKS_MAX];
     int verdict;
     uint64_t retry_at;                   /* no new attempt before this cycle */
@@ -425,7 +426,7 @@ static int loop_analyse(armcore_t *c, loop_t *l)
             thumb_use_t u;
             uint16_t h1 = (uint16_t)(p[i] | p[i + 1] << 8), h2 = i + 4 <= l->size[b] ? (uint16_t)(p[i + 2] | p[i + 3] << 8) : 0;
             if (thumb_use(h1, h2, &u) != THUMB_OK || i + u.len > l->size[b]) return LOOP_NEVER;
-            live_in |= u.rd & ~written, written |= u.wr;
+            live_in |= u.rd & ~written, written |= u.wr, l->bits |= u.bits != 0;
             i += u.len;
         }
         l->n += block_insns(c, l->addr[b], l->size[b]);
@@ -826,6 +827,7 @@ static void skip_loop(armcore_t *c)
     regs_read(c, loop_regs, c->saved, 16);
     c->cm_saved = c->cm, c->probe_timed = false;
     int r = probe(c, t0, 0);
+    if (r == PROBE_STAYS && c->probe_timed && l->bits) r = PROBE_NEVER; /* e.g. a CYCCNT bit tested: exits come and go */
     if (r == PROBE_STAYS) m = c->probe_timed ? first_exit(c, t0, k) : k; /* untimed: the same outcome until the next event */
     if (r == PROBE_NEVER) l->verdict = LOOP_NEVER;
     if (m >= 2) {

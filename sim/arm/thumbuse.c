@@ -16,6 +16,7 @@ static uint32_t cond_flags(unsigned cond)
 }
 
 static int ok(thumb_use_t *u, uint32_t rd, uint32_t wr) { u->rd = rd, u->wr = wr; return THUMB_OK; }
+static int bits(thumb_use_t *u, uint32_t rd, uint32_t wr) { u->bits = 1; return ok(u, rd, wr); }
 
 /* 010000: AND EOR LSL LSR ASR ADC SBC ROR TST RSB CMP CMN ORR MUL BIC MVN (A6.2.2) */
 static int data_proc16(uint16_t h, thumb_use_t *u)
@@ -27,6 +28,7 @@ static int data_proc16(uint16_t h, thumb_use_t *u)
     else if (op >= 2 && op <= 4) wr |= NZ | THUMB_C, rd |= THUMB_C;      /* a shift by 0 keeps C */
     else if (op == 7) wr |= NZ | THUMB_C, rd |= THUMB_C;
     else wr |= NZ;
+    u->bits = !(op == 5 || op == 6 || op == 9 || op == 10 || op == 11);
     return ok(u, rd, wr);
 }
 
@@ -44,9 +46,9 @@ static int special16(uint16_t h, thumb_use_t *u)
 static int misc16(uint16_t h, thumb_use_t *u)
 {
     if ((h & 0xFF00u) == 0xB000u) return ok(u, R(13), R(13));                          /* ADD/SUB SP, #imm */
-    if ((h & 0xFF00u) == 0xB200u) return ok(u, R((h >> 3) & 7u), R(h & 7u));           /* SXTH SXTB UXTH UXTB */
+    if ((h & 0xFF00u) == 0xB200u) return bits(u, R((h >> 3) & 7u), R(h & 7u));         /* SXTH SXTB UXTH UXTB */
     if ((h & 0xF500u) == 0xB100u) return ok(u, R(h & 7u), 0);                          /* CBZ, CBNZ */
-    if ((h & 0xFF00u) == 0xBA00u && ((h >> 6) & 3u) != 2u) return ok(u, R((h >> 3) & 7u), R(h & 7u)); /* REV REV16 REVSH */
+    if ((h & 0xFF00u) == 0xBA00u && ((h >> 6) & 3u) != 2u) return bits(u, R((h >> 3) & 7u), R(h & 7u)); /* REV REV16 REVSH */
     if (h == 0xBF00u || h == 0xBF10u) return ok(u, 0, 0);                              /* NOP, YIELD */
     return THUMB_OTHER;                                                                 /* PUSH, POP, IT, WFI, CPS, BKPT... */
 }
@@ -54,7 +56,11 @@ static int misc16(uint16_t h, thumb_use_t *u)
 static int thumb16(uint16_t h, thumb_use_t *u)
 {
     unsigned top5 = h >> 11, rd3 = h & 7u, rn3 = (h >> 3) & 7u;
-    if (top5 <= 2) return ok(u, R(rn3), R(rd3) | NZ | (top5 == 0 && !(h & 0x7C0u) ? 0u : THUMB_C)); /* LSL LSR ASR #imm (MOVS keeps C) */
+    if (top5 <= 2) {                                                                    /* LSL LSR ASR #imm (MOVS: LSL #0 keeps C) */
+        bool movs = top5 == 0 && !(h & 0x7C0u);
+        u->bits = !movs;
+        return ok(u, R(rn3), R(rd3) | NZ | (movs ? 0u : THUMB_C));
+    }
     if (top5 == 3) return ok(u, R(rn3) | ((h & 0x400u) ? 0u : R((h >> 6) & 7u)), R(rd3) | THUMB_NZCV); /* ADD/SUB reg, imm3 */
     if (top5 >= 4 && top5 <= 7) {
         unsigned r = (h >> 8) & 7u;
@@ -87,6 +93,7 @@ static int data_proc32(uint16_t h1, uint16_t h2, bool shifted, thumb_use_t *u)
     if (op == 10 || op == 11) r |= THUMB_C;
     if (s) w |= logic ? NZ | THUMB_C : THUMB_NZCV;
     if (s && logic) r |= THUMB_C; /* C from the shifter or the constant, or kept */
+    u->bits = (logic && !movlike) || (shifted && (h2 & 0x70F0u)); /* a shift other than LSL #0 */
     return ok(u, r, w);
 }
 
@@ -111,16 +118,17 @@ static int thumb32(uint16_t h1, uint16_t h2, thumb_use_t *u)
     if ((h1 & 0xFA00u) == 0xF200u && !(h2 & 0x8000u)) {                                 /* plain binary immediate (A6.3.3) */
         unsigned rd = (h2 >> 8) & 0xFu;
         if (rd >= 13) return THUMB_OTHER;
-        if (op1 == 0x00 || op1 == 0x0A || op1 == 0x14 || op1 == 0x1C) return rn == 15 && op1 < 0x14 ? ok(u, 0, R(rd)) : ok(u, R(rn), R(rd));
+        if (op1 == 0x14 || op1 == 0x1C) return bits(u, R(rn), R(rd));                  /* SBFX, UBFX */
+        if (op1 == 0x00 || op1 == 0x0A) return rn == 15 ? ok(u, 0, R(rd)) : ok(u, R(rn), R(rd)); /* ADDW, SUBW, ADR */
         if (op1 == 0x04) return ok(u, 0, R(rd));                                         /* MOVW */
-        if (op1 == 0x0C) return ok(u, R(rd), R(rd));                                     /* MOVT */
+        if (op1 == 0x0C) return bits(u, R(rd), R(rd));                                   /* MOVT */
     }
     return THUMB_OTHER;
 }
 
 int thumb_use(uint16_t h1, uint16_t h2, thumb_use_t *u)
 {
-    u->rd = u->wr = 0;
+    u->rd = u->wr = 0, u->bits = 0;
     if ((h1 >> 11) >= 0x1D) {
         u->len = 4;
         return thumb32(h1, h2, u);

@@ -22,6 +22,7 @@ enum { THUMB_OK, THUMB_OTHER };
 typedef struct {
     uint32_t rd, wr;   /* registers and flags read, written (a flag an instruction may keep is both) */
     unsigned len;      /* 2 or 4 bytes */
+    int bits;          /* 1: a value's bits taken apart (logic, shifts, multiply, extends, bit fields), not only added and compared */
 } thumb_use_t;
 
 /* The instruction whose first halfword is h1 (h2 the next one): THUMB_OK with *u filled, or THUMB_OTHER. */
