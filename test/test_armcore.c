@@ -403,6 +403,7 @@ static void test_fpu_extended_frame(void **state)
     mailbox_t mb = mailbox(r);
     assert_int_equal(mb.done, 1);
     assert_int_equal(mb.v[15], 0xC0000000u);         /* FPCCR at reset: ASPEN, LSPEN */
+    assert_int_equal(mb.v[14], 0x00F00000u);         /* CPACR: CP10 and CP11 as written */
     assert_int_equal(mb.v[0] & 4u, 4u);               /* CONTROL.FPCA after the thread's first FP instruction */
     assert_int_equal(mb.v[2] & 4u, 0u);               /* cleared on entry */
     assert_int_equal(mb.v[3], 0xFFFFFFE9u);           /* EXC_RETURN: thread, MSP, extended frame */
@@ -430,6 +431,10 @@ static void test_fpu_extended_frame(void **state)
     assert_int_equal(mb.v[3], 0xFFFFFFF9u);
     assert_int_equal(mb.v[1] & 4u, 0u);
     rig_free(r);
+    armimage_t img; /* the hard-float image on an MCU without an FPU: refused before unicorn sees it */
+    char err[300] = "";
+    assert_int_not_equal(armimage_read(FPU_IMAGE, armimage_mcu("stm32f103x8"), &img, err, sizeof err), 0);
+    if (!strstr(err, "FPU") && !strstr(err, "hard-float")) fail_msg("the error: %s", err);
 }
 
 int main(void)

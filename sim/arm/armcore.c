@@ -88,6 +88,7 @@ struct armcore {
     unsigned hist_pos, hist_n;
     loop_t loops[LOOP_CACHE];
     loop_t *skip;
+    uint32_t never_head;                 /* the last head found to lead no skippable loop: no lookup while it repeats */
     bool probe, probe_timed;
     int probe_res;
     uint32_t probe_idx;
@@ -372,7 +373,7 @@ static int exec_prio(armcore_t *c)
 /* At a block's start: events due, then the exception to take now, 0 if none. */
 static unsigned check(armcore_t *c)
 {
-    c->cm.attention = false;
+    c->cm.attention = false, c->never_head = NO_ADDR;
     c->now = c->cyc;
     clock_check(c);
     advance_due(c);
@@ -440,6 +441,7 @@ static bool idle_loop(armcore_t *c, uint32_t addr, uint32_t size)
 {
     c->hist_addr[c->hist_pos % LOOP_HIST] = addr, c->hist_size[c->hist_pos % LOOP_HIST] = size;
     c->hist_pos++, c->hist_n += c->hist_n < LOOP_HIST;
+    if (addr == c->never_head) return false;
     uint32_t p = loop_period(c);
     if (!p) return false;
     loop_t *l = &c->loops[(addr >> 1) % LOOP_CACHE];
@@ -457,6 +459,7 @@ static bool idle_loop(armcore_t *c, uint32_t addr, uint32_t size)
         }
         l->verdict = loop_analyse(c, l);
     }
+    if (l->verdict != LOOP_PURE) c->never_head = addr;
     uint64_t end = c->ev_next < c->target ? c->ev_next : c->target;
     if (l->verdict != LOOP_PURE || c->cyc < l->retry_at || end < c->cyc || (end - c->cyc) / l->n < LOOP_SKIP_MIN) return false;
     c->skip = l;
@@ -960,7 +963,7 @@ armcore_t *armcore_new(const armcore_cfg_t *cfg, char *err, size_t errn)
     memcpy(c->flash, cfg->image->flash, m->flash_bytes);
     c->mcu = m, c->clocks = cfg->clocks, c->verbose = cfg->verbose, c->no_idle_skip = cfg->no_idle_skip;
     c->hclk = cfg->clocks && cfg->clocks->hclk ? cfg->clocks->hclk : cfg->hclk_hz;
-    c->target_ps = NO_TIME, c->resume_mid = NO_ADDR;
+    c->target_ps = NO_TIME, c->resume_mid = NO_ADDR, c->never_head = NO_ADDR;
     cortexm_init(&c->cm, m->nirq, m->prio_bits, m->cpuid);
     cortexm_set_fpu(&c->cm, m->fpu != 0);
     memcpy(c->reg, cfg->regions, sizeof *c->reg * (size_t)cfg->nregions);

@@ -71,7 +71,10 @@ int main(void)
 {
     uint32_t sp;
     mb.scenario = FAKE_SCENARIO;
-    mb.v[14] = CPACR, mb.v[15] = FPCCR;
+    mb.v[15] = FPCCR;
+    CPACR |= 0xFu << 20; /* CP10, CP11 full access before any FP instruction (PM0214 4.6.1) */
+    __asm volatile("dsb\n isb" ::: "memory");
+    mb.v[14] = CPACR;
     switch (mb.scenario) {
     case FP_NESTED: thread_fp(); break;
     case FP_NONE: /* no FP instruction yet: the basic frame */
