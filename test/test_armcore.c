@@ -31,7 +31,7 @@
 
 enum { PREEMPT = 1, PREEMPT_HW, TAILCHAIN, PRIMASK, BASEPRI, SYSTICK, COUNTFLAG, DWT, VTOR, WFI, FAULT_UNMAPPED, FAULT_PERIPH,
        UNDEF, SVC, UNMODELED, BITBAND, CLOCK, CHURN, RESET, PRIGROUP_SUB, PRIGROUP_NONE, SPIN, STORM, PSP,
-       IDLE_CYCCNT, IDLE_TICK, IDLE_COUNTFLAG };
+       IDLE_CYCCNT, IDLE_TICK, IDLE_COUNTFLAG, IDLE_BENCH, IDLE_BITS };
 
 typedef struct {
     uint32_t scenario, scratch;
@@ -339,7 +339,7 @@ static void test_wfi_skip_same_state(void **state)
 
 /* Idle loops jumped over (armcore.c, "idle loops"): at several targets (some inside a wait) and in random
  * chunks, the same cycles, registers and SRAM as running every iteration; and the skips did happen. */
-static void idle_same_state(uint32_t scenario, uint64_t end, uint32_t nv)
+static void idle_same_state(uint32_t scenario, uint64_t end, uint32_t nv, bool skips)
 {
     static uint8_t a[64 + SRAM_BYTES], b[64 + SRAM_BYTES];
     const uint64_t stops[] = { 3001, 40000, 77777, 120003, end };
@@ -363,16 +363,18 @@ static void idle_same_state(uint32_t scenario, uint64_t end, uint32_t nv)
     assert_int_equal(mb.done, 1);
     for (uint32_t i = 1; i < nv; i++) assert_true(mb.v[i] > mb.v[i - 1]);
     armcore_stats_t st = armcore_stats(r->core);
-    if (st.loop_skips < nv || st.loop_cycles + st.idle_cycles < end / 2)
+    if (!skips) assert_int_equal(st.loop_skips, 0);
+    else if (st.loop_skips < nv || st.loop_cycles + st.idle_cycles < end / 2)
         fail_msg("scenario %u: %llu skips, %llu cycles skipped of %llu", scenario, (unsigned long long)st.loop_skips,
                  (unsigned long long)(st.loop_cycles + st.idle_cycles), (unsigned long long)end);
     assert_int_equal(armcore_stats(q->core).loop_skips, 0);
     rig_free(r), rig_free(q), rig_free(k);
 }
 
-static void test_idle_cyccnt(void **state) { idle_same_state(IDLE_CYCCNT, 160000, 5); }
-static void test_idle_hal_delay(void **state) { idle_same_state(IDLE_TICK, 60000, 8); }
-static void test_idle_countflag(void **state) { idle_same_state(IDLE_COUNTFLAG, 180000, 4); }
+static void test_idle_cyccnt(void **state) { idle_same_state(IDLE_CYCCNT, 160000, 5, true); }
+static void test_idle_hal_delay(void **state) { idle_same_state(IDLE_TICK, 60000, 8, true); }
+static void test_idle_countflag(void **state) { idle_same_state(IDLE_COUNTFLAG, 180000, 4, true); }
+static void test_idle_bits(void **state) { idle_same_state(IDLE_BITS, 60000, 6, false); } /* not skipped: the same state */
 
 static void test_chunking_same_state(void **state)
 {
@@ -446,7 +448,7 @@ int main(void)
         cmocka_unit_test(test_vtor), cmocka_unit_test(test_svc_pendsv), cmocka_unit_test(test_process_stack), cmocka_unit_test(test_reset_request),
         cmocka_unit_test(test_bitband), cmocka_unit_test(test_unmodeled), cmocka_unit_test(test_faults),
         cmocka_unit_test(test_clock_switch), cmocka_unit_test(test_fpu_extended_frame), cmocka_unit_test(test_idle_cyccnt),
-        cmocka_unit_test(test_idle_hal_delay), cmocka_unit_test(test_idle_countflag), cmocka_unit_test(test_wfi_skip_same_state), cmocka_unit_test(test_chunking_same_state),
+        cmocka_unit_test(test_idle_hal_delay), cmocka_unit_test(test_idle_countflag), cmocka_unit_test(test_idle_bits), cmocka_unit_test(test_wfi_skip_same_state), cmocka_unit_test(test_chunking_same_state),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
