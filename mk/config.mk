@@ -5,7 +5,8 @@ WARN    := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wno-unused-parameter
 INC      = -Ifirmware -Ihal -Ihal/sim -Ihal/wire -Isim -I$(B)/lcmgen $(shell pkg-config --cflags glib-2.0 ode libpng unicorn 2>/dev/null)
 CFLAGS  ?= -O2 -g
 SAN     := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
-LIBS     = -ljansson -linih -llcm $(shell pkg-config --libs glib-2.0 ode libpng glfw3 gl unicorn 2>/dev/null) -lsimavr -ldw -lelf -lm
+# libunicorn is not linked: sim/arm/ucdl.c loads it (dlopen) when an ARM core is made
+LIBS     = -ljansson -linih -llcm $(shell pkg-config --libs glib-2.0 ode libpng glfw3 gl 2>/dev/null) -lsimavr -ldw -lelf -lm -ldl
 B       := build
 # ../shared: the maze database and the real clients (tests skip what is absent)
 SHARED  ?= ../shared

@@ -7,6 +7,9 @@
 
 #include <unicorn/unicorn.h>
 
+#include "thumbuse.h"
+#include "ucdl.h"
+
 #define PERIPH_BASE 0x40000000u
 #define PERIPH_BYTES 0x20000000u
 #define PERIPH_BB_BASE 0x42000000u /* bit-band alias of 0x40000000-0x400FFFFF (ARMv7-M A3.7, PM0056 2.2.5) */
@@ -22,10 +25,35 @@
 #define XPSR_ALIGN (1u << 9)       /* the frame was aligned to 8 bytes (B1.5.7) */
 #define CCR_STKALIGN (1u << 9)
 #define CONTROL_SPSEL 2u
+#define CONTROL_FPCA 4u            /* an FP context is active (B1.4.4) */
+#define BASIC_FRAME_BYTES 32u      /* R0-R3, R12, LR, return address, xPSR (B1.5.7) */
+#define FP_FRAME_BYTES 0x68u       /* the extended frame: the basic one, S0-S15, FPSCR, a reserved word (B1.5.7) */
+#define EXC_RETURN_BASIC 0x10u     /* EXC_RETURN bit 4: 1 a basic frame, 0 an extended one (B1.5.8) */
 
-enum { STOP_NONE, STOP_TAKE, STOP_SPLIT, STOP_INTR, STOP_FAULT };
+#define LOOP_BLOCKS_MAX 4u         /* a wait loop: a cycle of at most 4 translated blocks (a call to HAL_GetTick and back) */
+#define LOOP_HIST 16u              /* the last blocks run, for finding such a cycle (2 x 4 + 1 needed) */
+#define LOOP_CACHE 64u             /* loops analysed, by their head's address */
+#define LOOP_SKIP_MIN 16u          /* whole iterations before the next event for a skip to be worth its probes */
+#define LOOP_GRID 16u              /* probes spread over the iterations before the bisection */
+#define DWT_CYCCNT_ADDR 0xE0001004u
+#define SYST_CSR_ADDR 0xE000E010u
+#define SYST_CVR_ADDR 0xE000E018u
+
+enum { STOP_NONE, STOP_TAKE, STOP_SPLIT, STOP_INTR, STOP_FAULT, STOP_SKIP };
+enum { LOOP_UNKNOWN, LOOP_PURE, LOOP_NEVER };
+enum { PROBE_STAYS = 0, PROBE_EXITS = 1, PROBE_AGAIN = -1, PROBE_NEVER = -2, PROBE_RUNNING = 2 };
 
 typedef struct { uint32_t addr, size, n; } blk_t;
+
+/* A cycle of translated blocks that repeats: its blocks from the head, its instructions (= cycles) an iteration. */
+typedef struct {
+    uint32_t head, p, n;
+    uint32_t written;                    /* registers (bits 0-15) and flags (thumbuse.h) an iteration writes */
+    bool bits;                           /* it takes bits apart (thumbuse.h): its exit need not be monotone in time */
+    uint32_t addr[LOOP_BLOCKS_MAX], size[LOOP_BLOCKS_MAX];
+    int verdict;
+    uint64_t retry_at;                   /* no new attempt before this cycle */
+} loop_t;
 
 struct armcore {
     uc_engine *uc;
@@ -55,6 +83,17 @@ struct armcore {
     int nunm;
     armcore_stats_t st;
     blk_t blk[BLK_CACHE];
+    /* idle loops: the blocks run last (a ring), the loops analysed, the one a probe runs */
+    uint32_t hist_addr[LOOP_HIST], hist_size[LOOP_HIST];
+    unsigned hist_pos, hist_n;
+    loop_t loops[LOOP_CACHE];
+    loop_t *skip;
+    uint32_t never_head;                 /* the last head found to lead no skippable loop: no lookup while it repeats */
+    bool probe, probe_timed;
+    int probe_res;
+    uint32_t probe_idx;
+    uint32_t saved[17];                  /* the registers a probe may change (R0-R12, SP, LR, APSR), as at the loop's head */
+    cortexm_t cm_saved;
 };
 
 /* ---- memory and instruction lengths ---- */
@@ -113,14 +152,14 @@ static void set_reg(armcore_t *c, int r, uint32_t v) { uc_reg_write(c->uc, r, &v
 /* n registers in one call (an exception's entry and return read and write a dozen) */
 static void regs_read(armcore_t *c, const int *r, uint32_t *v, int n)
 {
-    void *p[16];
+    void *p[20];
     for (int i = 0; i < n; i++) p[i] = &v[i], v[i] = 0;
     uc_reg_read_batch(c->uc, (int *)r, p, n);
 }
 
 static void regs_write(armcore_t *c, const int *r, const uint32_t *v, int n)
 {
-    void *p[16];
+    void *p[20];
     for (int i = 0; i < n; i++) p[i] = (void *)&v[i];
     uc_reg_write_batch(c->uc, (int *)r, p, n);
 }
@@ -237,9 +276,20 @@ static void bus_fault(armcore_t *c, uint32_t addr, bool write)
     uc_emu_stop(c->uc);
 }
 
+/* A probe (see skip_loop) reads only registers that are functions of time, or gives up for good. */
+static bool probe_access(armcore_t *c, uint32_t addr, bool write)
+{
+    if (!write && (addr == DWT_CYCCNT_ADDR || addr == SYST_CVR_ADDR)) return c->probe_timed = true;
+    if (!write && addr == SYST_CSR_ADDR) return true; /* COUNTFLAG is set only at a wrap: a model event */
+    c->probe_res = PROBE_NEVER;
+    uc_emu_stop(c->uc);
+    return false;
+}
+
 static uint64_t mmio_read(armcore_t *c, uint32_t addr, unsigned size)
 {
     uint32_t v = 0;
+    if (c->probe && !probe_access(c, addr, false)) return 0;
     c->now = access_cycle(c);
     if (periph_or_bb(c, addr, size, false, &v) != MMIO_OK) bus_fault(c, addr, false);
     return v;
@@ -247,6 +297,7 @@ static uint64_t mmio_read(armcore_t *c, uint32_t addr, unsigned size)
 
 static void mmio_write(armcore_t *c, uint32_t addr, unsigned size, uint32_t v)
 {
+    if (c->probe && !probe_access(c, addr, true)) return;
     c->now = access_cycle(c);
     if (periph_or_bb(c, addr, size, true, &v) != MMIO_OK) bus_fault(c, addr, true);
 }
@@ -322,7 +373,7 @@ static int exec_prio(armcore_t *c)
 /* At a block's start: events due, then the exception to take now, 0 if none. */
 static unsigned check(armcore_t *c)
 {
-    c->cm.attention = false;
+    c->cm.attention = false, c->never_head = NO_ADDR;
     c->now = c->cyc;
     clock_check(c);
     advance_due(c);
@@ -335,15 +386,111 @@ static unsigned check(armcore_t *c)
     return 0;
 }
 
+/* ---- idle loops ----
+ * A wait loop is a cycle of at most LOOP_BLOCKS_MAX translated blocks run
+ * twice in a row, whose instructions (thumbuse.c) store nothing and whose
+ * registers read before written in an iteration are never written in it:
+ * every iteration starts from the same values, and what it reads is RAM or
+ * flash (unchanged: nothing stores until the next event), SysTick CSR
+ * (COUNTFLAG only changes at a wrap, an event), or DWT CYCCNT and SysTick
+ * CVR (functions of the cycle). Whether iteration j exits is then a function
+ * of its start cycle alone, found by probes (skip_loop): the iteration run
+ * from the head's saved state at that cycle, the registers and the system
+ * peripherals restored after. The core then starts the iteration before the
+ * first that exits (or before the next event or the target) at its exact
+ * cycle and runs it and the rest for real, so the state the firmware sees
+ * is the one it would have had. */
+
+/* The path from the head of a loop whose blocks were just run twice (hist), or 0. */
+static uint32_t loop_period(const armcore_t *c)
+{
+    for (uint32_t p = 1; p <= LOOP_BLOCKS_MAX && 2 * p + 1 <= c->hist_n; p++) {
+        uint32_t k = 0;
+        for (; k <= p; k++) {
+            unsigned a = (c->hist_pos - 1 - k) % LOOP_HIST, b = (c->hist_pos - 1 - k - p) % LOOP_HIST;
+            if (c->hist_addr[a] != c->hist_addr[b] || c->hist_size[a] != c->hist_size[b]) break;
+        }
+        if (k > p) return p;
+    }
+    return 0;
+}
+
+/* LOOP_PURE if every iteration starts from the same registers and stores nothing (see above), else LOOP_NEVER. */
+static int loop_analyse(armcore_t *c, loop_t *l)
+{
+    uint32_t live_in = 0, written = 0;
+    l->n = 0;
+    for (uint32_t b = 0; b < l->p; b++) {
+        const uint8_t *p = host(c, l->addr[b], l->size[b]);
+        if (!p) return LOOP_NEVER;
+        for (uint32_t i = 0; i + 2 <= l->size[b];) {
+            thumb_use_t u;
+            uint16_t h1 = (uint16_t)(p[i] | p[i + 1] << 8), h2 = i + 4 <= l->size[b] ? (uint16_t)(p[i + 2] | p[i + 3] << 8) : 0;
+            if (thumb_use(h1, h2, &u) != THUMB_OK || i + u.len > l->size[b]) return LOOP_NEVER;
+            live_in |= u.rd & ~written, written |= u.wr, l->bits |= u.bits != 0;
+            i += u.len;
+        }
+        l->n += block_insns(c, l->addr[b], l->size[b]);
+    }
+    l->written = written & ~(1u << 15);
+    return (live_in & written & ~(1u << 15)) || l->n == 0 ? LOOP_NEVER : LOOP_PURE;
+}
+
+/* At an untouched block's start: true if it heads a wait loop worth a skip (c->skip set). */
+static bool idle_loop(armcore_t *c, uint32_t addr, uint32_t size)
+{
+    c->hist_addr[c->hist_pos % LOOP_HIST] = addr, c->hist_size[c->hist_pos % LOOP_HIST] = size;
+    c->hist_pos++, c->hist_n += c->hist_n < LOOP_HIST;
+    if (addr == c->never_head) return false;
+    uint32_t p = loop_period(c);
+    if (!p) return false;
+    loop_t *l = &c->loops[(addr >> 1) % LOOP_CACHE];
+    bool same = l->head == addr && l->p == p;
+    for (uint32_t b = 0; same && b < p; b++) {
+        unsigned h = (c->hist_pos - 1 - p + b) % LOOP_HIST;
+        same = l->addr[b] == c->hist_addr[h] && l->size[b] == c->hist_size[h];
+    }
+    if (!same) {
+        memset(l, 0, sizeof *l);
+        l->head = addr, l->p = p;
+        for (uint32_t b = 0; b < p; b++) {
+            unsigned h = (c->hist_pos - 1 - p + b) % LOOP_HIST;
+            l->addr[b] = c->hist_addr[h], l->size[b] = c->hist_size[h];
+        }
+        l->verdict = loop_analyse(c, l);
+    }
+    if (l->verdict != LOOP_PURE) c->never_head = addr;
+    uint64_t end = c->ev_next < c->target ? c->ev_next : c->target;
+    if (l->verdict != LOOP_PURE || c->cyc < l->retry_at || end < c->cyc || (end - c->cyc) / l->n < LOOP_SKIP_MIN) return false;
+    c->skip = l;
+    c->hist_pos--, c->hist_n--; /* the head runs again after the skip */
+    return true;
+}
+
+/* A block in a probe: the loop's next one, or the exit (the block not run), or back at the head. */
+static void probe_block(armcore_t *c, uint32_t addr, uint32_t size, uint32_t n)
+{
+    const loop_t *l = c->skip;
+    if (c->probe_idx == l->p || addr != l->addr[c->probe_idx] || size != l->size[c->probe_idx]) {
+        bool head = addr == l->head && size == l->size[0];
+        c->probe_res = c->probe_idx == 0 ? PROBE_AGAIN : c->probe_idx == l->p && head ? PROBE_STAYS : PROBE_EXITS;
+        uc_emu_stop(c->uc);
+        return;
+    }
+    c->nat_start = c->cyc, c->cyc += n, c->probe_idx++;
+}
+
 static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
 {
     armcore_t *c = u;
     uint32_t addr = (uint32_t)address, n = block_insns(c, addr, size);
+    if (c->probe) { if (c->probe_res == PROBE_RUNNING) probe_block(c, addr, size, n); return; }
     c->blk_addr = addr, c->blk_size = size, c->blk_start = c->cyc;
     if (c->partial || c->stop != STOP_NONE) return;
     c->stop_mid = addr == c->resume_mid;
     if (c->stop_mid) {
         c->resume_mid = NO_ADDR;
+        c->hist_n = 0;
     } else {
         c->nat_start = c->cyc;
     }
@@ -351,6 +498,7 @@ static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
         unsigned e = check(c);
         if (e) { c->take = e, c->stop = STOP_TAKE, c->stop_addr = addr; uc_emu_stop(uc); return; }
     }
+    if (!c->stop_mid && !c->no_idle_skip && idle_loop(c, addr, size)) { c->stop = STOP_SKIP, c->stop_addr = addr; uc_emu_stop(uc); return; }
     if (c->cyc + n > c->target) { c->stop = STOP_SPLIT, c->stop_addr = addr; uc_emu_stop(uc); return; }
     c->cyc += n;
 }
@@ -358,6 +506,7 @@ static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
 static void on_intr(uc_engine *uc, uint32_t intno, void *u)
 {
     armcore_t *c = u;
+    if (c->probe) { c->probe_res = PROBE_NEVER; uc_emu_stop(uc); return; }
     if (c->stop != STOP_NONE) return;
     c->stop = STOP_INTR, c->intno = (int)intno;
     uc_emu_stop(uc);
@@ -366,6 +515,7 @@ static void on_intr(uc_engine *uc, uint32_t intno, void *u)
 static bool on_bad_mem(uc_engine *uc, uc_mem_type type, uint64_t addr, int size, int64_t value, void *u)
 {
     armcore_t *c = u;
+    if (c->probe) { c->probe_res = PROBE_NEVER; return false; }
     c->bad_addr = (uint32_t)addr, c->bad_type = (int)type;
     return false;
 }
@@ -408,7 +558,32 @@ static const char *exc_name(unsigned exc)
     return exc < 7 ? names[exc] : "exception";
 }
 
-/* Exception exc taken with ret the address to return to: the 8-word frame pushed, LR = EXC_RETURN, the handler's PC. */
+/* S0-S15 (as D0-D7: S2n the low word of Dn) and FPSCR into or out of an extended frame f at 0x20 and 0x60 (B1.5.7). */
+static void fp_save(armcore_t *c, uint8_t *f)
+{
+    static const int rd[] = { UC_ARM_REG_D0, UC_ARM_REG_D1, UC_ARM_REG_D2, UC_ARM_REG_D3, UC_ARM_REG_D4, UC_ARM_REG_D5,
+                              UC_ARM_REG_D6, UC_ARM_REG_D7, UC_ARM_REG_FPSCR };
+    uint64_t d[8] = { 0 };
+    uint32_t fpscr = 0;
+    void *p[9];
+    for (int i = 0; i < 8; i++) p[i] = &d[i];
+    p[8] = &fpscr;
+    uc_reg_read_batch(c->uc, (int *)rd, p, 9);
+    for (int i = 0; i < 8; i++) wr32(f + 32 + 8 * i, (uint32_t)d[i]), wr32(f + 36 + 8 * i, (uint32_t)(d[i] >> 32));
+    wr32(f + 0x60, fpscr), wr32(f + 0x64, 0);
+}
+
+static void fp_load(armcore_t *c, const uint8_t *f)
+{
+    for (int i = 0; i < 8; i++) {
+        uint64_t d = (uint64_t)rd32(f + 36 + 8 * i) << 32 | rd32(f + 32 + 8 * i);
+        uc_reg_write(c->uc, UC_ARM_REG_D0 + i, &d);
+    }
+    set_reg(c, UC_ARM_REG_FPSCR, rd32(f + 0x60));
+}
+
+/* Exception exc taken with ret the address to return to: the frame pushed (the extended one when CONTROL.FPCA on an
+ * FPU: its S0-S15 and FPSCR saved at entry, see fp_save), LR = EXC_RETURN, the handler's PC. */
 static void enter(armcore_t *c, unsigned exc, uint32_t ret)
 {
     static const int rd[] = { UC_ARM_REG_R0, UC_ARM_REG_R1, UC_ARM_REG_R2, UC_ARM_REG_R3, UC_ARM_REG_R12, UC_ARM_REG_LR,
@@ -416,30 +591,32 @@ static void enter(armcore_t *c, unsigned exc, uint32_t ret)
     uint32_t v[11], handler_pc;
     regs_read(c, rd, v, 11);
     uint32_t ipsr = v[6] & 0x1FFu, ctrl = v[7], apsr = v[8];
-    bool psp = !ipsr && (ctrl & CONTROL_SPSEL);
-    uint32_t sp = psp ? v[9] : v[10], xpsr = (apsr & 0xF80F0000u) | XPSR_T | ipsr;
-    if ((c->cm.ccr & CCR_STKALIGN) && (sp & 4u)) sp -= 4, xpsr |= XPSR_ALIGN;
-    sp -= 32;
-    uint8_t f[32];
+    bool psp = !ipsr && (ctrl & CONTROL_SPSEL), fp = c->mcu->fpu && (ctrl & CONTROL_FPCA);
+    uint32_t sp = psp ? v[9] : v[10], xpsr = (apsr & 0xF80F0000u) | XPSR_T | ipsr, size = fp ? FP_FRAME_BYTES : BASIC_FRAME_BYTES;
+    if ((fp || (c->cm.ccr & CCR_STKALIGN)) && (sp & 4u)) sp -= 4, xpsr |= XPSR_ALIGN; /* an extended frame is always aligned */
+    sp -= size;
+    uint8_t f[FP_FRAME_BYTES];
     for (int i = 0; i < 6; i++) wr32(f + 4 * i, v[i]);
     wr32(f + 24, ret), wr32(f + 28, xpsr);
+    if (fp) fp_save(c, f), c->cm.fpcar = sp + BASIC_FRAME_BYTES;
     if (exc >= EXC_HARDFAULT && exc <= EXC_USAGEFAULT) {
         char m[120];
         snprintf(m, sizeof m, "%s taken (CFSR 0x%08x, HFSR 0x%08x)", exc_name(exc), c->cm.cfsr, c->cm.hfsr);
         crash(c, ret, m);
         return;
     }
-    if (!mem_rw(c, sp, f, 32, true)) {
+    if (!mem_rw(c, sp, f, size, true)) {
         char m[120];
         snprintf(m, sizeof m, "HardFault: stacking for %s at SP 0x%08x outside SRAM (STKERR)", exc == EXC_SVCALL ? "SVCall" : "an exception", sp);
         crash(c, ret, m);
         return;
     }
     if (!vector(c, exc, &handler_pc)) return;
-    if (psp) set_reg(c, UC_ARM_REG_PSP, sp), set_reg(c, UC_ARM_REG_CONTROL, ctrl & ~CONTROL_SPSEL);
+    if (psp) set_reg(c, UC_ARM_REG_PSP, sp);
     else set_reg(c, UC_ARM_REG_MSP, sp);
+    if (psp || c->mcu->fpu) set_reg(c, UC_ARM_REG_CONTROL, ctrl & ~(CONTROL_SPSEL | CONTROL_FPCA)); /* B1.5.6: FPCA cleared */
     set_ipsr(c, exc, apsr);
-    set_reg(c, UC_ARM_REG_LR, ipsr ? 0xFFFFFFF1u : psp ? 0xFFFFFFFDu : 0xFFFFFFF9u);
+    set_reg(c, UC_ARM_REG_LR, (ipsr ? 0xFFFFFFF1u : psp ? 0xFFFFFFFDu : 0xFFFFFFF9u) & ~(fp ? EXC_RETURN_BASIC : 0u));
     cortexm_take(&c->cm, exc);
     c->pc = handler_pc & ~1u;
     c->cyc += ARMCORE_EXC_ENTRY_CYCLES;
@@ -449,28 +626,31 @@ static void enter(armcore_t *c, unsigned exc, uint32_t ret)
 /* The frame popped per EXC_RETURN: to thread or handler mode, from MSP or PSP. */
 static void unstack(armcore_t *c, uint32_t excret)
 {
-    bool psp = excret & 4u, thread = excret & 8u;
-    uint32_t sp = reg(c, psp ? UC_ARM_REG_PSP : UC_ARM_REG_MSP), msp = reg(c, UC_ARM_REG_MSP);
-    uint8_t f[32];
+    bool psp = excret & 4u, thread = excret & 8u, fp = !(excret & EXC_RETURN_BASIC);
+    uint32_t sp = reg(c, psp ? UC_ARM_REG_PSP : UC_ARM_REG_MSP), msp = reg(c, UC_ARM_REG_MSP), size = fp ? FP_FRAME_BYTES : BASIC_FRAME_BYTES;
+    uint8_t f[FP_FRAME_BYTES];
     char m[120];
-    if (!mem_rw(c, sp, f, 32, false)) {
+    if (!mem_rw(c, sp, f, size, false)) {
         snprintf(m, sizeof m, "HardFault: unstacking at SP 0x%08x outside SRAM (UNSTKERR)", sp);
         crash(c, c->pc, m);
         return;
     }
-    uint32_t xpsr = rd32(f + 28), ret = rd32(f + 24), nsp = sp + 32u + ((xpsr & XPSR_ALIGN) ? 4u : 0u);
+    uint32_t xpsr = rd32(f + 28), ret = rd32(f + 24), nsp = sp + size + ((xpsr & XPSR_ALIGN) ? 4u : 0u);
     if (!(xpsr & XPSR_T)) {
         snprintf(m, sizeof m, "HardFault: return to 0x%08x with the frame's Thumb bit clear (UsageFault INVSTATE)", ret);
         crash(c, ret, m);
         return;
     }
+    if (fp) fp_load(c, f);
     set_ipsr(c, thread ? 0 : (xpsr & 0x1FFu), xpsr);
+    uint32_t ctrl = (reg(c, UC_ARM_REG_CONTROL) & ~CONTROL_FPCA) | (fp ? CONTROL_FPCA : 0u); /* B1.5.8: FPCA = NOT EXC_RETURN[4] */
     if (psp) {
         set_reg(c, UC_ARM_REG_MSP, msp);
-        set_reg(c, UC_ARM_REG_CONTROL, reg(c, UC_ARM_REG_CONTROL) | CONTROL_SPSEL);
+        set_reg(c, UC_ARM_REG_CONTROL, ctrl | CONTROL_SPSEL);
         set_reg(c, UC_ARM_REG_PSP, nsp);
     } else {
         set_reg(c, UC_ARM_REG_MSP, nsp);
+        if (c->mcu->fpu) set_reg(c, UC_ARM_REG_CONTROL, ctrl);
     }
     static const int wr[] = { UC_ARM_REG_R0, UC_ARM_REG_R1, UC_ARM_REG_R2, UC_ARM_REG_R3, UC_ARM_REG_R12, UC_ARM_REG_LR,
                               UC_ARM_REG_APSR, UC_ARM_REG_APSR_NZCV };
@@ -488,7 +668,8 @@ static void exc_return(armcore_t *c)
     uint32_t excret = reg(c, UC_ARM_REG_PC) | 1u, exc = reg(c, UC_ARM_REG_IPSR) & 0x1FFu;
     char m[120];
     uint32_t low = excret & 0xFu;
-    if ((excret & 0xFFFFFFF0u) != 0xFFFFFFF0u || (low != 1u && low != 9u && low != 0xDu) || cortexm_return(&c->cm, exc) != 0) {
+    bool fp_ok = c->mcu->fpu || (excret & EXC_RETURN_BASIC); /* an extended frame only with an FPU */
+    if ((excret & 0xFFFFFFE0u) != 0xFFFFFFE0u || !fp_ok || (low != 1u && low != 9u && low != 0xDu) || cortexm_return(&c->cm, exc) != 0) {
         snprintf(m, sizeof m, "HardFault: exception return 0x%08x from exception %u (UsageFault INVPC)", excret, exc);
         crash(c, c->blk_addr, m);
         return;
@@ -498,6 +679,7 @@ static void exc_return(armcore_t *c)
     if (next && group < exec_prio(c) && next != EXC_RESET) {
         uint32_t pc, apsr = reg(c, UC_ARM_REG_APSR);
         if (!vector(c, next, &pc)) return;
+        if (c->mcu->fpu) set_reg(c, UC_ARM_REG_CONTROL, reg(c, UC_ARM_REG_CONTROL) & ~CONTROL_FPCA); /* a new handler: no FP context */
         set_ipsr(c, next, apsr);
         set_reg(c, UC_ARM_REG_LR, excret);
         cortexm_take(&c->cm, next);
@@ -586,6 +768,78 @@ static void sleep_step(armcore_t *c)
     c->cyc = to;
 }
 
+static const int loop_regs[17] = { UC_ARM_REG_R0, UC_ARM_REG_R1, UC_ARM_REG_R2, UC_ARM_REG_R3, UC_ARM_REG_R4, UC_ARM_REG_R5,
+    UC_ARM_REG_R6, UC_ARM_REG_R7, UC_ARM_REG_R8, UC_ARM_REG_R9, UC_ARM_REG_R10, UC_ARM_REG_R11, UC_ARM_REG_R12, UC_ARM_REG_SP,
+    UC_ARM_REG_LR, UC_ARM_REG_APSR, UC_ARM_REG_APSR_NZCV };
+
+/* The registers and flags loop l writes back to their values at its head (c->saved). */
+static void loop_restore(armcore_t *c, const loop_t *l)
+{
+    int r[17], n = 0;
+    uint32_t v[17];
+    for (int i = 0; i < 15; i++)
+        if (l->written & (1u << i)) r[n] = loop_regs[i], v[n++] = c->saved[i];
+    if (l->written & THUMB_NZCV) r[n] = UC_ARM_REG_APSR, v[n++] = c->saved[15], r[n] = UC_ARM_REG_APSR_NZCV, v[n++] = c->saved[15];
+    if (n) regs_write(c, r, v, n);
+}
+
+/* Iteration j of loop c->skip from its head's saved state (c->saved, c->cm_saved) at cycle t0 + j x n:
+ * PROBE_EXITS, PROBE_STAYS, or PROBE_AGAIN / PROBE_NEVER (give up now / for good). The state is restored after. */
+static int probe(armcore_t *c, uint64_t t0, uint64_t j)
+{
+    c->probe = true, c->probe_res = PROBE_RUNNING, c->probe_idx = 0, c->cyc = t0 + j * c->skip->n;
+    uc_err e = uc_emu_start(c->uc, c->skip->head | 1u, 0, 0, 0);
+    c->probe = false;
+    int r = e != UC_ERR_OK && c->probe_res == PROBE_RUNNING ? PROBE_NEVER : c->probe_res == PROBE_RUNNING ? PROBE_AGAIN : c->probe_res;
+    loop_restore(c, c->skip);
+    c->cm = c->cm_saved, c->cyc = t0;
+    return r;
+}
+
+/* The first iteration in (0, k) that exits, k if none: LOOP_GRID probes spread over them, then a bisection
+ * between the last that stays and the first that exits (the exit taken as monotone in time within one
+ * interval of the grid: elapsed-time comparisons are); 0 if a probe gives up. */
+static uint64_t first_exit(armcore_t *c, uint64_t t0, uint64_t k)
+{
+    uint64_t lo = 0, hi = k;
+    for (uint64_t i = 1; i <= LOOP_GRID; i++) {
+        uint64_t g = (k - 1) * i / LOOP_GRID;
+        if (g <= lo) continue;
+        int r = probe(c, t0, g);
+        if (r < 0) return 0;
+        if (r == PROBE_EXITS) { hi = g; break; }
+        lo = g;
+    }
+    while (hi < k && hi - lo > 1) {
+        uint64_t mid = lo + (hi - lo) / 2;
+        int r = probe(c, t0, mid);
+        if (r < 0) return 0;
+        if (r == PROBE_EXITS) hi = mid;
+        else lo = mid;
+    }
+    return hi;
+}
+
+/* Stopped at the head of loop c->skip: jump to the start of the iteration before the first that exits,
+ * or before the last whole one ahead of the next event or the target; then run on from there. */
+static void skip_loop(armcore_t *c)
+{
+    loop_t *l = c->skip;
+    uint64_t t0 = c->cyc, end = c->ev_next < c->target ? c->ev_next : c->target, k = (end - t0) / l->n, m = 0;
+    c->pc = l->head;
+    regs_read(c, loop_regs, c->saved, 16);
+    c->cm_saved = c->cm, c->probe_timed = false;
+    int r = probe(c, t0, 0);
+    if (r == PROBE_STAYS && c->probe_timed && l->bits) r = PROBE_NEVER; /* e.g. a CYCCNT bit tested: exits come and go */
+    if (r == PROBE_STAYS) m = c->probe_timed ? first_exit(c, t0, k) : k; /* untimed: the same outcome until the next event */
+    if (r == PROBE_NEVER) l->verdict = LOOP_NEVER;
+    if (m >= 2) {
+        c->cyc = t0 + (m - 1) * l->n;
+        c->st.loop_skips++, c->st.loop_cycles += (m - 1) * l->n;
+    }
+    l->retry_at = t0 + (m + 1) * l->n;
+}
+
 /* The first k = target - cycle instructions of the block at stop_addr, through an exit there (its cached translation dropped before and after). */
 static void run_split(armcore_t *c)
 {
@@ -642,6 +896,7 @@ static void run_once(armcore_t *c)
         else enter(c, c->take, c->stop_addr);
         break;
     case STOP_SPLIT: run_split(c); break;
+    case STOP_SKIP: skip_loop(c); break;
     case STOP_INTR: on_stop_intr(c); break;
     case STOP_FAULT: break;
     default: on_stop_none(c, e); break;
@@ -699,6 +954,7 @@ static int by_base(const void *a, const void *b)
 armcore_t *armcore_new(const armcore_cfg_t *cfg, char *err, size_t errn)
 {
     const armimage_mcu_t *m = cfg->image->mcu;
+    if (ucdl_load(err, errn) != 0) return NULL; /* libunicorn missing: an external failure (exit 3) */
     if (cfg->nregions < 0 || cfg->nregions > ARMCORE_REGIONS_MAX)
         return snprintf(err, errn, "mmsim: %d peripheral regions (at most %d)", cfg->nregions, ARMCORE_REGIONS_MAX), NULL;
     armcore_t *c = calloc(1, sizeof *c);
@@ -707,8 +963,9 @@ armcore_t *armcore_new(const armcore_cfg_t *cfg, char *err, size_t errn)
     memcpy(c->flash, cfg->image->flash, m->flash_bytes);
     c->mcu = m, c->clocks = cfg->clocks, c->verbose = cfg->verbose, c->no_idle_skip = cfg->no_idle_skip;
     c->hclk = cfg->clocks && cfg->clocks->hclk ? cfg->clocks->hclk : cfg->hclk_hz;
-    c->target_ps = NO_TIME, c->resume_mid = NO_ADDR;
+    c->target_ps = NO_TIME, c->resume_mid = NO_ADDR, c->never_head = NO_ADDR;
     cortexm_init(&c->cm, m->nirq, m->prio_bits, m->cpuid);
+    cortexm_set_fpu(&c->cm, m->fpu != 0);
     memcpy(c->reg, cfg->regions, sizeof *c->reg * (size_t)cfg->nregions);
     c->reg[cfg->nregions] = (mmio_region_t){ CORTEXM_PPB_BASE, CORTEXM_PPB_BYTES, &cortexm_ops, &c->cm };
     c->nreg = cfg->nregions + 1;

@@ -17,7 +17,9 @@
  * it must), and such a stop is invisible: pending exceptions and peripheral
  * events are taken at the start of a translated block as they would be
  * without it, so a run is the same in any chunking. WFI/WFE sleep to the
- * next event, skipped in one go (the same state as cycle by cycle). */
+ * next event, skipped in one go (the same state as cycle by cycle); a wait
+ * loop (polling DWT CYCCNT, SysTick or RAM, storing nothing) is jumped over
+ * by whole iterations to the one that exits or to the next event. */
 #ifndef ARMCORE_H
 #define ARMCORE_H
 
@@ -45,7 +47,7 @@ typedef struct {
     const mmio_clocks_t *clocks;      /* RCC's; NULL: hclk_hz throughout */
     uint32_t hclk_hz;                 /* the clock before RCC says otherwise (the STM32F1's HSI: 8 MHz) */
     bool verbose;                     /* one line on stderr for each unmodeled register's first access */
-    bool no_idle_skip;                /* sleep cycle by cycle (tests: the same state as skipping) */
+    bool no_idle_skip;                /* sleep cycle by cycle, run every wait loop (tests: the same state as skipping) */
 } armcore_cfg_t;
 
 typedef struct {
@@ -59,6 +61,8 @@ typedef struct {
     uint64_t tail_chains;
     uint64_t sleeps;                  /* WFI/WFE that slept */
     uint64_t idle_cycles;             /* cycles asleep */
+    uint64_t loop_skips;              /* wait loops jumped over (see armcore.c, "idle loops") */
+    uint64_t loop_cycles;             /* cycles of wait loops jumped over */
     uint64_t splits;                  /* stops inside a translated block */
     uint64_t starts;                  /* uc_emu_start calls */
 } armcore_stats_t;

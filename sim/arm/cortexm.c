@@ -8,6 +8,11 @@
 #define CCR_RESET 0x00000200u          /* PM0056 4.4.7: STKALIGN set */
 #define AIRCR_VECTKEY 0x05FAu          /* written in [31:16] */
 #define AIRCR_VECTKEYSTAT 0xFA05u      /* read in [31:16] */
+#define FPCCR_RESET 0xC0000000u        /* ASPEN, LSPEN: automatic and lazy FP state preservation (B3.2.20) */
+#define FPCCR_WRITABLE 0xC000017Bu     /* ASPEN, LSPEN, MONRDY, BFRDY, MMRDY, HFRDY, THREAD, USER, LSPACT */
+#define CPACR_CP10_CP11 0x00F00000u    /* the FPU's access fields (B3.2.20); the other coprocessors are absent: RAZ/WI */
+#define MVFR0_M4F 0x10110021u          /* Cortex-M4 TRM r0p1 chapter 7, FPU register summary: single precision, divide, square root, 16 D registers */
+#define MVFR1_M4F 0x11000011u
 #define ST_ENABLE 1u
 #define ST_TICKINT 2u
 #define ST_CLKSOURCE 4u
@@ -40,13 +45,21 @@ static void reset(void *self)
     uint8_t mask = cm->prio_mask;
     uint32_t cpuid = cm->cpuid;
     uint64_t now = cm->now;
+    bool fpu = cm->fpu;
     memset(cm, 0, sizeof *cm);
-    cm->nirq = nirq, cm->prio_mask = mask, cm->cpuid = cpuid, cm->now = now;
+    cm->nirq = nirq, cm->prio_mask = mask, cm->cpuid = cpuid, cm->now = now, cm->fpu = fpu;
+    cm->fpccr = fpu ? FPCCR_RESET : 0u;
     cm->ccr = CCR_RESET, cm->dwt_ctrl = DWT_CTRL_RESET;
     cm->st_at = cm->cyc_at = now;
     for (unsigned e = EXC_NMI; e <= EXC_SYSTICK; e++) cm->enabled[e] = true;
     cm->enabled[EXC_MEMMANAGE] = cm->enabled[EXC_BUSFAULT] = cm->enabled[EXC_USAGEFAULT] = false;
     cm->attention = true;
+}
+
+void cortexm_set_fpu(cortexm_t *cm, bool fpu)
+{
+    cm->fpu = fpu;
+    cm->fpccr = fpu ? FPCCR_RESET : 0u;
 }
 
 void cortexm_pend(cortexm_t *cm, unsigned exc)
@@ -243,8 +256,39 @@ static uint8_t *prio_byte(cortexm_t *cm, uint32_t off)
 
 static bool is_prio(const cortexm_t *cm, uint32_t off) { return (off >= 0xE400 && off < 0xE4F0) || (off >= 0xED18 && off < 0xED24); }
 
+/* The FPU's registers (B3.2.20, Cortex-M4 TRM 7.3); without an FPU they are not there. */
+static mmio_status_t fpu_read(const cortexm_t *cm, uint32_t off, uint32_t *v)
+{
+    if (!cm->fpu) return MMIO_UNMODELED;
+    switch (off) {
+    case 0xED88: *v = cm->cpacr; return MMIO_OK;
+    case 0xEF34: *v = cm->fpccr; return MMIO_OK;
+    case 0xEF38: *v = cm->fpcar; return MMIO_OK;
+    case 0xEF3C: *v = cm->fpdscr; return MMIO_OK;
+    case 0xEF40: *v = MVFR0_M4F; return MMIO_OK;
+    case 0xEF44: *v = MVFR1_M4F; return MMIO_OK;
+    default: return MMIO_UNMODELED;
+    }
+}
+
+static mmio_status_t fpu_write(cortexm_t *cm, uint32_t off, uint32_t v)
+{
+    if (!cm->fpu) return MMIO_UNMODELED;
+    switch (off) {
+    case 0xED88: cm->cpacr = v & CPACR_CP10_CP11; return MMIO_OK;
+    case 0xEF34: cm->fpccr = v & FPCCR_WRITABLE; return MMIO_OK;
+    case 0xEF38: cm->fpcar = v & ~7u; return MMIO_OK;
+    case 0xEF3C: cm->fpdscr = v & 0x07C00000u; return MMIO_OK; /* AHP, DN, FZ, RMode */
+    case 0xEF40: case 0xEF44: return MMIO_OK;                  /* MVFR0/1 are read-only */
+    default: return MMIO_UNMODELED;
+    }
+}
+
+static bool is_fpu_reg(uint32_t off) { return off == 0xED88 || (off >= 0xEF34 && off <= 0xEF44); }
+
 static mmio_status_t scb_read(cortexm_t *cm, uint32_t off, uint32_t *v)
 {
+    if (is_fpu_reg(off)) return fpu_read(cm, off, v);
     switch (off) {
     case 0xE004: *v = (cm->nirq + 31) / 32 - 1; return MMIO_OK; /* ICTR INTLINESNUM */
     case 0xE008: *v = cm->actlr; return MMIO_OK;
@@ -309,6 +353,7 @@ static mmio_status_t systick_write(cortexm_t *cm, uint32_t off, uint32_t v)
 
 static mmio_status_t scb_write(cortexm_t *cm, uint32_t off, uint32_t v)
 {
+    if (is_fpu_reg(off)) return fpu_write(cm, off, v);
     switch (off) {
     case 0xE008: cm->actlr = v & 7u; return MMIO_OK;
     case 0xE010: case 0xE014: case 0xE018: case 0xE01C: return systick_write(cm, off, v);

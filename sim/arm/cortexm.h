@@ -5,7 +5,7 @@
  * CFSR, HFSR, MMFAR, BFAR), SysTick (CSR, RVR, CVR, CALIB) and the DWT's
  * cycle counter (DWT_CTRL, CYCCNT, with DEMCR.TRCENA). Sources: ARMv7-M
  * Architecture Reference Manual (DDI 0403E) B1.5 (exceptions), B3.2 (SCB),
- * B3.3 (SysTick), B3.4 (NVIC), C1.8 (DWT); PM0056 Rev 7 (STM32F1) chapter 4.
+ * B3.3 (SysTick), B3.4 (NVIC), C1.8 (DWT), B3.2.20 (the FPU's CPACR, FPCCR, FPCAR, FPDSCR); PM0056 Rev 7 (STM32F1) chapter 4.
  *
  * It is the state of exceptions only: which are pending, active, enabled,
  * their priorities. Taking and returning from one (the stack frame, the
@@ -49,12 +49,17 @@ typedef struct {
     /* DWT: CYCCNT was cyc_base at cycle cyc_at while counting */
     uint32_t dwt_ctrl, cyc_base;
     uint64_t cyc_at;
+    /* the FPU's (a Cortex-M4F): CPACR, FPCCR, FPCAR (the core sets it at an extended frame's stacking), FPDSCR */
+    bool fpu;
+    uint32_t cpacr, fpccr, fpcar, fpdscr;
     uint64_t now;          /* the cycle it was advanced to */
     bool attention;        /* something pended, unmasked or rescheduled: the core checks before its next block */
     bool reset_request;    /* AIRCR.SYSRESETREQ written with its key */
 } cortexm_t;
 
 void cortexm_init(cortexm_t *cm, unsigned nirq, unsigned prio_bits, uint32_t cpuid);
+/* The core has an FPU (FPv4-SP): CPACR, FPCCR, FPCAR, FPDSCR, MVFR0/1 modeled (B3.2.20, Cortex-M4 TRM 7.2). */
+void cortexm_set_fpu(cortexm_t *cm, bool fpu);
 /* The PPB as a bus region. */
 extern const mmio_ops_t cortexm_ops;
 /* An external interrupt line (mmio_irq_t.set's shape: ctx is the cortexm_t). */

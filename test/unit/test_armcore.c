@@ -25,11 +25,13 @@
 #include "../test/firmware/arm/armtest.h"
 
 #define IMAGE "build/arm/coretest.elf"
+#define FPU_IMAGE "build/arm/fputest.elf"
 #define HSI_HZ 8000000u /* the STM32F1's clock out of reset (RM0008 7.2) */
 #define SRAM_BYTES (20u << 10)
 
 enum { PREEMPT = 1, PREEMPT_HW, TAILCHAIN, PRIMASK, BASEPRI, SYSTICK, COUNTFLAG, DWT, VTOR, WFI, FAULT_UNMAPPED, FAULT_PERIPH,
-       UNDEF, SVC, UNMODELED, BITBAND, CLOCK, CHURN, RESET, PRIGROUP_SUB, PRIGROUP_NONE, SPIN, STORM, PSP };
+       UNDEF, SVC, UNMODELED, BITBAND, CLOCK, CHURN, RESET, PRIGROUP_SUB, PRIGROUP_NONE, SPIN, STORM, PSP,
+       IDLE_CYCCNT, IDLE_TICK, IDLE_COUNTFLAG, IDLE_BENCH, IDLE_BITS };
 
 typedef struct {
     uint32_t scenario, scratch;
@@ -76,12 +78,12 @@ typedef struct {
     armcore_t *core;
 } rig_t;
 
-static rig_t *rig_new(uint32_t scenario, bool no_skip)
+static rig_t *rig_image(const char *image, const char *mcu, uint32_t scenario, bool no_skip)
 {
     rig_t *r = calloc(1, sizeof *r);
     char err[300];
     assert_non_null(r);
-    if (armimage_read(IMAGE, armimage_mcu("stm32f103x8"), &r->img, err, sizeof err) != 0) fail_msg("%s (make %s)", err, IMAGE);
+    if (armimage_read(image, armimage_mcu(mcu), &r->img, err, sizeof err) != 0) fail_msg("%s (make %s)", err, image);
     r->fake.scenario = scenario, r->fake.fire_at = MMIO_NEVER, r->fake.clocks.hclk = HSI_HZ;
     mmio_region_t reg = { FAKE_BASE, 0x400, &fake_ops, &r->fake };
     armcore_cfg_t cfg = { .image = &r->img, .regions = &reg, .nregions = 1, .clocks = &r->fake.clocks, .hclk_hz = HSI_HZ,
@@ -91,6 +93,8 @@ static rig_t *rig_new(uint32_t scenario, bool no_skip)
     r->fake.irq = armcore_irq(r->core);
     return r;
 }
+
+static rig_t *rig_new(uint32_t scenario, bool no_skip) { return rig_image(IMAGE, "stm32f103x8", scenario, no_skip); }
 
 static void rig_free(rig_t *r)
 {
@@ -128,6 +132,21 @@ static rig_t *run_log(uint32_t scenario, uint64_t cycles, const uint32_t *want, 
 }
 
 #define EV(a, b) ((uint32_t)(a) << 8 | (uint32_t)(b))
+
+/* libunicorn missing: one line naming it, no core (run first: the library stays loaded once it is). */
+static void test_no_libunicorn(void **state)
+{
+    armimage_t img;
+    char err[300] = "";
+    if (armimage_read(IMAGE, armimage_mcu("stm32f103x8"), &img, err, sizeof err) != 0) fail_msg("%s", err);
+    armcore_cfg_t cfg = { .image = &img, .hclk_hz = HSI_HZ };
+    setenv("MMSIM_UNICORN", "/nonexistent/libunicorn.so.2", 1);
+    armcore_t *c = armcore_new(&cfg, err, sizeof err);
+    unsetenv("MMSIM_UNICORN");
+    assert_null(c);
+    if (!strstr(err, "libunicorn.so.2") || strchr(err, '\n')) fail_msg("the error: %s", err);
+    armimage_free(&img);
+}
 
 static void test_preempt_ispr(void **state)
 {
@@ -318,6 +337,45 @@ static void test_wfi_skip_same_state(void **state)
     rig_free(r), rig_free(q);
 }
 
+/* Idle loops jumped over (armcore.c, "idle loops"): at several targets (some inside a wait) and in random
+ * chunks, the same cycles, registers and SRAM as running every iteration; and the skips did happen. */
+static void idle_same_state(uint32_t scenario, uint64_t end, uint32_t nv, bool skips)
+{
+    static uint8_t a[64 + SRAM_BYTES], b[64 + SRAM_BYTES];
+    const uint64_t stops[] = { 3001, 40000, 77777, 120003, end };
+    rig_t *r = rig_new(scenario, false), *q = rig_new(scenario, true), *k = rig_new(scenario, false);
+    uint32_t x = 777;
+    for (size_t i = 0; i < sizeof stops / sizeof stops[0]; i++) {
+        if (stops[i] > end) continue;
+        armcore_run_to(r->core, stops[i]), armcore_run_to(q->core, stops[i]);
+        for (uint64_t t = armcore_cycles(k->core); t < stops[i];) {
+            x = x * 1103515245u + 12345u;
+            t += 1 + (x >> 16) % 20000;
+            armcore_run_to(k->core, t < stops[i] ? t : stops[i]);
+        }
+        no_crash(r), no_crash(q), no_crash(k);
+        snapshot(r, a), snapshot(q, b);
+        if (memcmp(a, b, sizeof a)) fail_msg("scenario %u at cycle %llu: skipping changed the state", scenario, (unsigned long long)stops[i]);
+        snapshot(k, b);
+        if (memcmp(a, b, sizeof a)) fail_msg("scenario %u at cycle %llu: skipping in chunks changed the state", scenario, (unsigned long long)stops[i]);
+    }
+    mailbox_t mb = mailbox(r);
+    assert_int_equal(mb.done, 1);
+    for (uint32_t i = 1; i < nv; i++) assert_true(mb.v[i] > mb.v[i - 1]);
+    armcore_stats_t st = armcore_stats(r->core);
+    if (!skips) assert_int_equal(st.loop_skips, 0);
+    else if (st.loop_skips < nv || st.loop_cycles + st.idle_cycles < end / 2)
+        fail_msg("scenario %u: %llu skips, %llu cycles skipped of %llu", scenario, (unsigned long long)st.loop_skips,
+                 (unsigned long long)(st.loop_cycles + st.idle_cycles), (unsigned long long)end);
+    assert_int_equal(armcore_stats(q->core).loop_skips, 0);
+    rig_free(r), rig_free(q), rig_free(k);
+}
+
+static void test_idle_cyccnt(void **state) { idle_same_state(IDLE_CYCCNT, 160000, 5, true); }
+static void test_idle_hal_delay(void **state) { idle_same_state(IDLE_TICK, 60000, 8, true); }
+static void test_idle_countflag(void **state) { idle_same_state(IDLE_COUNTFLAG, 180000, 4, true); }
+static void test_idle_bits(void **state) { idle_same_state(IDLE_BITS, 60000, 6, false); } /* not skipped: the same state */
+
 static void test_chunking_same_state(void **state)
 {
     static uint8_t a[64 + SRAM_BYTES], b[64 + SRAM_BYTES];
@@ -338,15 +396,59 @@ static void test_chunking_same_state(void **state)
     rig_free(r), rig_free(q);
 }
 
+/* The M4F's FP context (fputest.c): thread S0-S15 and FPSCR survive IRQ0, whose own survive IRQ1 preempting it (B1.5.7). */
+static void test_fpu_extended_frame(void **state)
+{
+    rig_t *r = rig_image(FPU_IMAGE, "stm32f405xg", 1, false);
+    armcore_run_to(r->core, 20000);
+    no_crash(r);
+    mailbox_t mb = mailbox(r);
+    assert_int_equal(mb.done, 1);
+    assert_int_equal(mb.v[15], 0xC0000000u);         /* FPCCR at reset: ASPEN, LSPEN */
+    assert_int_equal(mb.v[14], 0x00F00000u);         /* CPACR: CP10 and CP11 as written */
+    assert_int_equal(mb.v[0] & 4u, 4u);               /* CONTROL.FPCA after the thread's first FP instruction */
+    assert_int_equal(mb.v[2] & 4u, 0u);               /* cleared on entry */
+    assert_int_equal(mb.v[3], 0xFFFFFFE9u);           /* EXC_RETURN: thread, MSP, extended frame */
+    assert_true(mb.v[6] >= mb.v[9] + 0x20u && mb.v[6] < mb.v[9] + 0x60u && !(mb.v[6] & 7u)); /* FPCAR: in the frame above the handler's SP */
+    assert_int_equal(mb.v[12], 0x3F800000u);          /* at FPCAR: the thread's S0 */
+    assert_int_equal(mb.v[13], 0x03C00000u);          /* at FPCAR + 0x40: its FPSCR */
+    assert_int_equal(mb.v[4] & 4u, 4u);               /* the handler's own FP use sets it again */
+    assert_int_equal(mb.v[5], 0xFFFFFFE1u);           /* IRQ1 preempting it: handler, extended frame */
+    for (uint32_t i = 0; i < 16; i++) {
+        uint32_t want_irq0 = 0xC0000001u + i;
+        if (mb.log[16 + i] != want_irq0) fail_msg("IRQ0's S%u is 0x%08x after IRQ1, want 0x%08x", i, mb.log[16 + i], want_irq0);
+    }
+    static const uint32_t thread_vals[16] = { 0x3F800000, 0x40000000, 0x40400000, 0x40800000, 0x40A00000, 0x40C00000, 0x40E00000,
+        0x41000000, 0x41100000, 0x41200000, 0x41300000, 0x41400000, 0x41500000, 0x41600000, 0x41700000, 0x41800000 };
+    for (uint32_t i = 0; i < 16; i++)
+        if (mb.log[i] != thread_vals[i]) fail_msg("thread S%u is 0x%08x after the interrupts, want 0x%08x", i, mb.log[i], thread_vals[i]);
+    assert_int_equal(mb.v[10], 0x00800000u);          /* IRQ0's FPSCR after IRQ1 */
+    assert_int_equal(mb.v[8], 0x03C00000u);           /* the thread's FPSCR */
+    assert_int_equal(mb.v[1] & 4u, 4u);               /* FPCA back after the return (NOT EXC_RETURN[4]) */
+    rig_free(r);
+    r = rig_image(FPU_IMAGE, "stm32f405xg", 2, false); /* no FP instruction before the interrupt: the basic frame */
+    armcore_run_to(r->core, 20000);
+    no_crash(r);
+    mb = mailbox(r);
+    assert_int_equal(mb.v[3], 0xFFFFFFF9u);
+    assert_int_equal(mb.v[1] & 4u, 0u);
+    rig_free(r);
+    armimage_t img; /* the hard-float image on an MCU without an FPU: refused before unicorn sees it */
+    char err[300] = "";
+    assert_int_not_equal(armimage_read(FPU_IMAGE, armimage_mcu("stm32f103x8"), &img, err, sizeof err), 0);
+    if (!strstr(err, "FPU") && !strstr(err, "hard-float")) fail_msg("the error: %s", err);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_preempt_ispr), cmocka_unit_test(test_preempt_peripheral), cmocka_unit_test(test_tail_chain),
+        cmocka_unit_test(test_no_libunicorn), cmocka_unit_test(test_preempt_ispr), cmocka_unit_test(test_preempt_peripheral), cmocka_unit_test(test_tail_chain),
         cmocka_unit_test(test_primask), cmocka_unit_test(test_basepri), cmocka_unit_test(test_prigroup),
         cmocka_unit_test(test_systick_period), cmocka_unit_test(test_countflag), cmocka_unit_test(test_dwt),
         cmocka_unit_test(test_vtor), cmocka_unit_test(test_svc_pendsv), cmocka_unit_test(test_process_stack), cmocka_unit_test(test_reset_request),
         cmocka_unit_test(test_bitband), cmocka_unit_test(test_unmodeled), cmocka_unit_test(test_faults),
-        cmocka_unit_test(test_clock_switch), cmocka_unit_test(test_wfi_skip_same_state), cmocka_unit_test(test_chunking_same_state),
+        cmocka_unit_test(test_clock_switch), cmocka_unit_test(test_fpu_extended_frame), cmocka_unit_test(test_idle_cyccnt),
+        cmocka_unit_test(test_idle_hal_delay), cmocka_unit_test(test_idle_countflag), cmocka_unit_test(test_idle_bits), cmocka_unit_test(test_wfi_skip_same_state), cmocka_unit_test(test_chunking_same_state),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -8,7 +8,8 @@
 __attribute__((section(".mailbox"))) mailbox_t mb;
 
 enum { PREEMPT = 1, PREEMPT_HW, TAILCHAIN, PRIMASK, BASEPRI, SYSTICK, COUNTFLAG, DWT, VTOR, WFI, FAULT_UNMAPPED, FAULT_PERIPH,
-       UNDEF, SVC, UNMODELED, BITBAND, CLOCK, CHURN, RESET, PRIGROUP_SUB, PRIGROUP_NONE, SPIN, STORM, PSP };
+       UNDEF, SVC, UNMODELED, BITBAND, CLOCK, CHURN, RESET, PRIGROUP_SUB, PRIGROUP_NONE, SPIN, STORM, PSP,
+       IDLE_CYCCNT, IDLE_TICK, IDLE_COUNTFLAG, IDLE_BENCH, IDLE_BITS };
 
 #define ISB() __asm volatile("dsb\n isb" ::: "memory")
 static void log_ev(uint32_t e) { if (mb.nlog < MAILBOX_LOG) mb.log[mb.nlog++] = e; }
@@ -34,6 +35,7 @@ void systick_handler(void)
         log_ev('S' << 8 | '2');
         SYST_CSR = 0;
         break;
+    case IDLE_CYCCNT: case IDLE_TICK: case IDLE_BENCH: ticks++; break;
     case SYSTICK: case WFI:
         if (ticks < 16) mb.v[ticks] = DWT_CYCCNT;
         if (++ticks == (mb.scenario == WFI ? 50u : 5u)) SYST_CSR = 0;
@@ -180,6 +182,69 @@ static void timer_scenarios(uint32_t s)
     }
 }
 
+/* HAL_Delay's shape (ST's Cube HAL): a call to read a tick an interrupt increments, until n ticks went by. */
+__attribute__((noinline)) static uint32_t get_tick(void) { return ticks; }
+static void delay_ticks(uint32_t n)
+{
+    uint32_t start = get_tick();
+    while (get_tick() - start < n) {}
+}
+
+static void cyccnt_wait(uint32_t n)
+{
+    uint32_t s = DWT_CYCCNT;
+    while (DWT_CYCCNT - s < n) {}
+}
+
+/* The idle loops the core jumps over (test_armcore: the same state with and without skipping). */
+static void idle_scenarios(uint32_t s)
+{
+    switch (s) {
+    case IDLE_CYCCNT: /* busy waits on CYCCNT with SysTick interrupting every 10,000 cycles */
+        dwt_on();
+        systick(9999, 7);
+        for (uint32_t i = 0; i < 5; i++) cyccnt_wait(23457u + 1000u * i), mb.v[i] = DWT_CYCCNT;
+        SYST_CSR = 0;
+        break;
+    case IDLE_TICK: /* HAL_Delay on a SysTick tick, then WFI */
+        dwt_on();
+        systick(999, 7);
+        for (uint32_t i = 0; i < 5; i++) delay_ticks(7u + i), mb.v[i] = DWT_CYCCNT;
+        for (uint32_t i = 5; i < 8; i++) {
+            __asm volatile("wfi");
+            mb.v[i] = DWT_CYCCNT;
+        }
+        SYST_CSR = 0;
+        break;
+    case IDLE_COUNTFLAG: /* SysTick without its interrupt: COUNTFLAG polled */
+        dwt_on();
+        systick(4999, 5);
+        for (uint32_t i = 0; i < 4; i++) {
+            while (!(SYST_CSR & (1u << 16))) {}
+            mb.v[i] = DWT_CYCCNT;
+        }
+        break;
+    case IDLE_BITS: /* a CYCCNT bit polled: its exit comes and goes, never jumped over */
+        dwt_on();
+        for (uint32_t i = 0; i < 6; i++) {
+            while (!(DWT_CYCCNT & (1u << 12))) {}
+            while (DWT_CYCCNT & (1u << 12)) {}
+            mb.v[i] = DWT_CYCCNT;
+        }
+        break;
+    case IDLE_BENCH: /* bench/armcore_speed.c at 168 MHz: 1 ms ticks; work, a CYCCNT wait, HAL_Delay, WFI */
+        dwt_on();
+        systick(167999, 7);
+        for (;;) {
+            for (uint32_t i = 0; i < 2000; i++) acc += i * i;
+            cyccnt_wait(50000);
+            delay_ticks(2);
+            __asm volatile("wfi");
+            ((volatile uint32_t *)mb.v)[0] = ticks;
+        }
+    }
+}
+
 static uint32_t vtable[64] __attribute__((aligned(256)));
 
 static void fault_scenarios(uint32_t s)
@@ -247,6 +312,7 @@ int main(void)
     prio_scenarios(mb.scenario);
     timer_scenarios(mb.scenario);
     fault_scenarios(mb.scenario);
+    idle_scenarios(mb.scenario);
     mb.done = 1;
     return 0;
 }
