@@ -229,6 +229,13 @@ ARM_TEST_ELFS := $(B)/arm/coretest.elf
 $(B)/arm/%.elf: test/arm/%.c test/arm/startup.c test/arm/armtest.h test/arm/link.ld | deps
 	@mkdir -p $(dir $@)
 	$(ARM_CC) $(ARM_FLAGS) -T test/arm/link.ld test/arm/startup.c $< -o $@
+# Our STM32F405 test firmware (test/armf4: its own startup and linker
+# script) for the F4 SoC's tests (test/test_stm32f4_soc.c)
+ARM4_FLAGS := -mcpu=cortex-m4 -mthumb -std=gnu99 -Os -g -Wall -Wextra -ffreestanding -nostdlib -Wl,--gc-sections
+ARM_TEST_ELFS += $(B)/armf4/f4test.elf
+$(B)/armf4/f4test.elf: test/armf4/f4test.c test/armf4/startup.c test/armf4/f4test.h test/armf4/link.ld | deps
+	@mkdir -p $(dir $@)
+	$(ARM_CC) $(ARM4_FLAGS) -T test/armf4/link.ld test/armf4/startup.c test/armf4/f4test.c -o $@
 arm-test-firmware: $(ARM_TEST_ELFS)
 .PHONY: arm-test-firmware
 
