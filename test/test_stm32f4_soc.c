@@ -295,7 +295,9 @@ static void test_exti_syscfg(void **state)
 }
 
 /* Sector 3 erase (3.5.3) at x32 parallelism: BSY for tERASE16KB 250 ms typ (DS8626 table "Flash memory
- * programming") at HSI 16 MHz, the sector 0xFF after, sector 2 kept, EOP not set without EOPIE (3.8.4) */
+ * programming") at HSI 16 MHz, the sector 0xFF after, sector 2 kept, EOP not set without EOPIE (3.8.4);
+ * then the firmware's stores into flash (3.5.4): a word with PG at PSIZE x32 programmed, a byte refused
+ * (PGPERR), a store without PG refused (PGSERR) */
 static void test_flash_sector_erase(void **state)
 {
     (void)state;
@@ -316,6 +318,14 @@ static void test_flash_sector_erase(void **state)
     assert_int_equal(armcore_read(r->core, SECTOR3_ADDR + 8u, &w, 4), 0);
     assert_int_equal(w, 0xFFFFFFFFu);
     assert_int_equal(r->soc.flash.sectors_erased, 1);
+    /* programmed: BSY tprog 16 us (DS8626) at 16 MHz, the word read back; refused stores leave 0xFF */
+    assert_true(mb.v[8] >= 16u * 16u && mb.v[8] < 16u * 16u + 100u);
+    assert_int_equal(mb.v[9], 0x12345678u);
+    assert_int_equal(mb.v[10], 1u << 6);               /* PGPERR */
+    assert_int_equal(mb.v[11], 1u << 7);               /* PGSERR */
+    assert_int_equal(mb.v[12], 0xFFFFFFFFu);
+    assert_int_equal(mb.v[13], 0xFFFFFFFFu);
+    assert_int_equal(r->soc.flash.programmed, 1);
     no_unmodeled(r);
     rig_free(r);
 }

@@ -55,6 +55,10 @@ struct armcore {
     int nunm;
     armcore_stats_t st;
     blk_t blk[BLK_CACHE];
+    void (*flash_write)(void *ctx, uint32_t off, unsigned size, uint32_t value, uint64_t now);
+    void *flash_ctx;
+    uint32_t fix_off, fix_n;             /* flash bytes the FLASH model set, unicorn's raw store over them */
+    uint8_t fix[8];
 };
 
 /* ---- memory and instruction lengths ---- */
@@ -335,9 +339,29 @@ static unsigned check(armcore_t *c)
     return 0;
 }
 
+/* A store into flash: the FLASH model's bytes, put back over the raw store unicorn makes after the hook. */
+static bool on_flash_store(uc_engine *uc, uc_mem_type type, uint64_t addr, int size, int64_t value, void *u)
+{
+    armcore_t *c = u;
+    const armimage_mcu_t *m = c->mcu;
+    uint32_t off = addr >= m->flash_base ? (uint32_t)addr - m->flash_base : (uint32_t)addr;
+    if (!c->flash_write || size < 1 || size > 8 || (uint64_t)off + (uint64_t)size > m->flash_bytes) return false;
+    c->now = access_cycle(c);
+    c->flash_write(c->flash_ctx, off, (unsigned)size, (uint32_t)value, c->now);
+    c->cm.attention = true;
+    memcpy(c->fix, c->flash + off, (size_t)size), c->fix_off = off, c->fix_n = (uint32_t)size;
+    return true;
+}
+
+static void flash_fixup(armcore_t *c)
+{
+    if (c->fix_n) memcpy(c->flash + c->fix_off, c->fix, c->fix_n), c->fix_n = 0;
+}
+
 static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
 {
     armcore_t *c = u;
+    flash_fixup(c);
     uint32_t addr = (uint32_t)address, n = block_insns(c, addr, size);
     c->blk_addr = addr, c->blk_size = size, c->blk_start = c->cyc;
     if (c->partial || c->stop != STOP_NONE) return;
@@ -635,6 +659,7 @@ static void run_once(armcore_t *c)
     c->stop = STOP_NONE, c->intno = -1, c->bad_type = -1;
     c->st.starts++;
     uc_err e = uc_emu_start(c->uc, c->pc | 1u, 0, 0, 0);
+    flash_fixup(c);
     switch (c->stop) {
     case STOP_TAKE:
         c->pc = c->stop_addr;
@@ -685,6 +710,7 @@ static bool map_memories(armcore_t *c, char *err, size_t errn)
     uc_hook h;
     if (!e) e = uc_hook_add(c->uc, &h, UC_HOOK_BLOCK, (void *)on_block, c, 1, 0);
     if (!e) e = uc_hook_add(c->uc, &h, UC_HOOK_INTR, (void *)on_intr, c, 1, 0);
+    if (!e) e = uc_hook_add(c->uc, &h, UC_HOOK_MEM_WRITE_PROT, (void *)on_flash_store, c, 1, 0);
     if (!e) e = uc_hook_add(c->uc, &h, UC_HOOK_MEM_INVALID, (void *)on_bad_mem, c, 1, 0);
     if (e) snprintf(err, errn, "mmsim: unicorn: %s", uc_strerror(e));
     return e == UC_ERR_OK;
@@ -706,6 +732,7 @@ armcore_t *armcore_new(const armcore_cfg_t *cfg, char *err, size_t errn)
     if (!c || !c->flash || !c->sram) return snprintf(err, errn, "mmsim: out of memory"), armcore_free(c), NULL;
     memcpy(c->flash, cfg->image->flash, m->flash_bytes);
     c->mcu = m, c->clocks = cfg->clocks, c->verbose = cfg->verbose, c->no_idle_skip = cfg->no_idle_skip;
+    c->flash_write = cfg->flash_write, c->flash_ctx = cfg->flash_ctx;
     c->hclk = cfg->clocks && cfg->clocks->hclk ? cfg->clocks->hclk : cfg->hclk_hz;
     c->target_ps = NO_TIME, c->resume_mid = NO_ADDR;
     cortexm_init(&c->cm, m->nirq, m->prio_bits, m->cpuid);

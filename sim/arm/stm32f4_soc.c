@@ -187,6 +187,14 @@ static void init_serial(stm32f4_soc_t *s, mmio_irq_t irq, mmio_dma_req_t dreq)
     }
 }
 
+/* The firmware's store into flash, to the FLASH interface (RM0090 3.5.4) at its cycle. */
+static void soc_flash_write(void *ctx, uint32_t off, unsigned size, uint32_t value, uint64_t now)
+{
+    stm32f4_soc_t *s = ctx;
+    stm32f4_flash_ops.advance(&s->flash, now);
+    stm32f4_flash_mem_write(&s->flash, off, size, value);
+}
+
 int stm32f4_soc_init(stm32f4_soc_t *soc, armcore_t **core, const armcore_cfg_t *cfg, uint32_t hse_hz,
                      const stm32f4_soc_io_t *io, char *err, size_t errn)
 {
@@ -203,6 +211,7 @@ int stm32f4_soc_init(stm32f4_soc_t *soc, armcore_t **core, const armcore_cfg_t *
     armcore_cfg_t c = *cfg;
     c.regions = soc->region, c.nregions = soc->nregions;
     c.clocks = stm32f4_rcc_clocks(&soc->rcc), c.hclk_hz = STM32F4_HSI_HZ;
+    c.flash_write = soc_flash_write, c.flash_ctx = soc;
     soc->core = armcore_new(&c, err, errn);
     if (!soc->core) return -1;
     soc->flash.mem = armcore_flash(soc->core);

@@ -273,7 +273,8 @@ static void exti_irq(void)
     }
 }
 
-/* Sector 3 erased (3.5.3) at PSIZE x32; sector 2 kept */
+/* Sector 3 erased (3.5.3) at PSIZE x32, sector 2 kept; a word programmed (3.5.4), a byte at the wrong
+ * PSIZE and a store without PG refused */
 static void sc_flash_erase(void)
 {
     mb.v[0] = REG(SECTOR3_ADDR);
@@ -286,6 +287,23 @@ static void sc_flash_erase(void)
     while (FLASH_SR & (1u << 16)) {}                 /* BSY */
     mb.v[2] = DWT_CYCCNT - t0;
     mb.v[3] = FLASH_SR;
+    FLASH_CR = 2u << 8 | 1u << 0;                    /* PSIZE x32, PG (3.5.4) */
+    t0 = DWT_CYCCNT;
+    REG(SECTOR3_ADDR + 0x10u) = 0x12345678u;
+    while (FLASH_SR & (1u << 16)) {}
+    mb.v[8] = DWT_CYCCNT - t0;
+    mb.v[9] = REG(SECTOR3_ADDR + 0x10u);
+    *(volatile uint8_t *)(SECTOR3_ADDR + 0x20u) = 0x00u; /* a byte at PSIZE x32: PGPERR, no change */
+    while (FLASH_SR & (1u << 16)) {}                 /* as HAL's FLASH_WaitForLastOperation */
+    mb.v[10] = FLASH_SR;
+    FLASH_SR = 1u << 6;                              /* rc_w1 */
+    FLASH_CR = 2u << 8;                              /* PG clear: a store is PGSERR */
+    REG(SECTOR3_ADDR + 0x24u) = 0u;
+    while (FLASH_SR & (1u << 16)) {}
+    mb.v[11] = FLASH_SR;
+    FLASH_SR = 1u << 7;
+    mb.v[12] = REG(SECTOR3_ADDR + 0x20u);
+    mb.v[13] = REG(SECTOR3_ADDR + 0x24u);
     FLASH_CR = 1u << 31;                             /* LOCK */
     mb.v[4] = REG(SECTOR3_ADDR);
     mb.v[5] = REG(SECTOR3_ADDR + 0x3FFCu);
