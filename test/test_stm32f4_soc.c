@@ -158,6 +158,7 @@ static void test_clock_setup(void **state)
     assert_int_equal((mb.v[3] >> 10) & 7u, 5u);
     assert_int_equal((mb.v[3] >> 13) & 7u, 4u);
     assert_int_equal(mb.v[5], 1u);                     /* PLLRDY through the alias */
+    assert_true(mb.v[6] & (1u << 14));                 /* PWR VOSRDY with the PLL on (5.4.2) */
     assert_int_equal(mb.v[2], 11u);                    /* HAL_Delay(10): 11 ticks */
     assert_true(mb.v[1] > 10u * (F_CPU / 1000u) && mb.v[1] <= 11u * (F_CPU / 1000u) + 200u);
     /* HSE start-up 2 ms (DS8626 6.3.7 tsu(HSE) typ) at HSI 16 MHz happened before the PLL */
@@ -169,7 +170,8 @@ static void test_clock_setup(void **state)
 
 /* TIM2 TRGO on update (MMS 010, 18.4.2) at 1 kHz triggers ADC1's regular scan IN0-IN2 (EXTSEL 0110 table 69,
  * EXTEN rising, 13.6), each result moved by DMA2 stream 0 channel 0 (table 43) into a circular buffer of two
- * scans: HT after each first scan, TC after each second (10.3.8, 10.5.5), the codes V / 3.3 V x 4095 */
+ * scans: HT after each first scan, TC after each second (10.3.8, 10.5.5), the codes V / 3.3 V x 4095; ADC's
+ * EOC interrupt once per scan (EOCS 0, 13.9) */
 static void test_adc_scan_dma(void **state)
 {
     (void)state;
@@ -183,7 +185,11 @@ static void test_adc_scan_dma(void **state)
         if (fabs(mb.v[12 + i] - code) > 1.0) fail_msg("buffer[%u] %u, want %.1f", i, mb.v[12 + i], code);
     }
     assert_int_equal(mb.v[1] & (1u << 5), 0);           /* no OVR */
+    assert_int_equal(mb.v[18], 8);                     /* an EOC interrupt per scan (EOCS 0) */
+    assert_true(mb.v[19] & (1u << 4));                 /* STRT seen */
     assert_int_equal(mb.v[2], ADC_BUF);                 /* NDTR reloaded (circular) */
+    assert_int_equal(r->soc.tim[STM32F4_TIM2].trig_want, 1u << STM32_TIM_TRGO); /* EXTSEL 0110: TIM2's TRGO alone */
+    assert_int_equal(r->soc.tim[STM32F4_TIM1].trig_want, 0);
     /* HT at v[5], v[7], v[9], v[11]: 2 ms apart (two 1 kHz triggers per half); the first 1 ms after CEN plus a scan */
     for (unsigned k = 7; k <= 11; k += 2) {
         long d = (long)(mb.v[k] - mb.v[k - 2]) - 2L * (F_CPU / 1000);

@@ -5,6 +5,7 @@
  * tables 69/70 (stm32f4_tim.c). */
 #include "arm/stm32f4_soc.h"
 
+#include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -113,6 +114,31 @@ static void soc_trigger(void *ctx, unsigned source, int rising, uint64_t now)
     }
 }
 
+/* The timers' compare and update events the ADCs' external triggers take now (EXTEN/JEXTEN on, the
+ * EXTSEL/JEXTSEL codes of tables 69/70): only those become the timers' events (the others cost nothing). */
+static void adc_trigger_wants(stm32f4_soc_t *s)
+{
+    for (unsigned i = 0; i < STM32F4_TIM_COUNT; i++) {
+        uint32_t m = 0;
+        for (unsigned a = 0; a < STM32F4_SOC_ADCS; a++) {
+            uint32_t cr2 = s->adc[a].cr2;
+            unsigned ext = (cr2 >> 28) & 3u ? (cr2 >> 24) & 0xFu : 15u, jext = (cr2 >> 20) & 3u ? (cr2 >> 16) & 0xFu : 15u;
+            m |= stm32f4_tim_adc_wants(stm32f4_tim[i].d.n, ext, jext);
+        }
+        stm32_tim_trigger_want(&s->tim[i], m);
+    }
+}
+
+/* An ADC's register write, then the timers' wanted events again (CR2's triggers may have changed). */
+static mmio_status_t soc_adc_write(void *self, uint32_t off, unsigned size, uint32_t v)
+{
+    stm32f4_adc_t *a = self;
+    stm32f4_soc_t *s = (stm32f4_soc_t *)(void *)((char *)(a - (a->index - 1u)) - offsetof(stm32f4_soc_t, adc));
+    mmio_status_t st = stm32f4_adc_ops.write(self, off, size, v);
+    adc_trigger_wants(s);
+    return st;
+}
+
 /* A pin's level to EXTI (SYSCFG's EXTICR picks the port) and to the board. */
 static void soc_pin(void *ctx, unsigned port, unsigned pin, int level)
 {
@@ -150,9 +176,11 @@ static void init_analog_timers(stm32f4_soc_t *s, mmio_irq_t irq, mmio_dma_req_t 
     static const unsigned adc_dreq[STM32F4_SOC_ADCS] = { STM32F4_DREQ_ADC1, STM32F4_DREQ_ADC2, STM32F4_DREQ_ADC3 };
     double vref = s->io.vref_v > 0 ? s->io.vref_v : VREF_DEFAULT_V;
     stm32f4_adc_common_init(&s->adc_common, clk, irq);
+    s->adc_ops = stm32f4_adc_ops;
+    s->adc_ops.write = soc_adc_write;
     for (unsigned i = 0; i < STM32F4_SOC_ADCS; i++) {
         stm32f4_adc_init(&s->adc[i], &s->adc_common, i + 1, dreq, adc_dreq[i], s->io.volts, s->io.volts_ctx, vref);
-        place(s, STM32F4_ADC_BASE(i + 1), STM32F4_ADC_SIZE, &stm32f4_adc_ops, &s->adc[i], APB2ENR, 1u << (8 + i));
+        place(s, STM32F4_ADC_BASE(i + 1), STM32F4_ADC_SIZE, &s->adc_ops, &s->adc[i], APB2ENR, 1u << (8 + i));
     }
     place(s, STM32F4_ADC_COMMON_BASE, STM32F4_ADC_SIZE, &stm32f4_adc_common_ops, &s->adc_common, 0, 0);
     stm32_tim_trigger_t trig = { soc_trigger, s };
@@ -161,6 +189,7 @@ static void init_analog_timers(stm32f4_soc_t *s, mmio_irq_t irq, mmio_dma_req_t 
         stm32f4_tim_init(&s->tim[i], i, clk, irq, dreq, trig);
         place(s, t->base, STM32F4_TIM_SIZE, &stm32f4_tim_ops[i], &s->tim[i], t->d.apb == 2 ? APB2ENR : APB1ENR, t->enable);
     }
+    adc_trigger_wants(s);
 }
 
 static void init_serial(stm32f4_soc_t *s, mmio_irq_t irq, mmio_dma_req_t dreq)

@@ -4,7 +4,8 @@
  * NVIC by RM0090 table 61 (each model's own numbers), its DMA requests to
  * both controllers (RM0090 tables 42/43: a stream serves a request when its
  * CHSEL selects it, stm32f4_dma.h), the timers' TRGO and compare events to
- * the ADCs' external triggers (tables 69/70), the GPIO ports' pins to EXTI
+ * the ADCs' external triggers (tables 69/70: a timer stops only at the
+ * events an ADC's EXTEN/EXTSEL or JEXTEN/JEXTSEL take), the GPIO ports' pins to EXTI
  * through SYSCFG, the clocks from RCC, and each peripheral's registers
  * behind its RCC enable bit (RM0090 6.3.10-6.3.14: with the clock off the
  * registers read 0 and ignore writes; each such access counted).
@@ -77,6 +78,7 @@ typedef struct {
     stm32f4_dma_t dma[2];
     stm32f4_adc_common_t adc_common;
     stm32f4_adc_t adc[STM32F4_SOC_ADCS];
+    mmio_ops_t adc_ops;          /* the ADC's, its writes telling the timers the events the triggers take */
     stm32f1_tim_t tim[STM32F4_TIM_COUNT];
     stm32_i2c_t i2c[STM32F4_SOC_I2CS];
     stm32_usart_t usart[STM32F4_SOC_USARTS];

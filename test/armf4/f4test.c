@@ -54,6 +54,7 @@ static void sc_clock(void)
     mb.v[3] = RCC_CFGR;
     mb.v[4] = RCC_PLLCFGR;
     mb.v[5] = BITBAND_PERIPH(RCC + 0x00u, 25);       /* PLLRDY read through the alias */
+    mb.v[6] = PWR_CSR;                               /* VOSRDY (5.4.2) */
 }
 
 /* TIM2 TRGO (update, 1 kHz) -> ADC1 scan IN0-IN2 -> DMA2 stream 0 channel 0, circular, HT and TC interrupts */
@@ -78,7 +79,8 @@ static void sc_adc_dma(void)
     ADC_SMPR2(ADC1) = 3u << 0 | 3u << 3 | 3u << 6;   /* 56 cycles */
     ADC_SQR1(ADC1) = 2u << 20;                       /* L = 3 conversions */
     ADC_SQR3(ADC1) = 0u | 1u << 5 | 2u << 10;        /* IN0, IN1, IN2 */
-    ADC_CR1(ADC1) = 1u << 8;                         /* SCAN */
+    ADC_CR1(ADC1) = 1u << 8 | 1u << 5;               /* SCAN, EOCIE (EOCS 0: EOC at each sequence's end, 13.9) */
+    NVIC_ISER(IRQ_ADC / 32) = 1u << (IRQ_ADC % 32);
     ADC_CR2(ADC1) = 1u << 0 | 1u << 8 | 1u << 9 | 6u << 24 | 1u << 28; /* ADON, DMA, DDS, EXTSEL TIM2_TRGO, rising */
     TIM_CR1(TIM2) = 1u;
     mb.v[0] = DWT_CYCCNT;
@@ -98,6 +100,14 @@ static void dma2_s0_irq(void)
         for (unsigned i = 0; i < ADC_BUF; i++) mb.v[12 + i] = adc_buf[i];
         mb.step++;
     }
+}
+
+static void adc_irq(void)
+{
+    uint32_t sr = ADC_SR(ADC1);
+    mb.v[18]++;
+    mb.v[19] |= sr;
+    ADC_SR(ADC1) = ~(sr & 0x12u);                    /* EOC, STRT cleared (rc_w0) */
 }
 
 /* TIM1 CC1 (every 100 us) -> DMA2 stream 1 channel 6 -> GPIOB BSRR: an IR emitter pattern on PB0/PB1 */
@@ -330,6 +340,7 @@ void irq_handler(void)
     case IRQ_DMA2_S0: dma2_s0_irq(); break;
     case IRQ_DMA2_S1: dma2_s1_irq(); break;
     case IRQ_USART2: usart2_irq(); break;
+    case IRQ_ADC: adc_irq(); break;
     case IRQ_EXTI15_10: exti_irq(); break;
     default: logev(0xDEAD0000u | ipsr); for (;;) __asm volatile("wfi");
     }

@@ -27,6 +27,7 @@
 #define BITBAND_PERIPH(addr, bit) REG(0x42000000u + ((addr) - 0x40000000u) * 32u + (bit) * 4u) /* 2.3.2 */
 /* PWR (5.4), FLASH (3.8) */
 #define PWR_CR REG(0x40007000u)
+#define PWR_CSR REG(0x40007004u)
 #define FLASH_ACR REG(0x40023C00u)
 #define FLASH_KEYR REG(0x40023C04u)
 #define FLASH_SR REG(0x40023C0Cu)
