@@ -348,12 +348,45 @@ static void test_clock_gate(void **state)
     rig_free(r);
 }
 
+/* The SoC is the same at any chunking (armcore.h): the ADC/DMA scenario and the emitter scenario run to
+ * the same cycle in one go and in pseudo-random chunks of 1-5,000 cycles give the same SRAM and pin edges */
+static void run_chunked(rig_t *r, uint64_t end, uint32_t seed)
+{
+    while (armcore_cycles(r->core) < end) {
+        uint64_t step = seed ? 1u + (seed = seed * 1103515245u + 12345u) % 5000u : end;
+        uint64_t to = armcore_cycles(r->core) + step;
+        armcore_run_to(r->core, to < end ? to : end);
+        no_crash(r);
+    }
+}
+
+static void test_chunking_same_state(void **state)
+{
+    (void)state;
+    static uint8_t a[128 << 10], b[128 << 10];
+    const unsigned sc[2] = { SC_ADC_DMA, SC_TIM_DMA_GPIO };
+    for (unsigned k = 0; k < 2; k++) {
+        rig_t *one = rig_new(sc[k]), *many = rig_new(sc[k]);
+        run_chunked(one, 1500000u, 0);
+        run_chunked(many, 1500000u, 7u + k);
+        assert_int_equal(armcore_read(one->core, 0x20000000u, a, sizeof a), 0);
+        assert_int_equal(armcore_read(many->core, 0x20000000u, b, sizeof b), 0);
+        assert_memory_equal(a, b, sizeof a);
+        assert_int_equal(one->npins, many->npins);
+        for (int i = 0; i < one->npins; i++) assert_int_equal(one->pins[i].cycle, many->pins[i].cycle);
+        assert_true(armcore_stats(many->core).splits > 10); /* stops inside translated blocks happened */
+        rig_free(one);
+        rig_free(many);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_clock_setup), cmocka_unit_test(test_adc_scan_dma), cmocka_unit_test(test_tim_dma_gpio),
         cmocka_unit_test(test_i2c_mpu6050_vl53l0x), cmocka_unit_test(test_usart_dma_tc),
         cmocka_unit_test(test_exti_syscfg), cmocka_unit_test(test_flash_sector_erase), cmocka_unit_test(test_clock_gate),
+        cmocka_unit_test(test_chunking_same_state),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
