@@ -60,8 +60,8 @@ static void gate_reset(void *self)
 static void place(stm32f4_soc_t *s, uint32_t base, uint32_t size, const mmio_ops_t *ops, void *self, uint32_t enr_off,
                   uint32_t bit)
 {
-    if (s->nregions >= STM32F4_SOC_REGIONS) return;
-    if (bit && s->ngates < STM32F4_SOC_GATES) {
+    if (s->nregions >= STM32F4_SOC_REGIONS || (bit && s->ngates >= STM32F4_SOC_GATES)) { s->overflow = true; return; }
+    if (bit) {
         stm32f4_gate_t *g = &s->gate[s->ngates++];
         *g = (stm32f4_gate_t){ .inner = ops, .self = self, .enr = &s->rcc.reg[enr_off / 4], .bit = bit };
         g->ops = (mmio_ops_t){ ops->name, gate_read, gate_write, gate_advance, gate_next, gate_reset };
@@ -237,6 +237,7 @@ int stm32f4_soc_init(stm32f4_soc_t *soc, armcore_t **core, const armcore_cfg_t *
     init_serial(soc, irq, dreq);
     if (cfg->image->mcu->flash_bytes != soc->flash.size || cfg->image->mcu->core != ARMCORE_M4)
         return snprintf(err, errn, "mmsim: the STM32F405 SoC runs stm32f405xg images only"), -1;
+    if (soc->overflow) return snprintf(err, errn, "mmsim: the STM32F405 SoC has more regions than its table"), -1;
     armcore_cfg_t c = *cfg;
     c.regions = soc->region, c.nregions = soc->nregions;
     c.clocks = stm32f4_rcc_clocks(&soc->rcc), c.hclk_hz = STM32F4_HSI_HZ;

@@ -86,6 +86,7 @@ typedef struct {
     unsigned ngates;
     mmio_region_t region[STM32F4_SOC_REGIONS];
     int nregions;
+    bool overflow;               /* a region or gate past the tables (init fails) */
 } stm32f4_soc_t;
 
 /* The models at power-on and the core that runs them: cfg's image (an
