@@ -94,6 +94,10 @@ struct armcore {
     uint32_t probe_idx;
     uint32_t saved[17];                  /* the registers a probe may change (R0-R12, SP, LR, APSR), as at the loop's head */
     cortexm_t cm_saved;
+    void (*flash_write)(void *ctx, uint32_t off, unsigned size, uint32_t value, uint64_t now);
+    void *flash_ctx;
+    uint32_t fix_off, fix_n;             /* flash bytes the FLASH model set, unicorn's raw store over them */
+    uint8_t fix[8];
 };
 
 /* ---- memory and instruction lengths ---- */
@@ -480,9 +484,29 @@ static void probe_block(armcore_t *c, uint32_t addr, uint32_t size, uint32_t n)
     c->nat_start = c->cyc, c->cyc += n, c->probe_idx++;
 }
 
+/* A store into flash: the FLASH model's bytes, put back over the raw store unicorn makes after the hook. */
+static bool on_flash_store(uc_engine *uc, uc_mem_type type, uint64_t addr, int size, int64_t value, void *u)
+{
+    armcore_t *c = u;
+    const armimage_mcu_t *m = c->mcu;
+    uint32_t off = addr >= m->flash_base ? (uint32_t)addr - m->flash_base : (uint32_t)addr;
+    if (!c->flash_write || size < 1 || size > 8 || (uint64_t)off + (uint64_t)size > m->flash_bytes) return false;
+    c->now = access_cycle(c);
+    c->flash_write(c->flash_ctx, off, (unsigned)size, (uint32_t)value, c->now);
+    c->cm.attention = true;
+    memcpy(c->fix, c->flash + off, (size_t)size), c->fix_off = off, c->fix_n = (uint32_t)size;
+    return true;
+}
+
+static void flash_fixup(armcore_t *c)
+{
+    if (c->fix_n) memcpy(c->flash + c->fix_off, c->fix, c->fix_n), c->fix_n = 0;
+}
+
 static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
 {
     armcore_t *c = u;
+    flash_fixup(c);
     uint32_t addr = (uint32_t)address, n = block_insns(c, addr, size);
     if (c->probe) { if (c->probe_res == PROBE_RUNNING) probe_block(c, addr, size, n); return; }
     c->blk_addr = addr, c->blk_size = size, c->blk_start = c->cyc;
@@ -889,6 +913,7 @@ static void run_once(armcore_t *c)
     c->stop = STOP_NONE, c->intno = -1, c->bad_type = -1;
     c->st.starts++;
     uc_err e = uc_emu_start(c->uc, c->pc | 1u, 0, 0, 0);
+    flash_fixup(c);
     switch (c->stop) {
     case STOP_TAKE:
         c->pc = c->stop_addr;
@@ -940,6 +965,7 @@ static bool map_memories(armcore_t *c, char *err, size_t errn)
     uc_hook h;
     if (!e) e = uc_hook_add(c->uc, &h, UC_HOOK_BLOCK, (void *)on_block, c, 1, 0);
     if (!e) e = uc_hook_add(c->uc, &h, UC_HOOK_INTR, (void *)on_intr, c, 1, 0);
+    if (!e) e = uc_hook_add(c->uc, &h, UC_HOOK_MEM_WRITE_PROT, (void *)on_flash_store, c, 1, 0);
     if (!e) e = uc_hook_add(c->uc, &h, UC_HOOK_MEM_INVALID, (void *)on_bad_mem, c, 1, 0);
     if (e) snprintf(err, errn, "mmsim: unicorn: %s", uc_strerror(e));
     return e == UC_ERR_OK;
@@ -962,6 +988,7 @@ armcore_t *armcore_new(const armcore_cfg_t *cfg, char *err, size_t errn)
     if (!c || !c->flash || !c->sram) return snprintf(err, errn, "mmsim: out of memory"), armcore_free(c), NULL;
     memcpy(c->flash, cfg->image->flash, m->flash_bytes);
     c->mcu = m, c->clocks = cfg->clocks, c->verbose = cfg->verbose, c->no_idle_skip = cfg->no_idle_skip;
+    c->flash_write = cfg->flash_write, c->flash_ctx = cfg->flash_ctx;
     c->hclk = cfg->clocks && cfg->clocks->hclk ? cfg->clocks->hclk : cfg->hclk_hz;
     c->target_ps = NO_TIME, c->resume_mid = NO_ADDR, c->never_head = NO_ADDR;
     cortexm_init(&c->cm, m->nirq, m->prio_bits, m->cpuid);

@@ -239,8 +239,9 @@ void stm32f4_dma_request(void *dma, unsigned channel, bool level)
 {
     stm32f4_dma_t *d = dma;
     if (channel == 0 || channel >= STM32F4_DREQ_COUNT) return;
+    /* a rise stays pending through the line's fall until a transfer acknowledges it: a timer's
+     * compare or update request is a pulse (stm32f1_tim.c), raised and lowered in one event */
     if (level && !d->req[channel]) d->pending[channel] = true;
-    if (!level) d->pending[channel] = false;
     d->req[channel] = level;
 }
 

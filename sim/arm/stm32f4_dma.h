@@ -70,9 +70,10 @@ void stm32f4_dma_init(stm32f4_dma_t *d, unsigned index, mmio_bus_t bus, mmio_irq
 /* The request callback peripherals are given: mmio_dma_req_t{ stm32f4_dma_request, dma },
  * channel an stm32f4_dreq_t. It records the line; transfers happen in
  * advance(). A rise asks for one transfer: the transfer acknowledges it
- * (RM0090 10.3.2: the request is kept until the controller's acknowledge),
- * and a line still high after it asks again only once it has fallen and
- * risen (a timer's compare event, which its model cannot see served). */
+ * (RM0090 10.3.2: the request is kept until the controller's acknowledge,
+ * even if the line falls first: a timer's compare event is a pulse its
+ * model raises and lowers at once), and a line still high after it asks
+ * again only once it has fallen and risen. */
 void stm32f4_dma_request(void *dma, unsigned channel, bool level);
 /* Stream n's NVIC line (RM0090 table 61). */
 unsigned stm32f4_dma_irq(unsigned index, unsigned stream);

@@ -3,26 +3,29 @@
  * DMA requests tables 42/43, ADC trigger sources tables 69/70. */
 #include "arm/stm32f4_tim.h"
 
-#define R(n, k) STM32F4_TIM_DREQ(n, k)
+/* A timer's DMA requests as RM0090 tables 42/43 name them (stm32f4_dreq_t) */
+#define UP(n) STM32F4_DREQ_TIM##n##_UP
+#define CH(n, k) STM32F4_DREQ_TIM##n##_CH##k
+#define CH4(n) { CH(n, 1), CH(n, 2), CH(n, 3), CH(n, 4) }
 #define ADV(nm, n, base, en, brk, up, trg, cc, f411) \
-    { { nm, n, 16, 4, 1, 2, 1, 1, { brk, up, trg, cc }, R(n, 0), { R(n, 1), R(n, 2), R(n, 3), R(n, 4) }, 0 }, base, en, f411 }
+    { { nm, n, 16, 4, 1, 2, 1, 1, { brk, up, trg, cc }, UP(n), CH4(n), 0 }, base, en, f411 }
 
 const stm32f4_tim_inst_t stm32f4_tim[STM32F4_TIM_COUNT] = {
     /* TIM1: TIM1_BRK_TIM9 24, TIM1_UP_TIM10 25, TIM1_TRG_COM_TIM11 26, TIM1_CC 27; APB2ENR bit 0 */
     ADV("TIM1", 1, 0x40010000u, 1u << 0, 24, 25, 26, 27, 1),
     /* TIM2-TIM5: APB1ENR bits 0-3; TIM2 and TIM5 32-bit (RM0090 18.1) */
-    { { "TIM2", 2, 32, 4, 0, 1, 1, 1, { 28, 28, 28, 28 }, R(2, 0), { R(2, 1), R(2, 2), R(2, 3), R(2, 4) }, 0 },
+    { { "TIM2", 2, 32, 4, 0, 1, 1, 1, { 28, 28, 28, 28 }, UP(2), CH4(2), 0 },
       0x40000000u, 1u << 0, 1 },
-    { { "TIM3", 3, 16, 4, 0, 1, 1, 1, { 29, 29, 29, 29 }, R(3, 0), { R(3, 1), R(3, 2), R(3, 3), R(3, 4) }, 0 },
+    { { "TIM3", 3, 16, 4, 0, 1, 1, 1, { 29, 29, 29, 29 }, UP(3), CH4(3), 0 },
       0x40000400u, 1u << 1, 1 },
     /* TIM4: no CH4 request in table 42 */
-    { { "TIM4", 4, 16, 4, 0, 1, 1, 1, { 30, 30, 30, 30 }, R(4, 0), { R(4, 1), R(4, 2), R(4, 3), 0 }, 0 },
+    { { "TIM4", 4, 16, 4, 0, 1, 1, 1, { 30, 30, 30, 30 }, UP(4), { CH(4, 1), CH(4, 2), CH(4, 3), 0 }, 0 },
       0x40000800u, 1u << 2, 1 },
-    { { "TIM5", 5, 32, 4, 0, 1, 1, 1, { 50, 50, 50, 50 }, R(5, 0), { R(5, 1), R(5, 2), R(5, 3), R(5, 4) }, 0 },
+    { { "TIM5", 5, 32, 4, 0, 1, 1, 1, { 50, 50, 50, 50 }, UP(5), CH4(5), 0 },
       0x40000C00u, 1u << 3, 1 },
     /* TIM6 (TIM6_DAC 54), TIM7 (55): basic, no channels, no SMCR; APB1ENR bits 4, 5 */
-    { { "TIM6", 6, 16, 0, 0, 1, 1, 0, { 54, 54, 54, 54 }, R(6, 0), { 0, 0, 0, 0 }, 1 }, 0x40001000u, 1u << 4, 0 },
-    { { "TIM7", 7, 16, 0, 0, 1, 1, 0, { 55, 55, 55, 55 }, R(7, 0), { 0, 0, 0, 0 }, 1 }, 0x40001400u, 1u << 5, 0 },
+    { { "TIM6", 6, 16, 0, 0, 1, 1, 0, { 54, 54, 54, 54 }, UP(6), { 0, 0, 0, 0 }, 1 }, 0x40001000u, 1u << 4, 0 },
+    { { "TIM7", 7, 16, 0, 0, 1, 1, 0, { 55, 55, 55, 55 }, UP(7), { 0, 0, 0, 0 }, 1 }, 0x40001400u, 1u << 5, 0 },
     /* TIM8: TIM8_BRK_TIM12 43, TIM8_UP_TIM13 44, TIM8_TRG_COM_TIM14 45, TIM8_CC 46; APB2ENR bit 1 */
     ADV("TIM8", 8, 0x40010400u, 1u << 1, 43, 44, 45, 46, 0),
     /* TIM9-11: APB2ENR bits 16-18, on the TIM1 lines; no DMA, no CR2 (RM0090 19.5, 19.6) */

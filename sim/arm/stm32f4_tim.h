@@ -8,10 +8,11 @@
  * lines (table 61) are data here; the board places
  * {base, STM32F4_TIM_SIZE, &stm32f4_tim_ops[i], &tim} behind the gate.
  *
- * DMA requests: a timer raises STM32F4_TIM_DREQ(n, kind) (kind 0 the
- * update, 1-4 CC1-CC4) on its mmio_dma_req_t; the requests that exist on
- * the F4 (RM0090 tables 42 and 43) are in the descriptions, TIM9-14 have
- * none. Triggers: the ADC's regular (EXTSEL, table 69) and injected
+ * DMA requests: a timer raises its update and CC1-CC4 requests on its
+ * mmio_dma_req_t as the stm32f4_dreq_t of RM0090 tables 42 and 43
+ * (STM32F4_DREQ_TIM1_UP, STM32F4_DREQ_TIM1_CH1, ...: the numbers
+ * stm32f4_dma_request serves); the requests that exist on the F4 are in the
+ * descriptions (TIM4 has no CH4 request), TIM9-14 have none. Triggers: the ADC's regular (EXTSEL, table 69) and injected
  * (JEXTSEL, table 70) sources are data too (stm32f4_tim_extsel). */
 #ifndef ARM_STM32F4_TIM_H
 #define ARM_STM32F4_TIM_H
@@ -19,9 +20,9 @@
 #include <stdint.h>
 
 #include "arm/stm32f1_tim.h"
+#include "arm/stm32f4_dma.h"
 
 #define STM32F4_TIM_SIZE 0x400u
-#define STM32F4_TIM_DREQ(n, kind) (0x100u + 8u * (unsigned)(n) + (unsigned)(kind)) /* kind: 0 UP, 1-4 CHx */
 
 /* The instances, index into stm32f4_tim[] and stm32f4_tim_ops[]. */
 enum {

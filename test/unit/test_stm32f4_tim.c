@@ -179,7 +179,7 @@ static void test_tim1_cc_dma(void **state)
     run_events(1700);
     assert_int_equal(ndma, 4);
     uint64_t when[4] = { 100, 600, 1100, 1600 };
-    unsigned what[4] = { STM32F4_TIM_DREQ(1, 2), STM32F4_TIM_DREQ(1, 4), STM32F4_TIM_DREQ(1, 2), STM32F4_TIM_DREQ(1, 4) };
+    unsigned what[4] = { STM32F4_DREQ_TIM1_CH2, STM32F4_DREQ_TIM1_CH4, STM32F4_DREQ_TIM1_CH2, STM32F4_DREQ_TIM1_CH4 };
     for (unsigned k = 0; k < 4; k++) {
         assert_int_equal(dma[k].what, what[k]);
         assert_int_equal(dma[k].now, when[k]);

@@ -1,7 +1,7 @@
 /* fputest.c - the Cortex-M4F's floating-point context across exceptions
  * (ARMv7-M ARM DDI 0403E B1.5.6-B1.5.8, B3.2.20; PM0214 2.3.7 and 4.6):
  * built for an FPU (-mfpu=fpv4-sp-d16 -mfloat-abi=hard) and run on the
- * stm32f405xg by test/test_armcore.c. Thread code holding S0-S15 and FPSCR
+ * stm32f405xg by test/unit/test_armcore.c. Thread code holding S0-S15 and FPSCR
  * is preempted by an interrupt that overwrites them, itself preempted by a
  * higher one that overwrites them again: each level must find its own
  * values after the return, which only the extended (26-word) frame gives. */
