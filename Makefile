@@ -25,7 +25,7 @@ DEB_PKGS := build-essential pkg-config libode-dev libcmocka-dev libjansson-dev l
 CC      ?= gcc
 STD     := -std=c99 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
 WARN    := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wno-unused-parameter
-INC      = -Ifirmware -Ihal -Ihal/sim -Ihal/wire -Isim -I$(B)/lcmgen $(shell pkg-config --cflags glib-2.0 ode libpng unicorn 2>/dev/null)
+INC      = -Ifirmware -Ihal -Ihal/sim -Ihal/wire -Isim -I$(B)/lcmgen -I$(B)/gen/paper $(shell pkg-config --cflags glib-2.0 ode libpng unicorn 2>/dev/null)
 CFLAGS  ?= -O2 -g
 SAN     := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 LIBS     = -ljansson -linih -llcm $(shell pkg-config --libs glib-2.0 ode libpng glfw3 gl unicorn 2>/dev/null) -lsimavr -ldw -lelf -lm
@@ -142,29 +142,29 @@ tools: $(addprefix $(B)/,$(TOOLS))
 
 # mmsim builds whose in-process firmware is built for another robot than
 # the paper's: the half-size build for KERISE v5 in 90 mm cells
-# (firmware/robot_kerise.h, robots/kerise-v5.ini) and the UKMARSBOT build
-# for ORION with the host's planner (firmware/robot_ukmarsbot.h,
-# robots/ukmarsbot.ini), each plain ($(B)/NAME/mmsim) and sanitized
-# ($(B)/san-tools/NAME/mmsim, for test/cli_halfsize.sh, cli_ukbhost.sh).
-# Their own firmware objects come before the library, so the library's
-# are not linked. ROBOT_MMSIM: $(1) the build's name, $(2) its header.
+# (robots/kerise-v5.ini's [firmware]) and the UKMARSBOT build for ORION
+# with the host's planner (robots/ukmarsbot.ini's), each plain
+# ($(B)/NAME/mmsim) and sanitized ($(B)/san-tools/NAME/mmsim, for
+# test/cli_halfsize.sh, cli_ukbhost.sh). Their own firmware objects come
+# before the library, so the library's are not linked. ROBOT_MMSIM: $(1)
+# the build's name, $(2) its robot file's name (its profile's -I first).
 define ROBOT_MMSIM
 $(1)_FW_OBJ := $$(patsubst firmware/%.c,$$(B)/$(1)/firmware/%.o,$$(FW_SRC))
 $$(B)/$(1)/firmware/%.o: firmware/%.c | deps $$(LCM_STAMP)
 	@mkdir -p $$(dir $$@)
-	$$(CC) $$(STD) $$(WARN) $$(INC) $$(CFLAGS) -include $(2) -MMD -MP -c $$< -o $$@
+	$$(CC) $$(STD) $$(WARN) -I$$(B)/gen/$(2) $$(INC) $$(CFLAGS) -MMD -MP -c $$< -o $$@
 $$(B)/$(1)/mmsim: tools/mmsim.c $$($(1)_FW_OBJ) $$(B)/libmm.a
 	$$(CC) $$(STD) $$(WARN) $$(INC) $$(CFLAGS) $$< $$($(1)_FW_OBJ) $$(B)/libmm.a $$(LIBS) -o $$@
 $(1)_SAN_OBJ := $$(patsubst firmware/%.c,$$(B)/san/$(1)/firmware/%.o,$$(FW_SRC))
 $$(B)/san/$(1)/firmware/%.o: firmware/%.c | deps $$(LCM_STAMP)
 	@mkdir -p $$(dir $$@)
-	$$(CC) $$(STD) $$(WARN) $$(INC) -O1 -g $$(SAN) -include $(2) -MMD -MP -c $$< -o $$@
+	$$(CC) $$(STD) $$(WARN) -I$$(B)/gen/$(2) $$(INC) -O1 -g $$(SAN) -MMD -MP -c $$< -o $$@
 $$(B)/san-tools/$(1)/mmsim: tools/mmsim.c $$($(1)_SAN_OBJ) $$(B)/libmm_san.a
 	@mkdir -p $$(dir $$@)
 	$$(CC) $$(STD) $$(WARN) $$(INC) -O1 -g $$(SAN) $$< $$($(1)_SAN_OBJ) $$(B)/libmm_san.a $$(LIBS) -o $$@
 endef
-$(eval $(call ROBOT_MMSIM,half,robot_kerise.h))
-$(eval $(call ROBOT_MMSIM,ukb,robot_ukmarsbot.h))
+$(eval $(call ROBOT_MMSIM,half,kerise-v5))
+$(eval $(call ROBOT_MMSIM,ukb,ukmarsbot))
 
 # The source tree's absolute path, where a program built here finds boards/,
 # robots/ and contests/ from any working directory (sim/io/datadir.h).
@@ -205,14 +205,14 @@ $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
 
-# test_slalom for UKMARSBOT's turns (firmware/robot_ukmarsbot.h's host
-# figures): its firmware objects, and robots/ukmarsbot.ini's body (65 x 100
+# test_slalom for UKMARSBOT's turns (robots/ukmarsbot.ini's [firmware]
+# host figures): its firmware objects, and robots/ukmarsbot.ini's body (65 x 100
 # mm, 64 mm of it ahead of the axle, taken on both sides; 10 mm wheels on a
 # 77.4 mm track, out to 43.7 mm, 34 mm across)
 UKB_BODY := -DBODY_X_MM=32.5 -DBODY_Y_MM=64.0 -DWHEEL_X_MM=43.7 -DWHEEL_Y_MM=17.0 -DDIAG_CLEAR_MM=3.0
 $(B)/test/test_slalom_ukb: test/test_slalom.c $(ukb_SAN_OBJ) $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
-	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) -include robot_ukmarsbot.h $(UKB_BODY) $< $(ukb_SAN_OBJ) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
+	$(CC) $(STD) $(WARN) -I$(B)/gen/ukmarsbot $(INC) -O1 -g $(SAN) $(UKB_BODY) $< $(ukb_SAN_OBJ) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
 TESTS += $(B)/test/test_slalom_ukb
 
 # XTEST input for test/cli_connect.sh (libxtst-dev)
@@ -280,7 +280,7 @@ $(B)/pio/bin/pio: | deps
 # ---- AVR build of the firmware (ATmega328P) ----
 AVR_CC    := avr-gcc
 AVR_FLAGS := -mmcu=atmega328p -DF_CPU=16000000L -Os -std=c99 -Wall -Wextra -DMAZE_MAX_SIZE=16 \
-	-ffunction-sections -fdata-sections -Ifirmware -Ihal
+	-ffunction-sections -fdata-sections -Ifirmware -Ihal -I$(B)/gen/paper
 firmware-size: | deps
 	@mkdir -p $(B)/avr
 	$(AVR_CC) $(AVR_FLAGS) -Wl,--gc-sections $(FW_SRC) test/avr_main.c -o $(B)/avr/firmware.elf
@@ -296,7 +296,8 @@ firmware: firmware-size arduino
 UKB_SRC       := $(FW_SRC) $(sort $(wildcard hal/ukmarsbot/*.c))
 UKB_FLASH_MAX := 30720
 UKB_SENSOR_BOARD ?= advanced
-UKB_FLAGS     := $(AVR_FLAGS) -Ihal/ukmarsbot -include robot_ukmarsbot.h -DHAL_IR_LIT_MINUS_DARK -DHAL_LOG_MAX=50 -fno-inline-functions -fno-inline-small-functions -fno-inline-functions-called-once $(if $(filter basic,$(UKB_SENSOR_BOARD)),-DUKB_SENSOR_BOARD_BASIC)
+UKB_PROFILE   := $(B)/gen/ukmarsbot$(if $(filter basic,$(UKB_SENSOR_BOARD)),-basic-12)
+UKB_FLAGS     := -I$(UKB_PROFILE) $(AVR_FLAGS) -Ihal/ukmarsbot -DHAL_IR_LIT_MINUS_DARK -DHAL_LOG_MAX=50 -fno-inline-functions -fno-inline-small-functions -fno-inline-functions-called-once $(if $(filter basic,$(UKB_SENSOR_BOARD)),-DUKB_SENSOR_BOARD_BASIC)
 UKB_OUT       := $(B)/ukmarsbot$(if $(filter basic,$(UKB_SENSOR_BOARD)),-basic)
 $(UKB_OUT)/mouse.elf: $(UKB_SRC) $(wildcard hal/ukmarsbot/*.h firmware/*.h) hal/hal.h | deps
 	@mkdir -p $(dir $@)
@@ -354,7 +355,7 @@ ARD_EXAMPLES := Mouse DriveToWall
 ARD_RAM      := $(MCU_RX_FLAGS) -DSERIAL_TX_BUFFER_SIZE=32
 # ARD_BASE: the core's own flags (platform.txt, less -g and -flto); ARD_COMMON adds ours.
 ARD_BASE     := -DF_CPU=16000000L -DARDUINO=10819 -DARDUINO_ARCH_AVR -Os -ffunction-sections -fdata-sections -I$(ARD_CORE)
-ARD_COMMON   := $(ARD_BASE) -DMAZE_MAX_SIZE=16 $(ARD_RAM) -Ihal -Ihal/wire -Ihal/arduino/src -Ifirmware
+ARD_COMMON   := $(ARD_BASE) -DMAZE_MAX_SIZE=16 $(ARD_RAM) -Ihal -Ihal/wire -Ihal/arduino/src -Ifirmware -I$(B)/gen/paper
 ARD_CXX      := -std=gnu++11 -fno-exceptions -fno-threadsafe-statics -fpermissive -DDECIMAL_DIG=__DECIMAL_DIG__
 ARD_uno      := -mmcu=atmega328p -DARDUINO_AVR_UNO -I$(ARD_DIR)/variants/standard
 ARD_mega2560 := -mmcu=atmega2560 -DARDUINO_AVR_MEGA2560 -I$(ARD_DIR)/variants/mega
@@ -418,11 +419,11 @@ arduino: $(ARD_ELFS)
 # The installable Arduino library (copy to ~/Arduino/libraries/): hal/arduino
 # plus the HAL contract, the wire codec and the firmware, assembled here (a
 # build product: never committed).
-arduino-lib:
+arduino-lib: $(B)/gen/paper/robot_profile.h
 	@rm -rf $(B)/arduino-lib/Micromouse; mkdir -p $(B)/arduino-lib/Micromouse/src
 	cp -r hal/arduino/library.properties hal/arduino/README.md hal/arduino/examples $(B)/arduino-lib/Micromouse/
 	cp hal/arduino/src/* hal/hal.h hal/wire/wire.c hal/wire/wire.h $(B)/arduino-lib/Micromouse/src/
-	cp firmware/*.c firmware/*.h $(B)/arduino-lib/Micromouse/src/
+	cp firmware/*.c firmware/*.h $(B)/gen/paper/robot_profile.h $(B)/arduino-lib/Micromouse/src/
 	@echo "$(B)/arduino-lib/Micromouse: copy it to your Arduino libraries folder (see hal/arduino/README.md)"
 
 # ---- real clients: firmware that others wrote, built from its own folder
@@ -588,6 +589,7 @@ FUZZ_SRC_lcmlog   := sim/telemetry/lcmlog.c sim/io/infile.c $(LCM_C)
 # the config loads the built-in robot: the robot file's loader, its sensor
 # kinds and what they use of the world
 FUZZ_SRC_robot    := sim/world/config.c sim/world/robot.c sim/world/keytab.c sim/world/inifile.c sim/io/infile.c \
+	sim/world/fwprofile.c sim/io/number.c \
 	$(wildcard sim/world/sensors/*.c) $(wildcard sim/world/world*.c) sim/world/wallgrid.c sim/world/rng.c firmware/maze.c $(B)/gen/robot_paper.c
 FUZZ_SRC_config   := $(FUZZ_SRC_robot)
 FUZZ_SRC_contest  := sim/contest/contest.c sim/contest/score.c sim/world/keytab.c sim/world/inifile.c sim/io/infile.c sim/io/datadir.c firmware/maze.c
@@ -633,3 +635,24 @@ clean:
 	rm -rf $(B)
 
 -include $(shell find $(B) -name '*.d' 2>/dev/null)
+
+# ---- the firmware's robot profile: a robot file's [firmware] section as
+# $(B)/gen/NAME/robot_profile.h (tools/mkprofile.c), found by the firmware's
+# robot_config.h on the include path: -I$(B)/gen/NAME picks the robot
+# (INC, AVR_FLAGS and ARD_COMMON: the paper's; ROBOT_MMSIM and UKB_FLAGS
+# their own, first). Rewritten only when its text changes.
+PROFILE_SRC := tools/mkprofile.c sim/world/fwprofile.c sim/world/inifile.c sim/io/infile.c sim/io/number.c sim/io/outfile.c
+PROFILES    := $(patsubst %,$(B)/gen/%/robot_profile.h,paper kerise-v5 ukmarsbot ukmarsbot-basic-12)
+$(B)/mkprofile: $(PROFILE_SRC) $(wildcard sim/world/fwprofile.h sim/world/inifile.h) | deps
+	$(CC) $(STD) $(WARN) -Isim $(shell pkg-config --cflags glib-2.0) $(CFLAGS) $(PROFILE_SRC) -linih $(shell pkg-config --libs glib-2.0) -lm -o $@
+$(B)/gen/%/robot_profile.h: robots/%.ini $(B)/mkprofile
+	@mkdir -p $(dir $@)
+	@$(B)/mkprofile $< $@.new && { cmp -s $@.new $@ && rm -f $@.new || mv -f $@.new $@; }
+profiles: $(PROFILES)
+.PHONY: profiles
+# everything that compiles the firmware waits for them (the .d files of -MMD,
+# the rules' own prerequisites below, rebuild it when one changes)
+$(patsubst %.c,$(B)/host/%.o,$(LIB_SRC)) $(patsubst %.c,$(B)/san/%.o,$(LIB_SRC)) $(TESTS) $(half_FW_OBJ) $(half_SAN_OBJ) \
+  $(ukb_FW_OBJ) $(ukb_SAN_OBJ) firmware-size $(B)/avr/flood.elf $(B)/avr/tick0.elf $(B)/avr/tick100.elf: | $(PROFILES)
+$(UKB_OUT)/mouse.elf: $(UKB_PROFILE)/robot_profile.h
+$(foreach b,$(ARD_BOARDS),$(patsubst %,$(B)/arduino/$(b)/lib/%.o,$(ARD_LIB_SRC))): $(B)/gen/paper/robot_profile.h
