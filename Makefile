@@ -39,6 +39,7 @@ include mk/fuzz.mk      # make fuzz
 include mk/bench.mk     # make bench
 include mk/docs.mk      # make docs
 include mk/sim.mk       # make sim, spy, replay, view
+include mk/profile.mk   # the firmware's robot profiles from robots/*.ini (last: it adds prerequisites)
 
 clean:
 	rm -rf $(B)

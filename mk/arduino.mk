@@ -20,7 +20,7 @@ ARD_EXAMPLES := Mouse DriveToWall
 ARD_RAM      := $(MCU_RX_FLAGS) -DSERIAL_TX_BUFFER_SIZE=32
 # ARD_BASE: the core's own flags (platform.txt, less -g and -flto); ARD_COMMON adds ours.
 ARD_BASE     := -DF_CPU=16000000L -DARDUINO=10819 -DARDUINO_ARCH_AVR -Os -ffunction-sections -fdata-sections -I$(ARD_CORE)
-ARD_COMMON   := $(ARD_BASE) -DMAZE_MAX_SIZE=16 $(ARD_RAM) -Ihal -Ihal/wire -Ihal/arduino/src -Ifirmware
+ARD_COMMON   := $(ARD_BASE) -DMAZE_MAX_SIZE=16 $(ARD_RAM) -Ihal -Ihal/wire -Ihal/arduino/src -Ifirmware -I$(B)/gen/paper
 ARD_CXX      := -std=gnu++11 -fno-exceptions -fno-threadsafe-statics -fpermissive -DDECIMAL_DIG=__DECIMAL_DIG__
 ARD_uno      := -mmcu=atmega328p -DARDUINO_AVR_UNO -I$(ARD_DIR)/variants/standard
 ARD_mega2560 := -mmcu=atmega2560 -DARDUINO_AVR_MEGA2560 -I$(ARD_DIR)/variants/mega
@@ -84,6 +84,6 @@ arduino: $(ARD_ELFS)
 # The installable Arduino library (copy to ~/Arduino/libraries/): hal/arduino
 # plus the HAL contract, the wire codec and the firmware, assembled here (a
 # build product: never committed).
-arduino-lib:
-	@bash tools/make/arduino-lib.sh $(B)/arduino-lib
+arduino-lib: $(B)/gen/paper/robot_profile.h
+	@bash tools/make/arduino-lib.sh $(B)/arduino-lib $(B)/gen/paper/robot_profile.h
 

@@ -4,7 +4,7 @@
 # ---- AVR build of the firmware (ATmega328P) ----
 AVR_CC    := avr-gcc
 AVR_FLAGS := -mmcu=atmega328p -DF_CPU=16000000L -Os -std=c99 -Wall -Wextra -DMAZE_MAX_SIZE=16 \
-	-ffunction-sections -fdata-sections -Ifirmware -Ihal
+	-ffunction-sections -fdata-sections -Ifirmware -Ihal -I$(B)/gen/paper
 firmware-size: | deps
 	@mkdir -p $(B)/avr
 	$(AVR_CC) $(AVR_FLAGS) -Wl,--gc-sections $(FW_SRC) test/firmware/avr/avr_main.c -o $(B)/avr/firmware.elf
@@ -20,7 +20,8 @@ firmware: firmware-size arduino
 UKB_SRC       := $(FW_SRC) $(sort $(wildcard hal/ukmarsbot/*.c))
 UKB_FLASH_MAX := 30720
 UKB_SENSOR_BOARD ?= advanced
-UKB_FLAGS     := $(AVR_FLAGS) -Ihal/ukmarsbot -include robot_ukmarsbot.h -DHAL_IR_LIT_MINUS_DARK -DHAL_LOG_MAX=50 -fno-inline-functions -fno-inline-small-functions -fno-inline-functions-called-once $(if $(filter basic,$(UKB_SENSOR_BOARD)),-DUKB_SENSOR_BOARD_BASIC)
+UKB_PROFILE   := $(B)/gen/ukmarsbot$(if $(filter basic,$(UKB_SENSOR_BOARD)),-basic-12)
+UKB_FLAGS     := -I$(UKB_PROFILE) $(AVR_FLAGS) -Ihal/ukmarsbot -DHAL_IR_LIT_MINUS_DARK -DHAL_LOG_MAX=50 -fno-inline-functions -fno-inline-small-functions -fno-inline-functions-called-once $(if $(filter basic,$(UKB_SENSOR_BOARD)),-DUKB_SENSOR_BOARD_BASIC)
 UKB_OUT       := $(B)/ukmarsbot$(if $(filter basic,$(UKB_SENSOR_BOARD)),-basic)
 $(UKB_OUT)/mouse.elf: $(UKB_SRC) $(wildcard hal/ukmarsbot/*.h firmware/*.h) hal/hal.h | deps
 	@mkdir -p $(dir $@)

@@ -28,29 +28,29 @@ tools: $(addprefix $(B)/,$(TOOLS))
 
 # mmsim builds whose in-process firmware is built for another robot than
 # the paper's: the half-size build for KERISE v5 in 90 mm cells
-# (firmware/robot_kerise.h, robots/kerise-v5.ini) and the UKMARSBOT build
-# for ORION with the host's planner (firmware/robot_ukmarsbot.h,
-# robots/ukmarsbot.ini), each plain ($(B)/NAME/mmsim) and sanitized
-# ($(B)/san-tools/NAME/mmsim, for test/cli/cli_halfsize.sh, cli_ukbhost.sh).
-# Their own firmware objects come before the library, so the library's
-# are not linked. ROBOT_MMSIM: $(1) the build's name, $(2) its header.
+# (robots/kerise-v5.ini's [firmware]) and the UKMARSBOT build for ORION
+# with the host's planner (robots/ukmarsbot.ini's), each plain
+# ($(B)/NAME/mmsim) and sanitized ($(B)/san-tools/NAME/mmsim, for
+# test/cli/cli_halfsize.sh, cli_ukbhost.sh). Their own firmware objects come
+# before the library, so the library's are not linked. ROBOT_MMSIM: $(1)
+# the build's name, $(2) its robot file's name (its profile's -I first).
 define ROBOT_MMSIM
 $(1)_FW_OBJ := $$(patsubst firmware/%.c,$$(B)/$(1)/firmware/%.o,$$(FW_SRC))
 $$(B)/$(1)/firmware/%.o: firmware/%.c | deps $$(LCM_STAMP)
 	@mkdir -p $$(dir $$@)
-	$$(CC) $$(STD) $$(WARN) $$(INC) $$(CFLAGS) -include $(2) -MMD -MP -c $$< -o $$@
+	$$(CC) $$(STD) $$(WARN) -I$$(B)/gen/$(2) $$(INC) $$(CFLAGS) -MMD -MP -c $$< -o $$@
 $$(B)/$(1)/mmsim: tools/mmsim.c $$($(1)_FW_OBJ) $$(B)/libmm.a
 	$$(CC) $$(STD) $$(WARN) $$(INC) $$(CFLAGS) $$< $$($(1)_FW_OBJ) $$(B)/libmm.a $$(LIBS) -o $$@
 $(1)_SAN_OBJ := $$(patsubst firmware/%.c,$$(B)/san/$(1)/firmware/%.o,$$(FW_SRC))
 $$(B)/san/$(1)/firmware/%.o: firmware/%.c | deps $$(LCM_STAMP)
 	@mkdir -p $$(dir $$@)
-	$$(CC) $$(STD) $$(WARN) $$(INC) -O1 -g $$(SAN) -include $(2) -MMD -MP -c $$< -o $$@
+	$$(CC) $$(STD) $$(WARN) -I$$(B)/gen/$(2) $$(INC) -O1 -g $$(SAN) -MMD -MP -c $$< -o $$@
 $$(B)/san-tools/$(1)/mmsim: tools/mmsim.c $$($(1)_SAN_OBJ) $$(B)/libmm_san.a
 	@mkdir -p $$(dir $$@)
 	$$(CC) $$(STD) $$(WARN) $$(INC) -O1 -g $$(SAN) $$< $$($(1)_SAN_OBJ) $$(B)/libmm_san.a $$(LIBS) -o $$@
 endef
-$(eval $(call ROBOT_MMSIM,half,robot_kerise.h))
-$(eval $(call ROBOT_MMSIM,ukb,robot_ukmarsbot.h))
+$(eval $(call ROBOT_MMSIM,half,kerise-v5))
+$(eval $(call ROBOT_MMSIM,ukb,ukmarsbot))
 
 # The source tree's absolute path, where a program built here finds boards/,
 # robots/ and contests/ from any working directory (sim/io/datadir.h).

@@ -40,14 +40,14 @@ $(B)/test/test_flood_ref16: $(FLOOD16_SRC) $(wildcard firmware/*.h) sim/maze/maz
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) -Ifirmware -Isim -O1 -g $(SAN) -DMAZE_MAX_SIZE=16 $(FLOOD16_SRC) -lcmocka -o $@
 
-# test_slalom for UKMARSBOT's turns (firmware/robot_ukmarsbot.h's host
+# test_slalom for UKMARSBOT's turns (robots/ukmarsbot.ini's [firmware] host
 # figures): its firmware objects, and robots/ukmarsbot.ini's body (65 x 100
 # mm, 64 mm of it ahead of the axle, taken on both sides; 10 mm wheels on a
 # 77.4 mm track, out to 43.7 mm, 34 mm across)
 UKB_BODY := -DBODY_X_MM=32.5 -DBODY_Y_MM=64.0 -DWHEEL_X_MM=43.7 -DWHEEL_Y_MM=17.0 -DDIAG_CLEAR_MM=3.0
 $(B)/test/test_slalom_ukb: test/unit/test_slalom.c $(ukb_SAN_OBJ) $(B)/libmm_san.a
 	@mkdir -p $(dir $@)
-	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) -include robot_ukmarsbot.h $(UKB_BODY) $< $(ukb_SAN_OBJ) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
+	$(CC) $(STD) $(WARN) -I$(B)/gen/ukmarsbot $(INC) -O1 -g $(SAN) $(UKB_BODY) $< $(ukb_SAN_OBJ) $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
 TESTS += $(B)/test/test_slalom_ukb
 
 # XTEST input for test/cli/cli_connect.sh (libxtst-dev)

@@ -5,7 +5,7 @@
 
 /* The voltage a full-scale command (1023) stands for, mV. The firmware's
  * feed-forward counts a command step as this / 1023 (firmware/
- * robot_config.h: 6 V / 1023); this backend turns it into the duty that
+ * robot_config.h, the robot file's [firmware]: 6 V / 1023); this backend turns it into the duty that
  * gives that voltage from the battery as it is now, so the robot drives
  * the same on a full and a tired battery. 0: no compensation (the command
  * is a fraction of the battery, as hal.h's default). */

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fwprofile.h"
 #include "inifile.h"
 #include "keytab.h"
 #include "world.h"
@@ -229,6 +230,7 @@ static int header(load_t *l, const char *sec, int line)
 static int on_section(void *user, const char *section, int line, char *why, size_t len)
 {
     load_t *l = user;
+    if (fw_section(section)) return 0; /* the firmware's profile: its keys checked in on_key */
     if (header(l, section, line) == 0) return 0;
     snprintf(why, len, "%s", l->reason);
     return -1;
@@ -247,6 +249,12 @@ static sect_t *find(load_t *l, const char *section)
 static int on_key(void *user, const char *section, const char *key, const char *val, char *why, size_t len)
 {
     load_t *l = user;
+    if (fw_section(section)) {
+        const fw_key_t *k = fw_key_find(key);
+        if (k) return fw_value_check(k, section, val, why, len);
+        snprintf(why, len, "%s.%s: unknown key (the firmware's keys: docs/ROBOTS.md)", section, key);
+        return -1;
+    }
     sect_t *s = find(l, section);
     if (!s) {
         snprintf(why, len, "%s: a key outside any [KIND.NAME] section", key);

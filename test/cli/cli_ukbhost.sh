@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # cli_ukbhost.sh - the firmware's host build for UKMARSBOT (build/ukb/mmsim:
-# firmware/robot_ukmarsbot.h with its host-only speed-run figures, the
+# robots/ukmarsbot.ini's [firmware] with its host-only speed-run figures, the
 # planner of plan.c, robots/ukmarsbot.ini's IR wall sensors read lit minus
 # dark): on mazes/gen-8x8-s26.txt a contest of the search and two speed
 # runs reaches the goal with no contact; the first speed run (the safe

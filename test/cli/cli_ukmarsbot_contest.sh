@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # cli_ukmarsbot_contest.sh - the whole contest on the emulated UKMARSBOT:
 # our firmware built for the board (make firmware-ukmarsbot: hal/ukmarsbot,
-# robot_ukmarsbot.h, IR walls through firmware/walls.c) on
+# robots/ukmarsbot.ini's [firmware], IR walls through firmware/walls.c) on
 # mazes/gen-16x16-s1.txt. Armed from the console (r), started by a hand over
 # the left front sensor (occlude=lfs), it searches to the centre and back,
 # makes its speed runs and says "contest done": goal reached, no front or

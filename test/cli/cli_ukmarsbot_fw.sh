@@ -6,7 +6,7 @@
 #  - `make firmware-ukmarsbot` builds it and prints flash (<= 30720 B) and
 #    static RAM and the stack headroom measured on the emulated board
 #    (>= 400 B, for the basic build too); platformio.ini's [env:ukmarsbot] lists the same source
-#    files and flags (and `pio project config` reads it, where pio is
+#    files and flags, its robot profile's -I and pre-build script (and `pio project config` reads it, where pio is
 #    installed);
 #  - it boots: the banner on the console, the battery as the simulated one
 #    after the board's diode; the console commands work: `i` (IR lit minus
@@ -46,8 +46,11 @@ make = sorted(open(sys.argv[1]).read().split())
 if pio != make:
     sys.exit(print("files differ: make only %s, pio only %s" % (set(make) - set(pio), set(pio) - set(make))) or 1)
 flags = env["build_flags"].split()
-for f in ("-DMAZE_MAX_SIZE=16", "-Ihal", "-Ifirmware", "-Ihal/ukmarsbot", "-std=c99", "-DHAL_IR_LIT_MINUS_DARK"):
+for f in ("-DMAZE_MAX_SIZE=16", "-Ihal", "-Ifirmware", "-Ihal/ukmarsbot", "-std=c99", "-DHAL_IR_LIT_MINUS_DARK", "-Ibuild/gen/ukmarsbot"):
     if f not in flags: sys.exit(print("build_flags lack", f) or 1)
+# the robot profile: written by the pre-build script from the robot file the flags name
+if env.get("custom_robot") != "ukmarsbot" or env.get("extra_scripts", "").split() != ["pre:tools/pio_profile.py"]:
+    sys.exit(print("custom_robot/extra_scripts:", env.get("custom_robot"), env.get("extra_scripts")) or 1)
 if env["board"] != "nanoatmega328" or env.get("framework"): sys.exit(print("board/framework:", env["board"], env.get("framework")) or 1)
 print("the same %d source files as make" % len(pio))
 PY

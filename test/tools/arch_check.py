@@ -37,7 +37,8 @@ import re
 import sys
 
 # -I roots of the Makefile's INC, in its order; generated LCM headers
-# (build/lcmgen/mmlcm_*.h) stand for the types in lcm/.
+# (build/lcmgen/mmlcm_*.h) stand for the types in lcm/, the generated
+# robot_profile.h (build/gen/NAME/) for firmware/'s own.
 INC_ROOTS = ["firmware", "hal", "hal/sim", "hal/wire", "sim", "tools"]
 SOURCES = (".c", ".h", ".cpp", ".ino")
 CHECKED = ["firmware", "hal", "sim", "tools"]
@@ -111,6 +112,8 @@ def resolve(root, rel, name):
     base = os.path.basename(name)
     if base.startswith("mmlcm_") and base.endswith(".h"):
         return "lcm/" + base[len("mmlcm_"):-2] + ".lcm"
+    if name == "robot_profile.h":  # generated from a robot file's [firmware] (build/gen/NAME/): the firmware's own
+        return "firmware/robot_profile.h"
     for d in [os.path.dirname(rel)] + INC_ROOTS:
         p = os.path.normpath(os.path.join(d, name))
         if os.path.isfile(os.path.join(root, p)):
