@@ -34,7 +34,7 @@ grep -q '^<svg ' "$T/run.svg" && grep -q '</svg>' "$T/run.svg" && grep -q 'Run t
 # (--speed: the speed panel's checks, for a run that moves)
 plots_check() { python3 - "$@" <<'PY'
 import json, sys
-sys.path.insert(0, 'test')
+sys.path.insert(0, 'test/tools')
 from pngcheck import read_png
 j = json.load(open(sys.argv[1])); want = [a for a in sys.argv[2:] if a != '--speed']
 p = j['plots']; panels = p['panels']
