@@ -197,8 +197,8 @@ $(B)/test/test_wire_rx14: test/test_wire.c $(B)/libmm_san.a test/wire_vectors.c 
 	  $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
 # The flood against its reference again with the AVR's 16x16 maximum, where
 # maze_cell_t is uint8_t (the host library is built for 32x32)
-FLOOD16_SRC := test/test_flood_ref.c firmware/flood.c firmware/maze.c sim/maze/mazefile.c sim/io/infile.c
-$(B)/test/test_flood_ref16: $(FLOOD16_SRC) $(wildcard firmware/*.h) sim/maze/mazefile.h sim/io/infile.h | deps
+FLOOD16_SRC := test/test_flood_ref.c firmware/flood.c firmware/maze.c sim/maze/mazefile.c sim/maze/truemaze.c sim/maze/truebelief.c sim/io/infile.c
+$(B)/test/test_flood_ref16: $(FLOOD16_SRC) $(wildcard firmware/*.h) sim/maze/mazefile.h sim/maze/truemaze.h sim/maze/truebelief.h sim/io/infile.h | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) -Ifirmware -Isim -O1 -g $(SAN) -DMAZE_MAX_SIZE=16 $(FLOOD16_SRC) -lcmocka -o $@
 $(B)/san-tools/%: tools/%.c $(B)/libmm_san.a
@@ -577,15 +577,15 @@ $(B)/bench_flood: bench/bench_flood.c $(B)/libmm.a
 FUZZ_SECONDS ?= 60
 FUZZ ?= mazefile wire lcmlog config robot contest
 FUZZ_CC := clang -g -O1 -fsanitize=fuzzer,address,undefined -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
-FUZZ_SRC_mazefile := sim/maze/mazefile.c sim/io/infile.c firmware/maze.c
+FUZZ_SRC_mazefile := sim/maze/mazefile.c sim/io/infile.c sim/maze/truemaze.c
 FUZZ_SRC_wire     := hal/wire/wire.c
 FUZZ_SRC_lcmlog   := sim/telemetry/lcmlog.c sim/io/infile.c $(LCM_C)
 # the config loads the built-in robot: the robot file's loader, its sensor
 # kinds and what they use of the world
 FUZZ_SRC_robot    := sim/world/config.c sim/world/robot.c sim/world/keytab.c sim/world/inifile.c sim/io/infile.c \
-	$(wildcard sim/world/sensors/*.c) $(wildcard sim/world/world*.c) sim/world/wallgrid.c sim/world/rng.c firmware/maze.c $(B)/gen/robot_paper.c
+	$(wildcard sim/world/sensors/*.c) $(wildcard sim/world/world*.c) sim/world/wallgrid.c sim/world/rng.c sim/maze/truemaze.c $(B)/gen/robot_paper.c
 FUZZ_SRC_config   := $(FUZZ_SRC_robot)
-FUZZ_SRC_contest  := sim/contest/contest.c sim/contest/score.c sim/world/keytab.c sim/world/inifile.c sim/io/infile.c sim/io/datadir.c firmware/maze.c
+FUZZ_SRC_contest  := sim/contest/contest.c sim/contest/score.c sim/world/keytab.c sim/world/inifile.c sim/io/infile.c sim/io/datadir.c sim/maze/truemaze.c
 FUZZ_LIBS_contest := -linih -ljansson $(shell pkg-config --libs glib-2.0 2>/dev/null) -lm
 FUZZ_LEN_contest  := 4096
 FUZZ_LIBS_lcmlog  := -llcm

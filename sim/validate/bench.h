@@ -5,6 +5,7 @@
 #define VALIDATE_BENCH_H
 
 #include "validate.h"
+#include "maze/truemaze.h"
 #include "world/sim.h"
 
 typedef struct {
