@@ -22,7 +22,7 @@
 enum { EXIT_OK = 0, EXIT_NOT_REACHED = 1, EXIT_BAD_INPUT = 2, EXIT_EXTERNAL = 3 };
 
 static const char *const heading_name[4] = { "N", "E", "S", "W" };
-static truemaze_t maze;       /* the maze being worked on */
+static truemaze_t maze;   /* the maze being worked on */
 static solve_path_t best; /* its best path */
 
 static void usage(FILE *out)
