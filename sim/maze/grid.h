@@ -23,9 +23,10 @@ typedef struct {
 /* The walls a mouse at (c, facing h) sees in truth: EXPLORE_WALL_* bits. */
 uint8_t grid_sense(const truemaze_t *truth, truemaze_cell_t c, uint8_t h);
 
-/* Explore truth (every wall known) from an empty map. Returns 0 when the
- * mouse is back at the start with its path proven, 1 otherwise (goal
- * unreachable, or the step limit of 16 moves per cell was hit). */
+/* Explore truth from an empty map (the firmware's, made at the seam by
+ * truebelief.h). Returns 0 when the mouse is back at the start with its path
+ * proven, 1 otherwise (goal unreachable, the step limit of 16 moves per cell
+ * hit, or a maze larger than the firmware's MAZE_MAX_SIZE). */
 int grid_explore(const truemaze_t *truth, grid_result_t *r);
 
 #endif
