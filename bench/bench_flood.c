@@ -7,6 +7,7 @@
 
 #include "flood.h"
 #include "maze/mazefile.h"
+#include "maze/truebelief.h"
 
 static double now_s(void)
 {
@@ -16,7 +17,8 @@ static double now_s(void)
 }
 
 static flood_t f;
-static maze_t m, blank;
+static truemaze_t truth;
+static maze_t m, blank; /* the firmware's map of the truth, every wall known; and with none known */
 
 static double time_flood(const maze_t *mz, int heading, uint8_t flags)
 {
@@ -42,8 +44,12 @@ int main(int argc, char **argv)
         return 2;
     }
     for (int i = 1; i < argc; i++) {
-        if (mazefile_load(&m, argv[i], NULL, err, sizeof err) != 0) {
+        if (mazefile_load(&truth, argv[i], NULL, err, sizeof err) != 0) {
             fprintf(stderr, "%s\n", err);
+            return 2;
+        }
+        if (truemaze_to_belief(&truth, &m) != 0) {
+            fprintf(stderr, "bench_flood: %s: larger than the build's MAZE_MAX_SIZE\n", argv[i]);
             return 2;
         }
         maze_forget(&blank, &m);

@@ -5,10 +5,12 @@
 #include <stdio.h>
 
 #include "maze/mazefile.h"
+#include "maze/truebelief.h"
 
 #define AVR_MAX_SIDE 16 /* cells: the AVR build's MAZE_MAX_SIZE */
 
-static maze_t m;
+static truemaze_t truth;
+static maze_t m; /* the firmware's map of it: maze.h's layout */
 
 int main(int argc, char **argv)
 {
@@ -17,13 +19,13 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: maze_header MAZE > HEADER\n");
         return 2;
     }
-    if (mazefile_load(&m, argv[1], NULL, err, sizeof err) != 0) {
+    if (mazefile_load(&truth, argv[1], NULL, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         return 2;
     }
-    if (m.width > AVR_MAX_SIDE || m.height > AVR_MAX_SIDE) {
-        fprintf(stderr, "maze_header: %s: %ux%u, the AVR build holds at most %ux%u\n", argv[1], m.width,
-                m.height, AVR_MAX_SIDE, AVR_MAX_SIDE);
+    if (truth.width > AVR_MAX_SIDE || truth.height > AVR_MAX_SIDE || truemaze_to_belief(&truth, &m) != 0) {
+        fprintf(stderr, "maze_header: %s: %ux%u, the AVR build holds at most %ux%u\n", argv[1], truth.width,
+                truth.height, AVR_MAX_SIDE, AVR_MAX_SIDE);
         return 2;
     }
     uint16_t cells = maze_cells(&m);

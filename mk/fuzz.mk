@@ -7,16 +7,16 @@
 FUZZ_SECONDS ?= 60
 FUZZ ?= mazefile wire lcmlog config robot contest
 FUZZ_CC := clang -g -O1 -fsanitize=fuzzer,address,undefined -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
-FUZZ_SRC_mazefile := sim/maze/mazefile.c sim/io/infile.c firmware/maze.c
+FUZZ_SRC_mazefile := sim/maze/mazefile.c sim/io/infile.c sim/maze/truemaze.c
 FUZZ_SRC_wire     := hal/wire/wire.c
 FUZZ_SRC_lcmlog   := sim/telemetry/lcmlog.c sim/io/infile.c $(LCM_C)
 # the config loads the built-in robot: the robot file's loader, its sensor
 # kinds and what they use of the world
 FUZZ_SRC_robot    := sim/world/config.c sim/world/robot.c sim/world/keytab.c sim/world/inifile.c sim/io/infile.c \
 	sim/world/fwprofile.c sim/io/number.c \
-	$(wildcard sim/world/sensors/*.c) $(wildcard sim/world/world*.c) sim/world/wallgrid.c sim/world/rng.c firmware/maze.c $(B)/gen/robot_paper.c
+	$(wildcard sim/world/sensors/*.c) $(wildcard sim/world/world*.c) sim/world/wallgrid.c sim/world/rng.c sim/maze/truemaze.c $(B)/gen/robot_paper.c
 FUZZ_SRC_config   := $(FUZZ_SRC_robot)
-FUZZ_SRC_contest  := sim/contest/contest.c sim/contest/score.c sim/world/keytab.c sim/world/inifile.c sim/io/infile.c sim/io/datadir.c firmware/maze.c
+FUZZ_SRC_contest  := sim/contest/contest.c sim/contest/score.c sim/world/keytab.c sim/world/inifile.c sim/io/infile.c sim/io/datadir.c sim/maze/truemaze.c
 FUZZ_LIBS_contest := -linih -ljansson $(shell pkg-config --libs glib-2.0 2>/dev/null) -lm
 FUZZ_LEN_contest  := 4096
 FUZZ_LIBS_lcmlog  := -llcm

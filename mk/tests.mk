@@ -35,8 +35,8 @@ $(B)/test/test_wire_rx14: test/unit/test_wire.c $(B)/libmm_san.a test/unit/wire_
 	  $(B)/libmm_san.a -lcmocka $(LIBS) -o $@
 # The flood against its reference again with the AVR's 16x16 maximum, where
 # maze_cell_t is uint8_t (the host library is built for 32x32)
-FLOOD16_SRC := test/unit/test_flood_ref.c firmware/flood.c firmware/maze.c sim/maze/mazefile.c sim/io/infile.c
-$(B)/test/test_flood_ref16: $(FLOOD16_SRC) $(wildcard firmware/*.h) sim/maze/mazefile.h sim/io/infile.h | deps
+FLOOD16_SRC := test/unit/test_flood_ref.c firmware/flood.c firmware/maze.c sim/maze/mazefile.c sim/maze/truemaze.c sim/maze/truebelief.c sim/io/infile.c
+$(B)/test/test_flood_ref16: $(FLOOD16_SRC) $(wildcard firmware/*.h) sim/maze/mazefile.h sim/maze/truemaze.h sim/maze/truebelief.h sim/io/infile.h | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) -Ifirmware -Isim -O1 -g $(SAN) -DMAZE_MAX_SIZE=16 $(FLOOD16_SRC) -lcmocka -o $@
 

@@ -13,7 +13,7 @@
 #include "maze/grid.h"
 #include "hal_sim.h"
 #include "io/stdstream.h"
-#include "maze.h"
+#include "maze/truemaze.h"
 #include "maze/mazedir.h"
 #include "maze/mazefile.h"
 #include "maze/mazegen.h"
@@ -22,7 +22,7 @@
 enum { EXIT_OK = 0, EXIT_NOT_REACHED = 1, EXIT_BAD_INPUT = 2, EXIT_EXTERNAL = 3 };
 
 static const char *const heading_name[4] = { "N", "E", "S", "W" };
-static maze_t maze;       /* the maze being worked on */
+static truemaze_t maze;   /* the maze being worked on */
 static solve_path_t best; /* its best path */
 
 static void usage(FILE *out)
@@ -77,14 +77,14 @@ static int load(const char *path)
     return 0;
 }
 
-static void goal_bounds(const maze_t *m, int *x0, int *y0, int *x1, int *y1, int *n)
+static void goal_bounds(const truemaze_t *m, int *x0, int *y0, int *x1, int *y1, int *n)
 {
     *x0 = *y0 = 255;
     *x1 = *y1 = -1;
     *n = 0;
-    for (uint16_t c = 0; c < maze_cells(m); c++) {
-        if (!maze_is_goal(m, (maze_cell_t)c)) continue;
-        int x = maze_x(m, (maze_cell_t)c), y = maze_y(m, (maze_cell_t)c);
+    for (uint16_t c = 0; c < truemaze_cells(m); c++) {
+        if (!truemaze_is_goal(m, (truemaze_cell_t)c)) continue;
+        int x = truemaze_x(m, (truemaze_cell_t)c), y = truemaze_y(m, (truemaze_cell_t)c);
         if (x < *x0) *x0 = x;
         if (y < *y0) *y0 = y;
         if (x > *x1) *x1 = x;
@@ -110,9 +110,9 @@ static int cmd_check(int argc, char **argv)
         }
         goal_bounds(&maze, &x0, &y0, &x1, &y1, &n);
         printf("%s: %ux%u, start (%u,%u) %s, goal (%d,%d)-(%d,%d) %d cell%s\n", argv[i], maze.width,
-               maze.height, maze_x(&maze, maze.start), maze_y(&maze, maze.start),
+               maze.height, truemaze_x(&maze, maze.start), truemaze_y(&maze, maze.start),
                heading_name[maze.start_heading], x0, y0, x1, y1, n, n == 1 ? "" : "s");
-        if (solve_best(&maze, 0, &best) != 0) {
+        if (solve_best(&maze, &best) != 0) {
             fprintf(stderr, "%s: %s: goal unreachable from the start\n", argv[i], strict ? "error" : "warning");
             if (strict) rc = EXIT_BAD_INPUT;
         }
@@ -135,14 +135,14 @@ static int cmd_show(int argc, char **argv)
     char *text = malloc(need);
     if (!text) return EXIT_EXTERNAL;
     mazefile_format(&maze, text, need);
-    int reachable = solve_best(&maze, 0, &best) == 0;
+    int reachable = solve_best(&maze, &best) == 0;
     if (with_path && reachable) {
         /* the cell centre of (x,y) is at row 2*(h-1-y)+1, column 4x+2 */
         size_t row_len = (size_t)maze.width * 4 + 2;
         for (uint16_t j = 0; j < best.len; j++) {
-            maze_cell_t c = best.path[j];
-            size_t at = (size_t)(2 * (maze.height - 1 - maze_y(&maze, c)) + 1) * row_len +
-                        (size_t)maze_x(&maze, c) * 4 + 2;
+            truemaze_cell_t c = best.path[j];
+            size_t at = (size_t)(2 * (maze.height - 1 - truemaze_y(&maze, c)) + 1) * row_len +
+                        (size_t)truemaze_x(&maze, c) * 4 + 2;
             if (text[at] == ' ') text[at] = '*';
         }
     }
@@ -177,11 +177,11 @@ static int cmd_solve(int argc, char **argv)
     }
     if (optind != argc - 1) return bad_usage("solve: needs exactly one FILE");
     if (load(argv[optind]) != 0) return EXIT_BAD_INPUT;
-    int reachable = solve_best(&maze, 0, &best) == 0;
+    int reachable = solve_best(&maze, &best) == 0;
     if (json) {
         json_t *path = json_array();
         for (uint16_t j = 0; j < best.len; j++)
-            json_array_append_new(path, json_pack("[ii]", maze_x(&maze, best.path[j]), maze_y(&maze, best.path[j])));
+            json_array_append_new(path, json_pack("[ii]", truemaze_x(&maze, best.path[j]), truemaze_y(&maze, best.path[j])));
         json_t *out = json_pack("{s:o, s:b}", "path", path, "goal_reachable", reachable);
         json_object_set_new(out, "cells", reachable ? json_integer(best.cells) : json_null());
         json_object_set_new(out, "turns", reachable ? json_integer(best.turns) : json_null());
@@ -192,7 +192,7 @@ static int cmd_solve(int argc, char **argv)
         printf("cost %u: %u cells, %u turns (fewest cells of any path: %u)\npath:", best.cost, best.cells,
                best.turns, best.min_cells);
         for (uint16_t j = 0; j < best.len; j++)
-            printf(" (%u,%u)", maze_x(&maze, best.path[j]), maze_y(&maze, best.path[j]));
+            printf(" (%u,%u)", truemaze_x(&maze, best.path[j]), truemaze_y(&maze, best.path[j]));
         putchar('\n');
     } else {
         printf("goal unreachable from the start\n");

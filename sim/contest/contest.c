@@ -15,7 +15,7 @@
 #include "world/inifile.h"
 #include "world/keytab.h"
 
-static const char *const headings[] = { "north", "east", "south", "west" }; /* MAZE_NORTH.. */
+static const char *const headings[] = { "north", "east", "south", "west" }; /* TRUEMAZE_NORTH.. */
 static const char *const rules_words[] = { "best_run", "run_plus_search" };   /* SCORE_* */
 
 /* "X,Y": two whole numbers 0..255 into int[2] */
@@ -61,8 +61,8 @@ static int parse_rect(const char *val, void *field, char *why, size_t len)
 
 /* ranges: the config's [world] and [sim] ranges (config.c), in the file's units */
 static const keytab_t keys[] = {
-    I("maze", "max_width", max_width, REQ, 1, MAZE_MAX_W, "cells"),
-    I("maze", "max_height", max_height, REQ, 1, MAZE_MAX_H, "cells"),
+    I("maze", "max_width", max_width, REQ, 1, TRUEMAZE_MAX_SIZE, "cells"),
+    I("maze", "max_height", max_height, REQ, 1, TRUEMAZE_MAX_SIZE, "cells"),
     N("maze", "cell_mm", cell_m, 50, 500, "mm", 1000),
     N("maze", "wall_thick_mm", wall_thick_m, 1, 50, "mm", 1000),
     N("maze", "wall_height_mm", wall_height_m, 5, 200, "mm", 1000),
@@ -363,20 +363,20 @@ void contest_apply_config(const contest_t *c, simcfg_t *cfg)
 
 /* The profile's heading where the start cell is open that way, else the
  * first open side (north, east, south, west), as the maze reader picks. */
-static void start_heading(const contest_t *c, maze_t *m)
+static void start_heading(const contest_t *c, truemaze_t *m)
 {
-    if (maze_passable(m, m->start, (uint8_t)c->heading, 0)) {
+    if (truemaze_open(m, m->start, (uint8_t)c->heading)) {
         m->start_heading = (uint8_t)c->heading;
         return;
     }
     for (uint8_t d = 0; d < 4; d++)
-        if (maze_passable(m, m->start, d, 0)) {
+        if (truemaze_open(m, m->start, d)) {
             m->start_heading = d;
             return;
         }
 }
 
-int contest_apply_maze(const contest_t *c, maze_t *m, const mazefile_info_t *info, const char *maze_path, char *err,
+int contest_apply_maze(const contest_t *c, truemaze_t *m, const mazefile_info_t *info, const char *maze_path, char *err,
                        size_t errlen)
 {
     if (m->width > c->max_width || m->height > c->max_height) {
@@ -390,7 +390,7 @@ int contest_apply_maze(const contest_t *c, maze_t *m, const mazefile_info_t *inf
                      c->start[1], m->width, m->height);
             return -1;
         }
-        m->start = maze_cell(m, (uint8_t)c->start[0], (uint8_t)c->start[1]);
+        m->start = truemaze_cell(m, (uint8_t)c->start[0], (uint8_t)c->start[1]);
         start_heading(c, m);
     }
     if (info->has_goal) return 0; /* the file's 'G' marks */
@@ -399,9 +399,9 @@ int contest_apply_maze(const contest_t *c, maze_t *m, const mazefile_info_t *inf
                  maze_path, c->name, c->goal[0], c->goal[1], c->goal[2], c->goal[3], m->width, m->height);
         return -1;
     }
-    maze_clear_goals(m);
+    truemaze_clear_goals(m);
     for (int y = c->goal[1]; y <= c->goal[3]; y++)
-        for (int x = c->goal[0]; x <= c->goal[2]; x++) maze_set_goal(m, maze_cell(m, (uint8_t)x, (uint8_t)y), 1);
+        for (int x = c->goal[0]; x <= c->goal[2]; x++) truemaze_set_goal(m, truemaze_cell(m, (uint8_t)x, (uint8_t)y), 1);
     return 0;
 }
 

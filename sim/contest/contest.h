@@ -39,7 +39,7 @@ typedef struct contest_s {
     double cell_m, wall_thick_m, wall_height_m, post_m; /* the file's mm as m */
     int centre_post;        /* 1 = the post in the middle of the goal stands */
     int start[2];           /* start cell x, y */
-    int heading;            /* MAZE_NORTH.. */
+    int heading;            /* TRUEMAZE_NORTH.. */
     int goal[4];            /* goal rectangle x0, y0, x1, y1 (x0 <= x1, y0 <= y1) */
     double time_limit_s;
     score_rules_t rules;    /* runs, scoring rule, search share, touch penalty */
@@ -61,7 +61,7 @@ void contest_apply_config(const contest_t *c, simcfg_t *cfg);
 /* The start and goal onto a loaded maze (its file's 'S'/'G' marks, in
  * info, win): 0, or -1 with one line in err (a maze larger than the
  * contest's, a goal or start outside the maze). */
-int contest_apply_maze(const contest_t *c, maze_t *m, const mazefile_info_t *info, const char *maze_path, char *err,
+int contest_apply_maze(const contest_t *c, truemaze_t *m, const mazefile_info_t *info, const char *maze_path, char *err,
                        size_t errlen);
 /* The results' "contest" object: name, rule, each run's figures and score,
  * the score. lift_t_s: the sim times of the hands' lifts (touches), n_lifts

@@ -10,7 +10,7 @@
 
 static solve_path_t best;
 
-void driver_init(driver_t *d, const maze_t *m, const sim_model_t *md, int runs)
+void driver_init(driver_t *d, const truemaze_t *m, const sim_model_t *md, int runs)
 {
     const simcfg_t *c = md->cfg;
     double wheel_r_m = (md->wheel_r_m[WORLD_LEFT] + md->wheel_r_m[WORLD_RIGHT]) / 2; /* the wheels' mean */
@@ -24,7 +24,7 @@ void driver_init(driver_t *d, const maze_t *m, const sim_model_t *md, int runs)
     d->dir = 1;
     d->runs_left = runs;
     d->done = 0;
-    d->reachable = solve_best(m, 0, &best) == 0;
+    d->reachable = solve_best(m, &best) == 0;
     if (!d->reachable) {
         d->done = 1;
         return;
@@ -32,14 +32,14 @@ void driver_init(driver_t *d, const maze_t *m, const sim_model_t *md, int runs)
     /* keep the first cell, every corner and the last cell */
     for (uint16_t i = 0; i < best.len; i++) {
         if (i > 0 && i + 1 < best.len) {
-            int ax = maze_x(m, best.path[i]) - maze_x(m, best.path[i - 1]);
-            int ay = maze_y(m, best.path[i]) - maze_y(m, best.path[i - 1]);
-            int bx = maze_x(m, best.path[i + 1]) - maze_x(m, best.path[i]);
-            int by = maze_y(m, best.path[i + 1]) - maze_y(m, best.path[i]);
+            int ax = truemaze_x(m, best.path[i]) - truemaze_x(m, best.path[i - 1]);
+            int ay = truemaze_y(m, best.path[i]) - truemaze_y(m, best.path[i - 1]);
+            int bx = truemaze_x(m, best.path[i + 1]) - truemaze_x(m, best.path[i]);
+            int by = truemaze_y(m, best.path[i + 1]) - truemaze_y(m, best.path[i]);
             if (ax == bx && ay == by) continue;
         }
-        d->wx[d->n] = (maze_x(m, best.path[i]) + 0.5) * cell_m;
-        d->wy[d->n] = (maze_y(m, best.path[i]) + 0.5) * cell_m;
+        d->wx[d->n] = (truemaze_x(m, best.path[i]) + 0.5) * cell_m;
+        d->wy[d->n] = (truemaze_y(m, best.path[i]) + 0.5) * cell_m;
         d->n++;
     }
 }

@@ -11,7 +11,7 @@
 #include "maze/solve.h"
 
 typedef struct {
-    double wx[MAZE_MAX_CELLS + 1], wy[MAZE_MAX_CELLS + 1]; /* corner waypoints, m */
+    double wx[TRUEMAZE_MAX_CELLS + 1], wy[TRUEMAZE_MAX_CELLS + 1]; /* corner waypoints, m */
     int n;           /* waypoints */
     int idx, dir;    /* next waypoint, +1 towards the goal, -1 back */
     int runs_left;   /* runs to the goal still to make */
@@ -24,7 +24,7 @@ typedef struct {
 
 /* Plan on the true maze for the robot of model md; runs = number of
  * start-to-goal runs. */
-void driver_init(driver_t *d, const maze_t *m, const sim_model_t *md, int runs);
+void driver_init(driver_t *d, const truemaze_t *m, const sim_model_t *md, int runs);
 /* Set s->cmd from the true pose; call once per physics step. */
 void driver_update(driver_t *d, sim_state_t *s);
 

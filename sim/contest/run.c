@@ -132,8 +132,8 @@ static int set_goal(run_t *r)
         fprintf(stderr, "--goal: cell %d,%d is outside the %ux%u maze\n", o->goal_x, o->goal_y, r->maze.width, r->maze.height);
         return -1;
     }
-    maze_clear_goals(&r->maze);
-    maze_set_goal(&r->maze, maze_cell(&r->maze, (uint8_t)o->goal_x, (uint8_t)o->goal_y), 1);
+    truemaze_clear_goals(&r->maze);
+    truemaze_set_goal(&r->maze, truemaze_cell(&r->maze, (uint8_t)o->goal_x, (uint8_t)o->goal_y), 1);
     return 0;
 }
 
@@ -426,7 +426,8 @@ static int write_report(run_t *r)
     if (!r->rep) return 0;
     snprintf(title, sizeof title, "%s  %ux%u  seed %llu  %s driver  exit: %s", r->maze_path, r->maze.width,
              r->maze.height, (unsigned long long)r->o->seed, r->drv->name, r->reason);
-    const maze_t *belief = NULL, *path_on = NULL; /* only what the run's driver has */
+    const maze_t *belief = NULL; /* only what the run's driver has */
+    const truemaze_t *path_on = NULL;
     if (r->drv->report) r->drv->report(r, r->self, r->rep, &belief, &path_on);
     if (report_write(r->rep, &r->sim, belief, path_on, r->o->report, title, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);

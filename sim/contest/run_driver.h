@@ -55,7 +55,7 @@ typedef struct {
     const sim_belief_t *(*belief)(const void *self);
     /* its part of the report: the mms cells, the map it believes (NULL: none, an MCU keeps its
      * map to itself) and the maze its final path is drawn on (NULL: no path) */
-    void (*report)(const run_t *r, void *self, report_t *rep, const maze_t **belief, const maze_t **path_on);
+    void (*report)(const run_t *r, void *self, report_t *rep, const maze_t **belief, const truemaze_t **path_on);
     void (*show)(run_t *r, void *self, view_t *v); /* its part of the viewer: board panel, mms cells (NULL: none) */
     /* a hand's action on the board: switches, button, reset, send (NULL: no board to act on) */
     void (*hands)(run_t *r, void *self, const input_action_t *a);
@@ -72,7 +72,7 @@ struct run_s {
     const char *maze_path;
     simcfg_t cfg;       /* the config and robot file as loaded (the model points into it) */
     char hash[65];      /* config_hash */
-    maze_t maze;
+    truemaze_t maze;
     sim_model_t model;  /* the run's robot and world, built once from cfg and the seed: const after set-up */
     sim_state_t sim;    /* all that changes as the run steps */
     /* the driver the run began with (its name, results, headline and exit code) and its state */

@@ -10,6 +10,7 @@
 #include "hal.h"
 #include "hal_sim.h"
 #include "maze/solve.h"
+#include "maze/truebelief.h"
 #include "mouse.h"
 
 /* the firmware's control tick, counted in physics steps */
@@ -39,7 +40,8 @@ static void fw_start(run_t *r, fw_t *f)
 {
     hal_sim_attach(&r->sim);
     hal_sim_set_log(r->o->verbose ? stderr : NULL);
-    hal_sim_set_maze(&r->maze); /* announced to the firmware through hal_maze */
+    static maze_t announced; /* the firmware's map type: hal/sim reads size, start and goal */
+    hal_sim_set_maze(truemaze_to_belief(&r->maze, &announced) == 0 ? &announced : NULL); /* told through hal_maze */
     fw_set_speed_runs((uint8_t)r->o->runs);
     fw_setup();
     /* a build with -DHAL_TICK_HZ=250 ticks every 4th step, as on the AVR */
@@ -78,7 +80,9 @@ static const char *fw_after(run_t *r, void *self)
 static void fw_results(run_t *r, void *self, json_t *j)
 {
     static solve_path_t truth, known;
-    int ok_truth = solve_best(&r->maze, 0, &truth) == 0, ok_known = solve_best(mouse_map(), 0, &known) == 0;
+    static truemaze_t map;
+    truemaze_from_belief(&map, mouse_map(), 0);
+    int ok_truth = solve_best(&r->maze, &truth) == 0, ok_known = solve_best(&map, &known) == 0;
     uint16_t proven = mouse_proven_at_step();
     json_object_set_new(j, "proven_at_step", proven == 0xFFFFu ? json_null() : json_integer(proven));
     json_object_set_new(j, "final_path_optimal",
@@ -86,9 +90,12 @@ static void fw_results(run_t *r, void *self, json_t *j)
 }
 
 /* the map it built, and its final path on that map */
-static void fw_report(const run_t *r, void *self, report_t *rep, const maze_t **belief, const maze_t **path_on)
+static void fw_report(const run_t *r, void *self, report_t *rep, const maze_t **belief, const truemaze_t **path_on)
 {
-    *belief = *path_on = mouse_map();
+    static truemaze_t map;
+    truemaze_from_belief(&map, mouse_map(), 0);
+    *belief = mouse_map();
+    *path_on = &map;
 }
 
 /* the belief the firmware reports through hal_belief, as hal/sim keeps it */
@@ -159,7 +166,7 @@ static void mms_results(run_t *r, void *self, json_t *j)
 }
 
 /* the algorithm's cell colours and texts over the firmware's map and path */
-static void mms_report(const run_t *r, void *self, report_t *rep, const maze_t **belief, const maze_t **path_on)
+static void mms_report(const run_t *r, void *self, report_t *rep, const maze_t **belief, const truemaze_t **path_on)
 {
     const mms_t *m = &((fw_mms_t *)self)->mms;
     report_set_cells(rep, m->color, &m->text[0][0], sizeof m->text[0]);

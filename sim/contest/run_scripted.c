@@ -28,7 +28,7 @@ static const char *scripted_before(run_t *r, void *self)
 }
 
 /* no map of its own: its path is the true maze's best */
-static void scripted_report(const run_t *r, void *self, report_t *rep, const maze_t **belief, const maze_t **path_on)
+static void scripted_report(const run_t *r, void *self, report_t *rep, const maze_t **belief, const truemaze_t **path_on)
 {
     *path_on = &r->maze;
 }

@@ -2,43 +2,46 @@
 #include "grid.h"
 #include "explore.h"
 #include "solve.h"
+#include "truebelief.h"
 
 #include <string.h>
 
 static explore_t mouse; /* host: one grid run at a time; 2.7 KB for 32x32 */
 
-uint8_t grid_sense(const maze_t *truth, maze_cell_t c, uint8_t h)
+uint8_t grid_sense(const truemaze_t *truth, truemaze_cell_t c, uint8_t h)
 {
     uint8_t w = 0;
-    if (!maze_passable(truth, c, h, 0)) w |= EXPLORE_WALL_FRONT;
-    if (!maze_passable(truth, c, maze_turn(h, 1), 0)) w |= EXPLORE_WALL_RIGHT;
-    if (!maze_passable(truth, c, maze_turn(h, -1), 0)) w |= EXPLORE_WALL_LEFT;
+    if (!truemaze_open(truth, c, h)) w |= EXPLORE_WALL_FRONT;
+    if (!truemaze_open(truth, c, truemaze_turn(h, 1))) w |= EXPLORE_WALL_RIGHT;
+    if (!truemaze_open(truth, c, truemaze_turn(h, -1))) w |= EXPLORE_WALL_LEFT;
     return w;
 }
 
-int grid_explore(const maze_t *truth, grid_result_t *r)
+int grid_explore(const truemaze_t *truth, grid_result_t *r)
 {
-    static uint8_t visited[(MAZE_MAX_CELLS + 7) / 8];
+    static uint8_t visited[(TRUEMAZE_MAX_CELLS + 7) / 8];
     static solve_path_t best;
-    uint32_t limit = 16u * maze_cells(truth);
+    uint32_t limit = 16u * truemaze_cells(truth);
 
     memset(r, 0, sizeof *r);
     memset(visited, 0, sizeof visited);
     r->proven_at_step = -1;
     r->goal_at_step = -1;
-    r->goal_reachable = solve_best(truth, 0, &best) == 0;
+    r->goal_reachable = solve_best(truth, &best) == 0;
     r->true_cost = best.cost;
 
-    explore_init(&mouse, truth);
+    static maze_t blank; /* the firmware's map type: explore_init reads size, start and goal */
+    if (truemaze_to_belief(truth, &blank) != 0) return 1; /* larger than the firmware's MAZE_MAX_SIZE */
+    explore_init(&mouse, &blank);
     visited[mouse.cell >> 3] |= (uint8_t)(1u << (mouse.cell & 7));
     r->cells_visited = 1;
     while (r->steps < limit) {
         explore_sense(&mouse, grid_sense(truth, mouse.cell, mouse.heading));
         int d = explore_next(&mouse);
         if (d < 0) break;
-        maze_cell_t n;
-        if (!maze_passable(truth, mouse.cell, (uint8_t)d, 0) ||
-            !maze_neighbour(truth, mouse.cell, (uint8_t)d, &n))
+        truemaze_cell_t n;
+        if (!truemaze_open(truth, mouse.cell, (uint8_t)d) ||
+            !truemaze_neighbour(truth, mouse.cell, (uint8_t)d, &n))
             break; /* the mouse tried to drive into a wall: a bug, stop */
         switch ((d - mouse.heading) & 3) {
         case 0: r->steps_forward++; break;
@@ -58,6 +61,6 @@ int grid_explore(const maze_t *truth, grid_result_t *r)
     r->run_cost = mouse.run_cost;
     r->ended_at_start = mouse.cell == truth->start;
     r->final_path_optimal = mouse.phase == EXPLORE_DONE && r->goal_reachable &&
-                            solve_cost_from(truth, truth->start, truth->start_heading, 0) == mouse.run_cost;
+                            solve_cost_from(truth, truth->start, truth->start_heading) == mouse.run_cost;
     return mouse.phase == EXPLORE_DONE ? 0 : 1;
 }

@@ -5,7 +5,7 @@
 #define GRID_H
 
 #include <stdint.h>
-#include "maze.h"
+#include "truemaze.h"
 
 typedef struct {
     uint32_t steps;          /* cell moves from leaving the start until back */
@@ -21,11 +21,12 @@ typedef struct {
 } grid_result_t;
 
 /* The walls a mouse at (c, facing h) sees in truth: EXPLORE_WALL_* bits. */
-uint8_t grid_sense(const maze_t *truth, maze_cell_t c, uint8_t h);
+uint8_t grid_sense(const truemaze_t *truth, truemaze_cell_t c, uint8_t h);
 
-/* Explore truth (every wall known) from an empty map. Returns 0 when the
- * mouse is back at the start with its path proven, 1 otherwise (goal
- * unreachable, or the step limit of 16 moves per cell was hit). */
-int grid_explore(const maze_t *truth, grid_result_t *r);
+/* Explore truth from an empty map (the firmware's, made at the seam by
+ * truebelief.h). Returns 0 when the mouse is back at the start with its path
+ * proven, 1 otherwise (goal unreachable, the step limit of 16 moves per cell
+ * hit, or a maze larger than the firmware's MAZE_MAX_SIZE). */
+int grid_explore(const truemaze_t *truth, grid_result_t *r);
 
 #endif

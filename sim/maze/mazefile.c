@@ -21,8 +21,8 @@
 #include "io/infile.h"
 
 enum {
-    MAX_ROWS = 2 * MAZE_MAX_H + 1, /* text rows of the largest maze */
-    MAX_COLS = 4 * MAZE_MAX_W + 1  /* characters in its widest row */
+    MAX_ROWS = 2 * TRUEMAZE_MAX_SIZE + 1, /* text rows of the largest maze */
+    MAX_COLS = 4 * TRUEMAZE_MAX_SIZE + 1  /* characters in its widest row */
 };
 
 typedef struct {
@@ -155,7 +155,7 @@ static int text_width(const src_t *s, const line_t *ln, uint8_t *w)
     for (size_t col = 0; col < limit; col++)
         if (check_char(s, ln, 1, col)) return -1;
     if (ln->len > MAX_COLS)
-        return fail(s, ln->lineno, MAX_COLS + 1, "maze wider than %d cells", MAZE_MAX_W);
+        return fail(s, ln->lineno, MAX_COLS + 1, "maze wider than %d cells", TRUEMAZE_MAX_SIZE);
     if (ln->len < 5 || (ln->len - 1) % 4 != 0)
         return fail(s, ln->lineno, ln->len + 1, "first row is %zu characters wide: want 4*cells+1, a post every 4 columns", ln->len);
     *w = (uint8_t)((ln->len - 1) / 4);
@@ -184,7 +184,7 @@ typedef struct {
 
 /* A post row (0-based index r): posts at 4k, "---" or "   " between. It
  * holds the north walls of the cells below it, y = h-1-r/2. */
-static int parse_post_row(const src_t *s, const line_t *ln, size_t r, const grid_t *g, maze_t *m)
+static int parse_post_row(const src_t *s, const line_t *ln, size_t r, const grid_t *g, truemaze_t *m)
 {
     int y_south = (int)g->h - 1 - (int)(r / 2);
     int boundary = r == 0 || (y_south < 0 && !g->truncated);
@@ -202,7 +202,7 @@ static int parse_post_row(const src_t *s, const line_t *ln, size_t r, const grid
         }
         if (boundary && !wall) return fail(s, ln->lineno, col + 3, "boundary not closed");
         if (!boundary && y_south >= 0)
-            maze_set_wall(m, maze_cell(m, k, (uint8_t)y_south), MAZE_NORTH, wall ? MAZE_WALL_CLOSED : MAZE_WALL_OPEN);
+            truemaze_set_wall(m, truemaze_cell(m, k, (uint8_t)y_south), TRUEMAZE_NORTH, wall);
     }
     if (ln->len > g->width) return long_row(s, ln, g->width);
     return 0;
@@ -214,7 +214,7 @@ typedef struct {
     size_t start_line, start_col; /* of the first 'S', for the "more than one" message */
 } letters_t;
 
-static int cell_letter(const src_t *s, const line_t *ln, size_t col, maze_cell_t cell, maze_t *m, letters_t *lt)
+static int cell_letter(const src_t *s, const line_t *ln, size_t col, truemaze_cell_t cell, truemaze_t *m, letters_t *lt)
 {
     char c = at(s, ln, col);
     if (c == 'S') {
@@ -224,15 +224,15 @@ static int cell_letter(const src_t *s, const line_t *ln, size_t col, maze_cell_t
         lt->start_col = col + 1;
         m->start = cell;
     } else if (c == 'G') {
-        if (lt->n_goal++ == 0) maze_clear_goals(m); /* marked goals replace the default centre */
-        maze_set_goal(m, cell, 1);
+        if (lt->n_goal++ == 0) truemaze_clear_goals(m); /* marked goals replace the default centre */
+        truemaze_set_goal(m, cell, 1);
     }
     return 0;
 }
 
 /* A cell row (0-based index r): '|' or ' ' at 4k, interiors " x " between;
  * the cells are at y = h-1-r/2. */
-static int parse_cell_row(const src_t *s, const line_t *ln, size_t r, const grid_t *g, maze_t *m, letters_t *lt)
+static int parse_cell_row(const src_t *s, const line_t *ln, size_t r, const grid_t *g, truemaze_t *m, letters_t *lt)
 {
     uint8_t y = (uint8_t)(g->h - 1 - r / 2);
     size_t end = ln->raw < g->width ? ln->raw : g->width;
@@ -244,13 +244,13 @@ static int parse_cell_row(const src_t *s, const line_t *ln, size_t r, const grid
         if (k == 0 || k == g->w) {
             if (!wall) return fail(s, ln->lineno, col + 1, "boundary not closed");
         } else {
-            maze_set_wall(m, maze_cell(m, k, y), MAZE_WEST, wall ? MAZE_WALL_CLOSED : MAZE_WALL_OPEN);
+            truemaze_set_wall(m, truemaze_cell(m, k, y), TRUEMAZE_WEST, wall);
         }
         if (k == g->w) break;
         for (size_t j = 1; j <= 3; j++) {
             if (col + j >= end) return short_row(s, ln, g->width);
             if (check_char(s, ln, 0, col + j)) return -1;
-            if (cell_letter(s, ln, col + j, maze_cell(m, k, y), m, lt)) return -1;
+            if (cell_letter(s, ln, col + j, truemaze_cell(m, k, y), m, lt)) return -1;
         }
     }
     if (ln->len > g->width) return long_row(s, ln, g->width);
@@ -259,11 +259,11 @@ static int parse_cell_row(const src_t *s, const line_t *ln, size_t r, const grid
 
 /* Start heading: north unless that side is closed, then the first open
  * side in the order N, E, S, W (north if the cell is closed all round). */
-static void pick_start_heading(maze_t *m)
+static void pick_start_heading(truemaze_t *m)
 {
-    m->start_heading = MAZE_NORTH;
+    m->start_heading = TRUEMAZE_NORTH;
     for (uint8_t d = 0; d < 4; d++)
-        if (maze_passable(m, m->start, d, 0)) {
+        if (truemaze_open(m, m->start, d)) {
             m->start_heading = d;
             return;
         }
@@ -306,7 +306,7 @@ static size_t collect_rows(const src_t *s, line_t rows[MAX_ROWS], stop_t *stop)
     return n;
 }
 
-static int parse_text(const src_t *s, maze_t *m, mazefile_info_t *info)
+static int parse_text(const src_t *s, truemaze_t *m, mazefile_info_t *info)
 {
     line_t rows[MAX_ROWS];
     stop_t stop;
@@ -319,16 +319,16 @@ static int parse_text(const src_t *s, maze_t *m, mazefile_info_t *info)
     g.width = (size_t)g.w * 4 + 1;
     g.h = (uint8_t)(n / 2); /* cell rows; the row count's parity is checked last */
     g.truncated = stop.line != 0;
-    /* Cannot fail: w is 1..MAZE_MAX_W (text_width) and h at most MAZE_MAX_H
+    /* Cannot fail: w is 1..TRUEMAZE_MAX_SIZE (text_width) and h at most TRUEMAZE_MAX_SIZE
      * (collect_rows); a lone row of posts is checked on a 1-high grid. */
-    maze_init(m, g.w, g.h ? g.h : 1);
+    truemaze_init(m, g.w, g.h ? g.h : 1);
 
     for (size_t r = 0; r < n; r++) {
         int rc = (r % 2 == 0) ? parse_post_row(s, &rows[r], r, &g, m) : parse_cell_row(s, &rows[r], r, &g, m, &lt);
         if (rc) return rc;
     }
     if (stop.line && stop.too_many)
-        return fail(s, stop.line, 1, "maze taller than %d cells (more than %d rows)", MAZE_MAX_H, MAX_ROWS);
+        return fail(s, stop.line, 1, "maze taller than %d cells (more than %d rows)", TRUEMAZE_MAX_SIZE, MAX_ROWS);
     if (stop.line) return fail(s, stop.line, 1, "blank line inside the maze");
     if (n == 1) return fail(s, rows[0].lineno + 1, 1, "no cell rows: a maze has 2*cells+1 rows");
     if (n % 2 == 0)
@@ -370,9 +370,9 @@ static int mms_fields(const src_t *s, const line_t *ln, mms_fields_t *f)
             if (f->v[k] < 100000) f->v[k] = f->v[k] * 10 + (p[col] - '0'); /* saturates: too large anyway */
         if (col < ln->len && !is_blank(p[col]))
             return fail(s, ln->lineno, col + 1, "stray character %s after a number", describe(p[col], d));
-        if (k < 2 && f->v[k] >= MAZE_MAX_SIZE) /* quoted from the text: the value saturated */
+        if (k < 2 && f->v[k] >= TRUEMAZE_MAX_SIZE) /* quoted from the text: the value saturated */
             return fail(s, ln->lineno, f->col[k] + 1, "coordinate %.*s above the maximum %d", (int)(col - f->col[k] < 20 ? col - f->col[k] : 20),
-                        p + f->col[k], MAZE_MAX_SIZE - 1);
+                        p + f->col[k], TRUEMAZE_MAX_SIZE - 1);
         if (k >= 2 && f->v[k] > 1)
             return fail(s, ln->lineno, f->col[k] + 1, "wall value must be 0 or 1");
     }
@@ -381,15 +381,15 @@ static int mms_fields(const src_t *s, const line_t *ln, mms_fields_t *f)
     return 0;
 }
 
-/* Cells indexed y * MAZE_MAX_W + x: the size is known only at the end. */
+/* Cells indexed y * TRUEMAZE_MAX_SIZE + x: the size is known only at the end. */
 typedef struct {
-    uint8_t walls[MAZE_MAX_CELLS]; /* bit d = wall on side d; MMS_GIVEN = seen */
-    uint32_t off[MAZE_MAX_CELLS];  /* offset of the line that gave the cell */
+    uint8_t walls[TRUEMAZE_MAX_CELLS]; /* bit d = wall on side d; MMS_GIVEN = seen */
+    uint32_t off[TRUEMAZE_MAX_CELLS];  /* offset of the line that gave the cell */
 } mms_grid_t;
 
 enum { MMS_GIVEN = 0x80 };
 
-static size_t mms_index(long x, long y) { return (size_t)y * MAZE_MAX_W + (size_t)x; }
+static size_t mms_index(long x, long y) { return (size_t)y * TRUEMAZE_MAX_SIZE + (size_t)x; }
 
 /* The field index (2..5) of side d: N E S W follow X Y. */
 static int field_of(uint8_t d) { return 2 + d; }
@@ -418,13 +418,13 @@ static int mms_check_new(const src_t *s, const line_t *ln, const mms_fields_t *f
         int wall = (int)f->v[field_of(d)];
         size_t col = f->col[field_of(d)] + 1;
         if (nx < 0 || ny < 0) {
-            if (!wall) return fail(s, ln->lineno, col, "boundary not closed: %s wall of cell (%ld,%ld)", d == MAZE_SOUTH ? "south" : "west", x, y);
+            if (!wall) return fail(s, ln->lineno, col, "boundary not closed: %s wall of cell (%ld,%ld)", d == TRUEMAZE_SOUTH ? "south" : "west", x, y);
             continue;
         }
-        if (nx >= MAZE_MAX_W || ny >= MAZE_MAX_H) continue; /* checked as a boundary at the end */
+        if (nx >= TRUEMAZE_MAX_SIZE || ny >= TRUEMAZE_MAX_SIZE) continue; /* checked as a boundary at the end */
         uint8_t nb = g->walls[mms_index(nx, ny)];
         if (!(nb & MMS_GIVEN)) continue;
-        if (wall != ((nb >> maze_turn(d, 2)) & 1)) {
+        if (wall != ((nb >> truemaze_turn(d, 2)) & 1)) {
             size_t line, c;
             pos_of(s, g->off[mms_index(nx, ny)], &line, &c);
             return fail(s, ln->lineno, col, "wall between (%ld,%ld) and (%ld,%ld) disagrees with line %zu", x, y, nx, ny, line);
@@ -473,8 +473,8 @@ static int mms_check_far_boundary(const src_t *s, const mms_grid_t *g, long w, l
         for (long x = 0; x < w; x++) {
             size_t i = mms_index(x, y);
             if (!(g->walls[i] & MMS_GIVEN)) continue; /* reported as missing later */
-            for (uint8_t d = MAZE_NORTH; d <= MAZE_EAST; d++) {
-                int edge = d == MAZE_NORTH ? y == h - 1 : x == w - 1;
+            for (uint8_t d = TRUEMAZE_NORTH; d <= TRUEMAZE_EAST; d++) {
+                int edge = d == TRUEMAZE_NORTH ? y == h - 1 : x == w - 1;
                 if (!edge || (g->walls[i] >> d) & 1) continue;
                 if (bx < 0 || g->off[i] < g->off[mms_index(bx, by)]) {
                     bx = x;
@@ -485,10 +485,10 @@ static int mms_check_far_boundary(const src_t *s, const mms_grid_t *g, long w, l
         }
     if (bx < 0) return 0;
     return fail_field(s, g->off[mms_index(bx, by)], field_of(bd),
-                      bd == MAZE_NORTH ? "boundary not closed: north wall" : "boundary not closed: east wall", bx, by);
+                      bd == TRUEMAZE_NORTH ? "boundary not closed: north wall" : "boundary not closed: east wall", bx, by);
 }
 
-static int parse_mms(const src_t *s, maze_t *m, mazefile_info_t *info)
+static int parse_mms(const src_t *s, truemaze_t *m, mazefile_info_t *info)
 {
     mms_grid_t g; /* 5 KB on the host stack; no allocation */
     long w, h;
@@ -501,14 +501,14 @@ static int parse_mms(const src_t *s, maze_t *m, mazefile_info_t *info)
         for (long x = 0; x < w; x++)
             if (!(g.walls[mms_index(x, y)] & MMS_GIVEN))
                 return fail(s, last_line + 1, 1, "cell (%ld,%ld) missing: every cell of the %ldx%ld maze must appear once", x, y, w, h);
-    maze_init(m, (uint8_t)w, (uint8_t)h); /* 1..MAZE_MAX_SIZE: checked per line */
+    truemaze_init(m, (uint8_t)w, (uint8_t)h); /* 1..TRUEMAZE_MAX_SIZE: checked per line */
     for (long y = 0; y < h; y++)
         for (long x = 0; x < w; x++) {
-            maze_cell_t c = maze_cell(m, (uint8_t)x, (uint8_t)y);
+            truemaze_cell_t c = truemaze_cell(m, (uint8_t)x, (uint8_t)y);
             /* north and east cover every interior wall once; the two cells'
              * copies were checked to agree as they were read */
-            for (uint8_t d = MAZE_NORTH; d <= MAZE_EAST; d++)
-                maze_set_wall(m, c, d, (g.walls[mms_index(x, y)] >> d) & 1 ? MAZE_WALL_CLOSED : MAZE_WALL_OPEN);
+            for (uint8_t d = TRUEMAZE_NORTH; d <= TRUEMAZE_EAST; d++)
+                truemaze_set_wall(m, c, d, (g.walls[mms_index(x, y)] >> d) & 1);
         }
     pick_start_heading(m);
     if (info) info->mms_format = 1;
@@ -517,7 +517,7 @@ static int parse_mms(const src_t *s, maze_t *m, mazefile_info_t *info)
 
 /* ---- entry points ---- */
 
-int mazefile_parse(maze_t *m, const char *text, size_t len, const char *name, mazefile_info_t *info,
+int mazefile_parse(truemaze_t *m, const char *text, size_t len, const char *name, mazefile_info_t *info,
                    char *err, size_t errlen)
 {
     src_t s = { text, len, name ? name : "<maze>", err, errlen };
@@ -546,7 +546,7 @@ int mazefile_parse(maze_t *m, const char *text, size_t len, const char *name, ma
                 describe(text[i], d));
 }
 
-int mazefile_load(maze_t *m, const char *path, mazefile_info_t *info, char *err, size_t errlen)
+int mazefile_load(truemaze_t *m, const char *path, mazefile_info_t *info, char *err, size_t errlen)
 {
     int is_stdin = strcmp(path, "-") == 0;
     const char *name = is_stdin ? "<stdin>" : path;
@@ -595,53 +595,53 @@ static void finish(out_t *o)
     if (o->cap) o->buf[o->n < o->cap ? o->n : o->cap - 1] = '\0';
 }
 
-static int valid_size(const maze_t *m)
+static int valid_size(const truemaze_t *m)
 {
-    return m->width >= 1 && m->width <= MAZE_MAX_W && m->height >= 1 && m->height <= MAZE_MAX_H;
+    return m->width >= 1 && m->width <= TRUEMAZE_MAX_SIZE && m->height >= 1 && m->height <= TRUEMAZE_MAX_SIZE;
 }
 
 /* One letter per cell: a start inside the goal area hides one goal cell.
  * If the goal is the default centre, leaving the G letters out says it
  * exactly; any other goal holding the start cannot be written. */
-static int write_goal_letters(const maze_t *m)
+static int write_goal_letters(const truemaze_t *m)
 {
-    maze_t centre;
-    if (!maze_is_goal(m, m->start)) return 1;
-    maze_init(&centre, m->width, m->height);
+    truemaze_t centre;
+    if (!truemaze_is_goal(m, m->start)) return 1;
+    truemaze_init(&centre, m->width, m->height);
     return memcmp(centre.goal, m->goal, sizeof centre.goal) != 0;
 }
 
 /* Post row r (0 = north edge): the north walls of row y = h-1-r/2. */
-static void format_post_row(const maze_t *m, int r, out_t *o)
+static void format_post_row(const truemaze_t *m, int r, out_t *o)
 {
     int y = m->height - 1 - r / 2; /* -1: the south boundary */
     for (uint8_t x = 0; x < m->width; x++) {
-        int wall = y < 0 || !maze_passable(m, maze_cell(m, x, (uint8_t)y), MAZE_NORTH, 0);
+        int wall = y < 0 || !truemaze_open(m, truemaze_cell(m, x, (uint8_t)y), TRUEMAZE_NORTH);
         put(o, wall ? "o---" : "o   ");
     }
     put(o, "o\n");
 }
 
-static void format_cell_row(const maze_t *m, int r, int letters, out_t *o)
+static void format_cell_row(const truemaze_t *m, int r, int letters, out_t *o)
 {
     uint8_t y = (uint8_t)(m->height - 1 - r / 2);
     char line[MAX_COLS + 1];
     size_t k = 0;
     for (uint8_t x = 0; x < m->width; x++) {
-        maze_cell_t c = maze_cell(m, x, y);
-        line[k++] = maze_passable(m, c, MAZE_WEST, 0) ? ' ' : '|';
+        truemaze_cell_t c = truemaze_cell(m, x, y);
+        line[k++] = truemaze_open(m, c, TRUEMAZE_WEST) ? ' ' : '|';
         line[k++] = ' ';
-        line[k++] = c == m->start ? 'S' : (letters && maze_is_goal(m, c)) ? 'G' : ' ';
+        line[k++] = c == m->start ? 'S' : (letters && truemaze_is_goal(m, c)) ? 'G' : ' ';
         line[k++] = ' ';
     }
-    line[k++] = maze_passable(m, maze_cell(m, (uint8_t)(m->width - 1), y), MAZE_EAST, 0) ? ' ' : '|';
+    line[k++] = truemaze_open(m, truemaze_cell(m, (uint8_t)(m->width - 1), y), TRUEMAZE_EAST) ? ' ' : '|';
     while (k > 0 && line[k - 1] == ' ') k--; /* no trailing spaces */
     line[k] = '\0';
     put(o, line);
     put(o, "\n");
 }
 
-size_t mazefile_format(const maze_t *m, char *buf, size_t cap)
+size_t mazefile_format(const truemaze_t *m, char *buf, size_t cap)
 {
     out_t o = { buf, cap, 0 };
     if (valid_size(m)) {
@@ -656,17 +656,17 @@ size_t mazefile_format(const maze_t *m, char *buf, size_t cap)
 }
 
 /* mms's own writer (Maze::saveMaze) loops x outside, y inside. */
-size_t mazefile_format_mms(const maze_t *m, char *buf, size_t cap)
+size_t mazefile_format_mms(const truemaze_t *m, char *buf, size_t cap)
 {
     out_t o = { buf, cap, 0 };
     if (valid_size(m)) {
         for (uint8_t x = 0; x < m->width; x++)
             for (uint8_t y = 0; y < m->height; y++) {
-                maze_cell_t c = maze_cell(m, x, y);
+                truemaze_cell_t c = truemaze_cell(m, x, y);
                 char line[40];
-                snprintf(line, sizeof line, "%u %u %d %d %d %d\n", x, y, !maze_passable(m, c, MAZE_NORTH, 0),
-                         !maze_passable(m, c, MAZE_EAST, 0), !maze_passable(m, c, MAZE_SOUTH, 0),
-                         !maze_passable(m, c, MAZE_WEST, 0));
+                snprintf(line, sizeof line, "%u %u %d %d %d %d\n", x, y, !truemaze_open(m, c, TRUEMAZE_NORTH),
+                         !truemaze_open(m, c, TRUEMAZE_EAST), !truemaze_open(m, c, TRUEMAZE_SOUTH),
+                         !truemaze_open(m, c, TRUEMAZE_WEST));
                 put(&o, line);
             }
     }

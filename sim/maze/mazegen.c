@@ -28,34 +28,34 @@ static uint32_t rng_below(uint32_t *s, uint32_t n) { return rng_next(s) % n; }
 
 /* Closed wall segments touching post (px, py); px 0..w, py 0..h. A segment
  * outside the maze does not exist; boundary segments are closed. */
-static int post_walls(const maze_t *m, int px, int py)
+static int post_walls(const truemaze_t *m, int px, int py)
 {
     int n = 0, w = m->width, h = m->height;
-    if (px < w && py > 0 && py <= h) n += !maze_passable(m, maze_cell(m, (uint8_t)px, (uint8_t)(py - 1)), MAZE_NORTH, 0);
+    if (px < w && py > 0 && py <= h) n += !truemaze_open(m, truemaze_cell(m, (uint8_t)px, (uint8_t)(py - 1)), TRUEMAZE_NORTH);
     else if (px < w && py == 0) n++;
-    if (px > 0 && py > 0 && py <= h) n += !maze_passable(m, maze_cell(m, (uint8_t)(px - 1), (uint8_t)(py - 1)), MAZE_NORTH, 0);
+    if (px > 0 && py > 0 && py <= h) n += !truemaze_open(m, truemaze_cell(m, (uint8_t)(px - 1), (uint8_t)(py - 1)), TRUEMAZE_NORTH);
     else if (px > 0 && py == 0) n++;
-    if (py < h && px > 0 && px <= w) n += !maze_passable(m, maze_cell(m, (uint8_t)(px - 1), (uint8_t)py), MAZE_EAST, 0);
+    if (py < h && px > 0 && px <= w) n += !truemaze_open(m, truemaze_cell(m, (uint8_t)(px - 1), (uint8_t)py), TRUEMAZE_EAST);
     else if (py < h && px == 0) n++;
-    if (py > 0 && px > 0 && px <= w) n += !maze_passable(m, maze_cell(m, (uint8_t)(px - 1), (uint8_t)(py - 1)), MAZE_EAST, 0);
+    if (py > 0 && px > 0 && px <= w) n += !truemaze_open(m, truemaze_cell(m, (uint8_t)(px - 1), (uint8_t)(py - 1)), TRUEMAZE_EAST);
     else if (py > 0 && px == 0) n++;
     return n;
 }
 
 /* Is the wall on side d of c the goal's perimeter or the start's east? */
-static int protected_wall(const maze_t *m, maze_cell_t c, uint8_t d)
+static int protected_wall(const truemaze_t *m, truemaze_cell_t c, uint8_t d)
 {
-    maze_cell_t n;
-    if (!maze_neighbour(m, c, d, &n)) return 1;
-    if (maze_is_goal(m, c) != maze_is_goal(m, n)) return 1;
-    if ((c == m->start && d == MAZE_EAST) || (n == m->start && d == MAZE_WEST)) return 1;
+    truemaze_cell_t n;
+    if (!truemaze_neighbour(m, c, d, &n)) return 1;
+    if (truemaze_is_goal(m, c) != truemaze_is_goal(m, n)) return 1;
+    if ((c == m->start && d == TRUEMAZE_EAST) || (n == m->start && d == TRUEMAZE_WEST)) return 1;
     return 0;
 }
 
-static void carve(maze_t *m, uint32_t *rng)
+static void carve(truemaze_t *m, uint32_t *rng)
 {
-    static maze_cell_t stack[MAZE_MAX_CELLS];
-    static uint8_t seen[MAZE_MAX_CELLS];
+    static truemaze_cell_t stack[TRUEMAZE_MAX_CELLS];
+    static uint8_t seen[TRUEMAZE_MAX_CELLS];
     uint16_t top = 0;
     int goal_entered = 0;
 
@@ -63,12 +63,12 @@ static void carve(maze_t *m, uint32_t *rng)
     stack[top++] = m->start;
     seen[m->start] = 1;
     while (top) {
-        maze_cell_t c = stack[top - 1], n, options[4];
+        truemaze_cell_t c = stack[top - 1], n, options[4];
         uint8_t dirs[4], k = 0;
         for (uint8_t d = 0; d < 4; d++) {
-            if (!maze_neighbour(m, c, d, &n) || seen[n]) continue;
-            if (c == m->start && d == MAZE_EAST) continue;
-            if (maze_is_goal(m, n) && goal_entered) continue;
+            if (!truemaze_neighbour(m, c, d, &n) || seen[n]) continue;
+            if (c == m->start && d == TRUEMAZE_EAST) continue;
+            if (truemaze_is_goal(m, n) && goal_entered) continue;
             options[k] = n;
             dirs[k++] = d;
         }
@@ -77,12 +77,12 @@ static void carve(maze_t *m, uint32_t *rng)
             continue;
         }
         uint8_t j = (uint8_t)rng_below(rng, k);
-        maze_set_wall(m, c, dirs[j], MAZE_WALL_OPEN);
-        if (maze_is_goal(m, options[j])) {
+        truemaze_set_wall(m, c, dirs[j], 0);
+        if (truemaze_is_goal(m, options[j])) {
             /* the whole goal room is reached; the search does not go on from it */
             goal_entered = 1;
-            for (uint16_t g = 0; g < maze_cells(m); g++)
-                if (maze_is_goal(m, (maze_cell_t)g)) seen[g] = 1;
+            for (uint16_t g = 0; g < truemaze_cells(m); g++)
+                if (truemaze_is_goal(m, (truemaze_cell_t)g)) seen[g] = 1;
             continue;
         }
         seen[options[j]] = 1;
@@ -91,32 +91,32 @@ static void carve(maze_t *m, uint32_t *rng)
 }
 
 /* Returns the number of walls knocked out. */
-static uint16_t add_loops(maze_t *m, uint32_t *rng)
+static uint16_t add_loops(truemaze_t *m, uint32_t *rng)
 {
     uint16_t closed = 0;
-    for (uint16_t c = 0; c < maze_cells(m); c++)
-        for (uint8_t d = MAZE_NORTH; d <= MAZE_EAST; d++)
-            if (!protected_wall(m, (maze_cell_t)c, d) && !maze_passable(m, (maze_cell_t)c, d, 0)) closed++;
+    for (uint16_t c = 0; c < truemaze_cells(m); c++)
+        for (uint8_t d = TRUEMAZE_NORTH; d <= TRUEMAZE_EAST; d++)
+            if (!protected_wall(m, (truemaze_cell_t)c, d) && !truemaze_open(m, (truemaze_cell_t)c, d)) closed++;
     uint16_t want = closed / 14 ? closed / 14 : 1, done = 0;
     for (uint32_t tries = 0; done < want && tries < 100000u; tries++) {
-        maze_cell_t c = (maze_cell_t)rng_below(rng, maze_cells(m));
-        uint8_t d = (uint8_t)rng_below(rng, 2); /* MAZE_NORTH or MAZE_EAST */
-        if (protected_wall(m, c, d) || maze_passable(m, c, d, 0)) continue;
-        int x = maze_x(m, c), y = maze_y(m, c);
+        truemaze_cell_t c = (truemaze_cell_t)rng_below(rng, truemaze_cells(m));
+        uint8_t d = (uint8_t)rng_below(rng, 2); /* TRUEMAZE_NORTH or TRUEMAZE_EAST */
+        if (protected_wall(m, c, d) || truemaze_open(m, c, d)) continue;
+        int x = truemaze_x(m, c), y = truemaze_y(m, c);
         /* the two posts at the ends of this wall */
-        int ax = d == MAZE_NORTH ? x : x + 1, ay = y + 1;
-        int bx = x + 1, by = d == MAZE_NORTH ? y + 1 : y;
+        int ax = d == TRUEMAZE_NORTH ? x : x + 1, ay = y + 1;
+        int bx = x + 1, by = d == TRUEMAZE_NORTH ? y + 1 : y;
         if (post_walls(m, ax, ay) < 2 || post_walls(m, bx, by) < 2) continue;
-        maze_set_wall(m, c, d, MAZE_WALL_OPEN);
+        truemaze_set_wall(m, c, d, 0);
         done++;
     }
     return done;
 }
 
-int mazegen_generate(maze_t *m, uint8_t width, uint8_t height, uint32_t seed)
+int mazegen_generate(truemaze_t *m, uint8_t width, uint8_t height, uint32_t seed)
 {
     if (width < MAZEGEN_MIN_SIZE || height < MAZEGEN_MIN_SIZE || width > MAZEGEN_MAX_SIZE ||
-        height > MAZEGEN_MAX_SIZE || maze_init(m, width, height) != 0)
+        height > MAZEGEN_MAX_SIZE || truemaze_init(m, width, height) != 0)
         return -1;
     /* spread the seed so that seeds 1, 2, 3 start far apart; never 0 */
     uint32_t rng = seed * 2654435761u ^ 0x9E3779B9u;
@@ -127,13 +127,12 @@ int mazegen_generate(maze_t *m, uint8_t width, uint8_t height, uint32_t seed)
      * knocked out under the post rule: search again (same seed, the PRNG
      * moves on), so every maze has a loop. */
     for (int attempt = 0; attempt < 64; attempt++) {
-        maze_init(m, width, height);
-        maze_close_unknown(m);
-        for (uint16_t c = 0; c < maze_cells(m); c++)
-            for (uint8_t d = MAZE_NORTH; d <= MAZE_EAST; d++) {
-                maze_cell_t n;
-                if (maze_is_goal(m, (maze_cell_t)c) && maze_neighbour(m, (maze_cell_t)c, d, &n) && maze_is_goal(m, n))
-                    maze_set_wall(m, (maze_cell_t)c, d, MAZE_WALL_OPEN);
+        truemaze_init(m, width, height);
+        for (uint16_t c = 0; c < truemaze_cells(m); c++)
+            for (uint8_t d = TRUEMAZE_NORTH; d <= TRUEMAZE_EAST; d++) {
+                truemaze_cell_t n;
+                if (truemaze_is_goal(m, (truemaze_cell_t)c) && truemaze_neighbour(m, (truemaze_cell_t)c, d, &n) && truemaze_is_goal(m, n))
+                    truemaze_set_wall(m, (truemaze_cell_t)c, d, 0);
             }
         carve(m, &rng);
         if (add_loops(m, &rng) > 0) break;

@@ -12,13 +12,13 @@
 #define MAZEGEN_H
 
 #include <stdint.h>
-#include "maze.h"
+#include "truemaze.h"
 
 #define MAZEGEN_MIN_SIZE 4
 #define MAZEGEN_MAX_SIZE 32
 
 /* Returns 0, or -1 if a size is outside MAZEGEN_MIN_SIZE..MAZEGEN_MAX_SIZE
- * (or above MAZE_MAX_SIZE). */
-int mazegen_generate(maze_t *m, uint8_t width, uint8_t height, uint32_t seed);
+ * (or above TRUEMAZE_MAX_SIZE). */
+int mazegen_generate(truemaze_t *m, uint8_t width, uint8_t height, uint32_t seed);
 
 #endif

@@ -7,7 +7,7 @@
 
 #include <string.h>
 
-#define NCONF (MAZE_MAX_CELLS * 4)
+#define NCONF (TRUEMAZE_MAX_CELLS * 4)
 
 typedef struct {
     uint16_t cost[NCONF];
@@ -17,31 +17,31 @@ typedef struct {
 
 static solve_work_t work; /* host only: one solver at a time */
 
-static int forward(const maze_t *m, maze_cell_t c, uint8_t h, int unknown_open, maze_cell_t *n)
+static int forward(const truemaze_t *m, truemaze_cell_t c, uint8_t h, truemaze_cell_t *n)
 {
-    return maze_passable(m, c, h, unknown_open) && maze_neighbour(m, c, h, n);
+    return truemaze_open(m, c, h) && truemaze_neighbour(m, c, h, n);
 }
 
 /* cost-to-goal for every config; returns the number queued (BFS order). */
-static uint16_t flood_all(const maze_t *m, int unknown_open)
+static uint16_t flood_all(const truemaze_t *m)
 {
-    uint16_t n = (uint16_t)(maze_cells(m) * 4u), head = 0, tail = 0;
+    uint16_t n = (uint16_t)(truemaze_cells(m) * 4u), head = 0, tail = 0;
     for (uint16_t i = 0; i < n; i++) work.cost[i] = SOLVE_NONE;
-    for (uint16_t c = 0; c < maze_cells(m); c++)
-        if (maze_is_goal(m, (maze_cell_t)c))
+    for (uint16_t c = 0; c < truemaze_cells(m); c++)
+        if (truemaze_is_goal(m, (truemaze_cell_t)c))
             for (uint8_t h = 0; h < 4; h++) {
                 work.cost[c * 4 + h] = 0;
                 work.queue[tail++] = (uint16_t)(c * 4 + h);
             }
     while (head < tail) {
         uint16_t i = work.queue[head++];
-        maze_cell_t c = (maze_cell_t)(i / 4), b;
+        truemaze_cell_t c = (truemaze_cell_t)(i / 4), b;
         uint8_t h = (uint8_t)(i % 4);
         uint16_t p[3];
         uint8_t np = 0;
-        p[np++] = (uint16_t)(c * 4 + maze_turn(h, 1));
-        p[np++] = (uint16_t)(c * 4 + maze_turn(h, -1));
-        if (forward(m, c, maze_turn(h, 2), unknown_open, &b)) p[np++] = (uint16_t)(b * 4 + h);
+        p[np++] = (uint16_t)(c * 4 + truemaze_turn(h, 1));
+        p[np++] = (uint16_t)(c * 4 + truemaze_turn(h, -1));
+        if (forward(m, c, truemaze_turn(h, 2), &b)) p[np++] = (uint16_t)(b * 4 + h);
         for (uint8_t k = 0; k < np; k++)
             if (work.cost[p[k]] == SOLVE_NONE) {
                 work.cost[p[k]] = (uint16_t)(work.cost[i] + 1);
@@ -51,14 +51,14 @@ static uint16_t flood_all(const maze_t *m, int unknown_open)
     /* fewest cells among cost-optimal continuations, by increasing cost */
     for (uint16_t j = 0; j < tail; j++) {
         uint16_t i = work.queue[j];
-        maze_cell_t c = (maze_cell_t)(i / 4), nx;
+        truemaze_cell_t c = (truemaze_cell_t)(i / 4), nx;
         uint8_t h = (uint8_t)(i % 4);
         uint16_t best = SOLVE_NONE;
         if (work.cost[i] == 0) { work.cells[i] = 0; continue; }
-        if (forward(m, c, h, unknown_open, &nx) && work.cost[nx * 4 + h] + 1u == work.cost[i])
+        if (forward(m, c, h, &nx) && work.cost[nx * 4 + h] + 1u == work.cost[i])
             best = (uint16_t)(work.cells[nx * 4 + h] + 1);
         for (int8_t r = -1; r <= 1; r += 2) {
-            uint16_t q = (uint16_t)(c * 4 + maze_turn(h, r));
+            uint16_t q = (uint16_t)(c * 4 + truemaze_turn(h, r));
             if (work.cost[q] + 1u == work.cost[i] && work.cells[q] < best) best = work.cells[q];
         }
         work.cells[i] = best;
@@ -66,23 +66,23 @@ static uint16_t flood_all(const maze_t *m, int unknown_open)
     return tail;
 }
 
-uint16_t solve_cost_from(const maze_t *m, maze_cell_t cell, uint8_t heading, int unknown_open)
+uint16_t solve_cost_from(const truemaze_t *m, truemaze_cell_t cell, uint8_t heading)
 {
-    flood_all(m, unknown_open);
+    flood_all(m);
     return work.cost[cell * 4 + (heading & 3)];
 }
 
-static uint16_t min_cells(const maze_t *m, int unknown_open)
+static uint16_t min_cells(const truemaze_t *m)
 {
-    uint16_t n = maze_cells(m), head = 0, tail = 0;
+    uint16_t n = truemaze_cells(m), head = 0, tail = 0;
     for (uint16_t c = 0; c < n; c++) work.cost[c] = SOLVE_NONE;
     work.cost[m->start] = 0;
     work.queue[tail++] = m->start;
     while (head < tail) {
-        maze_cell_t c = (maze_cell_t)work.queue[head++], nx;
-        if (maze_is_goal(m, c)) return work.cost[c];
+        truemaze_cell_t c = (truemaze_cell_t)work.queue[head++], nx;
+        if (truemaze_is_goal(m, c)) return work.cost[c];
         for (uint8_t d = 0; d < 4; d++)
-            if (forward(m, c, d, unknown_open, &nx) && work.cost[nx] == SOLVE_NONE) {
+            if (forward(m, c, d, &nx) && work.cost[nx] == SOLVE_NONE) {
                 work.cost[nx] = (uint16_t)(work.cost[c] + 1);
                 work.queue[tail++] = nx;
             }
@@ -90,14 +90,14 @@ static uint16_t min_cells(const maze_t *m, int unknown_open)
     return SOLVE_NONE;
 }
 
-int solve_best(const maze_t *m, int unknown_open, solve_path_t *out)
+int solve_best(const truemaze_t *m, solve_path_t *out)
 {
-    maze_cell_t c = m->start;
+    truemaze_cell_t c = m->start;
     uint8_t h = m->start_heading;
 
     memset(out, 0, sizeof *out);
-    out->min_cells = min_cells(m, unknown_open);
-    flood_all(m, unknown_open);
+    out->min_cells = min_cells(m);
+    flood_all(m);
     out->cost = work.cost[c * 4 + h];
     if (out->cost == SOLVE_NONE) {
         out->cells = out->turns = SOLVE_NONE;
@@ -107,8 +107,8 @@ int solve_best(const maze_t *m, int unknown_open, solve_path_t *out)
     out->path[out->len++] = c;
     while (work.cost[c * 4 + h] != 0) {
         uint16_t i = (uint16_t)(c * 4 + h);
-        maze_cell_t nx;
-        if (forward(m, c, h, unknown_open, &nx) && work.cost[nx * 4 + h] + 1u == work.cost[i] &&
+        truemaze_cell_t nx;
+        if (forward(m, c, h, &nx) && work.cost[nx * 4 + h] + 1u == work.cost[i] &&
             work.cells[nx * 4 + h] + 1u == work.cells[i]) {
             c = nx;
             out->path[out->len++] = c;
@@ -118,14 +118,14 @@ int solve_best(const maze_t *m, int unknown_open, solve_path_t *out)
         /* turn: prefer the side that leads to a straight move soonest */
         int8_t pick = 0;
         for (int8_t r = 1; r >= -1; r -= 2) {
-            uint16_t q = (uint16_t)(c * 4 + maze_turn(h, r));
+            uint16_t q = (uint16_t)(c * 4 + truemaze_turn(h, r));
             if (work.cost[q] + 1u == work.cost[i] && work.cells[q] == work.cells[i]) {
                 pick = r;
                 break;
             }
         }
         if (pick == 0) break; /* cannot happen: the field is consistent */
-        h = maze_turn(h, pick);
+        h = truemaze_turn(h, pick);
         out->turns++;
     }
     return 0;

@@ -9,7 +9,7 @@
 #define SOLVE_H
 
 #include <stdint.h>
-#include "maze.h"
+#include "truemaze.h"
 
 #define SOLVE_NONE 0xFFFFu
 
@@ -20,15 +20,15 @@ typedef struct {
     uint16_t turns;      /* 90-degree turns on it (a 180 counts 2) */
     uint16_t min_cells;  /* fewest cell moves of any path */
     uint16_t len;        /* cells in path[], start and goal included */
-    maze_cell_t path[MAZE_MAX_CELLS + 1];
+    truemaze_cell_t path[TRUEMAZE_MAX_CELLS + 1];
 } solve_path_t;
 
-/* Solve on m; unknown walls count as open if unknown_open. Returns 0, or -1
- * if the goal is unreachable (out->reachable = 0). */
-int solve_best(const maze_t *m, int unknown_open, solve_path_t *out);
+/* Solve on m (a mouse's map: truebelief.h's truemaze_from_belief first).
+ * Returns 0, or -1 if the goal is unreachable (out->reachable = 0). */
+int solve_best(const truemaze_t *m, solve_path_t *out);
 
 /* Heading-aware cost of the best path from (cell, heading) to the goal on
  * m, or SOLVE_NONE. */
-uint16_t solve_cost_from(const maze_t *m, maze_cell_t cell, uint8_t heading, int unknown_open);
+uint16_t solve_cost_from(const truemaze_t *m, truemaze_cell_t cell, uint8_t heading);
 
 #endif

@@ -116,7 +116,7 @@ uint32_t mms_colour_rgb(char letter)
 
 /* ---- commands ---- */
 
-void mms_init(mms_t *m, const mms_opts_t *o, const maze_t *truth)
+void mms_init(mms_t *m, const mms_opts_t *o, const truemaze_t *truth)
 {
     memset(m, 0, sizeof *m);
     m->o = *o;
@@ -171,10 +171,10 @@ static int dir_of(const char *t)
 {
     if (strlen(t) != 1) return -1;
     switch (t[0]) {
-    case 'n': case 'N': return MAZE_NORTH;
-    case 'e': case 'E': return MAZE_EAST;
-    case 's': case 'S': return MAZE_SOUTH;
-    case 'w': case 'W': return MAZE_WEST;
+    case 'n': case 'N': return TRUEMAZE_NORTH;
+    case 'e': case 'E': return TRUEMAZE_EAST;
+    case 's': case 'S': return TRUEMAZE_SOUTH;
+    case 'w': case 'W': return TRUEMAZE_WEST;
     default: return -1;
     }
 }
@@ -188,9 +188,9 @@ static int in_maze(const mms_t *m, int x, int y)
  * map (unknown = no wall: mms assumes none until seen). */
 static int wall_at(const mms_t *m, int x, int y, uint8_t d)
 {
-    maze_cell_t c = maze_cell(m->truth, (uint8_t)x, (uint8_t)y);
-    if (m->o.ideal_walls) return !maze_passable(m->truth, c, d, 0);
-    return maze_wall(mouse_map(), c, d) == MAZE_WALL_CLOSED;
+    truemaze_cell_t c = truemaze_cell(m->truth, (uint8_t)x, (uint8_t)y);
+    if (m->o.ideal_walls) return !truemaze_open(m->truth, c, d);
+    return maze_wall(mouse_map(), (maze_cell_t)c, d) == MAZE_WALL_CLOSED;
 }
 
 /* Positions and directions as mms's SemiPosition/SemiDirection: a cell's
@@ -205,15 +205,15 @@ static void semi_pos(const mms_t *m, int *sx, int *sy)
     static const int dx[4] = { 0, 1, 0, -1 }, dy[4] = { 1, 0, -1, 0 };
     const mouse_status_t *st = mouse_status();
     uint8_t e = mouse_cmd_edge();
-    *sx = 2 * maze_x(m->truth, st->cell) + 1 + (e ? dx[e - 1] : 0);
-    *sy = 2 * maze_y(m->truth, st->cell) + 1 + (e ? dy[e - 1] : 0);
+    *sx = 2 * truemaze_x(m->truth, st->cell) + 1 + (e ? dx[e - 1] : 0);
+    *sy = 2 * truemaze_y(m->truth, st->cell) + 1 + (e ? dy[e - 1] : 0);
 }
 
 /* The cell mms counts a position in (toMazeLocation: x / 2, y / 2; on a
  * boundary that is the cell north or east of it). */
-static maze_cell_t semi_cell(const mms_t *m, int sx, int sy)
+static truemaze_cell_t semi_cell(const mms_t *m, int sx, int sy)
 {
-    return maze_cell(m->truth, (uint8_t)(sx / 2), (uint8_t)(sy / 2));
+    return truemaze_cell(m->truth, (uint8_t)(sx / 2), (uint8_t)(sy / 2));
 }
 
 /* mms's isWall(position, direction): from a centre, the cell's wall (a
@@ -231,19 +231,19 @@ static int semi_wall(const mms_t *m, int x, int y, int d8)
         switch (d8) {
         case S_N: case S_S: return 1;
         case S_E: case S_W: return 0;
-        case S_NE: return x == w2 ? 0 : wall_at(m, cx, cy, MAZE_NORTH);
-        case S_SE: return x == w2 ? 0 : wall_at(m, cx, cy, MAZE_SOUTH);
-        case S_NW: return x == 0 ? 0 : wall_at(m, cx - 1, cy, MAZE_NORTH);
-        default: return x == 0 ? 0 : wall_at(m, cx - 1, cy, MAZE_SOUTH);
+        case S_NE: return x == w2 ? 0 : wall_at(m, cx, cy, TRUEMAZE_NORTH);
+        case S_SE: return x == w2 ? 0 : wall_at(m, cx, cy, TRUEMAZE_SOUTH);
+        case S_NW: return x == 0 ? 0 : wall_at(m, cx - 1, cy, TRUEMAZE_NORTH);
+        default: return x == 0 ? 0 : wall_at(m, cx - 1, cy, TRUEMAZE_SOUTH);
         }
     }
     switch (d8) { /* on a boundary between south and north */
     case S_E: case S_W: return 1;
     case S_N: case S_S: return 0;
-    case S_NE: return y == h2 ? 0 : wall_at(m, cx, cy, MAZE_EAST);
-    case S_NW: return y == h2 ? 0 : wall_at(m, cx, cy, MAZE_WEST);
-    case S_SE: return y == 0 ? 0 : wall_at(m, cx, cy - 1, MAZE_EAST);
-    default: return y == 0 ? 0 : wall_at(m, cx, cy - 1, MAZE_WEST);
+    case S_NE: return y == h2 ? 0 : wall_at(m, cx, cy, TRUEMAZE_EAST);
+    case S_NW: return y == h2 ? 0 : wall_at(m, cx, cy, TRUEMAZE_WEST);
+    case S_SE: return y == 0 ? 0 : wall_at(m, cx, cy - 1, TRUEMAZE_EAST);
+    default: return y == 0 ? 0 : wall_at(m, cx, cy - 1, TRUEMAZE_WEST);
     }
 }
 
@@ -272,9 +272,9 @@ static int wall_query(const mms_t *m, int rel, int away)
 
 static void place_at_start(const mms_t *m, struct sim_state_s *s)
 {
-    const maze_t *t = m->truth;
+    const truemaze_t *t = m->truth;
     double cell = s->model->cfg->world.cell_m;
-    world_place(s->world, (maze_x(t, t->start) + 0.5) * cell, (maze_y(t, t->start) + 0.5) * cell,
+    world_place(s->world, (truemaze_x(t, t->start) + 0.5) * cell, (truemaze_y(t, t->start) + 0.5) * cell,
                 M_PI / 2 - t->start_heading * (M_PI / 2), NULL);
 }
 
@@ -352,7 +352,7 @@ static int set_text(mms_t *m, char *p)
     }
     int ok = 1, x = to_int(p, &ok), y = to_int(q, &ok);
     if (!ok || !in_maze(m, x, y)) return -1;
-    char *dst = m->text[maze_cell(m->truth, (uint8_t)x, (uint8_t)y)];
+    char *dst = m->text[truemaze_cell(m->truth, (uint8_t)x, (uint8_t)y)];
     size_t k = 0;
     for (const unsigned char *t = (const unsigned char *)text; *t && k < MMS_TEXT_MAX; k++) {
         dst[k] = *t >= 32 && *t < 127 ? (char)*t : '?';
@@ -368,10 +368,10 @@ static int cmd_draw_wall(const cmd_call_t *c)
     mms_t *m = c->m;
     int ok = 1, x = to_int(c->tok[1], &ok), y = to_int(c->tok[2], &ok), d = dir_of(c->tok[3]);
     if (!ok || d < 0 || !in_maze(m, x, y)) return -1;
-    maze_cell_t cell = maze_cell(m->truth, (uint8_t)x, (uint8_t)y), nb;
+    truemaze_cell_t cell = truemaze_cell(m->truth, (uint8_t)x, (uint8_t)y), nb;
     if (c->param) m->drawn_walls[cell] |= (uint8_t)(1u << d);
     else m->drawn_walls[cell] &= (uint8_t)~(1u << d);
-    if (maze_neighbour(m->truth, cell, (uint8_t)d, &nb)) {
+    if (truemaze_neighbour(m->truth, cell, (uint8_t)d, &nb)) {
         uint8_t bit = (uint8_t)(1u << ((d + 2) & 3));
         if (c->param) m->drawn_walls[nb] |= bit;
         else m->drawn_walls[nb] &= (uint8_t)~bit;
@@ -385,7 +385,7 @@ static int cmd_set_color(const cmd_call_t *c)
     char **tok = c->tok;
     int ok = 1, x = to_int(tok[1], &ok), y = to_int(tok[2], &ok);
     if (!ok || strlen(tok[3]) != 1 || !strchr("kbacgorwyBCAGRY", tok[3][0]) || !in_maze(c->m, x, y)) return -1;
-    c->m->color[maze_cell(c->m->truth, (uint8_t)x, (uint8_t)y)] = tok[3][0];
+    c->m->color[truemaze_cell(c->m->truth, (uint8_t)x, (uint8_t)y)] = tok[3][0];
     return 0;
 }
 
@@ -394,7 +394,7 @@ static int cmd_clear_cell(const cmd_call_t *c)
 {
     int ok = 1, x = to_int(c->tok[1], &ok), y = to_int(c->tok[2], &ok);
     if (!ok || !in_maze(c->m, x, y)) return -1;
-    maze_cell_t cell = maze_cell(c->m->truth, (uint8_t)x, (uint8_t)y);
+    truemaze_cell_t cell = truemaze_cell(c->m->truth, (uint8_t)x, (uint8_t)y);
     if (c->param == 0) c->m->color[cell] = 0;
     else c->m->text[cell][0] = '\0';
     return 0;
@@ -564,7 +564,7 @@ static int pipe_cloexec(int fd[2])
 
 static void set_nonblock(int fd) { fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK); }
 
-int mms_start(mms_t *m, const mms_opts_t *o, const maze_t *truth, char *err, size_t len)
+int mms_start(mms_t *m, const mms_opts_t *o, const truemaze_t *truth, char *err, size_t len)
 {
     int p[3][2], n = 0; /* the algorithm's stdin, stdout, stderr */
     mms_init(m, o, truth);
@@ -785,8 +785,8 @@ static int move_done(mms_t *m, struct sim_state_s *s)
         mms_stats_distance(&m->stats, mouse_cmd_moved());
         int x, y;
         semi_pos(m, &x, &y);
-        maze_cell_t c = semi_cell(m, x, y);
-        if (maze_is_goal(m->truth, c)) mms_stats_finish_run(&m->stats);
+        truemaze_cell_t c = semi_cell(m, x, y);
+        if (truemaze_is_goal(m->truth, c)) mms_stats_finish_run(&m->stats);
         else if (c == m->truth->start) mms_stats_end_unfinished(&m->stats);
         m->moves++;
         m->since_move = m->idle_polls = 0;
@@ -896,9 +896,9 @@ void *mms_json(const mms_t *m)
                           "invalid_commands", (json_int_t)m->invalid, "moves", (json_int_t)m->moves, "crashes",
                           (json_int_t)m->crashes, "resets", (json_int_t)m->resets, "stats", st);
     json_t *colors = json_object(), *texts = json_object();
-    for (uint16_t c = 0; c < maze_cells(m->truth); c++) {
+    for (uint16_t c = 0; c < truemaze_cells(m->truth); c++) {
         char key[16];
-        snprintf(key, sizeof key, "%u,%u", maze_x(m->truth, c), maze_y(m->truth, c));
+        snprintf(key, sizeof key, "%u,%u", truemaze_x(m->truth, c), truemaze_y(m->truth, c));
         if (m->color[c]) json_object_set_new(colors, key, json_stringn(&m->color[c], 1));
         if (m->text[c][0]) json_object_set_new(texts, key, json_string(m->text[c]));
     }

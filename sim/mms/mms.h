@@ -35,7 +35,7 @@
 #include <stdio.h>
 #include <sys/types.h>
 
-#include "maze.h"
+#include "maze/truemaze.h"
 #include "guard.h"
 #include "io/escape.h"
 
@@ -94,7 +94,7 @@ typedef struct {
 
 typedef struct mms_s {
     mms_opts_t o;
-    const maze_t *truth;
+    const truemaze_t *truth;
     guard_t guard;         /* the algorithm's process tree (guard.h) */
     int exited;            /* the shell has exited: status below */
     int to_child, from_child;
@@ -116,9 +116,9 @@ typedef struct mms_s {
     int idle;              /* it idles and no Reset is coming: the run ends (mms_idle) */
     mms_stats_t stats;
     /* what the algorithm drew: colour letter (0 = none), text, walls it set */
-    char color[MAZE_MAX_CELLS];
-    char text[MAZE_MAX_CELLS][MMS_TEXT_MAX + 1];
-    uint8_t drawn_walls[MAZE_MAX_CELLS]; /* bit d = setWall on side d */
+    char color[TRUEMAZE_MAX_CELLS];
+    char text[TRUEMAZE_MAX_CELLS][MMS_TEXT_MAX + 1];
+    uint8_t drawn_walls[TRUEMAZE_MAX_CELLS]; /* bit d = setWall on side d */
 } mms_t;
 
 /* RGB (0xRRGGBB) of an mms colour letter (kbacgorwyBCAGRY: Qt's named
@@ -126,10 +126,10 @@ typedef struct mms_s {
 uint32_t mms_colour_rgb(char letter);
 
 /* Set up the state without a child (mms_start does it; unit tests). */
-void mms_init(mms_t *m, const mms_opts_t *o, const maze_t *truth);
+void mms_init(mms_t *m, const mms_opts_t *o, const truemaze_t *truth);
 /* Start the algorithm; the firmware must be set up (fw_setup) first. 0, or
  * -1 with one line in err. */
-int mms_start(mms_t *m, const mms_opts_t *o, const maze_t *truth, char *err, size_t len);
+int mms_start(mms_t *m, const mms_opts_t *o, const truemaze_t *truth, char *err, size_t len);
 /* Serve commands until a move needs the simulation to step (MMS_STEP: step
  * once, fw_tick, fw_loop, call again) or the run is over (MMS_END: m->reason,
  * m->message). s is the running simulation (struct sim_state_s). */

@@ -24,6 +24,7 @@
 #include "mmlcm_watch_t.h"
 #include "mmlcm_sensors_t.h"
 #include "maze/solve.h"
+#include "maze/truebelief.h"
 #include "world/sensors/sensor.h"
 
 #define NONE UINT64_MAX
@@ -109,14 +110,14 @@ static int publish_live(telem_t *t, const char *channel, int len)
 /* The true maze, the seed and the config, once at the start. */
 static void pub_maze(telem_t *t, const sim_state_t *s, const char *path)
 {
-    static int8_t walls[MAZE_MAX_CELLS];
-    static int16_t goals[MAZE_MAX_CELLS];
-    const maze_t *m = s->maze;
-    uint16_t n = maze_cells(m);
+    static int8_t walls[TRUEMAZE_MAX_CELLS];
+    static int16_t goals[TRUEMAZE_MAX_CELLS];
+    const truemaze_t *m = s->maze;
+    uint16_t n = truemaze_cells(m);
     int16_t ng = 0;
     for (uint16_t c = 0; c < n; c++) {
-        walls[c] = (int8_t)m->cell[c];
-        if (maze_is_goal(m, (maze_cell_t)c)) goals[ng++] = (int16_t)c;
+        walls[c] = (int8_t)(m->cell[c] | 0xF0); /* MM_MAZE's byte: bit d wall, bit 4+d known (all, the truth) */
+        if (truemaze_is_goal(m, (truemaze_cell_t)c)) goals[ng++] = (int16_t)c;
     }
     char *ini = NULL;
     size_t len = 0;
@@ -434,22 +435,22 @@ static void pub_events(telem_t *t, const sim_state_t *s)
     pub_contacts(t, s);
 }
 
-void telem_cost_field(const maze_t *m, int16_t *cost)
+void telem_cost_field(const truemaze_t *m, int16_t *cost)
 {
-    static maze_cell_t queue[MAZE_MAX_CELLS];
-    uint16_t n = maze_cells(m), head = 0, tail = 0;
+    static truemaze_cell_t queue[TRUEMAZE_MAX_CELLS];
+    uint16_t n = truemaze_cells(m), head = 0, tail = 0;
     for (uint16_t c = 0; c < n; c++) {
         cost[c] = -1;
-        if (maze_is_goal(m, (maze_cell_t)c)) {
+        if (truemaze_is_goal(m, (truemaze_cell_t)c)) {
             cost[c] = 0;
-            queue[tail++] = (maze_cell_t)c;
+            queue[tail++] = (truemaze_cell_t)c;
         }
     }
     while (head < tail) {
-        maze_cell_t c = queue[head++];
+        truemaze_cell_t c = queue[head++];
         for (uint8_t d = 0; d < 4; d++) {
-            maze_cell_t nb;
-            if (maze_wall(m, c, d) == MAZE_WALL_CLOSED || !maze_neighbour(m, c, d, &nb) || cost[nb] >= 0) continue;
+            truemaze_cell_t nb;
+            if (truemaze_wall(m, c, d) || !truemaze_neighbour(m, c, d, &nb) || cost[nb] >= 0) continue;
             cost[nb] = (int16_t)(cost[c] + 1);
             queue[tail++] = nb;
         }
@@ -458,18 +459,18 @@ void telem_cost_field(const maze_t *m, int16_t *cost)
 
 static void pub_belief(telem_t *t, const sim_belief_t *b)
 {
-    static int8_t walls[MAZE_MAX_CELLS];
-    static int16_t cost[MAZE_MAX_CELLS], path[MAZE_MAX_CELLS + 1];
+    static int8_t walls[TRUEMAZE_MAX_CELLS];
+    static int16_t cost[TRUEMAZE_MAX_CELLS], path[TRUEMAZE_MAX_CELLS + 1];
     static solve_path_t best;
-    static maze_t from_here;
+    static truemaze_t from_here;
     uint16_t n = maze_cells(&b->map);
     for (uint16_t c = 0; c < n; c++) walls[c] = (int8_t)b->map.cell[c];
-    telem_cost_field(&b->map, cost);
-    from_here = b->map;
-    from_here.start = (maze_cell_t)b->cell;
+    truemaze_from_belief(&from_here, &b->map, 1); /* unknown walls open: the mouse's optimistic view */
+    telem_cost_field(&from_here, cost);
+    from_here.start = (truemaze_cell_t)b->cell;
     from_here.start_heading = b->heading;
     int16_t len = 0;
-    if (b->cell < n && solve_best(&from_here, 1, &best) == 0)
+    if (b->cell < n && solve_best(&from_here, &best) == 0)
         for (uint16_t i = 0; i < best.len; i++) path[len++] = (int16_t)best.path[i];
 
     mmlcm_belief_t m;

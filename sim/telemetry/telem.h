@@ -120,9 +120,9 @@ void telem_finish(telem_t *t, const sim_state_t *s, const sim_belief_t *b);
  * older log at the path stays) or a tcpq hub was lost during the run. */
 int telem_close(telem_t *t, char *err, size_t errlen);
 
-/* Classic flood on map m: cell distances to the goal cells through walls
- * not known closed (unknown counts open); -1 = unreachable. cost has
- * maze_cells(m) entries. */
-void telem_cost_field(const maze_t *m, int16_t *cost);
+/* Classic flood on m (a mouse's map as truebelief.h's truemaze_from_belief
+ * gives it, unknown walls open): cell distances to the goal cells through
+ * open sides; -1 = unreachable. cost has truemaze_cells(m) entries. */
+void telem_cost_field(const truemaze_t *m, int16_t *cost);
 
 #endif

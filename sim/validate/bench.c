@@ -10,29 +10,27 @@
 #include "world/sensors/ir.h"
 #include "world/sensors/sensor.h"
 
-bench_t bench; /* one at a time; maze_t and sim_state_t are large */
+bench_t bench; /* one at a time; truemaze_t and sim_state_t are large */
 
-void bench_field(maze_t *m, uint8_t w, uint8_t h, uint8_t sx)
+void bench_field(truemaze_t *m, uint8_t w, uint8_t h, uint8_t sx)
 {
-    maze_init(m, w, h);
-    maze_close_unknown(m);
+    truemaze_init(m, w, h);
     for (uint8_t y = 0; y < h; y++)
         for (uint8_t x = 0; x < w; x++) {
-            maze_cell_t c = maze_cell(m, x, y);
-            if (x + 1 < w) maze_set_wall(m, c, MAZE_EAST, MAZE_WALL_OPEN);
-            if (y + 1 < h) maze_set_wall(m, c, MAZE_NORTH, MAZE_WALL_OPEN);
+            truemaze_cell_t c = truemaze_cell(m, x, y);
+            if (x + 1 < w) truemaze_set_wall(m, c, TRUEMAZE_EAST, 0);
+            if (y + 1 < h) truemaze_set_wall(m, c, TRUEMAZE_NORTH, 0);
         }
-    m->start = maze_cell(m, sx, 0);
-    m->start_heading = MAZE_NORTH;
+    m->start = truemaze_cell(m, sx, 0);
+    m->start_heading = TRUEMAZE_NORTH;
 }
 
-void bench_corridor(maze_t *m, uint8_t n)
+void bench_corridor(truemaze_t *m, uint8_t n)
 {
-    maze_init(m, n, 1);
-    maze_close_unknown(m);
-    for (uint8_t x = 0; x + 1 < n; x++) maze_set_wall(m, maze_cell(m, x, 0), MAZE_EAST, MAZE_WALL_OPEN);
-    m->start = maze_cell(m, 0, 0);
-    m->start_heading = MAZE_EAST;
+    truemaze_init(m, n, 1);
+    for (uint8_t x = 0; x + 1 < n; x++) truemaze_set_wall(m, truemaze_cell(m, x, 0), TRUEMAZE_EAST, 0);
+    m->start = truemaze_cell(m, 0, 0);
+    m->start_heading = TRUEMAZE_EAST;
 }
 
 int bench_init(const simcfg_t *c)

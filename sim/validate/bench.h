@@ -5,21 +5,22 @@
 #define VALIDATE_BENCH_H
 
 #include "validate.h"
+#include "maze/truemaze.h"
 #include "world/sim.h"
 
 typedef struct {
-    maze_t maze;
+    truemaze_t maze;
     sim_model_t model;
     sim_state_t sim;
 } bench_t;
 
-extern bench_t bench; /* one at a time; maze_t and sim_state_t are large */
+extern bench_t bench; /* one at a time; truemaze_t and sim_state_t are large */
 
 /* An open field w x h cells (outer walls only), the robot in cell (sx, 0)
  * facing north. */
-void bench_field(maze_t *m, uint8_t w, uint8_t h, uint8_t sx);
+void bench_field(truemaze_t *m, uint8_t w, uint8_t h, uint8_t sx);
 /* A corridor of n cells running east, the robot in its first facing east. */
-void bench_corridor(maze_t *m, uint8_t n);
+void bench_corridor(truemaze_t *m, uint8_t n);
 /* bench.sim made for config c on bench.maze (the model built with seed 1
  * into bench.model): 0, or -1 if ODE could not be set up. */
 int bench_init(const simcfg_t *c);

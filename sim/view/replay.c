@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "maze/truebelief.h"
 #include "telemetry/lcmlog.h"
 #include "mmlcm_belief_t.h"
 #include "mmlcm_maze_t.h"
@@ -43,18 +44,18 @@ static int take_maze(load_t *l, const mmlcm_maze_t *m)
     replay_t *r = l->r;
     int w = (uint8_t)m->width, h = (uint8_t)m->height;
     if (r->have_maze) return 0; /* the first one counts */
-    if (w < 1 || h < 1 || w > MAZE_MAX_W || h > MAZE_MAX_H || m->ncells != w * h)
+    if (w < 1 || h < 1 || w > TRUEMAZE_MAX_SIZE || h > TRUEMAZE_MAX_SIZE || m->ncells != w * h)
         return fail(l, "maze size out of range", "MM_MAZE");
     if (m->start < 0 || m->start >= m->ncells || m->start_heading < 0 || m->start_heading > 3 || m->ngoals < 1)
         return fail(l, "bad start cell, heading or goals", "MM_MAZE");
-    maze_init(&r->maze, (uint8_t)w, (uint8_t)h);
-    for (int c = 0; c < m->ncells; c++) r->maze.cell[c] = (uint8_t)m->walls[c] | 0xF0; /* every wall known */
-    maze_clear_goals(&r->maze);
+    truemaze_init(&r->maze, (uint8_t)w, (uint8_t)h);
+    for (int c = 0; c < m->ncells; c++) r->maze.cell[c] = (uint8_t)m->walls[c] & 0x0F; /* bit d: wall on side d */
+    truemaze_clear_goals(&r->maze);
     for (int i = 0; i < m->ngoals; i++) {
         if (m->goals[i] < 0 || m->goals[i] >= m->ncells) return fail(l, "goal cell out of the maze", "MM_MAZE");
-        maze_set_goal(&r->maze, (maze_cell_t)m->goals[i], 1);
+        truemaze_set_goal(&r->maze, (truemaze_cell_t)m->goals[i], 1);
     }
-    r->maze.start = (maze_cell_t)m->start;
+    r->maze.start = (truemaze_cell_t)m->start;
     r->maze.start_heading = (uint8_t)m->start_heading;
     snprintf(r->path, sizeof r->path, "%s", m->path);
     config_defaults(&r->cfg);
@@ -261,9 +262,9 @@ void replay_snap(const replay_t *r, double t_s, snap_t *out)
         out->v_m_s = r->pose[i].v_m_s;
     } else { /* before the first pose: at the start cell's centre */
         static const double a[4] = { M_PI / 2, 0.0, -M_PI / 2, M_PI };
-        const maze_t *m = &r->maze;
-        snap_place(out, &r->model, m, r->centre_post, (maze_x(m, m->start) + 0.5) * c->world.cell_m,
-                   (maze_y(m, m->start) + 0.5) * c->world.cell_m, a[m->start_heading & 3], wheel);
+        const truemaze_t *m = &r->maze;
+        snap_place(out, &r->model, m, r->centre_post, (truemaze_x(m, m->start) + 0.5) * c->world.cell_m,
+                   (truemaze_y(m, m->start) + 0.5) * c->world.cell_m, a[m->start_heading & 3], wheel);
     }
     for (int k = 0; k < out->ntof; k++) out->tof[k].hit_m = j >= 0 ? r->sensors[j].tof_true_m[k] : -1;
     long e = LAST_AT(r->parts, r->nparts, t_us);
@@ -281,8 +282,8 @@ void replay_belief(replay_t *r, double t_s, scene_belief_t *b)
     b->heading = 0;
     b->state = -1;
     if (k < 0) return;
-    size_t cells = maze_cells(&r->maze);
-    r->bmap = r->maze; /* size, start and goals of the truth; the walls the mouse knew */
+    size_t cells = truemaze_cells(&r->maze);
+    truemaze_to_belief(&r->maze, &r->bmap); /* size, start and goals of the truth; the walls the mouse knew */
     memcpy(r->bmap.cell, r->belief_walls + (size_t)k * cells, cells);
     b->map = &r->bmap;
     b->cell = (uint16_t)r->belief[k].cell;

@@ -42,7 +42,7 @@ typedef struct {
 
 typedef struct {
     char path[1024];          /* the maze file named in the log */
-    maze_t maze;              /* the true maze */
+    truemaze_t maze;          /* the true maze */
     simcfg_t cfg;             /* the run's config */
     uint64_t seed;
     sim_model_t model;        /* the run's model: cfg with the seed's variation (points to cfg: r stays put) */

@@ -21,15 +21,15 @@ typedef struct {
 } sample_t;
 
 struct report {
-    const maze_t *maze;
+    const truemaze_t *maze;
     double cell_m;
     uint64_t every; /* physics steps per sample */
     sample_t *s;
     size_t n, cap;
     double vmax;    /* highest |speed| seen, m/s */
-    uint8_t visited[MAZE_MAX_CELLS];
-    char colour[MAZE_MAX_CELLS]; /* report_set_cells: mms colour letters */
-    char text[MAZE_MAX_CELLS][12];
+    uint8_t visited[TRUEMAZE_MAX_CELLS];
+    char colour[TRUEMAZE_MAX_CELLS]; /* report_set_cells: mms colour letters */
+    char text[TRUEMAZE_MAX_CELLS][12];
     int watch_n;                      /* report_watch: variables (0 none) */
     const char *const *watch_names;
     double watch_now[REPORT_WATCH_MAX]; /* their latest values */
@@ -66,7 +66,7 @@ void report_free(report_t *r)
 
 void report_set_cells(report_t *r, const char *colours, const char *texts, size_t text_stride)
 {
-    for (uint16_t k = 0; k < maze_cells(r->maze); k++) {
+    for (uint16_t k = 0; k < truemaze_cells(r->maze); k++) {
         r->colour[k] = colours[k];
         snprintf(r->text[k], sizeof r->text[k], "%s", texts + k * text_stride);
     }
@@ -118,7 +118,7 @@ void report_step(report_t *r, const sim_state_t *s)
     if (fabs(v) > r->vmax) r->vmax = fabs(v);
     double fx = floor(x / r->cell_m), fy = floor(y / r->cell_m);
     if (fx >= 0 && fy >= 0 && fx < r->maze->width && fy < r->maze->height)
-        r->visited[maze_cell(r->maze, (uint8_t)fx, (uint8_t)fy)] = 1;
+        r->visited[truemaze_cell(r->maze, (uint8_t)fx, (uint8_t)fy)] = 1;
 }
 
 void report_sibling(const char *png_path, const char *ext, char *out, size_t len)
@@ -260,12 +260,12 @@ static double px_y(const layout_t *L, double cells) { return L->oy - cells * L->
  * run's path (NULL: the run has none). */
 static void draw_cells(canvas_t *c, const layout_t *L, const report_t *r, const solve_path_t *path)
 {
-    const maze_t *m = r->maze;
+    const truemaze_t *m = r->maze;
     double cp = L->cp;
     for (uint8_t y = 0; y < m->height; y++)
         for (uint8_t x = 0; x < m->width; x++) {
-            maze_cell_t k = maze_cell(m, x, y);
-            uint32_t col = k == m->start ? C_START : maze_is_goal(m, k) ? C_GOAL : r->visited[k] ? C_VISITED : C_CELL;
+            truemaze_cell_t k = truemaze_cell(m, x, y);
+            uint32_t col = k == m->start ? C_START : truemaze_is_goal(m, k) ? C_GOAL : r->visited[k] ? C_VISITED : C_CELL;
             if (r->colour[k]) col = mms_colour_rgb(r->colour[k]);
             c_rect(c, px_x(L, x), px_y(L, y + 1), px_x(L, x + 1), px_y(L, y), col);
         }
@@ -273,9 +273,9 @@ static void draw_cells(canvas_t *c, const layout_t *L, const report_t *r, const 
     /* final run path (NULL: the run has none) */
     if (path)
         for (int i = 0; i + 1 < path->len; i++) {
-            maze_cell_t a = path->path[i], b = path->path[i + 1];
-            c_line(c, px_x(L, maze_x(m, a) + 0.5), px_y(L, maze_y(m, a) + 0.5), px_x(L, maze_x(m, b) + 0.5),
-                   px_y(L, maze_y(m, b) + 0.5), cp * 0.4, C_PATH);
+            truemaze_cell_t a = path->path[i], b = path->path[i + 1];
+            c_line(c, px_x(L, truemaze_x(m, a) + 0.5), px_y(L, truemaze_y(m, a) + 0.5), px_x(L, truemaze_x(m, b) + 0.5),
+                   px_y(L, truemaze_y(m, b) + 0.5), cp * 0.4, C_PATH);
         }
 }
 
@@ -284,16 +284,16 @@ static void draw_cells(canvas_t *c, const layout_t *L, const report_t *r, const 
  * the posts. */
 static void draw_walls(canvas_t *c, const layout_t *L, const report_t *r, const maze_t *learned)
 {
-    const maze_t *m = r->maze;
+    const truemaze_t *m = r->maze;
     double cp = L->cp;
     double wall_px = fmax(2.0, cp * 0.08);
     for (uint8_t y = 0; y < m->height; y++)
         for (uint8_t x = 0; x < m->width; x++) {
-            maze_cell_t k = maze_cell(m, x, y);
+            truemaze_cell_t k = truemaze_cell(m, x, y);
             for (uint8_t d = 0; d < 4; d++) {
-                if ((d == MAZE_NORTH && y != m->height - 1) || (d == MAZE_EAST && x != m->width - 1)) continue;
-                int truth = maze_wall(m, k, d) == MAZE_WALL_CLOSED;
-                uint8_t known = learned ? maze_wall(learned, k, d) : MAZE_WALL_UNKNOWN;
+                if ((d == TRUEMAZE_NORTH && y != m->height - 1) || (d == TRUEMAZE_EAST && x != m->width - 1)) continue;
+                int truth = truemaze_wall(m, k, d);
+                uint8_t known = learned ? maze_wall(learned, (maze_cell_t)k, d) : MAZE_WALL_UNKNOWN;
                 uint32_t col;
                 if (known == MAZE_WALL_UNKNOWN) {
                     if (!truth) continue;
@@ -306,22 +306,22 @@ static void draw_walls(canvas_t *c, const layout_t *L, const report_t *r, const 
                     continue; /* known open, truly open */
                 }
                 double x0 = x, y0 = y, x1 = x, y1 = y;
-                if (d == MAZE_SOUTH) x1 = x + 1;
-                if (d == MAZE_NORTH) y0 = y1 = y + 1, x1 = x + 1;
-                if (d == MAZE_WEST) y1 = y + 1;
-                if (d == MAZE_EAST) x0 = x1 = x + 1, y1 = y + 1;
+                if (d == TRUEMAZE_SOUTH) x1 = x + 1;
+                if (d == TRUEMAZE_NORTH) y0 = y1 = y + 1, x1 = x + 1;
+                if (d == TRUEMAZE_WEST) y1 = y + 1;
+                if (d == TRUEMAZE_EAST) x0 = x1 = x + 1, y1 = y + 1;
                 c_line(c, px_x(L, x0), px_y(L, y0), px_x(L, x1), px_y(L, y1), wall_px, col);
             }
         }
     /* the algorithm's cell texts (mms setText), as much as fits */
-    for (uint16_t k = 0; k < maze_cells(m); k++) {
+    for (uint16_t k = 0; k < truemaze_cells(m); k++) {
         char t[12];
         int fit = (int)((cp - wall_px - 2) / (FONT_W + 1));
         if (!r->text[k][0] || fit < 1) continue;
         snprintf(t, sizeof t, "%.*s", fit < 11 ? fit : 11, r->text[k]);
         uint32_t bg = r->colour[k] ? mms_colour_rgb(r->colour[k]) : C_CELL;
         int dark = ((bg >> 16) & 255) + ((bg >> 8) & 255) + (bg & 255) < 300;
-        c_text_at(c, px_x(L, maze_x(m, k)) + wall_px / 2 + 1, px_y(L, maze_y(m, k) + 1) + wall_px / 2 + 1, 1,
+        c_text_at(c, px_x(L, truemaze_x(m, k)) + wall_px / 2 + 1, px_y(L, truemaze_y(m, k) + 1) + wall_px / 2 + 1, 1,
                   dark ? 0xFFFFFFu : C_TEXT, t);
     }
     for (int y = 0; y <= m->height; y++)
@@ -457,7 +457,7 @@ static void draw(canvas_t *c, const layout_t *L, const report_t *r, const sim_st
 
 static int layout_make(layout_t *L, const report_t *r, const sim_state_t *s, const char *title)
 {
-    const maze_t *m = r->maze;
+    const truemaze_t *m = r->maze;
     int side = m->width > m->height ? m->width : m->height;
     L->cp = floor(640.0 / side);
     if (L->cp < 16) L->cp = 16;
@@ -520,7 +520,7 @@ static int write_json(const report_t *r, const sim_state_t *s, const solve_path_
                                               "end_s", rc->laps[i].end_s, "run_s",
                                               rc->laps[i].end_s - rc->laps[i].start_s, "over_time", rc->laps[i].over_time));
     int visited = 0;
-    for (uint16_t k = 0; k < maze_cells(r->maze); k++) visited += r->visited[k];
+    for (uint16_t k = 0; k < truemaze_cells(r->maze); k++) visited += r->visited[k];
     json_t *j = json_pack("{s:s, s:f, s:o, s:i, s:f, s:s, s:s, s:i}", "title", title, "sim_time_s", sim_time_s(s),
                           "laps", laps, "visited_cells", visited, "top_speed_m_s", r->vmax, "png", png, "svg", svg,
                           "trajectory_samples", (int)r->n);
@@ -591,11 +591,11 @@ static int write_four(outfile_t *o, const report_t *r, const sim_state_t *s, con
     return rc;
 }
 
-int report_write(const report_t *r, const sim_state_t *s, const maze_t *learned, const maze_t *path_on, const char *png_path,
+int report_write(const report_t *r, const sim_state_t *s, const maze_t *learned, const truemaze_t *path_on, const char *png_path,
                  const char *title, char *err, size_t errlen)
 {
     static solve_path_t best;
-    const solve_path_t *path = path_on && solve_best(path_on, 0, &best) == 0 ? &best : NULL;
+    const solve_path_t *path = path_on && solve_best(path_on, &best) == 0 ? &best : NULL;
     char paths[REPORT_FILES][4096];
     outfile_t o[REPORT_FILES];
     int n = 0;

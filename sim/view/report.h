@@ -12,6 +12,7 @@
 
 #include <stddef.h>
 
+#include "maze.h"
 #include "world/sim.h"
 
 #define REPORT_SAMPLE_S 0.005 /* trajectory sample period, s of sim time */
@@ -48,7 +49,7 @@ void report_set_cells(report_t *r, const char *colours, const char *texts, size_
  * JSON's final_path_cells is null). title is one line of text (maze, seed,
  * driver). Returns 0, or -1 with one line in err; nothing is left half
  * written. */
-int report_write(const report_t *r, const sim_state_t *s, const maze_t *learned, const maze_t *path_on, const char *png_path,
+int report_write(const report_t *r, const sim_state_t *s, const maze_t *learned, const truemaze_t *path_on, const char *png_path,
                  const char *title, char *err, size_t errlen);
 
 /* The .svg / .json / -plots.png path beside png_path, into out. */

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "maze/solve.h"
+#include "maze/truebelief.h"
 #include "world/sensors/ir.h"
 
 #define FOV_DEG 45.0  /* vertical field of view */
@@ -19,7 +20,7 @@ static void colour(uint32_t rgb, float a)
     glColor4f((float)((rgb >> 16) & 255) / 255.f, (float)((rgb >> 8) & 255) / 255.f, (float)(rgb & 255) / 255.f, a);
 }
 
-void scene_camera(const sim_model_t *model, const maze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
+void scene_camera(const sim_model_t *model, const truemaze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
                   double eye[3], double target[3], double up[3])
 {
     const simcfg_t *c = model->cfg;
@@ -126,17 +127,17 @@ static void wheel(double r, double w, double angle)
     }
 }
 
-static void floor_and_cells(const simcfg_t *c, const maze_t *m)
+static void floor_and_cells(const simcfg_t *c, const truemaze_t *m)
 {
     double cell = c->world.cell_m, W = m->width * cell, H = m->height * cell, pad = cell;
     glNormal3d(0, 0, 1);
     glBegin(GL_QUADS);
     colour(SCENE_FLOOR, 1);
     glVertex3d(-pad, -pad, 0), glVertex3d(W + pad, -pad, 0), glVertex3d(W + pad, H + pad, 0), glVertex3d(-pad, H + pad, 0);
-    for (uint16_t k = 0; k < maze_cells(m); k++) {
-        int start = k == m->start, goal = maze_is_goal(m, (maze_cell_t)k);
+    for (uint16_t k = 0; k < truemaze_cells(m); k++) {
+        int start = k == m->start, goal = truemaze_is_goal(m, (truemaze_cell_t)k);
         if (!start && !goal) continue;
-        double x0 = maze_x(m, (maze_cell_t)k) * cell + 0.012, y0 = maze_y(m, (maze_cell_t)k) * cell + 0.012,
+        double x0 = truemaze_x(m, (truemaze_cell_t)k) * cell + 0.012, y0 = truemaze_y(m, (truemaze_cell_t)k) * cell + 0.012,
                x1 = x0 + cell - 0.024, y1 = y0 + cell - 0.024, z = 0.0005;
         colour(start ? SCENE_START : SCENE_GOAL, 1);
         glVertex3d(x0, y0, z), glVertex3d(x1, y0, z), glVertex3d(x1, y1, z), glVertex3d(x0, y1, z);
@@ -144,7 +145,7 @@ static void floor_and_cells(const simcfg_t *c, const maze_t *m)
     glEnd();
 }
 
-static void walls(const simcfg_t *c, const maze_t *m, int centre_post)
+static void walls(const simcfg_t *c, const truemaze_t *m, int centre_post)
 {
     double cell = c->world.cell_m, post = c->world.post_m, th = c->world.wall_thick_m, hh = c->world.wall_height_m;
     int cx = m->width % 2 == 0 ? m->width / 2 : -1, cy = m->height % 2 == 0 ? m->height / 2 : -1;
@@ -154,14 +155,14 @@ static void walls(const simcfg_t *c, const maze_t *m, int centre_post)
                 box(px * cell, py * cell, hh / 2, post, post, hh, SCENE_WALL_SIDE, SCENE_WALL_TOP);
     for (uint8_t y = 0; y < m->height; y++)
         for (uint8_t x = 0; x < m->width; x++) {
-            maze_cell_t k = maze_cell(m, x, y);
-            if (!maze_passable(m, k, MAZE_SOUTH, 0))
+            truemaze_cell_t k = truemaze_cell(m, x, y);
+            if (!truemaze_open(m, k, TRUEMAZE_SOUTH))
                 box((x + 0.5) * cell, y * cell, hh / 2, cell - post, th, hh, SCENE_WALL_SIDE, SCENE_WALL_TOP);
-            if (!maze_passable(m, k, MAZE_WEST, 0))
+            if (!truemaze_open(m, k, TRUEMAZE_WEST))
                 box(x * cell, (y + 0.5) * cell, hh / 2, th, cell - post, hh, SCENE_WALL_SIDE, SCENE_WALL_TOP);
-            if (y == m->height - 1 && !maze_passable(m, k, MAZE_NORTH, 0))
+            if (y == m->height - 1 && !truemaze_open(m, k, TRUEMAZE_NORTH))
                 box((x + 0.5) * cell, (y + 1) * cell, hh / 2, cell - post, th, hh, SCENE_WALL_SIDE, SCENE_WALL_TOP);
-            if (x == m->width - 1 && !maze_passable(m, k, MAZE_EAST, 0))
+            if (x == m->width - 1 && !truemaze_open(m, k, TRUEMAZE_EAST))
                 box((x + 1) * cell, (y + 0.5) * cell, hh / 2, th, cell - post, hh, SCENE_WALL_SIDE, SCENE_WALL_TOP);
         }
 }
@@ -263,7 +264,7 @@ static void ir_beams(const simcfg_t *c, const snap_t *s)
 
 /* The mouse's walls as bars over the wall tops (cyan where it agrees with
  * the truth, magenta where it does not) and its planned path. */
-static void overlay(const simcfg_t *cf, const maze_t *m, const scene_belief_t *b)
+static void overlay(const simcfg_t *cf, const truemaze_t *m, const scene_belief_t *b)
 {
     const maze_t *k = b->map;
     if (k->width != m->width || k->height != m->height) return;
@@ -275,30 +276,30 @@ static void overlay(const simcfg_t *cf, const maze_t *m, const scene_belief_t *b
     glBegin(GL_LINES);
     for (uint8_t y = 0; y < m->height; y++)
         for (uint8_t x = 0; x < m->width; x++) {
-            maze_cell_t c = maze_cell(m, x, y);
-            for (uint8_t d = MAZE_EAST; d <= MAZE_SOUTH; d++) { /* east and south of each cell: every inner wall once */
-                uint8_t known = maze_wall(k, c, d);
+            truemaze_cell_t c = truemaze_cell(m, x, y);
+            for (uint8_t d = TRUEMAZE_EAST; d <= TRUEMAZE_SOUTH; d++) { /* east and south of each cell: every inner wall once */
+                uint8_t known = maze_wall(k, (maze_cell_t)c, d);
                 if (known != MAZE_WALL_CLOSED) continue;
-                int truth = maze_wall(m, c, d) == MAZE_WALL_CLOSED;
+                int truth = truemaze_wall(m, c, d);
                 colour(truth ? SCENE_OVERLAY_WALL : SCENE_OVERLAY_WRONG, 0.9f);
-                if (d == MAZE_EAST) glVertex3d((x + 1) * cell, y * cell, z), glVertex3d((x + 1) * cell, (y + 1) * cell, z);
+                if (d == TRUEMAZE_EAST) glVertex3d((x + 1) * cell, y * cell, z), glVertex3d((x + 1) * cell, (y + 1) * cell, z);
                 else glVertex3d(x * cell, y * cell, z), glVertex3d((x + 1) * cell, y * cell, z);
             }
         }
     glEnd();
     /* planned path: best from the mouse's cell and heading, unknown walls open */
-    static maze_t plan;
+    static truemaze_t plan;
     static solve_path_t path;
-    plan = *k;
-    if (b->cell < maze_cells(&plan)) {
-        plan.start = (maze_cell_t)b->cell;
+    truemaze_from_belief(&plan, k, 1);
+    if (b->cell < truemaze_cells(&plan)) {
+        plan.start = (truemaze_cell_t)b->cell;
         plan.start_heading = b->heading & 3;
-        if (solve_best(&plan, 1, &path) == 0) {
+        if (solve_best(&plan, &path) == 0) {
             glLineWidth(5);
             colour(0xC040FFu, 0.85f);
             glBegin(GL_LINE_STRIP);
             for (int i = 0; i < path.len; i++)
-                glVertex3d((maze_x(&plan, path.path[i]) + 0.5) * cell, (maze_y(&plan, path.path[i]) + 0.5) * cell, 0.004);
+                glVertex3d((truemaze_x(&plan, path.path[i]) + 0.5) * cell, (truemaze_y(&plan, path.path[i]) + 0.5) * cell, 0.004);
             glEnd();
         }
     }
@@ -307,7 +308,7 @@ static void overlay(const simcfg_t *cf, const maze_t *m, const scene_belief_t *b
     glEnable(GL_LIGHTING);
 }
 
-void scene_draw(const sim_model_t *model, const maze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
+void scene_draw(const sim_model_t *model, const truemaze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
                 const scene_belief_t *b, int show_overlay, int x, int y, int w, int h)
 {
     glClearColor(0.08f, 0.09f, 0.11f, 1);
@@ -385,7 +386,7 @@ static void floor_text(const char *t, double cx, double cy, double z, double px,
         }
 }
 
-void scene_draw_cells(const sim_model_t *model, const maze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
+void scene_draw_cells(const sim_model_t *model, const truemaze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
                       const char *colours, const char *texts, size_t stride)
 {
     double cell = model->cfg->world.cell_m, eye[3], target[3], up[3];
@@ -397,15 +398,15 @@ void scene_draw_cells(const sim_model_t *model, const maze_t *m, const snap_t *s
     glDisable(GL_CULL_FACE); /* the text's winding depends on the camera */
     glEnable(GL_DEPTH_TEST);
     glBegin(GL_QUADS);
-    for (uint16_t k = 0; k < maze_cells(m); k++) {
+    for (uint16_t k = 0; k < truemaze_cells(m); k++) {
         if (!colours[k]) continue;
-        double x0 = maze_x(m, (maze_cell_t)k) * cell + CELL_MARGIN_M, y0 = maze_y(m, (maze_cell_t)k) * cell + CELL_MARGIN_M,
+        double x0 = truemaze_x(m, (truemaze_cell_t)k) * cell + CELL_MARGIN_M, y0 = truemaze_y(m, (truemaze_cell_t)k) * cell + CELL_MARGIN_M,
                x1 = x0 + cell - 2 * CELL_MARGIN_M, y1 = y0 + cell - 2 * CELL_MARGIN_M, z = 0.0008; /* over the start and goal tiles */
         colour(scene_cell_rgb(colours[k]), 1);
         glVertex3d(x0, y0, z), glVertex3d(x1, y0, z), glVertex3d(x1, y1, z), glVertex3d(x0, y1, z);
     }
     double inner = cell - 2 * CELL_MARGIN_M - 0.01; /* the text's room, m */
-    for (uint16_t k = 0; texts && k < maze_cells(m); k++) {
+    for (uint16_t k = 0; texts && k < truemaze_cells(m); k++) {
         const char *t = texts + k * stride;
         if (!t[0]) continue;
         int len = (int)strnlen(t, CELL_TEXT_MAX);
@@ -413,7 +414,7 @@ void scene_draw_cells(const sim_model_t *model, const maze_t *m, const snap_t *s
         uint32_t bg = colours[k] ? scene_cell_rgb(colours[k]) : SCENE_FLOOR;
         double luma = 0.299 * ((bg >> 16) & 255) + 0.587 * ((bg >> 8) & 255) + 0.114 * (bg & 255); /* Rec. 601 weights */
         colour(luma < 128 ? 0xFFFFFFu : 0x000000u, 1);
-        floor_text(t, (maze_x(m, (maze_cell_t)k) + 0.5) * cell, (maze_y(m, (maze_cell_t)k) + 0.5) * cell, 0.0011, px, ux, uy);
+        floor_text(t, (truemaze_x(m, (truemaze_cell_t)k) + 0.5) * cell, (truemaze_y(m, (truemaze_cell_t)k) + 0.5) * cell, 0.0011, px, ux, uy);
     }
     glEnd();
     glDisable(GL_LIGHTING);

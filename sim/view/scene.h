@@ -18,6 +18,7 @@
 #include <stddef.h>
 
 #include "maze.h"
+#include "maze/truemaze.h"
 #include "snap.h"
 #include "world/model.h"
 
@@ -47,14 +48,14 @@ typedef struct {
 
 /* Eye, target and up vector of camera cam (SCENE_*) for snapshot s's
  * pose in maze m. */
-void scene_camera(const sim_model_t *model, const maze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
+void scene_camera(const sim_model_t *model, const truemaze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
                   double eye[3], double target[3], double up[3]);
 /* Draw the scene of snapshot s in maze m for camera cam into the viewport
  * w x h pixels whose lower left corner is (x, y) (GL's window pixels; the
  * whole window is cleared). The field of view is FOV_DEG across the
  * viewport's narrower side, so a tall viewport shows as much across as a
  * square one. overlay: draw b's walls and planned path (b may be NULL). */
-void scene_draw(const sim_model_t *model, const maze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
+void scene_draw(const sim_model_t *model, const truemaze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
                 const scene_belief_t *b, int overlay, int x, int y, int w, int h);
 
 /* After scene_draw, in the same frame (the same camera: s, cam, orbit):
@@ -64,7 +65,7 @@ void scene_draw(const sim_model_t *model, const maze_t *m, const snap_t *s, int 
  * robot (depth-tested): centred in the cell, as large as the cell allows
  * (up to 4 characters at full size, longer texts smaller), upright on the
  * screen (its "up" is the camera's forward direction over the floor). */
-void scene_draw_cells(const sim_model_t *model, const maze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
+void scene_draw_cells(const sim_model_t *model, const truemaze_t *m, const snap_t *s, int cam, const scene_orbit_t *orbit,
                       const char *colours, const char *texts, size_t stride);
 
 /* The floor tint of mms colour letter c (mms.h's letters; 0: none). The

@@ -62,7 +62,7 @@ static void level_frame(double x, double y, double heading, const sim_pose_t *p,
     level_point(0, 0, heading, p->up, out->up);
 }
 
-void snap_place(snap_t *out, const sim_model_t *model, const maze_t *m, int centre_post, double x_m, double y_m,
+void snap_place(snap_t *out, const sim_model_t *model, const truemaze_t *m, int centre_post, double x_m, double y_m,
                 double heading_rad, const double wheel_rad[2])
 {
     const simcfg_t *c = model->cfg;
@@ -126,7 +126,7 @@ static void ray_box(maze_ray_t *r, double cx, double cy, double cz, double hx, d
     if (r->best < 0 || t < r->best) r->best = t;
 }
 
-double snap_maze_ray(const simcfg_t *cf, const maze_t *m, int centre_post, const double pos_m[3], const double dir[3],
+double snap_maze_ray(const simcfg_t *cf, const truemaze_t *m, int centre_post, const double pos_m[3], const double dir[3],
                      double max_m)
 {
     double n = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
@@ -139,12 +139,12 @@ double snap_maze_ray(const simcfg_t *cf, const maze_t *m, int centre_post, const
             if (px != cx || py != cy || centre_post) ray_box(&r, px * cell, py * cell, hz, post / 2, post / 2, hz);
     for (uint8_t y = 0; y < m->height; y++)
         for (uint8_t x = 0; x < m->width; x++) {
-            maze_cell_t k = maze_cell(m, x, y);
-            if (!maze_passable(m, k, MAZE_SOUTH, 0)) ray_box(&r, (x + 0.5) * cell, y * cell, hz, (cell - post) / 2, th / 2, hz);
-            if (!maze_passable(m, k, MAZE_WEST, 0)) ray_box(&r, x * cell, (y + 0.5) * cell, hz, th / 2, (cell - post) / 2, hz);
-            if (y == m->height - 1 && !maze_passable(m, k, MAZE_NORTH, 0))
+            truemaze_cell_t k = truemaze_cell(m, x, y);
+            if (!truemaze_open(m, k, TRUEMAZE_SOUTH)) ray_box(&r, (x + 0.5) * cell, y * cell, hz, (cell - post) / 2, th / 2, hz);
+            if (!truemaze_open(m, k, TRUEMAZE_WEST)) ray_box(&r, x * cell, (y + 0.5) * cell, hz, th / 2, (cell - post) / 2, hz);
+            if (y == m->height - 1 && !truemaze_open(m, k, TRUEMAZE_NORTH))
                 ray_box(&r, (x + 0.5) * cell, (y + 1) * cell, hz, (cell - post) / 2, th / 2, hz);
-            if (x == m->width - 1 && !maze_passable(m, k, MAZE_EAST, 0))
+            if (x == m->width - 1 && !truemaze_open(m, k, TRUEMAZE_EAST))
                 ray_box(&r, (x + 1) * cell, (y + 0.5) * cell, hz, th / 2, (cell - post) / 2, hz);
         }
     return r.best;

@@ -12,7 +12,7 @@
 #ifndef SNAP_H
 #define SNAP_H
 
-#include "maze.h"
+#include "maze/truemaze.h"
 #include "world/model.h"
 #include "world/race.h"
 #include "world/sim.h"
@@ -52,7 +52,7 @@ void snap_from_sim(snap_t *out, const sim_state_t *s);
  * its own radius, each sensor's frame, each IR beam's reach cast with
  * snap_maze_ray (centre_post: the middle post is there). The ToF rays'
  * hit_m, the emitters, timers and time are the caller's. */
-void snap_place(snap_t *out, const sim_model_t *model, const maze_t *m, int centre_post, double x_m, double y_m,
+void snap_place(snap_t *out, const sim_model_t *model, const truemaze_t *m, int centre_post, double x_m, double y_m,
                 double heading_rad, const double wheel_rad[2]);
 
 /* The distance (m) from pos_m along dir (need not be unit length) to the
@@ -61,7 +61,7 @@ void snap_place(snap_t *out, const sim_model_t *model, const maze_t *m, int cent
  * wall_height_m, the centre post if centre_post), or -1 if none within
  * max_m. A ray that starts inside a box hits where it leaves it, as
  * ODE's ray-box test does. */
-double snap_maze_ray(const simcfg_t *c, const maze_t *m, int centre_post, const double pos_m[3], const double dir[3],
+double snap_maze_ray(const simcfg_t *c, const truemaze_t *m, int centre_post, const double pos_m[3], const double dir[3],
                      double max_m);
 
 #endif

@@ -492,7 +492,7 @@ static void draw(view_t *v, sim_state_t *s)
     const sim_belief_t *hb = v->belief;
     static snap_t snap; /* what this frame draws */
     const sim_model_t *model;
-    const maze_t *maze;
+    const truemaze_t *maze;
     if (v->rp) {
         replay_snap(v->rp, v->rp_t, &snap);
         model = &v->rp->model;

@@ -3,7 +3,7 @@
 
 #include <math.h>
 
-void race_init(race_t *r, const maze_t *m, double cell_m, double limit_s)
+void race_init(race_t *r, const truemaze_t *m, double cell_m, double limit_s)
 {
     r->maze = m;
     r->cell_m = cell_m;
@@ -23,7 +23,7 @@ static int cell_at(const race_t *r, double x_m, double y_m)
 {
     double fx = floor(x_m / r->cell_m), fy = floor(y_m / r->cell_m);
     if (fx < 0 || fy < 0 || fx >= r->maze->width || fy >= r->maze->height) return -1;
-    return maze_cell(r->maze, (uint8_t)fx, (uint8_t)fy);
+    return truemaze_cell(r->maze, (uint8_t)fx, (uint8_t)fy);
 }
 
 double race_global_s(const race_t *r, double t_s)
@@ -51,7 +51,7 @@ int race_update(race_t *r, double t_s, double x_m, double y_m)
             r->global_start_s = t_s;
         }
     }
-    if (r->in_run && c >= 0 && maze_is_goal(r->maze, (maze_cell_t)c)) {
+    if (r->in_run && c >= 0 && truemaze_is_goal(r->maze, (truemaze_cell_t)c)) {
         r->in_run = 0;
         if (r->nlaps == RACE_MAX_LAPS) return 0;
         race_lap_t *l = &r->laps[r->nlaps];

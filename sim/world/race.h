@@ -15,7 +15,7 @@
 
 #include <stdio.h>
 
-#include "maze.h"
+#include "maze/truemaze.h"
 
 #define RACE_MAX_LAPS 64
 
@@ -25,7 +25,7 @@ typedef struct {
 } race_lap_t;
 
 typedef struct {
-    const maze_t *maze;
+    const truemaze_t *maze;
     double cell_m, limit_s;
     int started;          /* global timer running */
     double global_start_s;
@@ -38,7 +38,7 @@ typedef struct {
     int over_time;
 } race_t;
 
-void race_init(race_t *r, const maze_t *m, double cell_m, double limit_s);
+void race_init(race_t *r, const truemaze_t *m, double cell_m, double limit_s);
 /* Feed the body centre at time t_s; returns 1 when this call completed a lap. */
 int race_update(race_t *r, double t_s, double x_m, double y_m);
 /* Global timer (s since the first exit from the start; 0 before). */

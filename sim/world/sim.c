@@ -65,7 +65,7 @@ static void tof_mirror(sim_state_t *s)
     }
 }
 
-int sim_init(sim_state_t *s, const sim_model_t *model, const maze_t *m, uint64_t seed)
+int sim_init(sim_state_t *s, const sim_model_t *model, const truemaze_t *m, uint64_t seed)
 {
     memset(s->part_state, 0, sizeof s->part_state);
     s->world = NULL;
@@ -75,8 +75,8 @@ int sim_init(sim_state_t *s, const sim_model_t *model, const maze_t *m, uint64_t
     s->seed = seed;
     double h = start_heading(m->start_heading), back = 0; /* m behind the cell's centre */
     if (model->start == ROBOT_START_BACK_TO_WALL) back = cell / 2 - model->arena.wall_thick_m / 2 - model->chassis.body_l_m / 2 - ROBOT_START_GAP_M;
-    s->world = world_create(model, m, (maze_x(m, m->start) + 0.5) * cell - back * cos(h),
-                            (maze_y(m, m->start) + 0.5) * cell - back * sin(h), h);
+    s->world = world_create(model, m, (truemaze_x(m, m->start) + 0.5) * cell - back * cos(h),
+                            (truemaze_y(m, m->start) + 0.5) * cell - back * sin(h), h);
     if (!s->world) {
         sim_free(s);
         return -1;

@@ -11,7 +11,7 @@
 
 #include "config.h"
 #include "encoder.h"
-#include "maze.h"
+#include "maze/truemaze.h"
 #include "model.h"
 #include "motor.h"
 #include "race.h"
@@ -26,7 +26,7 @@
  * simulates are the const model it points to. */
 typedef struct sim_state_s {
     const sim_model_t *model; /* the model it was made from (sim_init's m), never changed or freed here */
-    const maze_t *maze;
+    const truemaze_t *maze;
     uint64_t seed;
     world_t *world;
     motor_t motor[2];
@@ -58,7 +58,7 @@ typedef struct sim_state_s {
  * the state), the robot placed in the start cell facing the start heading,
  * the sensors' noise streams seeded from seed. Returns 0, or -1 if ODE
  * could not be set up. */
-int sim_init(sim_state_t *s, const sim_model_t *m, const maze_t *maze, uint64_t seed);
+int sim_init(sim_state_t *s, const sim_model_t *m, const truemaze_t *maze, uint64_t seed);
 /* Release what the state holds (the world, the sensors' states); the model stays the caller's. */
 void sim_free(sim_state_t *s);
 /* One physics step of s through its model m (the one s was made from):

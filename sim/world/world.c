@@ -37,7 +37,7 @@ static dGeomID static_box(world_t *w, double x, double y, double lx, double ly)
 
 /* The maze's boxes, each filed in the cells it lies in (wallgrid). -1 when
  * out of memory. */
-static int build_maze(world_t *w, const maze_t *m)
+static int build_maze(world_t *w, const truemaze_t *m)
 {
     const simcfg_world_t *a = &w->model->arena;
     size_t most = (size_t)(m->width + 1) * (size_t)(m->height + 1) * 3u; /* posts, and two walls a post at most */
@@ -53,13 +53,13 @@ static int build_maze(world_t *w, const maze_t *m)
         }
     for (uint8_t y = 0; y < m->height; y++)
         for (uint8_t x = 0; x < m->width; x++) {
-            maze_cell_t c = maze_cell(m, x, y);
+            truemaze_cell_t c = truemaze_cell(m, x, y);
             /* each wall once: south and west of every cell, plus the outer north and east */
-            if (!maze_passable(m, c, MAZE_SOUTH, 0)) static_box(w, (x + 0.5) * cell, y * cell, cell - post, thick);
-            if (!maze_passable(m, c, MAZE_WEST, 0)) static_box(w, x * cell, (y + 0.5) * cell, thick, cell - post);
-            if (y == m->height - 1 && !maze_passable(m, c, MAZE_NORTH, 0))
+            if (!truemaze_open(m, c, TRUEMAZE_SOUTH)) static_box(w, (x + 0.5) * cell, y * cell, cell - post, thick);
+            if (!truemaze_open(m, c, TRUEMAZE_WEST)) static_box(w, x * cell, (y + 0.5) * cell, thick, cell - post);
+            if (y == m->height - 1 && !truemaze_open(m, c, TRUEMAZE_NORTH))
                 static_box(w, (x + 0.5) * cell, (y + 1) * cell, cell - post, thick);
-            if (x == m->width - 1 && !maze_passable(m, c, MAZE_EAST, 0))
+            if (x == m->width - 1 && !truemaze_open(m, c, TRUEMAZE_EAST))
                 static_box(w, (x + 1) * cell, (y + 0.5) * cell, thick, cell - post);
         }
     w->grid = wallgrid_build(cell, m->width, m->height, w->nwalls, (const double (*)[4])w->wall_bounds);
@@ -254,7 +254,7 @@ static void ode_message(int num, const char *msg, va_list ap)
     (void)ap;
 }
 
-world_t *world_create(const sim_model_t *model, const maze_t *m, double x_m, double y_m, double heading_rad)
+world_t *world_create(const sim_model_t *model, const truemaze_t *m, double x_m, double y_m, double heading_rad)
 {
     if (!ode_ready) {
         dSetMessageHandler(ode_message);

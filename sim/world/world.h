@@ -20,7 +20,7 @@
 #define WORLD_H
 
 #include "config.h"
-#include "maze.h"
+#include "maze/truemaze.h"
 #include "model.h"
 #include "motor.h"
 
@@ -32,7 +32,7 @@ typedef struct world world_t;
 /* Build the world of model for maze m with the robot's body centre over
  * (x_m, y_m) facing heading_rad. The world reads the model (which must
  * outlive it) by pointer. NULL if ODE fails. */
-world_t *world_create(const sim_model_t *model, const maze_t *m, double x_m, double y_m, double heading_rad);
+world_t *world_create(const sim_model_t *model, const truemaze_t *m, double x_m, double y_m, double heading_rad);
 void world_destroy(world_t *w);
 
 /* One physics step of the config's sim.step_s with each wheel's motor drive (output

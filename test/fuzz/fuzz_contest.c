@@ -40,7 +40,7 @@ static char *print(const contest_t *c)
 
 static void check_loaded(const contest_t *c)
 {
-    check(c->max_width >= 1 && c->max_width <= MAZE_MAX_W && c->max_height >= 1 && c->max_height <= MAZE_MAX_H, "maze size");
+    check(c->max_width >= 1 && c->max_width <= TRUEMAZE_MAX_SIZE && c->max_height >= 1 && c->max_height <= TRUEMAZE_MAX_SIZE, "maze size");
     check(c->goal[0] <= c->goal[2] && c->goal[1] <= c->goal[3] && c->goal[2] < c->max_width && c->goal[3] < c->max_height, "goal");
     check(c->start[0] < c->max_width && c->start[1] < c->max_height, "start");
     check(c->post_m >= c->wall_thick_m, "posts thinner than walls");

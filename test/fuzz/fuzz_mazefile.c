@@ -11,7 +11,7 @@
 
 #include "maze/mazefile.h"
 
-static maze_t first, second;
+static truemaze_t first, second;
 static char text[1 << 16], again[1 << 16];
 
 /* "fuzz:LINE:COL: " with LINE, COL >= 1, then a message, all on one line. */
@@ -34,16 +34,16 @@ static void check(int ok, const char *what)
 /* One letter per cell: a start inside a goal area other than the default
  * centre cannot be written (see mazefile_format), so that goal is not
  * compared. */
-static int goal_writable(const maze_t *m)
+static int goal_writable(const truemaze_t *m)
 {
-    maze_t centre;
-    maze_init(&centre, m->width, m->height);
-    return !maze_is_goal(m, m->start) || memcmp(centre.goal, m->goal, sizeof m->goal) == 0;
+    truemaze_t centre;
+    truemaze_init(&centre, m->width, m->height);
+    return !truemaze_is_goal(m, m->start) || memcmp(centre.goal, m->goal, sizeof m->goal) == 0;
 }
 
-static int same_walls(const maze_t *x, const maze_t *y)
+static int same_walls(const truemaze_t *x, const truemaze_t *y)
 {
-    return x->width == y->width && x->height == y->height && memcmp(x->cell, y->cell, maze_cells(x)) == 0;
+    return x->width == y->width && x->height == y->height && memcmp(x->cell, y->cell, truemaze_cells(x)) == 0;
 }
 
 static void check_text_round_trip(void)
@@ -79,8 +79,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         check(well_formed_error(err), err);
         return 0;
     }
-    check(first.width >= 1 && first.width <= MAZE_MAX_W && first.height >= 1 && first.height <= MAZE_MAX_H, "size");
-    check(first.start < maze_cells(&first) && first.start_heading < 4, "start");
+    check(first.width >= 1 && first.width <= TRUEMAZE_MAX_SIZE && first.height >= 1 && first.height <= TRUEMAZE_MAX_SIZE, "size");
+    check(first.start < truemaze_cells(&first) && first.start_heading < 4, "start");
     check_text_round_trip();
     check_mms_round_trip();
     return 0;

@@ -88,7 +88,7 @@ static void test_bad_files(void **state)
 
 typedef struct {
     simcfg_t cfg;
-    maze_t maze;
+    truemaze_t maze;
     sim_state_t sim;
     board_t *b;
 } rig_t;

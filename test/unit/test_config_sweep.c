@@ -107,7 +107,7 @@ static void child(const char *cfg_path, const char *robot_path)
          * contest reads only the ToF) */
         simcfg_t c;
         char err[400];
-        static maze_t m;
+        static truemaze_t m;
         config_defaults(&c);
         if ((cfg_path[0] && config_load(&c, cfg_path, err, sizeof err) != 0) || robot_load(&c, robot_path, err, sizeof err) != 0 ||
             mazefile_load(&m, SWEEP_MAZE, NULL, err, sizeof err) != 0) {

@@ -17,6 +17,7 @@
 #include "maze/mazefile.h"
 #include "maze/mazegen.h"
 #include "maze/solve.h"
+#include "maze/truebelief.h"
 
 static int log_checked; /* while set, every hal_log line must be expected */
 
@@ -36,22 +37,23 @@ uint32_t __wrap_hal_micros(void)
 
 static explore_t mouse;
 
-static void closed_maze(maze_t *m, uint8_t w, uint8_t h)
+static void closed_maze(truemaze_t *m, uint8_t w, uint8_t h)
 {
-    maze_init(m, w, h);
-    maze_close_unknown(m);
+    truemaze_init(m, w, h);
 }
 
 /* Drive the mouse through truth; returns the moves made. */
-static int drive(const maze_t *truth, uint8_t *moves, int max)
+static int drive(const truemaze_t *truth, uint8_t *moves, int max)
 {
+    static maze_t blank;
     int n = 0;
-    explore_init(&mouse, truth);
+    assert_int_equal(truemaze_to_belief(truth, &blank), 0);
+    explore_init(&mouse, &blank);
     for (;;) {
         explore_sense(&mouse, grid_sense(truth, mouse.cell, mouse.heading));
         int d = explore_next(&mouse);
         if (d < 0 || n >= max) return n;
-        assert_true(maze_passable(truth, mouse.cell, (uint8_t)d, 0)); /* never into a wall */
+        assert_true(truemaze_open(truth, mouse.cell, (uint8_t)d)); /* never into a wall */
         moves[n++] = (uint8_t)d;
         explore_moved(&mouse, (uint8_t)d);
     }
@@ -62,12 +64,12 @@ static int drive(const maze_t *truth, uint8_t *moves, int max)
 static void test_l_route_proven_and_logged(void **state)
 {
     (void)state;
-    maze_t t;
+    truemaze_t t;
     uint8_t mv[64];
     closed_maze(&t, 4, 4);
-    maze_set_wall(&t, maze_cell(&t, 0, 0), MAZE_NORTH, MAZE_WALL_OPEN);
-    maze_set_wall(&t, maze_cell(&t, 0, 1), MAZE_NORTH, MAZE_WALL_OPEN);
-    maze_set_wall(&t, maze_cell(&t, 0, 2), MAZE_EAST, MAZE_WALL_OPEN);
+    truemaze_set_wall(&t, truemaze_cell(&t, 0, 0), TRUEMAZE_NORTH, 0);
+    truemaze_set_wall(&t, truemaze_cell(&t, 0, 1), TRUEMAZE_NORTH, 0);
+    truemaze_set_wall(&t, truemaze_cell(&t, 0, 2), TRUEMAZE_EAST, 0);
     log_checked = 1;
     expect_string(__wrap_hal_log, line, "explore: run path proven at step 3, cost 4");
     int n = drive(&t, mv, 64);
@@ -85,7 +87,7 @@ static void test_l_route_proven_and_logged(void **state)
 static void test_unreachable_goal_ends(void **state)
 {
     (void)state;
-    maze_t t;
+    truemaze_t t;
     uint8_t mv[8];
     closed_maze(&t, 4, 4);
     log_checked = 1;
@@ -101,7 +103,7 @@ static void test_unreachable_goal_ends(void **state)
 static void test_generated_mazes_end_optimal(void **state)
 {
     (void)state;
-    static maze_t t;
+    static truemaze_t t;
     for (uint8_t size = 4; size <= 32; size += 2)
         for (uint32_t seed = 1; seed <= 3; seed++) {
             grid_result_t r;
@@ -128,7 +130,7 @@ static void test_database_classic_all_optimal(void **state)
     (void)state;
     const char *shared = getenv("SHARED") ? getenv("SHARED") : "../shared";
     char dir[512], path[1024], err[MAZEFILE_ERR_LEN];
-    static maze_t t;
+    static truemaze_t t;
     snprintf(dir, sizeof dir, "%s/mazes/classic", shared);
     DIR *d = opendir(dir);
     if (!d) {
@@ -191,7 +193,7 @@ static void test_planning_time_from_hal_micros(void **state)
 static void test_dir_ahead_matches_fresh_floods(void **state)
 {
     (void)state;
-    static maze_t t;
+    static truemaze_t t;
     static uint8_t mv[1024];
     char err[MAZEFILE_ERR_LEN];
     assert_int_equal(mazefile_load(&t, "mazes/gen-16x16-s1.txt", NULL, err, sizeof err), 0);
@@ -231,7 +233,7 @@ static void test_dir_ahead_matches_fresh_floods(void **state)
 static void test_one_flood_per_run(void **state)
 {
     (void)state;
-    static maze_t t;
+    static truemaze_t t;
     static uint8_t mv[1024];
     char err[MAZEFILE_ERR_LEN];
     assert_int_equal(mazefile_load(&t, "mazes/gen-16x16-s1.txt", NULL, err, sizeof err), 0);

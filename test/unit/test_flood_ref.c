@@ -23,6 +23,7 @@
 
 #include "flood.h"
 #include "maze/mazefile.h"
+#include "maze/truebelief.h"
 
 #define NONE 0xFFFFu
 #define SOURCES 12 /* non-full floods per map, flag set and target set */
@@ -217,7 +218,8 @@ static int ends_with_txt(const char *s)
 /* Every maze file of a directory; returns how many. */
 static int check_dir(const char *dir)
 {
-    static maze_t t;
+    static truemaze_t truth;
+    static maze_t t; /* the firmware's map of it, every wall known */
     char path[1024], err[MAZEFILE_ERR_LEN];
     int files = 0;
     DIR *d = opendir(dir);
@@ -226,7 +228,8 @@ static int check_dir(const char *dir)
     while ((e = readdir(d)) != NULL) {
         if (!ends_with_txt(e->d_name)) continue;
         snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-        if (mazefile_load(&t, path, NULL, err, sizeof err) != 0) continue; /* mazes/README.md etc. */
+        if (mazefile_load(&truth, path, NULL, err, sizeof err) != 0) continue; /* mazes/README.md etc. */
+        if (truemaze_to_belief(&truth, &t) != 0) continue; /* larger than this build's MAZE_MAX_SIZE */
         check_maze(&t);
         files++;
     }

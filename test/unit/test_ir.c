@@ -30,12 +30,11 @@ static int setup(void **state)
  * east side of cell (1,1): a wall on x = 2 cells from y = 1 to 2 cells. */
 static world_t *arena(int inner_wall)
 {
-    maze_t m;
-    maze_init(&m, 4, 4);
-    maze_close_unknown(&m);
+    truemaze_t m;
+    truemaze_init(&m, 4, 4);
     for (uint16_t c = 0; c < 16; c++)
-        for (uint8_t d = 0; d < 4; d++) maze_set_wall(&m, (maze_cell_t)c, d, MAZE_WALL_OPEN);
-    if (inner_wall) maze_set_wall(&m, maze_cell(&m, 1, 1), MAZE_EAST, MAZE_WALL_CLOSED);
+        for (uint8_t d = 0; d < 4; d++) truemaze_set_wall(&m, (truemaze_cell_t)c, d, 0);
+    if (inner_wall) truemaze_set_wall(&m, truemaze_cell(&m, 1, 1), TRUEMAZE_EAST, 1);
     world_t *w = world_create(&model, &m, 0.09, 0.09, M_PI / 2); /* robot out of the way: rays see only walls and posts */
     assert_non_null(w);
     return w;

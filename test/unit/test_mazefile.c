@@ -19,7 +19,7 @@
 
 #include "maze/mazefile.h"
 
-static maze_t a, b;
+static truemaze_t a, b;
 static char err[MAZEFILE_ERR_LEN];
 static char text[1 << 16], text2[1 << 16];
 
@@ -31,43 +31,43 @@ static const char *shared(void)
     return s ? s : "../shared";
 }
 
-static int parse(maze_t *m, const char *t)
+static int parse(truemaze_t *m, const char *t)
 {
     return mazefile_parse(m, t, strlen(t), "t.txt", NULL, err, sizeof err);
 }
 
-static void assert_same_maze(const maze_t *x, const maze_t *y)
+static void assert_same_maze(const truemaze_t *x, const truemaze_t *y)
 {
     assert_int_equal(x->width, y->width);
     assert_int_equal(x->height, y->height);
-    assert_memory_equal(x->cell, y->cell, maze_cells(x));
+    assert_memory_equal(x->cell, y->cell, truemaze_cells(x));
     assert_memory_equal(x->goal, y->goal, sizeof x->goal);
     assert_int_equal(x->start, y->start);
     assert_int_equal(x->start_heading, y->start_heading);
 }
 
-static int goal_count(const maze_t *m)
+static int goal_count(const truemaze_t *m)
 {
     int n = 0;
-    for (uint16_t c = 0; c < maze_cells(m); c++) n += maze_is_goal(m, (maze_cell_t)c);
+    for (uint16_t c = 0; c < truemaze_cells(m); c++) n += truemaze_is_goal(m, (truemaze_cell_t)c);
     return n;
 }
 
 /* Breadth-first search from the start over open walls: is a goal cell
  * reachable? Kept here so the test does not depend on the solver. */
-static int goal_reachable(const maze_t *m)
+static int goal_reachable(const truemaze_t *m)
 {
-    static maze_cell_t queue[MAZE_MAX_CELLS];
-    static uint8_t seen[MAZE_MAX_CELLS];
+    static truemaze_cell_t queue[TRUEMAZE_MAX_CELLS];
+    static uint8_t seen[TRUEMAZE_MAX_CELLS];
     size_t head = 0, tail = 0;
     memset(seen, 0, sizeof seen);
     queue[tail++] = m->start;
     seen[m->start] = 1;
     while (head < tail) {
-        maze_cell_t c = queue[head++], n;
-        if (maze_is_goal(m, c)) return 1;
+        truemaze_cell_t c = queue[head++], n;
+        if (truemaze_is_goal(m, c)) return 1;
         for (uint8_t d = 0; d < 4; d++)
-            if (maze_passable(m, c, d, 0) && maze_neighbour(m, c, d, &n) && !seen[n]) {
+            if (truemaze_open(m, c, d) && truemaze_neighbour(m, c, d, &n) && !seen[n]) {
                 seen[n] = 1;
                 queue[tail++] = n;
             }
@@ -246,7 +246,7 @@ static void test_database_round_trip(void **state)
 static void mms_round_trip_file(const char *rel, const char *path, void *ctx)
 {
     mazefile_info_t info;
-    maze_t centre;
+    truemaze_t centre;
     (void)ctx;
     if (mazefile_load(&a, path, NULL, err, sizeof err) != 0) fail_msg("%s", err);
     size_t n = mazefile_format_mms(&a, text, sizeof text);
@@ -255,9 +255,9 @@ static void mms_round_trip_file(const char *rel, const char *path, void *ctx)
     assert_true(info.mms_format);
     assert_int_equal(a.width, b.width);
     assert_int_equal(a.height, b.height);
-    assert_memory_equal(a.cell, b.cell, maze_cells(&a));
+    assert_memory_equal(a.cell, b.cell, truemaze_cells(&a));
     /* the format has no start or goal: the defaults */
-    maze_init(&centre, a.width, a.height);
+    truemaze_init(&centre, a.width, a.height);
     assert_int_equal(b.start, 0);
     assert_memory_equal(b.goal, centre.goal, sizeof b.goal);
     /* and writing it again gives the same text */
@@ -290,20 +290,24 @@ static void test_small_maze(void **state)
     assert_int_equal(a.width, 3);
     assert_int_equal(a.height, 2);
     assert_true(info.has_start && info.has_goal && !info.mms_format);
-    assert_int_equal(a.start, maze_cell(&a, 0, 0));
-    assert_int_equal(a.start_heading, MAZE_NORTH);
+    assert_int_equal(a.start, truemaze_cell(&a, 0, 0));
+    assert_int_equal(a.start_heading, TRUEMAZE_NORTH);
     assert_int_equal(goal_count(&a), 1); /* the default centre was cleared by G */
-    assert_true(maze_is_goal(&a, maze_cell(&a, 2, 1)));
-    assert_int_equal(maze_wall(&a, maze_cell(&a, 0, 0), MAZE_EAST), MAZE_WALL_CLOSED);
-    assert_int_equal(maze_wall(&a, maze_cell(&a, 0, 0), MAZE_NORTH), MAZE_WALL_OPEN);
-    assert_int_equal(maze_wall(&a, maze_cell(&a, 1, 1), MAZE_EAST), MAZE_WALL_CLOSED);
-    assert_int_equal(maze_wall(&a, maze_cell(&a, 2, 0), MAZE_NORTH), MAZE_WALL_OPEN);
-    assert_int_equal(maze_wall(&a, maze_cell(&a, 1, 0), MAZE_NORTH), MAZE_WALL_CLOSED);
-    assert_int_equal(maze_wall(&a, maze_cell(&a, 0, 1), MAZE_EAST), MAZE_WALL_OPEN);
-    assert_int_equal(maze_wall(&a, maze_cell(&a, 2, 1), MAZE_NORTH), MAZE_WALL_CLOSED);
-    /* every wall is known */
-    for (uint16_t c = 0; c < maze_cells(&a); c++)
-        for (uint8_t d = 0; d < 4; d++) assert_int_not_equal(maze_wall(&a, (maze_cell_t)c, d), MAZE_WALL_UNKNOWN);
+    assert_true(truemaze_is_goal(&a, truemaze_cell(&a, 2, 1)));
+    assert_int_equal(truemaze_wall(&a, truemaze_cell(&a, 0, 0), TRUEMAZE_EAST), 1);
+    assert_int_equal(truemaze_wall(&a, truemaze_cell(&a, 0, 0), TRUEMAZE_NORTH), 0);
+    assert_int_equal(truemaze_wall(&a, truemaze_cell(&a, 1, 1), TRUEMAZE_EAST), 1);
+    assert_int_equal(truemaze_wall(&a, truemaze_cell(&a, 2, 0), TRUEMAZE_NORTH), 0);
+    assert_int_equal(truemaze_wall(&a, truemaze_cell(&a, 1, 0), TRUEMAZE_NORTH), 1);
+    assert_int_equal(truemaze_wall(&a, truemaze_cell(&a, 0, 1), TRUEMAZE_EAST), 0);
+    assert_int_equal(truemaze_wall(&a, truemaze_cell(&a, 2, 1), TRUEMAZE_NORTH), 1);
+    /* every inner wall is the same seen from either side */
+    for (uint16_t c = 0; c < truemaze_cells(&a); c++)
+        for (uint8_t d = 0; d < 4; d++) {
+            truemaze_cell_t n;
+            if (truemaze_neighbour(&a, c, d, &n))
+                assert_int_equal(truemaze_wall(&a, c, d), truemaze_wall(&a, n, truemaze_turn(d, 2)));
+        }
     assert_int_equal(mazefile_format(&a, text, sizeof text), strlen(small));
     assert_string_equal(text, small);
 }
@@ -315,8 +319,8 @@ static void test_one_cell(void **state)
     assert_int_equal(parse(&a, "o---o\n|   |\no---o\n"), 0);
     assert_int_equal(a.width, 1);
     assert_int_equal(a.height, 1);
-    assert_true(maze_is_goal(&a, 0));
-    assert_int_equal(a.start_heading, MAZE_NORTH); /* closed all round */
+    assert_true(truemaze_is_goal(&a, 0));
+    assert_int_equal(a.start_heading, TRUEMAZE_NORTH); /* closed all round */
     mazefile_format(&a, text, sizeof text);
     assert_string_equal(text, "o---o\n| S |\no---o\n");
 }
@@ -339,10 +343,10 @@ static void test_defaults(void **state)
     assert_int_equal(mazefile_parse(&a, t, strlen(t), "d", &info, err, sizeof err), 0);
     assert_false(info.has_start || info.has_goal);
     assert_int_equal(a.start, 0);
-    assert_int_equal(a.start_heading, MAZE_EAST);
+    assert_int_equal(a.start_heading, TRUEMAZE_EAST);
     assert_int_equal(goal_count(&a), 4);
-    assert_true(maze_is_goal(&a, maze_cell(&a, 1, 1)) && maze_is_goal(&a, maze_cell(&a, 2, 2)));
-    assert_true(maze_is_goal(&a, maze_cell(&a, 1, 2)) && maze_is_goal(&a, maze_cell(&a, 2, 1)));
+    assert_true(truemaze_is_goal(&a, truemaze_cell(&a, 1, 1)) && truemaze_is_goal(&a, truemaze_cell(&a, 2, 2)));
+    assert_true(truemaze_is_goal(&a, truemaze_cell(&a, 1, 2)) && truemaze_is_goal(&a, truemaze_cell(&a, 2, 1)));
 }
 
 /* The start heading is the first open side in the order N, E, S, W. */
@@ -353,15 +357,15 @@ static void test_start_heading(void **state)
         const char *t;
         uint8_t heading;
     } cases[] = {
-        { "o---o---o---o\n|           |\no   o---o   o\n|   | S     |\no   o   o   o\n|           |\no---o---o---o\n", MAZE_EAST },
-        { "o---o---o---o\n|           |\no   o---o   o\n|   | S |   |\no   o   o   o\n|           |\no---o---o---o\n", MAZE_SOUTH },
-        { "o---o---o---o\n|           |\no   o---o   o\n|     S |   |\no   o---o   o\n|           |\no---o---o---o\n", MAZE_WEST },
-        { "o---o---o---o\n|           |\no   o---o   o\n|   | S |   |\no   o---o   o\n|           |\no---o---o---o\n", MAZE_NORTH },
-        { "o---o---o---o\n|           |\no   o   o   o\n|   | S |   |\no   o---o   o\n|           |\no---o---o---o\n", MAZE_NORTH },
+        { "o---o---o---o\n|           |\no   o---o   o\n|   | S     |\no   o   o   o\n|           |\no---o---o---o\n", TRUEMAZE_EAST },
+        { "o---o---o---o\n|           |\no   o---o   o\n|   | S |   |\no   o   o   o\n|           |\no---o---o---o\n", TRUEMAZE_SOUTH },
+        { "o---o---o---o\n|           |\no   o---o   o\n|     S |   |\no   o---o   o\n|           |\no---o---o---o\n", TRUEMAZE_WEST },
+        { "o---o---o---o\n|           |\no   o---o   o\n|   | S |   |\no   o---o   o\n|           |\no---o---o---o\n", TRUEMAZE_NORTH },
+        { "o---o---o---o\n|           |\no   o   o   o\n|   | S |   |\no   o---o   o\n|           |\no---o---o---o\n", TRUEMAZE_NORTH },
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         assert_int_equal(parse(&a, cases[i].t), 0);
-        assert_int_equal(a.start, maze_cell(&a, 1, 1));
+        assert_int_equal(a.start, truemaze_cell(&a, 1, 1));
         if (a.start_heading != cases[i].heading) fail_msg("case %zu: heading %d, want %d", i, a.start_heading, cases[i].heading);
     }
 }
@@ -384,9 +388,9 @@ static void test_goal_area(void **state)
     assert_int_equal(a.width, 5);
     assert_int_equal(a.height, 3);
     assert_int_equal(goal_count(&a), 4);
-    assert_false(maze_is_goal(&a, maze_cell(&a, 2, 1))); /* the default centre is gone */
+    assert_false(truemaze_is_goal(&a, truemaze_cell(&a, 2, 1))); /* the default centre is gone */
     for (uint8_t x = 3; x <= 4; x++)
-        for (uint8_t y = 1; y <= 2; y++) assert_true(maze_is_goal(&a, maze_cell(&a, x, y)));
+        for (uint8_t y = 1; y <= 2; y++) assert_true(truemaze_is_goal(&a, truemaze_cell(&a, x, y)));
     mazefile_format(&a, text, sizeof text);
     assert_string_equal(text, t);
 }
@@ -524,7 +528,7 @@ static void test_nul_byte(void **state)
     expect_error(mms_nul, sizeof mms_nul - 1, "t.txt:1:10: NUL byte");
 }
 
-/* Sizes above MAZE_MAX_SIZE: 33x33, 33 wide, 33 high; 32x32 is fine. */
+/* Sizes above TRUEMAZE_MAX_SIZE: 33x33, 33 wide, 33 high; 32x32 is fine. */
 static void test_too_large_size(void **state)
 {
     (void)state;
@@ -663,8 +667,8 @@ static void test_format_snprintf(void **state)
     size_t need_mms = mazefile_format_mms(&a, NULL, 0);
     assert_int_equal(mazefile_format_mms(&a, buf, sizeof buf), need_mms);
     assert_string_equal(buf, "0 0 0 1 1");
-    /* a maze_t that was never set up writes nothing */
-    maze_t zero;
+    /* a truemaze_t that was never set up writes nothing */
+    truemaze_t zero;
     memset(&zero, 0, sizeof zero);
     assert_int_equal(mazefile_format(&zero, buf, sizeof buf), 0);
     assert_string_equal(buf, "");
@@ -687,7 +691,7 @@ static void test_start_in_goal_round_trip(void **state)
         "|               |\n"
         "o---o---o---o---o\n";
     assert_int_equal(parse(&a, t), 0);
-    assert_true(maze_is_goal(&a, a.start));
+    assert_true(truemaze_is_goal(&a, a.start));
     mazefile_format(&a, text, sizeof text);
     assert_string_equal(text, t);
     assert_int_equal(parse(&b, text), 0);
@@ -702,14 +706,14 @@ static void test_start_in_other_goal(void **state)
     (void)state;
     const char *t = "o---o---o---o\n| G |   |   |\no---o---o---o\n";
     assert_int_equal(parse(&a, t), 0);
-    assert_true(maze_is_goal(&a, a.start));
+    assert_true(truemaze_is_goal(&a, a.start));
     assert_int_equal(goal_count(&a), 1);
     mazefile_format(&a, text, sizeof text);
     assert_string_equal(text, "o---o---o---o\n| S |   |   |\no---o---o---o\n");
     assert_int_equal(parse(&b, text), 0);
-    assert_memory_equal(a.cell, b.cell, maze_cells(&a));
+    assert_memory_equal(a.cell, b.cell, truemaze_cells(&a));
     assert_int_equal(a.start, b.start);
-    assert_true(maze_is_goal(&b, maze_cell(&b, 1, 0)) && goal_count(&b) == 1);
+    assert_true(truemaze_is_goal(&b, truemaze_cell(&b, 1, 0)) && goal_count(&b) == 1);
 }
 
 /* ---- mms numeric format ---- */
@@ -732,12 +736,12 @@ static void test_mms_small(void **state)
     assert_int_equal(parse(&a, small), 0);
     assert_int_equal(b.width, 3);
     assert_int_equal(b.height, 2);
-    assert_memory_equal(a.cell, b.cell, maze_cells(&a));
+    assert_memory_equal(a.cell, b.cell, truemaze_cells(&a));
     /* start and goal are the defaults: (0,0) facing north, the centre */
     assert_int_equal(b.start, 0);
-    assert_int_equal(b.start_heading, MAZE_NORTH);
+    assert_int_equal(b.start_heading, TRUEMAZE_NORTH);
     assert_int_equal(goal_count(&b), 2);
-    assert_true(maze_is_goal(&b, maze_cell(&b, 1, 0)) && maze_is_goal(&b, maze_cell(&b, 1, 1)));
+    assert_true(truemaze_is_goal(&b, truemaze_cell(&b, 1, 0)) && truemaze_is_goal(&b, truemaze_cell(&b, 1, 1)));
     /* written x outside, y inside, like mms itself */
     size_t n = mazefile_format_mms(&b, text, sizeof text);
     assert_int_equal(n, strlen(text));

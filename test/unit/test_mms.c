@@ -12,7 +12,7 @@
 
 #include "mms/mms.h"
 
-static maze_t truth;
+static truemaze_t truth;
 static mms_t mm;
 
 static void stat_is(const mms_stats_t *s, const char *name, const char *want)
@@ -67,11 +67,11 @@ static void test_stats(void **state)
 
 static void setup_maze(void)
 {
-    maze_init(&truth, 3, 3);
-    for (uint16_t c = 0; c < maze_cells(&truth); c++)
-        for (uint8_t d = 0; d < 4; d++) maze_set_wall(&truth, (maze_cell_t)c, d, MAZE_WALL_OPEN);
-    maze_set_wall(&truth, maze_cell(&truth, 0, 1), MAZE_NORTH, MAZE_WALL_CLOSED);
-    maze_set_wall(&truth, maze_cell(&truth, 0, 0), MAZE_EAST, MAZE_WALL_CLOSED);
+    truemaze_init(&truth, 3, 3);
+    for (uint16_t c = 0; c < truemaze_cells(&truth); c++)
+        for (uint8_t d = 0; d < 4; d++) truemaze_set_wall(&truth, (truemaze_cell_t)c, d, 0);
+    truemaze_set_wall(&truth, truemaze_cell(&truth, 0, 1), TRUEMAZE_NORTH, 1);
+    truemaze_set_wall(&truth, truemaze_cell(&truth, 0, 0), TRUEMAZE_EAST, 1);
     mms_opts_t o = { "test", 1, 1000, -1, NULL, 0, 0 };
     mms_init(&mm, &o, &truth);
 }
@@ -136,25 +136,25 @@ static void test_drawing(void **state)
     (void)state;
     setup_maze();
     assert_string_equal(run("setColor 1 2 R"), "");
-    assert_int_equal(mm.color[maze_cell(&truth, 1, 2)], 'R');
+    assert_int_equal(mm.color[truemaze_cell(&truth, 1, 2)], 'R');
     run("clearColor 1 2");
-    assert_int_equal(mm.color[maze_cell(&truth, 1, 2)], 0);
+    assert_int_equal(mm.color[truemaze_cell(&truth, 1, 2)], 0);
     run("setText 2 1 0123456789ABC");
-    assert_string_equal(mm.text[maze_cell(&truth, 2, 1)], "0123456789");
+    assert_string_equal(mm.text[truemaze_cell(&truth, 2, 1)], "0123456789");
     run("setText 0 0 a b\x01");
     assert_string_equal(mm.text[0], "a b?");
     /* UTF-8: one '?' per character (2, 3 and 4 bytes), a stray byte alone; 10 characters */
     run("setText 1 0 \xc3\xa9t\xc3\xa9 \xe2\x82\xac\xf0\x9f\x90\xadx\x80y\xc3z");
-    assert_string_equal(mm.text[maze_cell(&truth, 1, 0)], "?t? ??x?y?");
+    assert_string_equal(mm.text[truemaze_cell(&truth, 1, 0)], "?t? ??x?y?");
     run("setText 1 0 \xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9");
-    assert_string_equal(mm.text[maze_cell(&truth, 1, 0)], "??????????");
+    assert_string_equal(mm.text[truemaze_cell(&truth, 1, 0)], "??????????");
     run("clearAllText");
     assert_string_equal(mm.text[0], "");
     run("setWall 1 1 e");
-    assert_int_equal(mm.drawn_walls[maze_cell(&truth, 1, 1)], 1u << MAZE_EAST);
-    assert_int_equal(mm.drawn_walls[maze_cell(&truth, 2, 1)], 1u << MAZE_WEST);
+    assert_int_equal(mm.drawn_walls[truemaze_cell(&truth, 1, 1)], 1u << TRUEMAZE_EAST);
+    assert_int_equal(mm.drawn_walls[truemaze_cell(&truth, 2, 1)], 1u << TRUEMAZE_WEST);
     run("clearWall 2 1 W");
-    assert_int_equal(mm.drawn_walls[maze_cell(&truth, 1, 1)], 0);
+    assert_int_equal(mm.drawn_walls[truemaze_cell(&truth, 1, 1)], 0);
     assert_int_equal(mm.invalid, 0);
 }
 

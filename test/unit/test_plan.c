@@ -24,6 +24,7 @@
 #include "plan.h"
 #include "maze/mazefile.h"
 #include "maze/mazegen.h"
+#include "maze/truebelief.h"
 
 #define TOL_S 1e-4 /* cost agreement, s */
 #define MOVES_MAX 1024 /* the tests' move buffers: zigzags of S90 turns in a classic maze pass MOVES_MAX */
@@ -275,6 +276,19 @@ static double ref_best(const maze_t *m, const plan_costs_t *c)
     return best;
 }
 
+/* The firmware's map of a true maze (every wall known), as the simulator
+ * hands it over at its seam (truebelief.h). */
+static int generated(maze_t *m, uint8_t w, uint8_t h, uint32_t seed)
+{
+    static truemaze_t t;
+    return mazegen_generate(&t, w, h, seed) != 0 ? -1 : truemaze_to_belief(&t, m);
+}
+static int loaded(maze_t *m, const char *path, char *err, size_t errlen)
+{
+    static truemaze_t t;
+    return mazefile_load(&t, path, NULL, err, errlen) != 0 ? -1 : truemaze_to_belief(&t, m);
+}
+
 /* ---- hand-made mazes ---- */
 
 static void closed_maze(maze_t *m, uint8_t w, uint8_t h)
@@ -422,7 +436,7 @@ static void test_random_against_reference(void **state)
     slalom_move_t mv[MOVES_MAX];
     int found = 0, diag_used = 0;
     for (uint32_t seed = 1; seed <= 200; seed++) {
-        assert_int_equal(mazegen_generate(&m, 6, 6, seed), 0);
+        assert_int_equal(generated(&m, 6, 6, seed), 0);
         if (seed % 2 == 0)
             for (uint16_t i = 0; i < maze_cells(&m); i++)
                 for (uint8_t d = 0; d < 2; d++)
@@ -503,7 +517,7 @@ static void test_halfsize(void **state)
     plan_costs_t c = costs(90.0f);
     for (uint32_t seed = 1; seed <= 4; seed++) {
         float t;
-        assert_int_equal(mazegen_generate(&m, 32, 32, seed), 0);
+        assert_int_equal(generated(&m, 32, 32, seed), 0);
         assert_true(plan_checked(&m, &c, mv, &t) > 0);
     }
 }
@@ -539,7 +553,7 @@ static int check_classic(const char *path, const char *name)
     char err[MAZEFILE_ERR_LEN];
     slalom_move_t mv[MOVES_MAX];
     float t, t_orth;
-    if (mazefile_load(&m, path, NULL, err, sizeof err) != 0) return 0;
+    if (loaded(&m, path, err, sizeof err) != 0) return 0;
     plan_costs_t c = costs(180.0f), c_orth = costs_s90_only(180.0f);
     int n = plan_checked(&m, &c, mv, &t);
     int n_orth = plan_checked(&m, &c_orth, mv, &t_orth);

@@ -11,7 +11,7 @@
 
 #include "world/race.h"
 
-static maze_t m;
+static truemaze_t m;
 static race_t r;
 
 /* centre of cell (x, y) in metres, 180 mm cells */
@@ -20,7 +20,7 @@ static double at(int i) { return (i + 0.5) * 0.18; }
 static void test_laps_and_best(void **state)
 {
     (void)state;
-    maze_init(&m, 4, 4); /* goal (1..2, 1..2), start (0,0) */
+    truemaze_init(&m, 4, 4); /* goal (1..2, 1..2), start (0,0) */
     race_init(&r, &m, 0.18, 600);
     assert_int_equal(race_update(&r, 0.5, at(0), at(0)), 0);
     assert_true(race_global_s(&r, 0.5) == 0.0); /* not started while in the start cell */
@@ -53,7 +53,7 @@ static void test_laps_and_best(void **state)
 static void test_over_time(void **state)
 {
     (void)state;
-    maze_init(&m, 4, 4);
+    truemaze_init(&m, 4, 4);
     race_init(&r, &m, 0.18, 10);
     race_update(&r, 0.0, at(0), at(1));
     race_update(&r, 12.0, at(1), at(1)); /* after the limit */

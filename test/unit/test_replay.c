@@ -27,6 +27,7 @@
 #include "hal_sim.h"
 #include "view/hud.h"
 #include "maze/mazegen.h"
+#include "maze/truebelief.h"
 #include "view/replay.h"
 #include "view/snap.h"
 #include "telemetry/telem.h"
@@ -42,7 +43,8 @@ static struct {
     uint8_t walls[MAZE_MAX_CELLS];
 } live[CHECK_AT];
 
-static maze_t maze, bmap;
+static truemaze_t maze; /* the truth */
+static maze_t bmap;      /* the belief the run reports */
 static double live_wheel_r_m[2]; /* the live run's model's */
 static char log_path[64];
 static double end_s;
@@ -67,7 +69,9 @@ static int setup(void **state)
     snprintf(log_path, sizeof log_path, "/tmp/test_replay_%d.lcmlog", (int)getpid());
     telem_opts_t o = { NULL, log_path, 0, NULL, "gen.txt" };
     if (telem_open(&tel, &o, &sim, err, sizeof err) != 0) return -1;
-    maze_forget(&bmap, &maze);
+    static maze_t seen_all;
+    truemaze_to_belief(&maze, &seen_all);
+    maze_forget(&bmap, &seen_all); /* size, start and goal of the truth, no walls known */
     maze_set_wall(&bmap, 0, MAZE_EAST, MAZE_WALL_CLOSED);
     int k = 0;
     while (sim_time_s(&sim) < 3.2 - 1e-9) {
@@ -81,7 +85,7 @@ static int setup(void **state)
             hud_timers(&live[k].snap, live[k].g, live[k].l, &live[k].over);
             live[k].has_belief = hal_sim_belief()->seq != 0;
             live[k].cell = hal_sim_belief()->cell;
-            memcpy(live[k].walls, hal_sim_belief()->map.cell, maze_cells(&maze));
+            memcpy(live[k].walls, hal_sim_belief()->map.cell, truemaze_cells(&maze));
             k++;
         }
     }
@@ -118,7 +122,7 @@ static void test_state_at_logged_times(void **state)
     assert_int_equal(replay_load(&r, log_path, err, sizeof err), 0);
     assert_true(fabs(replay_end_s(&r) - end_s) < 1e-9);
     assert_string_equal(r.path, "gen.txt");
-    assert_memory_equal(r.maze.cell, maze.cell, maze_cells(&maze));
+    assert_memory_equal(r.maze.cell, maze.cell, truemaze_cells(&maze));
     for (int i = 0; i < 2; i++) assert_true(r.model.wheel_r_m[i] == live_wheel_r_m[i]); /* the same seed's model */
     double count_rad = 2 * M_PI / (r.model.cfg->robot.drive[0].encoder_ppr * r.model.cfg->robot.drive[0].gear_ratio);
     assert_true(!live[0].snap.emitter[1] && live[1].snap.emitter[1]); /* the check times see both */
@@ -154,8 +158,8 @@ static void test_state_at_logged_times(void **state)
         assert_int_equal(b.map != NULL, live[k].has_belief);
         if (b.map) {
             assert_int_equal(b.cell, live[k].cell);
-            assert_memory_equal(b.map->cell, live[k].walls, maze_cells(&maze));
-            assert_true(maze_is_goal(b.map, maze.start) == maze_is_goal(&maze, maze.start));
+            assert_memory_equal(b.map->cell, live[k].walls, truemaze_cells(&maze));
+            assert_true(maze_is_goal(b.map, maze.start) == truemaze_is_goal(&maze, maze.start));
         }
     }
     replay_free(&r);
@@ -169,7 +173,7 @@ static void test_maze_ray_as_ode(void **state)
 {
     (void)state;
     static simcfg_t c;
-    static maze_t m;
+    static truemaze_t m;
     static sim_state_t s;
     config_defaults(&c);
     assert_int_equal(mazegen_generate(&m, 6, 6, 11), 0);

@@ -227,7 +227,7 @@ static void test_more_sensors(void **state)
     char *text = append(paper, more), err[600];
     static simcfg_t c;
     static sim_state_t s;
-    static maze_t m;
+    static truemaze_t m;
     config_defaults(&c);
     if (robot_load_string(&c, text, "more.ini", err, sizeof err) != 0) fail_msg("%s", err);
     free(text);
@@ -285,7 +285,7 @@ static void ukmarsbot_burst(double r_ohm, double *w, double *v, double *mah)
 {
     static simcfg_t c;
     static sim_state_t s;
-    static maze_t m;
+    static truemaze_t m;
     char err[600];
     config_defaults(&c);
     if (robot_load(&c, "robots/ukmarsbot.ini", err, sizeof err) != 0) fail_msg("%s", err);

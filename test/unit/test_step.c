@@ -24,7 +24,7 @@
 static const double steps_s[] = { 0.00025, 0.0005, 0.001, 0.002 };
 #define NSTEPS (sizeof steps_s / sizeof steps_s[0])
 
-static maze_t maze;
+static truemaze_t maze;
 static sim_model_t model;
 static simcfg_t cfg;
 static int wheels; /* [sim] wheels of the test in progress */
@@ -67,8 +67,7 @@ static double impact_depth(const char *path, double step_s)
     cfg.sim.step_s = step_s;
     cfg.sim.wheels = wheels;
     sim_model_build(&model, &cfg, 1);
-    maze_init(&maze, 1, 1);
-    maze_close_unknown(&maze);
+    truemaze_init(&maze, 1, 1);
     double c = cfg.world.cell_m;
     world_t *w = world_create(&model, &maze, c / 2, c / 2, M_PI / 2);
     assert_non_null(w);

@@ -27,6 +27,7 @@
 #include "mmlcm_sensors_t.h"
 #include "mmlcm_watch_t.h"
 #include "world/sim.h"
+#include "maze/truebelief.h"
 #include "telemetry/telem.h"
 
 /* What the subscribers saw. */
@@ -144,13 +145,13 @@ static void check_parts(const sim_state_t *sim)
 static void test_memq_messages(void **state)
 {
     (void)state;
-    static maze_t m;
+    static truemaze_t m; /* the world: every wall present */
     static sim_state_t sim;
     static telem_t t;
     simcfg_t cfg;
     char err[300];
     config_defaults(&cfg);
-    open_maze(&m);
+    truemaze_init(&m, 4, 4);
     static sim_model_t sim_model;
     sim_model_build(&sim_model, &cfg, 1);
     assert_int_equal(sim_init(&sim, &sim_model, &m, 1), 0);
@@ -248,14 +249,14 @@ static void test_memq_messages(void **state)
 static void test_belief_handed(void **state)
 {
     (void)state;
-    static maze_t m;
+    static truemaze_t m; /* the world: every wall present */
     static sim_state_t sim;
     static telem_t t;
     static sim_belief_t b;
     simcfg_t cfg;
     char err[300];
     config_defaults(&cfg);
-    open_maze(&m);
+    truemaze_init(&m, 4, 4);
     static sim_model_t sim_model;
     sim_model_build(&sim_model, &cfg, 1);
     assert_int_equal(sim_init(&sim, &sim_model, &m, 1), 0);
@@ -309,13 +310,13 @@ static void on_watch(const lcm_recv_buf_t *rb, const char *ch, const mmlcm_watch
 static void test_watch_handed(void **state)
 {
     (void)state;
-    static maze_t m;
+    static truemaze_t m; /* the world: every wall present */
     static sim_state_t sim;
     static telem_t t;
     simcfg_t cfg;
     char err[300];
     config_defaults(&cfg);
-    open_maze(&m);
+    truemaze_init(&m, 4, 4);
     static sim_model_t sim_model;
     sim_model_build(&sim_model, &cfg, 1);
     assert_int_equal(sim_init(&sim, &sim_model, &m, 1), 0);
@@ -350,9 +351,11 @@ static void test_cost_field(void **state)
 {
     (void)state;
     static maze_t m;
+    static truemaze_t seen_open; /* m as the flood sees it: unknown walls open */
     int16_t cost[MAZE_MAX_CELLS];
     maze_init(&m, 3, 3); /* goal: the centre cell 4 */
-    telem_cost_field(&m, cost);
+    truemaze_from_belief(&seen_open, &m, 1);
+    telem_cost_field(&seen_open, cost);
     int16_t want[9] = { 2, 1, 2, 1, 0, 1, 2, 1, 2 };
     for (int c = 0; c < 9; c++) assert_int_equal(cost[c], want[c]);
     /* wall cell 0 in: no way out */
@@ -360,7 +363,8 @@ static void test_cost_field(void **state)
     maze_set_wall(&m, 0, MAZE_EAST, MAZE_WALL_CLOSED);
     /* and make the long way round for cell 1: north closed */
     maze_set_wall(&m, 1, MAZE_NORTH, MAZE_WALL_CLOSED);
-    telem_cost_field(&m, cost);
+    truemaze_from_belief(&seen_open, &m, 1);
+    telem_cost_field(&seen_open, cost);
     assert_int_equal(cost[0], -1);
     assert_int_equal(cost[1], 3); /* 1 -> 2 -> 5 -> 4 */
     assert_int_equal(cost[4], 0);
@@ -370,13 +374,13 @@ static void test_cost_field(void **state)
 static void test_open_errors(void **state)
 {
     (void)state;
-    static maze_t m;
+    static truemaze_t m; /* the world: every wall present */
     static sim_state_t sim;
     static telem_t t;
     simcfg_t cfg;
     char err[300], path[64];
     config_defaults(&cfg);
-    open_maze(&m);
+    truemaze_init(&m, 4, 4);
     static sim_model_t sim_model;
     sim_model_build(&sim_model, &cfg, 1);
     assert_int_equal(sim_init(&sim, &sim_model, &m, 1), 0);

@@ -22,7 +22,7 @@
 #include "world/sim.h"
 #include "view/view.h"
 
-static maze_t maze;
+static truemaze_t maze;
 static sim_state_t sim;
 static view_t *view;
 static const view_opts_t opts = { 800, 600, 1, 1, "", 115200 };
@@ -32,10 +32,9 @@ static int setup(void **state)
     (void)state;
     static simcfg_t c; /* the sim's model reads it */
     config_defaults(&c);
-    maze_init(&maze, 4, 4); /* even size: a post at the centre (2, 2) */
-    maze_close_unknown(&maze);
+    truemaze_init(&maze, 4, 4); /* even size: a post at the centre (2, 2) */
     for (uint16_t k = 0; k < 16; k++) /* open every inner wall so only posts stand */
-        for (uint8_t d = 0; d < 4; d++) maze_set_wall(&maze, (maze_cell_t)k, d, MAZE_WALL_OPEN);
+        for (uint8_t d = 0; d < 4; d++) truemaze_set_wall(&maze, (truemaze_cell_t)k, d, 0);
     static sim_model_t sim_model;
     sim_model_build(&sim_model, &c, 1);
     if (sim_init(&sim, &sim_model, &maze, 1) != 0) return -1;
@@ -257,7 +256,7 @@ static void test_mms_reset_button(void **state)
 {
     (void)state;
     int reset = 0;
-    char colours[MAZE_MAX_CELLS] = { 0 };
+    char colours[TRUEMAZE_MAX_CELLS] = { 0 };
     view_key(view, &sim, GLFW_KEY_X); /* no mms run: nothing to press */
     view_set_mms(view, colours, NULL, 0, &reset);
     click_button(HUD_BTN_RESET);

@@ -53,7 +53,7 @@ static void seated_snap(const snap_t *s, const double wheel_r_m[2], const char *
  * cell, then replay the log at its middle: seated at each stage. */
 static void place_reset_replay(const simcfg_t *c)
 {
-    static maze_t m;
+    static truemaze_t m;
     static sim_state_t s;
     static telem_t tel;
     static replay_t r;
@@ -78,7 +78,7 @@ static void place_reset_replay(const simcfg_t *c)
     assert_int_equal(telem_close(&tel, err, sizeof err), 0);
     double x, y, h;
     world_pose(s.world, &x, &y, &h);
-    world_place(s.world, (maze_x(&m, m.start) + 0.5) * c->world.cell_m, (maze_y(&m, m.start) + 0.5) * c->world.cell_m, M_PI / 2, NULL);
+    world_place(s.world, (truemaze_x(&m, m.start) + 0.5) * c->world.cell_m, (truemaze_y(&m, m.start) + 0.5) * c->world.cell_m, M_PI / 2, NULL);
     seated(&s, "reset to the start");
     for (int side = 0; side < 2; side++) wheel_r_m[side] = s.model->wheel_r_m[side];
     sim_free(&s);

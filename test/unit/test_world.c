@@ -25,20 +25,19 @@ static int setup(void **state)
     return 0;
 }
 
-static void closed(maze_t *m, uint8_t w, uint8_t h)
+static void closed(truemaze_t *m, uint8_t w, uint8_t h)
 {
-    maze_init(m, w, h);
-    maze_close_unknown(m);
+    truemaze_init(m, w, h);
 }
 
 /* Rays hit the walls the maze says are there, at the right distance. */
 static void test_rays_hit_maze_walls(void **state)
 {
     (void)state;
-    maze_t m;
+    truemaze_t m;
     closed(&m, 4, 4);
-    maze_set_wall(&m, maze_cell(&m, 0, 0), MAZE_NORTH, MAZE_WALL_OPEN);
-    maze_set_wall(&m, maze_cell(&m, 0, 1), MAZE_NORTH, MAZE_WALL_OPEN);
+    truemaze_set_wall(&m, truemaze_cell(&m, 0, 0), TRUEMAZE_NORTH, 0);
+    truemaze_set_wall(&m, truemaze_cell(&m, 0, 1), TRUEMAZE_NORTH, 0);
     world_t *w = world_create(&model, &m, 0.5, 0.5, M_PI / 2); /* robot out of the way */
     assert_non_null(w);
     double c = cfg.world.cell_m, half = cfg.world.wall_thick_m / 2, z = 0.02;
@@ -57,11 +56,10 @@ static void test_rays_hit_maze_walls(void **state)
 static void test_centre_post_toggle(void **state)
 {
     (void)state;
-    maze_t m;
-    maze_init(&m, 4, 4); /* all walls unknown -> open; posts everywhere */
-    maze_close_unknown(&m);
+    truemaze_t m;
+    truemaze_init(&m, 4, 4); /* every wall, all opened below: posts everywhere */
     for (uint16_t c = 0; c < 16; c++)
-        for (uint8_t d = 0; d < 4; d++) maze_set_wall(&m, (maze_cell_t)c, d, MAZE_WALL_OPEN);
+        for (uint8_t d = 0; d < 4; d++) truemaze_set_wall(&m, (truemaze_cell_t)c, d, 0);
     world_t *w = world_create(&model, &m, 0.09, 0.09, M_PI / 2);
     double c = cfg.world.cell_m, y = 2 * c, z = 0.02;
     /* along the post row y = 2 cells, from the west wall's inside: the first
@@ -93,7 +91,7 @@ static void motor_world_step(world_t *w, motor_t mo[2], int cmd_l, int cmd_r)
 }
 
 /* Drive with constant commands for seconds; motors per motor.c. */
-static run_t drive(const maze_t *m, double x0, double y0, double h0, int cmd_l, int cmd_r, double seconds)
+static run_t drive(const truemaze_t *m, double x0, double y0, double h0, int cmd_l, int cmd_r, double seconds)
 {
     world_t *w = world_create(&model, m, x0, y0, h0);
     motor_t mo[2];
@@ -120,10 +118,9 @@ static run_t drive(const maze_t *m, double x0, double y0, double h0, int cmd_l, 
 static void test_straight_speed(void **state)
 {
     (void)state;
-    maze_t m;
-    maze_init(&m, 16, 1);
-    maze_close_unknown(&m);
-    for (uint8_t x = 0; x + 1 < 16; x++) maze_set_wall(&m, maze_cell(&m, x, 0), MAZE_EAST, MAZE_WALL_OPEN);
+    truemaze_t m;
+    truemaze_init(&m, 16, 1);
+    for (uint8_t x = 0; x + 1 < 16; x++) truemaze_set_wall(&m, truemaze_cell(&m, x, 0), TRUEMAZE_EAST, 0);
     /* 1.5 s: steady after ~0.6 s (the rotors' inertia) */
     run_t r = drive(&m, 0.09, 0.09, 0.0, 512, 512, 1.5);
     double want = motor_free_speed(&cfg.robot.drive[0], 512.0 / 1023 * 6.0) * model.wheel_r_m[WORLD_LEFT];
@@ -139,11 +136,10 @@ static void test_straight_speed(void **state)
 static void test_no_tunnelling(void **state)
 {
     (void)state;
-    maze_t m;
-    maze_init(&m, 3, 1);
-    maze_close_unknown(&m);
-    maze_set_wall(&m, maze_cell(&m, 0, 0), MAZE_EAST, MAZE_WALL_OPEN);
-    maze_set_wall(&m, maze_cell(&m, 1, 0), MAZE_EAST, MAZE_WALL_OPEN);
+    truemaze_t m;
+    truemaze_init(&m, 3, 1);
+    truemaze_set_wall(&m, truemaze_cell(&m, 0, 0), TRUEMAZE_EAST, 0);
+    truemaze_set_wall(&m, truemaze_cell(&m, 1, 0), TRUEMAZE_EAST, 0);
     run_t r = drive(&m, 0.09, 0.09, 0.0, 1023, 1023, 3.0);
     double wall_x = 3 * cfg.world.cell_m - cfg.world.wall_thick_m / 2;
     assert_true(r.x + cfg.robot.body_l_m / 2 <= wall_x + 0.002); /* front of the body at the wall */
@@ -156,11 +152,10 @@ static void test_no_tunnelling(void **state)
 static void test_stays_on_floor(void **state)
 {
     (void)state;
-    maze_t m;
-    maze_init(&m, 8, 8);
-    maze_close_unknown(&m);
+    truemaze_t m;
+    truemaze_init(&m, 8, 8);
     for (uint16_t c = 0; c < 64; c++)
-        for (uint8_t d = 0; d < 4; d++) maze_set_wall(&m, (maze_cell_t)c, d, MAZE_WALL_OPEN);
+        for (uint8_t d = 0; d < 4; d++) truemaze_set_wall(&m, (truemaze_cell_t)c, d, 0);
     /* circle between posts: post-free interior only exists between posts, so
      * drive slowly round the centre post on a ~0.3 m radius */
     run_t r = drive(&m, 4 * 0.18 - 0.3, 4 * 0.18, M_PI / 2, 300, 200, 60.0);
@@ -172,10 +167,9 @@ static void test_stays_on_floor(void **state)
 static void test_deterministic(void **state)
 {
     (void)state;
-    maze_t m;
-    maze_init(&m, 4, 4);
-    maze_close_unknown(&m);
-    maze_set_wall(&m, maze_cell(&m, 0, 0), MAZE_NORTH, MAZE_WALL_OPEN);
+    truemaze_t m;
+    truemaze_init(&m, 4, 4);
+    truemaze_set_wall(&m, truemaze_cell(&m, 0, 0), TRUEMAZE_NORTH, 0);
     run_t a = drive(&m, 0.09, 0.09, M_PI / 2, 700, 650, 1.5);
     run_t b = drive(&m, 0.09, 0.09, M_PI / 2, 700, 650, 1.5);
     assert_true(a.x == b.x && a.y == b.y && a.h == b.h && a.v == b.v && a.z_min == b.z_min && a.z_max == b.z_max);
@@ -188,10 +182,9 @@ static void test_deterministic(void **state)
 static void test_place(void **state)
 {
     (void)state;
-    maze_t m;
-    maze_init(&m, 4, 4);
-    maze_close_unknown(&m);
-    maze_set_wall(&m, maze_cell(&m, 0, 0), MAZE_NORTH, MAZE_WALL_OPEN);
+    truemaze_t m;
+    truemaze_init(&m, 4, 4);
+    truemaze_set_wall(&m, truemaze_cell(&m, 0, 0), TRUEMAZE_NORTH, 0);
     world_t *w = world_create(&model, &m, 0.09, 0.09, M_PI / 2);
     motor_t mo[2];
     motor_init(&mo[0], &cfg.robot.drive[0], 6.0, 0, 1.0);
@@ -228,11 +221,10 @@ static void test_place(void **state)
 static void test_heading_invariant(void **state)
 {
     (void)state;
-    maze_t m;
-    maze_init(&m, 8, 8);
-    maze_close_unknown(&m);
+    truemaze_t m;
+    truemaze_init(&m, 8, 8);
     for (uint16_t c = 0; c < 64; c++)
-        for (uint8_t d = 0; d < 4; d++) maze_set_wall(&m, (maze_cell_t)c, d, MAZE_WALL_OPEN);
+        for (uint8_t d = 0; d < 4; d++) truemaze_set_wall(&m, (truemaze_cell_t)c, d, 0);
     const int forms[2] = { SIM_WHEELS_HINGE, SIM_WHEELS_SPIN };
     double x0 = 3.5 * cfg.world.cell_m, y0 = 3.5 * cfg.world.cell_m;
     for (int f = 0; f < 2; f++) {
@@ -253,14 +245,13 @@ static void test_heading_invariant(void **state)
  * drift (m) of the robot sim_init builds for this config and seed. */
 static double veer(const simcfg_t *c, uint64_t seed)
 {
-    static maze_t m;
+    static truemaze_t m;
     static sim_state_t s;
-    maze_init(&m, 8, 8);
-    maze_close_unknown(&m);
+    truemaze_init(&m, 8, 8);
     for (uint16_t k = 0; k < 64; k++)
-        for (uint8_t d = 0; d < 4; d++) maze_set_wall(&m, (maze_cell_t)k, d, MAZE_WALL_OPEN);
-    m.start = maze_cell(&m, 4, 0);
-    m.start_heading = MAZE_NORTH;
+        for (uint8_t d = 0; d < 4; d++) truemaze_set_wall(&m, (truemaze_cell_t)k, d, 0);
+    m.start = truemaze_cell(&m, 4, 0);
+    m.start_heading = TRUEMAZE_NORTH;
     static sim_model_t s_model;
     sim_model_build(&s_model, c, seed);
     assert_int_equal(sim_init(&s, &s_model, &m, seed), 0);
@@ -299,7 +290,7 @@ static void test_asymmetry_and_variation(void **state)
 static void test_occlude_by_name(void **state)
 {
     (void)state;
-    static maze_t m;
+    static truemaze_t m;
     static sim_state_t s;
     closed(&m, 4, 4);
     assert_int_equal(sim_init(&s, &model, &m, 1), 0);
@@ -322,14 +313,13 @@ static void test_occlude_by_name(void **state)
  * the robot at full command is slower by about the drop's share. */
 static double top_speed(double drop_v, double *supply_v, double *terminal_v, double *motor_v)
 {
-    static maze_t m;
+    static truemaze_t m;
     static sim_state_t s;
-    maze_init(&m, 8, 8);
-    maze_close_unknown(&m);
+    truemaze_init(&m, 8, 8);
     for (uint16_t k = 0; k < 64; k++)
-        for (uint8_t d = 0; d < 4; d++) maze_set_wall(&m, (maze_cell_t)k, d, MAZE_WALL_OPEN);
-    m.start = maze_cell(&m, 4, 0);
-    m.start_heading = MAZE_NORTH;
+        for (uint8_t d = 0; d < 4; d++) truemaze_set_wall(&m, (truemaze_cell_t)k, d, 0);
+    m.start = truemaze_cell(&m, 4, 0);
+    m.start_heading = TRUEMAZE_NORTH;
     assert_int_equal(sim_init(&s, &model, &m, 1), 0);
     sim_set_supply_drop(&s, drop_v);
     s.cmd[0] = s.cmd[1] = MOTOR_CMD_MAX;
