@@ -48,6 +48,10 @@ struct armcore {
     unsigned take;                       /* the exception to take (STOP_TAKE) */
     uint32_t stop_addr, pc;              /* the block a stop was asked at; where to resume */
     bool sleeping, verbose, no_idle_skip, crashed;
+    mmio_status_t (*flash_write)(void *ctx, uint32_t off, unsigned size, uint32_t value, uint64_t now);
+    void *flash_ctx;
+    uint32_t fix_off, fix_n;             /* flash bytes to restore after a store the controller handled */
+    uint8_t fix[4];
     uint32_t crash_pc, bad_addr;
     int bad_type;
     char cause[200];
@@ -65,6 +69,18 @@ static uint8_t *host(armcore_t *c, uint32_t addr, uint32_t n)
     if ((uint64_t)addr + n <= m->flash_bytes) return c->flash + addr; /* the boot alias at 0 */
     if (addr >= m->sram_base && (uint64_t)addr + n <= (uint64_t)m->sram_base + m->sram_bytes) return c->sram + (addr - m->sram_base);
     return NULL;
+}
+
+/* Unicorn 2.0.1 completes a store into a read-only mapping after the hook
+ * that handled it: the FLASH controller's result is put back before the
+ * next access, block or return (and translations of those bytes dropped). */
+static void flash_fix(armcore_t *c)
+{
+    if (!c->fix_n) return;
+    memcpy(c->flash + c->fix_off, c->fix, c->fix_n);
+    uc_ctl_remove_cache(c->uc, c->fix_off, (uint64_t)c->fix_off + c->fix_n);
+    uc_ctl_remove_cache(c->uc, c->mcu->flash_base + c->fix_off, (uint64_t)c->mcu->flash_base + c->fix_off + c->fix_n);
+    c->fix_n = 0;
 }
 
 static uint32_t rd32(const uint8_t *p) { return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24; }
@@ -240,6 +256,7 @@ static void bus_fault(armcore_t *c, uint32_t addr, bool write)
 static uint64_t mmio_read(armcore_t *c, uint32_t addr, unsigned size)
 {
     uint32_t v = 0;
+    flash_fix(c);
     c->now = access_cycle(c);
     if (periph_or_bb(c, addr, size, false, &v) != MMIO_OK) bus_fault(c, addr, false);
     return v;
@@ -247,6 +264,7 @@ static uint64_t mmio_read(armcore_t *c, uint32_t addr, unsigned size)
 
 static void mmio_write(armcore_t *c, uint32_t addr, unsigned size, uint32_t v)
 {
+    flash_fix(c);
     c->now = access_cycle(c);
     if (periph_or_bb(c, addr, size, true, &v) != MMIO_OK) bus_fault(c, addr, true);
 }
@@ -338,6 +356,7 @@ static unsigned check(armcore_t *c)
 static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
 {
     armcore_t *c = u;
+    flash_fix(c);
     uint32_t addr = (uint32_t)address, n = block_insns(c, addr, size);
     c->blk_addr = addr, c->blk_size = size, c->blk_start = c->cyc;
     if (c->partial || c->stop != STOP_NONE) return;
@@ -366,7 +385,20 @@ static void on_intr(uc_engine *uc, uint32_t intno, void *u)
 static bool on_bad_mem(uc_engine *uc, uc_mem_type type, uint64_t addr, int size, int64_t value, void *u)
 {
     armcore_t *c = u;
-    c->bad_addr = (uint32_t)addr, c->bad_type = (int)type;
+    const armimage_mcu_t *m = c->mcu;
+    uint32_t a = (uint32_t)addr, n = (uint32_t)size;
+    if (type == UC_MEM_WRITE_PROT && c->flash_write && n <= 4 && host(c, a, n) && a < m->sram_base) {
+        uint32_t off = a >= m->flash_base ? a - m->flash_base : a;
+        c->now = access_cycle(c);
+        flash_fix(c);
+        mmio_status_t s = c->flash_write(c->flash_ctx, off, n, (uint32_t)value, c->now);
+        if (s == MMIO_UNMODELED) unmodeled(c, a, NULL, true);
+        if (s != MMIO_BUS_FAULT) {
+            memcpy(c->fix, c->flash + off, n), c->fix_off = off, c->fix_n = n;
+            return true;
+        }
+    }
+    c->bad_addr = a, c->bad_type = (int)type;
     return false;
 }
 
@@ -599,6 +631,7 @@ static void run_split(armcore_t *c)
     uc_ctl_remove_cache(c->uc, c->stop_addr, until + 4);
     c->partial = true, c->stop = STOP_NONE, c->bad_type = -1;
     uc_err e = uc_emu_start(c->uc, c->stop_addr | 1u, until, 0, 0);
+    flash_fix(c);
     c->partial = false;
     uc_ctl_remove_cache(c->uc, c->stop_addr, until + 4);
     if (c->crashed) return;
@@ -635,6 +668,7 @@ static void run_once(armcore_t *c)
     c->stop = STOP_NONE, c->intno = -1, c->bad_type = -1;
     c->st.starts++;
     uc_err e = uc_emu_start(c->uc, c->pc | 1u, 0, 0, 0);
+    flash_fix(c);
     switch (c->stop) {
     case STOP_TAKE:
         c->pc = c->stop_addr;
@@ -706,6 +740,7 @@ armcore_t *armcore_new(const armcore_cfg_t *cfg, char *err, size_t errn)
     if (!c || !c->flash || !c->sram) return snprintf(err, errn, "mmsim: out of memory"), armcore_free(c), NULL;
     memcpy(c->flash, cfg->image->flash, m->flash_bytes);
     c->mcu = m, c->clocks = cfg->clocks, c->verbose = cfg->verbose, c->no_idle_skip = cfg->no_idle_skip;
+    c->flash_write = cfg->flash_write, c->flash_ctx = cfg->flash_ctx;
     c->hclk = cfg->clocks && cfg->clocks->hclk ? cfg->clocks->hclk : cfg->hclk_hz;
     c->target_ps = NO_TIME, c->resume_mid = NO_ADDR;
     cortexm_init(&c->cm, m->nirq, m->prio_bits, m->cpuid);

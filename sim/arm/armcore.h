@@ -46,6 +46,12 @@ typedef struct {
     uint32_t hclk_hz;                 /* the clock before RCC says otherwise (the STM32F1's HSI: 8 MHz) */
     bool verbose;                     /* one line on stderr for each unmodeled register's first access */
     bool no_idle_skip;                /* sleep cycle by cycle (tests: the same state as skipping) */
+    /* The firmware's stores into flash (at its base or its boot alias), off
+     * from the flash's start, at core cycle now: the FLASH controller's
+     * (stm32f1_flash_mem_write), which programs the bytes it allows. NULL:
+     * such a store is a bus fault. */
+    mmio_status_t (*flash_write)(void *ctx, uint32_t off, unsigned size, uint32_t value, uint64_t now);
+    void *flash_ctx;
 } armcore_cfg_t;
 
 typedef struct {
