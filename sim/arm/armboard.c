@@ -32,6 +32,10 @@ struct armboard {
     armboard_stats_t st;
 };
 
+/* The host changed a model between runs (a byte queued, an encoder's edges, a pin driven): the core
+ * looks at every model's next event again before its next block (its cached one may be later). */
+static void poke(armboard_t *b) { armcore_cortexm(b->soc->core)->attention = true; }
+
 static int pin_is(stm32_pin_t p, unsigned port, unsigned pin) { return p.port && (unsigned)(p.port - 'A') == port && p.bit == pin; }
 
 /* ---- the chip's outside: pins, ADC, console, gyro ---- */
@@ -116,6 +120,7 @@ static void encoders(armboard_t *b, const double d_rad[2], double f, uint64_t no
         stm32f1_tim_encoder(&b->soc->tim[e->a.timer - 1], now, e->ch1_leads > 0 ? q : -q);
         if (f >= 1.0) b->enc_pos[w] = pos;
     }
+    poke(b);
 }
 
 int armboard_step(armboard_t *b)
@@ -223,6 +228,17 @@ void armboard_button(armboard_t *b, int i, int down)
         stm32f1_drive_t d = down ? (p->level ? STM32F1_DRIVE_HIGH : STM32F1_DRIVE_LOW) : STM32F1_DRIVE_FLOAT;
         stm32f1_gpio_drive(&b->soc->gpio[p->pin.port - 'A'], p->pin.bit, d);
     }
+    poke(b);
+}
+
+int armboard_send(armboard_t *b, const char *text)
+{
+    if (!b->spec.console_usart) return -1;
+    stm32_usart_t *u = &b->soc->usart[b->spec.console_usart - 1];
+    for (const char *p = text; *p; p++)
+        if (!stm32_usart_push(u, (uint8_t)*p, armcore_cycles(b->soc->core))) return poke(b), -1;
+    poke(b);
+    return 0;
 }
 
 const char *armboard_console(const armboard_t *b, size_t *len) { return *len = b->console_len, b->console; }

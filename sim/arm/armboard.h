@@ -68,6 +68,8 @@ void armboard_close(armboard_t *b);
 
 /* A person's hands: button i (-1: every button) held or released. */
 void armboard_button(armboard_t *b, int i, int down);
+/* Text typed on the console's USART (its receive queue, one frame apart). 0, or -1 if it lacks a console or the queue is full. */
+int armboard_send(armboard_t *b, const char *text);
 /* Everything the console received (NUL-terminated) and its length. */
 const char *armboard_console(const armboard_t *b, size_t *len);
 void armboard_set_echo(armboard_t *b, FILE *f);

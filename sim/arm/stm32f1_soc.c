@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <unicorn/unicorn.h>
+
 #include "arm/stm32f1_map.h"
 
 /* Enable bits not in stm32f1_map.h (RM0008 7.3.6 AHBENR, 7.3.7 APB2ENR, 7.3.8 APB1ENR) */
@@ -177,3 +179,5 @@ void stm32f1_soc_free(stm32f1_soc_t *s)
     armcore_free(s->core);
     free(s);
 }
+
+uint32_t stm32f1_soc_pc(stm32f1_soc_t *s) { return armcore_reg(s->core, UC_ARM_REG_PC); }

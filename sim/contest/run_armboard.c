@@ -26,13 +26,20 @@ typedef struct {
 
 static armboard_run_t arm_state; /* one contest per process, as run_board.c's */
 
-/* --input's button (every [button.*] of the board: bulebule reads one) */
+/* --input's button (every [button.*] of the board: bulebule reads one) and
+ * send: the text alone typed on the console's USART (no newline: bulebule's
+ * commands end where the line goes idle, its USART's IDLE interrupt) */
 static void arm_hands(run_t *r, void *self, const input_action_t *a)
 {
     armboard_t *b = ((armboard_run_t *)self)->board;
-    if (a->kind == INPUT_BUTTON_DOWN) armboard_button(b, -1, 1);
-    else if (a->kind == INPUT_BUTTON_UP) armboard_button(b, -1, 0);
-    else fprintf(stderr, "mmsim: --input: this action has no effect on an STM32 board (only button and occlude)\n");
+    switch (a->kind) {
+    case INPUT_BUTTON_DOWN: armboard_button(b, -1, 1); break;
+    case INPUT_BUTTON_UP: armboard_button(b, -1, 0); break;
+    case INPUT_SEND:
+        if (armboard_send(b, a->text) != 0) fprintf(stderr, "mmsim: --input send: no console or its input queue is full: '%s' dropped\n", a->text);
+        break;
+    default: fprintf(stderr, "mmsim: --input: switches and reset have no effect on an STM32 board (button, send, occlude do)\n"); break;
+    }
 }
 
 static int arm_open(run_t *r, void **self)
@@ -133,10 +140,14 @@ static void arm_results(run_t *r, void *self, json_t *j)
     const armboard_stats_t *st = armboard_stats(bd);
     const stm32board_spec_t *spec = armboard_spec(bd);
     stm32f1_soc_t *soc = armboard_soc(bd);
+    char addr[16];
     json_t *leds = json_object();
     for (int i = 0; i < spec->nleds; i++) json_object_set_new(leds, spec->led[i].name, json_integer(st->led_changes[i]));
     json_t *b = json_pack("{s:s, s:s, s:s, s:I}", "file", spec->path, "mcu", spec->mcu, "image", r->o->arm_elf, "cycles",
                           (json_int_t)st->cycles);
+    armcore_stats_t cs = armcore_stats(soc->core);
+    json_object_set_new(b, "exceptions", json_integer((json_int_t)cs.exceptions)); /* entered, SysTick and faults included */
+    json_object_set_new(b, "idle_cycles", json_integer((json_int_t)cs.idle_cycles));
     json_object_set_new(b, "interrupt_requests", irq_counts(soc));
     json_object_set_new(b, "led_changes", leds);
     json_object_set_new(b, "pwm_duty", json_pack("{s:[f,f], s:[f,f]}", "left", st->duty_min[0], st->duty_max[0], "right",
@@ -154,6 +165,8 @@ static void arm_results(run_t *r, void *self, json_t *j)
                                                   "saved", !a->flash_failed));
     uint32_t pc;
     const char *cause;
+    snprintf(addr, sizeof addr, "0x%08x", stm32f1_soc_pc(soc)); /* where the firmware is at the end */
+    json_object_set_new(b, "pc", json_string(addr));
     if (armcore_crashed(soc->core, &pc, &cause)) json_object_set_new(b, "crash", json_pack("{s:I, s:s}", "pc", (json_int_t)pc, "cause", cause));
     json_object_set_new(j, "board", b);
     json_object_set_new(j, "console", console_json(bd));
