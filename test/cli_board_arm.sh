@@ -57,6 +57,11 @@ cp "$T/out" "$T/a.json"
 want_rc 1 "the same run again" arm --firmware "$FW" --input "$IN"
 [ "$(strip "$T/a.json")" = "$(strip "$T/out")" ] && ok "same JSON twice" || bad "two runs differ"
 
+# ---- --batch: each maze its own board, one JSON line each
+mkdir -p "$T/batch" && cp "$MAZE" "$T/batch/a.txt" && cp "$MAZE" "$T/batch/b.txt"
+want_rc 1 "--batch DIR on the STM32 board" "$MMSIM" --board bulebule --batch "$T/batch" --jobs 2 --firmware "$FW" --time-limit 1 --input "0.4 end"
+[ "$(grep -c '"console":"boardtest' "$T/out")" = 2 ] && ok "--batch: two runs, each with its console" || bad "--batch: $(head -c 300 "$T/out")"
+
 # ---- --flash FILE: created at the end, the run's own flash
 want_rc 1 "--flash FILE" arm --firmware "$FW" --flash "$T/flash.bin" --input "0.2 end"
 [ "$(stat -c %s "$T/flash.bin" 2>/dev/null)" = 65536 ] || [ "$(jv "$T/out" "d['board']['flash']['changed']")" = False ] \
