@@ -225,7 +225,7 @@ $(B)/test/xinput: test/xinput.c | deps
 # test/test_armimage.c), built with Debian's arm-none-eabi-gcc ----
 ARM_CC    := arm-none-eabi-gcc
 ARM_FLAGS := -mcpu=cortex-m3 -mthumb -std=gnu99 -Os -g -Wall -Wextra -ffreestanding -nostdlib -Wl,--gc-sections
-ARM_TEST_ELFS := $(B)/arm/coretest.elf $(B)/arm/soctest.elf $(B)/arm/boardtest.elf
+ARM_TEST_ELFS := $(B)/arm/coretest.elf $(B)/arm/soctest.elf $(B)/arm/boardtest.elf $(B)/arm/crashtest.elf
 $(B)/arm/%.elf: test/arm/%.c test/arm/startup.c test/arm/armtest.h test/arm/link.ld | deps
 	@mkdir -p $(dir $@)
 	$(ARM_CC) $(ARM_FLAGS) -T test/arm/link.ld test/arm/startup.c $< -o $@

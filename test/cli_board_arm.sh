@@ -5,7 +5,8 @@
 # drives the motors forward while the button is held (--input button=down /
 # up), reads the encoders, the front-left IR (a hand before it: --input
 # occlude=fl) and the battery: the JSON's "board" and "console" say so, the
-# same JSON twice. Bad input is one line, exit 2: an image for another
+# same JSON twice; --batch; test/arm/crashtest.c's bus fault ends the run as
+# firmware_crashed with its PC and cause. Bad input is one line, exit 2: an image for another
 # architecture, --firmware on an AVR board, --avr on an STM32 board,
 # --flash without --firmware. --flash FILE keeps the flash (the soc's own
 # test checks its bytes). With bulebule built (`make client-bulebule`), it
@@ -56,6 +57,14 @@ cp "$T/out" "$T/a.json"
   && ok "the Blue Pill's LED followed; no unmodeled register; no crash" || bad "leds/unmodeled: $(jv "$T/a.json" "d['board']")"
 want_rc 1 "the same run again" arm --firmware "$FW" --input "$IN"
 [ "$(strip "$T/a.json")" = "$(strip "$T/out")" ] && ok "same JSON twice" || bad "two runs differ"
+
+# ---- a fault ends the run: exit_reason firmware_crashed, exit 1, the PC and cause in board.crash
+CR=$B/arm/crashtest.elf
+[ -s "$CR" ] || mk "$CR" >"$T/make.out" 2>&1 || bad "make $CR: $(tail -1 "$T/make.out")"
+want_rc 1 "a firmware that faults" arm --firmware "$CR"
+[ "$(jv "$T/out" "d['exit_reason'], d['board']['crash']['cause'].startswith('HardFault: bus fault writing 0x60000000'), 0x08000000 <= d['board']['crash']['pc'] < 0x08010000, d['sim_time_s'] < 0.02")" = "('firmware_crashed', True, True, True)" ] \
+  && ok "crash: firmware_crashed at its 10 ms store, PC in flash, the cause" || bad "crash: $(jv "$T/out" "d['exit_reason'], d['board']")"
+[ "$(wc -l <"$T/err")" = 1 ] && grep -q "the firmware crashed at 0x0800" "$T/err" && ok "crash: one line on stderr" || bad "crash stderr: $(cat "$T/err")"
 
 # ---- --batch: each maze its own board, one JSON line each
 mkdir -p "$T/batch" && cp "$MAZE" "$T/batch/a.txt" && cp "$MAZE" "$T/batch/b.txt"
