@@ -55,6 +55,8 @@ cp "$T/out" "$T/a.json"
   && ok "IR: dark, then the hand before fl saturates the 12-bit ADC" || bad "IR: $(jv "$T/a.json" "d['console'][:400]")"
 [ "$(jv "$T/a.json" "d['board']['led_changes']['bluepill'] >= 10 and d['board']['unmodeled'] == [] and 'crash' not in d['board']")" = True ] \
   && ok "the Blue Pill's LED followed; no unmodeled register; no crash" || bad "leds/unmodeled: $(jv "$T/a.json" "d['board']")"
+[ "$(jv "$T/a.json" "sorted(d['board']['adc_samples']), d['board']['adc_samples']['IN5'] == d['board']['adc_samples']['IN0'], d['board']['interrupt_requests']")" = "(['IN0', 'IN5'], True, {})" ] \
+  && ok "ADC2 sampled IN5 (fl) and IN0 (battery) once a line; no NVIC line (SysTick only)" || bad "adc/irq: $(jv "$T/a.json" "d['board']")"
 want_rc 1 "the same run again" arm --firmware "$FW" --input "$IN"
 [ "$(strip "$T/a.json")" = "$(strip "$T/out")" ] && ok "same JSON twice" || bad "two runs differ"
 
@@ -92,6 +94,8 @@ if [ -s "$BULEBULE" ]; then
   want_rc 1 "bulebule boots on its board" arm --firmware "$BULEBULE" --input "0.4 send=x; 0.6 send=x; 0.8 send=battery; 1.0 end"
   grep -q 'Processing \\"battery\\"' "$T/out" && grep -q "log_battery_voltage" "$T/out" \
     && ok "bulebule answers its console's battery command" || bad "bulebule console: $(jv "$T/out" "d['console'][:300]")"
+  [ "$(jv "$T/out" "d['board']['interrupt_requests']['TIM1_UP'] > 5000, 'DMA1_Channel2' in d['board']['interrupt_requests'], d['board']['exceptions'] > 5000")" = "(True, True, True)" ] \
+    && ok "bulebule: TIM1_UP and SysTick run, its console sent by DMA1 channel 2" || bad "bulebule irqs: $(jv "$T/out" "d['board']")"
 else
   echo "SKIP bulebule part: $BULEBULE not built (make client-bulebule)"
 fi

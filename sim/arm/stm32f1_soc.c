@@ -181,3 +181,15 @@ void stm32f1_soc_free(stm32f1_soc_t *s)
 }
 
 uint32_t stm32f1_soc_pc(stm32f1_soc_t *s) { return armcore_reg(s->core, UC_ARM_REG_PC); }
+
+const char *stm32f1_irq_name(unsigned irq)
+{
+    static const char *const names[] = { /* RM0008 rev 21 table 63, positions 0-42 */
+        "WWDG", "PVD", "TAMPER", "RTC", "FLASH", "RCC", "EXTI0", "EXTI1", "EXTI2", "EXTI3", "EXTI4",
+        "DMA1_Channel1", "DMA1_Channel2", "DMA1_Channel3", "DMA1_Channel4", "DMA1_Channel5", "DMA1_Channel6",
+        "DMA1_Channel7", "ADC1_2", "USB_HP_CAN_TX", "USB_LP_CAN_RX0", "CAN_RX1", "CAN_SCE", "EXTI9_5", "TIM1_BRK",
+        "TIM1_UP", "TIM1_TRG_COM", "TIM1_CC", "TIM2", "TIM3", "TIM4", "I2C1_EV", "I2C1_ER", "I2C2_EV", "I2C2_ER",
+        "SPI1", "SPI2", "USART1", "USART2", "USART3", "EXTI15_10", "RTCAlarm", "USBWakeup",
+    };
+    return irq < sizeof names / sizeof names[0] ? names[irq] : NULL;
+}

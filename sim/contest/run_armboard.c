@@ -94,13 +94,27 @@ static const char *arm_after(run_t *r, void *self)
     return NULL;
 }
 
-/* {"NAME": n} of the NVIC lines that were raised (RM0008 table 63's position as the name) */
+/* {"NAME": n} of the NVIC lines that were raised (RM0008 table 63's names) */
 static json_t *irq_counts(const stm32f1_soc_t *s)
 {
     json_t *j = json_object();
     char name[16];
-    for (unsigned i = 0; i < CORTEXM_IRQ_MAX; i++)
-        if (s->irq_count[i]) snprintf(name, sizeof name, "%u", i), json_object_set_new(j, name, json_integer((json_int_t)s->irq_count[i]));
+    for (unsigned i = 0; i < CORTEXM_IRQ_MAX; i++) {
+        if (!s->irq_count[i]) continue;
+        const char *n = stm32f1_irq_name(i);
+        if (!n) snprintf(name, sizeof name, "IRQ%u", i), n = name;
+        json_object_set_new(j, n, json_integer((json_int_t)s->irq_count[i]));
+    }
+    return j;
+}
+
+/* {"INn": samples} of the ADC channels sampled (ADC12_INn; 16 the temperature sensor, 17 VREFINT) */
+static json_t *adc_counts(const armboard_stats_t *st)
+{
+    json_t *j = json_object();
+    char name[8];
+    for (unsigned ch = 0; ch < 18; ch++)
+        if (st->adc_samples[ch]) snprintf(name, sizeof name, "IN%u", ch), json_object_set_new(j, name, json_integer((json_int_t)st->adc_samples[ch]));
     return j;
 }
 
@@ -149,6 +163,7 @@ static void arm_results(run_t *r, void *self, json_t *j)
     json_object_set_new(b, "exceptions", json_integer((json_int_t)cs.exceptions)); /* entered, SysTick and faults included */
     json_object_set_new(b, "idle_cycles", json_integer((json_int_t)cs.idle_cycles));
     json_object_set_new(b, "interrupt_requests", irq_counts(soc));
+    json_object_set_new(b, "adc_samples", adc_counts(st));
     json_object_set_new(b, "led_changes", leds);
     json_object_set_new(b, "pwm_duty", json_pack("{s:[f,f], s:[f,f]}", "left", st->duty_min[0], st->duty_max[0], "right",
                                                  st->duty_min[1], st->duty_max[1]));
