@@ -68,6 +68,11 @@ want_rc 1 "a firmware that faults" arm --firmware "$CR"
   && ok "crash: firmware_crashed at its 10 ms store, PC in flash, the cause" || bad "crash: $(jv "$T/out" "d['exit_reason'], d['board']")"
 [ "$(wc -l <"$T/err")" = 1 ] && grep -q "the firmware crashed at 0x0800" "$T/err" && ok "crash: one line on stderr" || bad "crash stderr: $(cat "$T/err")"
 
+# ---- --input reset: the reset button, the firmware starts over (SRAM kept)
+want_rc 1 "--input reset" arm --firmware "$FW" --input "0.35 reset; 0.5 end"
+[ "$(jv "$T/out" "d['console'].count('boardtest'), d['board']['resets']")" = "(2, 1)" ] && ok "reset: the banner again, resets 1" \
+  || bad "reset: $(jv "$T/out" "d['console'], d['board']['resets']")"
+
 # ---- --batch: each maze its own board, one JSON line each
 mkdir -p "$T/batch" && cp "$MAZE" "$T/batch/a.txt" && cp "$MAZE" "$T/batch/b.txt"
 want_rc 1 "--batch DIR on the STM32 board" "$MMSIM" --board bulebule --batch "$T/batch" --jobs 2 --firmware "$FW" --time-limit 1 --input "0.4 end"

@@ -53,6 +53,14 @@ static void soc_wdg_reset(void *ctx)
     s->resets++;
 }
 
+void stm32f1_soc_reset_pin(stm32f1_soc_t *s)
+{
+    stm32f1_rcc_reset_cause(&s->rcc, STM32F1_RST_PIN);
+    cortexm_t *cm = armcore_cortexm(s->core);
+    cm->reset_request = true, cm->attention = true;
+    s->resets++;
+}
+
 static void soc_wdg_started(void *ctx) { stm32f1_rcc_lsi_force(&((stm32f1_soc_t *)ctx)->rcc); }
 
 static mmio_status_t soc_flash_write(void *ctx, uint32_t off, unsigned size, uint32_t value, uint64_t now)

@@ -85,6 +85,8 @@ stm32f1_soc_t *stm32f1_soc_new(const stm32f1_soc_cfg_t *cfg, char *err, size_t e
 /* The flash memory saved to cfg->flash_path if it changed (whole or not at all). 0, or -1 with one line in err. */
 int stm32f1_soc_save(stm32f1_soc_t *s, char *err, size_t errn);
 void stm32f1_soc_free(stm32f1_soc_t *s);
+/* The reset button (NRST): a system reset at the core's next block, RCC_CSR's PINRSTF set (RM0008 7.1.2). */
+void stm32f1_soc_reset_pin(stm32f1_soc_t *s);
 /* The name of NVIC line irq on the F101/F102/F103 (RM0008 table 63: "TIM1_UP"), NULL past 42. */
 const char *stm32f1_irq_name(unsigned irq);
 /* The core's PC now (where a stopped or waiting firmware is). */

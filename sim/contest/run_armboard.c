@@ -38,7 +38,8 @@ static void arm_hands(run_t *r, void *self, const input_action_t *a)
     case INPUT_SEND:
         if (armboard_send(b, a->text) != 0) fprintf(stderr, "mmsim: --input send: no console or its input queue is full: '%s' dropped\n", a->text);
         break;
-    default: fprintf(stderr, "mmsim: --input: switches and reset have no effect on an STM32 board (button, send, occlude do)\n"); break;
+    case INPUT_RESET: stm32f1_soc_reset_pin(armboard_soc(b)); break;
+    default: fprintf(stderr, "mmsim: --input: switches have no effect on an STM32 board\n"); break;
     }
 }
 
