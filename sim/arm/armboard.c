@@ -88,7 +88,9 @@ static double on_rate(void *ctx, uint64_t cycle)
 /* The fraction of the PWM period input k of motor m is high. */
 static double input_high(armboard_t *b, const stm32_motor_t *m, int k)
 {
-    stm32f1_tim_out_t o = stm32f1_tim_output(&b->soc->tim[m->in[k].timer - 1], m->in[k].channel);
+    stm32f1_tim_t *t = &b->soc->tim[m->in[k].timer - 1];
+    stm32_tim_advance(t, armcore_cycles(b->soc->core)); /* preloaded CCRx and ARR take effect at an update the model makes when advanced */
+    stm32f1_tim_out_t o = stm32f1_tim_output(t, m->in[k].channel);
     if (o.enabled && o.running && o.pwm) return o.high;
     if (o.enabled) return o.level > 0 ? 1.0 : 0.0;
     stm32_pin_t p = m->in_pin[k];
