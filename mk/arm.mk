@@ -5,7 +5,7 @@
 # test/unit/test_armimage.c), built with Debian's arm-none-eabi-gcc ----
 ARM_CC    := arm-none-eabi-gcc
 ARM_FLAGS := -mcpu=cortex-m3 -mthumb -std=gnu99 -Os -g -Wall -Wextra -ffreestanding -nostdlib -Wl,--gc-sections
-ARM_TEST_ELFS := $(B)/arm/coretest.elf $(B)/arm/fputest.elf
+ARM_TEST_ELFS := $(B)/arm/coretest.elf $(B)/arm/fputest.elf $(B)/arm/soctest.elf $(B)/arm/boardtest.elf $(B)/arm/crashtest.elf
 # fputest: the Cortex-M4F's FP context across exceptions (run on the stm32f405xg)
 $(B)/arm/fputest.elf: ARM_FLAGS := -mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard $(filter-out -mcpu=cortex-m3,$(ARM_FLAGS))
 $(B)/arm/%.elf: test/firmware/arm/%.c test/firmware/arm/startup.c test/firmware/arm/armtest.h test/firmware/arm/link.ld | deps

@@ -62,13 +62,18 @@ static void usage(FILE *out)
           "             [--goal X,Y] [--eeprom FILE] [--console pty]   (the image on an emulated board, boards/NAME-*.ini:\n"
           "             pins, PWM, encoders, ADC,\n"
           "             UART; --verbose echoes its console; --input: a person's hands, T in sim seconds: switches=N,\n"
-          "             button, button=down|up, reset, occlude=SENSOR (a robot-file [ir.*]/[tof.*] name, or left|right),\n"
+          "             button, button=SECONDS|down|up, reset, occlude=SENSOR (a robot-file [ir.*]/[tof.*] name, or left|right),\n"
           "             push=DX_MM[,DYAW_DEG[,SECONDS]], lift, place, send=TEXT, end; several --input add up;\n"
           "             --eeprom FILE: the MCU's EEPROM, a raw image, loaded at power-on and saved at the end;\n"
           "             --end-on TEXT: the run ends when the console prints TEXT (exit_reason console_end);\n"
           "             --console pty: the board's UART on a pseudo-terminal (its path printed), in real time;\n"
           "             --watch NAME[,NAME...]: the firmware's global variables, by the ELF's symbols and DWARF,\n"
           "             each step on LCM channel MM_WATCH and in --report beside the true pose)\n"
+          "       mmsim --maze FILE --board NAME|FILE --firmware IMAGE.elf [--flash FILE] [--input \"T ACTION; ...\"]\n"
+          "             (an ARM image on an emulated STM32 board, its board file's [board] mcu stm32...: the STM32F103\n"
+          "             register by register on libunicorn, sim/arm/README.md; --input: button, button=SECONDS|down|up,\n"
+          "             occlude, push, lift, place, end; --flash FILE: the whole flash, loaded under the image at\n"
+          "             power-on and saved at the end; --end-on and --verbose as for --avr)\n"
           "       mmsim --maze FILE --mms COMMAND [--mms-ideal-walls] [--mms-timeout-ms N] [--mms-reset-at S|idle]\n"
           "             (an mms algorithm drives the robot through the mms text API, docs/MMS.md)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
@@ -301,6 +306,8 @@ static const cli_opt_t flags[] = {
     { .name = "mcu", .kind = CLI_STR, .off = RUN(avr_mcu) },
     { .name = "board", .kind = CLI_STR, .off = RUN(board) },
     { .name = "eeprom", .kind = CLI_STR, .off = RUN(eeprom_path) },
+    { .name = "firmware", .kind = CLI_STR, .off = RUN(arm_elf) },
+    { .name = "flash", .kind = CLI_STR, .off = RUN(flash_path) },
     { .name = "end-on", .kind = CLI_STR, .off = RUN(end_on) },
     { .name = "watch", .kind = CLI_FN, .fn = f_watch, .has_arg = 1 },
     { .name = "f-cpu", .kind = CLI_FN, .fn = f_f_cpu, .has_arg = 1 },
@@ -319,11 +326,17 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     int link_flags = cli_seen(flags, seen, "protocol") + cli_seen(flags, seen, "silence-ms");
     int mms_flags = cli_seen(flags, seen, "mms-ideal-walls") + cli_seen(flags, seen, "mms-timeout-ms") +
                     cli_seen(flags, seen, "mms-reset-at");
-    if (o->board && !o->avr_elf) return bad("%s", "--board NAME needs --avr FIRMWARE.elf|.hex");
+    if (o->arm_elf && (!o->board || o->avr_elf))
+        return bad("%s", "--firmware IMAGE.elf runs on an STM32 board: with --board NAME, not with --avr");
+    if (o->flash_path && !o->arm_elf) return bad("%s", "--flash FILE needs --board NAME --firmware IMAGE.elf (an STM32 board)");
+    if (o->arm_elf && (o->eeprom_path || o->console_pty || o->gdb_port || o->watch))
+        return bad("%s", "--firmware (an STM32 board): not with --eeprom (its flash: --flash FILE), --console pty, --gdb or --watch");
+    if (o->board && !o->avr_elf && !o->arm_elf)
+        return bad("%s", "--board NAME needs --avr FIRMWARE.elf|.hex (an AVR board) or --firmware IMAGE.elf (an STM32 board)");
     if (o->board && (o->link.device || o->link.pty || link_flags || o->avr_mcu || o->avr_f_cpu || o->mms.command))
         return bad("%s", "--board: the image runs on the board file's MCU: not with --serial/--pty, --protocol, --silence-ms, --mcu, --f-cpu or --mms");
-    if (o->board && m->batch && (o->eeprom_path || o->console_pty || o->gdb_port))
-        return bad("%s", "--board with --batch: each maze's board on its own; not with --eeprom, --console pty or --gdb");
+    if (o->board && m->batch && (o->eeprom_path || o->flash_path || o->console_pty || o->gdb_port))
+        return bad("%s", "--board with --batch: each maze's board on its own; not with --eeprom, --flash, --console pty or --gdb");
     o->serial = o->link.device || o->link.pty || (o->avr_elf && !o->board);
     if (!!o->link.device + o->link.pty + !!o->avr_elf > 1) return bad("%s", "--serial/--port, --pty and --avr exclude each other");
     if (!o->serial && link_flags) return bad("%s", "--protocol and --silence-ms need --serial DEV, --pty or --avr ELF");
@@ -419,6 +432,25 @@ static int validate(const run_opts_t *o)
     return sum.passed < sum.graded ? RUN_NOT_REACHED : RUN_OK;
 }
 
+/* --board with an STM32 board file at path: read once (o->arm_board_spec);
+ * without --robot, its default_robot. 0, or CLI_BAD_INPUT after one line. */
+static int arm_board(run_opts_t *o, const char *path)
+{
+    static stm32board_spec_t spec; /* large */
+    char err[1200];
+    if (!o->arm_elf) {
+        fprintf(stderr, "mmsim: --board %s: %s is an STM32 board: give its image with --firmware IMAGE.elf\n", o->board, path);
+        return CLI_BAD_INPUT;
+    }
+    if (stm32board_load(&spec, path, err, sizeof err) != 0) {
+        fprintf(stderr, "%s\n", err);
+        return CLI_BAD_INPUT;
+    }
+    o->arm_board_spec = &spec;
+    if (!o->robot_path && spec.default_robot[0]) o->robot_path = spec.default_robot;
+    return 0;
+}
+
 /* --board: the board file read once (o->board_spec); without --robot, the
  * board's default_robot. 0, or CLI_BAD_INPUT after one line. */
 static int board_default_robot(run_opts_t *o)
@@ -429,9 +461,10 @@ static int board_default_robot(run_opts_t *o)
         fprintf(stderr, "%s\n", err);
         return CLI_BAD_INPUT;
     }
-    /* an STM32 board file is read by sim/arm's reader, and no run driver takes an ARM image */
-    if (boardfile_family(path, err, sizeof err) == BOARDFILE_STM32) {
-        fprintf(stderr, "mmsim: --board %s: %s is an STM32 board: mmsim runs firmware images on AVR boards only\n", o->board, path);
+    /* the board file's MCU picks the core: sim/arm's reader for an STM32, sim/board's for an AVR */
+    if (boardfile_family(path, err, sizeof err) == BOARDFILE_STM32) return arm_board(o, path);
+    if (o->arm_elf) {
+        fprintf(stderr, "mmsim: --board %s: %s is an AVR board: give its image with --avr FIRMWARE.elf|.hex\n", o->board, path);
         return CLI_BAD_INPUT;
     }
     if (board_load(&spec, path, err, sizeof err) != 0) {

@@ -76,6 +76,10 @@ struct armcore {
     unsigned take;                       /* the exception to take (STOP_TAKE) */
     uint32_t stop_addr, pc;              /* the block a stop was asked at; where to resume */
     bool sleeping, verbose, no_idle_skip, crashed;
+    mmio_status_t (*flash_write)(void *ctx, uint32_t off, unsigned size, uint32_t value, uint64_t now);
+    void *flash_ctx;
+    uint32_t fix_off, fix_n;             /* flash bytes to restore after a store the controller handled */
+    uint8_t fix[4];
     uint32_t crash_pc, bad_addr;
     int bad_type;
     char cause[200];
@@ -94,10 +98,6 @@ struct armcore {
     uint32_t probe_idx;
     uint32_t saved[17];                  /* the registers a probe may change (R0-R12, SP, LR, APSR), as at the loop's head */
     cortexm_t cm_saved;
-    void (*flash_write)(void *ctx, uint32_t off, unsigned size, uint32_t value, uint64_t now);
-    void *flash_ctx;
-    uint32_t fix_off, fix_n;             /* flash bytes the FLASH model set, unicorn's raw store over them */
-    uint8_t fix[8];
 };
 
 /* ---- memory and instruction lengths ---- */
@@ -108,6 +108,18 @@ static uint8_t *host(armcore_t *c, uint32_t addr, uint32_t n)
     if ((uint64_t)addr + n <= m->flash_bytes) return c->flash + addr; /* the boot alias at 0 */
     if (addr >= m->sram_base && (uint64_t)addr + n <= (uint64_t)m->sram_base + m->sram_bytes) return c->sram + (addr - m->sram_base);
     return NULL;
+}
+
+/* Unicorn 2.0.1 completes a store into a read-only mapping after the hook
+ * that handled it: the FLASH controller's result is put back before the
+ * next access, block or return (and translations of those bytes dropped). */
+static void flash_fix(armcore_t *c)
+{
+    if (!c->fix_n) return;
+    memcpy(c->flash + c->fix_off, c->fix, c->fix_n);
+    uc_ctl_remove_cache(c->uc, c->fix_off, (uint64_t)c->fix_off + c->fix_n);
+    uc_ctl_remove_cache(c->uc, c->mcu->flash_base + c->fix_off, (uint64_t)c->mcu->flash_base + c->fix_off + c->fix_n);
+    c->fix_n = 0;
 }
 
 static uint32_t rd32(const uint8_t *p) { return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24; }
@@ -294,6 +306,7 @@ static uint64_t mmio_read(armcore_t *c, uint32_t addr, unsigned size)
 {
     uint32_t v = 0;
     if (c->probe && !probe_access(c, addr, false)) return 0;
+    flash_fix(c);
     c->now = access_cycle(c);
     if (periph_or_bb(c, addr, size, false, &v) != MMIO_OK) bus_fault(c, addr, false);
     return v;
@@ -302,6 +315,7 @@ static uint64_t mmio_read(armcore_t *c, uint32_t addr, unsigned size)
 static void mmio_write(armcore_t *c, uint32_t addr, unsigned size, uint32_t v)
 {
     if (c->probe && !probe_access(c, addr, true)) return;
+    flash_fix(c);
     c->now = access_cycle(c);
     if (periph_or_bb(c, addr, size, true, &v) != MMIO_OK) bus_fault(c, addr, true);
 }
@@ -484,29 +498,10 @@ static void probe_block(armcore_t *c, uint32_t addr, uint32_t size, uint32_t n)
     c->nat_start = c->cyc, c->cyc += n, c->probe_idx++;
 }
 
-/* A store into flash: the FLASH model's bytes, put back over the raw store unicorn makes after the hook. */
-static bool on_flash_store(uc_engine *uc, uc_mem_type type, uint64_t addr, int size, int64_t value, void *u)
-{
-    armcore_t *c = u;
-    const armimage_mcu_t *m = c->mcu;
-    uint32_t off = addr >= m->flash_base ? (uint32_t)addr - m->flash_base : (uint32_t)addr;
-    if (!c->flash_write || size < 1 || size > 8 || (uint64_t)off + (uint64_t)size > m->flash_bytes) return false;
-    c->now = access_cycle(c);
-    c->flash_write(c->flash_ctx, off, (unsigned)size, (uint32_t)value, c->now);
-    c->cm.attention = true;
-    memcpy(c->fix, c->flash + off, (size_t)size), c->fix_off = off, c->fix_n = (uint32_t)size;
-    return true;
-}
-
-static void flash_fixup(armcore_t *c)
-{
-    if (c->fix_n) memcpy(c->flash + c->fix_off, c->fix, c->fix_n), c->fix_n = 0;
-}
-
 static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
 {
     armcore_t *c = u;
-    flash_fixup(c);
+    flash_fix(c);
     uint32_t addr = (uint32_t)address, n = block_insns(c, addr, size);
     if (c->probe) { if (c->probe_res == PROBE_RUNNING) probe_block(c, addr, size, n); return; }
     c->blk_addr = addr, c->blk_size = size, c->blk_start = c->cyc;
@@ -540,7 +535,21 @@ static bool on_bad_mem(uc_engine *uc, uc_mem_type type, uint64_t addr, int size,
 {
     armcore_t *c = u;
     if (c->probe) { c->probe_res = PROBE_NEVER; return false; }
-    c->bad_addr = (uint32_t)addr, c->bad_type = (int)type;
+    const armimage_mcu_t *m = c->mcu;
+    uint32_t a = (uint32_t)addr, n = (uint32_t)size;
+    if (type == UC_MEM_WRITE_PROT && c->flash_write && n <= 4 && host(c, a, n) && a < m->sram_base) {
+        uint32_t off = a >= m->flash_base ? a - m->flash_base : a;
+        c->now = access_cycle(c);
+        flash_fix(c);
+        mmio_status_t s = c->flash_write(c->flash_ctx, off, n, (uint32_t)value, c->now);
+        if (s == MMIO_UNMODELED) unmodeled(c, a, NULL, true);
+        if (s != MMIO_BUS_FAULT) {
+            c->cm.attention = true; /* the controller's next event (BSY's end) moved */
+            memcpy(c->fix, c->flash + off, n), c->fix_off = off, c->fix_n = n;
+            return true;
+        }
+    }
+    c->bad_addr = a, c->bad_type = (int)type;
     return false;
 }
 
@@ -877,6 +886,7 @@ static void run_split(armcore_t *c)
     uc_ctl_remove_cache(c->uc, c->stop_addr, until + 4);
     c->partial = true, c->stop = STOP_NONE, c->bad_type = -1;
     uc_err e = uc_emu_start(c->uc, c->stop_addr | 1u, until, 0, 0);
+    flash_fix(c);
     c->partial = false;
     uc_ctl_remove_cache(c->uc, c->stop_addr, until + 4);
     if (c->crashed) return;
@@ -913,7 +923,7 @@ static void run_once(armcore_t *c)
     c->stop = STOP_NONE, c->intno = -1, c->bad_type = -1;
     c->st.starts++;
     uc_err e = uc_emu_start(c->uc, c->pc | 1u, 0, 0, 0);
-    flash_fixup(c);
+    flash_fix(c);
     switch (c->stop) {
     case STOP_TAKE:
         c->pc = c->stop_addr;
@@ -965,7 +975,6 @@ static bool map_memories(armcore_t *c, char *err, size_t errn)
     uc_hook h;
     if (!e) e = uc_hook_add(c->uc, &h, UC_HOOK_BLOCK, (void *)on_block, c, 1, 0);
     if (!e) e = uc_hook_add(c->uc, &h, UC_HOOK_INTR, (void *)on_intr, c, 1, 0);
-    if (!e) e = uc_hook_add(c->uc, &h, UC_HOOK_MEM_WRITE_PROT, (void *)on_flash_store, c, 1, 0);
     if (!e) e = uc_hook_add(c->uc, &h, UC_HOOK_MEM_INVALID, (void *)on_bad_mem, c, 1, 0);
     if (e) snprintf(err, errn, "mmsim: unicorn: %s", uc_strerror(e));
     return e == UC_ERR_OK;

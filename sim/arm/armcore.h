@@ -48,10 +48,11 @@ typedef struct {
     uint32_t hclk_hz;                 /* the clock before RCC says otherwise (the STM32F1's HSI: 8 MHz) */
     bool verbose;                     /* one line on stderr for each unmodeled register's first access */
     bool no_idle_skip;                /* sleep cycle by cycle, run every wait loop (tests: the same state as skipping) */
-    /* The firmware's store into flash (off from the flash base, or its alias at 0), at core cycle
-     * now: the FLASH model programs armcore_flash()'s bytes as the manual says (the store's own
-     * bytes are replaced by them before the next translated block). NULL: a store is a fault. */
-    void (*flash_write)(void *ctx, uint32_t off, unsigned size, uint32_t value, uint64_t now);
+    /* The firmware's stores into flash (at its base or its boot alias), off
+     * from the flash's start, at core cycle now: the FLASH controller's
+     * (stm32f1_flash_mem_write), which programs the bytes it allows. NULL:
+     * such a store is a bus fault. */
+    mmio_status_t (*flash_write)(void *ctx, uint32_t off, unsigned size, uint32_t value, uint64_t now);
     void *flash_ctx;
 } armcore_cfg_t;
 

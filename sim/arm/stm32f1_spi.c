@@ -158,7 +158,10 @@ static mmio_status_t write_cr1(stm32_spi_t *s, uint32_t v)
     if (s->modf_seen) s->sr &= ~SR_MODF; /* SR read, then CR1 write */
     s->modf_seen = false;
     s->cr1 = v & 0xFFFFu;
-    if ((s->cr1 & CR1_MSTR) && (s->cr1 & CR1_SSM) && !(s->cr1 & CR1_SSI)) { /* NSS low: mode fault */
+    /* NSS low in an enabled master: a mode fault (RM0008 25.3.10). Not while SPE is 0: libopencm3's
+     * spi_init_master, then SSM, then SSI (every libopencm3 F1 firmware, bulebule's setup_spi) passes
+     * through MSTR with SSM and SSI 0 before SPE and runs on the chip */
+    if ((s->cr1 & CR1_SPE) && (s->cr1 & CR1_MSTR) && (s->cr1 & CR1_SSM) && !(s->cr1 & CR1_SSI)) {
         s->sr |= SR_MODF;
         s->cr1 &= ~(CR1_SPE | CR1_MSTR);
     }

@@ -217,11 +217,11 @@ static void init_serial(stm32f4_soc_t *s, mmio_irq_t irq, mmio_dma_req_t dreq)
 }
 
 /* The firmware's store into flash, to the FLASH interface (RM0090 3.5.4) at its cycle. */
-static void soc_flash_write(void *ctx, uint32_t off, unsigned size, uint32_t value, uint64_t now)
+static mmio_status_t soc_flash_write(void *ctx, uint32_t off, unsigned size, uint32_t value, uint64_t now)
 {
     stm32f4_soc_t *s = ctx;
     stm32f4_flash_ops.advance(&s->flash, now);
-    stm32f4_flash_mem_write(&s->flash, off, size, value);
+    return stm32f4_flash_mem_write(&s->flash, off, size, value);
 }
 
 int stm32f4_soc_init(stm32f4_soc_t *soc, armcore_t **core, const armcore_cfg_t *cfg, uint32_t hse_hz,

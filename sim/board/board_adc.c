@@ -34,6 +34,7 @@
 #include <simavr/sim_irq.h>
 #include <simavr/sim_regbit.h>
 
+#include "world/analog.h"
 #include "world/sensors/ir.h"
 
 /* An ADC pin no part drives (channel ch, see the top of the file), V. */
@@ -55,13 +56,12 @@ static double channel_volts(board_adc_t *a, unsigned ch)
 {
     const board_spec_t *sp = a->spec;
     if ((int)ch == sp->bat_channel) /* the supply after the diode (board.c sets its drop on the sim), divided */
-        return sim_supply_v(a->sim) * sp->bat_r_bottom_ohm / (sp->bat_r_top_ohm + sp->bat_r_bottom_ohm);
+        return analog_divider_v(a->sim, sp->bat_r_top_ohm, sp->bat_r_bottom_ohm);
     int ir = a->ir_of_channel[ch];
     if (ir < 0) return undriven_volts(a, ch);
     for (int e = 0; e < sp->nemitters; e++) sim_emitter_set(a->sim, (unsigned)sp->emitter_group[e], (int)a->emitter_on[e]);
     /* counts -> the voltage that converts back to the same count (rounded up to the mV) */
-    unsigned c = sim_ir_read(a->sim, (unsigned)ir);
-    return ceil(c * sp->vcc_v * 1000.0 / 1023.0) / 1000.0;
+    return ceil(analog_ir_mv(a->sim, (unsigned)ir, sp->vcc_v, 1023.0)) / 1000.0;
 }
 
 /* channel ch's input now, mV rounded up (the ladder's as its part gives it) */

@@ -82,6 +82,12 @@ static int action(input_t *in, double t, const char *w, size_t n, char *err, siz
                add(in, t + INPUT_BUTTON_S, INPUT_BUTTON_UP, 0, NULL, err, errlen, col);
     if (!strcmp(word, "button=down")) return add(in, t, INPUT_BUTTON_DOWN, 0, NULL, err, errlen, col);
     if (!strcmp(word, "button=up")) return add(in, t, INPUT_BUTTON_UP, 0, NULL, err, errlen, col);
+    if (!strncmp(word, "button=", 7)) { /* a press held SECONDS: a short or a long one to a firmware that tells them apart */
+        double s;
+        if (io_decimal(word + 7, strlen(word + 7), &s) != 0 || s < INPUT_PRESS_MIN_S || s > INPUT_PRESS_MAX_S)
+            return fail(err, errlen, col, "button=SECONDS wants 0.01 to 60 seconds (or down, up)", word);
+        return add(in, t, INPUT_BUTTON_DOWN, 0, NULL, err, errlen, col) || add(in, t + s, INPUT_BUTTON_UP, 0, NULL, err, errlen, col);
+    }
     if (!strcmp(word, "reset")) return add(in, t, INPUT_RESET, 0, NULL, err, errlen, col);
     if (!strncmp(word, "occlude=", 8)) {
         if (!word[8] || n - 8 >= INPUT_NAME_MAX) return fail(err, errlen, col, "occlude=NAME wants a sensor's name from the robot file", word);
@@ -92,7 +98,7 @@ static int action(input_t *in, double t, const char *w, size_t n, char *err, siz
     if (!strcmp(word, "lift")) return add(in, t, INPUT_LIFT, 0, NULL, err, errlen, col);
     if (!strcmp(word, "place")) return add(in, t, INPUT_PLACE, 0, NULL, err, errlen, col);
     return fail(err, errlen, col,
-                "unknown action (switches=N, button, button=down, button=up, reset, occlude=NAME, push=DX_MM[,DYAW_DEG[,SECONDS]], lift, place, send=TEXT, end)",
+                "unknown action (switches=N, button, button=SECONDS, button=down, button=up, reset, occlude=NAME, push=DX_MM[,DYAW_DEG[,SECONDS]], lift, place, send=TEXT, end)",
                 word);
 }
 

@@ -2,6 +2,7 @@
  * T ACTION; ..."` (T in simulation seconds, ascending or not). Actions:
  *   switches=N      the function switches to N (0..15)
  *   button          pressed for 100 ms (a down now and an up 0.1 s later)
+ *   button=SECONDS  pressed for SECONDS (0.01-60): a short or a long press
  *   button=down     button=up
  *   reset           the reset button
  *   occlude=NAME    an object ~20 mm ahead of the robot file's [ir.NAME] or
@@ -32,6 +33,8 @@
 #define INPUT_TEXT_MAX 80     /* bytes of a send's text */
 #define INPUT_NAME_MAX 16     /* bytes of an occluded sensor's name with the NUL (as the robot file's names) */
 #define INPUT_BUTTON_S 0.1    /* s a `button` press lasts */
+#define INPUT_PRESS_MIN_S 0.01 /* s: the shortest button=SECONDS */
+#define INPUT_PRESS_MAX_S 60.0 /* s: the longest button=SECONDS */
 #define INPUT_OCCLUDE_S 0.3   /* s an occlusion lasts */
 #define INPUT_OCCLUDE_M 0.020 /* m from the sensor to the object */
 #define INPUT_PUSH_S 1.0      /* s a push lasts when SECONDS is not given */

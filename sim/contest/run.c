@@ -63,6 +63,7 @@ int run_json_line(json_t *j)
 
 static const run_driver_t *pick_driver(const run_opts_t *o)
 {
+    if (o->arm_elf) return &run_armboard;
     if (o->board) return &run_board;
     if (o->avr_elf) return &run_avr;
     if (o->serial) return &run_serial;

@@ -90,7 +90,7 @@ struct run_s {
     input_t input;      /* --input's actions, consumed as they fall due */
 };
 
-extern const run_driver_t run_firmware, run_mms, run_scripted, run_serial, run_avr, run_board;
+extern const run_driver_t run_firmware, run_mms, run_scripted, run_serial, run_avr, run_board, run_armboard;
 
 /* The HUD's Connect: the serial link to port at baud opened for the run
  * under way (run_link.c), its run_serial state in *self. 0, or -1 with

@@ -60,7 +60,7 @@ grep -q "unknown key (a chassis has: body_w_mm .* body_yaw_inertia_kgm2)$" "$T/e
 want_rc 2 "--board nosuch" $G "$S" --board nosuch --avr "$T/none.elf" --maze $M
 says "--board nosuch" "the boards there: .*ukmarsbot-v1.3"
 want_rc 2 "--board bulebule (an STM32 board)" $G "$S" --board bulebule --avr "$T/none.elf" --maze $M
-says "--board bulebule" "is an STM32 board: mmsim runs firmware images on AVR boards only"
+says "--board bulebule" "is an STM32 board: give its image with --firmware IMAGE.elf"
 for b in ukmarsbot ukmarsbot-v1.3 ukmarsbot-basic-v1.3; do
   want_rc 2 "--board $b (then the missing image)" $G "$S" --board $b --avr "$T/none.elf" --maze $M
   says "--board $b" "none.elf"

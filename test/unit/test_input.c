@@ -96,8 +96,15 @@ static void test_several_add_up(void **state)
     assert_true(in.a[1].kind == INPUT_RESET);
     assert_true(in.a[2].kind == INPUT_SEND && !strcmp(in.a[2].text, "B"));
     assert_true(in.a[3].kind == INPUT_END);
+    static input_t p;
+    assert_int_equal(input_parse(&p, "1 button=0.75", err, sizeof err), 0); /* a press held 0.75 s */
+    assert_int_equal(p.n, 2);
+    assert_true(p.a[0].kind == INPUT_BUTTON_DOWN && p.a[1].kind == INPUT_BUTTON_UP);
+    assert_float_equal(p.a[1].t_s - p.a[0].t_s, 0.75, 1e-12);
+    assert_int_equal(input_parse(&p, "1 button=61", err, sizeof err), -1);
+    assert_int_equal(input_parse(&p, "1 button=x", err, sizeof err), -1);
     assert_int_equal(input_add(&in, "3 wave", err, sizeof err), -1);
-    assert_string_equal(err, "--input:3:3: unknown action (switches=N, button, button=down, button=up, reset, "
+    assert_string_equal(err, "--input:3:3: unknown action (switches=N, button, button=SECONDS, button=down, button=up, reset, "
                              "occlude=NAME, push=DX_MM[,DYAW_DEG[,SECONDS]], lift, place, send=TEXT, end): wave");
 }
 

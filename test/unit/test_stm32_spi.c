@@ -156,6 +156,9 @@ static void test_mode_fault_and_unmodeled(void **state)
     assert_int_equal(rd(CR1, 0) & (SPE | MSTR), 0);
     wr(CR1, MSTR | SSM | SSI, 1); /* SR read then CR1 write clears MODF */
     assert_false(rd(SR, 1) & S_MODF);
+    wr(CR1, MSTR | SSM, 2); /* disabled: no mode fault (libopencm3's set-up order) */
+    assert_false(rd(SR, 2) & S_MODF);
+    assert_int_equal(rd(CR1, 2) & MSTR, MSTR);
     assert_int_equal(stm32_spi_ops.write(&spi, CR1, 4, MSTR | SSM | SSI | CRCEN), MMIO_UNMODELED);
     assert_int_equal(stm32_spi_ops.write(&spi, CR1, 4, SSM | SSI | SPE), MMIO_UNMODELED); /* slave */
     uint32_t v;

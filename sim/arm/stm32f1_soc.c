@@ -1,0 +1,203 @@
+/* stm32f1_soc.c - an STM32F103 as one chip (see stm32f1_soc.h). */
+#include "stm32f1_soc.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <unicorn/unicorn.h>
+
+#include "arm/stm32f1_map.h"
+
+/* Enable bits not in stm32f1_map.h (RM0008 7.3.6 AHBENR, 7.3.7 APB2ENR, 7.3.8 APB1ENR) */
+#define EN_DMA1 (1u << 0)    /* AHB DMA1EN */
+#define EN_ADC1 (1u << 9)    /* APB2 ADC1EN */
+#define EN_ADC2 (1u << 10)   /* APB2 ADC2EN */
+#define EN_SPI1 (1u << 12)   /* APB2 SPI1EN */
+#define EN_USART1 (1u << 14) /* APB2 USART1EN */
+#define EN_SPI2 (1u << 14)   /* APB1 SPI2EN */
+#define EN_USART2 (1u << 17) /* APB1 USART2EN */
+#define EN_USART3 (1u << 18) /* APB1 USART3EN */
+
+/* ---- the wiring: lines into the NVIC, the DMA's bus, the reset ---- */
+static void soc_irq(void *ctx, unsigned irq, bool level)
+{
+    stm32f1_soc_t *s = ctx;
+    if (irq >= CORTEXM_IRQ_MAX) return;
+    if (level && !s->irq_level[irq]) s->irq_count[irq]++;
+    s->irq_level[irq] = level;
+    if (s->core) cortexm_set_irq(armcore_cortexm(s->core), irq, level);
+}
+
+static bool soc_bus_read(void *ctx, uint32_t addr, unsigned size, uint32_t *v)
+{
+    stm32f1_soc_t *s = ctx;
+    mmio_bus_t b = armcore_bus(s->core);
+    return b.read(b.ctx, addr, size, v);
+}
+
+static bool soc_bus_write(void *ctx, uint32_t addr, unsigned size, uint32_t v)
+{
+    stm32f1_soc_t *s = ctx;
+    mmio_bus_t b = armcore_bus(s->core);
+    return b.write(b.ctx, addr, size, v);
+}
+
+/* The IWDG's timeout: a system reset with IWDGRSTF (RM0008 19.3.2, 7.3.10). */
+static void soc_wdg_reset(void *ctx)
+{
+    stm32f1_soc_t *s = ctx;
+    stm32f1_rcc_reset_cause(&s->rcc, STM32F1_RST_IWDG);
+    cortexm_t *cm = armcore_cortexm(s->core);
+    cm->reset_request = true, cm->attention = true;
+    s->resets++;
+}
+
+void stm32f1_soc_reset_pin(stm32f1_soc_t *s)
+{
+    stm32f1_rcc_reset_cause(&s->rcc, STM32F1_RST_PIN);
+    cortexm_t *cm = armcore_cortexm(s->core);
+    cm->reset_request = true, cm->attention = true;
+    s->resets++;
+}
+
+static void soc_wdg_started(void *ctx) { stm32f1_rcc_lsi_force(&((stm32f1_soc_t *)ctx)->rcc); }
+
+static mmio_status_t soc_flash_write(void *ctx, uint32_t off, unsigned size, uint32_t value, uint64_t now)
+{
+    stm32f1_soc_t *s = ctx;
+    stm32f1_flash_ops.advance(&s->flash, now);
+    return stm32f1_flash_mem_write(&s->flash, off, size, value);
+}
+
+/* ---- placing the models ---- */
+static void place(stm32f1_soc_t *s, uint32_t base, uint32_t size, const mmio_ops_t *ops, void *self)
+{
+    s->region[s->nregions++] = (mmio_region_t){ base, size, ops, self };
+}
+
+static void place_gated(stm32f1_soc_t *s, uint32_t base, uint32_t size, stm32f1_bus_t bus, uint32_t bit,
+                        const mmio_ops_t *ops, void *self)
+{
+    stm32f1_gate_t *g = &s->gate[s->ngates++];
+    stm32f1_gate_init(g, &s->rcc, bus, bit, ops, self);
+    place(s, base, size, &g->bus_ops, g);
+}
+
+static void init_models(stm32f1_soc_t *s, const stm32f1_soc_cfg_t *cfg)
+{
+    mmio_irq_t irq = { soc_irq, s };
+    mmio_dma_req_t dma = { stm32_dma_request, &s->dma };
+    stm32f1_rcc_init(&s->rcc, cfg->hse_hz, irq);
+    const mmio_clocks_t *clk = stm32f1_rcc_clocks(&s->rcc);
+    stm32f1_afio_init(&s->afio);
+    stm32f1_exti_init(&s->exti, &s->afio, irq);
+    for (unsigned p = 0; p < STM32F1_GPIO_PORTS; p++) {
+        stm32f1_gpio_init(&s->gpio[p], p, &s->exti);
+        if (cfg->pin_cb) stm32f1_gpio_on_change(&s->gpio[p], cfg->pin_cb, cfg->pin_ctx);
+    }
+    for (unsigned n = 1; n <= 4; n++) stm32f1_tim_init(&s->tim[n - 1], n, clk, irq, dma);
+    stm32f1_iwdg_init(&s->iwdg, clk, (stm32f1_iwdg_hooks_t){ soc_wdg_reset, soc_wdg_started, s });
+    stm32_adc_init(&s->adc[0], 1, clk, irq, dma, cfg->volts, cfg->volts_ctx, cfg->vdda_v);
+    stm32_adc_init(&s->adc[1], 2, clk, irq, (mmio_dma_req_t){ NULL, NULL }, cfg->volts, cfg->volts_ctx, cfg->vdda_v);
+    stm32_adc_share_irq(&s->adc[0], &s->adc[1]);
+    stm32_dma_init(&s->dma, (mmio_bus_t){ soc_bus_read, soc_bus_write, s }, irq);
+    for (unsigned u = 0; u < 3; u++) stm32_usart_init(&s->usart[u], u + 1, clk, irq, dma, cfg->sink[u], cfg->sink_ctx[u]);
+    for (unsigned i = 0; i < 2; i++) stm32_spi_init(&s->spi[i], i + 1, clk, irq, dma, cfg->spi_slave[i]);
+}
+
+static void place_models(stm32f1_soc_t *s)
+{
+    const uint32_t sz = STM32F1_PERIPH_SIZE;
+    place(s, STM32F1_RCC_BASE, sz, &stm32f1_rcc_ops, &s->rcc);
+    place(s, STM32F1_FLASHIF_BASE, sz, &stm32f1_flash_ops, &s->flash);
+    place(s, STM32F1_EXTI_BASE, sz, &stm32f1_exti_ops, &s->exti);
+    place(s, STM32F1_IWDG_BASE, sz, &stm32f1_iwdg_ops, &s->iwdg);
+    place_gated(s, STM32_DMA1_BASE, STM32_DMA_SIZE, STM32F1_AHB, EN_DMA1, &stm32_dma_ops, &s->dma);
+    place_gated(s, STM32F1_AFIO_BASE, sz, STM32F1_APB2, STM32F1_EN_AFIO, &stm32f1_afio_ops, &s->afio);
+    for (unsigned p = 0; p < STM32F1_GPIO_PORTS; p++)
+        place_gated(s, STM32F1_GPIOA_BASE + sz * p, sz, STM32F1_APB2, STM32F1_EN_GPIO(p), &stm32f1_gpio_ops[p], &s->gpio[p]);
+    place_gated(s, STM32_ADC1_BASE, STM32_ADC_SIZE, STM32F1_APB2, EN_ADC1, &stm32_adc_ops, &s->adc[0]);
+    place_gated(s, STM32_ADC2_BASE, STM32_ADC_SIZE, STM32F1_APB2, EN_ADC2, &stm32_adc_ops, &s->adc[1]);
+    place_gated(s, STM32F1_TIM1_BASE, sz, STM32F1_APB2, STM32F1_EN_TIM1, &stm32f1_tim_ops[0], &s->tim[0]);
+    place_gated(s, STM32F1_TIM2_BASE, sz, STM32F1_APB1, STM32F1_EN_TIM2, &stm32f1_tim_ops[1], &s->tim[1]);
+    place_gated(s, STM32F1_TIM3_BASE, sz, STM32F1_APB1, STM32F1_EN_TIM3, &stm32f1_tim_ops[2], &s->tim[2]);
+    place_gated(s, STM32F1_TIM4_BASE, sz, STM32F1_APB1, STM32F1_EN_TIM4, &stm32f1_tim_ops[3], &s->tim[3]);
+    place_gated(s, STM32_SPI1_BASE, STM32_SPI_SIZE, STM32F1_APB2, EN_SPI1, &stm32_spi_ops, &s->spi[0]);
+    place_gated(s, STM32_SPI2_BASE, STM32_SPI_SIZE, STM32F1_APB1, EN_SPI2, &stm32_spi_ops, &s->spi[1]);
+    place_gated(s, STM32_USART1_BASE, STM32_USART_SIZE, STM32F1_APB2, EN_USART1, &stm32_usart_ops, &s->usart[0]);
+    place_gated(s, STM32_USART2_BASE, STM32_USART_SIZE, STM32F1_APB1, EN_USART2, &stm32_usart_ops, &s->usart[1]);
+    place_gated(s, STM32_USART3_BASE, STM32_USART_SIZE, STM32F1_APB1, EN_USART3, &stm32_usart_ops, &s->usart[2]);
+}
+
+/* The flash at power-on: the file's bytes (erased if none) under the image's. */
+static uint8_t *flash_at_power_on(stm32f1_soc_t *s, const stm32f1_soc_cfg_t *cfg, char *err, size_t errn)
+{
+    const armimage_t *img = cfg->image;
+    uint32_t bytes = img->mcu->flash_bytes;
+    uint8_t *mem = malloc(bytes);
+    if (!mem) return snprintf(err, errn, "mmsim: out of memory"), NULL;
+    memset(mem, 0xFF, bytes);
+    s->flash.mem = mem;
+    if (cfg->flash_path) {
+        char what[64];
+        snprintf(what, sizeof what, "%s's flash", img->mcu->name);
+        if (stm32f1_flash_load(&s->flash, cfg->flash_path, what, err, errn) != 0) return free(mem), NULL;
+    }
+    memcpy(mem, img->flash, img->flash_end);
+    return mem;
+}
+
+stm32f1_soc_t *stm32f1_soc_new(const stm32f1_soc_cfg_t *cfg, char *err, size_t errn)
+{
+    const armimage_mcu_t *m = cfg->image->mcu;
+    if (m->core != ARMCORE_M3 || strncmp(m->name, "stm32f103", 9) != 0)
+        return snprintf(err, errn, "mmsim: %s is not an STM32F103", m->name), NULL;
+    stm32f1_soc_t *s = calloc(1, sizeof *s);
+    if (!s) return snprintf(err, errn, "mmsim: out of memory"), NULL;
+    init_models(s, cfg);
+    uint32_t page = m->flash_bytes > (128u << 10) ? STM32F1_FLASH_PAGE_HD : STM32F1_FLASH_PAGE_MD;
+    stm32f1_flash_init(&s->flash, NULL, m->flash_bytes, page, stm32f1_rcc_clocks(&s->rcc), (mmio_irq_t){ soc_irq, s });
+    place_models(s);
+    uint8_t *mem = flash_at_power_on(s, cfg, err, errn);
+    if (!mem) return free(s), NULL;
+    armimage_t img = *cfg->image;
+    img.flash = mem;
+    armcore_cfg_t cc = { .image = &img, .regions = s->region, .nregions = s->nregions, .clocks = stm32f1_rcc_clocks(&s->rcc),
+                         .hclk_hz = STM32F1_HSI_HZ, .verbose = cfg->verbose, .no_idle_skip = cfg->no_idle_skip,
+                         .flash_write = soc_flash_write, .flash_ctx = s };
+    s->core = armcore_new(&cc, err, errn);
+    free(mem);
+    if (!s->core) return free(s), NULL;
+    s->flash.mem = armcore_flash(s->core);
+    s->flash.changed = 0;
+    if (cfg->flash_path) snprintf(s->flash_path, sizeof s->flash_path, "%s", cfg->flash_path);
+    return s;
+}
+
+int stm32f1_soc_save(stm32f1_soc_t *s, char *err, size_t errn)
+{
+    if (!s->flash_path[0] || !s->flash.changed) return 0;
+    return stm32f1_flash_save(&s->flash, s->flash_path, err, errn);
+}
+
+void stm32f1_soc_free(stm32f1_soc_t *s)
+{
+    if (!s) return;
+    armcore_free(s->core);
+    free(s);
+}
+
+uint32_t stm32f1_soc_pc(stm32f1_soc_t *s) { return armcore_reg(s->core, UC_ARM_REG_PC); }
+
+const char *stm32f1_irq_name(unsigned irq)
+{
+    static const char *const names[] = { /* RM0008 rev 21 table 63, positions 0-42 */
+        "WWDG", "PVD", "TAMPER", "RTC", "FLASH", "RCC", "EXTI0", "EXTI1", "EXTI2", "EXTI3", "EXTI4",
+        "DMA1_Channel1", "DMA1_Channel2", "DMA1_Channel3", "DMA1_Channel4", "DMA1_Channel5", "DMA1_Channel6",
+        "DMA1_Channel7", "ADC1_2", "USB_HP_CAN_TX", "USB_LP_CAN_RX0", "CAN_RX1", "CAN_SCE", "EXTI9_5", "TIM1_BRK",
+        "TIM1_UP", "TIM1_TRG_COM", "TIM1_CC", "TIM2", "TIM3", "TIM4", "I2C1_EV", "I2C1_ER", "I2C2_EV", "I2C2_ER",
+        "SPI1", "SPI2", "USART1", "USART2", "USART3", "EXTI15_10", "RTCAlarm", "USBWakeup",
+    };
+    return irq < sizeof names / sizeof names[0] ? names[irq] : NULL;
+}
