@@ -54,6 +54,12 @@ struct armcore {
     armcore_unmodeled_t unm[ARMCORE_UNMODELED_MAX];
     int nunm;
     armcore_stats_t st;
+    /* the debugger's (armgdb.c): breakpoints checked at each block's start, a cycle to halt at */
+    uint32_t brk[ARMCORE_BREAKS_MAX];
+    int nbrk;
+    uint64_t halt_at, brk_cyc, split_to; /* halt at this cycle; the first breakpoint's in this block; the split's end */
+    uint32_t brk_skip;                   /* resumed here after a halt: its breakpoint not taken again at once */
+    bool halted, brk_hit;
     blk_t blk[BLK_CACHE];
 };
 
@@ -335,12 +341,29 @@ static unsigned check(armcore_t *c)
     return 0;
 }
 
+/* The debugger's stop in the block at addr: its first breakpoint's cycle, or halt_at; at most the target. */
+static uint64_t debug_stop(armcore_t *c, uint32_t addr, uint32_t size)
+{
+    uint64_t at = c->halt_at < c->cyc ? c->cyc : c->halt_at;
+    bool skip = c->brk_skip == addr;
+    c->brk_skip = NO_ADDR;
+    for (int i = 0; i < c->nbrk; i++) {
+        uint32_t b = c->brk[i];
+        if (b < addr || b - addr >= size || (skip && b == addr)) continue;
+        uint64_t k = c->cyc + (b == addr ? 0u : count_insns(c, addr, b));
+        if (k < c->brk_cyc) c->brk_cyc = k;
+    }
+    if (c->brk_cyc < at) at = c->brk_cyc;
+    return at < c->target ? at : c->target;
+}
+
 static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
 {
     armcore_t *c = u;
     uint32_t addr = (uint32_t)address, n = block_insns(c, addr, size);
     c->blk_addr = addr, c->blk_size = size, c->blk_start = c->cyc;
     if (c->partial || c->stop != STOP_NONE) return;
+    c->brk_cyc = NO_TIME;
     c->stop_mid = addr == c->resume_mid;
     if (c->stop_mid) {
         c->resume_mid = NO_ADDR;
@@ -351,7 +374,8 @@ static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
         unsigned e = check(c);
         if (e) { c->take = e, c->stop = STOP_TAKE, c->stop_addr = addr; uc_emu_stop(uc); return; }
     }
-    if (c->cyc + n > c->target) { c->stop = STOP_SPLIT, c->stop_addr = addr; uc_emu_stop(uc); return; }
+    uint64_t stop_at = c->nbrk || c->halt_at != NO_TIME ? debug_stop(c, addr, size) : c->target;
+    if (c->cyc + n > stop_at) { c->stop = STOP_SPLIT, c->stop_addr = addr, c->split_to = stop_at; uc_emu_stop(uc); return; }
     c->cyc += n;
 }
 
@@ -581,6 +605,7 @@ static void sleep_step(armcore_t *c)
         return;
     }
     uint64_t to = c->ev_next < c->target ? c->ev_next : c->target;
+    if (c->halt_at > c->cyc && c->halt_at < to) to = c->halt_at;
     if (c->no_idle_skip && to > c->cyc + 1) to = c->cyc + 1;
     c->st.idle_cycles += to - c->cyc;
     c->cyc = to;
@@ -589,8 +614,9 @@ static void sleep_step(armcore_t *c)
 /* The first k = target - cycle instructions of the block at stop_addr, through an exit there (its cached translation dropped before and after). */
 static void run_split(armcore_t *c)
 {
-    uint64_t k = c->target - c->cyc;
+    uint64_t k = c->split_to - c->cyc;
     c->pc = c->stop_addr;
+    c->brk_hit = c->split_to == c->brk_cyc;
     if (k == 0) {
         if (c->stop_mid) c->resume_mid = c->stop_addr; /* still a remainder when it resumes */
         return;
@@ -650,9 +676,14 @@ static void run_once(armcore_t *c)
 
 static int run(armcore_t *c)
 {
+    if (c->halted) c->halted = false, c->brk_skip = c->pc;
     while (!c->crashed && c->cyc < c->target) {
         if (c->sleeping) sleep_step(c);
         else run_once(c);
+        if (!c->crashed && (c->brk_hit || c->cyc >= c->halt_at)) {
+            c->halted = true, c->brk_hit = false, c->halt_at = NO_TIME;
+            return ARMCORE_HALTED;
+        }
     }
     return c->crashed;
 }
@@ -708,8 +739,9 @@ armcore_t *armcore_new(const armcore_cfg_t *cfg, char *err, size_t errn)
     c->mcu = m, c->clocks = cfg->clocks, c->verbose = cfg->verbose, c->no_idle_skip = cfg->no_idle_skip;
     c->hclk = cfg->clocks && cfg->clocks->hclk ? cfg->clocks->hclk : cfg->hclk_hz;
     c->target_ps = NO_TIME, c->resume_mid = NO_ADDR;
+    c->halt_at = NO_TIME, c->brk_cyc = NO_TIME, c->brk_skip = NO_ADDR;
     cortexm_init(&c->cm, m->nirq, m->prio_bits, m->cpuid);
-    memcpy(c->reg, cfg->regions, sizeof *c->reg * (size_t)cfg->nregions);
+    if (cfg->nregions) memcpy(c->reg, cfg->regions, sizeof *c->reg * (size_t)cfg->nregions);
     c->reg[cfg->nregions] = (mmio_region_t){ CORTEXM_PPB_BASE, CORTEXM_PPB_BYTES, &cortexm_ops, &c->cm };
     c->nreg = cfg->nregions + 1;
     qsort(c->reg, (size_t)c->nreg, sizeof *c->reg, by_base);
@@ -759,3 +791,28 @@ int armcore_read(armcore_t *c, uint32_t addr, void *buf, size_t n)
 }
 const armcore_unmodeled_t *armcore_unmodeled(const armcore_t *c, int *n) { *n = c->nunm; return c->unm; }
 armcore_stats_t armcore_stats(const armcore_t *c) { return c->st; }
+
+/* ---- the debugger's hooks ---- */
+int armcore_set_breaks(armcore_t *c, const uint32_t *addr, int n)
+{
+    if (n < 0 || n > ARMCORE_BREAKS_MAX) return -1;
+    for (int i = 0; i < n; i++) c->brk[i] = addr[i] & ~1u;
+    c->nbrk = n;
+    return 0;
+}
+void armcore_halt_at(armcore_t *c, uint64_t cycle) { c->halt_at = cycle; }
+int armcore_set_reg(armcore_t *c, int r, uint32_t v)
+{
+    if (r == UC_ARM_REG_PC) {
+        if ((v & ~1u) != c->pc) c->pc = v & ~1u, c->resume_mid = NO_ADDR, c->sleeping = false;
+        return 0;
+    }
+    return uc_reg_write(c->uc, r, &v) == UC_ERR_OK ? 0 : -1;
+}
+int armcore_write(armcore_t *c, uint32_t addr, const void *buf, size_t n)
+{
+    const armimage_mcu_t *m = c->mcu;
+    if (addr < m->sram_base || n > m->sram_bytes || addr - m->sram_base > m->sram_bytes - n) return -1;
+    memcpy(c->sram + (addr - m->sram_base), buf, n);
+    return 0;
+}
