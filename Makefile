@@ -225,7 +225,9 @@ $(B)/test/xinput: test/xinput.c | deps
 # test/test_armimage.c), built with Debian's arm-none-eabi-gcc ----
 ARM_CC    := arm-none-eabi-gcc
 ARM_FLAGS := -mcpu=cortex-m3 -mthumb -std=gnu99 -Os -g -Wall -Wextra -ffreestanding -nostdlib -Wl,--gc-sections
-ARM_TEST_ELFS := $(B)/arm/coretest.elf
+ARM_TEST_ELFS := $(B)/arm/coretest.elf $(B)/arm/gdbtest.elf
+# the gdb stub's probe (test/cli_armgdb.sh): an ARM image on the core alone, with or without --gdb
+test-run: $(B)/test/armgdb_probe
 $(B)/arm/%.elf: test/arm/%.c test/arm/startup.c test/arm/armtest.h test/arm/link.ld | deps
 	@mkdir -p $(dir $@)
 	$(ARM_CC) $(ARM_FLAGS) -T test/arm/link.ld test/arm/startup.c $< -o $@

@@ -61,6 +61,7 @@ int main(int argc, char **argv)
         armcore_free(c), armimage_free(&img);
         return 3;
     }
+    if (g) fprintf(stderr, "armgdb_probe: halted until gdb attaches to 127.0.0.1:%u (target remote :%u)\n", port, port);
     int rc = 0;
     for (long i = 1; i <= ms && !rc; i++) rc = g ? armgdb_run_until_ps(g, (uint64_t)i * STEP_PS) : armcore_run_until_ps(c, (uint64_t)i * STEP_PS);
     armgdb_free(g);
