@@ -278,6 +278,10 @@ static void test_faults(void **state)
     crash_at(FAULT_UNMAPPED, "0x60000000");
     crash_at(FAULT_PERIPH, "0x40010014");
     crash_at(UNDEF, "UNDEFINSTR");
+    /* the fault status decoded (B3.2.15-16) and the PC a HardFault handler would read from the frame */
+    crash_at(FAULT_UNMAPPED, "CFSR 0x00008200: PRECISERR BFARVALID (BFAR 0x60000000), HFSR 0x40000000: FORCED; stacked PC 0x0800");
+    crash_at(FAULT_PERIPH, "CFSR 0x00008200: PRECISERR BFARVALID (BFAR 0x40010014), HFSR 0x40000000: FORCED; stacked PC 0x0800");
+    crash_at(UNDEF, "CFSR 0x00010000: UNDEFINSTR, HFSR 0x40000000: FORCED; stacked PC 0x0800");
 }
 
 static void test_clock_switch(void **state)

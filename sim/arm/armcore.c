@@ -50,7 +50,7 @@ struct armcore {
     bool sleeping, verbose, no_idle_skip, crashed;
     uint32_t crash_pc, bad_addr;
     int bad_type;
-    char cause[200];
+    char cause[400];
     armcore_unmodeled_t unm[ARMCORE_UNMODELED_MAX];
     int nunm;
     armcore_stats_t st;
@@ -139,11 +139,24 @@ static void regs_write(armcore_t *c, const int *r, const uint32_t *v, int n)
  * its block's start, so the cycle never depends on the chunking. */
 static uint64_t access_cycle(const armcore_t *c) { return c->nat_start; }
 
+#define HFSR_FORCED (1u << 30) /* B3.2.16: a fault escalated to HardFault */
+#define HFSR_VECTTBL (1u << 1) /* a vector table read failed */
+
+/* The run ends: the cause, then CFSR and HFSR decoded and the PC the frame would hold (what a HardFault handler reads). */
 static void crash(armcore_t *c, uint32_t pc, const char *cause)
 {
     if (c->crashed) return;
+    char fsr[200];
     c->crashed = true, c->crash_pc = pc;
-    snprintf(c->cause, sizeof c->cause, "%s", cause);
+    cortexm_fault_text(&c->cm, fsr, sizeof fsr);
+    snprintf(c->cause, sizeof c->cause, "%s (%s; stacked PC 0x%08x)", cause, fsr, pc);
+}
+
+/* A fault's status bits set as the hardware would (CFSR's, escalated to HardFault), then the crash. */
+static void fault(armcore_t *c, uint32_t pc, uint32_t cfsr, uint32_t hfsr, const char *cause)
+{
+    c->cm.cfsr |= cfsr, c->cm.hfsr |= hfsr;
+    crash(c, pc, cause);
 }
 
 /* ---- time ---- */
@@ -418,10 +431,11 @@ static bool vector(armcore_t *c, unsigned exc, uint32_t *pc)
     uint32_t at = c->cm.vtor + 4u * exc;
     const uint8_t *p = host(c, at, 4);
     if (!p) return snprintf(m, sizeof m, "HardFault: vector %u at 0x%08x is outside flash and SRAM (VTOR 0x%08x)", exc, at, c->cm.vtor),
-                  crash(c, c->pc, m), false;
+                  fault(c, c->pc, 0, HFSR_VECTTBL, m), false;
     *pc = rd32(p);
     if (!(*pc & 1u))
-        return snprintf(m, sizeof m, "HardFault: vector %u (0x%08x) has no Thumb bit: UsageFault INVSTATE", exc, *pc), crash(c, c->pc, m),
+        return snprintf(m, sizeof m, "HardFault: vector %u (0x%08x) has no Thumb bit: UsageFault INVSTATE", exc, *pc),
+               fault(c, c->pc, 0x20000u, HFSR_FORCED, m),
                false;
     return true;
 }
@@ -449,14 +463,14 @@ static void enter(armcore_t *c, unsigned exc, uint32_t ret)
     wr32(f + 24, ret), wr32(f + 28, xpsr);
     if (exc >= EXC_HARDFAULT && exc <= EXC_USAGEFAULT) {
         char m[120];
-        snprintf(m, sizeof m, "%s taken (CFSR 0x%08x, HFSR 0x%08x)", exc_name(exc), c->cm.cfsr, c->cm.hfsr);
+        snprintf(m, sizeof m, "%s taken", exc_name(exc));
         crash(c, ret, m);
         return;
     }
     if (!mem_rw(c, sp, f, 32, true)) {
         char m[120];
         snprintf(m, sizeof m, "HardFault: stacking for %s at SP 0x%08x outside SRAM (STKERR)", exc == EXC_SVCALL ? "SVCall" : "an exception", sp);
-        crash(c, ret, m);
+        fault(c, ret, 0x1000u, HFSR_FORCED, m); /* BFSR STKERR */
         return;
     }
     if (!vector(c, exc, &handler_pc)) return;
@@ -479,13 +493,13 @@ static void unstack(armcore_t *c, uint32_t excret)
     char m[120];
     if (!mem_rw(c, sp, f, 32, false)) {
         snprintf(m, sizeof m, "HardFault: unstacking at SP 0x%08x outside SRAM (UNSTKERR)", sp);
-        crash(c, c->pc, m);
+        fault(c, c->pc, 0x800u, HFSR_FORCED, m);
         return;
     }
     uint32_t xpsr = rd32(f + 28), ret = rd32(f + 24), nsp = sp + 32u + ((xpsr & XPSR_ALIGN) ? 4u : 0u);
     if (!(xpsr & XPSR_T)) {
         snprintf(m, sizeof m, "HardFault: return to 0x%08x with the frame's Thumb bit clear (UsageFault INVSTATE)", ret);
-        crash(c, ret, m);
+        fault(c, ret, 0x20000u, HFSR_FORCED, m);
         return;
     }
     set_ipsr(c, thread ? 0 : (xpsr & 0x1FFu), xpsr);
@@ -514,7 +528,7 @@ static void exc_return(armcore_t *c)
     uint32_t low = excret & 0xFu;
     if ((excret & 0xFFFFFFF0u) != 0xFFFFFFF0u || (low != 1u && low != 9u && low != 0xDu) || cortexm_return(&c->cm, exc) != 0) {
         snprintf(m, sizeof m, "HardFault: exception return 0x%08x from exception %u (UsageFault INVPC)", excret, exc);
-        crash(c, c->blk_addr, m);
+        fault(c, c->blk_addr, 0x40000u, HFSR_FORCED, m);
         return;
     }
     int group;
@@ -556,8 +570,10 @@ static void on_stop_intr(armcore_t *c)
         [18] = "UsageFault INVSTATE: Thumb bit clear", [22] = "UsageFault UNALIGNED: an unaligned access" };
     const char *w = c->intno >= 0 && c->intno < (int)(sizeof why / sizeof why[0]) && why[c->intno] ? why[c->intno] : "an exception unicorn raised";
     snprintf(m, sizeof m, "HardFault: %s (unicorn exception %d)", w, c->intno);
-    c->cm.cfsr |= c->intno == 1 ? 0x10000u : c->intno == 18 ? 0x20000u : c->intno == 22 ? 0x1000000u : 0u;
-    crash(c, pc, m);
+    /* UFSR UNDEFINSTR, INVSTATE, NOCP, UNALIGNED; BFSR IBUSERR (a fetch), PRECISERR (no address known); a BKPT: DEBUGEVT */
+    uint32_t cfsr = c->intno == 1 ? 0x10000u : c->intno == 18 ? 0x20000u : c->intno == 17 ? 0x80000u : c->intno == 22 ? 0x1000000u
+                  : c->intno == 3 ? 0x100u : c->intno == 4 ? 0x200u : 0u;
+    fault(c, pc, cfsr, c->intno == 7 ? 1u << 31 : cfsr ? HFSR_FORCED : 0u, m);
 }
 
 /* emu_start returned on its own: WFI/WFE (the PC past it) or a memory fault. */
@@ -573,9 +589,10 @@ static void on_stop_none(armcore_t *c, uc_err e)
     if (e != UC_ERR_OK) {
         const char *what = c->bad_type == UC_MEM_FETCH_UNMAPPED || c->bad_type == UC_MEM_FETCH_PROT ? "fetching"
                          : c->bad_type == UC_MEM_WRITE_UNMAPPED || c->bad_type == UC_MEM_WRITE_PROT ? "writing" : "reading";
-        c->cm.bfar = c->bad_addr, c->cm.cfsr |= 0x8200u, c->cm.hfsr |= 1u << 30;
+        bool fetch = c->bad_type == UC_MEM_FETCH_UNMAPPED || c->bad_type == UC_MEM_FETCH_PROT;
+        if (!fetch) c->cm.bfar = c->bad_addr;
         snprintf(m, sizeof m, "HardFault: bus fault %s 0x%08x (%s)", what, c->bad_addr, uc_strerror(e));
-        crash(c, pc, m);
+        fault(c, pc, fetch ? 0x100u : 0x8200u, HFSR_FORCED, m); /* IBUSERR; PRECISERR with BFARVALID */
         return;
     }
     uint8_t h[4] = { 0 };
