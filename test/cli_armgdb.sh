@@ -36,10 +36,13 @@ start() { PORT=$(free_port)
 # finish NAME: the probe's exit code into NAME.rc
 finish() { wait "$PPID_"; echo $? >"$T/$1.rc"; PPID_=; }
 # run_gdb NAME GDB-COMMANDS: gdb-multiarch's commands (one a line, each an -ex: an error does not end the
-# script) after `target remote :PORT`, its output in NAME.gdb, its exit code in NAME.gdbrc
+# script) after `target remote :PORT`, its output in NAME.gdb, its exit code in NAME.gdbrc. `set osabi
+# none` (OSABI= to change it): Debian's gdb-multiarch otherwise takes the image for GNU/Linux and
+# single-steps by breakpoints; with none it steps with the stub's s (vCont;s).
 run_gdb() { local args=() line
   while IFS= read -r line; do args+=(-ex "$line"); done <<<"$2"
-  timeout 120 gdb-multiarch -batch -nx -ex 'set confirm off' -ex 'set pagination off' -ex "target remote :$PORT" "${args[@]}" "$ELF" \
+  timeout 120 gdb-multiarch -batch -nx -ex 'set confirm off' -ex 'set pagination off' -ex "set osabi ${OSABI:-none}" \
+    -ex "target remote :$PORT" "${args[@]}" "$ELF" \
     >"$T/$1.gdb" 2>&1
   echo $? >"$T/$1.gdbrc"; }
 # session NAME MS GDB-COMMANDS: the probe for MS ms with gdb's commands
@@ -120,7 +123,45 @@ session kill $MS "break gdb_tick
 continue
 kill"
 has kill '^Breakpoint 1, gdb_tick' "stopped at gdb_tick"
+OSABI=GNU/Linux session linux $MS "break gdb_tick
+continue
+next
+next
+print g_speed
+delete
+disconnect"
+has linux '^\$1 = -2$' "osabi GNU/Linux (gdb steps by breakpoints): next, next: g_speed -2"
 same kill plain
+
+# ---- continue to the run's end: gdb is told the program exited ----
+session end $MS "continue"
+has end '^\[Inferior 1 (Remote target) exited normally\]' "the run's end: exited normally (W00)"
+same end plain
+
+# ---- a crash halts for gdb (SIGSEGV, registers readable), then the run ends as without gdb ----
+session crash $MS "break gdb_tick
+continue
+set var \$pc = 0x60000000
+continue
+print/x \$pc
+continue"
+has crash '^Program received signal SIGSEGV' "a bus fault fetching 0x60000000: gdb sees SIGSEGV"
+has crash '^\$1 = 0x60000000$' "the PC readable at the crash"
+has crash '^Program terminated with signal SIGSEGV' "continue: the program terminated (X0b)"
+[ "$(cat "$T/crash.rc")" = 1 ] && grep -q '^crashed at 0x60000000: HardFault: bus fault fetching 0x60000000 .*(CFSR 0x00000100: IBUSERR, HFSR 0x40000000: FORCED; stacked PC 0x60000000)$' "$T/crash.out" \
+  && ok "crash: the probe's cause decodes CFSR (IBUSERR) and HFSR (FORCED) with the stacked PC, exit 1" || bad "crash: exit $(cat "$T/crash.rc"): $(cat "$T/crash.out")"
+
+# ---- stepi over the WFI ends when the core wakes: in the SysTick handler ----
+session wfi $MS "break *0x080001bc
+continue
+stepi
+print \$xpsr & 0x1ff
+delete
+disconnect"
+has wfi '^Breakpoint 1, main () at test/arm/gdbtest.c:33' "stopped at the WFI (0x080001bc)"
+has wfi '^systick_handler () at test/arm/gdbtest.c:24' "stepi over the WFI: the SysTick handler's first instruction"
+has wfi '^\$1 = 15$' "IPSR 15"
+same wfi plain
 
 # ---- an SRAM write is seen by the firmware ----
 session write $MS "break gdb_tick

@@ -622,7 +622,6 @@ static void sleep_step(armcore_t *c)
         return;
     }
     uint64_t to = c->ev_next < c->target ? c->ev_next : c->target;
-    if (c->halt_at > c->cyc && c->halt_at < to) to = c->halt_at;
     if (c->no_idle_skip && to > c->cyc + 1) to = c->cyc + 1;
     c->st.idle_cycles += to - c->cyc;
     c->cyc = to;
@@ -695,9 +694,10 @@ static int run(armcore_t *c)
 {
     if (c->halted) c->halted = false, c->brk_skip = c->pc;
     while (!c->crashed && c->cyc < c->target) {
+        bool slept = c->sleeping;
         if (c->sleeping) sleep_step(c);
         else run_once(c);
-        if (!c->crashed && (c->brk_hit || c->cyc >= c->halt_at)) {
+        if (!c->crashed && (c->brk_hit || (c->cyc >= c->halt_at && !slept && !c->sleeping))) { /* a step over WFI ends after it wakes */
             c->halted = true, c->brk_hit = false, c->halt_at = NO_TIME;
             return ARMCORE_HALTED;
         }

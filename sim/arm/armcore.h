@@ -92,7 +92,8 @@ armcore_stats_t armcore_stats(const armcore_t *c);
  * and reached through the core's exact stop, so a halt is invisible to the
  * run: flash is never patched); armcore_halt_at halts it at a cycle (a
  * single step: the current cycle + 1; an exception taken at the step lands
- * at its handler's first instruction). armcore_run_to / run_until_ps then
+ * at its handler's first instruction; a step over WFI/WFE ends when the core
+ * wakes, as on the hardware). armcore_run_to / run_until_ps then
  * return ARMCORE_HALTED; the next run resumes there, that address's
  * breakpoint not taken again before its instruction has run. */
 #define ARMCORE_HALTED 2

@@ -234,6 +234,17 @@ static void resume(armgdb_t *g, const char *p, bool step)
     g->halted = false;
 }
 
+/* vCont: the first action is the one thread's (c, C, s, S); vCont? lists them, so gdb steps with s (not by breakpoints). */
+static void vcont(armgdb_t *g, const char *p)
+{
+    if (!strcmp(p, "vCont?")) { reply(g, "vCont;c;C;s;S"); return; }
+    if (strncmp(p, "vCont;", 6) != 0) { reply(g, ""); return; }
+    char a = p[6];
+    if (a == 'c' || a == 'C') resume(g, "", false);
+    else if (a == 's' || a == 'S') resume(g, "", true);
+    else reply(g, "E01");
+}
+
 /* One packet's data (NUL-terminated). */
 static void dispatch(armgdb_t *g, char *p)
 {
@@ -262,9 +273,12 @@ static void dispatch(armgdb_t *g, char *p)
     case 'M': write_mem(g, p + 1); break;
     case 'c': resume(g, p + 1, false); break;
     case 's': resume(g, p + 1, true); break;
+    case 'C': /* with a signal: there is no process to deliver it to; as c and s */
+    case 'S': resume(g, strchr(p, ';') ? strchr(p, ';') + 1 : "", p[0] == 'S'); break;
     case 'Z': breakpoint(g, p + 1, true); break;
     case 'z': breakpoint(g, p + 1, false); break;
     case 'H': reply(g, "OK"); break;
+    case 'v': vcont(g, p); break;
     case 'q': query(g, p); break;
     case 'D': reply(g, "OK"); drop_client(g); break;
     case 'k': drop_client(g); break;
@@ -382,6 +396,7 @@ armgdb_t *armgdb_new(armcore_t *core, unsigned port, char *err, size_t errn)
 void armgdb_free(armgdb_t *g)
 {
     if (!g) return;
+    if (g->fd >= 0 && !g->halted) reply(g, armcore_crashed(g->core, NULL, NULL) ? "X0b" : "W00"); /* gdb waits: the run ended */
     if (g->fd >= 0) close(g->fd);
     if (g->listen_fd >= 0) close(g->listen_fd);
     free(g);

@@ -3,8 +3,9 @@
  * with `target remote :PORT`. It serves what gdb needs for an M-profile
  * image: qSupported, the target description (qXfer:features:read, the
  * org.gnu.gdb.arm.m-profile feature: r0-r12, sp, lr, pc, xpsr), ?, g/G,
- * p/P, m/M, c, s, Z0/z0 and Z1/z1 (both are the core's breakpoints: flash
- * is never patched), k, D and the interrupt byte (0x03).
+ * p/P, m/M, c/C, s/S, vCont (c, s: gdb single-steps with the core's own
+ * step, not by breakpoints), Z0/z0 and Z1/z1 (both are the core's
+ * breakpoints: flash is never patched), k, D and the interrupt byte (0x03).
  *
  * Memory: gdb reads flash and SRAM; it writes SRAM only. Peripheral, PPB
  * and bit-band addresses are refused (an error reply): a read through the
@@ -39,7 +40,9 @@ armgdb_t *armgdb_new(armcore_t *core, unsigned port, char *err, size_t errn);
 /* Run the core to simulated time t_ps (armcore_run_until_ps), halting and
  * serving gdb as above. 0, or 1 if the firmware crashed. */
 int armgdb_run_until_ps(armgdb_t *g, uint64_t t_ps);
-/* The sockets closed (gdb sees the connection end). NULL is fine. */
+/* The run's end: a gdb waiting for the core to stop is told the program
+ * exited (W00; X0b, signal 11, after a crash), then the sockets closed.
+ * NULL is fine. */
 void armgdb_free(armgdb_t *g);
 
 #endif
