@@ -342,6 +342,47 @@ static void test_chunking_same_state(void **state)
     rig_free(r), rig_free(q);
 }
 
+/* The debugger's halts are invisible: single steps (armcore_halt_at) through
+ * the first cycles, then breakpoints at 64 of the addresses stepped through
+ * (main's loop and the interrupt handlers), each hit resumed, end in the
+ * state of the run without them; a breakpoint halts with the PC at its address. */
+static void test_debug_halts_same_state(void **state)
+{
+    static uint8_t a[64 + SRAM_BYTES], b[64 + SRAM_BYTES];
+    const uint64_t end = 300000;
+    rig_t *r = rig_new(CHURN, false), *q = rig_new(CHURN, false);
+    armcore_run_to(r->core, end);
+    uint32_t brk[ARMCORE_BREAKS_MAX];
+    int nbrk = 0, steps = 0, hits = 0;
+    while (armcore_cycles(q->core) < 30000) {
+        armcore_halt_at(q->core, armcore_cycles(q->core) + 1);
+        assert_int_equal(armcore_run_to(q->core, end), ARMCORE_HALTED);
+        uint32_t pc = armcore_reg(q->core, UC_ARM_REG_PC);
+        int i = 0;
+        while (i < nbrk && brk[i] != pc) i++;
+        if (i == nbrk && nbrk < ARMCORE_BREAKS_MAX) brk[nbrk++] = pc;
+        steps++;
+    }
+    assert_int_equal(armcore_set_breaks(q->core, brk, nbrk), 0);
+    int rc;
+    while ((rc = armcore_run_to(q->core, end)) == ARMCORE_HALTED) {
+        uint32_t pc = armcore_reg(q->core, UC_ARM_REG_PC);
+        int i = 0;
+        while (i < nbrk && brk[i] != pc) i++;
+        if (i == nbrk) fail_msg("halted at 0x%08x, not at a breakpoint", pc);
+        if (++hits > 2000000) fail_msg("halted %d times by 300,000 cycles: a resumed breakpoint taken again", hits);
+    }
+    assert_int_equal(rc, 0);
+    no_crash(r), no_crash(q);
+    print_message("debug halts: %d steps, %d breakpoints, %d hits\n", steps, nbrk, hits);
+    assert_true(steps > 1000 && nbrk == ARMCORE_BREAKS_MAX && hits > 10000);
+    print_message("debug halts: %u interrupts\n", mailbox(r).v[1]);
+    assert_true(mailbox(r).v[1] > 100); /* interrupts kept coming */
+    snapshot(r, a), snapshot(q, b);
+    assert_memory_equal(a, b, sizeof a);
+    rig_free(r), rig_free(q);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -351,6 +392,7 @@ int main(void)
         cmocka_unit_test(test_vtor), cmocka_unit_test(test_svc_pendsv), cmocka_unit_test(test_process_stack), cmocka_unit_test(test_reset_request),
         cmocka_unit_test(test_bitband), cmocka_unit_test(test_unmodeled), cmocka_unit_test(test_faults),
         cmocka_unit_test(test_clock_switch), cmocka_unit_test(test_wfi_skip_same_state), cmocka_unit_test(test_chunking_same_state),
+        cmocka_unit_test(test_debug_halts_same_state),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
