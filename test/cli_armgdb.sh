@@ -5,12 +5,16 @@
 # steps as a physics loop takes them) with --gdb on a free port: gdb reads
 # the m-profile target description, breaks on gdb_tick, reads globals of
 # four types, steps and nexts by line, breaks in the SysTick handler (IPSR
-# 15), is refused peripheral and flash memory, and waits a second halted
-# (no busy loop); the probe's final state (cycles, registers, an SRAM hash)
-# equals the run's without gdb. Also: the stub listens on 127.0.0.1 only;
-# gdb's kill and a raw client's interrupt (0x03) while the core runs leave
-# the run as it was; SRAM writes are seen; a port in use is one line, exit
-# 3. Every process under timeout. SKIP only without gdb-multiarch.
+# 15), is refused peripheral and PPB reads and flash writes, and waits a
+# second halted (no busy loop); the probe's final state (cycles, registers,
+# an SRAM hash) equals the run's without gdb. Also: the stub listens on
+# 127.0.0.1 only; gdb's kill, continuing to the run's end (exited
+# normally), an hbreak (Z1) and a stepi over WFI (into the handler that woke
+# it), stepping by breakpoints (osabi GNU/Linux) and a raw client's
+# interrupt (0x03) while the core runs leave the run as it was; a crash
+# halts for gdb (SIGSEGV) and then ends as without it, its cause decoded;
+# SRAM writes are seen; a port in use is one line, exit 3. Every process
+# under timeout. SKIP only without gdb-multiarch or arm-none-eabi-gcc.
 set -u
 B=${BUILD:-build}
 T=$(mktemp -d)
@@ -151,13 +155,14 @@ has crash '^Program terminated with signal SIGSEGV' "continue: the program termi
 [ "$(cat "$T/crash.rc")" = 1 ] && grep -q '^crashed at 0x60000000: HardFault: bus fault fetching 0x60000000 .*(CFSR 0x00000100: IBUSERR, HFSR 0x40000000: FORCED; stacked PC 0x60000000)$' "$T/crash.out" \
   && ok "crash: the probe's cause decodes CFSR (IBUSERR) and HFSR (FORCED) with the stacked PC, exit 1" || bad "crash: exit $(cat "$T/crash.rc"): $(cat "$T/crash.out")"
 
-# ---- stepi over the WFI ends when the core wakes: in the SysTick handler ----
-session wfi $MS "break *0x080001bc
+# ---- hbreak (Z1) at the WFI; stepi over it ends when the core wakes: in the SysTick handler ----
+session wfi $MS "hbreak *0x080001bc
 continue
 stepi
 print \$xpsr & 0x1ff
 delete
 disconnect"
+has wfi '^Hardware assisted breakpoint 1 at 0x80001bc' "hbreak: a Z1 breakpoint"
 has wfi '^Breakpoint 1, main () at test/arm/gdbtest.c:33' "stopped at the WFI (0x080001bc)"
 has wfi '^systick_handler () at test/arm/gdbtest.c:24' "stepi over the WFI: the SysTick handler's first instruction"
 has wfi '^\$1 = 15$' "IPSR 15"
