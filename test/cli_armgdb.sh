@@ -213,6 +213,36 @@ grep -q '^periph: E01$' "$T/raw.py" && ok "raw: a peripheral read refused (E01)"
 grep -q '^detach: OK$' "$T/raw.py" && ok "raw: D answers OK" || bad "raw: $(cat "$T/raw.py")"
 same raw plain4000
 
+# ---- 1,000 seeded random packets (framed or not, over-long ones, bad numbers), then D: no sanitizer report ----
+start fuzz $MS
+timeout 120 python3 - "$PORT" >"$T/fuzz.py" 2>&1 <<'PY'
+import random, socket, sys
+random.seed(39)
+s = socket.create_connection(("127.0.0.1", int(sys.argv[1])))
+s.settimeout(0.02)
+def pkt(d): return b"$" + d + b"#%02x" % (sum(d) & 0xFF)
+heads = [b"g", b"G", b"p", b"P", b"m", b"M", b"Z", b"z", b"q", b"qXfer:features:read:", b"qXfer:features:read:target.xml:",
+         b"v", b"vCont", b"H", b"?", b"X", b"T", b"-"]
+for _ in range(1000):
+    d = random.choice(heads) + bytes(random.choice(b"0123456789abcdefABCDEF,:;=xyz-}*") for _ in range(random.randint(0, 40)))
+    if random.random() < 0.03: d = random.choice(heads) + b"f" * random.randint(4000, 9000)
+    s.sendall(pkt(d) if random.random() > 0.05 else d)
+    try: s.recv(100000)
+    except socket.timeout: pass
+s.settimeout(10)
+s.sendall(pkt(b"D"))
+buf = b""
+while b"$OK#9a" not in buf:
+    c = s.recv(100)
+    if not c: break
+    buf += c
+print("detach:", b"$OK#9a" in buf)
+PY
+finish fuzz
+grep -q '^detach: True$' "$T/fuzz.py" && ok "fuzz: 1,000 random packets, then D answered OK" || bad "fuzz: $(tail -3 "$T/fuzz.py")"
+grep -q 'runtime error\|Sanitizer' "$T/fuzz.err" && bad "fuzz: $(grep -m3 'runtime error\|Sanitizer' "$T/fuzz.err")" \
+  || { [ "$(cat "$T/fuzz.rc")" -le 1 ] && ok "fuzz: no sanitizer report, the run ended (exit $(cat "$T/fuzz.rc"))" || bad "fuzz: exit $(cat "$T/fuzz.rc")"; }
+
 # ---- a port in use: one line, exit 3 ----
 PORT=$(free_port)
 python3 -c "
