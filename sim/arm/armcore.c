@@ -815,6 +815,7 @@ int armcore_set_breaks(armcore_t *c, const uint32_t *addr, int n)
     if (n < 0 || n > ARMCORE_BREAKS_MAX) return -1;
     for (int i = 0; i < n; i++) c->brk[i] = addr[i] & ~1u;
     c->nbrk = n;
+    if (!c->halted) c->brk_skip = NO_ADDR; /* stopped between runs (not at a halt): no breakpoint is being resumed from */
     return 0;
 }
 void armcore_halt_at(armcore_t *c, uint64_t cycle) { c->halt_at = cycle; }
