@@ -59,12 +59,18 @@ $(B)/test/mrc_boot: test/tools/mrc_boot.c | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) -O1 -g $(SAN) $< -lsimavr -lelf -o $@
 
+# The gdb stub's probe (test/cli/cli_armgdb.sh, cli_armwatch.sh): an ARM
+# image on the core alone, with or without --gdb
+$(B)/test/armgdb_probe: test/tools/armgdb_probe.c $(B)/libmm_san.a
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(INC) -O1 -g $(SAN) $< $(B)/libmm_san.a $(LIBS) -o $@
+
 # What the tests need built: the tools plain and sanitized, the images the
 # CLI tests run. The unit tests read only the ARM image and the board sketches.
 TEST_NEEDS := $(B)/pio/bin/pio $(TESTS) $(addprefix $(B)/,$(TOOLS)) $(addprefix $(B)/san-tools/,$(TOOLS)) $(B)/san-tools/half/mmsim $(B)/san-tools/ukb/mmsim $(B)/test/xinput firmware-size $(LCM_JAR) $(B)/avr/wire_selftest.elf arduino \
 	$(B)/arduino/mega2560/Mouse-5x5.elf $(B)/arduino/uno/Mouse-5x5.elf $(B)/arduino/uno/OneCommand.elf $(B)/test/mrc_boot \
 	$(B)/arduino/uno/IrProbe.elf $(B)/arduino/uno/IrProbe-compat.elf $(BOARD_SKETCHES) $(PERIPH_ELFS) $(ARM_TEST_ELFS) \
-	client-mazerunner firmware-ukmarsbot
+	client-mazerunner client-bulebule firmware-ukmarsbot $(B)/test/armgdb_probe
 UNIT_NEEDS := $(ARM_TEST_ELFS) $(BOARD_SKETCHES)
 
 # make test ONLY=NAME: the test of that name, with or without its prefix or

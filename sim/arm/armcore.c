@@ -82,10 +82,16 @@ struct armcore {
     uint8_t fix[4];
     uint32_t crash_pc, bad_addr;
     int bad_type;
-    char cause[200];
+    char cause[400];
     armcore_unmodeled_t unm[ARMCORE_UNMODELED_MAX];
     int nunm;
     armcore_stats_t st;
+    /* the debugger's (armgdb.c): breakpoints checked at each block's start, a cycle to halt at */
+    uint32_t brk[ARMCORE_BREAKS_MAX];
+    int nbrk;
+    uint64_t halt_at, brk_cyc, split_to; /* halt at this cycle; the first breakpoint's in this block; the split's end */
+    uint32_t brk_skip;                   /* resumed here after a halt: its breakpoint not taken again at once */
+    bool halted, brk_hit;
     blk_t blk[BLK_CACHE];
     /* idle loops: the blocks run last (a ring), the loops analysed, the one a probe runs */
     uint32_t hist_addr[LOOP_HIST], hist_size[LOOP_HIST];
@@ -188,11 +194,24 @@ static void regs_write(armcore_t *c, const int *r, const uint32_t *v, int n)
  * its block's start, so the cycle never depends on the chunking. */
 static uint64_t access_cycle(const armcore_t *c) { return c->nat_start; }
 
+#define HFSR_FORCED (1u << 30) /* B3.2.16: a fault escalated to HardFault */
+#define HFSR_VECTTBL (1u << 1) /* a vector table read failed */
+
+/* The run ends: the cause, then CFSR and HFSR decoded and the PC the frame would hold (what a HardFault handler reads). */
 static void crash(armcore_t *c, uint32_t pc, const char *cause)
 {
     if (c->crashed) return;
+    char fsr[200];
     c->crashed = true, c->crash_pc = pc;
-    snprintf(c->cause, sizeof c->cause, "%s", cause);
+    cortexm_fault_text(&c->cm, fsr, sizeof fsr);
+    snprintf(c->cause, sizeof c->cause, "%s (%s; stacked PC 0x%08x)", cause, fsr, pc);
+}
+
+/* A fault's status bits set as the hardware would (CFSR's, escalated to HardFault), then the crash. */
+static void fault(armcore_t *c, uint32_t pc, uint32_t cfsr, uint32_t hfsr, const char *cause)
+{
+    c->cm.cfsr |= cfsr, c->cm.hfsr |= hfsr;
+    crash(c, pc, cause);
 }
 
 /* ---- time ---- */
@@ -498,6 +517,22 @@ static void probe_block(armcore_t *c, uint32_t addr, uint32_t size, uint32_t n)
     c->nat_start = c->cyc, c->cyc += n, c->probe_idx++;
 }
 
+/* The debugger's stop in the block at addr: its first breakpoint's cycle, or halt_at; at most the target. */
+static uint64_t debug_stop(armcore_t *c, uint32_t addr, uint32_t size)
+{
+    uint64_t at = c->halt_at < c->cyc ? c->cyc : c->halt_at;
+    bool skip = c->brk_skip == addr;
+    c->brk_skip = NO_ADDR;
+    for (int i = 0; i < c->nbrk; i++) {
+        uint32_t b = c->brk[i];
+        if (b < addr || b - addr >= size || (skip && b == addr)) continue;
+        uint64_t k = c->cyc + (b == addr ? 0u : count_insns(c, addr, b));
+        if (k < c->brk_cyc) c->brk_cyc = k;
+    }
+    if (c->brk_cyc < at) at = c->brk_cyc;
+    return at < c->target ? at : c->target;
+}
+
 static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
 {
     armcore_t *c = u;
@@ -506,6 +541,7 @@ static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
     if (c->probe) { if (c->probe_res == PROBE_RUNNING) probe_block(c, addr, size, n); return; }
     c->blk_addr = addr, c->blk_size = size, c->blk_start = c->cyc;
     if (c->partial || c->stop != STOP_NONE) return;
+    c->brk_cyc = NO_TIME;
     c->stop_mid = addr == c->resume_mid;
     if (c->stop_mid) {
         c->resume_mid = NO_ADDR;
@@ -517,8 +553,10 @@ static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
         unsigned e = check(c);
         if (e) { c->take = e, c->stop = STOP_TAKE, c->stop_addr = addr; uc_emu_stop(uc); return; }
     }
-    if (!c->stop_mid && !c->no_idle_skip && idle_loop(c, addr, size)) { c->stop = STOP_SKIP, c->stop_addr = addr; uc_emu_stop(uc); return; }
-    if (c->cyc + n > c->target) { c->stop = STOP_SPLIT, c->stop_addr = addr; uc_emu_stop(uc); return; }
+    uint64_t stop_at = c->nbrk || c->halt_at != NO_TIME ? debug_stop(c, addr, size) : c->target;
+    if (c->nbrk || stop_at != c->target) c->hist_n = 0; /* no wait loop jumped over while gdb may stop inside it */
+    else if (!c->stop_mid && !c->no_idle_skip && idle_loop(c, addr, size)) { c->stop = STOP_SKIP, c->stop_addr = addr; uc_emu_stop(uc); return; }
+    if (c->cyc + n > stop_at) { c->stop = STOP_SPLIT, c->stop_addr = addr, c->split_to = stop_at; uc_emu_stop(uc); return; }
     c->cyc += n;
 }
 
@@ -577,10 +615,11 @@ static bool vector(armcore_t *c, unsigned exc, uint32_t *pc)
     uint32_t at = c->cm.vtor + 4u * exc;
     const uint8_t *p = host(c, at, 4);
     if (!p) return snprintf(m, sizeof m, "HardFault: vector %u at 0x%08x is outside flash and SRAM (VTOR 0x%08x)", exc, at, c->cm.vtor),
-                  crash(c, c->pc, m), false;
+                  fault(c, c->pc, 0, HFSR_VECTTBL, m), false;
     *pc = rd32(p);
     if (!(*pc & 1u))
-        return snprintf(m, sizeof m, "HardFault: vector %u (0x%08x) has no Thumb bit: UsageFault INVSTATE", exc, *pc), crash(c, c->pc, m),
+        return snprintf(m, sizeof m, "HardFault: vector %u (0x%08x) has no Thumb bit: UsageFault INVSTATE", exc, *pc),
+               fault(c, c->pc, 0x20000u, HFSR_FORCED, m),
                false;
     return true;
 }
@@ -634,14 +673,14 @@ static void enter(armcore_t *c, unsigned exc, uint32_t ret)
     if (fp) fp_save(c, f), c->cm.fpcar = sp + BASIC_FRAME_BYTES;
     if (exc >= EXC_HARDFAULT && exc <= EXC_USAGEFAULT) {
         char m[120];
-        snprintf(m, sizeof m, "%s taken (CFSR 0x%08x, HFSR 0x%08x)", exc_name(exc), c->cm.cfsr, c->cm.hfsr);
+        snprintf(m, sizeof m, "%s taken", exc_name(exc));
         crash(c, ret, m);
         return;
     }
     if (!mem_rw(c, sp, f, size, true)) {
         char m[120];
         snprintf(m, sizeof m, "HardFault: stacking for %s at SP 0x%08x outside SRAM (STKERR)", exc == EXC_SVCALL ? "SVCall" : "an exception", sp);
-        crash(c, ret, m);
+        fault(c, ret, 0x1000u, HFSR_FORCED, m); /* BFSR STKERR */
         return;
     }
     if (!vector(c, exc, &handler_pc)) return;
@@ -665,13 +704,13 @@ static void unstack(armcore_t *c, uint32_t excret)
     char m[120];
     if (!mem_rw(c, sp, f, size, false)) {
         snprintf(m, sizeof m, "HardFault: unstacking at SP 0x%08x outside SRAM (UNSTKERR)", sp);
-        crash(c, c->pc, m);
+        fault(c, c->pc, 0x800u, HFSR_FORCED, m);
         return;
     }
     uint32_t xpsr = rd32(f + 28), ret = rd32(f + 24), nsp = sp + size + ((xpsr & XPSR_ALIGN) ? 4u : 0u);
     if (!(xpsr & XPSR_T)) {
         snprintf(m, sizeof m, "HardFault: return to 0x%08x with the frame's Thumb bit clear (UsageFault INVSTATE)", ret);
-        crash(c, ret, m);
+        fault(c, ret, 0x20000u, HFSR_FORCED, m);
         return;
     }
     if (fp) fp_load(c, f);
@@ -704,7 +743,7 @@ static void exc_return(armcore_t *c)
     bool fp_ok = c->mcu->fpu || (excret & EXC_RETURN_BASIC); /* an extended frame only with an FPU */
     if ((excret & 0xFFFFFFE0u) != 0xFFFFFFE0u || !fp_ok || (low != 1u && low != 9u && low != 0xDu) || cortexm_return(&c->cm, exc) != 0) {
         snprintf(m, sizeof m, "HardFault: exception return 0x%08x from exception %u (UsageFault INVPC)", excret, exc);
-        crash(c, c->blk_addr, m);
+        fault(c, c->blk_addr, 0x40000u, HFSR_FORCED, m);
         return;
     }
     int group;
@@ -747,8 +786,10 @@ static void on_stop_intr(armcore_t *c)
         [18] = "UsageFault INVSTATE: Thumb bit clear", [22] = "UsageFault UNALIGNED: an unaligned access" };
     const char *w = c->intno >= 0 && c->intno < (int)(sizeof why / sizeof why[0]) && why[c->intno] ? why[c->intno] : "an exception unicorn raised";
     snprintf(m, sizeof m, "HardFault: %s (unicorn exception %d)", w, c->intno);
-    c->cm.cfsr |= c->intno == 1 ? 0x10000u : c->intno == 18 ? 0x20000u : c->intno == 22 ? 0x1000000u : 0u;
-    crash(c, pc, m);
+    /* UFSR UNDEFINSTR, INVSTATE, NOCP, UNALIGNED; BFSR IBUSERR (a fetch), PRECISERR (no address known); a BKPT: DEBUGEVT */
+    uint32_t cfsr = c->intno == 1 ? 0x10000u : c->intno == 18 ? 0x20000u : c->intno == 17 ? 0x80000u : c->intno == 22 ? 0x1000000u
+                  : c->intno == 3 ? 0x100u : c->intno == 4 ? 0x200u : 0u;
+    fault(c, pc, cfsr, c->intno == 7 ? 1u << 31 : cfsr ? HFSR_FORCED : 0u, m);
 }
 
 /* emu_start returned on its own: WFI/WFE (the PC past it) or a memory fault. */
@@ -764,9 +805,10 @@ static void on_stop_none(armcore_t *c, uc_err e)
     if (e != UC_ERR_OK) {
         const char *what = c->bad_type == UC_MEM_FETCH_UNMAPPED || c->bad_type == UC_MEM_FETCH_PROT ? "fetching"
                          : c->bad_type == UC_MEM_WRITE_UNMAPPED || c->bad_type == UC_MEM_WRITE_PROT ? "writing" : "reading";
-        c->cm.bfar = c->bad_addr, c->cm.cfsr |= 0x8200u, c->cm.hfsr |= 1u << 30;
+        bool fetch = c->bad_type == UC_MEM_FETCH_UNMAPPED || c->bad_type == UC_MEM_FETCH_PROT;
+        if (!fetch) c->cm.bfar = c->bad_addr;
         snprintf(m, sizeof m, "HardFault: bus fault %s 0x%08x (%s)", what, c->bad_addr, uc_strerror(e));
-        crash(c, pc, m);
+        fault(c, pc, fetch ? 0x100u : 0x8200u, HFSR_FORCED, m); /* IBUSERR; PRECISERR with BFARVALID */
         return;
     }
     uint8_t h[4] = { 0 };
@@ -876,8 +918,9 @@ static void skip_loop(armcore_t *c)
 /* The first k = target - cycle instructions of the block at stop_addr, through an exit there (its cached translation dropped before and after). */
 static void run_split(armcore_t *c)
 {
-    uint64_t k = c->target - c->cyc;
+    uint64_t k = c->split_to - c->cyc;
     c->pc = c->stop_addr;
+    c->brk_hit = c->split_to == c->brk_cyc;
     if (k == 0) {
         if (c->stop_mid) c->resume_mid = c->stop_addr; /* still a remainder when it resumes */
         return;
@@ -940,9 +983,15 @@ static void run_once(armcore_t *c)
 
 static int run(armcore_t *c)
 {
+    if (c->halted) c->halted = false, c->brk_skip = c->pc;
     while (!c->crashed && c->cyc < c->target) {
+        bool slept = c->sleeping;
         if (c->sleeping) sleep_step(c);
         else run_once(c);
+        if (!c->crashed && (c->brk_hit || (c->cyc >= c->halt_at && !slept && !c->sleeping))) { /* a step over WFI ends after it wakes */
+            c->halted = true, c->brk_hit = false, c->halt_at = NO_TIME;
+            return ARMCORE_HALTED;
+        }
     }
     return c->crashed;
 }
@@ -1000,9 +1049,10 @@ armcore_t *armcore_new(const armcore_cfg_t *cfg, char *err, size_t errn)
     c->flash_write = cfg->flash_write, c->flash_ctx = cfg->flash_ctx;
     c->hclk = cfg->clocks && cfg->clocks->hclk ? cfg->clocks->hclk : cfg->hclk_hz;
     c->target_ps = NO_TIME, c->resume_mid = NO_ADDR, c->never_head = NO_ADDR;
+    c->halt_at = NO_TIME, c->brk_cyc = NO_TIME, c->brk_skip = NO_ADDR;
     cortexm_init(&c->cm, m->nirq, m->prio_bits, m->cpuid);
     cortexm_set_fpu(&c->cm, m->fpu != 0);
-    memcpy(c->reg, cfg->regions, sizeof *c->reg * (size_t)cfg->nregions);
+    if (cfg->nregions) memcpy(c->reg, cfg->regions, sizeof *c->reg * (size_t)cfg->nregions);
     c->reg[cfg->nregions] = (mmio_region_t){ CORTEXM_PPB_BASE, CORTEXM_PPB_BYTES, &cortexm_ops, &c->cm };
     c->nreg = cfg->nregions + 1;
     qsort(c->reg, (size_t)c->nreg, sizeof *c->reg, by_base);
@@ -1052,3 +1102,29 @@ int armcore_read(armcore_t *c, uint32_t addr, void *buf, size_t n)
 }
 const armcore_unmodeled_t *armcore_unmodeled(const armcore_t *c, int *n) { *n = c->nunm; return c->unm; }
 armcore_stats_t armcore_stats(const armcore_t *c) { return c->st; }
+
+/* ---- the debugger's hooks ---- */
+int armcore_set_breaks(armcore_t *c, const uint32_t *addr, int n)
+{
+    if (n < 0 || n > ARMCORE_BREAKS_MAX) return -1;
+    for (int i = 0; i < n; i++) c->brk[i] = addr[i] & ~1u;
+    c->nbrk = n;
+    if (!c->halted) c->brk_skip = NO_ADDR; /* stopped between runs (not at a halt): no breakpoint is being resumed from */
+    return 0;
+}
+void armcore_halt_at(armcore_t *c, uint64_t cycle) { c->halt_at = cycle; }
+int armcore_set_reg(armcore_t *c, int r, uint32_t v)
+{
+    if (r == UC_ARM_REG_PC) {
+        if ((v & ~1u) != c->pc) c->pc = v & ~1u, c->resume_mid = NO_ADDR, c->sleeping = false;
+        return 0;
+    }
+    return uc_reg_write(c->uc, r, &v) == UC_ERR_OK ? 0 : -1;
+}
+int armcore_write(armcore_t *c, uint32_t addr, const void *buf, size_t n)
+{
+    const armimage_mcu_t *m = c->mcu;
+    if (addr < m->sram_base || n > m->sram_bytes || addr - m->sram_base > m->sram_bytes - n) return -1;
+    memcpy(c->sram + (addr - m->sram_base), buf, n);
+    return 0;
+}

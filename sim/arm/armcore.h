@@ -97,4 +97,24 @@ int armcore_read(armcore_t *c, uint32_t addr, void *buf, size_t n);
 const armcore_unmodeled_t *armcore_unmodeled(const armcore_t *c, int *n);
 armcore_stats_t armcore_stats(const armcore_t *c);
 
+/* The debugger's hooks (armgdb.c). A breakpoint halts the run before the
+ * instruction at its address runs (found at its translated block's start
+ * and reached through the core's exact stop, so a halt is invisible to the
+ * run: flash is never patched); armcore_halt_at halts it at a cycle (a
+ * single step: the current cycle + 1; an exception taken at the step lands
+ * at its handler's first instruction; a step over WFI/WFE ends when the core
+ * wakes, as on the hardware). armcore_run_to / run_until_ps then
+ * return ARMCORE_HALTED; the next run resumes there, that address's
+ * breakpoint not taken again before its instruction has run. */
+#define ARMCORE_HALTED 2
+#define ARMCORE_BREAKS_MAX 64
+/* The breakpoints (Thumb bit ignored), replacing the set: 0, or -1 if more than ARMCORE_BREAKS_MAX. */
+int armcore_set_breaks(armcore_t *c, const uint32_t *addr, int n);
+/* Halt at cycle (UINT64_MAX: never); cleared when reached. */
+void armcore_halt_at(armcore_t *c, uint64_t cycle);
+/* A core register written (PC: where the run resumes): 0, or -1. */
+int armcore_set_reg(armcore_t *c, int reg, uint32_t v);
+/* SRAM written (the debugger's M packet; flash and peripherals never): 0, or -1 outside SRAM. */
+int armcore_write(armcore_t *c, uint32_t addr, const void *buf, size_t n);
+
 #endif

@@ -1,6 +1,7 @@
 /* cortexm.c - NVIC, SCB, SysTick and DWT CYCCNT (see cortexm.h). */
 #include "cortexm.h"
 
+#include <stdio.h>
 #include <string.h>
 
 #define TRCENA_BIT (1u << 24)          /* DEMCR: DWT and ITM enabled (ARMv7-M C1.6.5) */
@@ -413,3 +414,31 @@ static mmio_status_t ppb_write(void *self, uint32_t off, unsigned size, uint32_t
 const mmio_ops_t cortexm_ops = {
     .name = "PPB", .read = ppb_read, .write = ppb_write, .advance = advance, .next_event = next_event, .reset = reset,
 };
+
+/* The set bits of v named by names[0..32) (NULL: reserved) appended to out at *at. */
+static void bit_names(uint32_t v, const char *const *names, char *out, size_t n, size_t *at)
+{
+    for (int b = 0; b < 32; b++) {
+        if (!(v & (1u << b)) || !names[b] || *at >= n) continue;
+        int k = snprintf(out + *at, n - *at, " %s", names[b]);
+        *at += k > 0 ? (size_t)k : 0u;
+    }
+}
+
+void cortexm_fault_text(const cortexm_t *cm, char *out, size_t n)
+{
+    /* CFSR = UFSR:BFSR:MMFSR (B3.2.15); HFSR (B3.2.16) */
+    static const char *const cfsr[32] = { [0] = "IACCVIOL", [1] = "DACCVIOL", [3] = "MUNSTKERR", [4] = "MSTKERR", [5] = "MLSPERR",
+        [7] = "MMARVALID", [8] = "IBUSERR", [9] = "PRECISERR", [10] = "IMPRECISERR", [11] = "UNSTKERR", [12] = "STKERR",
+        [13] = "LSPERR", [15] = "BFARVALID", [16] = "UNDEFINSTR", [17] = "INVSTATE", [18] = "INVPC", [19] = "NOCP",
+        [24] = "UNALIGNED", [25] = "DIVBYZERO" };
+    static const char *const hfsr[32] = { [1] = "VECTTBL", [30] = "FORCED", [31] = "DEBUGEVT" };
+    size_t at = 0;
+    int k = snprintf(out, n, "CFSR 0x%08x:", cm->cfsr);
+    at = k > 0 ? (size_t)k : 0u;
+    bit_names(cm->cfsr, cfsr, out, n, &at);
+    if ((cm->cfsr & 0x80u) && at < n) at += (size_t)snprintf(out + at, n - at, " (MMFAR 0x%08x)", cm->mmfar);
+    if ((cm->cfsr & 0x8000u) && at < n) at += (size_t)snprintf(out + at, n - at, " (BFAR 0x%08x)", cm->bfar);
+    if (at < n) at += (size_t)snprintf(out + at, n - at, ", HFSR 0x%08x:", cm->hfsr);
+    bit_names(cm->hfsr, hfsr, out, n, &at);
+}

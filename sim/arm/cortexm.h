@@ -17,6 +17,7 @@
 #define CORTEXM_H
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #include "mmio.h"
@@ -82,5 +83,10 @@ void cortexm_take(cortexm_t *cm, unsigned exc);
 int cortexm_return(cortexm_t *cm, unsigned exc);
 /* Active exceptions (for a return to thread mode). */
 unsigned cortexm_nactive(const cortexm_t *cm);
+/* The fault status registers decoded, one line into out: "CFSR 0x00008200:
+ * PRECISERR BFARVALID (BFAR 0x60000000), HFSR 0x40000000: FORCED" (their
+ * bits' names as ARMv7-M B3.2.15-B3.2.16 give them; MMFAR and BFAR only
+ * when valid). */
+void cortexm_fault_text(const cortexm_t *cm, char *out, size_t n);
 
 #endif

@@ -9,8 +9,6 @@
 #include "io/infile.h"
 
 #define EM_AVR_MACHINE 83u
-#define STT_OBJECT_TYPE 1u /* a symbol's type: a variable */
-#define STB_GLOBAL_BIND 1u /* a symbol's binding: global (0: local) */
 
 /* .mmcu tags (simavr's avr_mcu_section.h) and the bytes simavr reads of each */
 enum { TAG_NAME = 1, TAG_FREQUENCY = 2, TAG_VCC = 3, TAG_AVCC = 4, TAG_AREF = 5, TAG_LFUSE = 6, TAG_HFUSE = 7, TAG_EFUSE = 8,
@@ -146,38 +144,6 @@ int image_check_elf(const char *path, size_t max_bytes, image_elf_t *out, char *
     if (rc == 0) out->arch = le32(e.x.b + 36) & 0x7Fu;
     free(buf);
     return rc;
-}
-
-/* The object symbol name in symbol table section t (checked): a global one
- * before a local one; 1 with its value and size, 0 none, -1 two locals of
- * that name and no global. */
-static int find_object(const elf_t *e, uint32_t t, const char *name, uint32_t *value, uint32_t *size)
-{
-    const uint8_t *s = shdr(e, t);
-    uint32_t off = le32(s + 16), count = le32(s + 20) / ELF32_SYM_BYTES, link = le32(s + 24);
-    int locals = 0;
-    for (uint32_t k = 0; k < count; k++) {
-        const uint8_t *sym = e->x.b + off + (size_t)k * ELF32_SYM_BYTES;
-        if ((sym[12] & 0xFu) != STT_OBJECT_TYPE) continue;
-        const char *n = str_at(e, link, le32(sym));
-        if (!n || strcmp(n, name) != 0) continue;
-        int global = (sym[12] >> 4) == STB_GLOBAL_BIND;
-        if (!global && locals++) continue; /* the first local is kept */
-        *value = le32(sym + 4);
-        *size = le32(sym + 8);
-        if (global) return 1;
-    }
-    return locals > 1 ? -1 : locals;
-}
-
-int image_elf_object(const uint8_t *b, size_t n, const char *name, uint32_t *value, uint32_t *size)
-{
-    char err[200];
-    elf_t e;
-    if (elf_open(&e, b, n, "", err, sizeof err) != 0) return -2;
-    for (uint32_t i = 0; i < e.x.shnum; i++)
-        if (le32(shdr(&e, i) + 4) == ELF32_SHT_SYMTAB) return elf32_check_symtab(&e.x, i) != 0 ? -2 : find_object(&e, i, name, value, size);
-    return -2;
 }
 
 unsigned image_mcu_arch(const char *mcu)

@@ -50,10 +50,5 @@ void image_hex_free(image_hex_t *h);
 /* The AVR architecture number avr-gcc puts in e_flags for mcu (5 for the
  * atmega328p), or 0 if not in our table. */
 unsigned image_mcu_arch(const char *mcu);
-/* In the n bytes b of an ELF image (as image_check_elf checks it): the
- * object (variable) symbol name, a global one before a local one. 1 with
- * its value and size, 0 none, -1 two locals of that name and no global,
- * -2 no symbol table or not a well-formed AVR ELF. */
-int image_elf_object(const uint8_t *b, size_t n, const char *name, uint32_t *value, uint32_t *size);
 
 #endif

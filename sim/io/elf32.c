@@ -95,3 +95,33 @@ int elf32_check_symtab(elf32_t *e, uint32_t i)
                             elf32_le32(e->b + off + (size_t)k * ELF32_SYM_BYTES)), elf32_fail(e, m);
     return 0;
 }
+
+#define STT_OBJECT_TYPE 1u /* a symbol's type: a variable (System V ABI, "Symbol Table") */
+#define STB_GLOBAL_BIND 1u /* a symbol's binding: global (0: local) */
+
+/* The object symbol name in symbol table section t (checked). */
+static int find_object(const elf32_t *e, uint32_t t, const char *name, uint32_t *value, uint32_t *size)
+{
+    const uint8_t *s = elf32_shdr(e, t);
+    uint32_t off = elf32_le32(s + 16), count = elf32_le32(s + 20) / ELF32_SYM_BYTES, link = elf32_le32(s + 24);
+    int locals = 0;
+    for (uint32_t k = 0; k < count; k++) {
+        const uint8_t *sym = e->b + off + (size_t)k * ELF32_SYM_BYTES;
+        if ((sym[12] & 0xFu) != STT_OBJECT_TYPE) continue;
+        const char *n = elf32_str(e, link, elf32_le32(sym));
+        if (!n || strcmp(n, name) != 0) continue;
+        int global = (sym[12] >> 4) == STB_GLOBAL_BIND;
+        if (!global && locals++) continue; /* the first local is kept */
+        *value = elf32_le32(sym + 4);
+        *size = elf32_le32(sym + 8);
+        if (global) return 1;
+    }
+    return locals > 1 ? -1 : locals;
+}
+
+int elf32_object(elf32_t *e, const char *name, uint32_t *value, uint32_t *size)
+{
+    for (uint32_t i = 0; i < e->shnum; i++)
+        if (elf32_le32(elf32_shdr(e, i) + 4) == ELF32_SHT_SYMTAB) return elf32_check_symtab(e, i) != 0 ? -2 : find_object(e, i, name, value, size);
+    return -2;
+}

@@ -50,6 +50,10 @@ const uint8_t *elf32_shdr(const elf32_t *e, uint32_t i);
 const uint8_t *elf32_phdr(const elf32_t *e, uint32_t i);
 /* The string at off in string table section t, NULL if it does not end within it. */
 const char *elf32_str(const elf32_t *e, uint32_t t, uint32_t off);
+/* The object symbol name (a variable) in the file's symbol table, checked:
+ * a global one before a local one. 1 with its value and size, 0 none, -1
+ * two locals of that name and no global, -2 no symbol table (or a bad one). */
+int elf32_object(elf32_t *e, const char *name, uint32_t *value, uint32_t *size);
 /* "PATH: what" into err; -1. */
 int elf32_fail(const elf32_t *e, const char *what);
 

@@ -13,12 +13,13 @@
 # boots and answers its console's `battery` command.
 set -u
 B=${BUILD:-build}
+SHARED=${SHARED:-../shared}
 MMSIM=${MMSIM:-$B/mmsim}
 FW=$B/arm/boardtest.elf
 BULEBULE=$B/clients/bulebule/src/main.elf
 T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
 . "$(dirname "$0")/lib.sh"
-mk() { env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory B="$B" "$@"; }
+mk() { env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory B="$B" SHARED="$SHARED" "$@"; }
 [ -s "$FW" ] || mk "$FW" >"$T/make.out" 2>&1 || { echo "SKIP cli_board_arm: make $FW: $(tail -1 "$T/make.out")"; exit 77; }
 python3 - >"$T/open16.txt" <<'PY'
 n = 16
@@ -94,7 +95,8 @@ want_rc 2 "--flash without --firmware" "$MMSIM" --maze "$MAZE" --flash "$T/x.bin
 want_rc 2 "--firmware without --board" "$MMSIM" --maze "$MAZE" --firmware "$FW"
 ONE_ERROR_LINE=0
 
-# ---- bulebule itself (make client-bulebule), when built
+# ---- bulebule itself (make client-bulebule), whenever ../shared has its sources
+[ -d "$SHARED/clients/bulebule/src" ] && { [ -s "$BULEBULE" ] || mk client-bulebule >"$T/bb.out" 2>&1 || bad "make client-bulebule: $(tail -1 "$T/bb.out")"; }
 if [ -s "$BULEBULE" ]; then
   want_rc 1 "bulebule boots on its board" arm --firmware "$BULEBULE" --input "0.4 send=x; 0.6 send=x; 0.8 send=battery; 1.0 end"
   grep -q 'Processing \\"battery\\"' "$T/out" && grep -q "log_battery_voltage" "$T/out" \
@@ -102,6 +104,6 @@ if [ -s "$BULEBULE" ]; then
   [ "$(jv "$T/out" "d['board']['interrupt_requests']['TIM1_UP'] > 5000, 'DMA1_Channel2' in d['board']['interrupt_requests'], d['board']['exceptions'] > 5000")" = "(True, True, True)" ] \
     && ok "bulebule: TIM1_UP and SysTick run, its console sent by DMA1 channel 2" || bad "bulebule irqs: $(jv "$T/out" "d['board']")"
 else
-  echo "SKIP bulebule part: $BULEBULE not built (make client-bulebule)"
+  echo "SKIP bulebule part: $SHARED/clients/bulebule not found"
 fi
 [ $fails -eq 0 ]

@@ -12,7 +12,7 @@
    or files. `#include <...>` is allowed by class: `<c>` the C99 standard
    headers, `<posix>` any other system header that is not one of the
    libraries below, `<lib:NAME>` one library (ode, gl, glfw, lcm, simavr,
-   jansson, inih, png, avr, arduino, unicorn, micromouse:
+   jansson, inih, png, avr, arduino, unicorn, dw, micromouse:
    hal/arduino as an installed Arduino library): each library enters through the
    folders that name it.
 2. Function lengths: no function in the folders named on the rules block's
@@ -55,6 +55,7 @@ LIBS = {  # library: header prefixes (a prefix ending in / is a folder)
     "png": ["png.h"], "avr": ["avr/", "util/"], "arduino": ["Arduino.h"],
     "micromouse": ["Micromouse.h"],  # hal/arduino as a sketch sees it, installed
     "unicorn": ["unicorn/"],  # the Cortex-M core (sim/arm)
+    "dw": ["dwarf.h", "elfutils/", "libelf.h", "gelf.h"],  # elfutils: DWARF types (sim/io/elfvar_dwarf.c)
 }
 
 

@@ -27,7 +27,7 @@
 
 typedef struct {
     simcfg_t cfg;
-    maze_t maze;
+    truemaze_t maze;
     sim_model_t model;
     sim_state_t sim;
     armboard_t *b;

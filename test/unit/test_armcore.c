@@ -297,6 +297,10 @@ static void test_faults(void **state)
     crash_at(FAULT_UNMAPPED, "0x60000000");
     crash_at(FAULT_PERIPH, "0x40010014");
     crash_at(UNDEF, "UNDEFINSTR");
+    /* the fault status decoded (B3.2.15-16) and the PC a HardFault handler would read from the frame */
+    crash_at(FAULT_UNMAPPED, "CFSR 0x00008200: PRECISERR BFARVALID (BFAR 0x60000000), HFSR 0x40000000: FORCED; stacked PC 0x0800");
+    crash_at(FAULT_PERIPH, "CFSR 0x00008200: PRECISERR BFARVALID (BFAR 0x40010014), HFSR 0x40000000: FORCED; stacked PC 0x0800");
+    crash_at(UNDEF, "CFSR 0x00010000: UNDEFINSTR, HFSR 0x40000000: FORCED; stacked PC 0x0800");
 }
 
 static void test_clock_switch(void **state)
@@ -439,6 +443,47 @@ static void test_fpu_extended_frame(void **state)
     if (!strstr(err, "FPU") && !strstr(err, "hard-float")) fail_msg("the error: %s", err);
 }
 
+/* The debugger's halts are invisible: single steps (armcore_halt_at) through
+ * the first cycles, then breakpoints at 64 of the addresses stepped through
+ * (main's loop and the interrupt handlers), each hit resumed, end in the
+ * state of the run without them; a breakpoint halts with the PC at its address. */
+static void test_debug_halts_same_state(void **state)
+{
+    static uint8_t a[64 + SRAM_BYTES], b[64 + SRAM_BYTES];
+    const uint64_t end = 300000;
+    rig_t *r = rig_new(CHURN, false), *q = rig_new(CHURN, false);
+    armcore_run_to(r->core, end);
+    uint32_t brk[ARMCORE_BREAKS_MAX];
+    int nbrk = 0, steps = 0, hits = 0;
+    while (armcore_cycles(q->core) < 30000) {
+        armcore_halt_at(q->core, armcore_cycles(q->core) + 1);
+        assert_int_equal(armcore_run_to(q->core, end), ARMCORE_HALTED);
+        uint32_t pc = armcore_reg(q->core, UC_ARM_REG_PC);
+        int i = 0;
+        while (i < nbrk && brk[i] != pc) i++;
+        if (i == nbrk && nbrk < ARMCORE_BREAKS_MAX) brk[nbrk++] = pc;
+        steps++;
+    }
+    assert_int_equal(armcore_set_breaks(q->core, brk, nbrk), 0);
+    int rc;
+    while ((rc = armcore_run_to(q->core, end)) == ARMCORE_HALTED) {
+        uint32_t pc = armcore_reg(q->core, UC_ARM_REG_PC);
+        int i = 0;
+        while (i < nbrk && brk[i] != pc) i++;
+        if (i == nbrk) fail_msg("halted at 0x%08x, not at a breakpoint", pc);
+        if (++hits > 2000000) fail_msg("halted %d times by 300,000 cycles: a resumed breakpoint taken again", hits);
+    }
+    assert_int_equal(rc, 0);
+    no_crash(r), no_crash(q);
+    print_message("debug halts: %d steps, %d breakpoints, %d hits\n", steps, nbrk, hits);
+    assert_true(steps > 1000 && nbrk == ARMCORE_BREAKS_MAX && hits > 10000);
+    print_message("debug halts: %u interrupts\n", mailbox(r).v[1]);
+    assert_true(mailbox(r).v[1] > 100); /* interrupts kept coming */
+    snapshot(r, a), snapshot(q, b);
+    assert_memory_equal(a, b, sizeof a);
+    rig_free(r), rig_free(q);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -449,6 +494,7 @@ int main(void)
         cmocka_unit_test(test_bitband), cmocka_unit_test(test_unmodeled), cmocka_unit_test(test_faults),
         cmocka_unit_test(test_clock_switch), cmocka_unit_test(test_fpu_extended_frame), cmocka_unit_test(test_idle_cyccnt),
         cmocka_unit_test(test_idle_hal_delay), cmocka_unit_test(test_idle_countflag), cmocka_unit_test(test_idle_bits), cmocka_unit_test(test_wfi_skip_same_state), cmocka_unit_test(test_chunking_same_state),
+        cmocka_unit_test(test_debug_halts_same_state),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

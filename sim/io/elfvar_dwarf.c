@@ -1,10 +1,10 @@
-/* watch_dwarf.c - a global variable's type from the image's DWARF (see
- * watch_dwarf.h). libdw reads .debug_info from the bytes in memory; each
+/* elfvar_dwarf.c - a global variable's type from the image's DWARF (see
+ * elfvar_dwarf.h). libdw reads .debug_info from the bytes in memory; each
  * compilation unit's top-level DW_TAG_variable entries are searched for
  * the name (and, where the entry has one, a DW_OP_addr location equal to
  * the symbol's address, so a static of the same name elsewhere is not
  * taken). Every walk is bounded: a crafted image cannot loop. */
-#include "watch_dwarf.h"
+#include "elfvar_dwarf.h"
 
 #include <dwarf.h>
 #include <elfutils/libdw.h>
@@ -50,7 +50,7 @@ static const char *tag_words(int tag)
 }
 
 /* A base type's encoding and size into v: 1, or -1 with err. */
-static int base_kind(Dwarf_Die *t, watch_var_t *v, char *err, size_t errn)
+static int base_kind(Dwarf_Die *t, elfvar_t *v, char *err, size_t errn)
 {
     Dwarf_Attribute a;
     Dwarf_Word enc = 0;
@@ -59,9 +59,9 @@ static int base_kind(Dwarf_Die *t, watch_var_t *v, char *err, size_t errn)
         snprintf(err, errn, "its DWARF base type has no encoding or size");
         return -1;
     }
-    if (enc == DW_ATE_float) v->kind = WATCH_FLOAT;
-    else if (enc == DW_ATE_signed || enc == DW_ATE_signed_char) v->kind = WATCH_SIGNED;
-    else if (enc == DW_ATE_unsigned || enc == DW_ATE_unsigned_char || enc == DW_ATE_boolean) v->kind = WATCH_UNSIGNED;
+    if (enc == DW_ATE_float) v->kind = ELFVAR_FLOAT;
+    else if (enc == DW_ATE_signed || enc == DW_ATE_signed_char) v->kind = ELFVAR_SIGNED;
+    else if (enc == DW_ATE_unsigned || enc == DW_ATE_unsigned_char || enc == DW_ATE_boolean) v->kind = ELFVAR_UNSIGNED;
     else {
         snprintf(err, errn, "its DWARF base type (encoding %u) is not an integer or a float", (unsigned)enc);
         return -1;
@@ -72,7 +72,7 @@ static int base_kind(Dwarf_Die *t, watch_var_t *v, char *err, size_t errn)
 
 /* The variable's type through typedefs, qualifiers, enums (their
  * underlying type, else signed) and pointers (unsigned): 1, or -1 with err. */
-static int resolve(Dwarf_Die *var, watch_var_t *v, char *err, size_t errn)
+static int resolve(Dwarf_Die *var, elfvar_t *v, char *err, size_t errn)
 {
     Dwarf_Die t;
     if (type_ref(var, &t) != 0) return snprintf(err, errn, "its DWARF entry has no type"), -1;
@@ -87,7 +87,7 @@ static int resolve(Dwarf_Die *var, watch_var_t *v, char *err, size_t errn)
             }
             int size = dwarf_bytesize(&t);
             if (size <= 0) return snprintf(err, errn, "its DWARF type has no size"), -1;
-            v->kind = tag == DW_TAG_pointer_type ? WATCH_UNSIGNED : WATCH_SIGNED;
+            v->kind = tag == DW_TAG_pointer_type ? ELFVAR_UNSIGNED : ELFVAR_SIGNED;
             v->size = (uint32_t)size;
             return 1;
         }
@@ -100,7 +100,7 @@ static int resolve(Dwarf_Die *var, watch_var_t *v, char *err, size_t errn)
 }
 
 /* Search the compilation units of dw: 1 found and typed, 0 none, -1 err. */
-static int search(Dwarf *dw, uint32_t elf_addr, watch_var_t *v, char *err, size_t errn)
+static int search(Dwarf *dw, uint32_t elf_addr, elfvar_t *v, char *err, size_t errn)
 {
     Dwarf_Off off = 0, next;
     size_t hsize;
@@ -137,7 +137,7 @@ static int is_placed_var(Dwarf_Die *die, const char *name, uint32_t lo, uint32_t
 /* Every compilation unit's top-level variables named v->name placed in
  * [lo, hi): 1 with the one address and its type, 0 none, -1 with err (two
  * places, or a type --watch cannot read). */
-static int search_placed(Dwarf *dw, uint32_t lo, uint32_t hi, uint32_t *elf_addr, watch_var_t *v, char *err,
+static int search_placed(Dwarf *dw, uint32_t lo, uint32_t hi, uint32_t *elf_addr, elfvar_t *v, char *err,
                          size_t errn)
 {
     Dwarf_Off off = 0, next;
@@ -153,7 +153,7 @@ static int search_placed(Dwarf *dw, uint32_t lo, uint32_t hi, uint32_t *elf_addr
                 if (++seen > DIES_MAX) break;
                 if (!is_placed_var(&die, v->name, lo, hi, &a) || (found && a == *elf_addr)) continue;
                 if (found)
-                    return snprintf(err, errn, "its DWARF has two variables of that name (at 0x%X and 0x%X): watch one by its symbol (avr-nm lists them)",
+                    return snprintf(err, errn, "its DWARF has two variables of that name (at 0x%X and 0x%X): watch one by its symbol (nm lists them)",
                                     (unsigned)*elf_addr, (unsigned)a), -2;
                 found = 1, *elf_addr = a, hit = die;
             } while (dwarf_siblingof(&die, &die) == 0);
@@ -163,7 +163,7 @@ static int search_placed(Dwarf *dw, uint32_t lo, uint32_t hi, uint32_t *elf_addr
     return found ? resolve(&hit, v, err, errn) : 0;
 }
 
-int watch_dwarf_find(char *buf, size_t len, uint32_t lo, uint32_t hi, uint32_t *elf_addr, watch_var_t *v, char *err,
+int elfvar_dwarf_find(char *buf, size_t len, uint32_t lo, uint32_t hi, uint32_t *elf_addr, elfvar_t *v, char *err,
                      size_t errn)
 {
     if (elf_version(EV_CURRENT) == EV_NONE) return 0;
@@ -176,7 +176,7 @@ int watch_dwarf_find(char *buf, size_t len, uint32_t lo, uint32_t hi, uint32_t *
     return rc;
 }
 
-int watch_dwarf_type(char *buf, size_t len, uint32_t elf_addr, watch_var_t *v, char *err, size_t errn)
+int elfvar_dwarf_type(char *buf, size_t len, uint32_t elf_addr, elfvar_t *v, char *err, size_t errn)
 {
     if (elf_version(EV_CURRENT) == EV_NONE) return 0;
     Elf *e = elf_memory(buf, len);
