@@ -183,10 +183,11 @@ static int ir_model_checks(const simcfg_t *c, validate_check_t *v, int n)
     double sx = ch * p->x_m - sh * p->y_m, sy = sh * p->x_m + ch * p->y_m; /* the sensor from the body centre */
     world_place(s->world, face - d - sx, 0.5 * c->world.cell_m - sy, h, NULL);
     const ir_t *ir = &((const ir_state_t *)s->part_state[k])->ir;
-    double want = m->gain_counts * m->ref_m * m->ref_m * ir_received_plane(ir, d, 0, ir->reflectivity, ir->gloss);
+    double z = p->z_m, want = m->gain_counts * m->ref_m * m->ref_m *
+                                ir_received_band(ir, d, 0, ir->reflectivity, ir->gloss, -z, c->world.wall_height_m - z);
     bench_fit(v, &n, "ir_far_field_120mm", want, bench_lit_minus_dark(s, 0), "counts",
-              "IR model: the rays cast in the world against the model's ideal plane straight on (ir.h): the model's own "
-              "formula from the robot file's keys, no outside data");
+              "IR model: the rays cast in the world against the model's ideal plane straight on (ir.h), as tall as a "
+              "wall: the model's own formula from the robot file's keys, no outside data");
     double dark = 0;
     unsigned g = (unsigned)((const ir_part_spec_t *)p->spec)->emitter;
     sim_emitter_set(s, g, 0);
@@ -230,6 +231,7 @@ static int gyro_checks(const simcfg_t *c, validate_check_t *v, int n)
 }
 
 static int ir_front_sum_checks(const simcfg_t *c, validate_check_t *v, int n);
+static int ir_ratio_checks(const simcfg_t *c, validate_check_t *v, int n);
 
 int validate_robot_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
@@ -238,7 +240,8 @@ int validate_robot_checks(const simcfg_t *c, validate_check_t *v, int n)
     n = ir_calibration(c, v, n);
     n = ir_model_checks(c, v, n);
     n = gyro_checks(c, v, n);
-    return ir_front_sum_checks(c, v, n);
+    n = ir_front_sum_checks(c, v, n);
+    return ir_ratio_checks(c, v, n);
 }
 
 /* The forward pair's normalised sum (mazerunner-core's get_front_sum: each
@@ -302,5 +305,47 @@ static int ir_front_sum_checks(const simcfg_t *c, validate_check_t *v, int n)
               "the robot file's measured_turn_sum (TURN_THRESHOLD_SS90E), no side walls: not used by the fit; reported, not graded: "
               "the model's front pair sees nothing of a side wall (sim/world/sensors/README.md)");
     sim_free(&bench.sim);
+    return n;
+}
+
+/* Each sensor's lit minus dark with the robot in pose `pose` (0: backed
+ * against a cell's rear wall, its wall ahead, as ir_calibration's backed
+ * pose; 1: centred in a corridor's end cell facing its end wall, as
+ * FRONT_REFERENCE's pose), into lmd[] (robot_count "ir" of them). */
+static int ir_pose_readings(const simcfg_t *c, int pose, double *lmd)
+{
+    sim_state_t *s = &bench.sim;
+    if (pose == 0) bench_field(&bench.maze, 3, 1, 1);
+    else bench_corridor(&bench.maze, 4);
+    if (bench_init(c) != 0) return -1;
+    double cell = c->world.cell_m, wall = c->world.wall_thick_m;
+    if (pose == 0) world_place(s->world, 1.5 * cell, wall / 2 + c->robot.body_l_m / 2, M_PI / 2, NULL);
+    else world_place(s->world, 4 * cell - wall / 2 - (cell / 2 - wall / 2) - c->robot.axle_y_m, 0.5 * cell, 0, NULL);
+    for (unsigned i = 0; i < robot_count(c, "ir"); i++) lmd[i] = bench_lit_minus_dark(s, i);
+    sim_free(s);
+    return 0;
+}
+
+/* The forward sensors' rise from backed against the rear wall to centred
+ * facing the wall ahead (the robot file's measured_facing_ratio, a real
+ * robot's own two readings' ratio, so no gain enters it): the near field
+ * against the far, predicted: the fit used only the backed or centred
+ * reading. */
+static int ir_ratio_checks(const simcfg_t *c, validate_check_t *v, int n)
+{
+    unsigned nir = robot_count(c, "ir"), any = 0;
+    for (unsigned i = 0; i < nir; i++)
+        any |= ((const ir_part_spec_t *)c->robot.part[robot_part_of_kind(c, "ir", i)].spec)->measured_facing_ratio > 0;
+    double backed[ROBOT_MAX_PARTS], facing[ROBOT_MAX_PARTS];
+    if (!any || nir > ROBOT_MAX_PARTS || ir_pose_readings(c, 0, backed) != 0 || ir_pose_readings(c, 1, facing) != 0) return n;
+    for (unsigned i = 0; i < nir; i++) {
+        const robot_part_t *p = &c->robot.part[robot_part_of_kind(c, "ir", i)];
+        double want = ((const ir_part_spec_t *)p->spec)->measured_facing_ratio;
+        if (want <= 0) continue;
+        bench_add(v, &n, name_of(n, "ir_%s_facing_over_backed", p->name), want, backed[i] > 0 ? facing[i] / backed[i] : 0, "1",
+                  10, VALIDATE_NEAR,
+                  "the robot file's measured_facing_ratio: the real robot's reading centred facing a wall over its reading "
+                  "backed against the rear wall (132 mm from the axle to the wall ahead): not used by the fit");
+    }
     return n;
 }

@@ -2,7 +2,8 @@
  * against the ideal plane, rho/d^2 in the far field, the near-field peak
  * and fall-off of the offset detector, the angle of a matt and a glossy
  * wall, ambient and noise with the emitter off, the ADC's rails, seeded
- * streams, and a beam grazing a wall end. */
+ * streams, a beam grazing a wall end, the emitter's skirt and the board's
+ * shield. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -253,6 +254,60 @@ static void test_graze(void **state)
     world_destroy(w);
 }
 
+/* (7) The emitter's skirt (SFH4550 p.5: 0.04 at 10 deg, gone by 45): its
+ * rays cast in the world give the ideal plane cut to the wall's height
+ * (ir_received_band); with the detector offset it lifts the near field,
+ * where the skirt's spots sit near the detector's axis, more than the far,
+ * where its upper rays pass over the wall; the far reading falls faster
+ * than 1/d^2 as they do. */
+static void test_skirt(void **state)
+{
+    (void)state;
+    world_t *w = arena(0);
+    static ir_spec_t sk;
+    ir_spec_default(&sk);
+    sk.noise_counts = 0, sk.skirt_rel = 0.04, sk.skirt_deg = 45;
+    ir_t irs, ir0 = quiet();
+    ir_init(&irs, &sk, cfg.world.wall_reflectivity, 1, 0);
+    assert_int_equal(irs.nrays, ir0.nrays + 4 * 8);
+    double y = 1.5 * cfg.world.cell_m, z = 0.036, h = cfg.world.wall_height_m, rho = irs.reflectivity;
+    for (double d = 0.02; d <= 0.2001; d += 0.02) {
+        double p[3] = { east_face() - d, y, z };
+        double r = ir_received(&irs, w, p, 0), want = ir_received_band(&irs, d, 0, rho, 0, -z, h - z);
+        assert_true(fabs(r - want) <= 0.01 * want + 1e-9);
+    }
+    /* the same band as the plane when it spans everything the rays reach */
+    assert_true(fabs(ir_received_band(&irs, 0.1, 0, rho, 0, -1, 1) - ir_received_plane(&irs, 0.1, 0, rho, 0)) < 1e-12);
+    double near_s = ir_received_band(&irs, 0.024, 0, rho, 0, -z, h - z), near_0 = ir_received_band(&ir0, 0.024, 0, rho, 0, -z, h - z);
+    double far_s = ir_received_band(&irs, 0.072, 0, rho, 0, -z, h - z), far_0 = ir_received_band(&ir0, 0.072, 0, rho, 0, -z, h - z);
+    double at180_s = ir_received_band(&irs, 0.18, 0, rho, 0, -z, h - z), at180_0 = ir_received_band(&ir0, 0.18, 0, rho, 0, -z, h - z);
+    assert_true(near_s / far_s > 1.2 * near_0 / far_0);
+    assert_true(at180_s / far_s < 0.97 * at180_0 / far_0);
+    world_destroy(w);
+}
+
+/* (8) The board's edge in front of the detector hides the spots above it:
+ * no shield at setback 0; a setback takes light from the near field (spots
+ * high in the detector's view) and little from the far. */
+static void test_shield(void **state)
+{
+    (void)state;
+    static ir_spec_t sh;
+    ir_spec_default(&sh);
+    sh.noise_counts = 0, sh.shield_height_m = 0.0015;
+    ir_t ir0 = quiet(), irs;
+    double rho = ir0.reflectivity;
+    sh.shield_setback_m = 0;
+    ir_init(&irs, &sh, rho, 1, 0);
+    assert_true(ir_received_plane(&irs, 0.03, 0, rho, 0) == ir_received_plane(&ir0, 0.03, 0, rho, 0));
+    sh.shield_setback_m = 0.008;
+    ir_init(&irs, &sh, rho, 1, 0);
+    double n = ir_received_plane(&irs, 0.024, 0, rho, 0) / ir_received_plane(&ir0, 0.024, 0, rho, 0);
+    double f = ir_received_plane(&irs, 0.15, 0, rho, 0) / ir_received_plane(&ir0, 0.15, 0, rho, 0);
+    assert_true(n < 0.9 && f > 0.9 && f <= 1);
+    assert_true(n < f);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -264,6 +319,8 @@ int main(void)
         cmocka_unit_test(test_rails),
         cmocka_unit_test(test_streams),
         cmocka_unit_test(test_graze),
+        cmocka_unit_test(test_skirt),
+        cmocka_unit_test(test_shield),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

@@ -17,6 +17,14 @@ void ir_spec_default(ir_spec_t *s)
      * half angle +-3 deg (that PDF's text is font-encoded, not extractable
      * here: the figure is Osram's published one, to check on the page) */
     s->half_angle_deg = 3.0;
+    /* SFH4550 datasheet v1.6 p.5, Radiation Characteristics, read from the
+     * linear plot (I_rel against angle): 0.04 at 10 deg, 0.022 at 20, 0.015
+     * at 30, 0.007 at 40, 0 by 45 deg; a line from 0.04 at 10 deg to 0 at
+     * 45 deg stays within 0.007 of it. Integrated over its solid angle the
+     * skirt carries about twice the beam's power. */
+    s->skirt_rel = 0; /* off unless a robot file gives it: its SFH4550 value is 0.04 */
+    s->skirt_deg = 45.0;
+    s->skirt_rings = 4; /* ours: 4 x rays_per_ring rays, 9.4 deg apart */
     /* SFH309FA datasheet (docs/datasheets/sfh309-phototransistor.pdf):
      * half angle +-12 deg (the BPW85's is +-25 deg, BPW85 datasheet p. 1) */
     s->det_half_angle_deg = 12.0;
@@ -35,6 +43,11 @@ void ir_spec_default(ir_spec_t *s)
      * the board: 5 mm LED's centre 2.5 mm above, 1.6 mm board, 3 mm
      * detector's centre 1.5 mm below */
     s->det_offset_m = -0.0056;
+    /* the board between emitter and detector: its underside 1.5 mm above
+     * the 3 mm detector's centre; its edge level with the detector (ours:
+     * no shield) */
+    s->shield_height_m = 0.0015;
+    s->shield_setback_m = 0;
     /* ours: a full wall at 0.5 m returns 1000 * 0.85 * (0.05 / 0.5)^2 = 8.5 counts */
     s->max_m = 0.5;
     /* ours: the detectors sit below the sensor board, shielded from room
@@ -54,6 +67,19 @@ static double profile(double th_deg, double half_deg)
     return exp(-0.69314718055994531 * r * r) /* ln 2 */;
 }
 
+/* The skirt's knee: where skirt_rel is read (SFH4550 p.5). */
+#define SKIRT_KNEE_DEG 10.0
+
+/* The emitter's relative intensity at th_deg off its axis: the beam (a
+ * Gaussian of its half angle) or the skirt, whichever is brighter. */
+static double emitter_profile(const ir_spec_t *s, double th_deg)
+{
+    double g = profile(th_deg, s->half_angle_deg), k = 0;
+    if (s->skirt_rel > 0 && s->skirt_deg > SKIRT_KNEE_DEG && th_deg < s->skirt_deg)
+        k = s->skirt_rel * (th_deg <= SKIRT_KNEE_DEG ? 1 : (s->skirt_deg - th_deg) / (s->skirt_deg - SKIRT_KNEE_DEG));
+    return g > k ? g : k;
+}
+
 static void add_ray(ir_t *ir, double th_deg, double phi_rad, double solid_sr)
 {
     double th = th_deg * M_PI / 180.0;
@@ -62,7 +88,7 @@ static void add_ray(ir_t *ir, double th_deg, double phi_rad, double solid_sr)
     ir->off[i][1] = sin(th) * cos(phi_rad);
     ir->off[i][2] = sin(th) * sin(phi_rad);
     /* the detector's profile is taken where it sees each spot (ray_return) */
-    ir->weight[i] = profile(th_deg, ir->spec->half_angle_deg) * solid_sr;
+    ir->weight[i] = emitter_profile(ir->spec, th_deg) * solid_sr;
 }
 
 void ir_init(ir_t *ir, const ir_spec_t *s, double reflectivity, uint64_t seed, unsigned index)
@@ -83,6 +109,14 @@ void ir_init(ir_t *ir, const ir_spec_t *s, double reflectivity, uint64_t seed, u
         for (int j = 0; j < per; j++) /* odd rings turned half a step */
             add_ray(ir, th, 2 * M_PI * (j + 0.5 * (k & 1)) / per, solid);
     }
+    /* the skirt: annuli from the beam's last (half a step beyond its
+     * outer ring) out to skirt_deg, a ring of rays at each one's middle */
+    int sk = s->skirt_rel <= 0 || s->skirt_rings < 1 ? 0 : s->skirt_rings > IR_MAX_SKIRT_RINGS ? IR_MAX_SKIRT_RINGS : (int)s->skirt_rings;
+    double s0 = s->cone_deg + step / 2, sstep = sk && s->skirt_deg > s0 ? (s->skirt_deg - s0) / sk : 0;
+    for (int k = 1; sstep > 0 && k <= sk; k++) {
+        double th = s0 + (k - 0.5) * sstep, solid = 2 * M_PI * sin(th * M_PI / 180.0) * sstep * M_PI / 180.0 / per;
+        for (int j = 0; j < per; j++) add_ray(ir, th, 2 * M_PI * (j + 0.5 * ((rings + k) & 1)) / per, solid);
+    }
     double k0 = 0; /* a matt plane straight on in the far field: the detector sees ray i at th_i */
     for (int i = 0; i < ir->nrays; i++)
         k0 += ir->weight[i] * profile(acos(ir->off[i][0]) * 180.0 / M_PI, s->det_half_angle_deg) * pow(ir->off[i][0], 3);
@@ -98,17 +132,33 @@ void ir_set_finish(ir_t *ir, double gloss, double gloss_exp)
     ir->gloss_exp = gloss_exp < 1 ? 1 : gloss_exp;
 }
 
+/* The fraction of the detector's aperture (DET_APERTURE_M tall, centred
+ * on it) that sees a spot x_m ahead of it and z_m above it past the board's
+ * edge, shield_setback_m ahead and shield_height_m above the detector: the
+ * line from the spot over the edge meets the detector's plane at z0. */
+#define DET_APERTURE_M 0.003 /* SFH309FA: a 3 mm package (datasheet p.1 outline) */
+static double board_shade(const ir_spec_t *s, double x_m, double z_m)
+{
+    double sb = s->shield_setback_m, h = s->shield_height_m;
+    if (sb <= 0 || z_m <= h) return 1;
+    if (x_m <= sb) return 0;
+    double z0 = h - (z_m - h) * sb / (x_m - sb), f = (z0 + DET_APERTURE_M / 2) / DET_APERTURE_M;
+    return f < 0 ? 0 : f > 1 ? 1 : f;
+}
+
 static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 /* What one ray (unit u from the emitter at e) returns to the detector at
  * det (looking along axis) from a spot d along it on a surface of normal n
  * (towards the ray), reflectivity rho and gloss: q_i of ir.h without w_i. */
 static double ray_return(const ir_t *ir, const double e[3], const double u[3], double d, const double n[3],
-                         const double det[3], const double axis[3], double rho, double gloss)
+                         const double det[3], const double axis[3], const double up[3], double rho, double gloss)
 {
     double q[3], m[3], un = dot3(u, n);
     if (un >= 0) return 0; /* the surface's back */
     for (int k = 0; k < 3; k++) q[k] = det[k] - (e[k] + d * u[k]), m[k] = u[k] - 2 * un * n[k];
+    double shade = board_shade(ir->spec, -dot3(q, axis), -dot3(q, up));
+    if (shade <= 0) return 0;
     double r = sqrt(dot3(q, q));
     if (r <= 0) return 0;
     for (int k = 0; k < 3; k++) q[k] /= r;
@@ -118,7 +168,7 @@ static double ray_return(const ir_t *ir, const double e[3], const double u[3], d
     double cos_a = dot3(m, q), f = rho;
     if (gloss > 0 && cos_a > 0) f += gloss * (ir->gloss_exp + 2) / 2 * pow(cos_a, ir->gloss_exp);
     double rr = r < ir->spec->near_m ? ir->spec->near_m : r;
-    return f * cos_o * profile(beta_deg, ir->spec->det_half_angle_deg) / (rr * rr);
+    return shade * f * cos_o * profile(beta_deg, ir->spec->det_half_angle_deg) / (rr * rr);
 }
 
 /* The detector's place: det_offset_m along up from the emitter at pos. */
@@ -139,15 +189,20 @@ double ir_received_frame(const ir_t *ir, world_t *w, const double pos_m[3], cons
         for (int k = 0; k < 3; k++) u[k] = o[0] * axis[k] + o[1] * left[k] + o[2] * up[k];
         double d = world_ray_normal(w, pos_m, u, s->max_m, n);
         if (d < 0) continue;
-        sum += ir->weight[i] * ray_return(ir, pos_m, u, d, n, det, axis, ir->reflectivity, ir->gloss);
+        sum += ir->weight[i] * ray_return(ir, pos_m, u, d, n, det, axis, up, ir->reflectivity, ir->gloss);
     }
     return sum;
 }
 
 double ir_received_plane(const ir_t *ir, double d_m, double tilt_rad, double rho, double gloss)
 {
+    return ir_received_band(ir, d_m, tilt_rad, rho, gloss, -INFINITY, INFINITY);
+}
+
+double ir_received_band(const ir_t *ir, double d_m, double tilt_rad, double rho, double gloss, double z_lo_m, double z_hi_m)
+{
     /* the sensor's own frame: x along the axis, y left, z up; the emitter at the origin */
-    static const double e[3] = { 0, 0, 0 }, axis[3] = { 1, 0, 0 };
+    static const double e[3] = { 0, 0, 0 }, axis[3] = { 1, 0, 0 }, up[3] = { 0, 0, 1 };
     double n[3] = { -cos(tilt_rad), -sin(tilt_rad), 0 }, det[3] = { 0, 0, ir->spec->det_offset_m };
     double sum = 0, c = -d_m * cos(tilt_rad); /* the plane: x . n = c */
     for (int i = 0; i < ir->nrays; i++) {
@@ -155,7 +210,8 @@ double ir_received_plane(const ir_t *ir, double d_m, double tilt_rad, double rho
         if (un >= 0) continue;
         double d = c / un;
         if (d <= 0 || d > ir->spec->max_m) continue;
-        sum += ir->weight[i] * ray_return(ir, e, ir->off[i], d, n, det, axis, rho, gloss);
+        if (d * ir->off[i][2] < z_lo_m || d * ir->off[i][2] > z_hi_m) continue; /* over or under the band */
+        sum += ir->weight[i] * ray_return(ir, e, ir->off[i], d, n, det, axis, up, rho, gloss);
     }
     return sum;
 }
@@ -216,9 +272,15 @@ static const keytab_t keys[] = {
     I(measured_facing_sum, measured_facing_sum, -1, -1, 10000, 0, 0, "1", "the real pair's normalised front sum centred facing a wall (mmsim --validate: predicted)"),
     I(measured_turn_sum, measured_turn_sum, -1, -1, 10000, 0, 0, "1", "the real pair's normalised front sum with the wall ahead 154 mm from the axle, no side walls (mmsim --validate: predicted)"),
     I(measured_turn_wall_adjust, measured_turn_wall_adjust, 0, 0, 10000, 0, 0, "1", "what each side wall adds to that front sum on the real robot (mazerunner-core's EXTRA_WALL_ADJUST)"),
+    I(measured_facing_ratio, measured_facing_ratio, -1, -1, 1000, 0, 0, "1", "the real robot's lit minus dark centred facing a wall over backed against the rear wall (mmsim --validate: predicted)"),
     I(gain_counts, model.gain_counts, 1000, 0, 1e6, 0, 0, "counts", "lit minus dark for a reflectivity-1 wall straight on at ref_mm; fit it to your robot's readings"),
     I(ref_mm, model.ref_m, 50, 1, 1000, 1000, 0, "mm", "the gain's reference distance"),
     I(half_angle_deg, model.half_angle_deg, 3, 0.5, 60, 0, 0, "deg", "SFH4550 datasheet: +-3 deg half angle"),
+    I(skirt_rel, model.skirt_rel, 0, 0, 1, 0, 0, "1", "the emitter's skirt at 10 deg off the axis, of the axis intensity (SFH4550 datasheet p.5: 0.04; 0: none)"),
+    I(skirt_deg, model.skirt_deg, 45, 10, 90, 0, 0, "deg", "SFH4550 datasheet p.5: the skirt ends by 45 deg"),
+    I(skirt_rings, model.skirt_rings, 4, 0, IR_MAX_SKIRT_RINGS, 0, 1, "1", "ours: rings of rays in the skirt"),
+    I(shield_setback_mm, model.shield_setback_m, 0, 0, 50, 1000, 0, "mm", "the board's edge ahead of the detector's centre (0: no shield)"),
+    I(shield_height_mm, model.shield_height_m, 1.5, 0, 50, 1000, 0, "mm", "the board's underside above the detector's centre: a 3 mm detector under the board"),
     I(det_half_angle_deg, model.det_half_angle_deg, 12, 0.5, 90, 0, 0, "deg", "SFH309FA datasheet: +-12 deg half angle"),
     I(cone_deg, model.cone_deg, 6, 0, 60, 0, 0, "deg", "ours: the outermost ring at two emitter half angles"),
     I(rings, model.rings, 2, 0, IR_MAX_RINGS, 0, 1, "1", "ours: rings of rays about the axis"),

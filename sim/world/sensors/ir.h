@@ -53,12 +53,20 @@
 #include "world/sensors/sensor.h"
 
 #define IR_MAX_RINGS 4
+#define IR_MAX_SKIRT_RINGS 8
 #define IR_MAX_PER_RING 16
-#define IR_MAX_RAYS (1 + IR_MAX_RINGS * IR_MAX_PER_RING)
+#define IR_MAX_RAYS (1 + (IR_MAX_RINGS + IR_MAX_SKIRT_RINGS) * IR_MAX_PER_RING)
 
 /* The model's numbers (plain data; ir_spec_default gives UKMARSBOT's). */
 typedef struct {
     double half_angle_deg;     /* emitter: half-intensity angle, deg */
+    /* The emitter's skirt: the light its lens does not gather into the
+     * beam, skirt_rel of the axis intensity at SKIRT_KNEE_DEG, falling
+     * linearly to 0 at skirt_deg (0: none), cast as skirt_rings rings of
+     * rays_per_ring rays from cone_deg out to skirt_deg. */
+    double skirt_rel;          /* relative intensity at 10 deg, 0..1 */
+    double skirt_deg;          /* where it ends, deg */
+    double skirt_rings;        /* rings of rays in it, 0..IR_MAX_SKIRT_RINGS */
     double det_half_angle_deg; /* detector: half-sensitivity angle, deg */
     double cone_deg;           /* the outermost ring's angle off the axis, deg */
     double rings;              /* rings of rays about the centre ray, 0..IR_MAX_RINGS */
@@ -67,6 +75,8 @@ typedef struct {
     double ref_m;              /* the gain's reference distance, m */
     double near_m;             /* a guard: a spot closer to the detector counts as this far, m */
     double det_offset_m;       /* the detector from the emitter along the sensor's up axis, m (negative: below) */
+    double shield_setback_m;   /* the board's edge ahead of the detector's centre, m (0: no shield) */
+    double shield_height_m;    /* the board's underside above the detector's centre, m */
     double max_m;              /* the rays' length, m */
     double ambient_counts;     /* the dark reading, counts */
     double noise_counts;       /* standard deviation of one sample, counts */
@@ -99,6 +109,7 @@ typedef struct {
     double measured_facing_sum; /* centred in a cell facing its wall ahead (FRONT_REFERENCE) */
     double measured_turn_sum;  /* the axle 20 mm past a cell boundary, the wall ahead 154 mm from it, no side walls (TURN_THRESHOLD_SS90E) */
     double measured_turn_wall_adjust; /* what each side wall adds to the turn's sum (EXTRA_WALL_ADJUST); 0 none */
+    double measured_facing_ratio; /* its own lit minus dark centred facing a wall over backed against the rear wall; -1 none */
 } ir_part_spec_t;
 
 /* An [ir.NAME] sensor at run time: the model and its latest samples. */
@@ -122,6 +133,10 @@ void ir_set_finish(ir_t *ir, double gloss, double gloss_exp);
  * its axis, its normal turned tilt_rad about the sensor's up axis (0:
  * straight on), with no world: the model of ir.h for an ideal plane. */
 double ir_received_plane(const ir_t *ir, double d_m, double tilt_rad, double rho, double gloss);
+/* The same for a band of that plane from z_lo_m to z_hi_m along the
+ * sensor's up axis (a wall of finite height: its foot and top relative to
+ * the emitter); ir_received_plane is the band from -inf to +inf. */
+double ir_received_band(const ir_t *ir, double d_m, double tilt_rad, double rho, double gloss, double z_lo_m, double z_hi_m);
 /* The light returned to the detector with the emitter on, 1/m^2 (see
  * above: about rho/d^2 for a matt wall straight on in the far field), for a sensor at
  * pos_m (world, m) looking horizontally along dir_rad. */
