@@ -339,6 +339,31 @@ static void mmio_write(armcore_t *c, uint32_t addr, unsigned size, uint32_t v)
     if (periph_or_bb(c, addr, size, true, &v) != MMIO_OK) bus_fault(c, addr, true);
 }
 
+/* The device electronic signature (RM0008 30, RM0090 39): the flash size in KiB and a fixed 96-bit unique ID (ours:
+ * the bytes 0x01..0x0C), read-only; the rest of its 4 KiB page (the system memory's boot loader, the option bytes,
+ * OTP) is not modeled: listed, read as 0. */
+#define SIG_PAGE_BYTES 0x1000u
+static uint32_t sig_page(const armimage_mcu_t *m) { return m->fsize_addr & ~(SIG_PAGE_BYTES - 1u); }
+
+static uint64_t on_sig_read(uc_engine *uc, uint64_t off, unsigned size, void *u)
+{
+    armcore_t *c = u;
+    uint32_t addr = sig_page(c->mcu) + (uint32_t)off, v = 0;
+    for (unsigned i = 0; i < size; i++) {
+        uint32_t a = addr + i, b;
+        if (a - c->mcu->fsize_addr < 2) b = ((c->mcu->flash_bytes >> 10) >> (8 * (a - c->mcu->fsize_addr))) & 0xFFu;
+        else if (a - c->mcu->uid_addr < 12) b = a - c->mcu->uid_addr + 1;
+        else return unmodeled(c, addr, NULL, false), 0;
+        v |= b << (8 * i);
+    }
+    return v;
+}
+static void on_sig_write(uc_engine *uc, uint64_t off, unsigned size, uint64_t v, void *u)
+{
+    armcore_t *c = u;
+    unmodeled(c, sig_page(c->mcu) + (uint32_t)off, NULL, true); /* read-only memory: the write is lost */
+}
+
 static uint64_t on_periph_read(uc_engine *uc, uint64_t off, unsigned size, void *u) { return mmio_read(u, PERIPH_BASE + (uint32_t)off, size); }
 static void on_periph_write(uc_engine *uc, uint64_t off, unsigned size, uint64_t v, void *u) { mmio_write(u, PERIPH_BASE + (uint32_t)off, size, (uint32_t)v); }
 static uint64_t on_ppb_read(uc_engine *uc, uint64_t off, unsigned size, void *u) { return mmio_read(u, CORTEXM_PPB_BASE + (uint32_t)off, size); }
@@ -1021,6 +1046,7 @@ static bool map_memories(armcore_t *c, char *err, size_t errn)
     if (!e) e = uc_mmio_map(c->uc, PERIPH_BASE, PERIPH_BYTES, on_periph_read, c, on_periph_write, c);
     if (!e) e = uc_mmio_map(c->uc, CORTEXM_PPB_BASE, CORTEXM_PPB_BYTES, on_ppb_read, c, on_ppb_write, c);
     if (!e) e = uc_mmio_map(c->uc, SRAM_BB_BASE, BB_ALIAS_BYTES, on_sram_bb_read, c, on_sram_bb_write, c);
+    if (!e && m->fsize_addr) e = uc_mmio_map(c->uc, sig_page(m), SIG_PAGE_BYTES, on_sig_read, c, on_sig_write, c);
     uc_hook h;
     if (!e) e = uc_hook_add(c->uc, &h, UC_HOOK_BLOCK, (void *)on_block, c, 1, 0);
     if (!e) e = uc_hook_add(c->uc, &h, UC_HOOK_INTR, (void *)on_intr, c, 1, 0);

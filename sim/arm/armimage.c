@@ -26,13 +26,17 @@ enum { ARCH_V7 = 10, ARCH_V6M = 11, ARCH_V6SM = 12, ARCH_V7EM = 13 }; /* Tag_CPU
  * bits from the programming manual. */
 static const armimage_mcu_t mcus[] = {
     { "stm32f103x8", ARMCORE_M3, 0, 0x08000000u, 64u << 10, 0x20000000u, 20u << 10, 43, 4, 0x411FC231u,
+      0x1FFFF7E0u, 0x1FFFF7E8u,
       "DS5319 Rev 17 table 2 (64 KB flash, 20 KB SRAM), figure 11 memory map; RM0008 Rev 21 table 63 (medium density, "
-      "positions 0-42); PM0056 Rev 7 4.3.7 (4 priority bits), 4.4.1 (CPUID 0x411FC231)" },
+      "positions 0-42), 30.1.1-30.2 (F_SIZE at 0x1FFFF7E0, UID at 0x1FFFF7E8); PM0056 Rev 7 4.3.7 (4 priority bits), "
+      "4.4.1 (CPUID 0x411FC231)" },
     { "stm32f103xb", ARMCORE_M3, 0, 0x08000000u, 128u << 10, 0x20000000u, 20u << 10, 43, 4, 0x411FC231u,
-      "DS5319 Rev 17 table 2 (128 KB flash, 20 KB SRAM); RM0008 Rev 21 table 63; PM0056 Rev 7 4.3.7, 4.4.1" },
+      0x1FFFF7E0u, 0x1FFFF7E8u,
+      "DS5319 Rev 17 table 2 (128 KB flash, 20 KB SRAM); RM0008 Rev 21 table 63, 30.1.1-30.2; PM0056 Rev 7 4.3.7, 4.4.1" },
     { "stm32f405xg", ARMCORE_M4, 1, 0x08000000u, 1024u << 10, 0x20000000u, 128u << 10, 82, 4, 0x410FC241u,
+      0x1FFF7A22u, 0x1FFF7A10u,
       "DS8626 Rev 9 table 2 (1 MB flash, 112+16 KB contiguous SRAM at 0x20000000; CCM not mapped); RM0090 Rev 19 "
-      "table 61 (positions 0-81); PM0214 Rev 10 4.3.7 (4 priority bits), 4.4.1 (CPUID 0x410FC241)" },
+      "table 61 (positions 0-81), 39.1-39.2 (UID at 0x1FFF7A10, F_SIZE at 0x1FFF7A22); PM0214 Rev 10 4.3.7 (4 priority bits), 4.4.1 (CPUID 0x410FC241)" },
 };
 
 const armimage_mcu_t *armimage_mcu(const char *name)

@@ -28,6 +28,8 @@ typedef struct {
     unsigned nirq;          /* external interrupt lines (vector table entries past the 16 of the core) */
     unsigned prio_bits;     /* NVIC priority bits implemented (the upper bits of each priority byte) */
     uint32_t cpuid;         /* SCB CPUID */
+    uint32_t fsize_addr;    /* the device electronic signature's flash size register (16 bits, KiB) */
+    uint32_t uid_addr;      /* its 96-bit unique device ID */
     const char *source;
 } armimage_mcu_t;
 
