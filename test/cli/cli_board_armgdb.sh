@@ -7,6 +7,10 @@
 #                two hits, steps back into main, and the run's JSON equals the run's
 #                without --gdb (but the wall-time fields). A bad PORT is one line,
 #                exit 2; a port in use one line, exit 3.
+#   --watch NAME boardtest's tick counter (a static in SRAM, typed u32 from DWARF)
+#                on MM_WATCH (mmlog --dump) at every telemetry sample: the
+#                milliseconds since SysTick started, the JSON unchanged; in
+#                --report's JSON; a name the image lacks, a flash constant: one line, exit 2.
 # SKIP only without gdb-multiarch or arm-none-eabi-gcc.
 set -u
 B=${BUILD:-build}
@@ -56,6 +60,23 @@ has '^\[Inferior 1 (Remote target) exited normally\]' "continue to the run's end
 [ "$(strip "$T/plain.json")" = "$(strip "$T/gdb.json")" ] && ok "the JSON with --gdb equals the JSON without" \
   || bad "--gdb changed the JSON: $(diff <(strip "$T/plain.json" | tr , '\n') <(strip "$T/gdb.json" | tr , '\n') | head -10)"
 
+# ---- --watch: the tick counter on MM_WATCH and in the report, the JSON unchanged ----
+MMLOG=${MMLOG:-$B/mmlog}
+want_rc 1 "--watch ticks --lcm-log" arm --watch ticks --lcm-log "$T/w.lcm" --report "$T/w.png"
+[ "$(strip "$T/plain.json")" = "$(strip "$T/out")" ] && ok "--watch: the JSON equals the run's without" || bad "--watch changed the JSON"
+"$MMLOG" --dump MM_WATCH "$T/w.lcm" >"$T/w.jsonl" 2>"$T/w.err" || bad "mmlog --dump MM_WATCH: $(cat "$T/w.err")"
+python3 - "$T/w.jsonl" "$T/w.json" <<'PY' && ok "MM_WATCH: ticks (u32) each 10 ms sample, 10 more each time, 697 at 0.7 s (SysTick on at 3 ms); the report's rows too" || bad "MM_WATCH: $(head -3 "$T/w.jsonl")"
+import json, sys
+m = [json.loads(l) for l in open(sys.argv[1])]
+ok = len(m) == 70 and all(x["name"] == ["ticks"] and x["type"] == ["u32"] for x in m)
+ok = ok and all(int(x["value"][0]) == x["utime"] // 1000 - 3 for x in m) and m[-1]["value"] == [697.0]
+rep = json.load(open(sys.argv[2]))
+w = rep.get("watch", {})
+ok = ok and w.get("columns", [])[-1:] == ["ticks"] and len(w["rows"]) > 100
+ok = ok and all(int(r[-1]) == max(0, round(r[0] * 1000) - 3) for r in w.get("rows", []))
+sys.exit(0 if ok else 1)
+PY
+
 # ---- bad ports: one line, exit 2; a port in use: one line, exit 3 ----
 ONE_ERROR_LINE=1
 want_rc 2 "--gdb 0: exit 2" arm --gdb 0
@@ -72,6 +93,9 @@ want_rc 3 "--gdb on a port in use: exit 3" timeout 120 "$MMSIM" --board bulebule
 grep -q "^mmsim: --gdb $PORT: cannot listen on 127.0.0.1:$PORT: Address already in use$" "$T/err" \
   && ok "a port in use: says so" || bad "a port in use: $(cat "$T/err")"
 kill $HOLD 2>/dev/null; wait $HOLD 2>/dev/null
+want_rc 2 "--watch nope: exit 2" arm --watch ticks,nope
+grep -q "^mmsim: --watch: no global variable 'nope' in $FW$" "$T/err" && ok "--watch nope: says so" || bad "--watch nope: $(cat "$T/err")"
+want_rc 2 "--watch on a run without an image: exit 2" "$MMSIM" --maze "$MAZE" --watch ticks
 ONE_ERROR_LINE=0
 
 [ $fails -eq 0 ] || { echo "$fails failed"; exit 1; }
