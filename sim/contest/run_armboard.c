@@ -201,7 +201,7 @@ static void arm_results(run_t *r, void *self, json_t *j)
     json_object_set_new(b, "exceptions", json_integer((json_int_t)cs.exceptions)); /* entered, SysTick and faults included */
     json_object_set_new(b, "idle_cycles", json_integer((json_int_t)cs.idle_cycles));
     /* the cycles jumped over rather than run one by one (none with --no-skip: the rest of the JSON is the same) */
-    json_object_set_new(b, "skipped", json_pack("{s:I, s:I, s:I}", "sleep_cycles", (json_int_t)(r->o->no_skip ? 0 : cs.idle_cycles),
+    json_object_set_new(b, "skipped", json_pack("{s:I, s:I, s:I}", "sleep_cycles", (json_int_t)cs.idle_jumped,
                                                 "wait_loops", (json_int_t)cs.loop_skips, "wait_loop_cycles", (json_int_t)cs.loop_cycles));
     json_object_set_new(b, "interrupt_requests", irq_counts(soc));
     json_object_set_new(b, "adc_samples", adc_counts(st));
