@@ -145,3 +145,5 @@ print("PIL uno/Mouse.elf classic/japan2019: %s, sim %.1f s, wall %.1f s, real-ti
 rm -f "$B/pil-bench.err"
 # The Cortex-M core on libunicorn (sim/arm): host ns per simulated instruction, exception round trip
 $B/armcore_speed || echo "SKIP ARM core: build/armcore_speed failed"
+# An unmodified ARM image on the STM32 board: bulebule's host instructions per simulated ms and its search's real-time factor
+B=$B SHARED=$SHARED bash bench/armboard.sh $B/mmsim

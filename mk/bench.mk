@@ -5,7 +5,7 @@ bench: deps
 	@$(MAKE) --no-print-directory bench-run
 bench-run: $(B)/mmmaze $(B)/mmsim $(B)/bench_flood $(B)/simavr_cycles $(B)/avr/flood.elf \
 	$(B)/avr/tick0.elf $(B)/avr/tick100.elf arduino $(B)/clients/board/EncPoll.elf $(B)/clients/board/EncPollEdge.elf $(B)/ode_rows \
-	$(B)/armcore_speed $(ARM_TEST_ELFS)
+	$(B)/armcore_speed $(ARM_TEST_ELFS) client-bulebule
 	BENCH_MAZE=$(BENCH_MAZE) bash bench/run.sh
 $(B)/armcore_speed: bench/armcore_speed.c $(B)/libmm.a
 	$(CC) $(STD) $(WARN) $(INC) $(CFLAGS) $< $(B)/libmm.a $(LIBS) -o $@

@@ -70,10 +70,13 @@ static void usage(FILE *out)
           "             --watch NAME[,NAME...]: the firmware's global variables, by the ELF's symbols and DWARF,\n"
           "             each step on LCM channel MM_WATCH and in --report beside the true pose)\n"
           "       mmsim --maze FILE --board NAME|FILE --firmware IMAGE.elf [--flash FILE] [--input \"T ACTION; ...\"]\n"
+          "             [--watch NAME[,NAME...]] [--gdb PORT] [--no-skip]\n"
           "             (an ARM image on an emulated STM32 board, its board file's [board] mcu stm32...: the STM32F103\n"
           "             register by register on libunicorn, sim/arm/README.md; --input: button, button=SECONDS|down|up,\n"
           "             occlude, push, lift, place, end; --flash FILE: the whole flash, loaded under the image at\n"
-          "             power-on and saved at the end; --end-on and --verbose as for --avr)\n"
+          "             power-on and saved at the end; --end-on, --verbose, --watch as for --avr; --gdb PORT: the stub for\n"
+          "             gdb-multiarch (set osabi none; target remote :PORT), the same JSON; --no-skip: WFI and wait loops\n"
+          "             run cycle by cycle, not jumped over: the same JSON but board.skipped)\n"
           "       mmsim --maze FILE --mms COMMAND [--mms-ideal-walls] [--mms-timeout-ms N] [--mms-reset-at S|idle]\n"
           "             (an mms algorithm drives the robot through the mms text API, docs/MMS.md)\n"
           "       mmsim --batch DIR [--jobs N] [options as above]   (one JSON line per maze)\n"
@@ -309,6 +312,7 @@ static const cli_opt_t flags[] = {
     { .name = "firmware", .kind = CLI_STR, .off = RUN(arm_elf) },
     { .name = "flash", .kind = CLI_STR, .off = RUN(flash_path) },
     { .name = "end-on", .kind = CLI_STR, .off = RUN(end_on) },
+    { .name = "no-skip", .kind = CLI_SET, .off = RUN(no_skip) },
     { .name = "watch", .kind = CLI_FN, .fn = f_watch, .has_arg = 1 },
     { .name = "f-cpu", .kind = CLI_FN, .fn = f_f_cpu, .has_arg = 1 },
     { .name = "gdb", .kind = CLI_FN, .fn = f_gdb, .has_arg = 1 },
@@ -329,8 +333,9 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (o->arm_elf && (!o->board || o->avr_elf))
         return bad("%s", "--firmware IMAGE.elf runs on an STM32 board: with --board NAME, not with --avr");
     if (o->flash_path && !o->arm_elf) return bad("%s", "--flash FILE needs --board NAME --firmware IMAGE.elf (an STM32 board)");
-    if (o->arm_elf && (o->eeprom_path || o->console_pty || o->gdb_port || o->watch))
-        return bad("%s", "--firmware (an STM32 board): not with --eeprom (its flash: --flash FILE), --console pty, --gdb or --watch");
+    if (o->arm_elf && (o->eeprom_path || o->console_pty))
+        return bad("%s", "--firmware (an STM32 board): not with --eeprom (its flash: --flash FILE) or --console pty");
+    if (o->no_skip && !o->arm_elf) return bad("%s", "--no-skip needs --board NAME --firmware IMAGE.elf (an ARM core's idle skipping)");
     if (o->board && !o->avr_elf && !o->arm_elf)
         return bad("%s", "--board NAME needs --avr FIRMWARE.elf|.hex (an AVR board) or --firmware IMAGE.elf (an STM32 board)");
     if (o->board && (o->link.device || o->link.pty || link_flags || o->avr_mcu || o->avr_f_cpu || o->mms.command))
@@ -341,7 +346,8 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (!!o->link.device + o->link.pty + !!o->avr_elf > 1) return bad("%s", "--serial/--port, --pty and --avr exclude each other");
     if (!o->serial && link_flags) return bad("%s", "--protocol and --silence-ms need --serial DEV, --pty or --avr ELF");
     if (!o->avr_elf && (o->avr_mcu || o->avr_f_cpu)) return bad("%s", "--mcu and --f-cpu need --avr ELF");
-    if (o->gdb_port && !o->avr_elf) return bad("%s", "--gdb PORT needs --avr FIRMWARE (with or without --board): the AVR runs in simavr");
+    if (o->gdb_port && !o->avr_elf && !o->arm_elf)
+        return bad("%s", "--gdb PORT needs --avr FIRMWARE (with or without --board) or --board NAME --firmware IMAGE.elf");
     if (!o->mms.command && mms_flags) return bad("%s", "--mms-ideal-walls, --mms-timeout-ms and --mms-reset-at need --mms COMMAND");
     if (o->mms.command && o->verbose) o->mms.trace = stderr; /* --verbose: the mms dialogue too */
     if (o->mms.command && o->gui) o->mms.idle_wait = 1; /* an idle algorithm waits for the viewer's Reset button */
@@ -356,7 +362,8 @@ static int check_combinations(mmsim_opts_t *m, const int *seen)
     if (o->end_on && !o->board) return bad("%s", "--end-on TEXT needs --board NAME");
     if (o->end_on && (!*o->end_on || strlen(o->end_on) > RUN_END_ON_MAX))
         return bad("%s", "--end-on TEXT: 1 to 64 characters (RUN_END_ON_MAX)");
-    if (o->watch && !o->avr_elf) return bad("%s", "--watch NAME needs --avr IMAGE.elf (with or without --board NAME): the image's variables");
+    if (o->watch && !o->avr_elf && !o->arm_elf)
+        return bad("%s", "--watch NAME needs --avr IMAGE.elf (with or without --board NAME) or --firmware IMAGE.elf: the image's variables");
     if (o->console_pty) o->realtime = 1; /* a person at a serial monitor: in real time */
     if (o->view.baud <= 0) o->view.baud = (long)link_default_baud(o->link.protocol); /* the viewer's Connect */
     if (cli_seen(flags, seen, "at") && !o->shot) return bad("%s", "--at SECONDS needs --screenshot FILE.png (the moment it is taken)");

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "arm/armgdb.h"
 #include "arm/mpu6500.h"
 #include "world/analog.h"
 #include "world/robot.h"
@@ -18,6 +19,7 @@ struct armboard {
     stm32board_spec_t spec;
     armimage_t img;
     stm32f1_soc_t *soc;
+    armgdb_t *gdb;                   /* --gdb: the stub the core runs under (NULL: none) */
     sim_state_t *sim;
     mpu6500_t gyro;
     uint64_t step_ps, t_ps;          /* the physics step; the core's time at the last step's end */
@@ -139,7 +141,8 @@ int armboard_step(armboard_t *b)
     /* the step's motion spread over its time: the position at fraction k/SLICES at that time */
     uint64_t t0 = b->t_ps;
     for (int k = 1; k <= ARMBOARD_SLICES; k++) {
-        int rc = armcore_run_until_ps(c, t0 + b->step_ps * (uint64_t)k / ARMBOARD_SLICES);
+        uint64_t to = t0 + b->step_ps * (uint64_t)k / ARMBOARD_SLICES;
+        int rc = b->gdb ? armgdb_run_until_ps(b->gdb, to) : armcore_run_until_ps(c, to);
         b->st.cycles = armcore_cycles(c);
         if (rc) return -1;
         encoders(b, d, (double)k / ARMBOARD_SLICES, armcore_cycles(c));
@@ -193,7 +196,7 @@ static void start_parts(armboard_t *b, double step_s)
 }
 
 armboard_t *armboard_open(const stm32board_spec_t *spec, const char *image, const char *flash_path, sim_state_t *s,
-                          double step_s, int verbose, char *err, size_t errn)
+                          double step_s, unsigned flags, char *err, size_t errn)
 {
     char mcu[16];
     snprintf(mcu, sizeof mcu, "stm32f103x%c", spec->mcu[10]); /* stm32f103c8 -> stm32f103x8 (the table's density) */
@@ -203,7 +206,8 @@ armboard_t *armboard_open(const stm32board_spec_t *spec, const char *image, cons
     b->spec = *spec, b->sim = s;
     if (map_ir(b, err, errn) != 0) return armboard_close(b), NULL;
     if (armimage_read(image, armimage_mcu(mcu), &b->img, err, errn) != 0) return armboard_close(b), NULL;
-    stm32f1_soc_cfg_t cfg = { .image = &b->img, .flash_path = flash_path, .verbose = verbose != 0 };
+    stm32f1_soc_cfg_t cfg = { .image = &b->img, .flash_path = flash_path, .verbose = (flags & ARMBOARD_VERBOSE) != 0,
+                              .no_idle_skip = (flags & ARMBOARD_NO_SKIP) != 0 };
     wire(b, &cfg);
     b->soc = stm32f1_soc_new(&cfg, err, errn);
     if (!b->soc) return armboard_close(b), NULL;
@@ -211,11 +215,24 @@ armboard_t *armboard_open(const stm32board_spec_t *spec, const char *image, cons
     return b;
 }
 
-int armboard_end(armboard_t *b, char *err, size_t errn) { return stm32f1_soc_save(b->soc, err, errn); }
+int armboard_end(armboard_t *b, char *err, size_t errn)
+{
+    armgdb_free(b->gdb); /* a waiting gdb is told the run ended (before the flash file: nothing left to debug) */
+    b->gdb = NULL;
+    return stm32f1_soc_save(b->soc, err, errn);
+}
+
+int armboard_gdb(armboard_t *b, unsigned port, char *err, size_t errn)
+{
+    if (b->gdb) return snprintf(err, errn, "the gdb stub is already on"), -1;
+    b->gdb = armgdb_new(b->soc->core, port, err, errn);
+    return b->gdb ? 0 : -1;
+}
 
 void armboard_close(armboard_t *b)
 {
     if (!b) return;
+    armgdb_free(b->gdb);
     stm32f1_soc_free(b->soc);
     if (b->img.flash) armimage_free(&b->img);
     free(b->console);
@@ -247,4 +264,5 @@ const char *armboard_console(const armboard_t *b, size_t *len) { return *len = b
 void armboard_set_echo(armboard_t *b, FILE *f) { b->echo = f; }
 const armboard_stats_t *armboard_stats(const armboard_t *b) { return &b->st; }
 stm32f1_soc_t *armboard_soc(armboard_t *b) { return b->soc; }
+const armimage_mcu_t *armboard_mcu(const armboard_t *b) { return b->img.mcu; }
 const stm32board_spec_t *armboard_spec(const armboard_t *b) { return &b->spec; }

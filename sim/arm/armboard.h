@@ -60,15 +60,23 @@ typedef struct {
 
 typedef struct armboard armboard_t;
 
+#define ARMBOARD_VERBOSE 1u /* flags: the chip's notes on stderr (registers no model implements ...) */
+#define ARMBOARD_NO_SKIP 2u /* flags: armcore_cfg_t.no_idle_skip: WFI slept and wait loops run cycle by cycle */
+
 /* The image on the board described by spec, driving s. flash_path: the
- * flash kept in that file (NULL: erased at power-on). NULL with one line
- * in err (an image not for the board's MCU, IR sensors that do not fit). */
+ * flash kept in that file (NULL: erased at power-on); flags: ARMBOARD_*.
+ * NULL with one line in err (an image not for the board's MCU, IR sensors
+ * that do not fit). */
 armboard_t *armboard_open(const stm32board_spec_t *spec, const char *image, const char *flash_path, sim_state_t *s,
-                          double step_s, int verbose, char *err, size_t errn);
+                          double step_s, unsigned flags, char *err, size_t errn);
+/* --gdb: the core run under the gdb stub (armgdb.h) on 127.0.0.1:port from
+ * now on, halted at its first instruction until gdb continues. 0, or -1
+ * with the reason in err ("cannot listen on 127.0.0.1:PORT: REASON"). */
+int armboard_gdb(armboard_t *b, unsigned port, char *err, size_t errn);
 /* One physics step (after sim_step): the core to the step's end, then the
  * motor commands into s->cmd. 0, or -1 if the firmware crashed. */
 int armboard_step(armboard_t *b);
-/* At the end: the flash file saved (if given and changed). 0, or -1 with one line in err. */
+/* At the end: a waiting gdb told the run ended, the flash file saved (if given and changed). 0, or -1 with one line in err. */
 int armboard_end(armboard_t *b, char *err, size_t errn);
 void armboard_close(armboard_t *b);
 
@@ -81,6 +89,7 @@ const char *armboard_console(const armboard_t *b, size_t *len);
 void armboard_set_echo(armboard_t *b, FILE *f);
 const armboard_stats_t *armboard_stats(const armboard_t *b);
 stm32f1_soc_t *armboard_soc(armboard_t *b);
+const armimage_mcu_t *armboard_mcu(const armboard_t *b); /* the image's MCU (its SRAM for --watch) */
 const stm32board_spec_t *armboard_spec(const armboard_t *b);
 
 #endif

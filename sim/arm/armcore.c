@@ -865,6 +865,7 @@ static void sleep_step(armcore_t *c)
     uint64_t to = c->ev_next < c->target ? c->ev_next : c->target;
     if (c->no_idle_skip && to > c->cyc + 1) to = c->cyc + 1;
     c->st.idle_cycles += to - c->cyc;
+    if (to > c->cyc + 1) c->st.idle_jumped += to - c->cyc - 1;
     c->cyc = to;
 }
 

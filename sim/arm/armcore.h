@@ -67,6 +67,7 @@ typedef struct {
     uint64_t tail_chains;
     uint64_t sleeps;                  /* WFI/WFE that slept */
     uint64_t idle_cycles;             /* cycles asleep */
+    uint64_t idle_jumped;             /* of those, the cycles jumped over (a sleep advanced more than one cycle at a time; 0 with no_idle_skip) */
     uint64_t loop_skips;              /* wait loops jumped over (see armcore.c, "idle loops") */
     uint64_t loop_cycles;             /* cycles of wait loops jumped over */
     uint64_t splits;                  /* stops inside a translated block */

@@ -56,9 +56,10 @@ typedef struct {
     int console_pty;               /* --console pty: the board's UART0 on a pseudo-terminal (a person's serial monitor) */
     const char *end_on;            /* --end-on TEXT: a board run ends once its console prints TEXT (NULL: never) */
     const char *eeprom_path;       /* --eeprom FILE: the board's EEPROM loaded at power-on, saved at the end (NULL: blank, not kept) */
-    unsigned gdb_port;             /* --gdb PORT: simavr's gdb stub on 127.0.0.1:PORT, the firmware halted until gdb continues (0: none) */
+    unsigned gdb_port;             /* --gdb PORT: simavr's (an AVR) or armgdb's (an ARM image) gdb stub on 127.0.0.1:PORT, the firmware halted until gdb continues (0: none) */
     const char *arm_elf;           /* --firmware IMAGE.elf: an ARM image on the --board STM32 board (sim/arm) */
     const struct stm32board_spec_s *arm_board_spec; /* that board file, read once by the caller (NULL: run_armboard reads it) */
+    int no_skip;                   /* --no-skip: an ARM core sleeps WFI and runs wait loops cycle by cycle (armcore_cfg_t.no_idle_skip) */
     const char *flash_path;        /* --flash FILE: the STM32's flash loaded at power-on, saved at the end (NULL: erased, not kept) */
     const char *watch;             /* --watch NAME[,NAME...]: the firmware's globals on MM_WATCH and in the report (NULL: none) */
     const struct contest_s *contest; /* --contest NAME|FILE: the contest's rules, read once by the caller (NULL: none) */

@@ -6,7 +6,10 @@
  * button presses act on its buttons, occlude (a hand before a sensor) on
  * the world; the JSON gets "board" (cycles, interrupt requests per NVIC
  * line, console bytes, the registers no model implements, a crash) and
- * "console". */
+ * "console". --gdb PORT runs the core under the gdb stub (sim/arm/armgdb.h,
+ * frozen lockstep: the same JSON); --watch reads the image's variables
+ * from the core's SRAM each step (run_watch.c); --no-skip sleeps WFI and
+ * runs wait loops cycle by cycle (the same JSON but "skipped"). */
 #include "run_driver.h"
 
 #include <math.h>
@@ -15,6 +18,7 @@
 #include <string.h>
 
 #include "arm/armboard.h"
+#include "arm/armwatch.h"
 #include "arm/stm32board.h"
 #include "board/board.h"
 
@@ -22,6 +26,7 @@ typedef struct {
     armboard_t *board;
     size_t end_seen;     /* --end-on: console bytes already searched */
     int flash_failed;    /* --flash's file could not be saved */
+    run_watch_t watch;   /* --watch: the firmware's variables */
 } armboard_run_t;
 
 static armboard_run_t arm_state; /* one contest per process, as run_board.c's */
@@ -43,6 +48,30 @@ static void arm_hands(run_t *r, void *self, const input_action_t *a)
     }
 }
 
+/* --watch's sampler: the variables from the core's SRAM */
+static void arm_sample(const watch_list_t *w, void *board, double *values)
+{
+    armwatch_sample(w, armboard_soc(board)->core, armboard_mcu(board), values);
+}
+
+/* --watch and --gdb on the open board: RUN_OK, or the run's exit code after one line */
+static int arm_debug(run_t *r, armboard_run_t *a)
+{
+    char err[600];
+    if (r->o->watch) {
+        int rc = armwatch_open(&a->watch.list, r->o->arm_elf, r->o->watch, armboard_mcu(a->board), stderr, err, sizeof err);
+        if (run_watch_started(&a->watch, rc, err, arm_sample, a->board) != 0) return RUN_BAD_INPUT;
+    }
+    if (!r->o->gdb_port) return RUN_OK;
+    if (armboard_gdb(a->board, r->o->gdb_port, err, sizeof err) != 0) {
+        fprintf(stderr, "mmsim: --gdb %u: %s\n", r->o->gdb_port, err);
+        return RUN_EXTERNAL;
+    }
+    fprintf(stderr, "mmsim: --gdb: the firmware is halted until gdb-multiarch attaches to 127.0.0.1:%u (target remote :%u) and continues\n",
+            r->o->gdb_port, r->o->gdb_port);
+    return RUN_OK;
+}
+
 static int arm_open(run_t *r, void **self)
 {
     static stm32board_spec_t spec;
@@ -55,10 +84,17 @@ static int arm_open(run_t *r, void **self)
     }
     armboard_run_t *a = &arm_state;
     memset(a, 0, sizeof *a);
-    a->board = armboard_open(&spec, r->o->arm_elf, r->o->flash_path, &r->sim, r->cfg.sim.step_s, r->o->verbose, err, sizeof err);
+    unsigned flags = (r->o->verbose ? ARMBOARD_VERBOSE : 0u) | (r->o->no_skip ? ARMBOARD_NO_SKIP : 0u);
+    a->board = armboard_open(&spec, r->o->arm_elf, r->o->flash_path, &r->sim, r->cfg.sim.step_s, flags, err, sizeof err);
     if (!a->board) {
         fprintf(stderr, "%s\n", err);
         return RUN_BAD_INPUT;
+    }
+    int rc = arm_debug(r, a);
+    if (rc != RUN_OK) {
+        armboard_close(a->board);
+        a->board = NULL;
+        return rc;
     }
     if (r->o->verbose) armboard_set_echo(a->board, stderr);
     *self = a;
@@ -91,6 +127,7 @@ static const char *arm_after(run_t *r, void *self)
             fprintf(stderr, "mmsim: %s: the firmware crashed at 0x%08x: %s\n", r->o->arm_elf, pc, cause);
         return "firmware_crashed";
     }
+    run_watch_step(r, &a->watch); /* --watch: after the core's cycles */
     if (r->o->end_on && r->sim.step % 10 == 0 && console_said(a, r->o->end_on)) return "console_end";
     return NULL;
 }
@@ -163,6 +200,9 @@ static void arm_results(run_t *r, void *self, json_t *j)
     armcore_stats_t cs = armcore_stats(soc->core);
     json_object_set_new(b, "exceptions", json_integer((json_int_t)cs.exceptions)); /* entered, SysTick and faults included */
     json_object_set_new(b, "idle_cycles", json_integer((json_int_t)cs.idle_cycles));
+    /* the cycles jumped over rather than run one by one (none with --no-skip: the rest of the JSON is the same) */
+    json_object_set_new(b, "skipped", json_pack("{s:I, s:I, s:I}", "sleep_cycles", (json_int_t)cs.idle_jumped,
+                                                "wait_loops", (json_int_t)cs.loop_skips, "wait_loop_cycles", (json_int_t)cs.loop_cycles));
     json_object_set_new(b, "interrupt_requests", irq_counts(soc));
     json_object_set_new(b, "adc_samples", adc_counts(st));
     json_object_set_new(b, "led_changes", leds);

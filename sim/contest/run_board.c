@@ -175,7 +175,7 @@ static const char *board_after(run_t *r, void *self)
         if (board_host(b->board)->crash) return "firmware_crashed";
         return strstr(err, "auto-trigger") ? "board_unsupported" : "avr_stopped";
     }
-    run_watch_step(r, &b->watch, board_host(b->board)->avr); /* --watch: after the AVR's cycles */
+    run_watch_step(r, &b->watch); /* --watch: after the AVR's cycles */
     if (o->end_on && r->sim.step % 10 == 0 && console_said(b, o->end_on)) return "console_end";
     return NULL;
 }

@@ -109,17 +109,24 @@ static inline int run_gdb_said(unsigned port, const char *err)
     return RUN_OK;
 }
 
-/* --watch (run_watch.c): the firmware's variables and their latest values. */
+/* --watch (run_watch.c): the firmware's variables, their latest values and
+ * how the driver's processor reads them (the AVR's SRAM, the ARM core's). */
+typedef void (*run_watch_sample_t)(const watch_list_t *w, void *ctx, double *values);
 typedef struct {
     watch_list_t list;         /* list.n 0: no --watch */
     double values[WATCH_MAX];
+    run_watch_sample_t sample; /* values[0..list.n) now, from ctx's memory */
+    void *ctx;
 } run_watch_t;
 /* --watch's names looked up in the image r->o->avr_elf run on avr: 0 (also
  * without --watch), or RUN_BAD_INPUT after one line. */
 int run_watch_open(run_t *r, run_watch_t *w, const struct avr_t *avr);
-/* After the AVR's cycles of the step: the variables read, to the telemetry
- * and the report (nothing without --watch). */
-void run_watch_step(run_t *r, run_watch_t *w, const struct avr_t *avr);
+/* After a driver's own lookup into w->list (lookup_rc 0, or -1 with the
+ * reason in err): the sampler kept; 0, or RUN_BAD_INPUT after one line. */
+int run_watch_started(run_watch_t *w, int lookup_rc, const char *err, run_watch_sample_t sample, void *ctx);
+/* After the processor's cycles of the step: the variables read, to the
+ * telemetry and the report (nothing without --watch). */
+void run_watch_step(run_t *r, run_watch_t *w);
 
 /* RUN_OK if a lap was completed and the run ended for one of the two
  * reasons given (or NULL), else RUN_NOT_REACHED. */

@@ -103,7 +103,7 @@ static const char *avr_after(run_t *r, void *self)
         fprintf(stderr, "mmsim: %s: %s\n", r->o->avr_elf, err);
         return ((link_run_t *)self)->pil.host.crash ? "firmware_crashed" : "avr_stopped";
     }
-    run_watch_step(r, &((link_run_t *)self)->watch, ((link_run_t *)self)->pil.host.avr); /* --watch */
+    run_watch_step(r, &((link_run_t *)self)->watch); /* --watch */
     return link_after(r, self);
 }
 

@@ -45,7 +45,7 @@ static rig_t *rig_new(void)
         fail_msg("%s", err);
     sim_model_build(&r->model, &r->cfg, 1);
     assert_int_equal(sim_init(&r->sim, &r->model, &r->maze, 1), 0);
-    r->b = armboard_open(&sp, IMAGE, NULL, &r->sim, r->cfg.sim.step_s, 0, err, sizeof err);
+    r->b = armboard_open(&sp, IMAGE, NULL, &r->sim, r->cfg.sim.step_s, 0u, err, sizeof err);
     if (!r->b) fail_msg("%s (make %s)", err, IMAGE);
     return r;
 }
