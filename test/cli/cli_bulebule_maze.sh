@@ -4,18 +4,18 @@
 # robots/bulebule.ini, started as its src/main.c wants it: a press, a long
 # press for the classic goal (configure_goal), a long press for the force
 # (hmi_configure_force), a hand before its front sensors
-# (wait_front_sensor_close_signal). classic/test-maze-classic (the shortest
-# search of the classic set for bulebule's flood fill: 36 moves), twice:
-# it reaches the goal, its search ends back in the start cell (explore()
-# returns without a collision, src/mmlib/solve.c, and turns to its start
-# position), save_maze writes its 256 cells to flash, no front or side
-# wall contact, the same JSON and flash twice. classic/001-anomaly-test, once: its goal is walled off (mmmaze
-# solve: unreachable); bulebule searches the 64 cells it can reach (the west
-# column, the north row, the east column, the south-east dead end and the
-# pocket above it; it enters 60) with no contact, then, its flood fill
-# finding no path,
-# turns back and forth in the pocket's x 14 column (best_neighbor_step
-# returns BACK): the side pair's slope and the turn after the dead end.
+# (wait_front_sensor_close_signal). classic/test-maze-classic (the
+# shortest search of the classic set: its search.c replayed: 36 moves),
+# twice: it reaches the goal, its search ends back in the start cell
+# (explore() returns without a collision, src/mmlib/solve.c, and turns to
+# its start position), save_maze writes its 256 cells to flash, no front or
+# side wall contact, the same JSON and flash twice. classic/001-anomaly-
+# test, once: its goal is walled off (mmmaze solve: unreachable); bulebule
+# searches the 64 cells it can reach (the west column, the north row, the
+# east column, the south-east dead end and the pocket above it; it enters
+# 60) with no contact, then, its flood fill finding no path, turns back and
+# forth in the pocket's x 14 column (best_neighbor_step returns BACK): the
+# side pair's slope and the turn after the dead end.
 # Slow (about 1 s of CPU per simulated second): three runs side by side.
 # Without ../shared: SKIP.
 set -u
