@@ -28,9 +28,7 @@ struct armboard {
     int led_level[STM32BOARD_LEDS_MAX];
     double enc_per_rad[2], enc_pos[2], enc_last_rad[2];
     int64_t enc_q[2];                /* the edge count each encoder timer was last given */
-    char *console;
-    size_t console_len;
-    FILE *echo;
+    console_t console;
     armboard_stats_t st;
 };
 
@@ -69,12 +67,8 @@ static void on_console(void *ctx, uint8_t byte, uint64_t cycle)
 {
     armboard_t *b = ctx;
     b->st.console_bytes++;
-    if (b->console_len + 1 < ARMBOARD_CONSOLE_MAX) b->console[b->console_len++] = (char)byte, b->console[b->console_len] = '\0';
-    else b->st.console_dropped++;
-    if (b->echo) {
-        fputc(byte, b->echo);
-        if (byte == '\n') fflush(b->echo);
-    }
+    console_byte(&b->console, byte);
+    b->st.console_dropped = b->console.dropped;
 }
 
 /* The true yaw rate the MPU-6500's z axis turns at (the world's, not the robot file's gyro model). */
@@ -201,8 +195,8 @@ armboard_t *armboard_open(const stm32board_spec_t *spec, const char *image, cons
     char mcu[16];
     snprintf(mcu, sizeof mcu, "stm32f103x%c", spec->mcu[10]); /* stm32f103c8 -> stm32f103x8 (the table's density) */
     armboard_t *b = calloc(1, sizeof *b);
-    if (!b || !(b->console = malloc(ARMBOARD_CONSOLE_MAX))) return free(b), snprintf(err, errn, "mmsim: out of memory"), NULL;
-    b->console[0] = '\0';
+    if (!b) return snprintf(err, errn, "mmsim: out of memory"), NULL;
+    if (console_init(&b->console, err, errn) != 0) return free(b), NULL;
     b->spec = *spec, b->sim = s;
     if (map_ir(b, err, errn) != 0) return armboard_close(b), NULL;
     if (armimage_read(image, armimage_mcu(mcu), &b->img, err, errn) != 0) return armboard_close(b), NULL;
@@ -235,7 +229,7 @@ void armboard_close(armboard_t *b)
     armgdb_free(b->gdb);
     stm32f1_soc_free(b->soc);
     if (b->img.flash) armimage_free(&b->img);
-    free(b->console);
+    console_free(&b->console);
     free(b);
 }
 
@@ -260,8 +254,10 @@ int armboard_send(armboard_t *b, const char *text)
     return 0;
 }
 
-const char *armboard_console(const armboard_t *b, size_t *len) { return *len = b->console_len, b->console; }
-void armboard_set_echo(armboard_t *b, FILE *f) { b->echo = f; }
+const char *armboard_console(const armboard_t *b, size_t *len) { return *len = b->console.len, b->console.text; }
+
+console_t *armboard_console_stream(armboard_t *b) { return &b->console; }
+void armboard_set_echo(armboard_t *b, FILE *f) { b->console.echo = f; }
 const armboard_stats_t *armboard_stats(const armboard_t *b) { return &b->st; }
 stm32f1_soc_t *armboard_soc(armboard_t *b) { return b->soc; }
 const armimage_mcu_t *armboard_mcu(const armboard_t *b) { return b->img.mcu; }

@@ -38,9 +38,10 @@
 
 #include "arm/stm32board.h"
 #include "arm/stm32f1_soc.h"
+#include "io/console.h"
 #include "world/sim.h"
 
-#define ARMBOARD_CONSOLE_MAX (1u << 20) /* bytes of console output kept (the rest counted) */
+#define ARMBOARD_CONSOLE_MAX CONSOLE_KEEP /* bytes of console output kept (the rest counted; io/console.h) */
 /* Encoder updates per physics step. Each is a stop of the core at a time,
  * most often inside a translated block (a split), and unicorn 2.0.1 keeps
  * every dropped translation until its code buffer (1 GiB) fills: measured
@@ -86,6 +87,8 @@ void armboard_button(armboard_t *b, int i, int down);
 int armboard_send(armboard_t *b, const char *text);
 /* Everything the console received (NUL-terminated) and its length. */
 const char *armboard_console(const armboard_t *b, size_t *len);
+/* The console as a stream: its live tail and the text --end-on looks for (io/console.h). */
+console_t *armboard_console_stream(armboard_t *b);
 void armboard_set_echo(armboard_t *b, FILE *f);
 const armboard_stats_t *armboard_stats(const armboard_t *b);
 stm32f1_soc_t *armboard_soc(armboard_t *b);

@@ -201,11 +201,13 @@ int board_send(board_t *b, const char *text)
 
 const char *board_console(const board_t *b, size_t *len)
 {
-    if (len) *len = b->con.len;
-    return b->con.text;
+    if (len) *len = b->con.con.len;
+    return b->con.con.text;
 }
 
-void board_set_echo(board_t *b, FILE *f) { b->con.echo = f; }
+console_t *board_console_stream(board_t *b) { return &b->con.con; }
+
+void board_set_echo(board_t *b, FILE *f) { b->con.con.echo = f; }
 
 int board_eeprom_keep(board_t *b, const char *path, char *err, size_t errn)
 {

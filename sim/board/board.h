@@ -33,12 +33,13 @@
 #include <stdio.h>
 
 #include "board/avrhost.h"
+#include "io/console.h"
 #include "world/sim.h"
 
 #define BOARD_ADC_CHANNELS 8
 #define BOARD_LEDS_MAX 4
 #define BOARD_VECTORS_MAX 64      /* interrupt vectors counted */
-#define BOARD_CONSOLE_MAX (1u << 20) /* bytes of UART output kept (the rest counted) */
+#define BOARD_CONSOLE_MAX CONSOLE_KEEP /* bytes of UART output kept (the rest counted; io/console.h) */
 #define BOARD_IN_MAX 4096u        /* bytes waiting for the UART's receive FIFO */
 #define BOARD_MAX_BYTES (64u << 10) /* bytes of a board file */
 
@@ -162,6 +163,8 @@ int board_send(board_t *b, const char *text);
 
 /* Everything the firmware printed so far (NUL-terminated) and its length. */
 const char *board_console(const board_t *b, size_t *len);
+/* The console as a stream: its live tail and the text --end-on looks for (io/console.h). */
+console_t *board_console_stream(board_t *b);
 /* Echo UART output to f as it comes (NULL: off), for --verbose. */
 void board_set_echo(board_t *b, FILE *f);
 /* Keep the MCU's EEPROM in the file at path (board_eeprom.h): loaded now

@@ -9,16 +9,16 @@
 #include <stdio.h>
 
 #include "board.h"
+#include "io/console.h"
 
 typedef struct {
-    char *text;                   /* NUL-terminated, at most BOARD_CONSOLE_MAX bytes with the NUL */
-    size_t len;
-    FILE *echo;                   /* NULL: no echo */
+    console_t con;                /* kept text, live tail, --end-on, echo */
     board_stats_t *st;            /* uart_bytes_out, console_dropped */
 } board_console_t;
 
 /* 0, or -1 with "out of memory" in err. */
 int board_console_init(board_console_t *c, board_stats_t *st, char *err, size_t errn);
+void board_console_free(board_console_t *c);
 /* One byte from the firmware (avrhost_sink_fn, ctx = the console). */
 void board_console_byte(void *ctx, uint8_t byte);
 

@@ -24,7 +24,6 @@
 
 typedef struct {
     armboard_t *board;
-    size_t end_seen;     /* --end-on: console bytes already searched */
     int flash_failed;    /* --flash's file could not be saved */
     run_watch_t watch;   /* --watch: the firmware's variables */
 } armboard_run_t;
@@ -97,6 +96,7 @@ static int arm_open(run_t *r, void **self)
         return rc;
     }
     if (r->o->verbose) armboard_set_echo(a->board, stderr);
+    if (r->o->end_on) console_look_for(armboard_console_stream(a->board), r->o->end_on);
     *self = a;
     return RUN_OK;
 }
@@ -106,15 +106,6 @@ static void arm_close(run_t *r, void *self)
     armboard_run_t *a = self;
     armboard_close(a->board);
     a->board = NULL;
-}
-
-static int console_said(armboard_run_t *a, const char *text)
-{
-    size_t len, k = strlen(text);
-    const char *con = armboard_console(a->board, &len);
-    size_t from = a->end_seen >= k ? a->end_seen - (k - 1) : 0;
-    a->end_seen = len;
-    return len >= k && strstr(con + from, text) != NULL;
 }
 
 static const char *arm_after(run_t *r, void *self)
@@ -128,7 +119,7 @@ static const char *arm_after(run_t *r, void *self)
         return "firmware_crashed";
     }
     run_watch_step(r, &a->watch); /* --watch: after the core's cycles */
-    if (r->o->end_on && r->sim.step % 10 == 0 && console_said(a, r->o->end_on)) return "console_end";
+    if (r->o->end_on && r->sim.step % 10 == 0 && console_seen(armboard_console_stream(a->board))) return "console_end";
     return NULL;
 }
 
@@ -168,21 +159,6 @@ static json_t *unmodeled_list(armcore_t *c)
                                            (json_int_t)u[i].reads, "writes", (json_int_t)u[i].writes));
     }
     return j;
-}
-
-static json_t *console_json(const armboard_t *b)
-{
-    size_t n;
-    const char *con = armboard_console(b, &n);
-    json_t *cj = json_stringn(con, n);
-    if (cj) return cj;
-    char *t = malloc(n + 1); /* not UTF-8: bytes above 0x7F as '?' */
-    if (t) memcpy(t, con, n + 1);
-    for (size_t i = 0; t && i < n; i++)
-        if ((unsigned char)t[i] > 0x7F) t[i] = '?';
-    cj = t ? json_stringn(t, n) : json_null();
-    free(t);
-    return cj ? cj : json_null();
 }
 
 static void arm_results(run_t *r, void *self, json_t *j)
@@ -225,7 +201,9 @@ static void arm_results(run_t *r, void *self, json_t *j)
     json_object_set_new(b, "pc", json_string(addr));
     if (armcore_crashed(soc->core, &pc, &cause)) json_object_set_new(b, "crash", json_pack("{s:I, s:s}", "pc", (json_int_t)pc, "cause", cause));
     json_object_set_new(j, "board", b);
-    json_object_set_new(j, "console", console_json(bd));
+    size_t n;
+    const char *con = armboard_console(bd, &n);
+    json_object_set_new(j, "console", run_console_json(con, n));
 }
 
 static void arm_stop(run_t *r, void *self)

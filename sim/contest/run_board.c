@@ -19,8 +19,8 @@
 typedef struct {
     board_t *board;
     int console_fd;      /* --console pty: the pty's master, -1 none */
-    size_t console_sent; /* console bytes written to it so far */
-    size_t end_seen;     /* --end-on: console bytes already searched for its text */
+    uint64_t console_sent; /* console bytes written to it so far */
+    uint64_t console_lost; /* bytes the pty's reader fell too far behind for (io/console.h's tail) */
     int eeprom_written;  /* the firmware wrote its EEPROM (--eeprom) */
     int eeprom_changed;  /* ... and its contents differ from power-on */
     int eeprom_failed;   /* --eeprom's file could not be saved */
@@ -72,18 +72,21 @@ static int console_open(run_t *r, board_run_t *b)
 static void console_pump(board_run_t *b)
 {
     char in[64];
-    size_t len;
     if (b->console_fd < 0) return;
     ssize_t n = read(b->console_fd, in, sizeof in - 1);
     if (n > 0) {
         in[n] = '\0';
         board_send(b->board, in);
     }
-    const char *out = board_console(b->board, &len);
-    while (b->console_sent < len) {
-        ssize_t w = write(b->console_fd, out + b->console_sent, len - b->console_sent);
+    char out[4096];
+    uint64_t from = b->console_sent;
+    size_t k;
+    while ((k = console_read(board_console_stream(b->board), &from, out, sizeof out, &b->console_lost)) > 0) {
+        b->console_sent = from - k; /* where out starts (past any bytes the tail no longer holds) */
+        ssize_t w = write(b->console_fd, out, k);
         if (w <= 0) break; /* nobody reading yet (or a full buffer): the rest next time */
-        b->console_sent += (size_t)w;
+        b->console_sent += (uint64_t)w;
+        if ((size_t)w < k) break;
     }
 }
 
@@ -143,24 +146,13 @@ static int board_open_run(run_t *r, void **self)
         return RUN_BAD_INPUT;
     }
     if (r->o->verbose) board_set_echo(b->board, stderr);
+    if (r->o->end_on) console_look_for(board_console_stream(b->board), r->o->end_on);
     *self = b;
     int rc = console_open(r, b);
     if (!rc && r->o->gdb_port)
         rc = run_gdb_said(r->o->gdb_port, board_gdb(b->board, r->o->gdb_port, err, sizeof err) ? err : NULL);
     if (rc) board_close_run(r, b);
     return rc;
-}
-
-/* --end-on TEXT: has the console printed TEXT since the last look? Only the
- * new bytes are searched (and the TEXT's length less one before them, for a
- * TEXT split across two looks). */
-static int console_said(board_run_t *b, const char *text)
-{
-    size_t len, k = strlen(text);
-    const char *con = board_console(b->board, &len);
-    size_t from = b->end_seen >= k ? b->end_seen - (k - 1) : 0;
-    b->end_seen = len;
-    return len >= k && strstr(con + from, text) != NULL; /* the console is NUL-terminated at len */
 }
 
 /* after the step: the console every 10 ms, then the AVR's cycles of the step */
@@ -176,7 +168,7 @@ static const char *board_after(run_t *r, void *self)
         return strstr(err, "auto-trigger") ? "board_unsupported" : "avr_stopped";
     }
     run_watch_step(r, &b->watch); /* --watch: after the AVR's cycles */
-    if (o->end_on && r->sim.step % 10 == 0 && console_said(b, o->end_on)) return "console_end";
+    if (o->end_on && r->sim.step % 10 == 0 && console_seen(board_console_stream(b->board))) return "console_end";
     return NULL;
 }
 
@@ -232,16 +224,7 @@ static void board_results(run_t *r, void *self, json_t *j)
     json_object_set_new(j, "board", b);
     size_t n;
     const char *con = board_console(bd, &n);
-    json_t *cj = json_stringn(con, n);
-    if (!cj) { /* not UTF-8: bytes above 0x7F as '?' */
-        char *t = malloc(n + 1);
-        if (t) memcpy(t, con, n + 1);
-        for (size_t i = 0; t && i < n; i++)
-            if ((unsigned char)t[i] > 0x7F) t[i] = '?';
-        cj = t ? json_stringn(t, n) : json_null();
-        free(t);
-    }
-    json_object_set_new(j, "console", cj ? cj : json_null());
+    json_object_set_new(j, "console", run_console_json(con, n));
 }
 
 static void board_stop(run_t *r, void *self)
@@ -257,6 +240,9 @@ static void board_stop(run_t *r, void *self)
     if (st->console_dropped)
         fprintf(stderr, "mmsim: the console kept its first %u bytes; %llu more not kept (board.console_dropped)\n",
                 BOARD_CONSOLE_MAX - 1, (unsigned long long)st->console_dropped);
+    if (b->console_lost)
+        fprintf(stderr, "mmsim: --console pty: %llu bytes not delivered (its reader fell more than %u bytes behind)\n",
+                (unsigned long long)b->console_lost, CONSOLE_TAIL);
 }
 
 static void board_headline(const run_t *r, const void *self)

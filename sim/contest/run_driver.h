@@ -109,6 +109,9 @@ static inline int run_gdb_said(unsigned port, const char *err)
     return RUN_OK;
 }
 
+/* A board's console text (NUL-terminated at n) as a JSON string; bytes above 0x7F as '?' when it is not UTF-8 (run_console.c). */
+json_t *run_console_json(const char *text, size_t n);
+
 /* --watch (run_watch.c): the firmware's variables, their latest values and
  * how the driver's processor reads them (the AVR's SRAM, the ARM core's). */
 typedef void (*run_watch_sample_t)(const watch_list_t *w, void *ctx, double *values);

@@ -21,11 +21,11 @@ static void test_overflow_counted(void **state)
     assert_int_equal(board_console_init(&c, &st, err, sizeof err), 0);
     const size_t keep = BOARD_CONSOLE_MAX - 1, extra = 37;
     for (size_t i = 0; i < keep + extra; i++) board_console_byte(&c, (uint8_t)('a' + i % 26));
-    assert_int_equal(c.len, keep);
-    assert_int_equal(strlen(c.text), keep);
+    assert_int_equal(c.con.len, keep);
+    assert_int_equal(strlen(c.con.text), keep);
     assert_int_equal(st.console_dropped, extra);
     assert_int_equal(st.uart_bytes_out, keep + extra);
-    free(c.text);
+    board_console_free(&c);
 }
 
 int main(void)
