@@ -27,7 +27,8 @@ if [ ! -d "$SHARED/clients/bulebule/src" ]; then
 fi
 [ -s "$ELF" ] || mk client-bulebule >"$T/bb.out" 2>&1 || { bad "make client-bulebule: $(tail -1 "$T/bb.out")"; exit 1; }
 export MMMAZE
-# the tool: bulebule's set_run_sequence on the true walls, erased flash but that page
+# the tool: bulebule's set_run_sequence on the true walls, erased flash but that page (the sequences below are
+# what bulebule's src/mmlib/search.c, compiled on the host with the same walls, builds)
 want_rc 0 "bulebule-flash writes the flash file" tools/bulebule-flash "$MAZE" -o "$T/a.bin"
 SEQ=BFRFLRLFRLLFRRFFRLLFRFFS
 grep -q "$SEQ" "$T/out" && ok "its run sequence printed: $SEQ" || bad "sequence: $(cat "$T/out")"
@@ -39,12 +40,17 @@ page = s + bytes(256 - len(s))
 sys.exit(not (len(d) == 65536 and d[0xFC00:0xFD00] == page and d.count(0xFF) == 65536 - 256))
 PY
 cp "$T/a.bin" "$T/b.bin"
+# a sequence with turns both ways in a row, as bulebule's own search.c builds it on the host from the same walls
+want_rc 0 "bulebule-flash on classic/AAMC15Maze" tools/bulebule-flash "$SHARED/mazes/classic/AAMC15Maze.txt" -o "$T/d.bin"
+grep -q " BFRFFFLLRRLFLFFFRFFRLRLLRRFRLRLRLFFFS " "$T/out" && ok "AAMC15Maze: bulebule's sequence" || bad "AAMC15Maze: $(cat "$T/out")"
 ONE_ERROR_LINE=1
 printf 'o---o\n| x |\n' >"$T/bad.txt"
 want_rc 2 "a bad maze: one line, exit 2" tools/bulebule-flash "$T/bad.txt" -o "$T/c.bin"
 grep -q "bad.txt:" "$T/err" && ok "the maze's error names the file" || bad "error: $(cat "$T/err")"
 want_rc 2 "a maze bulebule cannot hold (5x5): exit 2" tools/bulebule-flash mazes/gen-5x5-s1.txt -o "$T/c.bin"
 want_rc 2 "no output named: exit 2" tools/bulebule-flash "$MAZE"
+want_rc 2 "classic/001-anomaly-test, its goal walled off from the start: exit 2" \
+  tools/bulebule-flash "$SHARED/mazes/classic/001-anomaly-test.txt" -o "$T/c.bin"
 [ ! -e "$T/c.bin" ] && ok "nothing written on bad input" || bad "$T/c.bin written"
 ONE_ERROR_LINE=0
 # the second run: leaves the start at 16.2 s, reaches the goal 5.7 s later, stops in it by 22.0 s
