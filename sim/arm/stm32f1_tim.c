@@ -47,7 +47,7 @@ static unsigned sms(const stm32f1_tim_t *t) { return t->smcr & 7u; }
 static int encoder(const stm32f1_tim_t *t) { return sms(t) >= 1 && sms(t) <= 3; }
 static unsigned ts(const stm32f1_tim_t *t) { return (t->smcr >> 4) & 7u; }
 /* Does the counter stand still: stopped, an encoder (moved by the wheel),
- * the external clock (not modeled), or gated with TRGI low? */
+ * clocked by TRGI's edges (external clock mode 1), or gated with TRGI low? */
 static int held(const stm32f1_tim_t *t)
 {
     return !(t->cr1 & CEN) || encoder(t) || sms(t) == 7 || (sms(t) == 5 && !t->trgi);
@@ -392,16 +392,20 @@ void stm32f1_tim_encoder(stm32f1_tim_t *t, uint64_t now, int64_t edges)
 /* TRGI is now level at core cycle now (brought there): TIF on a rising
  * edge (gated mode: on both), and the slave mode's action: reset (100)
  * reinitializes the counter with an update event as UG does, gated (101)
- * counts while TRGI is high, trigger (110) sets CEN. */
+ * counts while TRGI is high, trigger (110) sets CEN, external clock mode 1
+ * (111, RM0090 18.3.14 "External clock source mode 1") counts each rising
+ * edge as a clock tick instead of the internal clock. */
 static void trgi_level(stm32f1_tim_t *t, int level)
 {
     if (level == t->trgi) return;
     t->trgi = level;
     unsigned m = sms(t);
-    if (m < 4 || m == 7) return;
+    if (m < 4) return;
     if (m == 5 || level) t->sr |= TIF;
     if (!level) return;
-    if (m == 4) {
+    if (m == 7) { /* external clock mode 1: a rising edge is a timer clock tick (through PSC), at its cycle */
+        if (t->cr1 & CEN) run_ticks(t, 1);
+    } else if (m == 4) {
         t->cnt = (t->down && !cms(t)) ? t->arr : 0;
         t->pc = 0;
         update_event(t, 0, t->now);
@@ -420,7 +424,8 @@ void stm32_tim_itr(stm32f1_tim_t *t, unsigned itr, int rising, uint64_t now)
     update_irq(t);
 }
 
-void stm32_tim_route_itr(stm32f1_tim_t *t) { t->itr_routed = 1; }
+void stm32_tim_route_itr(stm32f1_tim_t *t) { t->itr_routed = 0xF; }
+void stm32_tim_route_itr_mask(stm32f1_tim_t *t, unsigned mask) { t->itr_routed = (int)(mask & 0xFu); }
 
 /* An edge of TIti as TRGI: TI1F_ED (TS 100) every edge as a pulse,
  * TI1FP1 (101) and TI2FP2 (110) the level after the CCxP polarity. */
@@ -602,8 +607,10 @@ static mmio_status_t write_ctl(stm32f1_tim_t *t, uint32_t w, uint32_t v, uint32_
     case 0x08:
         t->smcr = stm32f1_reg_merge(t->smcr, v, m, 0xFFF7u);
         if (encoder(t) && nch(t) < 4) return MMIO_UNMODELED; /* TIM9/12: no encoder modes (RM0090 19.5.2) */
-        /* the external clock (SMS 111, ECE), ETRF, an ITRx no other timer's TRGO reaches */
-        if (sms(t) == 7 || (t->smcr & (1u << 14)) || (sms(t) >= 4 && (ts(t) == 7 || (ts(t) <= 3 && !t->itr_routed))))
+        /* external clock mode 2 (ECE), ETRF, an ITRx no other timer's TRGO reaches, external clock
+         * mode 1 (SMS 111) from the TIx inputs (from an ITRx it is modeled) */
+        if ((t->smcr & (1u << 14)) || (sms(t) >= 4 && (ts(t) == 7 || (ts(t) <= 3 && !(t->itr_routed >> ts(t) & 1))))
+            || (sms(t) == 7 && ts(t) > 3))
             return MMIO_UNMODELED;
         return MMIO_OK;
     case 0x0C: t->dier = stm32f1_reg_merge(t->dier, v, m, dier_mask(t)); return MMIO_OK;

@@ -37,9 +37,11 @@
  *               each a trigger source (stm32_tim_trigger_t) at its cycle
  *   slave       SMCR SMS reset (100), gated (101), trigger (110) from
  *               TI1F_ED, TI1FP1, TI2FP2 (the board's input edges) or ITR0-3
- *               (another timer's TRGO the board routes): TIF, the action
+ *               (another timer's TRGO the board routes): TIF, the action;
+ *               external clock mode 1 (111) from ITR0-3: each rising edge
+ *               one tick of the counter's clock (through PSC)
  * Not modeled (answer MMIO_UNMODELED when a firmware sets them): external
- * clock mode 1 (SMS 111) and 2 (ECE), ETRF (TS 111), an unrouted ITRx,
+ * clock mode 1 from TIx, mode 2 (ECE), ETRF (TS 111), an unrouted ITRx,
  * a non-reset MMS on a timer no trigger listener takes (the F1 board),
  * TRGO from OCxREF in PWM mode while center-aligned, TI1S,
  * a capture from TRC (CCxS 11), OCxCE (clear on ETRF),
@@ -111,7 +113,7 @@ typedef struct {
     uint32_t trig_want;         /* the sources (1 << kind) the listener takes: the compares it stops at */
     int trgo;                   /* TRGO's level in the level modes of MMS (enable, OCxREF) */
     int trgi;                   /* the slave mode's trigger input (TRGI) level */
-    int itr_routed;             /* the board routes other timers' TRGO to ITR0-3 (stm32_tim_itr) */
+    int itr_routed;             /* bit x: the board routes another timer's TRGO to ITRx (stm32_tim_itr) */
     /* the cycle of an event inside an advance: state at its start */
     int ev_run;                 /* 1 while run_ticks counts */
     uint64_t ev_now0, ev_acc0, ev_done; /* start cycle, its acc, timer clocks before this batch */
@@ -150,10 +152,12 @@ void stm32_tim_trigger_want(stm32f1_tim_t *t, uint32_t kinds);
 /* Another timer's TRGO, routed to this one's input ITRitr (0-3; which
  * timer is which ITR: RM0090 table 93/94, the board's data), is now at
  * level rising (an edge) at core cycle now: the slave mode acts if SMCR
- * TS selects it. stm32_tim_route_itr tells the model the board does so
- * (else a slave mode on ITRx is reported unmodeled). */
+ * TS selects it. stm32_tim_route_itr tells the model the board routes
+ * ITR0-3, stm32_tim_route_itr_mask the ITRs of mask's bits (else a slave
+ * mode on that ITRx is reported unmodeled). */
 void stm32_tim_itr(stm32f1_tim_t *t, unsigned itr, int rising, uint64_t now);
 void stm32_tim_route_itr(stm32f1_tim_t *t);
+void stm32_tim_route_itr_mask(stm32f1_tim_t *t, unsigned mask);
 /* The model's bus functions, for another family's ops tables. */
 mmio_status_t stm32_tim_read(void *self, uint32_t off, unsigned size, uint32_t *value);
 mmio_status_t stm32_tim_write(void *self, uint32_t off, unsigned size, uint32_t value);
