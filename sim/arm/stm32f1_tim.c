@@ -427,6 +427,46 @@ void stm32_tim_itr(stm32f1_tim_t *t, unsigned itr, int rising, uint64_t now)
 void stm32_tim_route_itr(stm32f1_tim_t *t) { t->itr_routed = 0xF; }
 void stm32_tim_route_itr_mask(stm32f1_tim_t *t, unsigned mask) { t->itr_routed = (int)(mask & 0xFu); }
 
+/* ---- timers linked through ITRx (stm32_tim_links_t) ---- */
+
+void stm32_tim_links_init(const stm32_tim_links_t *l)
+{
+    for (unsigned i = 0; i < l->count; i++) {
+        unsigned m = 0;
+        for (unsigned x = 0; x < 4; x++) m |= (l->itr[i][x] != 0) << x;
+        stm32_tim_route_itr_mask(&l->tim[i], m);
+    }
+}
+
+void stm32_tim_links_trgo(const stm32_tim_links_t *l, unsigned source, int rising, uint64_t now)
+{
+    if (source % 8u != STM32_TIM_TRGO) return;
+    for (unsigned i = 0; i < l->count; i++)
+        for (unsigned x = 0; x < 4; x++)
+            if (l->itr[i][x] == source / 8u) stm32_tim_itr(&l->tim[i], x, rising, now);
+}
+
+/* The timer n whose TRGO TIM(i+1)'s slave mode takes now (SMS 100-111 on a linked ITRx), 0: none. */
+static unsigned link_master(const stm32_tim_links_t *l, unsigned i)
+{
+    const stm32f1_tim_t *t = &l->tim[i];
+    return sms(t) >= 4 && ts(t) <= 3 ? l->itr[i][ts(t)] : 0u;
+}
+
+void stm32_tim_links_wants(const stm32_tim_links_t *l, uint32_t *want)
+{
+    for (unsigned i = 0; i < l->count; i++) {
+        unsigned m = link_master(l, i);
+        if (m >= 1 && m <= l->count) want[m - 1u] |= 1u << STM32_TIM_TRGO;
+    }
+}
+
+void stm32_tim_links_written(const stm32_tim_links_t *l, stm32f1_tim_t *t)
+{
+    unsigned i = t->n - 1u, m = i < l->count ? link_master(l, i) : 0u;
+    if (m >= 1 && m <= l->count && sms(t) == 5) stm32_tim_itr(t, ts(t), l->tim[m - 1u].trgo, t->now);
+}
+
 /* An edge of TIti as TRGI: TI1F_ED (TS 100) every edge as a pulse,
  * TI1FP1 (101) and TI2FP2 (110) the level after the CCxP polarity. */
 static void trgi_input(stm32f1_tim_t *t, unsigned ti, int rising)
@@ -499,8 +539,27 @@ void stm32_tim_init(stm32f1_tim_t *t, const stm32_tim_desc_t *desc, const mmio_c
 
 void stm32f1_tim_init(stm32f1_tim_t *t, unsigned n, const mmio_clocks_t *clk, mmio_irq_t irq, mmio_dma_req_t dma)
 {
-    stm32_tim_init(t, &f1_desc[(n >= 1 && n <= 4 ? n : 2) - 1], clk, irq, dma, (stm32_tim_trigger_t){ NULL, NULL });
+    stm32f1_tim_init_trig(t, n, clk, irq, dma, (stm32_tim_trigger_t){ NULL, NULL });
 }
+
+void stm32f1_tim_init_trig(stm32f1_tim_t *t, unsigned n, const mmio_clocks_t *clk, mmio_irq_t irq, mmio_dma_req_t dma,
+                           stm32_tim_trigger_t trig)
+{
+    stm32_tim_init(t, &f1_desc[(n >= 1 && n <= 4 ? n : 2) - 1], clk, irq, dma, trig);
+}
+
+/* RM0008 rev 21 14.4.3 (TIM1: TIM5, TIM2, TIM3, TIM4) and 15.4.3 (TIM2: TIM1, TIM8, TIM3, TIM4; TIM3:
+ * TIM1, TIM2, TIM5, TIM4; TIM4: TIM1, TIM2, TIM3, TIM8) "TIMx internal trigger connection"; TIM5 and TIM8
+ * do not exist on the medium-density STM32F103 */
+const uint8_t stm32f1_tim_itr[4][4] = { { 0, 2, 3, 4 }, { 1, 0, 3, 4 }, { 1, 2, 0, 4 }, { 1, 2, 3, 0 } };
+
+#define T1(n, k) STM32_TIM_TRIG(n, STM32_TIM_##k)
+const uint16_t stm32f1_adc_extsel[2][8] = {
+    /* ADC1/2 regular EXTSEL, RM0008 11.12.3 (110: EXTI line 11, 111: SWSTART) */
+    { T1(1, CC1), T1(1, CC2), T1(1, CC3), T1(2, CC2), T1(3, TRGO), T1(4, CC4), STM32F1_ADC_NOT_TIM, STM32F1_ADC_NOT_TIM },
+    /* injected JEXTSEL (110: EXTI line 15, 111: JSWSTART) */
+    { T1(1, TRGO), T1(1, CC4), T1(2, TRGO), T1(2, CC1), T1(3, CC4), T1(4, TRGO), STM32F1_ADC_NOT_TIM, STM32F1_ADC_NOT_TIM },
+};
 
 void stm32_tim_trigger_want(stm32f1_tim_t *t, uint32_t kinds) { t->trig_want = kinds & 0x1Fu; }
 

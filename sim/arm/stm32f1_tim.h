@@ -141,6 +141,16 @@ extern const mmio_ops_t stm32f1_tim_ops[4];
 /* Power-on for TIMn (1-4): every register 0 (RM0008 15.4) but ARR 0xFFFF
  * (see tim_reset). dma may have a NULL request (no DMA controller). */
 void stm32f1_tim_init(stm32f1_tim_t *t, unsigned n, const mmio_clocks_t *clk, mmio_irq_t irq, mmio_dma_req_t dma);
+/* The same with a trigger listener (the F1 SoC's: the ADCs' EXTSEL, the ITR links). */
+void stm32f1_tim_init_trig(stm32f1_tim_t *t, unsigned n, const mmio_clocks_t *clk, mmio_irq_t irq, mmio_dma_req_t dma,
+                           stm32_tim_trigger_t trig);
+/* The F1's internal trigger connections (stm32_tim_links_t.itr) and the
+ * ADC1/2 trigger sources of EXTSEL (row 0) and JEXTSEL (row 1) codes 0-7
+ * (STM32_TIM_TRIG; STM32F1_ADC_NOT_TIM: EXTI or the software start). */
+extern const uint8_t stm32f1_tim_itr[4][4];
+#define STM32F1_ADC_NOT_TIM 0xFFFFu
+extern const uint16_t stm32f1_adc_extsel[2][8];
+
 /* Power-on for the instance desc (which outlives t) with a trigger
  * listener (trig.trigger may be NULL); the listener takes every source
  * until stm32_tim_trigger_want narrows it. */
@@ -158,6 +168,24 @@ void stm32_tim_trigger_want(stm32f1_tim_t *t, uint32_t kinds);
 void stm32_tim_itr(stm32f1_tim_t *t, unsigned itr, int rising, uint64_t now);
 void stm32_tim_route_itr(stm32f1_tim_t *t);
 void stm32_tim_route_itr_mask(stm32f1_tim_t *t, unsigned mask);
+/* A chip's timers linked master to slave (its reference manual's "TIMx
+ * internal trigger connection" tables): tim[i] is TIM(i+1), itr[i][x] the
+ * timer n whose TRGO reaches TIM(i+1)'s ITRx (0: none there). The SoC
+ * calls _init once the timers exist (each told the ITRs routed to it),
+ * _trgo from its trigger listener (a TRGO edge to the slaves whose SMCR
+ * TS selects it), _wants to add the TRGOs the slaves take now to the
+ * want masks (want[i] for TIM(i+1)), and _written after a timer register
+ * write (a slave gated by a level TRGO takes its current level). */
+typedef struct {
+    stm32f1_tim_t *tim;
+    unsigned count;
+    const uint8_t (*itr)[4];
+} stm32_tim_links_t;
+void stm32_tim_links_init(const stm32_tim_links_t *l);
+void stm32_tim_links_trgo(const stm32_tim_links_t *l, unsigned source, int rising, uint64_t now);
+void stm32_tim_links_wants(const stm32_tim_links_t *l, uint32_t *want);
+void stm32_tim_links_written(const stm32_tim_links_t *l, stm32f1_tim_t *t);
+
 /* The model's bus functions, for another family's ops tables. */
 mmio_status_t stm32_tim_read(void *self, uint32_t off, unsigned size, uint32_t *value);
 mmio_status_t stm32_tim_write(void *self, uint32_t off, unsigned size, uint32_t value);

@@ -114,17 +114,7 @@ static void soc_trigger(void *ctx, unsigned source, int rising, uint64_t now)
         if (reg >= 0) stm32f4_adc_ext_trigger(&s->adc[i], false, (unsigned)reg, rising != 0, now);
         if (inj >= 0) stm32f4_adc_ext_trigger(&s->adc[i], true, (unsigned)inj, rising != 0, now);
     }
-    if (source % 8u != STM32_TIM_TRGO) return;
-    for (unsigned i = 0; i < STM32F4_TIM_COUNT; i++)
-        for (unsigned x = 0; x < 4; x++)
-            if (stm32f4_tim_itr[i][x] == source / 8u) stm32_tim_itr(&s->tim[i], x, rising, now);
-}
-
-/* The timer n whose TRGO instance i's slave mode takes now (SMS 100-111 on a routed ITRx), 0: none. */
-static unsigned itr_master(const stm32f1_tim_t *t, unsigned i)
-{
-    unsigned sms = t->smcr & 7u, ts = (t->smcr >> 4) & 7u;
-    return sms >= 4 && ts <= 3 ? stm32f4_tim_itr[i][ts] : 0u;
+    stm32_tim_links_trgo(&s->links, source, rising, now);
 }
 
 /* The timers' compare and update events the ADCs' external triggers take now (EXTEN/JEXTEN on, the
@@ -139,9 +129,8 @@ static void trigger_wants(stm32f4_soc_t *s)
             unsigned ext = (cr2 >> 28) & 3u ? (cr2 >> 24) & 0xFu : 15u, jext = (cr2 >> 20) & 3u ? (cr2 >> 16) & 0xFu : 15u;
             m[i] |= stm32f4_tim_adc_wants(stm32f4_tim[i].d.n, ext, jext);
         }
-        unsigned master = itr_master(&s->tim[i], i);
-        if (master) m[master - 1u] |= 1u << STM32_TIM_TRGO; /* TIMn is instance n - 1 */
     }
+    stm32_tim_links_wants(&s->links, m);
     for (unsigned i = 0; i < STM32F4_TIM_COUNT; i++) stm32_tim_trigger_want(&s->tim[i], m[i]);
 }
 
@@ -154,8 +143,7 @@ static mmio_status_t soc_tim_write(void *self, uint32_t off, unsigned size, uint
     stm32f4_soc_t *s = (stm32f4_soc_t *)(void *)((char *)(t - i) - offsetof(stm32f4_soc_t, tim));
     mmio_status_t st = stm32_tim_write(self, off, size, v);
     trigger_wants(s);
-    unsigned master = itr_master(t, i);
-    if (master && (t->smcr & 7u) == 5u) stm32_tim_itr(t, (t->smcr >> 4) & 3u, s->tim[master - 1u].trgo, t->now);
+    stm32_tim_links_written(&s->links, t);
     return st;
 }
 
@@ -216,14 +204,13 @@ static void init_analog_timers(stm32f4_soc_t *s, mmio_irq_t irq, mmio_dma_req_t 
     stm32_tim_trigger_t trig = { soc_trigger, s };
     for (unsigned i = 0; i < STM32F4_TIM_COUNT; i++) {
         const stm32f4_tim_inst_t *t = &stm32f4_tim[i];
-        unsigned routed = 0;
-        for (unsigned x = 0; x < 4; x++) routed |= (stm32f4_tim_itr[i][x] != 0) << x;
         stm32f4_tim_init(&s->tim[i], i, clk, irq, dreq, trig);
-        stm32_tim_route_itr_mask(&s->tim[i], routed);
         s->tim_ops[i] = stm32f4_tim_ops[i];
         s->tim_ops[i].write = soc_tim_write;
         place(s, t->base, STM32F4_TIM_SIZE, &s->tim_ops[i], &s->tim[i], t->d.apb == 2 ? APB2ENR : APB1ENR, t->enable);
     }
+    s->links = (stm32_tim_links_t){ s->tim, STM32F4_TIM_COUNT, stm32f4_tim_itr };
+    stm32_tim_links_init(&s->links);
     trigger_wants(s);
 }
 

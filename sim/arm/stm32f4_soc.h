@@ -90,6 +90,7 @@ typedef struct {
     mmio_ops_t adc_ops;          /* the ADC's, its writes telling the timers the events the triggers take */
     stm32f1_tim_t tim[STM32F4_TIM_COUNT];
     mmio_ops_t tim_ops[STM32F4_TIM_COUNT]; /* the timers', their writes telling the masters the TRGOs slaves take */
+    stm32_tim_links_t links;     /* TIM1-14 through stm32f4_tim_itr */
     stm32_i2c_t i2c[STM32F4_SOC_I2CS];
     stm32_usart_t usart[STM32F4_SOC_USARTS];
     stm32_spi_t spi[STM32F4_SOC_SPIS];
