@@ -616,7 +616,7 @@ static mmio_status_t write_cr2(stm32f1_tim_t *t, uint32_t v, uint32_t m)
     else if (mms(t) >= 4 && i < nch(t)) trgo_level(t, (ref_now(t, i) >> i) & 1u, t->now);
     else t->trgo = 0;
     if (t->cr2 & 0x80u) return MMIO_UNMODELED; /* TI1S */
-    if (mms(t) != 0 && !t->trig.trigger) return MMIO_UNMODELED; /* a TRGO no model takes (the F1 board's ADC) */
+    if (mms(t) != 0 && !t->trig.trigger) return MMIO_UNMODELED; /* a TRGO no model takes (a timer alone) */
     if (mms(t) >= 4 && (i >= nch(t) || (cms(t) && ocm(t, i) >= 6))) return MMIO_UNMODELED;
     return MMIO_OK;
 }

@@ -42,7 +42,7 @@
  *               one tick of the counter's clock (through PSC)
  * Not modeled (answer MMIO_UNMODELED when a firmware sets them): external
  * clock mode 1 from TIx, mode 2 (ECE), ETRF (TS 111), an unrouted ITRx,
- * a non-reset MMS on a timer no trigger listener takes (the F1 board),
+ * a non-reset MMS on a timer without a trigger listener (stm32f1_tim_init),
  * TRGO from OCxREF in PWM mode while center-aligned, TI1S,
  * a capture from TRC (CCxS 11), OCxCE (clear on ETRF),
  * BDTR's break input and dead time, DCR/DMAR (DMA burst); the prescaler in
