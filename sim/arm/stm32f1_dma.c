@@ -87,20 +87,38 @@ static unsigned size_bytes(uint32_t ccr, unsigned shift)
 
 static uint32_t width_mask(unsigned size) { return size == 4 ? 0xFFFFFFFFu : (1u << (8 * size)) - 1; }
 
+bool stm32_dma_move(mmio_bus_t bus, const stm32_dma_item_t *it, uint32_t done)
+{
+    uint32_t pa = it->par + (it->pinc ? done * it->psize : 0);
+    uint32_t ma = it->mar + (it->minc ? done * it->msize : 0);
+    uint32_t src = it->from_mem ? ma : pa, dst = it->from_mem ? pa : ma;
+    unsigned ss = it->from_mem ? it->msize : it->psize, ds = it->from_mem ? it->psize : it->msize;
+    uint32_t v = 0;
+    if (!bus.read || !bus.read(bus.ctx, src, ss, &v)) return false;
+    v &= width_mask(ss) & width_mask(ds); /* Table 79: zero-extend or keep the low part */
+    return bus.write && bus.write(bus.ctx, dst, ds, v);
+}
+
+unsigned stm32_dma_count(uint32_t *ndtr, uint32_t *done, uint32_t reload, bool circular)
+{
+    unsigned f = 0;
+    ++*done;
+    --*ndtr;
+    if (2 * *done >= reload && 2 * (*done - 1) < reload) f |= STM32_DMA_HT;
+    if (*ndtr == 0) {
+        f |= STM32_DMA_TC;
+        if (circular) { *ndtr = reload; *done = 0; }
+    }
+    return f;
+}
+
 /* One transfer of channel i; false: a bus error. */
 static bool transfer(stm32_dma_t *d, unsigned i)
 {
-    stm32_dma_chan_t *c = &d->ch[i];
-    unsigned ps = size_bytes(c->ccr, CCR_PSIZE_SHIFT), ms = size_bytes(c->ccr, CCR_MSIZE_SHIFT);
-    uint32_t pa = c->cpar + ((c->ccr & CCR_PINC) ? c->done * ps : 0);
-    uint32_t ma = c->cmar + ((c->ccr & CCR_MINC) ? c->done * ms : 0);
-    bool from_mem = c->ccr & CCR_DIR;
-    uint32_t src = from_mem ? ma : pa, dst = from_mem ? pa : ma;
-    unsigned ss = from_mem ? ms : ps, ds = from_mem ? ps : ms;
-    uint32_t v = 0;
-    if (!d->bus.read || !d->bus.read(d->bus.ctx, src, ss, &v)) return false;
-    v &= width_mask(ss) & width_mask(ds); /* Table 79: zero-extend or keep the low part */
-    return d->bus.write && d->bus.write(d->bus.ctx, dst, ds, v);
+    const stm32_dma_chan_t *c = &d->ch[i];
+    stm32_dma_item_t it = { c->cpar, c->cmar, size_bytes(c->ccr, CCR_PSIZE_SHIFT), size_bytes(c->ccr, CCR_MSIZE_SHIFT),
+                            (c->ccr & CCR_PINC) != 0, (c->ccr & CCR_MINC) != 0, (c->ccr & CCR_DIR) != 0 };
+    return stm32_dma_move(d->bus, &it, c->done);
 }
 
 static void serve(stm32_dma_t *d, unsigned i)
@@ -111,14 +129,8 @@ static void serve(stm32_dma_t *d, unsigned i)
         set_flags(d, i, F_TEIF);
         return;
     }
-    c->done++;
-    c->cndtr--;
-    unsigned f = 0;
-    if (2 * c->done >= c->reload && 2 * (c->done - 1) < c->reload) f |= F_HTIF;
-    if (c->cndtr == 0) {
-        f |= F_TCIF;
-        if (c->ccr & CCR_CIRC) { c->cndtr = c->reload; c->done = 0; }
-    }
+    unsigned k = stm32_dma_count(&c->cndtr, &c->done, c->reload, (c->ccr & CCR_CIRC) != 0);
+    unsigned f = ((k & STM32_DMA_HT) ? F_HTIF : 0u) | ((k & STM32_DMA_TC) ? F_TCIF : 0u);
     if (f) set_flags(d, i, f);
 }
 

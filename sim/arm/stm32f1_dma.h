@@ -40,4 +40,22 @@ void stm32_dma_init(stm32_dma_t *d, mmio_bus_t bus, mmio_irq_t irq);
  * never runs inside the requesting peripheral's own access. */
 void stm32_dma_request(void *dma, unsigned channel, bool level);
 
+/* The transfer step both families' controllers share (RM0008 13.3.3-13.3.5,
+ * RM0090 10.3.6-10.3.10): one item moved, the peripheral address advanced
+ * by done items of psize bytes with pinc, the memory address by done items
+ * of msize with minc, read from the source at its size and written to the
+ * destination at its (RM0008 table 79: zero-extended or its low part kept;
+ * the F4's direct mode: one size); false: a bus error. */
+typedef struct {
+    uint32_t par, mar;
+    unsigned psize, msize;     /* bytes: 1, 2, 4 */
+    bool pinc, minc, from_mem; /* from_mem: memory to peripheral */
+} stm32_dma_item_t;
+bool stm32_dma_move(mmio_bus_t bus, const stm32_dma_item_t *it, uint32_t done);
+/* The item counted: *ndtr down, *done up; STM32_DMA_HT when the count
+ * passes half of reload, STM32_DMA_TC at its end (circular: both reloaded). */
+#define STM32_DMA_HT 1u
+#define STM32_DMA_TC 2u
+unsigned stm32_dma_count(uint32_t *ndtr, uint32_t *done, uint32_t reload, bool circular);
+
 #endif

@@ -1,6 +1,7 @@
 /* stm32f1_soc.c - an STM32F103 as one chip (see stm32f1_soc.h). */
 #include "stm32f1_soc.h"
 
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -61,6 +62,55 @@ void stm32f1_soc_reset_pin(stm32f1_soc_t *s)
     s->resets++;
 }
 
+/* ---- timers as trigger sources: the ADCs' EXTSEL/JEXTSEL (RM0008 11.12.3), the ITR links (14.4.3, 15.4.3) ---- */
+
+/* A timer's TRGO or CCx edge: a rising one starts the ADC groups whose (J)EXTTRIG and (J)EXTSEL code name it
+ * (11.4: the external trigger's rising edge); a TRGO to the timers whose ITRx it is. */
+static void soc_trigger(void *ctx, unsigned source, int rising, uint64_t now)
+{
+    stm32f1_soc_t *s = ctx;
+    for (unsigned g = 0; g < 2 && rising; g++)
+        for (unsigned code = 0; code < 8; code++)
+            if (stm32f1_adc_extsel[g][code] == source)
+                for (unsigned a = 0; a < 2; a++) stm32_adc_ext_trigger(&s->adc[a], g == 1, code, now);
+    stm32_tim_links_trgo(&s->links, source, rising, now);
+}
+
+/* The sources the ADCs' enabled external triggers and the slave timers take now: only those become the
+ * timers' events (a timer no one listens to runs as without a listener). */
+static void trigger_wants(stm32f1_soc_t *s)
+{
+    uint32_t m[4] = { 0 };
+    for (unsigned a = 0; a < 2; a++) {
+        uint32_t cr2 = s->adc[a].cr2;
+        unsigned src[2] = { (cr2 & (1u << 20)) ? stm32f1_adc_extsel[0][(cr2 >> 17) & 7u] : STM32F1_ADC_NOT_TIM,
+                            (cr2 & (1u << 15)) ? stm32f1_adc_extsel[1][(cr2 >> 12) & 7u] : STM32F1_ADC_NOT_TIM };
+        for (unsigned g = 0; g < 2; g++)
+            if (src[g] != STM32F1_ADC_NOT_TIM && src[g] / 8u >= 1 && src[g] / 8u <= 4) m[src[g] / 8u - 1u] |= 1u << (src[g] % 8u);
+    }
+    stm32_tim_links_wants(&s->links, m);
+    for (unsigned i = 0; i < 4; i++) stm32_tim_trigger_want(&s->tim[i], m[i]);
+}
+
+static mmio_status_t soc_tim_write(void *self, uint32_t off, unsigned size, uint32_t v)
+{
+    stm32f1_tim_t *t = self;
+    stm32f1_soc_t *s = (stm32f1_soc_t *)(void *)((char *)(t - (t->n - 1u)) - offsetof(stm32f1_soc_t, tim));
+    mmio_status_t st = stm32_tim_write(self, off, size, v);
+    trigger_wants(s);
+    stm32_tim_links_written(&s->links, t);
+    return st;
+}
+
+static mmio_status_t soc_adc_write(void *self, uint32_t off, unsigned size, uint32_t v)
+{
+    stm32_adc_t *a = self;
+    stm32f1_soc_t *s = (stm32f1_soc_t *)(void *)((char *)(a - (a->index - 1u)) - offsetof(stm32f1_soc_t, adc));
+    mmio_status_t st = stm32_adc_ops.write(self, off, size, v);
+    trigger_wants(s);
+    return st;
+}
+
 static void soc_wdg_started(void *ctx) { stm32f1_rcc_lsi_force(&((stm32f1_soc_t *)ctx)->rcc); }
 
 static mmio_status_t soc_flash_write(void *ctx, uint32_t off, unsigned size, uint32_t value, uint64_t now)
@@ -96,11 +146,20 @@ static void init_models(stm32f1_soc_t *s, const stm32f1_soc_cfg_t *cfg)
         stm32f1_gpio_init(&s->gpio[p], p, &s->exti);
         if (cfg->pin_cb) stm32f1_gpio_on_change(&s->gpio[p], cfg->pin_cb, cfg->pin_ctx);
     }
-    for (unsigned n = 1; n <= 4; n++) stm32f1_tim_init(&s->tim[n - 1], n, clk, irq, dma);
+    for (unsigned n = 1; n <= 4; n++) {
+        stm32f1_tim_init_trig(&s->tim[n - 1], n, clk, irq, dma, (stm32_tim_trigger_t){ soc_trigger, s });
+        s->tim_ops[n - 1] = stm32f1_tim_ops[n - 1];
+        s->tim_ops[n - 1].write = soc_tim_write;
+    }
+    s->links = (stm32_tim_links_t){ s->tim, 4, stm32f1_tim_itr };
+    stm32_tim_links_init(&s->links);
     stm32f1_iwdg_init(&s->iwdg, clk, (stm32f1_iwdg_hooks_t){ soc_wdg_reset, soc_wdg_started, s });
     stm32_adc_init(&s->adc[0], 1, clk, irq, dma, cfg->volts, cfg->volts_ctx, cfg->vdda_v);
     stm32_adc_init(&s->adc[1], 2, clk, irq, (mmio_dma_req_t){ NULL, NULL }, cfg->volts, cfg->volts_ctx, cfg->vdda_v);
     stm32_adc_share_irq(&s->adc[0], &s->adc[1]);
+    s->adc_ops = stm32_adc_ops;
+    s->adc_ops.write = soc_adc_write;
+    trigger_wants(s);
     stm32_dma_init(&s->dma, (mmio_bus_t){ soc_bus_read, soc_bus_write, s }, irq);
     for (unsigned u = 0; u < 3; u++) stm32_usart_init(&s->usart[u], u + 1, clk, irq, dma, cfg->sink[u], cfg->sink_ctx[u]);
     for (unsigned i = 0; i < 2; i++) stm32_spi_init(&s->spi[i], i + 1, clk, irq, dma, cfg->spi_slave[i]);
@@ -117,12 +176,12 @@ static void place_models(stm32f1_soc_t *s)
     place_gated(s, STM32F1_AFIO_BASE, sz, STM32F1_APB2, STM32F1_EN_AFIO, &stm32f1_afio_ops, &s->afio);
     for (unsigned p = 0; p < STM32F1_GPIO_PORTS; p++)
         place_gated(s, STM32F1_GPIOA_BASE + sz * p, sz, STM32F1_APB2, STM32F1_EN_GPIO(p), &stm32f1_gpio_ops[p], &s->gpio[p]);
-    place_gated(s, STM32_ADC1_BASE, STM32_ADC_SIZE, STM32F1_APB2, EN_ADC1, &stm32_adc_ops, &s->adc[0]);
-    place_gated(s, STM32_ADC2_BASE, STM32_ADC_SIZE, STM32F1_APB2, EN_ADC2, &stm32_adc_ops, &s->adc[1]);
-    place_gated(s, STM32F1_TIM1_BASE, sz, STM32F1_APB2, STM32F1_EN_TIM1, &stm32f1_tim_ops[0], &s->tim[0]);
-    place_gated(s, STM32F1_TIM2_BASE, sz, STM32F1_APB1, STM32F1_EN_TIM2, &stm32f1_tim_ops[1], &s->tim[1]);
-    place_gated(s, STM32F1_TIM3_BASE, sz, STM32F1_APB1, STM32F1_EN_TIM3, &stm32f1_tim_ops[2], &s->tim[2]);
-    place_gated(s, STM32F1_TIM4_BASE, sz, STM32F1_APB1, STM32F1_EN_TIM4, &stm32f1_tim_ops[3], &s->tim[3]);
+    place_gated(s, STM32_ADC1_BASE, STM32_ADC_SIZE, STM32F1_APB2, EN_ADC1, &s->adc_ops, &s->adc[0]);
+    place_gated(s, STM32_ADC2_BASE, STM32_ADC_SIZE, STM32F1_APB2, EN_ADC2, &s->adc_ops, &s->adc[1]);
+    place_gated(s, STM32F1_TIM1_BASE, sz, STM32F1_APB2, STM32F1_EN_TIM1, &s->tim_ops[0], &s->tim[0]);
+    place_gated(s, STM32F1_TIM2_BASE, sz, STM32F1_APB1, STM32F1_EN_TIM2, &s->tim_ops[1], &s->tim[1]);
+    place_gated(s, STM32F1_TIM3_BASE, sz, STM32F1_APB1, STM32F1_EN_TIM3, &s->tim_ops[2], &s->tim[2]);
+    place_gated(s, STM32F1_TIM4_BASE, sz, STM32F1_APB1, STM32F1_EN_TIM4, &s->tim_ops[3], &s->tim[3]);
     place_gated(s, STM32_SPI1_BASE, STM32_SPI_SIZE, STM32F1_APB2, EN_SPI1, &stm32_spi_ops, &s->spi[0]);
     place_gated(s, STM32_SPI2_BASE, STM32_SPI_SIZE, STM32F1_APB1, EN_SPI2, &stm32_spi_ops, &s->spi[1]);
     place_gated(s, STM32_USART1_BASE, STM32_USART_SIZE, STM32F1_APB2, EN_USART1, &stm32_usart_ops, &s->usart[0]);

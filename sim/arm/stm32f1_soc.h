@@ -65,8 +65,11 @@ typedef struct stm32f1_soc {
     stm32f1_exti_t exti;
     stm32f1_gpio_t gpio[STM32F1_GPIO_PORTS];
     stm32f1_tim_t tim[4];         /* TIM1-TIM4 */
+    mmio_ops_t tim_ops[4];        /* the timers', their writes telling the others what triggers are taken */
+    stm32_tim_links_t links;      /* TIM1-4 through stm32f1_tim_itr */
     stm32f1_iwdg_t iwdg;
     stm32_adc_t adc[2];
+    mmio_ops_t adc_ops;           /* the ADC's, its CR2 telling the timers the (J)EXTSEL sources taken */
     stm32_dma_t dma;
     stm32_usart_t usart[3];
     stm32_spi_t spi[2];

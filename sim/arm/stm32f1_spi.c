@@ -1,7 +1,9 @@
-/* stm32f1_spi.c - STM32F1 SPI1/SPI2, full-duplex master: RM0008 rev 21
- * section 25 (25.3.3 master mode, 25.3.5 data transmission and reception:
- * TXE, RXNE, BSY, 25.3.7 status flags, 25.3.10 error flags: MODF, OVR,
- * 25.3.9 DMA, 25.3.11 interrupts, 25.5 registers).
+/* stm32f1_spi.c - STM32F1 SPI1/SPI2 and STM32F4 SPI1-3, full-duplex
+ * master: RM0008 rev 21 section 25 (25.3.3 master mode, 25.3.5 data
+ * transmission and reception: TXE, RXNE, BSY, 25.3.7 status flags, 25.3.10
+ * error flags: MODF, OVR, 25.3.9 DMA, 25.3.11 interrupts, 25.5 registers);
+ * RM0090 rev 19 section 28 the same in SPI mode (28.3.3, 28.3.5, 28.3.7,
+ * 28.3.9-28.3.11, 28.5), SPI1 on APB2, SPI2/3 on APB1 as on the F1.
  *
  * Writing DR fills the TX buffer; the shifter takes it at once when empty
  * (TXE rises, BSY is set) and shifts 8 or 16 bits (DFF) at fSCK = fPCLK /
@@ -12,7 +14,8 @@
  * low in master mode: SSM with SSI 0) clears SPE and MSTR and clears by an
  * SR read then a CR1 write. Not modeled (a write that sets them answers
  * MMIO_UNMODELED): slave mode (SPE without MSTR), bidirectional and
- * receive-only modes, CRC, I2S (I2SCFGR, I2SPR), the NSS pin as an input
+ * receive-only modes, CRC, the F4's TI frame format (CR2 FRF, SR FRE),
+ * I2S (I2SCFGR, I2SPR), the NSS pin as an input
  * (SSM 0 with SSOE 0 reads it as high). CPOL/CPHA select
  * the clock's edges only, which the byte exchange does not see. */
 #include "arm/stm32f1_spi.h"
@@ -34,6 +37,7 @@ enum { CR1 = 0x00, CR2 = 0x04, SR = 0x08, DR = 0x0C, CRCPR = 0x10, RXCRCR = 0x14
 #define CR1_UNMODELED (CR1_RXONLY | CR1_CRCNEXT | CR1_CRCEN | CR1_BIDIMODE)
 #define CR2_RXDMAEN  (1u << 0)
 #define CR2_TXDMAEN  (1u << 1)
+#define CR2_FRF      (1u << 4) /* RM0090 28.5.2: TI mode (reserved on the F1) */
 #define CR2_ERRIE    (1u << 5)
 #define CR2_RXNEIE   (1u << 6)
 #define CR2_TXEIE    (1u << 7)
@@ -50,7 +54,7 @@ static void update_lines(stm32_spi_t *s)
            || ((sr & (SR_OVR | SR_MODF)) && (c2 & CR2_ERRIE));
     if (lv != s->irq_level) {
         s->irq_level = lv;
-        if (s->irq.set) s->irq.set(s->irq.ctx, STM32_SPI_IRQ(s->index), lv);
+        if (s->irq.set) s->irq.set(s->irq.ctx, s->irq_n, lv);
     }
     bool tx = (sr & SR_TXE) && (c2 & CR2_TXDMAEN), rx = (sr & SR_RXNE) && (c2 & CR2_RXDMAEN);
     if (tx != s->tx_req) {
@@ -177,11 +181,16 @@ static mmio_status_t spi_write(void *self, uint32_t off, unsigned size, uint32_t
     value = stm32_write_lanes(value, size) & 0xFFFFu; /* upper halves reserved */
     switch (off & ~3u) {
     case CR1: st = write_cr1(s, value); break;
-    case CR2: s->cr2 = value & 0xE7u; break;
+    case CR2:
+        if (value & CR2_FRF) st = MMIO_UNMODELED;
+        s->cr2 = value & 0xE7u;
+        break;
     case SR: /* rc_w0 applies to CRCERR only (not modeled); the rest is read-only */ break;
     case DR:
         s->txdr = (s->cr1 & CR1_DFF) ? value : (value & 0xFFu);
         s->sr &= ~SR_TXE;
+        update_lines(s); /* TXE low, if only until the shifter takes the data: the TX DMA request falls and rises
+                          * again for the next transfer (a DMA request is an edge, RM0090 10.3.2) */
         start_frame(s, s->now);
         break;
     case CRCPR: s->crcpr = value; break;
@@ -212,9 +221,12 @@ void stm32_spi_init(stm32_spi_t *s, unsigned index, const mmio_clocks_t *clk, mm
     s->clk = clk;
     s->irq = irq;
     s->dma = dma;
-    s->index = index == 2 ? 2 : 1;
+    s->index = index >= 1 && index <= 3 ? index : 1;
+    s->irq_n = STM32_SPI_IRQ(s->index);
     s->dma_rx = s->index == 1 ? 2 : 4; /* RM0008 Table 78 */
     s->dma_tx = s->index == 1 ? 3 : 5;
     s->slave = slave;
     spi_reset(s);
 }
+
+void stm32_spi_attach(stm32_spi_t *s, stm32_spi_slave_t slave) { s->slave = slave; }

@@ -47,7 +47,7 @@ static unsigned sms(const stm32f1_tim_t *t) { return t->smcr & 7u; }
 static int encoder(const stm32f1_tim_t *t) { return sms(t) >= 1 && sms(t) <= 3; }
 static unsigned ts(const stm32f1_tim_t *t) { return (t->smcr >> 4) & 7u; }
 /* Does the counter stand still: stopped, an encoder (moved by the wheel),
- * the external clock (not modeled), or gated with TRGI low? */
+ * clocked by TRGI's edges (external clock mode 1), or gated with TRGI low? */
 static int held(const stm32f1_tim_t *t)
 {
     return !(t->cr1 & CEN) || encoder(t) || sms(t) == 7 || (sms(t) == 5 && !t->trgi);
@@ -392,16 +392,20 @@ void stm32f1_tim_encoder(stm32f1_tim_t *t, uint64_t now, int64_t edges)
 /* TRGI is now level at core cycle now (brought there): TIF on a rising
  * edge (gated mode: on both), and the slave mode's action: reset (100)
  * reinitializes the counter with an update event as UG does, gated (101)
- * counts while TRGI is high, trigger (110) sets CEN. */
+ * counts while TRGI is high, trigger (110) sets CEN, external clock mode 1
+ * (111, RM0090 18.3.14 "External clock source mode 1") counts each rising
+ * edge as a clock tick instead of the internal clock. */
 static void trgi_level(stm32f1_tim_t *t, int level)
 {
     if (level == t->trgi) return;
     t->trgi = level;
     unsigned m = sms(t);
-    if (m < 4 || m == 7) return;
+    if (m < 4) return;
     if (m == 5 || level) t->sr |= TIF;
     if (!level) return;
-    if (m == 4) {
+    if (m == 7) { /* external clock mode 1: a rising edge is a timer clock tick (through PSC), at its cycle */
+        if (t->cr1 & CEN) run_ticks(t, 1);
+    } else if (m == 4) {
         t->cnt = (t->down && !cms(t)) ? t->arr : 0;
         t->pc = 0;
         update_event(t, 0, t->now);
@@ -420,7 +424,48 @@ void stm32_tim_itr(stm32f1_tim_t *t, unsigned itr, int rising, uint64_t now)
     update_irq(t);
 }
 
-void stm32_tim_route_itr(stm32f1_tim_t *t) { t->itr_routed = 1; }
+void stm32_tim_route_itr(stm32f1_tim_t *t) { t->itr_routed = 0xF; }
+void stm32_tim_route_itr_mask(stm32f1_tim_t *t, unsigned mask) { t->itr_routed = (int)(mask & 0xFu); }
+
+/* ---- timers linked through ITRx (stm32_tim_links_t) ---- */
+
+void stm32_tim_links_init(const stm32_tim_links_t *l)
+{
+    for (unsigned i = 0; i < l->count; i++) {
+        unsigned m = 0;
+        for (unsigned x = 0; x < 4; x++) m |= (l->itr[i][x] != 0) << x;
+        stm32_tim_route_itr_mask(&l->tim[i], m);
+    }
+}
+
+void stm32_tim_links_trgo(const stm32_tim_links_t *l, unsigned source, int rising, uint64_t now)
+{
+    if (source % 8u != STM32_TIM_TRGO) return;
+    for (unsigned i = 0; i < l->count; i++)
+        for (unsigned x = 0; x < 4; x++)
+            if (l->itr[i][x] == source / 8u) stm32_tim_itr(&l->tim[i], x, rising, now);
+}
+
+/* The timer n whose TRGO TIM(i+1)'s slave mode takes now (SMS 100-111 on a linked ITRx), 0: none. */
+static unsigned link_master(const stm32_tim_links_t *l, unsigned i)
+{
+    const stm32f1_tim_t *t = &l->tim[i];
+    return sms(t) >= 4 && ts(t) <= 3 ? l->itr[i][ts(t)] : 0u;
+}
+
+void stm32_tim_links_wants(const stm32_tim_links_t *l, uint32_t *want)
+{
+    for (unsigned i = 0; i < l->count; i++) {
+        unsigned m = link_master(l, i);
+        if (m >= 1 && m <= l->count) want[m - 1u] |= 1u << STM32_TIM_TRGO;
+    }
+}
+
+void stm32_tim_links_written(const stm32_tim_links_t *l, stm32f1_tim_t *t)
+{
+    unsigned i = t->n - 1u, m = i < l->count ? link_master(l, i) : 0u;
+    if (m >= 1 && m <= l->count && sms(t) == 5) stm32_tim_itr(t, ts(t), l->tim[m - 1u].trgo, t->now);
+}
 
 /* An edge of TIti as TRGI: TI1F_ED (TS 100) every edge as a pulse,
  * TI1FP1 (101) and TI2FP2 (110) the level after the CCxP polarity. */
@@ -494,8 +539,27 @@ void stm32_tim_init(stm32f1_tim_t *t, const stm32_tim_desc_t *desc, const mmio_c
 
 void stm32f1_tim_init(stm32f1_tim_t *t, unsigned n, const mmio_clocks_t *clk, mmio_irq_t irq, mmio_dma_req_t dma)
 {
-    stm32_tim_init(t, &f1_desc[(n >= 1 && n <= 4 ? n : 2) - 1], clk, irq, dma, (stm32_tim_trigger_t){ NULL, NULL });
+    stm32f1_tim_init_trig(t, n, clk, irq, dma, (stm32_tim_trigger_t){ NULL, NULL });
 }
+
+void stm32f1_tim_init_trig(stm32f1_tim_t *t, unsigned n, const mmio_clocks_t *clk, mmio_irq_t irq, mmio_dma_req_t dma,
+                           stm32_tim_trigger_t trig)
+{
+    stm32_tim_init(t, &f1_desc[(n >= 1 && n <= 4 ? n : 2) - 1], clk, irq, dma, trig);
+}
+
+/* RM0008 rev 21 14.4.3 (TIM1: TIM5, TIM2, TIM3, TIM4) and 15.4.3 (TIM2: TIM1, TIM8, TIM3, TIM4; TIM3:
+ * TIM1, TIM2, TIM5, TIM4; TIM4: TIM1, TIM2, TIM3, TIM8) "TIMx internal trigger connection"; TIM5 and TIM8
+ * do not exist on the medium-density STM32F103 */
+const uint8_t stm32f1_tim_itr[4][4] = { { 0, 2, 3, 4 }, { 1, 0, 3, 4 }, { 1, 2, 0, 4 }, { 1, 2, 3, 0 } };
+
+#define T1(n, k) STM32_TIM_TRIG(n, STM32_TIM_##k)
+const uint16_t stm32f1_adc_extsel[2][8] = {
+    /* ADC1/2 regular EXTSEL, RM0008 11.12.3 (110: EXTI line 11, 111: SWSTART) */
+    { T1(1, CC1), T1(1, CC2), T1(1, CC3), T1(2, CC2), T1(3, TRGO), T1(4, CC4), STM32F1_ADC_NOT_TIM, STM32F1_ADC_NOT_TIM },
+    /* injected JEXTSEL (110: EXTI line 15, 111: JSWSTART) */
+    { T1(1, TRGO), T1(1, CC4), T1(2, TRGO), T1(2, CC1), T1(3, CC4), T1(4, TRGO), STM32F1_ADC_NOT_TIM, STM32F1_ADC_NOT_TIM },
+};
 
 void stm32_tim_trigger_want(stm32f1_tim_t *t, uint32_t kinds) { t->trig_want = kinds & 0x1Fu; }
 
@@ -552,7 +616,7 @@ static mmio_status_t write_cr2(stm32f1_tim_t *t, uint32_t v, uint32_t m)
     else if (mms(t) >= 4 && i < nch(t)) trgo_level(t, (ref_now(t, i) >> i) & 1u, t->now);
     else t->trgo = 0;
     if (t->cr2 & 0x80u) return MMIO_UNMODELED; /* TI1S */
-    if (mms(t) != 0 && !t->trig.trigger) return MMIO_UNMODELED; /* a TRGO no model takes (the F1 board's ADC) */
+    if (mms(t) != 0 && !t->trig.trigger) return MMIO_UNMODELED; /* a TRGO no model takes (a timer alone) */
     if (mms(t) >= 4 && (i >= nch(t) || (cms(t) && ocm(t, i) >= 6))) return MMIO_UNMODELED;
     return MMIO_OK;
 }
@@ -602,8 +666,10 @@ static mmio_status_t write_ctl(stm32f1_tim_t *t, uint32_t w, uint32_t v, uint32_
     case 0x08:
         t->smcr = stm32f1_reg_merge(t->smcr, v, m, 0xFFF7u);
         if (encoder(t) && nch(t) < 4) return MMIO_UNMODELED; /* TIM9/12: no encoder modes (RM0090 19.5.2) */
-        /* the external clock (SMS 111, ECE), ETRF, an ITRx no other timer's TRGO reaches */
-        if (sms(t) == 7 || (t->smcr & (1u << 14)) || (sms(t) >= 4 && (ts(t) == 7 || (ts(t) <= 3 && !t->itr_routed))))
+        /* external clock mode 2 (ECE), ETRF, an ITRx no other timer's TRGO reaches, external clock
+         * mode 1 (SMS 111) from the TIx inputs (from an ITRx it is modeled) */
+        if ((t->smcr & (1u << 14)) || (sms(t) >= 4 && (ts(t) == 7 || (ts(t) <= 3 && !(t->itr_routed >> ts(t) & 1))))
+            || (sms(t) == 7 && ts(t) > 3))
             return MMIO_UNMODELED;
         return MMIO_OK;
     case 0x0C: t->dier = stm32f1_reg_merge(t->dier, v, m, dier_mask(t)); return MMIO_OK;

@@ -37,10 +37,12 @@
  *               each a trigger source (stm32_tim_trigger_t) at its cycle
  *   slave       SMCR SMS reset (100), gated (101), trigger (110) from
  *               TI1F_ED, TI1FP1, TI2FP2 (the board's input edges) or ITR0-3
- *               (another timer's TRGO the board routes): TIF, the action
+ *               (another timer's TRGO the board routes): TIF, the action;
+ *               external clock mode 1 (111) from ITR0-3: each rising edge
+ *               one tick of the counter's clock (through PSC)
  * Not modeled (answer MMIO_UNMODELED when a firmware sets them): external
- * clock mode 1 (SMS 111) and 2 (ECE), ETRF (TS 111), an unrouted ITRx,
- * a non-reset MMS on a timer no trigger listener takes (the F1 board),
+ * clock mode 1 from TIx, mode 2 (ECE), ETRF (TS 111), an unrouted ITRx,
+ * a non-reset MMS on a timer without a trigger listener (stm32f1_tim_init),
  * TRGO from OCxREF in PWM mode while center-aligned, TI1S,
  * a capture from TRC (CCxS 11), OCxCE (clear on ETRF),
  * BDTR's break input and dead time, DCR/DMAR (DMA burst); the prescaler in
@@ -111,7 +113,7 @@ typedef struct {
     uint32_t trig_want;         /* the sources (1 << kind) the listener takes: the compares it stops at */
     int trgo;                   /* TRGO's level in the level modes of MMS (enable, OCxREF) */
     int trgi;                   /* the slave mode's trigger input (TRGI) level */
-    int itr_routed;             /* the board routes other timers' TRGO to ITR0-3 (stm32_tim_itr) */
+    int itr_routed;             /* bit x: the board routes another timer's TRGO to ITRx (stm32_tim_itr) */
     /* the cycle of an event inside an advance: state at its start */
     int ev_run;                 /* 1 while run_ticks counts */
     uint64_t ev_now0, ev_acc0, ev_done; /* start cycle, its acc, timer clocks before this batch */
@@ -139,6 +141,16 @@ extern const mmio_ops_t stm32f1_tim_ops[4];
 /* Power-on for TIMn (1-4): every register 0 (RM0008 15.4) but ARR 0xFFFF
  * (see tim_reset). dma may have a NULL request (no DMA controller). */
 void stm32f1_tim_init(stm32f1_tim_t *t, unsigned n, const mmio_clocks_t *clk, mmio_irq_t irq, mmio_dma_req_t dma);
+/* The same with a trigger listener (the F1 SoC's: the ADCs' EXTSEL, the ITR links). */
+void stm32f1_tim_init_trig(stm32f1_tim_t *t, unsigned n, const mmio_clocks_t *clk, mmio_irq_t irq, mmio_dma_req_t dma,
+                           stm32_tim_trigger_t trig);
+/* The F1's internal trigger connections (stm32_tim_links_t.itr) and the
+ * ADC1/2 trigger sources of EXTSEL (row 0) and JEXTSEL (row 1) codes 0-7
+ * (STM32_TIM_TRIG; STM32F1_ADC_NOT_TIM: EXTI or the software start). */
+extern const uint8_t stm32f1_tim_itr[4][4];
+#define STM32F1_ADC_NOT_TIM 0xFFFFu
+extern const uint16_t stm32f1_adc_extsel[2][8];
+
 /* Power-on for the instance desc (which outlives t) with a trigger
  * listener (trig.trigger may be NULL); the listener takes every source
  * until stm32_tim_trigger_want narrows it. */
@@ -150,10 +162,30 @@ void stm32_tim_trigger_want(stm32f1_tim_t *t, uint32_t kinds);
 /* Another timer's TRGO, routed to this one's input ITRitr (0-3; which
  * timer is which ITR: RM0090 table 93/94, the board's data), is now at
  * level rising (an edge) at core cycle now: the slave mode acts if SMCR
- * TS selects it. stm32_tim_route_itr tells the model the board does so
- * (else a slave mode on ITRx is reported unmodeled). */
+ * TS selects it. stm32_tim_route_itr tells the model the board routes
+ * ITR0-3, stm32_tim_route_itr_mask the ITRs of mask's bits (else a slave
+ * mode on that ITRx is reported unmodeled). */
 void stm32_tim_itr(stm32f1_tim_t *t, unsigned itr, int rising, uint64_t now);
 void stm32_tim_route_itr(stm32f1_tim_t *t);
+void stm32_tim_route_itr_mask(stm32f1_tim_t *t, unsigned mask);
+/* A chip's timers linked master to slave (its reference manual's "TIMx
+ * internal trigger connection" tables): tim[i] is TIM(i+1), itr[i][x] the
+ * timer n whose TRGO reaches TIM(i+1)'s ITRx (0: none there). The SoC
+ * calls _init once the timers exist (each told the ITRs routed to it),
+ * _trgo from its trigger listener (a TRGO edge to the slaves whose SMCR
+ * TS selects it), _wants to add the TRGOs the slaves take now to the
+ * want masks (want[i] for TIM(i+1)), and _written after a timer register
+ * write (a slave gated by a level TRGO takes its current level). */
+typedef struct {
+    stm32f1_tim_t *tim;
+    unsigned count;
+    const uint8_t (*itr)[4];
+} stm32_tim_links_t;
+void stm32_tim_links_init(const stm32_tim_links_t *l);
+void stm32_tim_links_trgo(const stm32_tim_links_t *l, unsigned source, int rising, uint64_t now);
+void stm32_tim_links_wants(const stm32_tim_links_t *l, uint32_t *want);
+void stm32_tim_links_written(const stm32_tim_links_t *l, stm32f1_tim_t *t);
+
 /* The model's bus functions, for another family's ops tables. */
 mmio_status_t stm32_tim_read(void *self, uint32_t off, unsigned size, uint32_t *value);
 mmio_status_t stm32_tim_write(void *self, uint32_t off, unsigned size, uint32_t value);

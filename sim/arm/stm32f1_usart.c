@@ -43,13 +43,14 @@ enum { SR = 0x00, DR = 0x04, BRR = 0x08, CR1 = 0x0C, CR2 = 0x10, CR3 = 0x14, GTP
 #define CR1_WAKE   (1u << 11)
 #define CR1_M      (1u << 12)
 #define CR1_UE     (1u << 13)
-#define CR1_UNMODELED (CR1_SBK | CR1_RWU | CR1_PCE | CR1_WAKE)
+#define CR1_OVER8  (1u << 15) /* RM0090 30.6.4: oversampling by 8 (reserved on the F1) */
+#define CR1_UNMODELED (CR1_SBK | CR1_RWU | CR1_PCE | CR1_WAKE | CR1_OVER8)
 #define CR2_STOP_SHIFT 12
 #define CR2_UNMODELED 0x4F60u /* LBDL, LBDIE, LBCL, CPHA, CPOL, CLKEN, LINEN */
 #define CR3_EIE  (1u << 0)
 #define CR3_DMAR (1u << 6)
 #define CR3_DMAT (1u << 7)
-#define CR3_UNMODELED 0x073Eu /* IREN, IRLP, HDSEL, NACK, SCEN, RTSE, CTSE, CTSIE */
+#define CR3_UNMODELED 0x0F3Eu /* IREN, IRLP, HDSEL, NACK, SCEN, RTSE, CTSE, CTSIE; the F4's ONEBIT (RM0090 30.6.6) */
 
 /* RM0008 Table 78: DMA1 channels of the USARTs' TX and RX requests */
 static const unsigned dma_tx_ch[4] = { 0, 4, 7, 2 }, dma_rx_ch[4] = { 0, 5, 6, 3 };
@@ -59,7 +60,7 @@ static uint64_t frame_cycles(const stm32_usart_t *u)
 {
     static const unsigned stop_half[4] = { 2, 1, 4, 3 }; /* STOP 00: 1, 01: 0.5, 10: 2, 11: 1.5 bits */
     unsigned half_bits = 2 * (1 + ((u->cr1 & CR1_M) ? 9 : 8)) + stop_half[(u->cr2 >> CR2_STOP_SHIFT) & 3u];
-    uint32_t pclk = u->index == 1 ? u->clk->pclk2 : u->clk->pclk1;
+    uint32_t pclk = u->apb == 2 ? u->clk->pclk2 : u->clk->pclk1;
     uint32_t brr = u->brr & 0xFFFFu;
     if (brr == 0) return MMIO_NEVER;
     return stm32_half_ticks_to_cycles((uint64_t)half_bits * brr, u->clk->hclk, pclk);
@@ -73,7 +74,7 @@ static void update_lines(stm32_usart_t *u)
            || ((sr & SR_PE) && (c1 & CR1_PEIE)) || ((sr & SR_ORE) && (u->cr3 & CR3_EIE) && (u->cr3 & CR3_DMAR));
     if (lv != u->irq_level) {
         u->irq_level = lv;
-        if (u->irq.set) u->irq.set(u->irq.ctx, STM32_USART_IRQ(u->index), lv);
+        if (u->irq.set) u->irq.set(u->irq.ctx, u->irq_n, lv);
     }
     bool tx = (sr & SR_TXE) && (u->cr3 & CR3_DMAT), rx = (sr & SR_RXNE) && (u->cr3 & CR3_DMAR);
     if (tx != u->tx_req) {
@@ -271,9 +272,12 @@ void stm32_usart_init(stm32_usart_t *u, unsigned index, const mmio_clocks_t *clk
     u->clk = clk;
     u->irq = irq;
     u->dma = dma;
-    u->index = index >= 1 && index <= 3 ? index : 1;
-    u->dma_tx = dma_tx_ch[u->index];
-    u->dma_rx = dma_rx_ch[u->index];
+    u->index = index >= 1 && index <= 6 ? index : 1;
+    unsigned f1 = u->index <= 3 ? u->index : 1; /* the F1's USART1-3; the F4 sets UART4/5, USART6's after */
+    u->irq_n = STM32_USART_IRQ(f1);
+    u->apb = u->index == 1 || u->index == 6 ? 2 : 1;
+    u->dma_tx = dma_tx_ch[f1];
+    u->dma_rx = dma_rx_ch[f1];
     u->sink = sink;
     u->sink_ctx = sink_ctx;
     usart_reset(u);

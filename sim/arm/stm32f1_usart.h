@@ -25,8 +25,10 @@ typedef struct {
     const mmio_clocks_t *clk;
     mmio_irq_t irq;
     mmio_dma_req_t dma;
-    unsigned index;                 /* 1..3: USART1 on PCLK2, USART2/3 on PCLK1 */
-    unsigned dma_tx, dma_rx;        /* DMA1 channels (RM0008 Table 78) */
+    unsigned index;                 /* 1..3: USART1 on PCLK2, USART2/3 on PCLK1; the F4's 4..6: UART4/5, USART6 */
+    unsigned irq_n;                 /* its NVIC line (STM32_USART_IRQ; the F4's UART4/5, USART6 their own) */
+    unsigned apb;                   /* 2: clocked by PCLK2 (USART1, the F4's USART6), 1: PCLK1 */
+    unsigned dma_tx, dma_rx;        /* the request numbers: DMA1 channels (RM0008 Table 78) or stm32f4_dreq_t */
     stm32_usart_sink_fn sink;
     void *sink_ctx;
     /* registers (RM0008 27.6) */
@@ -49,7 +51,9 @@ typedef struct {
 
 extern const mmio_ops_t stm32_usart_ops;
 
-/* index 1..3 (IRQ, clock and DMA channels follow from it). */
+/* index 1..6 (the F1's 1..3: IRQ, clock and DMA channels follow from it;
+ * the F4 SoC sets irq_n, dma_tx and dma_rx after, UART4/5 and USART6's
+ * from RM0090 table 61 and tables 42/43). */
 void stm32_usart_init(stm32_usart_t *u, unsigned index, const mmio_clocks_t *clk, mmio_irq_t irq,
                       mmio_dma_req_t dma, stm32_usart_sink_fn sink, void *sink_ctx);
 /* The host sends a byte at core cycle now (>= the last advance). false: the

@@ -28,6 +28,7 @@
 #include "arm/stm32f4_dma.h"
 
 #include "arm/stm32f1_clk.h"
+#include "arm/stm32f1_dma.h"
 #include "arm/stm32f4_reg.h"
 
 enum { LISR = 0x00, HISR = 0x04, LIFCR = 0x08, HIFCR = 0x0C, S0 = 0x10, S_STRIDE = 0x18, S_END = 0x10 + 8 * 0x18 };
@@ -183,18 +184,14 @@ static unsigned size_bytes(uint32_t cr, unsigned shift)
     return s == 0 ? 1 : s == 1 ? 2 : 4; /* 11 reserved: taken as 32 bits */
 }
 
-/* One transfer of stream i; false: a bus error. The peripheral port is
+/* One transfer of stream i (stm32_dma_move, the F1's step); false: a bus error. The peripheral port is
  * PAR (the source in memory-to-memory mode), the memory port M0AR. */
 static bool transfer(stm32f4_dma_t *d, unsigned i)
 {
-    stm32f4_dma_stream_t *s = &d->s[i];
+    const stm32f4_dma_stream_t *s = &d->s[i];
     unsigned sz = size_bytes(s->cr, CR_PSIZE_SHIFT); /* direct mode: MSIZE = PSIZE (10.5.5) */
-    uint32_t pa = s->par + ((s->cr & CR_PINC) ? s->done * sz : 0);
-    uint32_t ma = s->m0ar + ((s->cr & CR_MINC) ? s->done * sz : 0);
-    bool m2p = dir(s) == DIR_M2P;
-    uint32_t src = m2p ? ma : pa, dst = m2p ? pa : ma, v = 0;
-    if (!d->bus.read || !d->bus.read(d->bus.ctx, src, sz, &v)) return false;
-    return d->bus.write && d->bus.write(d->bus.ctx, dst, sz, v);
+    stm32_dma_item_t it = { s->par, s->m0ar, sz, sz, (s->cr & CR_PINC) != 0, (s->cr & CR_MINC) != 0, dir(s) == DIR_M2P };
+    return stm32_dma_move(d->bus, &it, s->done);
 }
 
 static void serve(stm32f4_dma_t *d, unsigned i)
@@ -206,15 +203,9 @@ static void serve(stm32f4_dma_t *d, unsigned i)
         set_flags(d, i, F_TEIF);
         return;
     }
-    s->done++;
-    s->ndtr--;
-    unsigned f = 0;
-    if (2 * s->done >= s->reload && 2 * (s->done - 1) < s->reload) f |= F_HTIF;
-    if (s->ndtr == 0) {
-        f |= F_TCIF;
-        if (s->cr & CR_CIRC) { s->ndtr = s->reload; s->done = 0; }
-        else s->cr &= ~CR_EN; /* the stream ends (10.3.8) */
-    }
+    unsigned k = stm32_dma_count(&s->ndtr, &s->done, s->reload, (s->cr & CR_CIRC) != 0);
+    unsigned f = ((k & STM32_DMA_HT) ? F_HTIF : 0u) | ((k & STM32_DMA_TC) ? F_TCIF : 0u);
+    if ((k & STM32_DMA_TC) && !(s->cr & CR_CIRC)) s->cr &= ~CR_EN; /* the stream ends (10.3.8) */
     if (f) set_flags(d, i, f);
 }
 

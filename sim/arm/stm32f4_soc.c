@@ -2,7 +2,8 @@
  * Addresses: RM0090 rev 19 2.3 table 1; enable bits: 6.3.10 AHB1ENR,
  * 6.3.13 APB1ENR, 6.3.14 APB2ENR; interrupt lines: table 61 (in each
  * model); DMA requests: tables 42/43 (stm32f4_dma.c); ADC triggers:
- * tables 69/70 (stm32f4_tim.c). */
+ * tables 69/70 (stm32f4_tim.c); the timers' internal trigger connections: 17.4.3, 18.4.3, 19.4.2
+ * (stm32f4_tim_itr). */
 #include "arm/stm32f4_soc.h"
 
 #include <stddef.h>
@@ -103,7 +104,8 @@ static void soc_dreq(void *ctx, unsigned req, bool level)
     stm32f4_dma_request(&s->dma[1], req, level);
 }
 
-/* A timer's TRGO or CCx edge to the ADCs whose EXTSEL (table 69) or JEXTSEL (table 70) codes name it. */
+/* A timer's TRGO or CCx edge to the ADCs whose EXTSEL (table 69) or JEXTSEL (table 70) codes name it,
+ * and a TRGO to the timers whose ITRx it is (stm32f4_tim_itr: their slave mode acts if SMCR TS selects it). */
 static void soc_trigger(void *ctx, unsigned source, int rising, uint64_t now)
 {
     stm32f4_soc_t *s = ctx;
@@ -112,21 +114,37 @@ static void soc_trigger(void *ctx, unsigned source, int rising, uint64_t now)
         if (reg >= 0) stm32f4_adc_ext_trigger(&s->adc[i], false, (unsigned)reg, rising != 0, now);
         if (inj >= 0) stm32f4_adc_ext_trigger(&s->adc[i], true, (unsigned)inj, rising != 0, now);
     }
+    stm32_tim_links_trgo(&s->links, source, rising, now);
 }
 
 /* The timers' compare and update events the ADCs' external triggers take now (EXTEN/JEXTEN on, the
- * EXTSEL/JEXTSEL codes of tables 69/70): only those become the timers' events (the others cost nothing). */
-static void adc_trigger_wants(stm32f4_soc_t *s)
+ * EXTSEL/JEXTSEL codes of tables 69/70) and the TRGOs a slave timer takes: only those become the timers'
+ * events (the others cost nothing). */
+static void trigger_wants(stm32f4_soc_t *s)
 {
+    uint32_t m[STM32F4_TIM_COUNT] = { 0 };
     for (unsigned i = 0; i < STM32F4_TIM_COUNT; i++) {
-        uint32_t m = 0;
         for (unsigned a = 0; a < STM32F4_SOC_ADCS; a++) {
             uint32_t cr2 = s->adc[a].cr2;
             unsigned ext = (cr2 >> 28) & 3u ? (cr2 >> 24) & 0xFu : 15u, jext = (cr2 >> 20) & 3u ? (cr2 >> 16) & 0xFu : 15u;
-            m |= stm32f4_tim_adc_wants(stm32f4_tim[i].d.n, ext, jext);
+            m[i] |= stm32f4_tim_adc_wants(stm32f4_tim[i].d.n, ext, jext);
         }
-        stm32_tim_trigger_want(&s->tim[i], m);
     }
+    stm32_tim_links_wants(&s->links, m);
+    for (unsigned i = 0; i < STM32F4_TIM_COUNT; i++) stm32_tim_trigger_want(&s->tim[i], m[i]);
+}
+
+/* A timer's register write, then the TRGOs the slaves take again (SMCR may have changed); a slave now
+ * gated by a TRGO takes its level (MMS enable or OCxREF: a level, not only edges). */
+static mmio_status_t soc_tim_write(void *self, uint32_t off, unsigned size, uint32_t v)
+{
+    stm32f1_tim_t *t = self;
+    unsigned i = t->n - 1u;
+    stm32f4_soc_t *s = (stm32f4_soc_t *)(void *)((char *)(t - i) - offsetof(stm32f4_soc_t, tim));
+    mmio_status_t st = stm32_tim_write(self, off, size, v);
+    trigger_wants(s);
+    stm32_tim_links_written(&s->links, t);
+    return st;
 }
 
 /* An ADC's register write, then the timers' wanted events again (CR2's triggers may have changed). */
@@ -135,7 +153,7 @@ static mmio_status_t soc_adc_write(void *self, uint32_t off, unsigned size, uint
     stm32f4_adc_t *a = self;
     stm32f4_soc_t *s = (stm32f4_soc_t *)(void *)((char *)(a - (a->index - 1u)) - offsetof(stm32f4_soc_t, adc));
     mmio_status_t st = stm32f4_adc_ops.write(self, off, size, v);
-    adc_trigger_wants(s);
+    trigger_wants(s);
     return st;
 }
 
@@ -187,12 +205,16 @@ static void init_analog_timers(stm32f4_soc_t *s, mmio_irq_t irq, mmio_dma_req_t 
     for (unsigned i = 0; i < STM32F4_TIM_COUNT; i++) {
         const stm32f4_tim_inst_t *t = &stm32f4_tim[i];
         stm32f4_tim_init(&s->tim[i], i, clk, irq, dreq, trig);
-        place(s, t->base, STM32F4_TIM_SIZE, &stm32f4_tim_ops[i], &s->tim[i], t->d.apb == 2 ? APB2ENR : APB1ENR, t->enable);
+        s->tim_ops[i] = stm32f4_tim_ops[i];
+        s->tim_ops[i].write = soc_tim_write;
+        place(s, t->base, STM32F4_TIM_SIZE, &s->tim_ops[i], &s->tim[i], t->d.apb == 2 ? APB2ENR : APB1ENR, t->enable);
     }
-    adc_trigger_wants(s);
+    s->links = (stm32_tim_links_t){ s->tim, STM32F4_TIM_COUNT, stm32f4_tim_itr };
+    stm32_tim_links_init(&s->links);
+    trigger_wants(s);
 }
 
-static void init_serial(stm32f4_soc_t *s, mmio_irq_t irq, mmio_dma_req_t dreq)
+static void init_i2c(stm32f4_soc_t *s, mmio_irq_t irq, mmio_dma_req_t dreq)
 {
     const mmio_clocks_t *clk = stm32f4_rcc_clocks(&s->rcc);
     static const unsigned i2c_dreq[STM32F4_SOC_I2CS][2] = {
@@ -202,17 +224,44 @@ static void init_serial(stm32f4_soc_t *s, mmio_irq_t irq, mmio_dma_req_t dreq)
         stm32_i2c_init(&s->i2c[n - 1], n, clk, irq, dreq, i2c_dreq[n - 1][0], i2c_dreq[n - 1][1]);
         place(s, STM32F4_I2C_BASE(n), STM32_I2C_SIZE, &stm32_i2c_ops, &s->i2c[n - 1], APB1ENR, 1u << (20 + n));
     }
-    /* USART1 APB2ENR bit 4, USART2/3 APB1ENR bits 17/18; DMA requests of tables 42/43 */
-    static const uint32_t base[STM32F4_SOC_USARTS] = { STM32F4_USART1_BASE, STM32_USART2_BASE, STM32_USART3_BASE };
-    static const uint32_t enr[STM32F4_SOC_USARTS][2] = { { APB2ENR, 1u << 4 }, { APB1ENR, 1u << 17 }, { APB1ENR, 1u << 18 } };
-    static const unsigned usart_dreq[STM32F4_SOC_USARTS][2] = {
-        { STM32F4_DREQ_USART1_TX, STM32F4_DREQ_USART1_RX }, { STM32F4_DREQ_USART2_TX, STM32F4_DREQ_USART2_RX },
-        { STM32F4_DREQ_USART3_TX, STM32F4_DREQ_USART3_RX } };
+}
+
+/* USART1-3, UART4/5, USART6 (the F1 USART model: the same registers, RM0090 30.6): bases table 1,
+ * enable bits 6.3.13 APB1ENR (USART2/3, UART4/5: bits 17-20) and 6.3.14 APB2ENR (USART1 bit 4, USART6
+ * bit 5), NVIC lines table 61, DMA requests tables 42/43 */
+static void init_usart(stm32f4_soc_t *s, mmio_irq_t irq, mmio_dma_req_t dreq)
+{
+    static const struct { uint32_t base, enr, bit; unsigned irq, apb, tx, rx; } u6[STM32F4_SOC_USARTS] = {
+        { STM32F4_USART1_BASE, APB2ENR, 1u << 4, 37, 2, STM32F4_DREQ_USART1_TX, STM32F4_DREQ_USART1_RX },
+        { STM32_USART2_BASE, APB1ENR, 1u << 17, 38, 1, STM32F4_DREQ_USART2_TX, STM32F4_DREQ_USART2_RX },
+        { STM32_USART3_BASE, APB1ENR, 1u << 18, 39, 1, STM32F4_DREQ_USART3_TX, STM32F4_DREQ_USART3_RX },
+        { STM32F4_UART4_BASE, APB1ENR, 1u << 19, 52, 1, STM32F4_DREQ_UART4_TX, STM32F4_DREQ_UART4_RX },
+        { STM32F4_UART5_BASE, APB1ENR, 1u << 20, 53, 1, STM32F4_DREQ_UART5_TX, STM32F4_DREQ_UART5_RX },
+        { STM32F4_USART6_BASE, APB2ENR, 1u << 5, 71, 2, STM32F4_DREQ_USART6_TX, STM32F4_DREQ_USART6_RX },
+    };
     for (unsigned i = 0; i < STM32F4_SOC_USARTS; i++) {
         stm32_usart_t *u = &s->usart[i];
-        stm32_usart_init(u, i + 1, clk, irq, dreq, s->io.usart_sink, s->io.usart_ctx);
-        u->dma_tx = usart_dreq[i][0], u->dma_rx = usart_dreq[i][1];
-        place(s, base[i], STM32_USART_SIZE, &stm32_usart_ops, u, enr[i][0], enr[i][1]);
+        stm32_usart_init(u, i + 1, stm32f4_rcc_clocks(&s->rcc), irq, dreq, s->io.usart_sink, s->io.usart_ctx);
+        u->irq_n = u6[i].irq, u->apb = u6[i].apb, u->dma_tx = u6[i].tx, u->dma_rx = u6[i].rx;
+        place(s, u6[i].base, STM32_USART_SIZE, &stm32_usart_ops, u, u6[i].enr, u6[i].bit);
+    }
+}
+
+/* SPI1-3 (the F1 SPI model: the same registers in SPI mode, RM0090 28.5): bases table 1, SPI1 APB2ENR
+ * bit 12 on PCLK2, SPI2/3 APB1ENR bits 14/15 on PCLK1 (6.3.13-6.3.14), NVIC lines 35, 36, 51 (table 61),
+ * DMA requests tables 42/43 (SPI1 on DMA2, SPI2/3 on DMA1); slaves attached by the board */
+static void init_spi(stm32f4_soc_t *s, mmio_irq_t irq, mmio_dma_req_t dreq)
+{
+    static const struct { uint32_t base, enr, bit; unsigned irq, tx, rx; } sp[STM32F4_SOC_SPIS] = {
+        { STM32_SPI1_BASE, APB2ENR, 1u << 12, 35, STM32F4_DREQ_SPI1_TX, STM32F4_DREQ_SPI1_RX },
+        { STM32_SPI2_BASE, APB1ENR, 1u << 14, 36, STM32F4_DREQ_SPI2_TX, STM32F4_DREQ_SPI2_RX },
+        { STM32F4_SPI3_BASE, APB1ENR, 1u << 15, 51, STM32F4_DREQ_SPI3_TX, STM32F4_DREQ_SPI3_RX },
+    };
+    for (unsigned i = 0; i < STM32F4_SOC_SPIS; i++) {
+        stm32_spi_t *p = &s->spi[i];
+        stm32_spi_init(p, i + 1, stm32f4_rcc_clocks(&s->rcc), irq, dreq, (stm32_spi_slave_t){ NULL, NULL });
+        p->irq_n = sp[i].irq, p->dma_tx = sp[i].tx, p->dma_rx = sp[i].rx;
+        place(s, sp[i].base, STM32_SPI_SIZE, &stm32_spi_ops, p, sp[i].enr, sp[i].bit);
     }
 }
 
@@ -234,7 +283,9 @@ int stm32f4_soc_init(stm32f4_soc_t *soc, armcore_t **core, const armcore_cfg_t *
     mmio_dma_req_t dreq = { soc_dreq, soc };
     init_system(soc, hse_hz, irq, bus);
     init_analog_timers(soc, irq, dreq);
-    init_serial(soc, irq, dreq);
+    init_i2c(soc, irq, dreq);
+    init_usart(soc, irq, dreq);
+    init_spi(soc, irq, dreq);
     if (cfg->image->mcu->flash_bytes != soc->flash.size || cfg->image->mcu->core != ARMCORE_M4)
         return snprintf(err, errn, "mmsim: the STM32F405 SoC runs stm32f405xg images only"), -1;
     if (soc->overflow) return snprintf(err, errn, "mmsim: the STM32F405 SoC has more regions than its table"), -1;
@@ -258,6 +309,7 @@ void stm32f4_soc_free(stm32f4_soc_t *soc)
 stm32f4_gpio_t *stm32f4_soc_gpio(stm32f4_soc_t *soc, unsigned port) { return port < STM32F4_SOC_PORTS ? &soc->gpio[port] : NULL; }
 stm32_i2c_t *stm32f4_soc_i2c(stm32f4_soc_t *soc, unsigned n) { return n >= 1 && n <= STM32F4_SOC_I2CS ? &soc->i2c[n - 1] : NULL; }
 stm32_usart_t *stm32f4_soc_usart(stm32f4_soc_t *soc, unsigned n) { return n >= 1 && n <= STM32F4_SOC_USARTS ? &soc->usart[n - 1] : NULL; }
+stm32_spi_t *stm32f4_soc_spi(stm32f4_soc_t *soc, unsigned n) { return n >= 1 && n <= STM32F4_SOC_SPIS ? &soc->spi[n - 1] : NULL; }
 stm32f1_tim_t *stm32f4_soc_tim(stm32f4_soc_t *soc, unsigned i) { return i < STM32F4_TIM_COUNT ? &soc->tim[i] : NULL; }
 const mmio_clocks_t *stm32f4_soc_clocks(const stm32f4_soc_t *soc) { return stm32f4_rcc_clocks(&soc->rcc); }
 

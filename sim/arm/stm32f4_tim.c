@@ -56,6 +56,14 @@ const uint16_t stm32f4_tim_extsel[2][16] = {
       T(4, CC3), T(4, TRGO), T(5, CC4), T(5, TRGO), T(8, CC2), T(8, CC3), T(8, CC4), STM32F4_TIM_EXTI },
 };
 
+/* RM0090 17.4.3 (TIM1: TIM5, TIM2, TIM3, TIM4; TIM8: TIM1, TIM2, TIM4, TIM5), 18.4.3 (TIM2: TIM1, TIM8
+ * (ITR1 remappable to the OTG SOFs by TIM2_OR, not modeled), TIM3, TIM4; TIM3: TIM1, TIM2, TIM5, TIM4; TIM4:
+ * TIM1, TIM2, TIM3, TIM8; TIM5: TIM2, TIM3, TIM4, TIM8), 19.4.2 (TIM9: TIM2, TIM3; TIM12: TIM4, TIM5) */
+const uint8_t stm32f4_tim_itr[STM32F4_TIM_COUNT][4] = {
+    { 5, 2, 3, 4 }, { 1, 8, 3, 4 }, { 1, 2, 5, 4 }, { 1, 2, 3, 8 }, { 2, 3, 4, 8 }, { 0 }, { 0 },
+    { 1, 2, 4, 5 }, { 2, 3, 0, 0 }, { 0 }, { 0 }, { 4, 5, 0, 0 }, { 0 }, { 0 },
+};
+
 void stm32f4_tim_init(stm32f1_tim_t *t, unsigned i, const mmio_clocks_t *clk, mmio_irq_t irq, mmio_dma_req_t dma,
                       stm32_tim_trigger_t trig)
 {

@@ -47,6 +47,13 @@ extern const mmio_ops_t stm32f4_tim_ops[STM32F4_TIM_COUNT];
 #define STM32F4_TIM_EXTI 0xFFFFu
 extern const uint16_t stm32f4_tim_extsel[2][16];
 
+/* The internal trigger connections (RM0090 rev 19 17.4.3 TIM1/TIM8, 18.4.3
+ * TIM2-5, 19.4.2 TIM9/TIM12 SMCR: the tables "TIMx internal trigger
+ * connection"): stm32f4_tim_itr[i][x] is the timer n whose TRGO reaches
+ * instance i's ITRx, 0: none (no SMCR, or TIM9/12's ITR2/3, which are
+ * TIM10/11/13/14's OC1 and not routed). */
+extern const uint8_t stm32f4_tim_itr[STM32F4_TIM_COUNT][4];
+
 /* Power-on for instance i (STM32F4_TIMn). */
 void stm32f4_tim_init(stm32f1_tim_t *t, unsigned i, const mmio_clocks_t *clk, mmio_irq_t irq, mmio_dma_req_t dma,
                       stm32_tim_trigger_t trig);

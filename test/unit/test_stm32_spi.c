@@ -126,7 +126,8 @@ static void test_interrupt(void **state)
 
 /* TXDMAEN/RXDMAEN: SPI2's requests on DMA1 channels 5 (TX) and 4 (RX) (RM0008 Table 78). */
 static bool req[8];
-static void dma_req(void *ctx, unsigned ch, bool level) { req[ch] = level; }
+static unsigned rises[8];
+static void dma_req(void *ctx, unsigned ch, bool level) { rises[ch] += level && !req[ch]; req[ch] = level; }
 
 static void test_dma_requests(void **state)
 {
@@ -137,7 +138,9 @@ static void test_dma_requests(void **state)
     wr(CR2, 3u, 0); /* RXDMAEN, TXDMAEN */
     assert_true(req[5]);
     assert_false(req[4]);
+    unsigned r0 = rises[5];
     wr(DR, 0xA5, 0);
+    assert_int_equal(rises[5], r0 + 1); /* TXE fell at the write and rose as the shifter took it: a new request */
     wr(DR, 0x5A, 0);
     assert_false(req[5]); /* TX buffer full */
     stm32_spi_ops.advance(&spi, 32);
@@ -163,6 +166,7 @@ static void test_mode_fault_and_unmodeled(void **state)
     assert_int_equal(stm32_spi_ops.write(&spi, CR1, 4, SSM | SSI | SPE), MMIO_UNMODELED); /* slave */
     uint32_t v;
     assert_int_equal(stm32_spi_ops.read(&spi, 0x1C, 4, &v), MMIO_UNMODELED); /* I2SCFGR */
+    assert_int_equal(stm32_spi_ops.write(&spi, CR2, 4, 1u << 4), MMIO_UNMODELED); /* FRF: the F4's TI mode */
 }
 
 int main(void)

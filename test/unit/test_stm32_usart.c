@@ -151,6 +151,8 @@ static void test_unmodeled(void **state)
     uint32_t v;
     assert_int_equal(stm32_usart_ops.write(&u, CR1, 4, UE | PCE), MMIO_UNMODELED);
     assert_int_equal(stm32_usart_ops.write(&u, CR3, 4, 1u << 8), MMIO_UNMODELED); /* RTSE */
+    assert_int_equal(stm32_usart_ops.write(&u, CR1, 4, UE | 1u << 15), MMIO_UNMODELED); /* the F4's OVER8 */
+    assert_int_equal(stm32_usart_ops.write(&u, CR3, 4, 1u << 11), MMIO_UNMODELED); /* the F4's ONEBIT */
     assert_int_equal(stm32_usart_ops.read(&u, 0x1C, 4, &v), MMIO_UNMODELED);
 }
 

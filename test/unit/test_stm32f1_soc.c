@@ -100,7 +100,14 @@ static void test_soc_peripherals(void **state)
     assert_int_equal(r->soc->irq_count[28], 3);         /* on NVIC line 28 (RM0008 table 63) */
     assert_string_equal(r->con.out, "soc ok\n");       /* USART3 through DMA1 channel 2 */
     assert_true(mb.v[5] & (1u << 5));                   /* TCIF2 */
-    /* FLASH: EOP after programming; PGERR over a written half-word, which keeps its value; erased; programmed */
+    /* TIM3's update TRGO: ADC2's conversions (EXTSEL 100) and TIM4's counts through ITR2 (external clock
+     * mode 1), one each per update: ten counts, ten conversions of the 1.65 V */
+    assert_int_equal(mb.v[11], 10);
+    assert_true(mb.v[12] >= 9 && mb.v[12] <= 10);
+    assert_true(mb.v[13] >= 2047 && mb.v[13] <= 2048);
+    assert_int_equal(r->soc->tim[2].trig_want, 1u << STM32_TIM_TRGO); /* TIM3's TRGO taken, nothing else */
+    assert_int_equal(r->soc->tim[0].trig_want, 0);
+        /* FLASH: EOP after programming; PGERR over a written half-word, which keeps its value; erased; programmed */
     assert_true(mb.v[6] & (1u << 5));
     assert_true(mb.v[7] & (1u << 2));
     assert_int_equal(mb.v[8], 0x1234);

@@ -38,6 +38,7 @@ typedef struct {
     stm32f4_soc_t soc;
     armcore_t *core;
     mpu6500_t mpu;
+    mpu6500_t gyro;      /* the MPU-6500 on SPI1, nCS on PA4 */
     vl53l0x_t tof;
     pin_ev_t pins[MAX_PIN_EVENTS];
     int npins;
@@ -56,6 +57,7 @@ static double volts(void *ctx, unsigned ch, uint64_t cycle)
 static void on_pin(void *ctx, unsigned port, unsigned pin, int level)
 {
     rig_t *r = ctx;
+    if (port == 0 && pin == SPI_CS_PIN) mpu6500_select(&r->gyro, level != 0);
     /* port B changes come from DMA2's transfers: the cycle the controller is at */
     if (r->npins < MAX_PIN_EVENTS) r->pins[r->npins++] = (pin_ev_t){ port, pin, level, r->soc.dma[1].now };
 }
@@ -82,6 +84,8 @@ static rig_t *rig_new(unsigned scenario)
     const mmio_clocks_t *clk = stm32f4_soc_clocks(&r->soc);
     mpu6050_init(&r->mpu, clk, gyro_rate, r, 1, 0);
     vl53l0x_init(&r->tof, clk, tof_range, r);
+    mpu6500_init(&r->gyro, clk, gyro_rate, r, 2, 1);
+    stm32_spi_attach(stm32f4_soc_spi(&r->soc, 1), (stm32_spi_slave_t){ mpu6500_exchange, &r->gyro });
     stm32_i2c_t *i2c = stm32f4_soc_i2c(&r->soc, 1);
     assert_true(stm32_i2c_attach(i2c, (stm32_i2c_slave_t){ 0x68, mpu6500_i2c_start, mpu6500_i2c_write, mpu6500_i2c_read,
                                                             mpu6500_i2c_stop, &r->mpu }));
@@ -124,8 +128,9 @@ static mailbox_t run_until(rig_t *r, size_t field, uint32_t want, uint64_t max)
         memcpy(&v, (const char *)&mb + field, sizeof v);
         if (v >= want) return mb;
     }
-    fail_msg("scenario %u not there after %llu cycles (step %u, done %u, log %u)", mb.scenario,
-             (unsigned long long)max, mb.step, mb.done, mb.nlog);
+    fail_msg("scenario %u not there after %llu cycles (step %u, done %u, log %u; v 0x%x 0x%x 0x%x 0x%x 0x%x 0x%x)",
+             mb.scenario, (unsigned long long)max, mb.step, mb.done, mb.nlog, mb.v[0], mb.v[1], mb.v[2], mb.v[3],
+             mb.v[4], mb.v[5]);
     return mb;
 }
 
@@ -348,6 +353,92 @@ static void test_clock_gate(void **state)
     rig_free(r);
 }
 
+/* SPI1 (28.3) at PCLK2 84 MHz / 128, 8-bit frames: the MPU-6500's WHO_AM_I 0x70 (RM-MPU-6500A 4.40) by
+ * polling, two frames of 8 x 128 PCLK2 periods; then GYRO_ZOUT_H/L as HAL_SPI_TransmitReceive_DMA: DMA2
+ * stream 3 channel 3 feeds SPI1_TX, stream 2 channel 3 takes SPI1_RX (table 43), the three frames back to
+ * back, the RX stream's TC interrupt after the last (28.3.9); SR then TXE alone (no BSY, RXNE, OVR) */
+static void test_spi_dma_mpu6500(void **state)
+{
+    (void)state;
+    rig_t *r = rig_new(SC_SPI_DMA);
+    mailbox_t mb = run_done(r, 80u * 1000u * 1000u);
+    uint32_t frame = 8u * 128u * (F_CPU / 84000000u);  /* core cycles per 8-bit frame */
+    assert_int_equal(mb.v[0], 0x70);
+    assert_true(mb.v[1] >= 2u * frame && mb.v[1] < 2u * frame + 200u);
+    double want = (GYRO_RATE_RAD_S * 180.0 / M_PI + r->gyro.zro_dps) * mpu6500_lsb_per_dps(&r->gyro);
+    double tol = 6.0 * mpu6500_sigma_dps(&r->gyro) * mpu6500_lsb_per_dps(&r->gyro) + 1.0;
+    if (fabs((double)(int32_t)mb.v[2] - want) > tol) fail_msg("gyro z %d, want %.0f +- %.0f", (int32_t)mb.v[2], want, tol);
+    if (mb.v[4] < 3u * frame || mb.v[4] > 3u * frame + 300u) fail_msg("DMA transfer %u cycles, want %u", mb.v[4], 3u * frame);
+    assert_int_equal(mb.v[5], 0x2u);                   /* TXE; no BSY, RXNE, OVR */
+    assert_int_equal(mb.v[6], 0);                      /* TX NDTR done */
+    assert_int_equal(mb.v[7], 0x0C300000u);            /* at RX TC: TCIF2 HTIF2 TCIF3 HTIF3, no error (10.5.1) */
+    assert_int_equal(mb.nlog, 1);
+    assert_int_equal(r->gyro.unmodeled_count, 0);
+    assert_int_equal(r->mpu.unmodeled_count, 0);
+    no_unmodeled(r);
+    rig_free(r);
+}
+
+/* USART6 (APB2: PCLK2 84 MHz, BRR 45.5625) receives four bytes by DMA2 stream 1 channel 5 (table 43,
+ * DMAR 30.3.13): TC after the fourth frame, then USART6's IDLE interrupt (line 71, table 61) one idle frame
+ * later (30.6.1); UART4 and UART5 (APB1, 42 MHz) send, polled: "PING" one frame apart after TE's idle
+ * frame, then '5' */
+static void test_uart_rx_dma(void **state)
+{
+    (void)state;
+    rig_t *r = rig_new(SC_UART_RX_DMA);
+    run_until(r, offsetof(mailbox_t, step), 1, 40u * 1000u * 1000u);
+    stm32_usart_t *u6 = stm32f4_soc_usart(&r->soc, 6);
+    for (const char *p = "ping"; *p; p++) assert_true(stm32_usart_push(u6, (uint8_t)*p, armcore_cycles(r->core)));
+    armcore_cortexm(r->core)->attention = true;        /* the host changed a model: its next event again */
+    mailbox_t mb = run_done(r, armcore_cycles(r->core) + 20u * 1000u * 1000u);
+    uint32_t rx_frame = 10u * 729u * (F_CPU / 84000000u), tx_frame = 10u * 365u * (F_CPU / 42000000u);
+    assert_true(mb.v[1] - mb.v[0] >= 4u * rx_frame);
+    long idle = (long)(mb.v[2] - mb.v[1]) - (long)rx_frame; /* each stamped in its handler: a few cycles apart */
+    if (labs(idle) > 100)
+        fail_msg("IDLE %u cycles after TC, want %u", mb.v[2] - mb.v[1], rx_frame);
+    assert_int_equal(mb.v[3], 0);                      /* NDTR: all four moved */
+    assert_int_equal(mb.nlog, 2);
+    assert_int_equal(mb.log[0], EV('D', 'p'));
+    assert_int_equal(mb.log[1], EV('I', 0));
+    assert_int_equal(r->nbytes, 5);
+    assert_memory_equal(r->bytes, "PING5", 5);
+    for (int i = 1; i < 4; i++) assert_int_equal(r->byte_cycle[i] - r->byte_cycle[i - 1], tx_frame);
+    assert_int_equal(stm32f4_soc_gated_accesses(&r->soc), 0);
+    no_unmodeled(r);
+    rig_free(r);
+}
+
+/* Master/slave timers through the internal trigger connections (RM0090 17.4.3, 18.4.3): TIM8 gated by
+ * TIM1's enable (ITR0) counts 1 MHz only while TIM1 runs; TIM2 clocked by TIM3's update TRGO (ITR2,
+ * external clock mode 1, 18.3.14) overflows every 10 x 100 us; TIM4 started by TIM2's TRGO (ITR1, trigger
+ * mode) counts from TIM2's first update; TIM5 reset at each TIM3 update (ITR1, reset mode) */
+static void test_tim_itr(void **state)
+{
+    (void)state;
+    rig_t *r = rig_new(SC_TIM_ITR);
+    mailbox_t mb = run_done(r, 80u * 1000u * 1000u);
+    assert_int_equal(mb.v[0], 0);                      /* gated, TIM1 off */
+    if (mb.v[1] < 999u || mb.v[1] > 1001u) fail_msg("TIM8 gated count %u, want 1000", mb.v[1]);
+    assert_int_equal(mb.v[2], mb.v[1]);                /* TIM1 off again: stopped */
+    assert_true(mb.v[3] & (1u << 6));                  /* TIF */
+    uint32_t ms = F_CPU / 1000u;
+    assert_true(mb.v[5] - mb.v[4] >= ms && mb.v[5] - mb.v[4] < ms + 200u);
+    for (unsigned k = 1; k < 3; k++) {
+        long d = (long)(mb.v[5 + k] - mb.v[4 + k]) - (long)ms;
+        if (labs(d) > 50) fail_msg("TIM2 update %u: %u cycles after the previous", k, mb.v[5 + k] - mb.v[4 + k]);
+        if (mb.v[8 + k] < 1000u * k - 1u || mb.v[8 + k] > 1000u * k + 1u) fail_msg("TIM4 at update %u: %u", k, mb.v[8 + k]);
+    }
+    assert_true(mb.v[8] <= 1u);                        /* TIM4 started at TIM2's first update */
+    for (unsigned k = 0; k < 3; k++)                   /* TIM5 (84 MHz) reset by the update the interrupt follows */
+        if (mb.v[11 + k] > 200u) fail_msg("TIM5 at update %u: %u, reset mode not applied", k, mb.v[11 + k]);
+    assert_int_equal(mb.v[14] & 1u, 1);                /* TIM4's CEN set by the trigger */
+    assert_int_equal(mb.v[15], 0);
+    assert_int_equal(r->soc.tim[STM32F4_TIM3].trig_want & 1u, 1u); /* TIM3's TRGO taken (TIM2, TIM5) */
+    no_unmodeled(r);
+    rig_free(r);
+}
+
 /* The SoC is the same at any chunking (armcore.h): the ADC/DMA scenario and the emitter scenario run to
  * the same cycle in one go and in pseudo-random chunks of 1-5,000 cycles give the same SRAM and pin edges */
 static void run_chunked(rig_t *r, uint64_t end, uint32_t seed)
@@ -386,6 +477,7 @@ int main(void)
         cmocka_unit_test(test_clock_setup), cmocka_unit_test(test_adc_scan_dma), cmocka_unit_test(test_tim_dma_gpio),
         cmocka_unit_test(test_i2c_mpu6050_vl53l0x), cmocka_unit_test(test_usart_dma_tc),
         cmocka_unit_test(test_exti_syscfg), cmocka_unit_test(test_flash_sector_erase), cmocka_unit_test(test_clock_gate),
+        cmocka_unit_test(test_spi_dma_mpu6500), cmocka_unit_test(test_uart_rx_dma), cmocka_unit_test(test_tim_itr),
         cmocka_unit_test(test_chunking_same_state),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -383,7 +383,32 @@ static void test_slave_modes(void **state)
     stm32f1_tim_input(&tim, 400, 2, 0);
     assert_int_equal(rd(CNT), 0);
     assert_int_equal(rd(SR), 1u | 1u << 6); /* UIF from the update, TIF */
-    assert_int_equal(wr(SMCR, 7u), MMIO_UNMODELED); /* external clock mode 1 */
+    assert_int_equal(wr(SMCR, 7u), MMIO_UNMODELED); /* external clock mode 1 from an unrouted ITR0 */
+
+    /* external clock mode 1 (18.3.14) from ITR2: each rising TRGI edge a tick through PSC, time alone nothing */
+    init(STM32F4_TIM3);
+    stm32_tim_route_itr(&tim);
+    assert_int_equal(wr(SMCR, 7u | 5u << 4), MMIO_UNMODELED); /* from TI1FP1: not modeled */
+    assert_int_equal(wr(SMCR, 7u | 2u << 4), MMIO_OK);
+    wr(PSC, 1);                                          /* two edges a count */
+    wr(ARR, 2);
+    wr(EGR, 1);
+    wr(SR, 0);
+    wr(DIER, 1);
+    wr(CR1, 1);
+    at(5000);
+    assert_int_equal(rd(CNT), 0);
+    for (unsigned k = 1; k <= 5; k++) {
+        stm32_tim_itr(&tim, 2, 1, 5000 + 100 * k);
+        stm32_tim_itr(&tim, 2, 0, 5050 + 100 * k);
+    }
+    assert_int_equal(rd(CNT), 2);
+    assert_int_equal(rd(SR) & 1u, 0);
+    stm32_tim_itr(&tim, 2, 1, 5600);                     /* the sixth edge: the third count, the overflow */
+    assert_int_equal(rd(CNT), 0);
+    assert_int_equal(rd(SR) & 0x41u, 0x41u);            /* UIF, TIF (CCxIF too: CCRx 0 matched at the wrap) */
+    assert_true(irq_level[29]);
+    assert_int_equal(next(), MMIO_NEVER);
 }
 
 int main(void)

@@ -5,8 +5,9 @@
  * 8 MHz crystal, a gated peripheral read with its clock off, GPIO out and
  * in, ADC2's regular conversion of a voltage the host gives, TIM3's PWM,
  * TIM2's update interrupt through the NVIC (vector table moved to SRAM),
- * USART3 sending through DMA1 channel 2, the FLASH controller programming
- * and erasing a page. */
+ * USART3 sending through DMA1 channel 2, TIM3's update TRGO triggering
+ * ADC2 (EXTSEL) and clocking TIM4 through ITR2 (external clock mode 1), the
+ * FLASH controller programming and erasing a page. */
 #include <stdint.h>
 
 #include "armtest.h"
@@ -123,6 +124,25 @@ static void usart_dma_step(void)
     mb.v[5] = DMA1_ISR;
 }
 
+/* TIM3 (24 kHz) as a master: MMS update (RM0008 15.4.2); its TRGO starts ADC2's regular conversion
+ * (EXTSEL 100, 11.12.3) and clocks TIM4 in external clock mode 1 from ITR2 (TIM4_SMCR SMS 111 TS 010,
+ * 15.3.14, 15.4.3 table "TIMx internal trigger connection"): one conversion and one count per update */
+static void trigger_step(void)
+{
+    RCC_APB1ENR |= 1u << 2;                      /* TIM4EN */
+    TIM(TIM4_BASE, 0x08) = 7u | 2u << 4;         /* SMCR: external clock mode 1, ITR2 = TIM3 */
+    TIM(TIM4_BASE, 0x00) = 1u;                   /* CEN */
+    ADC2(0x08) = (ADC2(0x08) & ~(7u << 17)) | 4u << 17 | 1u << 20; /* EXTSEL TIM3 TRGO, EXTTRIG */
+    (void)ADC2(0x4C);                            /* EOC cleared */
+    TIM(TIM3_BASE, 0x04) = 2u << 4;              /* CR2: MMS update */
+    uint32_t conversions = 0;
+    while (TIM(TIM4_BASE, 0x24) < 10u)
+        if (ADC2(0x00) & 2u) { conversions++; mb.v[13] = ADC2(0x4C); }
+    TIM(TIM3_BASE, 0x04) = 0;
+    mb.v[11] = TIM(TIM4_BASE, 0x24);
+    mb.v[12] = conversions;
+}
+
 static void flash_wait(void) { while (FLASH_SR & 1u) {} }
 
 static void flash_step(void)
@@ -158,6 +178,7 @@ int main(void)
     adc_step();
     tim_steps();
     usart_dma_step();
+    trigger_step();
     flash_step();
     mb.done = 1;
     for (;;) __asm volatile("wfi");

@@ -332,13 +332,209 @@ static void sc_gate(void)
     mb.v[2] = TIM_ARR(TIM2);
 }
 
+/* SPI1 master (28.3.3) at PCLK2 / 128 (656 kHz, mode 3) to an MPU-6500 with nCS on PA4: WHO_AM_I by polling
+ * TXE/RXNE (28.3.5), then GYRO_ZOUT_H/L as HAL_SPI_TransmitReceive_DMA does it: DMA2 stream 2 channel 3
+ * (SPI1_RX) enabled, RXDMAEN, stream 3 channel 3 (SPI1_TX) enabled, TXDMAEN (28.3.9, table 43); the RX
+ * stream's TC interrupt ends the transfer: BSY waited for, the DMA requests off, nCS high */
+static volatile uint8_t spi_tx[3] = { 0x47u | 0x80u, 0, 0 };
+static volatile uint8_t spi_rx[3];
+
+static void spi_cs(int high) { REG(GPIO_BSRR_ADDR(0)) = high ? 1u << SPI_CS_PIN : 1u << (SPI_CS_PIN + 16); }
+
+static uint8_t spi_xfer(uint8_t b)
+{
+    while (!(SPI_SR(SPI1) & 2u)) {}                  /* TXE */
+    SPI_DR(SPI1) = b;
+    while (!(SPI_SR(SPI1) & 1u)) {}                  /* RXNE */
+    return (uint8_t)SPI_DR(SPI1);
+}
+
+static void sc_spi_dma(void)
+{
+    RCC_AHB1ENR |= 1u << 22 | 1u << 0;               /* DMA2, GPIOA */
+    RCC_APB2ENR |= 1u << 12;                         /* SPI1 */
+    spi_cs(1);
+    GPIO_MODER(0) = (GPIO_MODER(0) & ~0xFF00u) | 1u << 8 | 0xA8u << 8; /* PA4 output, PA5-7 AF */
+    GPIO_AFRL(0) = (GPIO_AFRL(0) & ~0xFFF00000u) | 0x55500000u;        /* AF5: SPI1 */
+    SPI_CR1(SPI1) = 1u << 2 | 6u << 3 | 1u << 9 | 1u << 8 | 3u;         /* MSTR, BR /128, SSM, SSI, CPOL, CPHA */
+    SPI_CR1(SPI1) |= 1u << 6;                                          /* SPE */
+    uint32_t t0 = DWT_CYCCNT;
+    spi_cs(0);
+    (void)spi_xfer(0x75u | 0x80u);                   /* WHO_AM_I, read */
+    mb.v[0] = spi_xfer(0);
+    mb.v[1] = DWT_CYCCNT - t0;
+    while (SPI_SR(SPI1) & (1u << 7)) {}              /* BSY */
+    spi_cs(1);
+    hal_delay(2);
+    DMA_SPAR(2, 2) = SPI_DR_ADDR(SPI1);
+    DMA_SM0AR(2, 2) = (uint32_t)spi_rx;
+    DMA_SNDTR(2, 2) = 3;
+    DMA_SCR(2, 2) = 3u << 25 | 1u << 10 | 1u << 4;   /* ch 3, 8-bit, MINC, P2M, TCIE */
+    DMA_SPAR(2, 3) = SPI_DR_ADDR(SPI1);
+    DMA_SM0AR(2, 3) = (uint32_t)spi_tx;
+    DMA_SNDTR(2, 3) = 3;
+    DMA_SCR(2, 3) = 3u << 25 | 1u << 10 | 1u << 6;   /* ch 3, 8-bit, MINC, M2P */
+    NVIC_ISER(IRQ_DMA2_S2 / 32) = 1u << (IRQ_DMA2_S2 % 32);
+    spi_cs(0);
+    mb.v[3] = DWT_CYCCNT;
+    DMA_SCR(2, 2) |= 1u;
+    SPI_CR2(SPI1) |= 1u << 0;                        /* RXDMAEN */
+    DMA_SCR(2, 3) |= 1u;
+    SPI_CR2(SPI1) |= 1u << 1;                        /* TXDMAEN */
+    while (mb.step < 1) {}
+    mb.v[2] = (uint32_t)(int32_t)(int16_t)(spi_rx[1] << 8 | spi_rx[2]);
+    mb.v[5] = SPI_SR(SPI1);
+    mb.v[6] = DMA_SNDTR(2, 3);
+}
+
+static void dma2_s2_irq(void)
+{
+    if (DMA_LISR(2) & (1u << 21)) {                  /* TCIF2 */
+        mb.v[4] = DWT_CYCCNT - mb.v[3];
+        mb.v[7] = DMA_LISR(2);                       /* both streams' flags at the end */
+        DMA_LIFCR(2) = 0x003D0000u;                  /* stream 2's (FEIF2, DMEIF2, TEIF2, HTIF2, TCIF2) */
+        while (SPI_SR(SPI1) & (1u << 7)) {}          /* BSY (HAL's SPI_EndRxTxTransaction) */
+        SPI_CR2(SPI1) &= ~3u;
+        spi_cs(1);
+        DMA_LIFCR(2) = 0x0F400000u;                  /* the TX stream 3's flags (FEIF3, TEIF3, HTIF3, TCIF3) */
+        logev(EV('S', spi_rx[1]));
+        mb.step++;
+    }
+}
+
+/* USART6 (APB2, 30.6) at 115226 baud receives UART_RX_LEN bytes by DMA2 stream 1 channel 5 (table 43, DMAR)
+ * with the idle line's interrupt on USART6's line 71 after them (as HAL_UARTEx_ReceiveToIdle_DMA); then
+ * UART4 (APB1) sends them upper-cased and UART5 one byte, polled */
+static volatile uint8_t uart_rx[UART_RX_LEN];
+
+static void uart_send(uint32_t u, uint8_t b)
+{
+    while (!(USART_SR(u) & (1u << 7))) {}            /* TXE */
+    USART_DR(u) = b;
+}
+
+static void sc_uart_rx_dma(void)
+{
+    RCC_AHB1ENR |= 1u << 22;                         /* DMA2 */
+    RCC_APB2ENR |= 1u << 5;                          /* USART6 */
+    RCC_APB1ENR |= 1u << 19 | 1u << 20;              /* UART4, UART5 */
+    USART_BRR(USART6) = 45u << 4 | 9u;               /* 84 MHz / (16 x 45.5625) = 115226 baud */
+    USART_CR3(USART6) = 1u << 6;                     /* DMAR */
+    DMA_SPAR(2, 1) = USART_DR_ADDR(USART6);
+    DMA_SM0AR(2, 1) = (uint32_t)uart_rx;
+    DMA_SNDTR(2, 1) = UART_RX_LEN;
+    DMA_SCR(2, 1) = 5u << 25 | 1u << 10 | 1u << 4;   /* ch 5, 8-bit, MINC, P2M, TCIE */
+    DMA_SCR(2, 1) |= 1u;
+    NVIC_ISER(IRQ_DMA2_S1 / 32) = 1u << (IRQ_DMA2_S1 % 32);
+    NVIC_ISER(IRQ_USART6 / 32) = 1u << (IRQ_USART6 % 32);
+    USART_CR1(USART6) = 1u << 13 | 1u << 2 | 1u << 4; /* UE, RE, IDLEIE */
+    mb.v[0] = DWT_CYCCNT;
+    mb.step = 1;                                     /* ready: the host sends */
+    while (mb.step < 3) {}
+    USART_BRR(UART4) = 22u << 4 | 13u;               /* 42 MHz / (16 x 22.8125) */
+    USART_BRR(UART5) = 22u << 4 | 13u;
+    USART_CR1(UART4) = 1u << 13 | 1u << 3;           /* UE, TE */
+    USART_CR1(UART5) = 1u << 13 | 1u << 3;
+    for (unsigned i = 0; i < UART_RX_LEN; i++) uart_send(UART4, (uint8_t)(uart_rx[i] - 0x20u));
+    while (!(USART_SR(UART4) & (1u << 6))) {}        /* TC */
+    uart_send(UART5, '5');
+    while (!(USART_SR(UART5) & (1u << 6))) {}
+    mb.v[3] = DMA_SNDTR(2, 1);
+}
+
+static void dma2_s1_uart_irq(void)
+{
+    if (DMA_LISR(2) & (1u << 11)) { DMA_LIFCR(2) = 1u << 11; mb.v[1] = DWT_CYCCNT; logev(EV('D', uart_rx[0])); mb.step++; }
+}
+
+static void usart6_irq(void)
+{
+    uint32_t sr = USART_SR(USART6);
+    if (sr & (1u << 4)) {                            /* IDLE: SR read, then DR read (30.6.1) */
+        (void)USART_DR(USART6);
+        mb.v[2] = DWT_CYCCNT;
+        logev(EV('I', 0));
+        mb.step++;
+    }
+}
+
+/* Timers in master/slave (RM0090 18.3.15, SMCR 18.4.3, ITRx from the internal trigger connection tables):
+ * TIM8 gated (SMS 101) by TIM1's enable (MMS 001, ITR0); TIM3's update TRGO (100 us) clocking TIM2 in
+ * external clock mode 1 (SMS 111, ITR2), TIM2's update TRGO starting TIM4 (trigger mode 110, ITR1), TIM3's
+ * update resetting TIM5 (reset mode 100, ITR1) */
+static void wait_us(uint32_t us)
+{
+    uint32_t t0 = DWT_CYCCNT;
+    while (DWT_CYCCNT - t0 < us * 168u) {}
+}
+
+static void sc_tim_itr(void)
+{
+    RCC_APB1ENR |= 0xFu;                             /* TIM2-5 */
+    RCC_APB2ENR |= 3u;                               /* TIM1, TIM8 */
+    TIM_CR2(TIM1) = 1u << 4;                         /* MMS enable: TRGO = CEN */
+    TIM_PSC(TIM8) = 168u - 1u;                       /* 1 MHz */
+    TIM_ARR(TIM8) = 0xFFFFu;
+    TIM_EGR(TIM8) = 1u;
+    TIM_SMCR(TIM8) = 5u | 0u << 4;                   /* gated, ITR0 = TIM1 */
+    TIM_CR1(TIM8) = 1u;
+    wait_us(200);
+    mb.v[0] = TIM_CNT(TIM8);                         /* TIM1 off: no count */
+    TIM_CR1(TIM1) = 1u;
+    wait_us(1000);
+    TIM_CR1(TIM1) = 0;
+    mb.v[1] = TIM_CNT(TIM8);
+    wait_us(500);
+    mb.v[2] = TIM_CNT(TIM8);
+    mb.v[3] = TIM_SR(TIM8);
+    TIM_PSC(TIM3) = 84u - 1u;                        /* 84 MHz -> 1 MHz */
+    TIM_ARR(TIM3) = 100u - 1u;                       /* 100 us */
+    TIM_EGR(TIM3) = 1u;
+    TIM_SR(TIM3) = 0;
+    TIM_CR2(TIM3) = 2u << 4;                         /* MMS update */
+    TIM_ARR(TIM2) = 10u - 1u;                        /* 10 TIM3 updates: 1 ms */
+    TIM_CR2(TIM2) = 2u << 4;
+    TIM_SMCR(TIM2) = 7u | 2u << 4;                   /* external clock mode 1, ITR2 = TIM3 */
+    TIM_DIER(TIM2) = 1u;                             /* UIE */
+    TIM_CR1(TIM2) = 1u;
+    TIM_PSC(TIM4) = 84u - 1u;
+    TIM_ARR(TIM4) = 0xFFFFu;
+    TIM_EGR(TIM4) = 1u;
+    TIM_SR(TIM4) = 0;
+    TIM_SMCR(TIM4) = 6u | 1u << 4;                   /* trigger mode, ITR1 = TIM2 */
+    TIM_ARR(TIM5) = 0xFFFFFFFFu;
+    TIM_SMCR(TIM5) = 4u | 1u << 4;                   /* reset mode, ITR1 = TIM3 */
+    TIM_CR1(TIM5) = 1u;
+    NVIC_ISER(IRQ_TIM2 / 32) = 1u << (IRQ_TIM2 % 32);
+    mb.v[4] = DWT_CYCCNT;
+    TIM_CR1(TIM3) = 1u;
+    while (mb.step < 3) {}
+    TIM_CR1(TIM3) = 0;
+    mb.v[14] = TIM_CR1(TIM4);
+    mb.v[15] = TIM_CNT(TIM2);
+}
+
+static void tim2_irq(void)
+{
+    if (TIM_SR(TIM2) & 1u) {
+        uint32_t now = DWT_CYCCNT, t4 = TIM_CNT(TIM4), t5 = TIM_CNT(TIM5);
+        TIM_SR(TIM2) = ~1u;
+        if (mb.step < 3) mb.v[5 + mb.step] = now, mb.v[8 + mb.step] = t4, mb.v[11 + mb.step] = t5;
+        logev(EV('T', 2));
+        mb.step++;
+    }
+}
+
 void irq_handler(void)
 {
     uint32_t ipsr;
     __asm volatile("mrs %0, ipsr" : "=r"(ipsr));
     switch (ipsr - 16u) {
     case IRQ_DMA2_S0: dma2_s0_irq(); break;
-    case IRQ_DMA2_S1: dma2_s1_irq(); break;
+    case IRQ_DMA2_S1: if (mb.scenario == SC_UART_RX_DMA) dma2_s1_uart_irq(); else dma2_s1_irq(); break;
+    case IRQ_DMA2_S2: dma2_s2_irq(); break;
+    case IRQ_USART6: usart6_irq(); break;
+    case IRQ_TIM2: tim2_irq(); break;
     case IRQ_USART2: usart2_irq(); break;
     case IRQ_ADC: adc_irq(); break;
     case IRQ_EXTI15_10: exti_irq(); break;
@@ -361,6 +557,9 @@ int main(void)
     case SC_EXTI: sc_exti(); break;
     case SC_FLASH_ERASE: sc_flash_erase(); break;
     case SC_GATE: sc_gate(); break;
+    case SC_SPI_DMA: sc_spi_dma(); break;
+    case SC_UART_RX_DMA: sc_uart_rx_dma(); break;
+    case SC_TIM_ITR: sc_tim_itr(); break;
     default: break;
     }
     mb.done = 1;

@@ -69,12 +69,18 @@
 /* TIM (17.4, 18.4) */
 #define TIM1 0x40010000u
 #define TIM2 0x40000000u
+#define TIM3 0x40000400u
+#define TIM4 0x40000800u
+#define TIM5 0x40000C00u
+#define TIM8 0x40010400u
 #define TIM_CR1(t) REG((t) + 0x00u)
 #define TIM_CR2(t) REG((t) + 0x04u)
+#define TIM_SMCR(t) REG((t) + 0x08u)
 #define TIM_DIER(t) REG((t) + 0x0Cu)
 #define TIM_SR(t) REG((t) + 0x10u)
 #define TIM_EGR(t) REG((t) + 0x14u)
 #define TIM_CCMR1(t) REG((t) + 0x18u)
+#define TIM_CNT(t) REG((t) + 0x24u)
 #define TIM_PSC(t) REG((t) + 0x28u)
 #define TIM_ARR(t) REG((t) + 0x2Cu)
 #define TIM_CCR1(t) REG((t) + 0x34u)
@@ -89,21 +95,37 @@
 #define I2C_TRISE(i) REG((i) + 0x20u)
 /* USART (30.6) */
 #define USART2 0x40004400u
+#define UART4 0x40004C00u
+#define UART5 0x40005000u
+#define USART6 0x40011400u
+#define USART_DR(u) REG((u) + 0x04u)
 #define USART_SR(u) REG((u) + 0x00u)
 #define USART_DR_ADDR(u) ((u) + 0x04u)
 #define USART_BRR(u) REG((u) + 0x08u)
 #define USART_CR1(u) REG((u) + 0x0Cu)
 #define USART_CR3(u) REG((u) + 0x14u)
 
-/* Interrupt numbers (table 61) */
-enum { IRQ_DMA1_S6 = 17, IRQ_ADC = 18, IRQ_USART2 = 38, IRQ_EXTI15_10 = 40, IRQ_DMA2_S0 = 56, IRQ_DMA2_S1 = 57 };
+/* SPI (28.5) */
+#define SPI1 0x40013000u
+#define SPI_CR1(s) REG((s) + 0x00u)
+#define SPI_CR2(s) REG((s) + 0x04u)
+#define SPI_SR(s) REG((s) + 0x08u)
+#define SPI_DR(s) REG((s) + 0x0Cu)
+#define SPI_DR_ADDR(s) ((s) + 0x0Cu)
 
-enum { SC_NONE, SC_CLOCK, SC_ADC_DMA, SC_TIM_DMA_GPIO, SC_I2C, SC_USART_DMA, SC_EXTI, SC_FLASH_ERASE, SC_GATE };
+/* Interrupt numbers (table 61) */
+enum { IRQ_DMA1_S6 = 17, IRQ_ADC = 18, IRQ_TIM2 = 28, IRQ_USART2 = 38, IRQ_EXTI15_10 = 40, IRQ_DMA2_S0 = 56,
+       IRQ_DMA2_S1 = 57, IRQ_DMA2_S2 = 58, IRQ_USART6 = 71 };
+
+enum { SC_NONE, SC_CLOCK, SC_ADC_DMA, SC_TIM_DMA_GPIO, SC_I2C, SC_USART_DMA, SC_EXTI, SC_FLASH_ERASE, SC_GATE,
+       SC_SPI_DMA, SC_UART_RX_DMA, SC_TIM_ITR };
 
 #define SECTOR2_ADDR 0x08008000u
 #define SECTOR3_ADDR 0x0800C000u
 #define ADC_BUF 6                   /* two scans of three channels */
 #define USART_MSG "F405 DMA\r\n"
+#define SPI_CS_PIN 4                /* PA4: the MPU-6500's nCS */
+#define UART_RX_LEN 4               /* bytes USART6 receives by DMA */
 
 #define MAILBOX_LOG 64
 typedef struct {
