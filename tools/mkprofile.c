@@ -232,18 +232,18 @@ static int motor_figures(const prof_t *p, double step_v, double want[3], char ho
     double spin_kg = (v[M_ROTOR] * v[M_GEAR] * v[M_GEAR] + 0.5 * wheel_kg * r * r) / (r * r);
     want[1] = v[M_I0] * r_circuit / step_v;
     snprintf(how[1], sizeof how[1], "[motor.left] no_load_a x (rated_v / stall_a + driver_r_ohm) = %.4g V", v[M_I0] * r_circuit);
-    if (!isnan(v[M_KM]) && !isnan(v[M_TM]) && v[M_KM] > 0) {
-        want[0] = v[M_KM] * step_v;
-        want[2] = v[M_TM] / v[M_KM] / step_v;
+    int km = !isnan(v[M_KM]) && v[M_KM] > 0, tm = km && !isnan(v[M_TM]);
+    want[0] = km ? v[M_KM] * step_v : step_v / n_ke * r_mm;
+    want[2] = tm ? v[M_TM] / v[M_KM] / step_v : (mass_kg / 2 + spin_kg) * 0.001 * r / n_eta_kt * r_circuit / step_v;
+    if (km)
         snprintf(how[0], sizeof how[0], "[%.40s] fwd_km_mm_s_v %g mm/s per V", p->measured, v[M_KM]);
+    else
+        snprintf(how[0], sizeof how[0], "[motor.left] no_load_rpm %g over rated_v less the no-load current's drop", v[M_RPM]);
+    if (tm)
         snprintf(how[2], sizeof how[2], "[%.40s] fwd_tm_s %g s / fwd_km_mm_s_v %g", p->measured, v[M_TM], v[M_KM]);
-        return 0;
-    }
-    want[0] = step_v / n_ke * r_mm;
-    want[2] = (mass_kg / 2 + spin_kg) * 0.001 * r / n_eta_kt * r_circuit / step_v;
-    snprintf(how[0], sizeof how[0], "[motor.left] no_load_rpm %g over rated_v less the no-load current's drop", v[M_RPM]);
-    snprintf(how[2], sizeof how[2], "half the %.4g kg robot and the wheel's spin %.4g kg through [motor.left]'s %.4g N*m/A, %.4g ohm",
-             mass_kg, spin_kg, n_eta_kt, r_circuit);
+    else
+        snprintf(how[2], sizeof how[2], "half the %.4g kg robot and the wheel's spin %.4g kg through [motor.left]'s %.4g N*m/A, %.4g ohm",
+                 mass_kg, spin_kg, n_eta_kt, r_circuit);
     return 0;
 }
 
