@@ -8,6 +8,11 @@
  *
  *   mkprofile ROBOT.ini OUT.h
  *
+ * The feed-forward's motor figures (mm_s_per_cmd, cmd_friction,
+ * cmd_per_mm_s2) must agree with what the robot's motor keys, or its
+ * [measured.*] characterisation, give for a command step of cmd_max_v /
+ * cmd_max (check_motor).
+ *
  * Exit codes: 0 written, 2 bad input (one line: FILE:LINE: reason),
  * 3 the output could not be written (nothing half written is left). */
 #include <math.h>
@@ -277,8 +282,9 @@ static int within(const prof_t *p, const char *key, double want, double tol_abs,
         double apart = fabs(got - want), tol = fmax(0.005 * fabs(want), tol_abs);
         if (apart <= tol) continue;
         const char *sec = s ? "firmware.avr" : "firmware";
+        int line = key_line(p->path, sec, key);
         snprintf(err, errlen, "%s:%d: %s.%s = %s, the robot's keys give %.4g (%s): %.1f %% apart, more than %s", p->path,
-                 key_line(p->path, sec, key), sec, key, t, want, how, 100 * apart / fabs(want),
+                 line ? line : p->line[s], sec, key, t, want, how, 100 * apart / fabs(want),
                  tol > 0.005 * fabs(want) ? "half a command step" : "0.5 %");
         return 2;
     }
