@@ -23,7 +23,7 @@ else
 client-mazerunner: mrc-images | deps
 	@bash tools/make/avr-sizes.sh $(MRC_ELFS)
 endif
-mrc-images: $(MRC_ELFS) $(MRC_ELFS:.elf=.hex) $(B)/clients/mazerunner-core-uk-mended.elf
+mrc-images: $(MRC_ELFS) $(MRC_ELFS:.elf=.hex)
 	@:
 # MRC_BUILD (sketch folder, image): quiet (-w) as the IDE's default.
 MRC_BUILD = $(call SKETCH_BUILD,$(1),$(2),)
@@ -36,12 +36,6 @@ $(MRC_UK_DIR)/config-robot-orion.h: $(MRC_FILES) $(MRC_UK_CONF)
 	@rm -rf $(dir $@); mkdir -p $(dir $@); cp $(filter-out %/config-robot-orion.h,$(MRC_FILES)) $(dir $@)
 	cp $(MRC_UK_CONF) $@
 $(B)/clients/mazerunner-core-uk.elf: $(MRC_UK_DIR)/config-robot-orion.h tools/arduino-build
-	$(call SKETCH_BUILD,$(dir $<),$@,$(MRC_UK_DEFS))
-# For tests only, never shipped: the -uk copy with one firmware bug mended
-# (test/firmware/mazerunner-core/mend-search-to.sh says which and why).
-$(B)/clients/mazerunner-core-uk-mended/mazerunner-core/mouse.h: $(MRC_UK_DIR)/config-robot-orion.h test/firmware/mazerunner-core/mend-search-to.sh
-	bash test/firmware/mazerunner-core/mend-search-to.sh $(MRC_UK_DIR) $(dir $@)
-$(B)/clients/mazerunner-core-uk-mended.elf: $(B)/clients/mazerunner-core-uk-mended/mazerunner-core/mouse.h tools/arduino-build
 	$(call SKETCH_BUILD,$(dir $<),$@,$(MRC_UK_DEFS))
 $(B)/clients/%.hex: $(B)/clients/%.elf
 	avr-objcopy -O ihex -R .eeprom $< $@

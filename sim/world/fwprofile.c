@@ -29,6 +29,7 @@ const fw_key_t fw_keys[] = {
     { "cmd_per_mm_s2", FW_FLOAT, FW_OWN },
     { "cmd_per_arc_mm_s2", FW_FLOAT, FW_OWN },
     { "cmd_max", FW_INT, FW_OWN },
+    { "cmd_max_v", FW_FLOAT, FW_OWN },
     { "cmd_ff_max", FW_FLOAT, FW_OWN },
     { "tof_front_y_mm", FW_FLOAT, FW_FROM_TOF_FRONT_Y },
     { "tof_side_x_mm", FW_FLOAT, FW_FROM_TOF_SIDE_X },

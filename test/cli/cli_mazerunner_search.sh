@@ -9,9 +9,13 @@
 #    no route to target": a bug of the firmware (search_to checks for a
 #    blocked cell before it checks for the target, whose cost is 0), which
 #    the simulator shows as the robot would;
-#  - the test-only mended copy (Makefile: mazerunner-core-uk-mended) also
-#    comes home to (0,0); the walls it senses and its map (W) match the maze
-#    but for the same marginal ones; a second run gives the same console and JSON.
+#  - after the ERR its panic() waits for the button, the robot at rest,
+#    nothing more on the console; the button (as a person at the robot
+#    would press it) lets search_maze go on to its search home ("Off we
+#    go...[0,0]"); a second run to the ERR gives the same console and JSON.
+#    The image is never edited: its own bug ends every search_to on its
+#    target, so no run of it comes home (after the button its drive is
+#    still off from the panic as it turns to face home, docs/TRACES.md).
 set -u
 B=${BUILD:-build}
 SHARED=${SHARED:-../shared}
@@ -108,23 +112,37 @@ assert c.replace('\r', '').rstrip().endswith('ERR: no route to target'), c[-200:
 " && ok "as shipped: reaches its goal (1,0), no front or side contact, then the same ERR" || bad "home image: $(tail -c 400 "$T/home.json")"
 python3 test/tools/mrc_check.py $M "$T/home.json" >"$T/chk" && ok "as shipped: $(tail -1 "$T/chk")" || bad "home walls: $(cat "$T/chk")"
 
-# the mended copy: there and back, then its map
-want_rc 0 "mended image: there and back" run $B/clients/mazerunner-core-uk-mended.elf --input "$HANDS; 75 send=W; 78 end"
-cp "$T/out" "$T/m1.json"
-js "$T/m1.json" "
-c = j['console'].replace('\r', ''); k = j['contacts']; p = j['final_pose']
-assert c.count('Arrived!') == 2 and 'Off we go...[0,0]' in c, c[-600:]
-assert k['front'] == 0 and k['side'] == 0 and k['rear'] == 0, k
-assert p['x_m'] < 0.18 and p['y_m'] < 0.18, p
-" && ok "mended: (7,7) and home to (0,0), no front or side contact" || bad "mended: $(tail -c 600 "$T/m1.json")"
-walls mended "$T/m1.json" 50
-want_rc 0 "mended image: the same run again" run $B/clients/mazerunner-core-uk-mended.elf --input "$HANDS; 75 send=W; 78 end"
+# the shipped EVENT_UK image after its ERR (22.24 s): panic() stops the robot and waits for the
+# button, blinking (mouse.h panic); at rest from 23 s to 23.9 s, the console ends with the ERR
+want_rc 0 "EVENT_UK image: the same search again" run $B/clients/mazerunner-core-uk.elf --input "$HANDS" --time-limit 40 \
+  --end-on "ERR: no route to target"
 python3 -c "
 import json,sys
 a, b = (json.loads(open(f).read().splitlines()[-1]) for f in sys.argv[1:3])
 for d in (a, b):
     for k in ('wall_time_s', 'real_time_factor'): d.pop(k)
-sys.exit(a != b)" "$T/m1.json" "$T/out" && ok "the same console and JSON on a second run" || bad "second run differs"
+sys.exit(a != b)" "$T/uk.json" "$T/out" && ok "the same console and JSON on a second run" || bad "second run differs"
+want_rc 0 "EVENT_UK image: 23 s, no button" run $B/clients/mazerunner-core-uk.elf --input "$HANDS; 23 end"
+cp "$T/out" "$T/p23.json"
+want_rc 0 "EVENT_UK image: 23.9 s, no button" run $B/clients/mazerunner-core-uk.elf --input "$HANDS; 23.9 end"
+python3 -c "
+import json,sys
+a, b = (json.loads(open(f).read().splitlines()[-1]) for f in sys.argv[1:3])
+for j in (a, b):
+    assert j['console'].replace('\r', '').rstrip().endswith('ERR: no route to target'), j['console'][-200:]
+    assert j['contacts']['front'] == 0 and j['contacts']['side'] == 0, j['contacts']
+pa, pb = a['final_pose'], b['final_pose']
+assert abs(pa['x_m'] - pb['x_m']) < 0.001 and abs(pa['y_m'] - pb['y_m']) < 0.001, (pa, pb)
+assert abs(pa['heading_rad'] - pb['heading_rad']) < 0.01, (pa, pb)
+" "$T/p23.json" "$T/out" >"$T/msg" 2>&1 && ok "after the ERR: waits for the button, at rest (23 s to 23.9 s within 1 mm), no contact" \
+  || bad "after the ERR: $(tail -3 "$T/msg")"
+want_rc 0 "EVENT_UK image: the button at 24 s" run $B/clients/mazerunner-core-uk.elf --input "$HANDS; 24 button; 26 end"
+js "$T/out" "
+c = j['console'].replace('\r', '')
+e = c.index('ERR: no route to target')
+assert 'Off we go...[0,0]' in c[e:] and 'Off we go...[0,0]' not in c[:e], c[e - 100:e + 200]
+" && ok "the button ends the panic: search_maze goes on to its search home (Off we go...[0,0])" \
+  || bad "button after the ERR: $(tail -c 400 "$T/out")"
 # a person at a serial monitor: --console pty (real time), B typed after the banner
 MRC_UK=$B/clients/mazerunner-core-uk.elf
 python3 test/tools/board_console.py "$MMSIM" --board ukmarsbot --avr $MRC_UK --robot robots/ukmarsbot.ini --maze $M \

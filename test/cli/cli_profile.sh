@@ -8,7 +8,8 @@
 # one line and exit 2: an unknown key (mkprofile and mmsim's robot reader
 # alike, FILE:LINE), a missing key (mkprofile, FILE:LINE of [firmware]), a
 # value of the wrong kind, a shared figure with neither a key nor the
-# physics to take it from; an output that cannot be written: exit 3, no file.
+# physics to take it from, a feed-forward figure (mm_s_per_cmd,
+# cmd_friction, cmd_per_mm_s2) that its motor keys do not give; an output that cannot be written: exit 3, no file.
 set -u
 B=${BUILD:-build}
 MMSIM=${MMSIM:-$B/mmsim}
@@ -58,6 +59,32 @@ PY
 
 # bad input: one line, exit 2
 line() { grep -n "$2" "$1" | head -1 | cut -d: -f1; }
+
+# the feed-forward's motor figures against the robot's own keys (within
+# 0.5 %; the friction within half a command step too): a changed figure
+# on either side, in a copy, is one line at the [firmware] key's line
+# naming it. drift HOW ROBOT KEY SED: a copy of robots/ROBOT.ini with SED.
+drift() { local how=$1 r=$2 key=$3 sed=$4
+  sed "$sed" "robots/$r.ini" >"$T/drift.ini"
+  cmp -s "robots/$r.ini" "$T/drift.ini" && { bad "$how: the edit '$sed' changed nothing"; return; }
+  local L; L=$(awk -v k="$key" '/^\[/{s=$0} s=="[firmware]" && index($0, k " = ")==1 {print NR; exit}' "$T/drift.ini")
+  want_rc 2 "$how" "$MKPROFILE" "$T/drift.ini" "$T/x.h"
+  grep -q "^$T/drift.ini:$L: firmware.$key = .*, the robot's keys give .* apart" "$T/err" && ok "$how: $(cat "$T/err")" \
+    || bad "$how (want $T/drift.ini:$L: firmware.$key): $(cat "$T/err")"; }
+drift "paper: firmware 1 % faster per command" paper mm_s_per_cmd 's/^mm_s_per_cmd = 0.7804$/mm_s_per_cmd = 0.7882/'
+drift "paper: motor 460 rpm" paper mm_s_per_cmd 's/^no_load_rpm = 450$/no_load_rpm = 460/'
+drift "paper: friction 58 steps" paper cmd_friction 's/^cmd_friction = 56.8$/cmd_friction = 58/'
+drift "paper: body 137 g" paper cmd_per_mm_s2 's/^body_mass_g = 127$/body_mass_g = 137/'
+drift "paper: command full scale 6.1 V" paper mm_s_per_cmd 's/^cmd_max_v = 6$/cmd_max_v = 6.1/'
+drift "kerise: driver 0 ohm" kerise-v5 cmd_friction 's/^driver_r_ohm = 0.305$/driver_r_ohm = 0/'
+drift "ukmarsbot: ORION's forward Km 490" ukmarsbot mm_s_per_cmd 's/^fwd_km_mm_s_v = 475$/fwd_km_mm_s_v = 490/'
+drift "ukmarsbot: ORION's forward time constant 0.2 s" ukmarsbot cmd_per_mm_s2 's/^fwd_tm_s = 0.190$/fwd_tm_s = 0.200/'
+sed 's/^model = datasheet$/model = paper/' robots/paper.ini >"$T/model.ini"
+want_rc 2 "mkprofile: the motor model paper cannot check the figures" "$MKPROFILE" "$T/model.ini" "$T/x.h"
+grep -q "are checked against a \[motor.left\] of model datasheet" "$T/err" && ok "mkprofile: $(cat "$T/err")" || bad "model: $(cat "$T/err")"
+sed 's/^cmd_max_v = .*$//' robots/ukmarsbot.ini >"$T/nofull.ini"
+want_rc 2 "mkprofile: no cmd_max_v" "$MKPROFILE" "$T/nofull.ini" "$T/x.h"
+grep -q "firmware.cmd_max_v, cmd_max: missing" "$T/err" && ok "mkprofile: $(cat "$T/err")" || bad "nofull: $(cat "$T/err")"
 cp robots/paper.ini "$T/unknown.ini"; sed -i '/^\[firmware\]$/a bogus_mm = 1' "$T/unknown.ini"
 L=$(line "$T/unknown.ini" '^bogus_mm = 1$')
 want_rc 2 "mkprofile: unknown key" "$MKPROFILE" "$T/unknown.ini" "$T/x.h"

@@ -80,6 +80,14 @@ python3 -c "
 import json; c={k['name']:k['kind'] for k in json.loads(open('$T/out').read().splitlines()[-1])['checks']}
 assert all(c[n] == 'fitted' for n in ('forward_km', 'forward_tm', 'rotation_km', 'rotation_tm', 'counts_500mm_left', 'ir_lfs_backed'))
 " && ok "ukmarsbot: ORION's KM, TM, counts and IR calibration are fitted" || bad "ukmarsbot kinds"
+# each wheel's speed per volt is the same spinning as driving (a rigid robot with symmetric motors: rotation KM x the
+# half track 38.7 mm against forward KM, within 1 %), the ground of docs/robots/ukmarsbot-sources.md's issue 41 look
+python3 -c "
+import json, math; c={k['name']:k['measured'] for k in json.loads(open('$T/out').read().splitlines()[-1])['checks']}
+spin = c['rotation_km'] * math.pi / 180 * 38.7
+assert abs(spin / c['forward_km'] - 1) < 0.01, (spin, c['forward_km'])
+print('%.1f mm/s/V spinning, %.1f driving' % (spin, c['forward_km']))
+" >"$T/msg" 2>&1 && ok "ukmarsbot: per wheel $(cat "$T/msg")" || bad "ukmarsbot per-wheel KM: $(tail -2 "$T/msg")"
 
 # ---- a 2 ms step (scripted runs may take it): the same predictions pass and fail as at 1 ms; the step
 # responses are sampled on the step grid (2 and 6 ms: 1 ms is no step, 5 ms falls between two)
