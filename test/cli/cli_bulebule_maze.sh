@@ -15,7 +15,9 @@
 # east column, the south-east dead end and the pocket above it; it enters
 # 60) with no contact, then, its flood fill finding no path, turns back and
 # forth in the pocket's x 14 column (best_neighbor_step returns BACK): the
-# side pair's slope and the turn after the dead end.
+# side pair's slope and the turn after the dead end. Then the second run
+# from test-maze-classic's flash: load_maze, the speed run to the goal with
+# no front or side contact, the flash unchanged.
 # Slow (about 1 s of CPU per simulated second): three runs side by side.
 # Without ../shared: SKIP.
 set -u
@@ -56,6 +58,17 @@ jv() { python3 -c 'import json,sys; d=json.loads(open(sys.argv[1]).read().splitl
 [ "$(strip "$T/a.json" | sed "s|$T/a.bin|FLASH|")" = "$(strip "$T/b.json" | sed "s|$T/b.bin|FLASH|")" ] \
   && ok "the same JSON twice" || bad "two runs differ"
 cmp -s "$T/a.bin" "$T/b.bin" && ok "the same flash twice" || bad "the flash files differ"
+# the second run (GUIDE-firmware "A second run"): the same flash reloaded (a press opens the reuse
+# menu, a short press loads the maze, a long press the lowest force, a hand): its speed run to the goal
+cp "$T/a.bin" "$T/d.bin"
+IN="1 button; 2 button; 3.5 button=1; 13.5 occlude=fl; 14 occlude=fr; 14.5 occlude=fl; 23 end"
+run d "$M1" 30
+[ "$(jv "$T/d.json" "(d['reached_goal'], d['laps'][0]['run_s'] < 5.0)")" = "(True, True)" ] \
+  && ok "test-maze-classic, second run: the saved maze reloaded, its speed run to the goal in $(jv "$T/d.json" "d['laps'][0]['run_s']") s" \
+  || bad "second run: exit $(cat "$T/d.rc"): $(jv "$T/d.json" "(d['exit_reason'], d['reached_goal'], d['laps'])") $(head -1 "$T/d.err")"
+[ "$(jv "$T/d.json" "d['contacts']['front'] + d['contacts']['side']")" = 0 ] && ok "second run: no front or side wall contact" \
+  || bad "second run contacts: $(jv "$T/d.json" "d['contacts']")"
+cmp -s "$T/a.bin" "$T/d.bin" && ok "second run: the flash kept as it was" || bad "the second run changed the flash"
 # 001-anomaly-test: every reachable cell, no contact, then turning in the x 14 column (y 7-8)
 [ "$(jv "$T/c.json" "d['exit_reason']")" = time_limit ] && ok "001-anomaly-test: no firmware fault" \
   || bad "001-anomaly-test: exit reason $(jv "$T/c.json" "d['exit_reason']") $(head -1 "$T/c.err")"
