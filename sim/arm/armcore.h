@@ -70,6 +70,9 @@ typedef struct {
     uint64_t idle_jumped;             /* of those, the cycles jumped over (a sleep advanced more than one cycle at a time; 0 with no_idle_skip) */
     uint64_t loop_skips;              /* wait loops jumped over (see armcore.c, "idle loops") */
     uint64_t loop_cycles;             /* cycles of wait loops jumped over */
+    uint64_t recur_skips;             /* of loop_skips, the jumps over a recurring state (armcore.c, "recurring states") */
+    uint64_t recur_cycles;            /* of loop_cycles, the cycles of those */
+    uint64_t recur_snapshots;         /* states saved to compare */
     uint64_t splits;                  /* stops inside a translated block */
     uint64_t starts;                  /* uc_emu_start calls */
 } armcore_stats_t;
