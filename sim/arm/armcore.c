@@ -561,14 +561,19 @@ static bool idle_loop(armcore_t *c, uint32_t addr, uint32_t size)
 
 /* ---- recurring states ----
  * The core is a deterministic machine: from the same registers and SRAM, with
- * no peripheral access, no model event due and no exception, it runs the same
- * instructions in the same cycles. So when a block starts in the state an
- * earlier start of the same block had, and nothing of that kind happened
- * between them (one emulation run, c->rec_gen unchanged: every peripheral
- * or PPB access, store into flash, emulation start or stop counts), the state
- * recurs with that period until the next model event or the target: the core
- * jumps by whole periods to the last start of the block before them, with the
- * state it has now, which is what running them would leave. This covers wait
+ * no peripheral access and no exception, it runs the same instructions in the
+ * same cycles. So when a block starts in the state an earlier start of the
+ * same block had, and nothing of that kind happened between them (one
+ * emulation run, c->rec_gen unchanged: every peripheral or PPB access, store
+ * into flash, emulation start or stop counts), the state recurs with that
+ * period until the next model event or the target: the core jumps by whole
+ * periods to the last start of the block before them, with the state it has
+ * now, which is what running them would leave. A model event between the two
+ * starts does not break this: it ran at its block start as in any run, took
+ * no exception (that stops the emulation), and what it wrote into SRAM (a
+ * DMA) is in the comparison; none falls inside the periods jumped. Nothing may
+ * be pending at the jump: one pending but masked would be taken at a CPSIE
+ * or MSR inside the periods (a critical section in the loop). This covers wait
  * loops of any shape: calls, pushes and pops, stores of values already there,
  * soft-float arithmetic on RAM an interrupt changes (bulebule's
  * target_straight: its state recurs from the second iteration after each
@@ -611,7 +616,7 @@ static bool recur(armcore_t *c, blk_t *b)
         armed = false, c->rec_head = NO_ADDR;
         if (!memcmp(v, c->rec_regs, (size_t)n * sizeof *v) && !memcmp(c->sram, c->rec_sram, c->mcu->sram_bytes)) {
             b->fails = 0;
-            if (!m) return false;
+            if (!m || cortexm_best(&c->cm, NULL)) return false; /* one pending, masked: a CPSIE in the periods would take it */
             c->rec_land = c->cyc + m * p;
             c->st.recur_skips++, c->st.recur_cycles += m * p;
             c->st.loop_skips++, c->st.loop_cycles += m * p;

@@ -9,7 +9,7 @@ __attribute__((section(".mailbox"))) mailbox_t mb;
 
 enum { PREEMPT = 1, PREEMPT_HW, TAILCHAIN, PRIMASK, BASEPRI, SYSTICK, COUNTFLAG, DWT, VTOR, WFI, FAULT_UNMAPPED, FAULT_PERIPH,
        UNDEF, SVC, UNMODELED, BITBAND, CLOCK, CHURN, RESET, PRIGROUP_SUB, PRIGROUP_NONE, SPIN, STORM, PSP,
-       IDLE_CYCCNT, IDLE_TICK, IDLE_COUNTFLAG, IDLE_BENCH, IDLE_BITS, IDLE_RECUR, IDLE_COUNT };
+       IDLE_CYCCNT, IDLE_TICK, IDLE_COUNTFLAG, IDLE_BENCH, IDLE_BITS, IDLE_RECUR, IDLE_COUNT, IDLE_MASKED };
 
 #define ISB() __asm volatile("dsb\n isb" ::: "memory")
 static void log_ev(uint32_t e) { if (mb.nlog < MAILBOX_LOG) mb.log[mb.nlog++] = e; }
@@ -35,7 +35,7 @@ void systick_handler(void)
         log_ev('S' << 8 | '2');
         SYST_CSR = 0;
         break;
-    case IDLE_CYCCNT: case IDLE_TICK: case IDLE_BENCH: case IDLE_RECUR: case IDLE_COUNT: ticks++; break;
+    case IDLE_CYCCNT: case IDLE_TICK: case IDLE_BENCH: case IDLE_RECUR: case IDLE_COUNT: case IDLE_MASKED: ticks++; break;
     case SYSTICK: case WFI:
         if (ticks < 16) mb.v[ticks] = DWT_CYCCNT;
         if (++ticks == (mb.scenario == WFI ? 50u : 5u)) SYST_CSR = 0;
@@ -253,6 +253,20 @@ static void idle_scenarios(uint32_t s)
         for (uint32_t i = 0; i < 5; i++) {
             uint32_t until = get_tick() + 3u + i;
             while (get_tick() < until - margin(i)) {}
+            mb.v[i] = DWT_CYCCNT;
+        }
+        SYST_CSR = 0;
+        break;
+    case IDLE_MASKED: /* the same wait in a critical section: SysTick pends while masked, taken at the CPSIE */
+        dwt_on();
+        systick(9999, 7);
+        for (uint32_t i = 0; i < 5; i++) {
+            uint32_t until = get_tick() + 3u + i, t, m;
+            do {
+                __asm volatile("cpsid i" ::: "memory");
+                t = get_tick(), m = margin(i);
+                __asm volatile("cpsie i" ::: "memory");
+            } while (t < until - m);
             mb.v[i] = DWT_CYCCNT;
         }
         SYST_CSR = 0;
