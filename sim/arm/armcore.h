@@ -19,7 +19,9 @@
  * without it, so a run is the same in any chunking. WFI/WFE sleep to the
  * next event, skipped in one go (the same state as cycle by cycle); a wait
  * loop (polling DWT CYCCNT, SysTick or RAM, storing nothing) is jumped over
- * by whole iterations to the one that exits or to the next event. */
+ * by whole iterations to the one that exits or to the next event, and so is
+ * any state that recurs (a block started again with the same registers and
+ * SRAM, nothing touched between: whole periods to the next event). */
 #ifndef ARMCORE_H
 #define ARMCORE_H
 
