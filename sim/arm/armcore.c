@@ -625,14 +625,16 @@ static bool recur(armcore_t *c, blk_t *b)
         if (++b->fails >= REC_FAILS_BAN) /* left alone for REC_PERIOD_MAX x 2^k cycles, k growing with the fails */
             b->ban_until = c->cyc + ((uint64_t)REC_PERIOD_MAX << (b->fails - REC_FAILS_BAN < 10 ? b->fails - REC_FAILS_BAN : 10));
     }
-    bool again = b->seen_gen == c->rec_gen;
+    if (b->seen_gen != c->rec_gen) { /* its first start in this stretch */
+        b->seen_gen = c->rec_gen, b->tries = 0, b->seen_cyc = c->cyc;
+        return false;
+    }
     uint64_t p = c->cyc - b->seen_cyc;
-    bool steady = again && p == b->last_p; /* a loop's head: started at the same interval twice (a subroutine's block called twice an iteration is not) */
-    if (again) b->last_p = p > UINT32_MAX ? UINT32_MAX : (uint32_t)p;
-    else b->seen_gen = c->rec_gen, b->tries = 0;
-    b->seen_cyc = c->cyc;
+    bool steady = p == b->last_p; /* a loop's head: started at the same interval twice (a subroutine's block called twice an iteration is not) */
+    b->last_p = p > UINT32_MAX ? UINT32_MAX : (uint32_t)p, b->seen_cyc = c->cyc;
+    if (!steady) return false;
     if (c->rec_tries_gen != c->rec_gen) c->rec_tries_gen = c->rec_gen, c->rec_tries = 0;
-    if (!steady || armed || c->cyc < b->ban_until || p < REC_PERIOD_MIN || p > REC_PERIOD_MAX || b->tries >= REC_TRIES || c->rec_tries >= REC_STRETCH_TRIES
+    if (armed || c->cyc < b->ban_until || p < REC_PERIOD_MIN || p > REC_PERIOD_MAX || b->tries >= REC_TRIES || c->rec_tries >= REC_STRETCH_TRIES
         || end <= c->cyc || (end - c->cyc) / p < REC_AHEAD_MIN)
         return false;
     b->tries++, c->rec_tries++;
