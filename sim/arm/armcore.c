@@ -170,7 +170,7 @@ static uint32_t count_insns(armcore_t *c, uint32_t addr, uint32_t end)
     return n;
 }
 
-static blk_t *block_of(armcore_t *c, uint32_t addr, uint32_t size)
+static inline blk_t *block_of(armcore_t *c, uint32_t addr, uint32_t size)
 {
     blk_t *b = &c->blk[(addr >> 1) & (BLK_CACHE - 1)];
     if (b->addr != addr || b->size != size) {
@@ -605,26 +605,47 @@ static int rec_read(armcore_t *c, uint64_t *v)
     return n;
 }
 
-/* At an untouched block's start: true if the state recurs here (c->rec_land: the cycle to jump to), else perhaps a snapshot. */
-static bool recur(armcore_t *c, blk_t *b)
+/* At block b's start, where the snapshot was taken: true if the state recurs (c->rec_land: the cycle to jump to). */
+static bool recur_compare(armcore_t *c, blk_t *b)
 {
     uint64_t end = c->ev_next < c->target ? c->ev_next : c->target, v[REC_REGS + REC_FP_REGS];
-    bool armed = c->rec_head != NO_ADDR && c->rec_at_gen == c->rec_gen;
-    if (armed && c->rec_head == b->addr) {
-        uint64_t p = c->cyc - c->rec_cyc, m = end > c->cyc ? (end - c->cyc) / p : 0;
-        int n = rec_read(c, v);
-        armed = false, c->rec_head = NO_ADDR;
-        if (!memcmp(v, c->rec_regs, (size_t)n * sizeof *v) && !memcmp(c->sram, c->rec_sram, c->mcu->sram_bytes)) {
-            b->fails = 0;
-            if (!m || cortexm_best(&c->cm, NULL)) return false; /* one pending, masked: a CPSIE in the periods would take it */
-            c->rec_land = c->cyc + m * p;
-            c->st.recur_skips++, c->st.recur_cycles += m * p;
-            c->st.loop_skips++, c->st.loop_cycles += m * p;
-            return true;
-        }
-        if (++b->fails >= REC_FAILS_BAN) /* left alone for REC_PERIOD_MAX x 2^k cycles, k growing with the fails */
-            b->ban_until = c->cyc + ((uint64_t)REC_PERIOD_MAX << (b->fails - REC_FAILS_BAN < 10 ? b->fails - REC_FAILS_BAN : 10));
+    if (c->rec_at_gen != c->rec_gen) return false; /* disturbed since */
+    uint64_t p = c->cyc - c->rec_cyc, m = end > c->cyc ? (end - c->cyc) / p : 0;
+    int n = rec_read(c, v);
+    c->rec_head = NO_ADDR;
+    if (!memcmp(v, c->rec_regs, (size_t)n * sizeof *v) && !memcmp(c->sram, c->rec_sram, c->mcu->sram_bytes)) {
+        b->fails = 0;
+        if (!m || cortexm_best(&c->cm, NULL)) return false; /* one pending, masked: a CPSIE in the periods would take it */
+        c->rec_land = c->cyc + m * p;
+        c->st.recur_skips++, c->st.recur_cycles += m * p;
+        c->st.loop_skips++, c->st.loop_cycles += m * p;
+        return true;
     }
+    if (++b->fails >= REC_FAILS_BAN) /* left alone for REC_PERIOD_MAX x 2^k cycles, k growing with the fails */
+        b->ban_until = c->cyc + ((uint64_t)REC_PERIOD_MAX << (b->fails - REC_FAILS_BAN < 10 ? b->fails - REC_FAILS_BAN : 10));
+    return false;
+}
+
+/* Block b started again p cycles after its last start, as the time before: a snapshot here if it is worth one. */
+static void recur_snapshot(armcore_t *c, blk_t *b, uint64_t p)
+{
+    uint64_t end = c->ev_next < c->target ? c->ev_next : c->target;
+    if (c->rec_tries_gen != c->rec_gen) c->rec_tries_gen = c->rec_gen, c->rec_tries = 0;
+    if ((c->rec_head != NO_ADDR && c->rec_at_gen == c->rec_gen) || c->cyc < b->ban_until || p < REC_PERIOD_MIN || p > REC_PERIOD_MAX
+        || b->tries >= REC_TRIES || c->rec_tries >= REC_STRETCH_TRIES || end <= c->cyc || (end - c->cyc) / p < REC_AHEAD_MIN)
+        return;
+    b->tries++, c->rec_tries++;
+    c->rec_head = b->addr, c->rec_cyc = c->cyc, c->rec_at_gen = c->rec_gen;
+    rec_read(c, c->rec_regs);
+    memcpy(c->rec_sram, c->sram, c->mcu->sram_bytes);
+    c->st.recur_snapshots++;
+}
+
+/* At an untouched block's start: true if the state recurs here (c->rec_land set), else the block's starts noted
+ * (at every block: inline, the rest out of line). */
+static inline bool recur(armcore_t *c, blk_t *b)
+{
+    if (c->rec_head == b->addr && recur_compare(c, b)) return true;
     if (b->seen_gen != c->rec_gen) { /* its first start in this stretch */
         b->seen_gen = c->rec_gen, b->tries = 0, b->seen_cyc = c->cyc;
         return false;
@@ -632,16 +653,7 @@ static bool recur(armcore_t *c, blk_t *b)
     uint64_t p = c->cyc - b->seen_cyc;
     bool steady = p == b->last_p; /* a loop's head: started at the same interval twice (a subroutine's block called twice an iteration is not) */
     b->last_p = p > UINT32_MAX ? UINT32_MAX : (uint32_t)p, b->seen_cyc = c->cyc;
-    if (!steady) return false;
-    if (c->rec_tries_gen != c->rec_gen) c->rec_tries_gen = c->rec_gen, c->rec_tries = 0;
-    if (armed || c->cyc < b->ban_until || p < REC_PERIOD_MIN || p > REC_PERIOD_MAX || b->tries >= REC_TRIES || c->rec_tries >= REC_STRETCH_TRIES
-        || end <= c->cyc || (end - c->cyc) / p < REC_AHEAD_MIN)
-        return false;
-    b->tries++, c->rec_tries++;
-    c->rec_head = b->addr, c->rec_cyc = c->cyc, c->rec_at_gen = c->rec_gen;
-    rec_read(c, c->rec_regs);
-    memcpy(c->rec_sram, c->sram, c->mcu->sram_bytes);
-    c->st.recur_snapshots++;
+    if (steady) recur_snapshot(c, b, p);
     return false;
 }
 
