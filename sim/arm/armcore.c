@@ -35,15 +35,31 @@
 #define LOOP_CACHE 64u             /* loops analysed, by their head's address */
 #define LOOP_SKIP_MIN 16u          /* whole iterations before the next event for a skip to be worth its probes */
 #define LOOP_GRID 16u              /* probes spread over the iterations before the bisection */
+#define REC_PERIOD_MIN 32u         /* cycles: a recurring state's period at least this (shorter loops are the probes' above) */
+#define REC_PERIOD_MAX 200000u     /* cycles: and at most this (a loop's iteration, calls included) */
+#define REC_AHEAD_MIN 2u           /* whole periods ahead of the next event for a snapshot to be worth taking */
+#define REC_TRIES 2u               /* snapshots per block between two disturbances */
+#define REC_STRETCH_TRIES 4u       /* snapshots in all between two disturbances */
+#define REC_FAILS_BAN 4u           /* failed snapshots in a row at a block before it is left alone for a while */
+#define REC_REGS 22
+#define REC_FP_REGS 17
 #define DWT_CYCCNT_ADDR 0xE0001004u
 #define SYST_CSR_ADDR 0xE000E010u
 #define SYST_CVR_ADDR 0xE000E018u
 
-enum { STOP_NONE, STOP_TAKE, STOP_SPLIT, STOP_INTR, STOP_FAULT, STOP_SKIP };
+enum { STOP_NONE, STOP_TAKE, STOP_SPLIT, STOP_INTR, STOP_FAULT, STOP_SKIP, STOP_RECUR };
 enum { LOOP_UNKNOWN, LOOP_PURE, LOOP_NEVER };
 enum { PROBE_STAYS = 0, PROBE_EXITS = 1, PROBE_AGAIN = -1, PROBE_NEVER = -2, PROBE_RUNNING = 2 };
 
-typedef struct { uint32_t addr, size, n; } blk_t;
+/* A translated block: its instruction count; when it last started (and in which undisturbed stretch) for recurrences. */
+typedef struct {
+    uint32_t addr, size, n;
+    uint32_t tries;                      /* snapshots taken at it in the stretch seen_gen */
+    uint32_t last_p;                     /* the cycles between its last two starts in one stretch */
+    uint32_t fails;                      /* snapshots at it that did not recur since the last that did */
+    uint64_t ban_until;                  /* no snapshot at it before this cycle (an inner loop's head: its state never recurs) */
+    uint64_t seen_cyc, seen_gen;
+} blk_t;
 
 /* A cycle of translated blocks that repeats: its blocks from the head, its instructions (= cycles) an iteration. */
 typedef struct {
@@ -104,6 +120,13 @@ struct armcore {
     uint32_t probe_idx;
     uint32_t saved[17];                  /* the registers a probe may change (R0-R12, SP, LR, APSR), as at the loop's head */
     cortexm_t cm_saved;
+    /* recurring states (see "recurring states" below) */
+    uint64_t rec_gen;                    /* disturbances so far: emulation starts, peripheral accesses, events due */
+    uint64_t rec_cyc, rec_at_gen, rec_land, rec_tries_gen;
+    unsigned rec_tries;                  /* snapshots taken in the stretch rec_tries_gen */
+    uint32_t rec_head;                   /* the block the snapshot was taken at; NO_ADDR none */
+    uint64_t rec_regs[REC_REGS + REC_FP_REGS];
+    uint8_t *rec_sram;
 };
 
 /* ---- memory and instruction lengths ---- */
@@ -147,12 +170,17 @@ static uint32_t count_insns(armcore_t *c, uint32_t addr, uint32_t end)
     return n;
 }
 
-static uint32_t block_insns(armcore_t *c, uint32_t addr, uint32_t size)
+static inline blk_t *block_of(armcore_t *c, uint32_t addr, uint32_t size)
 {
     blk_t *b = &c->blk[(addr >> 1) & (BLK_CACHE - 1)];
-    if (b->addr != addr || b->size != size) b->addr = addr, b->size = size, b->n = count_insns(c, addr, addr + size);
-    return b->n;
+    if (b->addr != addr || b->size != size) {
+        memset(b, 0, sizeof *b);
+        b->addr = addr, b->size = size, b->n = count_insns(c, addr, addr + size), b->seen_gen = UINT64_MAX;
+    }
+    return b;
 }
+
+static uint32_t block_insns(armcore_t *c, uint32_t addr, uint32_t size) { return block_of(c, addr, size)->n; }
 
 /* The address of instruction k of the block at addr. */
 static uint32_t insn_addr(armcore_t *c, uint32_t addr, uint32_t k)
@@ -324,6 +352,7 @@ static bool probe_access(armcore_t *c, uint32_t addr, bool write)
 static uint64_t mmio_read(armcore_t *c, uint32_t addr, unsigned size)
 {
     uint32_t v = 0;
+    c->rec_gen++;
     if (c->probe && !probe_access(c, addr, false)) return 0;
     flash_fix(c);
     c->now = access_cycle(c);
@@ -333,6 +362,7 @@ static uint64_t mmio_read(armcore_t *c, uint32_t addr, unsigned size)
 
 static void mmio_write(armcore_t *c, uint32_t addr, unsigned size, uint32_t v)
 {
+    c->rec_gen++;
     if (c->probe && !probe_access(c, addr, true)) return;
     flash_fix(c);
     c->now = access_cycle(c);
@@ -529,6 +559,104 @@ static bool idle_loop(armcore_t *c, uint32_t addr, uint32_t size)
     return true;
 }
 
+/* ---- recurring states ----
+ * The core is a deterministic machine: from the same registers and SRAM, with
+ * no peripheral access and no exception, it runs the same instructions in the
+ * same cycles. So when a block starts in the state an earlier start of the
+ * same block had, and nothing of that kind happened between them (one
+ * emulation run, c->rec_gen unchanged: every peripheral or PPB access, store
+ * into flash, emulation start or stop counts), the state recurs with that
+ * period until the next model event or the target: the core jumps by whole
+ * periods to the last start of the block before them, with the state it has
+ * now, which is what running them would leave. A model event between the two
+ * starts does not break this: it ran at its block start as in any run, took
+ * no exception (that stops the emulation), and what it wrote into SRAM (a
+ * DMA) is in the comparison; none falls inside the periods jumped. Nothing may
+ * be pending at the jump: one pending but masked would be taken at a CPSIE
+ * or MSR inside the periods (a critical section in the loop). This covers wait
+ * loops of any shape: calls, pushes and pops, stores of values already there,
+ * soft-float arithmetic on RAM an interrupt changes (bulebule's
+ * target_straight: its state recurs from the second iteration after each
+ * interrupt). A snapshot (the registers, FP ones included, and the SRAM) is
+ * taken at a block started twice in one stretch REC_PERIOD_MIN to
+ * REC_PERIOD_MAX cycles apart, at most REC_TRIES times per block and
+ * stretch, and compared at its next start. A stated limit: the Thumb IT
+ * state is in the translated block's flags, not in the registers read, so two
+ * starts of a block inside an IT block and outside it would compare equal;
+ * blocks start inside an IT block only where a stop split one, and a split's
+ * remainder is never a snapshot's block. */
+static const int rec_reg_ids[REC_REGS] = { UC_ARM_REG_R0, UC_ARM_REG_R1, UC_ARM_REG_R2, UC_ARM_REG_R3, UC_ARM_REG_R4,
+    UC_ARM_REG_R5, UC_ARM_REG_R6, UC_ARM_REG_R7, UC_ARM_REG_R8, UC_ARM_REG_R9, UC_ARM_REG_R10, UC_ARM_REG_R11, UC_ARM_REG_R12,
+    UC_ARM_REG_SP, UC_ARM_REG_LR, UC_ARM_REG_XPSR, UC_ARM_REG_MSP, UC_ARM_REG_PSP, UC_ARM_REG_CONTROL, UC_ARM_REG_PRIMASK,
+    UC_ARM_REG_BASEPRI, UC_ARM_REG_FAULTMASK };
+
+/* The registers a recurrence compares into v (as 64-bit values: D0-D15 are), their count. */
+static int rec_read(armcore_t *c, uint64_t *v)
+{
+    int ids[REC_REGS + REC_FP_REGS], n = REC_REGS;
+    void *p[REC_REGS + REC_FP_REGS];
+    memcpy(ids, rec_reg_ids, sizeof rec_reg_ids);
+    if (c->mcu->fpu) {
+        for (int i = 0; i < 16; i++) ids[n++] = UC_ARM_REG_D0 + i;
+        ids[n++] = UC_ARM_REG_FPSCR;
+    }
+    for (int i = 0; i < n; i++) v[i] = 0, p[i] = &v[i];
+    uc_reg_read_batch(c->uc, ids, p, n);
+    return n;
+}
+
+/* At block b's start, where the snapshot was taken: true if the state recurs (c->rec_land: the cycle to jump to). */
+static bool recur_compare(armcore_t *c, blk_t *b)
+{
+    uint64_t end = c->ev_next < c->target ? c->ev_next : c->target, v[REC_REGS + REC_FP_REGS];
+    if (c->rec_at_gen != c->rec_gen) return false; /* disturbed since */
+    uint64_t p = c->cyc - c->rec_cyc, m = end > c->cyc ? (end - c->cyc) / p : 0;
+    int n = rec_read(c, v);
+    c->rec_head = NO_ADDR;
+    if (!memcmp(v, c->rec_regs, (size_t)n * sizeof *v) && !memcmp(c->sram, c->rec_sram, c->mcu->sram_bytes)) {
+        b->fails = 0;
+        if (!m || cortexm_best(&c->cm, NULL)) return false; /* one pending, masked: a CPSIE in the periods would take it */
+        c->rec_land = c->cyc + m * p;
+        c->st.recur_skips++, c->st.recur_cycles += m * p;
+        c->st.loop_skips++, c->st.loop_cycles += m * p;
+        return true;
+    }
+    if (++b->fails >= REC_FAILS_BAN) /* left alone for REC_PERIOD_MAX x 2^k cycles, k growing with the fails */
+        b->ban_until = c->cyc + ((uint64_t)REC_PERIOD_MAX << (b->fails - REC_FAILS_BAN < 10 ? b->fails - REC_FAILS_BAN : 10));
+    return false;
+}
+
+/* Block b started again p cycles after its last start, as the time before: a snapshot here if it is worth one. */
+static void recur_snapshot(armcore_t *c, blk_t *b, uint64_t p)
+{
+    uint64_t end = c->ev_next < c->target ? c->ev_next : c->target;
+    if (c->rec_tries_gen != c->rec_gen) c->rec_tries_gen = c->rec_gen, c->rec_tries = 0;
+    if ((c->rec_head != NO_ADDR && c->rec_at_gen == c->rec_gen) || c->cyc < b->ban_until || p < REC_PERIOD_MIN || p > REC_PERIOD_MAX
+        || b->tries >= REC_TRIES || c->rec_tries >= REC_STRETCH_TRIES || end <= c->cyc || (end - c->cyc) / p < REC_AHEAD_MIN)
+        return;
+    b->tries++, c->rec_tries++;
+    c->rec_head = b->addr, c->rec_cyc = c->cyc, c->rec_at_gen = c->rec_gen;
+    rec_read(c, c->rec_regs);
+    memcpy(c->rec_sram, c->sram, c->mcu->sram_bytes);
+    c->st.recur_snapshots++;
+}
+
+/* At an untouched block's start: true if the state recurs here (c->rec_land set), else the block's starts noted
+ * (at every block: inline, the rest out of line). */
+static inline bool recur(armcore_t *c, blk_t *b)
+{
+    if (c->rec_head == b->addr && recur_compare(c, b)) return true;
+    if (b->seen_gen != c->rec_gen) { /* its first start in this stretch */
+        b->seen_gen = c->rec_gen, b->tries = 0, b->seen_cyc = c->cyc;
+        return false;
+    }
+    uint64_t p = c->cyc - b->seen_cyc;
+    bool steady = p == b->last_p; /* a loop's head: started at the same interval twice (a subroutine's block called twice an iteration is not) */
+    b->last_p = p > UINT32_MAX ? UINT32_MAX : (uint32_t)p, b->seen_cyc = c->cyc;
+    if (steady) recur_snapshot(c, b, p);
+    return false;
+}
+
 /* A block in a probe: the loop's next one, or the exit (the block not run), or back at the head. */
 static void probe_block(armcore_t *c, uint32_t addr, uint32_t size, uint32_t n)
 {
@@ -562,7 +690,9 @@ static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
 {
     armcore_t *c = u;
     flash_fix(c);
-    uint32_t addr = (uint32_t)address, n = block_insns(c, addr, size);
+    uint32_t addr = (uint32_t)address;
+    blk_t *bk = block_of(c, addr, size);
+    uint32_t n = bk->n;
     if (c->probe) { if (c->probe_res == PROBE_RUNNING) probe_block(c, addr, size, n); return; }
     c->blk_addr = addr, c->blk_size = size, c->blk_start = c->cyc;
     if (c->partial || c->stop != STOP_NONE) return;
@@ -580,6 +710,7 @@ static void on_block(uc_engine *uc, uint64_t address, uint32_t size, void *u)
     }
     uint64_t stop_at = c->nbrk || c->halt_at != NO_TIME ? debug_stop(c, addr, size) : c->target;
     if (c->nbrk || stop_at != c->target) c->hist_n = 0; /* no wait loop jumped over while gdb may stop inside it */
+    else if (!c->stop_mid && !c->no_idle_skip && recur(c, bk)) { c->stop = STOP_RECUR, c->stop_addr = addr; uc_emu_stop(uc); return; }
     else if (!c->stop_mid && !c->no_idle_skip && idle_loop(c, addr, size)) { c->stop = STOP_SKIP, c->stop_addr = addr; uc_emu_stop(uc); return; }
     if (c->cyc + n > stop_at) { c->stop = STOP_SPLIT, c->stop_addr = addr, c->split_to = stop_at; uc_emu_stop(uc); return; }
     c->cyc += n;
@@ -598,6 +729,7 @@ static bool on_bad_mem(uc_engine *uc, uc_mem_type type, uint64_t addr, int size,
 {
     armcore_t *c = u;
     if (c->probe) { c->probe_res = PROBE_NEVER; return false; }
+    c->rec_gen++;
     const armimage_mcu_t *m = c->mcu;
     uint32_t a = (uint32_t)addr, n = (uint32_t)size;
     if (type == UC_MEM_WRITE_PROT && c->flash_write && n <= 4 && host(c, a, n) && a < m->sram_base) {
@@ -990,7 +1122,7 @@ static void core_reset(armcore_t *c)
 static void run_once(armcore_t *c)
 {
     c->stop = STOP_NONE, c->intno = -1, c->bad_type = -1;
-    c->st.starts++;
+    c->st.starts++, c->rec_gen++;
     uc_err e = uc_emu_start(c->uc, c->pc | 1u, 0, 0, 0);
     flash_fix(c);
     switch (c->stop) {
@@ -1001,6 +1133,7 @@ static void run_once(armcore_t *c)
         break;
     case STOP_SPLIT: run_split(c); break;
     case STOP_SKIP: skip_loop(c); break;
+    case STOP_RECUR: c->pc = c->stop_addr, c->cyc = c->rec_land; break;
     case STOP_INTR: on_stop_intr(c); break;
     case STOP_FAULT: break;
     default: on_stop_none(c, e); break;
@@ -1069,13 +1202,13 @@ armcore_t *armcore_new(const armcore_cfg_t *cfg, char *err, size_t errn)
     if (cfg->nregions < 0 || cfg->nregions > ARMCORE_REGIONS_MAX)
         return snprintf(err, errn, "mmsim: %d peripheral regions (at most %d)", cfg->nregions, ARMCORE_REGIONS_MAX), NULL;
     armcore_t *c = calloc(1, sizeof *c);
-    if (c) c->flash = malloc(m->flash_bytes), c->sram = calloc(1, m->sram_bytes);
-    if (!c || !c->flash || !c->sram) return snprintf(err, errn, "mmsim: out of memory"), armcore_free(c), NULL;
+    if (c) c->flash = malloc(m->flash_bytes), c->sram = calloc(1, m->sram_bytes), c->rec_sram = malloc(m->sram_bytes);
+    if (!c || !c->flash || !c->sram || !c->rec_sram) return snprintf(err, errn, "mmsim: out of memory"), armcore_free(c), NULL;
     memcpy(c->flash, cfg->image->flash, m->flash_bytes);
     c->mcu = m, c->clocks = cfg->clocks, c->verbose = cfg->verbose, c->no_idle_skip = cfg->no_idle_skip;
     c->flash_write = cfg->flash_write, c->flash_ctx = cfg->flash_ctx;
     c->hclk = cfg->clocks && cfg->clocks->hclk ? cfg->clocks->hclk : cfg->hclk_hz;
-    c->target_ps = NO_TIME, c->resume_mid = NO_ADDR, c->never_head = NO_ADDR;
+    c->target_ps = NO_TIME, c->resume_mid = NO_ADDR, c->never_head = NO_ADDR, c->rec_head = NO_ADDR;
     c->halt_at = NO_TIME, c->brk_cyc = NO_TIME, c->brk_skip = NO_ADDR;
     cortexm_init(&c->cm, m->nirq, m->prio_bits, m->cpuid);
     cortexm_set_fpu(&c->cm, m->fpu != 0);
@@ -1098,6 +1231,7 @@ void armcore_free(armcore_t *c)
     if (c->uc) uc_close(c->uc);
     free(c->flash);
     free(c->sram);
+    free(c->rec_sram);
     free(c);
 }
 

@@ -19,7 +19,9 @@
  * without it, so a run is the same in any chunking. WFI/WFE sleep to the
  * next event, skipped in one go (the same state as cycle by cycle); a wait
  * loop (polling DWT CYCCNT, SysTick or RAM, storing nothing) is jumped over
- * by whole iterations to the one that exits or to the next event. */
+ * by whole iterations to the one that exits or to the next event, and so is
+ * any state that recurs (a block started again with the same registers and
+ * SRAM, nothing touched between: whole periods to the next event). */
 #ifndef ARMCORE_H
 #define ARMCORE_H
 
@@ -70,6 +72,9 @@ typedef struct {
     uint64_t idle_jumped;             /* of those, the cycles jumped over (a sleep advanced more than one cycle at a time; 0 with no_idle_skip) */
     uint64_t loop_skips;              /* wait loops jumped over (see armcore.c, "idle loops") */
     uint64_t loop_cycles;             /* cycles of wait loops jumped over */
+    uint64_t recur_skips;             /* of loop_skips, the jumps over a recurring state (armcore.c, "recurring states") */
+    uint64_t recur_cycles;            /* of loop_cycles, the cycles of those */
+    uint64_t recur_snapshots;         /* states saved to compare */
     uint64_t splits;                  /* stops inside a translated block */
     uint64_t starts;                  /* uc_emu_start calls */
 } armcore_stats_t;

@@ -336,6 +336,8 @@ int stm32f1_gate_init(stm32f1_gate_t *g, stm32f1_rcc_t *r, stm32f1_bus_t bus, ui
     *g = (stm32f1_gate_t){ .rcc = r, .bus = bus, .bit = bit, .ops = ops, .self = self };
     g->bus_ops = stm32f1_gate_ops;
     g->bus_ops.name = ops->name;
+    if (!ops->advance) g->bus_ops.advance = NULL;       /* the core then skips it when it looks for events (armcore.c advance_due) */
+    if (!ops->next_event) g->bus_ops.next_event = NULL;
     r->gates[r->ngates++] = g;
     return 0;
 }

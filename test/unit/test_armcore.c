@@ -31,7 +31,7 @@
 
 enum { PREEMPT = 1, PREEMPT_HW, TAILCHAIN, PRIMASK, BASEPRI, SYSTICK, COUNTFLAG, DWT, VTOR, WFI, FAULT_UNMAPPED, FAULT_PERIPH,
        UNDEF, SVC, UNMODELED, BITBAND, CLOCK, CHURN, RESET, PRIGROUP_SUB, PRIGROUP_NONE, SPIN, STORM, PSP,
-       IDLE_CYCCNT, IDLE_TICK, IDLE_COUNTFLAG, IDLE_BENCH, IDLE_BITS };
+       IDLE_CYCCNT, IDLE_TICK, IDLE_COUNTFLAG, IDLE_BENCH, IDLE_BITS, IDLE_RECUR, IDLE_COUNT, IDLE_MASKED };
 
 typedef struct {
     uint32_t scenario, scratch;
@@ -379,6 +379,20 @@ static void test_idle_cyccnt(void **state) { idle_same_state(IDLE_CYCCNT, 160000
 static void test_idle_hal_delay(void **state) { idle_same_state(IDLE_TICK, 60000, 8, true); }
 static void test_idle_countflag(void **state) { idle_same_state(IDLE_COUNTFLAG, 180000, 4, true); }
 static void test_idle_bits(void **state) { idle_same_state(IDLE_BITS, 60000, 6, false); } /* not skipped: the same state */
+/* armcore.c "recurring states": a wait calling a function that pushes, pops and stores is jumped over
+ * (by recurrences, the short-loop skipper cannot); one counting in RAM is not. */
+static void test_idle_recur(void **state)
+{
+    idle_same_state(IDLE_RECUR, 300000, 5, true);
+    rig_t *r = rig_new(IDLE_RECUR, false);
+    armcore_run_to(r->core, 300000);
+    armcore_stats_t st = armcore_stats(r->core);
+    if (st.recur_skips < 20 || st.recur_cycles < 150000)
+        fail_msg("%llu recurrences jumped, %llu cycles", (unsigned long long)st.recur_skips, (unsigned long long)st.recur_cycles);
+    rig_free(r);
+}
+static void test_idle_count(void **state) { idle_same_state(IDLE_COUNT, 100000, 4, false); }
+static void test_idle_masked(void **state) { idle_same_state(IDLE_MASKED, 300000, 5, true); } /* SysTick pending at a CPSIE: never jumped past */
 
 static void test_chunking_same_state(void **state)
 {
@@ -493,7 +507,7 @@ int main(void)
         cmocka_unit_test(test_vtor), cmocka_unit_test(test_svc_pendsv), cmocka_unit_test(test_process_stack), cmocka_unit_test(test_reset_request),
         cmocka_unit_test(test_bitband), cmocka_unit_test(test_unmodeled), cmocka_unit_test(test_faults),
         cmocka_unit_test(test_clock_switch), cmocka_unit_test(test_fpu_extended_frame), cmocka_unit_test(test_idle_cyccnt),
-        cmocka_unit_test(test_idle_hal_delay), cmocka_unit_test(test_idle_countflag), cmocka_unit_test(test_idle_bits), cmocka_unit_test(test_wfi_skip_same_state), cmocka_unit_test(test_chunking_same_state),
+        cmocka_unit_test(test_idle_hal_delay), cmocka_unit_test(test_idle_countflag), cmocka_unit_test(test_idle_bits), cmocka_unit_test(test_idle_recur), cmocka_unit_test(test_idle_count), cmocka_unit_test(test_idle_masked), cmocka_unit_test(test_wfi_skip_same_state), cmocka_unit_test(test_chunking_same_state),
         cmocka_unit_test(test_debug_halts_same_state),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -9,7 +9,7 @@ __attribute__((section(".mailbox"))) mailbox_t mb;
 
 enum { PREEMPT = 1, PREEMPT_HW, TAILCHAIN, PRIMASK, BASEPRI, SYSTICK, COUNTFLAG, DWT, VTOR, WFI, FAULT_UNMAPPED, FAULT_PERIPH,
        UNDEF, SVC, UNMODELED, BITBAND, CLOCK, CHURN, RESET, PRIGROUP_SUB, PRIGROUP_NONE, SPIN, STORM, PSP,
-       IDLE_CYCCNT, IDLE_TICK, IDLE_COUNTFLAG, IDLE_BENCH, IDLE_BITS };
+       IDLE_CYCCNT, IDLE_TICK, IDLE_COUNTFLAG, IDLE_BENCH, IDLE_BITS, IDLE_RECUR, IDLE_COUNT, IDLE_MASKED };
 
 #define ISB() __asm volatile("dsb\n isb" ::: "memory")
 static void log_ev(uint32_t e) { if (mb.nlog < MAILBOX_LOG) mb.log[mb.nlog++] = e; }
@@ -35,7 +35,7 @@ void systick_handler(void)
         log_ev('S' << 8 | '2');
         SYST_CSR = 0;
         break;
-    case IDLE_CYCCNT: case IDLE_TICK: case IDLE_BENCH: ticks++; break;
+    case IDLE_CYCCNT: case IDLE_TICK: case IDLE_BENCH: case IDLE_RECUR: case IDLE_COUNT: case IDLE_MASKED: ticks++; break;
     case SYSTICK: case WFI:
         if (ticks < 16) mb.v[ticks] = DWT_CYCCNT;
         if (++ticks == (mb.scenario == WFI ? 50u : 5u)) SYST_CSR = 0;
@@ -190,6 +190,21 @@ static void delay_ticks(uint32_t n)
     while (get_tick() - start < n) {}
 }
 
+/* A margin computed the slow way, as bulebule's required_micrometers_to_speed calls soft-float: a call that
+ * pushes and pops, stores on its stack, divides by repeated subtraction, and stores a value already there. */
+static volatile uint32_t same = 5;
+__attribute__((noinline)) static uint32_t margin(uint32_t k)
+{
+    volatile uint32_t tmp[4];
+    uint32_t q = 0, r = 100003u + k;
+    for (uint32_t i = 0; i < 4; i++) tmp[i] = r >> i;
+    while (r >= 7919u) r -= 7919u, q++;
+    same = 5;
+    return (q + tmp[3] - tmp[3]) >> 30;
+}
+
+static volatile uint32_t count;
+
 static void cyccnt_wait(uint32_t n)
 {
     uint32_t s = DWT_CYCCNT;
@@ -231,6 +246,40 @@ static void idle_scenarios(uint32_t s)
             while (DWT_CYCCNT & (1u << 12)) {}
             mb.v[i] = DWT_CYCCNT;
         }
+        break;
+    case IDLE_RECUR: /* a wait whose iteration calls, pushes, stores: its state recurs until the next tick */
+        dwt_on();
+        systick(9999, 7);
+        for (uint32_t i = 0; i < 5; i++) {
+            uint32_t until = get_tick() + 3u + i;
+            while (get_tick() < until - margin(i)) {}
+            mb.v[i] = DWT_CYCCNT;
+        }
+        SYST_CSR = 0;
+        break;
+    case IDLE_MASKED: /* the same wait in a critical section: SysTick pends while masked, taken at the CPSIE */
+        dwt_on();
+        systick(9999, 7);
+        for (uint32_t i = 0; i < 5; i++) {
+            uint32_t until = get_tick() + 3u + i, t, m;
+            do {
+                __asm volatile("cpsid i" ::: "memory");
+                t = get_tick(), m = margin(i);
+                __asm volatile("cpsie i" ::: "memory");
+            } while (t < until - m);
+            mb.v[i] = DWT_CYCCNT;
+        }
+        SYST_CSR = 0;
+        break;
+    case IDLE_COUNT: /* a wait that counts its iterations in RAM, its registers the same each time: never jumped over */
+        dwt_on();
+        systick(9999, 7);
+        for (uint32_t i = 0; i < 4; i++) {
+            uint32_t until = get_tick() + 2u;
+            while (get_tick() < until - margin(i)) __asm volatile("ldr r3, [%0]\n adds r3, #1\n str r3, [%0]\n movs r3, #0" :: "r"(&count) : "r3", "cc", "memory");
+            mb.v[i] = DWT_CYCCNT;
+        }
+        SYST_CSR = 0;
         break;
     case IDLE_BENCH: /* bench/armcore_speed.c at 168 MHz: 1 ms ticks; work, a CYCCNT wait, HAL_Delay, WFI */
         dwt_on();
