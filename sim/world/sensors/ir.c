@@ -177,21 +177,26 @@ static void detector_at(const ir_t *ir, const double pos[3], const double up[3],
     for (int k = 0; k < 3; k++) det[k] = pos[k] + ir->spec->det_offset_m * up[k];
 }
 
+double ir_received_hits(const ir_t *ir, const sim_pose_t *at, const world_hit_t *hit)
+{
+    double sum = 0, det[3];
+    detector_at(ir, at->pos_m, at->up, det);
+    for (int i = 0; i < ir->nrays; i++) {
+        if (hit[i].d_m < 0) continue;
+        sum += ir->weight[i] * ray_return(ir, at->pos_m, hit[i].dir, hit[i].d_m, hit[i].normal, det, at->axis, at->up,
+                                          ir->reflectivity, ir->gloss);
+    }
+    return sum;
+}
+
 double ir_received_frame(const ir_t *ir, world_t *w, const double pos_m[3], const double axis[3], const double left[3],
                          const double up[3])
 {
-    const ir_spec_t *s = ir->spec;
-    double sum = 0, det[3];
-    detector_at(ir, pos_m, up, det);
-    for (int i = 0; i < ir->nrays; i++) {
-        const double *o = ir->off[i];
-        double u[3], n[3];
-        for (int k = 0; k < 3; k++) u[k] = o[0] * axis[k] + o[1] * left[k] + o[2] * up[k];
-        double d = world_ray_normal(w, pos_m, u, s->max_m, n);
-        if (d < 0) continue;
-        sum += ir->weight[i] * ray_return(ir, pos_m, u, d, n, det, axis, up, ir->reflectivity, ir->gloss);
-    }
-    return sum;
+    sim_pose_t at;
+    world_hit_t hit[IR_MAX_RAYS];
+    for (int k = 0; k < 3; k++) at.pos_m[k] = pos_m[k], at.axis[k] = axis[k], at.left[k] = left[k], at.up[k] = up[k];
+    world_cast(w, &at, ir->nrays, (const double (*)[3])ir->off, ir->spec->max_m, hit);
+    return ir_received_hits(ir, &at, hit);
 }
 
 double ir_received_plane(const ir_t *ir, double d_m, double tilt_rad, double rho, double gloss)
@@ -232,25 +237,25 @@ double ir_received(const ir_t *ir, world_t *w, const double pos_m[3], double dir
     return ir_received_frame(ir, w, pos_m, a, l, u);
 }
 
-int ir_read_frame(ir_t *ir, world_t *w, const double pos_m[3], const double axis[3], const double left[3], const double up[3],
-                  int emitter_on)
+int ir_counts(ir_t *ir, double received)
 {
     const ir_spec_t *s = ir->spec;
     double v = s->ambient_counts + s->noise_counts * rng_gauss(&ir->rng);
-    if (emitter_on) v += s->gain_counts * s->ref_m * s->ref_m * ir_received_frame(ir, w, pos_m, axis, left, up);
+    v += s->gain_counts * s->ref_m * s->ref_m * received;
     double top = ir_full_scale(ir);
     v = floor(v + 0.5);
     return v < 0 ? 0 : v > top ? (int)top : (int)v;
 }
 
+int ir_read_frame(ir_t *ir, world_t *w, const double pos_m[3], const double axis[3], const double left[3], const double up[3],
+                  int emitter_on)
+{
+    return ir_counts(ir, emitter_on ? ir_received_frame(ir, w, pos_m, axis, left, up) : 0);
+}
+
 int ir_read_object(ir_t *ir, double d_m, int emitter_on)
 {
-    const ir_spec_t *s = ir->spec;
-    double v = s->ambient_counts + s->noise_counts * rng_gauss(&ir->rng);
-    if (emitter_on) v += s->gain_counts * s->ref_m * s->ref_m * ir_received_plane(ir, d_m, 0, 1, 0);
-    double top = ir_full_scale(ir);
-    v = floor(v + 0.5);
-    return v < 0 ? 0 : v > top ? (int)top : (int)v;
+    return ir_counts(ir, emitter_on ? ir_received_plane(ir, d_m, 0, 1, 0) : 0);
 }
 
 int ir_read(ir_t *ir, world_t *w, const double pos_m[3], double dir_rad, int emitter_on)
@@ -317,14 +322,17 @@ int ir_sample(void *state, const robot_part_t *p, const sensor_ctx_t *x)
 {
     ir_state_t *st = state;
     int on = x->emitter[(int)((const ir_part_spec_t *)p->spec)->emitter & 3] != 0;
-    double pos[3], axis[3], left[3], up[3];
-    int v;
-    if (x->t_s < st->object_until_s) {
-        v = ir_read_object(&st->ir, st->object_m, on);
-    } else {
-        sensor_frame(x->world, sensor_pose(x->model, p), pos, axis, left, up);
-        v = ir_read_frame(&st->ir, x->world, pos, axis, left, up, on);
+    double received = 0;
+    if (on && x->t_s < st->object_until_s) {
+        received = ir_received_plane(&st->ir, st->object_m, 0, 1, 0);
+    } else if (on) { /* with the emitter off no ray is cast */
+        sim_pose_t at;
+        world_hit_t hit[IR_MAX_RAYS];
+        world_body_cast(x->world, sensor_pose(x->model, p), st->ir.nrays, (const double (*)[3])st->ir.off,
+                        st->ir.spec->max_m, &at, hit);
+        received = ir_received_hits(&st->ir, &at, hit);
     }
+    int v = ir_counts(&st->ir, received);
     st->last[on] = v;
     st->count++;
     return v;

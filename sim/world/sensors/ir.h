@@ -145,6 +145,13 @@ double ir_received(const ir_t *ir, world_t *w, const double pos_m[3], double dir
  * left and up (unit vectors, world frame). */
 double ir_received_frame(const ir_t *ir, world_t *w, const double pos_m[3], const double axis[3], const double left[3],
                          const double up[3]);
+/* The light returned to the detector, 1/m^2, given what the sensor's rays
+ * (ir->off, ir->spec->max_m) hit from its place `at` (world_cast): the
+ * model alone, no world. */
+double ir_received_hits(const ir_t *ir, const sim_pose_t *at, const world_hit_t *hit);
+/* One ADC sample with this light returned to the detector (1/m^2; 0 with
+ * the emitter off): ambient, gain, one noise deviate, the ADC's rails. */
+int ir_counts(ir_t *ir, double received);
 /* One ADC sample at this frame (emitter on 1 or off 0). */
 int ir_read_frame(ir_t *ir, world_t *w, const double pos_m[3], const double axis[3], const double left[3], const double up[3],
                   int emitter_on);
