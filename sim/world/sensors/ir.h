@@ -55,6 +55,7 @@
 #define IR_MAX_RINGS 4
 #define IR_MAX_SKIRT_RINGS 8
 #define IR_MAX_PER_RING 16
+#define IR_MAX_DET_POINTS 14
 #define IR_MAX_RAYS (1 + (IR_MAX_RINGS + IR_MAX_SKIRT_RINGS) * IR_MAX_PER_RING)
 
 /* The model's numbers (plain data; ir_spec_default gives UKMARSBOT's). */
@@ -67,7 +68,16 @@ typedef struct {
     double skirt_rel;          /* relative intensity at 10 deg, 0..1 */
     double skirt_deg;          /* where it ends, deg */
     double skirt_rings;        /* rings of rays in it, 0..IR_MAX_SKIRT_RINGS */
-    double det_half_angle_deg; /* detector: half-sensitivity angle, deg */
+    double skirt_below;        /* the share of its rays below the axis that leave, 0..1 (0: a board under the emitter takes them) */
+    double det_half_angle_deg; /* detector: half-sensitivity angle, deg (its Gaussian profile) */
+    /* The detector's directional characteristic from its datasheet, when
+     * given (2 or more points): relative sensitivity det_rel[i] at
+     * det_deg[i] off its axis, increasing angles from 0, linear between
+     * them, 0 past the last; it replaces the Gaussian. */
+    double det_deg[IR_MAX_DET_POINTS];
+    int det_deg_n;
+    double det_rel[IR_MAX_DET_POINTS];
+    int det_rel_n;
     double cone_deg;           /* the outermost ring's angle off the axis, deg */
     double rings;              /* rings of rays about the centre ray, 0..IR_MAX_RINGS */
     double rays_per_ring;      /* 1..IR_MAX_PER_RING */
