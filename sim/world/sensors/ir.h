@@ -16,9 +16,11 @@
  *
  * (a Lambertian paint of reflectivity rho with a Phong gloss lobe of
  * reflectance gloss straight on and exponent m: the world's wall finish;
- * the detector's Gaussian profile D with the datasheet's half angle). The
- * weights w_i are the emitter's Gaussian profile times the solid angle each
- * ray stands for. Close to a wall the lit spot leaves the detector's cone
+ * the detector's profile D: a Gaussian of the datasheet's half angle, or
+ * the datasheet's directional characteristic when given). The weights w_i
+ * are the emitter's profile (its Gaussian beam and its skirt, the skirt's
+ * lower half taken by a board under the emitter when skirt_below is 0)
+ * times the solid angle each ray stands for. Close to a wall the lit spot leaves the detector's cone
  * (beta grows as det_offset / d): the reading peaks and falls off; the
  * gloss lobe leaves it too, and with any tilt of the wall (alpha grows as
  * twice the tilt). The sum is normalised by k0 = sum w_i D(th_i) cos^3(th_i),
