@@ -380,6 +380,31 @@ static void test_hits(void **state)
     world_destroy(w);
 }
 
+/* (12) A diagonal sensor's return from a wall ahead (mazerunner-core
+ * documents/sensors.md): centred in cell (1,1) facing north, ORION's left
+ * diagonal (22 mm left, 28 mm ahead, 45 deg) aims at the post face by the
+ * corner; a wall ahead meets its beam first and lifts its reading. */
+static void test_wall_ahead(void **state)
+{
+    (void)state;
+    ir_t ir = quiet();
+    double r[2];
+    for (int ahead = 0; ahead < 2; ahead++) {
+        truemaze_t m;
+        truemaze_init(&m, 4, 4);
+        for (uint16_t c = 0; c < 16; c++)
+            for (uint8_t d = 0; d < 4; d++) truemaze_set_wall(&m, (truemaze_cell_t)c, d, 0);
+        for (int y = 0; y < 4; y++) truemaze_set_wall(&m, truemaze_cell(&m, 1, (uint8_t)y), TRUEMAZE_WEST, 1);
+        if (ahead) truemaze_set_wall(&m, truemaze_cell(&m, 1, 1), TRUEMAZE_NORTH, 1);
+        world_t *w = world_create(&model, &m, 3.5 * cfg.world.cell_m, 3.5 * cfg.world.cell_m, 0);
+        assert_non_null(w);
+        double p[3] = { 1.5 * cfg.world.cell_m - 0.022, 1.5 * cfg.world.cell_m + 0.028, 0.036 };
+        r[ahead] = ir_received(&ir, w, p, 0.75 * M_PI);
+        world_destroy(w);
+    }
+    assert_true(r[0] > 0 && r[1] > 1.1 * r[0]);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -396,6 +421,7 @@ int main(void)
         cmocka_unit_test(test_detector_table),
         cmocka_unit_test(test_skirt_below),
         cmocka_unit_test(test_hits),
+        cmocka_unit_test(test_wall_ahead),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }
