@@ -772,6 +772,26 @@ double world_ray_normal(world_t *w, const double pos_m[3], const double dir[3], 
     return h.best;
 }
 
+void world_cast(world_t *w, const sim_pose_t *at, int n, const double (*off)[3], double max_m, world_hit_t *hit)
+{
+    for (int i = 0; i < n; i++) {
+        const double *o = off[i];
+        world_hit_t *h = &hit[i];
+        for (int k = 0; k < 3; k++) h->dir[k] = o[0] * at->axis[k] + o[1] * at->left[k] + o[2] * at->up[k];
+        h->d_m = world_ray_normal(w, at->pos_m, h->dir, max_m, h->normal);
+    }
+}
+
+void world_body_cast(world_t *w, const sim_pose_t *pose, int n, const double (*off)[3], double max_m, sim_pose_t *at,
+                     world_hit_t *hit)
+{
+    world_body_point(w, pose->pos_m, at->pos_m);
+    world_body_vector(w, pose->axis, at->axis);
+    world_body_vector(w, pose->left, at->left);
+    world_body_vector(w, pose->up, at->up);
+    world_cast(w, at, n, off, max_m, hit);
+}
+
 double world_ray(world_t *w, double x_m, double y_m, double z_m, double dir_rad, double max_m)
 {
     const double pos[3] = { x_m, y_m, z_m }, dir[3] = { cos(dir_rad), sin(dir_rad), 0 };

@@ -87,6 +87,20 @@ double world_ray(world_t *w, double x_m, double y_m, double z_m, double dir_rad,
  * the ray (normal . dir < 0; the IR sensor's angle of incidence). Distance
  * in m, -1 (normal 0) if nothing within max_m. */
 double world_ray_normal(world_t *w, const double pos_m[3], const double dir[3], double max_m, double normal[3]);
+/* One ray of a sensor's: its direction (world frame, unit length), the
+ * distance to the nearest surface along it (m; -1: none within the ray's
+ * length) and that surface's unit normal, facing the ray. */
+typedef struct {
+    double dir[3], d_m, normal[3];
+} world_hit_t;
+/* A sensor's n rays, each given in its own frame (off[i]: x along its
+ * axis, y left, z up), max_m long, cast from its place `at` (world frame):
+ * hit[i], what world_ray_normal returns for each. */
+void world_cast(world_t *w, const sim_pose_t *at, int n, const double (*off)[3], double max_m, world_hit_t *hit);
+/* The same for a sensor at `pose` on the chassis (its frame): where the
+ * chassis puts it now into *at (world frame), then its rays. */
+void world_body_cast(world_t *w, const sim_pose_t *pose, int n, const double (*off)[3], double max_m, sim_pose_t *at,
+                     world_hit_t *hit);
 
 /* Put the robot, at rest and level, with its body centre over (x_m, y_m)
  * facing heading_rad and its wheels at these angles (rad, positive =
