@@ -15,10 +15,11 @@
 # east column, the south-east dead end and the pocket above it; it enters
 # 60) with no contact, then, its flood fill finding no path, turns back and
 # forth in the pocket's x 14 column (best_neighbor_step returns BACK): the
-# side pair's slope and the turn after the dead end. Then the second run
+# side pair's slope and the turn after the dead end. mazes/gen-16x16-s1:
+# its search to the goal with no front or side contact. Then the second run
 # from test-maze-classic's flash: load_maze, the speed run to the goal with
 # no front or side contact, the flash unchanged.
-# Slow (about 1 s of CPU per simulated second): three runs side by side.
+# Slow (about 1 s of CPU per simulated second): four runs side by side.
 # Without ../shared: SKIP.
 set -u
 B=${BUILD:-build}
@@ -27,6 +28,7 @@ MMSIM=${MMSIM:-$B/mmsim}
 ELF=$B/clients/bulebule/src/main.elf
 M1=$SHARED/mazes/classic/test-maze-classic.txt
 M2=$SHARED/mazes/classic/001-anomaly-test.txt
+M3=mazes/gen-16x16-s1.txt
 T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
 . "$(dirname "$0")/lib.sh"
 mk() { env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory B="$B" SHARED="$SHARED" "$@"; }
@@ -40,7 +42,7 @@ IN="1 button; 3 button=1; 7 button=1; 18 occlude=fl; 18.5 occlude=fr; 19 occlude
 # enters its last cell at 50 s and turns back and forth from then on
 run() { nice "$MMSIM" --board bulebule --firmware "$ELF" --maze "$2" --json --input "$IN" --time-limit "$3" \
   --flash "$T/$1.bin" >"$T/$1.json" 2>"$T/$1.err"; echo $? >"$T/$1.rc"; }
-run a "$M1" 22 & run b "$M1" 22 & run c "$M2" 38 & wait
+run a "$M1" 22 & run b "$M1" 22 & run c "$M2" 38 & run e "$M3" 21 & wait
 jv() { python3 -c 'import json,sys; d=json.loads(open(sys.argv[1]).read().splitlines()[-1]); print(eval(sys.argv[2]))' "$1" "$2" 2>/dev/null; }
 # test-maze-classic: the goal, the whole search, the flash
 [ "$(jv "$T/a.json" "(d['exit_reason'], d['reached_goal'])")" = "('time_limit', True)" ] \
@@ -58,6 +60,10 @@ jv() { python3 -c 'import json,sys; d=json.loads(open(sys.argv[1]).read().splitl
 [ "$(strip "$T/a.json" | sed "s|$T/a.bin|FLASH|")" = "$(strip "$T/b.json" | sed "s|$T/b.bin|FLASH|")" ] \
   && ok "the same JSON twice" || bad "two runs differ"
 cmp -s "$T/a.bin" "$T/b.bin" && ok "the same flash twice" || bad "the flash files differ"
+# gen-16x16-s1: the goal 17.2 s after leaving the start, no front or side contact on the way
+[ "$(jv "$T/e.json" "(d['reached_goal'], d['contacts']['front'] + d['contacts']['side'])")" = "(True, 0)" ] \
+  && ok "gen-16x16-s1: its search reaches the goal in $(jv "$T/e.json" "d['laps'][0]['run_s']") s, no front or side wall contact" \
+  || bad "gen-16x16-s1: exit $(cat "$T/e.rc"): $(jv "$T/e.json" "(d['exit_reason'], d['reached_goal'], d['contacts'])") $(head -1 "$T/e.err")"
 # the second run (GUIDE-firmware "A second run"): the same flash reloaded (a press opens the reuse
 # menu, a short press loads the maze, a long press the lowest force, a hand): its speed run to the goal
 cp "$T/a.bin" "$T/d.bin"
