@@ -15,19 +15,29 @@
 #define DIES_MAX 1000000 /* top-level entries searched in all, a bound for a crafted image */
 #define TYPE_DEPTH_MAX 16 /* typedef/volatile/const links followed to the base type */
 
-/* Does die define the variable name at elf_addr? */
-static int is_var(Dwarf_Die *die, const char *name, uint32_t elf_addr)
+/* Is die a variable named name? -1 no; 0 yes, without a location that starts
+ * with DW_OP_addr; 1 yes, that address into *addr and the location's length into *nops. */
+static int var_named(Dwarf_Die *die, const char *name, uint32_t *addr, size_t *nops)
 {
-    if (dwarf_tag(die) != DW_TAG_variable) return 0;
+    if (dwarf_tag(die) != DW_TAG_variable) return -1;
     const char *n = dwarf_diename(die);
-    if (!n || strcmp(n, name) != 0) return 0;
+    if (!n || strcmp(n, name) != 0) return -1;
     Dwarf_Attribute a;
     Dwarf_Op *ops;
-    size_t nops;
-    if (dwarf_attr(die, DW_AT_location, &a) && dwarf_getlocation(&a, &ops, &nops) == 0 && nops >= 1 &&
-        ops[0].atom == DW_OP_addr && ops[0].number != elf_addr)
+    if (!dwarf_attr(die, DW_AT_location, &a) || dwarf_getlocation(&a, &ops, nops) != 0 || *nops < 1 ||
+        ops[0].atom != DW_OP_addr)
         return 0;
+    *addr = (uint32_t)ops[0].number;
     return 1;
+}
+
+/* Does die define the variable name at elf_addr (or with no address of its own)? */
+static int is_var(Dwarf_Die *die, const char *name, uint32_t elf_addr)
+{
+    uint32_t at = 0;
+    size_t nops = 0;
+    int k = var_named(die, name, &at, &nops);
+    return k == 0 || (k == 1 && at == elf_addr);
 }
 
 /* The entry die's DW_AT_type into *out: 0, or -1 (none). */
@@ -121,16 +131,10 @@ static int search(Dwarf *dw, uint32_t elf_addr, elfvar_t *v, char *err, size_t e
 /* Does die define a variable named name with a DW_OP_addr location in [lo, hi)? Its address into *addr. */
 static int is_placed_var(Dwarf_Die *die, const char *name, uint32_t lo, uint32_t hi, uint32_t *addr)
 {
-    if (dwarf_tag(die) != DW_TAG_variable) return 0;
-    const char *n = dwarf_diename(die);
-    if (!n || strcmp(n, name) != 0) return 0;
-    Dwarf_Attribute a;
-    Dwarf_Op *ops;
-    size_t nops;
-    if (!dwarf_attr(die, DW_AT_location, &a) || dwarf_getlocation(&a, &ops, &nops) != 0 || nops != 1 ||
-        ops[0].atom != DW_OP_addr || ops[0].number < lo || ops[0].number >= hi)
-        return 0;
-    *addr = (uint32_t)ops[0].number;
+    uint32_t at = 0;
+    size_t nops = 0;
+    if (var_named(die, name, &at, &nops) != 1 || nops != 1 || at < lo || at >= hi) return 0;
+    *addr = at;
     return 1;
 }
 
