@@ -21,7 +21,7 @@ typedef struct {
     char *tail;                   /* ring: byte i of the stream at tail[i % CONSOLE_TAIL] */
     char look[CONSOLE_LOOK_MAX + 1];
     size_t look_len;              /* 0: nothing looked for */
-    uint64_t look_at;             /* the stream's length when the text ended (0: not yet) */
+    uint64_t look_at;             /* the stream's length when the text ended (0: not seen) */
     FILE *echo;                   /* every byte echoed live; NULL: none */
 } console_t;
 

@@ -81,7 +81,7 @@ import json; c={k['name']:k['kind'] for k in json.loads(open('$T/out').read().sp
 assert all(c[n] == 'fitted' for n in ('forward_km', 'forward_tm', 'rotation_km', 'rotation_tm', 'counts_500mm_left', 'ir_lfs_backed'))
 " && ok "ukmarsbot: ORION's KM, TM, counts and IR calibration are fitted" || bad "ukmarsbot kinds"
 # each wheel's speed per volt is the same spinning as driving (a rigid robot with symmetric motors: rotation KM x the
-# half track 38.7 mm against forward KM, within 1 %), the ground of docs/robots/ukmarsbot-sources.md's issue 41 look
+# half track 38.7 mm against forward KM, within 1 %), the ground of docs/robots/ukmarsbot-sources.md section 7's measurement check
 python3 -c "
 import json, math; c={k['name']:k['measured'] for k in json.loads(open('$T/out').read().splitlines()[-1])['checks']}
 spin = c['rotation_km'] * math.pi / 180 * 38.7
