@@ -97,7 +97,8 @@ static void sample(stm32_adcseq_t *s, uint64_t t)
     s->sample_at = MMIO_NEVER;
 }
 
-/* RM0008 11.3.7: the watchdog on the regular (AWDEN) or injected (JAWDEN) results, one channel with AWDSGL. */
+/* RM0008 11.3.7: the watchdog on the regular (AWDEN) or injected (JAWDEN) results, one channel with AWDSGL
+ * (the F4 keeps neither bit: its watchdog is not modeled). */
 static void watchdog(stm32_adcseq_t *s)
 {
     uint32_t cr1 = s->cr1;

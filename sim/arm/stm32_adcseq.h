@@ -90,14 +90,14 @@ struct stm32_adcseq {
     const stm32_adcseq_family_t *fam;
     mmio_dma_req_t dma;          /* .request NULL: no DMA */
     unsigned dma_line;           /* the request's number on dma */
-    double vref_v;               /* VREF+, V */
+    double vref_v;               /* VREF+, V (VDDA on packages without a VREF+ pin) */
     uint32_t cr1_keep, cr1_unmodeled; /* CR1's stored bits; those a write reports unmodeled */
     /* registers */
     uint32_t sr, cr1, cr2, smpr1, smpr2, jofr[4], htr, ltr, sqr1, sqr2, sqr3, jsqr, jdr[4], dr;
     /* state */
     uint64_t now;                /* the cycle advance() last reached */
-    uint64_t clear_at[2];        /* CR2 bits clear_bit[k] clear at clear_at[k] (MMIO_NEVER: none), k order in a cycle */
-    uint32_t clear_bit[2];
+    uint64_t clear_at[2];        /* a self-clearing CR2 bit, clear_bit[k], clears at clear_at[k] (MMIO_NEVER: none); */
+    uint32_t clear_bit[2];       /* the family's (the F1's RSTCAL, CAL), slot 0 first within a cycle */
     uint64_t reg_start, inj_start; /* a group's start (trigger + latency), MMIO_NEVER: none */
     bool reg_sw, inj_sw;         /* that start came from SWSTART / JSWSTART */
     int group;                   /* STM32_ADCSEQ_IDLE, _REG or _INJ: the group converting */
