@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "world/inifile.h"
+#include "world/inisec.h"
 #include "world/keytab.h"
 #include "world/robot.h"
 #include "world/sensors/ir.h"
@@ -214,10 +215,9 @@ static const char *const kinds[3] = { "emitter.", "led.", "button." };
 static const int kind_max[3] = { SIM_EMITTER_GROUPS, STM32BOARD_LEDS_MAX, STM32BOARD_BUTTONS_MAX };
 
 typedef struct {
-    const char *path;
+    inisec_t ini;               /* the file, its fixed sections' lines, the error */
     stm32board_spec_t work;
     uint64_t seen;              /* keys[] given */
-    int line[N(fixed)];         /* each fixed section's line, 0: none */
     uint64_t part_seen[3][SIM_EMITTER_GROUPS > STM32BOARD_LEDS_MAX ? SIM_EMITTER_GROUPS : STM32BOARD_LEDS_MAX];
     char *err;
     size_t errn;
@@ -244,11 +244,7 @@ static stm32_gpio_part_t *named(sload_t *l, const char *section, int *kind)
 static int on_section(void *user, const char *section, int line, char *why, size_t len)
 {
     sload_t *l = user;
-    for (size_t i = 0; i < N(fixed); i++)
-        if (!strcmp(section, fixed[i])) {
-            if (!l->line[i]) l->line[i] = line;
-            return 0;
-        }
+    if (inisec_section(&l->ini, section, line) >= 0) return 0;
     int kind;
     if (named(l, section, &kind) || kind < 0) {
         if (kind >= 0) return 0; /* the part's section again */
@@ -273,38 +269,14 @@ static int on_section(void *user, const char *section, int line, char *why, size
 static int on_key(void *user, const char *section, const char *key, const char *val, char *why, size_t len)
 {
     sload_t *l = user;
-    if (!*section) {
-        snprintf(why, len, "%s: a key outside any [section]", key);
-        return -1;
-    }
     int kind;
     stm32_gpio_part_t *p = named(l, section, &kind);
-    const keytab_t *k = p ? keytab_find(part_keys[kind], 2, NULL, key) : keytab_find(keys, N(keys), section, key);
-    if (!k) {
-        snprintf(why, len, "%s.%s: unknown key", section, key);
-        return -1;
-    }
+    const keytab_t *k = p ? inisec_key(section, key, part_keys[kind], 2, NULL, why, len)
+                          : inisec_key(section, key, keys, N(keys), section, why, len);
+    if (!k) return -1;
     if (keytab_set(k, p ? (void *)p : (void *)&l->work, section, val, why, len) != 0) return -1;
     if (p) l->part_seen[kind][p - parts(&l->work, kind)] |= 1ull << (k - part_keys[kind]);
     else l->seen |= 1ull << (k - keys);
-    return 0;
-}
-
-/* The load's error at line (0: none); returns -1. */
-static int fail(sload_t *l, int line, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
-static int fail(sload_t *l, int line, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    inifile_verror(l->err, l->errn, l->path, line, fmt, ap);
-    va_end(ap);
-    return -1;
-}
-
-static int line_of(const sload_t *l, const char *section)
-{
-    for (size_t i = 0; i < N(fixed); i++)
-        if (!strcmp(section, fixed[i])) return l->line[i];
     return 0;
 }
 
@@ -314,15 +286,15 @@ static int missing(sload_t *l)
     uint64_t seen = l->seen;
     for (size_t i = 0; i < N(keys); i++)
         for (size_t s = FIXED_REQUIRED; s < N(fixed); s++)
-            if (!strcmp(keys[i].section, fixed[s]) && !l->line[s]) seen |= 1ull << i;
+            if (!strcmp(keys[i].section, fixed[s]) && !l->ini.line[s]) seen |= 1ull << i;
     const keytab_t *k = keytab_missing(keys, N(keys), seen);
-    if (k && line_of(l, k->section)) return fail(l, line_of(l, k->section), "%s.%s: missing", k->section, k->key);
-    if (k) return fail(l, 0, "%s.%s: missing (no [%s] section)", k->section, k->key, k->section);
+    if (k && inisec_line(&l->ini, k->section)) return inisec_fail(&l->ini, inisec_line(&l->ini, k->section), "%s.%s: missing", k->section, k->key);
+    if (k) return inisec_fail(&l->ini, 0, "%s.%s: missing (no [%s] section)", k->section, k->key, k->section);
     for (int kind = 0; kind < 3; kind++)
         for (int i = 0; i < *count(&l->work, kind); i++) {
             const stm32_gpio_part_t *p = &parts(&l->work, kind)[i];
             if ((k = keytab_missing(part_keys[kind], 2, l->part_seen[kind][i])) != NULL)
-                return fail(l, p->line, "%s%s.%s: missing", kinds[kind], p->name, k->key);
+                return inisec_fail(&l->ini, p->line, "%s%s.%s: missing", kinds[kind], p->name, k->key);
         }
     return 0;
 }
@@ -345,11 +317,11 @@ static int claim(sload_t *l, claims_t *c, stm32_pin_t p, int line, const char *f
     vsnprintf(who, sizeof who, fmt, ap);
     va_end(ap);
     if (!on_package(l->work.package, p))
-        return fail(l, line, "%s: P%c%d: the %s's %d-pin package has no such pin (DS5319 Table 5)", who, p.port, p.bit, l->work.mcu,
+        return inisec_fail(&l->ini, line, "%s: P%c%d: the %s's %d-pin package has no such pin (DS5319 Table 5)", who, p.port, p.bit, l->work.mcu,
                     l->work.package == 'C' ? 48 : l->work.package == 'R' ? 64 : 100);
     for (int i = 0; i < c->n; i++)
         if (c->pin[i].port == p.port && c->pin[i].bit == p.bit)
-            return fail(l, line, "%s: P%c%d is already wired to %s", who, p.port, p.bit, c->who[i]);
+            return inisec_fail(&l->ini, line, "%s: P%c%d is already wired to %s", who, p.port, p.bit, c->who[i]);
     if (c->n < (int)N(c->pin)) {
         c->pin[c->n] = p;
         snprintf(c->who[c->n], sizeof c->who[0], "%s", who);
@@ -368,20 +340,20 @@ typedef struct {
  * remap stays possible, no channel twice, an encoder's timer drives no PWM. */
 static int tch_on(sload_t *l, timers_t *t, const char *sec, const char *key, const char *pin_key, stm32_tch_t ch, stm32_pin_t pin, int use)
 {
-    int line = line_of(l, sec);
+    int line = inisec_line(&l->ini, sec);
     char where[64];
     unsigned m = af_mask(tim_pins, N(tim_pins), ch.timer, ch.channel, pin);
     if (!m)
-        return fail(l, line, "%s.%s: P%c%d does not carry TIM%d_CH%d (it is on %s: RM0008 9.3.7)", sec, pin_key, pin.port, pin.bit, ch.timer,
+        return inisec_fail(&l->ini, line, "%s.%s: P%c%d does not carry TIM%d_CH%d (it is on %s: RM0008 9.3.7)", sec, pin_key, pin.port, pin.bit, ch.timer,
                     ch.channel, af_where(tim_pins, N(tim_pins), ch.timer, ch.channel, where, sizeof where));
     if (!(t->remap[ch.timer] & m))
-        return fail(l, line, "%s.%s: TIM%d's channels are on pins that need different AFIO remaps (RM0008 9.3.7)", sec, pin_key, ch.timer);
+        return inisec_fail(&l->ini, line, "%s.%s: TIM%d's channels are on pins that need different AFIO remaps (RM0008 9.3.7)", sec, pin_key, ch.timer);
     t->remap[ch.timer] &= m;
     if (t->use[ch.timer][ch.channel])
-        return fail(l, line, "%s.%s: TIM%d_CH%d is already in use", sec, key, ch.timer, ch.channel);
+        return inisec_fail(&l->ini, line, "%s.%s: TIM%d_CH%d is already in use", sec, key, ch.timer, ch.channel);
     for (int c = 1; c <= 4; c++)
         if (t->use[ch.timer][c] && t->use[ch.timer][c] != use)
-            return fail(l, line, "%s.%s: TIM%d also %s: a timer in encoder mode counts the wheel and drives no PWM", sec, key, ch.timer,
+            return inisec_fail(&l->ini, line, "%s.%s: TIM%d also %s: a timer in encoder mode counts the wheel and drives no PWM", sec, key, ch.timer,
                         use == 2 ? "drives a PWM output" : "reads an encoder");
     t->use[ch.timer][ch.channel] = use;
     return 0;
@@ -397,7 +369,7 @@ static int check_drive(sload_t *l, timers_t *t, claims_t *c)
         for (int i = 0; i < 2; i++) {
             const char *key = i ? "in2" : "in1", *pin_key = i ? "in2_pin" : "in1_pin";
             if (tch_on(l, t, sec, key, pin_key, sp->motor[m].in[i], sp->motor[m].in_pin[i], 1) ||
-                claim(l, c, sp->motor[m].in_pin[i], line_of(l, sec), "%s.%s", sec, pin_key))
+                claim(l, c, sp->motor[m].in_pin[i], inisec_line(&l->ini, sec), "%s.%s", sec, pin_key))
                 return -1;
         }
     }
@@ -405,18 +377,18 @@ static int check_drive(sload_t *l, timers_t *t, claims_t *c)
         stm32_encoder_t *en = &sp->enc[e];
         snprintf(sec, sizeof sec, "encoder.%s", side[e]);
         if (en->a.timer != en->b.timer || en->a.channel > 2 || en->b.channel > 2 || en->a.channel == en->b.channel)
-            return fail(l, line_of(l, sec), "%s.b: TIM%d_CH%d with a = TIM%d_CH%d: the encoder interface reads CH1 and CH2 of one timer "
+            return inisec_fail(&l->ini, inisec_line(&l->ini, sec), "%s.b: TIM%d_CH%d with a = TIM%d_CH%d: the encoder interface reads CH1 and CH2 of one timer "
                         "(TI1, TI2: RM0008 15.3.12)", sec, en->b.timer, en->b.channel, en->a.timer, en->a.channel);
         if (tch_on(l, t, sec, "a", "a_pin", en->a, en->a_pin, 2) || tch_on(l, t, sec, "b", "b_pin", en->b, en->b_pin, 2) ||
-            claim(l, c, en->a_pin, line_of(l, sec), "%s.a_pin", sec) || claim(l, c, en->b_pin, line_of(l, sec), "%s.b_pin", sec))
+            claim(l, c, en->a_pin, inisec_line(&l->ini, sec), "%s.a_pin", sec) || claim(l, c, en->b_pin, inisec_line(&l->ini, sec), "%s.b_pin", sec))
             return -1;
         en->ch1_leads = (en->a.channel == 1) == (en->a_leads != 0);
     }
-    if (line_of(l, "speaker") &&
+    if (inisec_line(&l->ini, "speaker") &&
         (tch_on(l, t, "speaker", "channel", "pin", sp->speaker, sp->speaker_pin, 1) ||
-         claim(l, c, sp->speaker_pin, line_of(l, "speaker"), "speaker.pin")))
+         claim(l, c, sp->speaker_pin, inisec_line(&l->ini, "speaker"), "speaker.pin")))
         return -1;
-    if (!line_of(l, "speaker")) sp->speaker = (stm32_tch_t){ 0, 0 };
+    if (!inisec_line(&l->ini, "speaker")) sp->speaker = (stm32_tch_t){ 0, 0 };
     return 0;
 }
 
@@ -424,10 +396,10 @@ static int check_drive(sload_t *l, timers_t *t, claims_t *c)
 static int check_buses(sload_t *l, claims_t *c)
 {
     stm32board_spec_t *sp = &l->work;
-    int line = line_of(l, "gyro");
+    int line = inisec_line(&l->ini, "gyro");
     if (line) {
         sp->gyro_spi += 1; /* the word's index: SPI1 = 0 */
-        if (sp->gyro_spi == 2 && sp->gyro_spi_remap) return fail(l, line, "gyro.spi_remap: SPI2 has no remap (RM0008 9.3.10)");
+        if (sp->gyro_spi == 2 && sp->gyro_spi_remap) return inisec_fail(&l->ini, line, "gyro.spi_remap: SPI2 has no remap (RM0008 9.3.10)");
         stm32_pin_t *bus[3] = { &sp->gyro_sck_pin, &sp->gyro_miso_pin, &sp->gyro_mosi_pin };
         static const char *const sig[3] = { "SCK", "MISO", "MOSI" };
         for (int i = 0; i < 3; i++) {
@@ -440,7 +412,7 @@ static int check_buses(sload_t *l, claims_t *c)
     } else {
         sp->gyro_spi = 0;
     }
-    if ((line = line_of(l, "console")) == 0) {
+    if ((line = inisec_line(&l->ini, "console")) == 0) {
         sp->console_usart = 0;
         return 0;
     }
@@ -449,9 +421,9 @@ static int check_buses(sload_t *l, claims_t *c)
     unsigned tx = af_mask(usart_pins, N(usart_pins), sp->console_usart, 0, sp->console_tx_pin);
     unsigned rx = af_mask(usart_pins, N(usart_pins), sp->console_usart, 1, sp->console_rx_pin);
     if (!tx || !rx)
-        return fail(l, line, "console.%s_pin: not USART%d_%s's pin (it is on %s: RM0008 9.3.8)", tx ? "rx" : "tx", sp->console_usart,
+        return inisec_fail(&l->ini, line, "console.%s_pin: not USART%d_%s's pin (it is on %s: RM0008 9.3.8)", tx ? "rx" : "tx", sp->console_usart,
                     tx ? "RX" : "TX", af_where(usart_pins, N(usart_pins), sp->console_usart, tx ? 1 : 0, where, sizeof where));
-    if (!(tx & rx)) return fail(l, line, "console.rx_pin: TX and RX need different USART%d remaps (RM0008 9.3.8)", sp->console_usart);
+    if (!(tx & rx)) return inisec_fail(&l->ini, line, "console.rx_pin: TX and RX need different USART%d remaps (RM0008 9.3.8)", sp->console_usart);
     if (claim(l, c, sp->console_tx_pin, line, "console.tx_pin") || claim(l, c, sp->console_rx_pin, line, "console.rx_pin")) return -1;
     return 0;
 }
@@ -461,21 +433,21 @@ static int check(sload_t *l)
     stm32board_spec_t *sp = &l->work;
     claims_t *c = calloc(1, sizeof *c);
     timers_t t;
-    if (!c) return fail(l, 0, "out of memory");
+    if (!c) return inisec_fail(&l->ini, 0, "out of memory");
     for (int i = 1; i <= 4; i++) t.remap[i] = 0xF;
     memset(t.use, 0, sizeof t.use);
     int rc = check_drive(l, &t, c) || check_buses(l, c) ? -1 : 0;
     sp->bat_pin = stm32board_adc_pin(sp, sp->bat_channel);
     if (!rc && !sp->bat_pin.port)
-        rc = fail(l, line_of(l, "battery"), "battery.adc_channel: %d: the %s has ADC12_IN0-%d only (DS5319 Table 2)", sp->bat_channel, sp->mcu,
+        rc = inisec_fail(&l->ini, inisec_line(&l->ini, "battery"), "battery.adc_channel: %d: the %s has ADC12_IN0-%d only (DS5319 Table 2)", sp->bat_channel, sp->mcu,
                   sp->adc_channels - 1);
-    if (!rc) rc = claim(l, c, sp->bat_pin, line_of(l, "battery"), "battery.adc_channel (ADC12_IN%d)", sp->bat_channel);
+    if (!rc) rc = claim(l, c, sp->bat_pin, inisec_line(&l->ini, "battery"), "battery.adc_channel (ADC12_IN%d)", sp->bat_channel);
     for (int kind = 0; kind < 3 && !rc; kind++)
         for (int i = 0; i < *count(sp, kind) && !rc; i++) {
             const stm32_gpio_part_t *p = &parts(sp, kind)[i];
             rc = claim(l, c, p->pin, p->line, "%s%s.pin", kinds[kind], p->name);
             for (int j = 0; j < i && !rc && kind == 0; j++)
-                if (sp->emitter[j].group == p->group) rc = fail(l, p->line, "emitter.%s.group: emitter.%s lights that group", p->name, sp->emitter[j].name);
+                if (sp->emitter[j].group == p->group) rc = inisec_fail(&l->ini, p->line, "emitter.%s.group: emitter.%s lights that group", p->name, sp->emitter[j].name);
         }
     free(c);
     return rc;
@@ -493,7 +465,7 @@ static int check_mcu(sload_t *l)
             sp->adc_channels = mcus[i].package == 'C' ? 10 : 16; /* DS5319 Table 2 */
             return 0;
         }
-    return fail(l, line_of(l, "board"), "board.mcu: '%s': not an STM32 this board file knows (stm32f103c8, stm32f103cb, "
+    return inisec_fail(&l->ini, inisec_line(&l->ini, "board"), "board.mcu: '%s': not an STM32 this board file knows (stm32f103c8, stm32f103cb, "
                 "stm32f103r8, stm32f103rb, stm32f103v8, stm32f103vb)", sp->mcu);
 }
 
@@ -504,9 +476,7 @@ int stm32board_load(stm32board_spec_t *spec, const char *path, char *err, size_t
         snprintf(err, errn, "%s: out of memory", path);
         return -1;
     }
-    l->path = path;
-    l->err = err;
-    l->errn = errn;
+    inisec_init(&l->ini, path, err, errn, fixed, N(fixed));
     keytab_defaults(keys, N(keys), &l->work);
     const inifile_t r = { on_section, on_key, l, "want key = value or [section]" };
     int rc = inifile_load(&r, path, STM32BOARD_MAX_BYTES, err, errn);

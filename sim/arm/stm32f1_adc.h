@@ -12,6 +12,7 @@
 #include <stdint.h>
 
 #include "arm/mmio.h"
+#include "arm/stm32_adcseq.h"
 
 #define STM32_ADC1_BASE 0x40012400u
 #define STM32_ADC2_BASE 0x40012800u
@@ -37,32 +38,15 @@ enum {
 
 typedef struct stm32_adc stm32_adc_t;
 struct stm32_adc {
+    stm32_adcseq_t seq;          /* the registers and the conversion engine (first: the ops take the model) */
     /* wiring, kept across reset */
     const mmio_clocks_t *clk;
     mmio_irq_t irq;
-    mmio_dma_req_t dma;          /* .request NULL: no DMA (ADC2) */
-    unsigned dma_channel;
     stm32_adc_volts_fn volts;
     void *volts_ctx;
     unsigned index;              /* 1 or 2: channels 16/17 exist on ADC1 only */
-    double vref_v;               /* VREF+, V (VDDA on 36/48-pin parts) */
     double temp_c;               /* the die temperature the sensor sees, degC */
     stm32_adc_t *partner;        /* the other ADC on the shared IRQ line, or NULL */
-    /* registers (RM0008 11.12) */
-    uint32_t sr, cr1, cr2, smpr1, smpr2, jofr[4], htr, ltr, sqr1, sqr2, sqr3, jsqr, jdr[4], dr;
-    /* state */
-    uint64_t now;                /* the cycle advance() last reached */
-    uint64_t rstcal_end, cal_end;
-    uint64_t reg_start, inj_start; /* a group's start (trigger + latency), MMIO_NEVER: none */
-    bool reg_sw, inj_sw;         /* that start came from SWSTART / JSWSTART */
-    int group;                   /* 0 idle, 1 regular, 2 injected: the group converting */
-    unsigned pos;                /* the rank converting within its group */
-    unsigned reg_pos;            /* the regular rank to resume after an injected group */
-    bool reg_resume;             /* an injected group interrupted the regular group */
-    uint64_t sample_at, end_at;  /* the conversion's sampling instant and end, MMIO_NEVER: none */
-    unsigned channel;            /* the channel converting */
-    uint16_t code;               /* its 12-bit result once sampled */
-    bool dma_level, irq_level;
 };
 
 extern const mmio_ops_t stm32_adc_ops;

@@ -61,22 +61,12 @@ static void set_flags(stm32_dma_t *d, unsigned i, unsigned f)
     update_irq(d, i);
 }
 
-static bool ready(const stm32_dma_chan_t *c)
+/* Ready: EN, CNDTR > 0 and the request high, or MEM2MEM (13.3.3); PL, CCR's priority level (13.3.2). */
+static unsigned ready_pl(const void *ctl, unsigned i)
 {
-    return (c->ccr & CCR_EN) && c->cndtr > 0 && (c->req || (c->ccr & CCR_MEM2MEM));
-}
-
-/* The channel the arbiter serves next, -1 if none (RM0008 13.3.2). */
-static int arbitrate(const stm32_dma_t *d)
-{
-    int best = -1;
-    unsigned best_pl = 0;
-    for (unsigned i = 0; i < STM32_DMA_CHANNELS; i++) {
-        const stm32_dma_chan_t *c = &d->ch[i];
-        unsigned pl = (c->ccr >> CCR_PL_SHIFT) & 3u;
-        if (ready(c) && (best < 0 || pl > best_pl)) { best = (int)i; best_pl = pl; }
-    }
-    return best;
+    const stm32_dma_chan_t *c = &((const stm32_dma_t *)ctl)->ch[i];
+    bool ready = (c->ccr & CCR_EN) && c->cndtr > 0 && (c->req || (c->ccr & CCR_MEM2MEM));
+    return ready ? ((c->ccr >> CCR_PL_SHIFT) & 3u) + 1u : 0u;
 }
 
 static unsigned size_bytes(uint32_t ccr, unsigned shift)
@@ -112,44 +102,32 @@ unsigned stm32_dma_count(uint32_t *ndtr, uint32_t *done, uint32_t reload, bool c
     return f;
 }
 
-/* One transfer of channel i; false: a bus error. */
-static bool transfer(stm32_dma_t *d, unsigned i)
+unsigned stm32_dma_step(mmio_bus_t bus, const stm32_dma_item_t *it, uint32_t *ndtr, uint32_t *done, uint32_t reload,
+                        bool circular)
 {
-    const stm32_dma_chan_t *c = &d->ch[i];
-    stm32_dma_item_t it = { c->cpar, c->cmar, size_bytes(c->ccr, CCR_PSIZE_SHIFT), size_bytes(c->ccr, CCR_MSIZE_SHIFT),
-                            (c->ccr & CCR_PINC) != 0, (c->ccr & CCR_MINC) != 0, (c->ccr & CCR_DIR) != 0 };
-    return stm32_dma_move(d->bus, &it, c->done);
+    if (!stm32_dma_move(bus, it, *done)) return STM32_DMA_TE;
+    return stm32_dma_count(ndtr, done, reload, circular);
 }
 
-static void serve(stm32_dma_t *d, unsigned i)
+/* One transfer of channel i; a bus error clears EN (13.3.5). */
+static void serve(void *ctl, unsigned i)
 {
+    stm32_dma_t *d = ctl;
     stm32_dma_chan_t *c = &d->ch[i];
-    if (!transfer(d, i)) {
-        c->ccr &= ~CCR_EN; /* RM0008 13.3.5 */
-        set_flags(d, i, F_TEIF);
-        return;
-    }
-    unsigned k = stm32_dma_count(&c->cndtr, &c->done, c->reload, (c->ccr & CCR_CIRC) != 0);
-    unsigned f = ((k & STM32_DMA_HT) ? F_HTIF : 0u) | ((k & STM32_DMA_TC) ? F_TCIF : 0u);
+    uint32_t ccr = c->ccr;
+    stm32_dma_item_t it = { c->cpar, c->cmar, size_bytes(ccr, CCR_PSIZE_SHIFT), size_bytes(ccr, CCR_MSIZE_SHIFT),
+                            (ccr & CCR_PINC) != 0, (ccr & CCR_MINC) != 0, (ccr & CCR_DIR) != 0 };
+    unsigned k = stm32_dma_step(d->bus, &it, &c->cndtr, &c->done, c->reload, (ccr & CCR_CIRC) != 0);
+    if (k & STM32_DMA_TE) c->ccr &= ~CCR_EN;
+    unsigned f = stm32_dma_flags(k, F_TEIF, F_HTIF, F_TCIF);
     if (f) set_flags(d, i, f);
 }
 
-static void dma_advance(void *self, uint64_t now)
-{
-    stm32_dma_t *d = self;
-    if (now > d->now) d->now = now;
-    for (unsigned n = 0; n < MAX_TRANSFERS_PER_ADVANCE; n++) {
-        int i = arbitrate(d);
-        if (i < 0) break;
-        serve(d, (unsigned)i);
-    }
-}
+static const stm32_dma_arbiter_t arbiter = { STM32_DMA_CHANNELS, MAX_TRANSFERS_PER_ADVANCE, ready_pl, serve };
 
-static uint64_t dma_next_event(void *self)
-{
-    const stm32_dma_t *d = self;
-    return arbitrate(d) >= 0 ? d->now : MMIO_NEVER;
-}
+static void dma_advance(void *self, uint64_t now) { stm32_dma_run(&arbiter, self, &((stm32_dma_t *)self)->now, now); }
+
+static uint64_t dma_next_event(void *self) { return stm32_dma_next(&arbiter, self, ((const stm32_dma_t *)self)->now); }
 
 void stm32_dma_request(void *dma, unsigned channel, bool level)
 {

@@ -57,5 +57,56 @@ bool stm32_dma_move(mmio_bus_t bus, const stm32_dma_item_t *it, uint32_t done);
 #define STM32_DMA_HT 1u
 #define STM32_DMA_TC 2u
 unsigned stm32_dma_count(uint32_t *ndtr, uint32_t *done, uint32_t reload, bool circular);
+/* One item moved (stm32_dma_move) and, moved, counted (stm32_dma_count):
+ * STM32_DMA_TE on a bus error (nothing counted), else the count's HT/TC. */
+#define STM32_DMA_TE 4u
+unsigned stm32_dma_step(mmio_bus_t bus, const stm32_dma_item_t *it, uint32_t *ndtr, uint32_t *done, uint32_t reload,
+                        bool circular);
+/* A controller's flags of a step's: te, ht and tc for STM32_DMA_TE, _HT and _TC. */
+static inline unsigned stm32_dma_flags(unsigned k, unsigned te, unsigned ht, unsigned tc)
+{
+    return ((k & STM32_DMA_TE) ? te : 0u) | ((k & STM32_DMA_HT) ? ht : 0u) | ((k & STM32_DMA_TC) ? tc : 0u);
+}
+
+/* The arbiter and service loop both controllers share (RM0008 13.3.2,
+ * RM0090 10.3.4): among the channels (streams) ready, the highest priority
+ * level PL, then the lowest number, is served one transfer; then again,
+ * until none is ready. Inline, so that each controller's calls take its own
+ * functions directly. */
+typedef struct {
+    unsigned count;          /* channels or streams */
+    unsigned max_transfers;  /* a guard against a request that never falls in circular mode (a peripheral model's bug) */
+    unsigned (*ready_pl)(const void *ctl, unsigned i); /* channel i's PL + 1 when it is ready, 0 when not */
+    void (*serve)(void *ctl, unsigned i);              /* one transfer of channel i */
+} stm32_dma_arbiter_t;
+
+/* The channel served next, -1 if none. */
+static inline int stm32_dma_arbitrate(const stm32_dma_arbiter_t *a, const void *ctl)
+{
+    int best = -1;
+    unsigned best_pl = 0;
+    for (unsigned i = 0; i < a->count; i++) {
+        unsigned pl = a->ready_pl(ctl, i);
+        if (pl > best_pl) { best = (int)i; best_pl = pl; }
+    }
+    return best;
+}
+
+/* The controller advanced to now (*at: the cycle it reached, where transfers happen). */
+static inline void stm32_dma_run(const stm32_dma_arbiter_t *a, void *ctl, uint64_t *at, uint64_t now)
+{
+    if (now > *at) *at = now;
+    for (unsigned n = 0; n < a->max_transfers; n++) {
+        int i = stm32_dma_arbitrate(a, ctl);
+        if (i < 0) break;
+        a->serve(ctl, (unsigned)i);
+    }
+}
+
+/* next_event: the cycle reached while a channel is ready (its transfer is due there), else none. */
+static inline uint64_t stm32_dma_next(const stm32_dma_arbiter_t *a, const void *ctl, uint64_t at)
+{
+    return stm32_dma_arbitrate(a, ctl) >= 0 ? at : MMIO_NEVER;
+}
 
 #endif

@@ -82,7 +82,7 @@ static void trigger_wants(stm32f1_soc_t *s)
 {
     uint32_t m[4] = { 0 };
     for (unsigned a = 0; a < 2; a++) {
-        uint32_t cr2 = s->adc[a].cr2;
+        uint32_t cr2 = s->adc[a].seq.cr2;
         unsigned src[2] = { (cr2 & (1u << 20)) ? stm32f1_adc_extsel[0][(cr2 >> 17) & 7u] : STM32F1_ADC_NOT_TIM,
                             (cr2 & (1u << 15)) ? stm32f1_adc_extsel[1][(cr2 >> 12) & 7u] : STM32F1_ADC_NOT_TIM };
         for (unsigned g = 0; g < 2; g++)

@@ -14,6 +14,7 @@
 #include <stdint.h>
 
 #include "arm/mmio.h"
+#include "arm/stm32_adcseq.h"
 
 #define STM32F4_ADC_BASE(n)    (0x40012000u + 0x100u * ((n) - 1u)) /* ADC1..3 */
 #define STM32F4_ADC_SIZE       0x100u
@@ -42,30 +43,13 @@ enum {
 typedef struct stm32f4_adc_common stm32f4_adc_common_t;
 
 typedef struct {
+    stm32_adcseq_t seq;          /* the registers and the conversion engine (first: the ops take the model) */
     /* wiring, kept across reset */
     stm32f4_adc_common_t *common;
-    mmio_dma_req_t dma;
-    unsigned dma_request;        /* its stm32f4_dreq_t */
     stm32f4_adc_volts_fn volts;
     void *volts_ctx;
     unsigned index;              /* 1..3: channels 16-18 are ADC1's */
-    double vref_v;               /* VREF+, V */
     double temp_c;               /* the die temperature, degC */
-    /* registers (RM0090 13.13) */
-    uint32_t sr, cr1, cr2, smpr1, smpr2, jofr[4], htr, ltr, sqr1, sqr2, sqr3, jsqr, jdr[4], dr;
-    /* state */
-    uint64_t now;
-    uint64_t reg_start, inj_start; /* a group's start (trigger + latency), MMIO_NEVER: none */
-    bool reg_sw, inj_sw;
-    int group;                   /* 0 idle, 1 regular, 2 injected */
-    unsigned pos, reg_pos;
-    bool reg_resume;
-    uint64_t sample_at, end_at;
-    unsigned channel;
-    uint16_t code;
-    bool dr_unread;              /* a regular result not yet read (overrun detection, 13.8.1) */
-    bool dma_level, irq_level;
-    unsigned long conversions;   /* regular and injected, since power-on */
 } stm32f4_adc_t;
 
 struct stm32f4_adc_common {

@@ -160,22 +160,13 @@ static void acknowledge(stm32f4_dma_t *d, unsigned i)
     for (unsigned k = 0; k < STM32F4_DREQ_PER_CELL && cell[k]; k++) d->pending[cell[k]] = false;
 }
 
-static bool ready(const stm32f4_dma_t *d, unsigned i)
+/* Ready: EN, NDTR > 0 and its request (10.3.3), a valid DIR; PL, CR's priority level (10.3.4). */
+static unsigned ready_pl(const void *ctl, unsigned i)
 {
+    const stm32f4_dma_t *d = ctl;
     const stm32f4_dma_stream_t *s = &d->s[i];
-    return (s->cr & CR_EN) && s->ndtr > 0 && dir(s) != 3u && requested(d, i);
-}
-
-/* The stream the arbiter serves next, -1 if none (10.3.4). */
-static int arbitrate(const stm32f4_dma_t *d)
-{
-    int best = -1;
-    unsigned best_pl = 0;
-    for (unsigned i = 0; i < STM32F4_DMA_STREAMS; i++) {
-        unsigned pl = (d->s[i].cr >> CR_PL_SHIFT) & 3u;
-        if (ready(d, i) && (best < 0 || pl > best_pl)) { best = (int)i; best_pl = pl; }
-    }
-    return best;
+    bool ready = (s->cr & CR_EN) && s->ndtr > 0 && dir(s) != 3u && requested(d, i);
+    return ready ? ((s->cr >> CR_PL_SHIFT) & 3u) + 1u : 0u;
 }
 
 static unsigned size_bytes(uint32_t cr, unsigned shift)
@@ -184,47 +175,27 @@ static unsigned size_bytes(uint32_t cr, unsigned shift)
     return s == 0 ? 1 : s == 1 ? 2 : 4; /* 11 reserved: taken as 32 bits */
 }
 
-/* One transfer of stream i (stm32_dma_move, the F1's step); false: a bus error. The peripheral port is
- * PAR (the source in memory-to-memory mode), the memory port M0AR. */
-static bool transfer(stm32f4_dma_t *d, unsigned i)
+/* One transfer of stream i (stm32_dma_step, the F1's); the peripheral port is PAR (the source in
+ * memory-to-memory mode), the memory port M0AR; direct mode: MSIZE is taken as PSIZE (10.5.5). A bus
+ * error clears EN (10.3.15); so does the end of a stream not circular (10.3.8). */
+static void serve(void *ctl, unsigned i)
 {
-    const stm32f4_dma_stream_t *s = &d->s[i];
-    unsigned sz = size_bytes(s->cr, CR_PSIZE_SHIFT); /* direct mode: MSIZE = PSIZE (10.5.5) */
-    stm32_dma_item_t it = { s->par, s->m0ar, sz, sz, (s->cr & CR_PINC) != 0, (s->cr & CR_MINC) != 0, dir(s) == DIR_M2P };
-    return stm32_dma_move(d->bus, &it, s->done);
-}
-
-static void serve(stm32f4_dma_t *d, unsigned i)
-{
+    stm32f4_dma_t *d = ctl;
     stm32f4_dma_stream_t *s = &d->s[i];
     acknowledge(d, i);
-    if (!transfer(d, i)) {
-        s->cr &= ~CR_EN; /* 10.3.15 */
-        set_flags(d, i, F_TEIF);
-        return;
-    }
-    unsigned k = stm32_dma_count(&s->ndtr, &s->done, s->reload, (s->cr & CR_CIRC) != 0);
-    unsigned f = ((k & STM32_DMA_HT) ? F_HTIF : 0u) | ((k & STM32_DMA_TC) ? F_TCIF : 0u);
-    if ((k & STM32_DMA_TC) && !(s->cr & CR_CIRC)) s->cr &= ~CR_EN; /* the stream ends (10.3.8) */
+    unsigned sz = size_bytes(s->cr, CR_PSIZE_SHIFT);
+    stm32_dma_item_t it = { s->par, s->m0ar, sz, sz, (s->cr & CR_PINC) != 0, (s->cr & CR_MINC) != 0, dir(s) == DIR_M2P };
+    unsigned k = stm32_dma_step(d->bus, &it, &s->ndtr, &s->done, s->reload, (s->cr & CR_CIRC) != 0);
+    if ((k & STM32_DMA_TE) || ((k & STM32_DMA_TC) && !(s->cr & CR_CIRC))) s->cr &= ~CR_EN;
+    unsigned f = stm32_dma_flags(k, F_TEIF, F_HTIF, F_TCIF);
     if (f) set_flags(d, i, f);
 }
 
-static void dma_advance(void *self, uint64_t now)
-{
-    stm32f4_dma_t *d = self;
-    if (now > d->now) d->now = now;
-    for (unsigned n = 0; n < MAX_TRANSFERS_PER_ADVANCE; n++) {
-        int i = arbitrate(d);
-        if (i < 0) break;
-        serve(d, (unsigned)i);
-    }
-}
+static const stm32_dma_arbiter_t arbiter = { STM32F4_DMA_STREAMS, MAX_TRANSFERS_PER_ADVANCE, ready_pl, serve };
 
-static uint64_t dma_next_event(void *self)
-{
-    const stm32f4_dma_t *d = self;
-    return arbitrate(d) >= 0 ? d->now : MMIO_NEVER;
-}
+static void dma_advance(void *self, uint64_t now) { stm32_dma_run(&arbiter, self, &((stm32f4_dma_t *)self)->now, now); }
+
+static uint64_t dma_next_event(void *self) { return stm32_dma_next(&arbiter, self, ((const stm32f4_dma_t *)self)->now); }
 
 void stm32f4_dma_request(void *dma, unsigned channel, bool level)
 {

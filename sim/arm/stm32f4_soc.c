@@ -125,7 +125,7 @@ static void trigger_wants(stm32f4_soc_t *s)
     uint32_t m[STM32F4_TIM_COUNT] = { 0 };
     for (unsigned i = 0; i < STM32F4_TIM_COUNT; i++) {
         for (unsigned a = 0; a < STM32F4_SOC_ADCS; a++) {
-            uint32_t cr2 = s->adc[a].cr2;
+            uint32_t cr2 = s->adc[a].seq.cr2;
             unsigned ext = (cr2 >> 28) & 3u ? (cr2 >> 24) & 0xFu : 15u, jext = (cr2 >> 20) & 3u ? (cr2 >> 16) & 0xFu : 15u;
             m[i] |= stm32f4_tim_adc_wants(stm32f4_tim[i].d.n, ext, jext);
         }

@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "world/inifile.h"
+#include "world/inisec.h"
 #include "world/keytab.h"
 #include "world/robot.h"
 #include "world/sensors/ir.h"
@@ -138,13 +139,12 @@ static const keytab_t emitter_keys[] = {
 #define LED_KEYS 1 /* of emitter_keys: pin only */
 
 typedef struct {
-    const char *path;   /* the file being read */
-    const char *board_path; /* the board file's (path is the mainboard file's while that is read) */
+    inisec_t ini;       /* the file being read, its fixed sections' lines, the error */
+    const char *board_path; /* the board file's (ini.path is the mainboard file's while that is read) */
     int in_mainboard;
     board_spec_t work;
     uint64_t seen;     /* keys[] given */
-    int line[N(fixed)]; /* each fixed section's line, 0: none */
-    const char *sec_path[N(fixed)]; /* ... and its file */
+    const char *sec_path[N(fixed)]; /* each fixed section's file, NULL: not given */
     char mb_path[sizeof ((board_spec_t *)0)->path + 128]; /* the mainboard file's path */
     part_t emitter[SIM_EMITTER_GROUPS], led[BOARD_LEDS_MAX];
     int nemitters, nleds;
@@ -173,11 +173,11 @@ static int on_section(void *user, const char *section, int line, char *why, size
                  section);
         return -1;
     }
-    for (size_t i = 0; i < N(fixed); i++)
-        if (!strcmp(section, fixed[i])) {
-            if (!l->line[i]) l->line[i] = line, l->sec_path[i] = l->path;
-            return 0;
-        }
+    int i = inisec_section(&l->ini, section, line);
+    if (i >= 0) {
+        if (!l->sec_path[i]) l->sec_path[i] = l->ini.path;
+        return 0;
+    }
     int led;
     if (named(l, section, &led) || led < 0) {
         if (led >= 0) return 0; /* the part's section again */
@@ -200,17 +200,11 @@ static int on_section(void *user, const char *section, int line, char *why, size
 static int on_key(void *user, const char *section, const char *key, const char *val, char *why, size_t len)
 {
     bload_t *l = user;
-    if (!*section) {
-        snprintf(why, len, "%s: a key outside any [section]", key);
-        return -1;
-    }
     int led;
     part_t *p = named(l, section, &led);
-    const keytab_t *k = p ? keytab_find(emitter_keys, led ? LED_KEYS : N(emitter_keys), NULL, key) : keytab_find(keys, N(keys), section, key);
-    if (!k) {
-        snprintf(why, len, "%s.%s: unknown key", section, key);
-        return -1;
-    }
+    const keytab_t *k = p ? inisec_key(section, key, emitter_keys, led ? LED_KEYS : N(emitter_keys), NULL, why, len)
+                          : inisec_key(section, key, keys, N(keys), section, why, len);
+    if (!k) return -1;
     if (!p && (l->seen >> (k - keys) & 1u)) {
         snprintf(why, len, "%s.%s: given in %s too: a figure of the mainboard has one place", section, key, l->board_path);
         return -1;
@@ -221,25 +215,7 @@ static int on_key(void *user, const char *section, const char *key, const char *
     return 0;
 }
 
-/* The load's error at line (0: none); returns -1. */
-static int fail(bload_t *l, int line, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
-static int fail(bload_t *l, int line, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    inifile_verror(l->err, l->errn, l->path, line, fmt, ap);
-    va_end(ap);
-    return -1;
-}
-
-static int line_of(const bload_t *l, const char *section)
-{
-    for (size_t i = 0; i < N(fixed); i++)
-        if (!strcmp(section, fixed[i])) return l->line[i];
-    return 0;
-}
-
-/* line_of's section's file (the board file's when it has none) */
+/* inisec_line's section's file (the board file's when it has none) */
 static const char *path_of(const bload_t *l, const char *section)
 {
     for (size_t i = 0; i < N(fixed); i++)
@@ -247,25 +223,25 @@ static const char *path_of(const bload_t *l, const char *section)
     return l->board_path;
 }
 
-/* The section's line, its file made the one fail() names. */
+/* The section's line, its file made the one inisec_fail() names. */
 static int at(bload_t *l, const char *section)
 {
-    l->path = path_of(l, section);
-    return line_of(l, section);
+    l->ini.path = path_of(l, section);
+    return inisec_line(&l->ini, section);
 }
 
 /* Every key given; the named parts into the spec. */
 static int missing(bload_t *l)
 {
     const keytab_t *k = keytab_missing(keys, N(keys), l->seen);
-    if (k && line_of(l, k->section)) return fail(l, at(l, k->section), "%s.%s: missing", k->section, k->key);
-    l->path = l->board_path;
-    if (k) return fail(l, 0, "%s.%s: missing (no [%s] section)", k->section, k->key, k->section);
+    if (k && inisec_line(&l->ini, k->section)) return inisec_fail(&l->ini, at(l, k->section), "%s.%s: missing", k->section, k->key);
+    l->ini.path = l->board_path;
+    if (k) return inisec_fail(&l->ini, 0, "%s.%s: missing (no [%s] section)", k->section, k->key, k->section);
     board_spec_t *sp = &l->work;
     for (int i = 0; i < l->nemitters; i++) {
         part_t *p = &l->emitter[i];
         if ((k = keytab_missing(emitter_keys, N(emitter_keys), p->seen)) != NULL)
-            return fail(l, p->line, "emitter.%s.%s: missing", p->name, k->key);
+            return inisec_fail(&l->ini, p->line, "emitter.%s.%s: missing", p->name, k->key);
         sp->emitter_pin[i] = p->pin;
         sp->emitter_group[i] = p->group;
         snprintf(sp->emitter_name[i], sizeof sp->emitter_name[i], "%s", p->name);
@@ -273,7 +249,7 @@ static int missing(bload_t *l)
     }
     for (int i = 0; i < l->nleds; i++) {
         part_t *p = &l->led[i];
-        if ((k = keytab_missing(emitter_keys, LED_KEYS, p->seen)) != NULL) return fail(l, p->line, "led.%s.%s: missing", p->name, k->key);
+        if ((k = keytab_missing(emitter_keys, LED_KEYS, p->seen)) != NULL) return inisec_fail(&l->ini, p->line, "led.%s.%s: missing", p->name, k->key);
         sp->led_pin[i] = p->pin;
         snprintf(sp->led_name[i], sizeof sp->led_name[i], "%s", p->name);
     }
@@ -295,7 +271,7 @@ static int check_pins(bload_t *l)
         board_pin_t mine[4] = { sp->motor_dir[m], sp->motor_pwm[m], sp->enc_int[m], sp->enc_b[m] };
         for (int j = 0; j < 4; j++, n++) {
             snprintf(secs[n], sizeof secs[n], "%s.%s", j < 2 ? "motor" : "encoder", side[m]);
-            lines[n] = line_of(l, secs[n]);
+            lines[n] = inisec_line(&l->ini, secs[n]);
             paths[n] = path_of(l, secs[n]);
             pins[n] = mine[j];
         }
@@ -308,8 +284,8 @@ static int check_pins(bload_t *l)
             paths[n] = l->board_path;
     for (int i = 0; i < n; i++)
         for (int j = 0; j < i; j++)
-            if (pins[j].port == pins[i].port && pins[j].bit == pins[i].bit && (l->path = paths[i]) != NULL)
-                return fail(l, lines[i], "%s: a pin already wired to another part (%s)", secs[i], secs[j]);
+            if (pins[j].port == pins[i].port && pins[j].bit == pins[i].bit && (l->ini.path = paths[i]) != NULL)
+                return inisec_fail(&l->ini, lines[i], "%s: a pin already wired to another part (%s)", secs[i], secs[j]);
     return 0;
 }
 
@@ -320,23 +296,23 @@ static int check(bload_t *l)
     int known = 0;
     for (size_t i = 0; i < N(mcus); i++) known |= !strcmp(sp->mcu, mcus[i]);
     if (!known)
-        return fail(l, at(l, "board"), "board.mcu: '%s': the board emulation knows the ATmega48/88/168/328 registers only", sp->mcu);
+        return inisec_fail(&l->ini, at(l, "board"), "board.mcu: '%s': the board emulation knows the ATmega48/88/168/328 registers only", sp->mcu);
     for (int m = 0; m < 2; m++) {
         board_pin_t p = sp->motor_pwm[m];
         const char *sec = m ? "motor.right" : "motor.left";
         if (p.port != 'B' || (p.bit != 1 && p.bit != 2))
-            return fail(l, at(l, sec), "%s.pwm_pin: not a Timer1 output (OC1A = D9, OC1B = D10)", sec);
+            return inisec_fail(&l->ini, at(l, sec), "%s.pwm_pin: not a Timer1 output (OC1A = D9, OC1B = D10)", sec);
         sp->motor_oc[m] = p.bit == 2;
     }
-    l->path = l->board_path; /* the emitters' lines are the board file's */
+    l->ini.path = l->board_path; /* the emitters' lines are the board file's */
     for (int i = 0; i < sp->nemitters; i++)
         for (int j = 0; j < i; j++)
             if (sp->emitter_group[j] == sp->emitter_group[i])
-                return fail(l, l->emitter[i].line, "emitter.%s.group: another emitter lights that group", l->emitter[i].name);
-    if (sp->sw_channel == sp->bat_channel) return fail(l, at(l, "battery"), "battery.adc_channel: the switches' channel too");
+                return inisec_fail(&l->ini, l->emitter[i].line, "emitter.%s.group: another emitter lights that group", l->emitter[i].name);
+    if (sp->sw_channel == sp->bat_channel) return inisec_fail(&l->ini, at(l, "battery"), "battery.adc_channel: the switches' channel too");
     for (int i = 0; i < BOARD_ANALOG_N; i++)
         if (sp->analog[i].wired && sp->analog[i].v > sp->vcc_v)
-            return fail(l, at(l, "analog"), "analog.a%d: %g V is above vcc_v (%g V)", BOARD_ANALOG_FIRST + i, sp->analog[i].v, sp->vcc_v);
+            return inisec_fail(&l->ini, at(l, "analog"), "analog.a%d: %g V is above vcc_v (%g V)", BOARD_ANALOG_FIRST + i, sp->analog[i].v, sp->vcc_v);
     return check_pins(l);
 }
 
@@ -346,13 +322,13 @@ static int load_mainboard(bload_t *l, const inifile_t *r)
     const char *slash = strrchr(l->board_path, '/');
     int dir = slash ? (int)(slash - l->board_path) + 1 : 0;
     if (snprintf(l->mb_path, sizeof l->mb_path, "%.*s%s", dir, l->board_path, l->work.mainboard) >= (int)sizeof l->mb_path)
-        return snprintf(l->err, l->errn, "%s: board.mainboard: the path is too long", l->board_path), -1;
-    l->path = l->mb_path;
+        return snprintf(l->ini.err, l->ini.errn, "%s: board.mainboard: the path is too long", l->board_path), -1;
+    l->ini.path = l->mb_path;
     l->in_mainboard = 1;
-    int rc = inifile_load(r, l->mb_path, BOARD_MAX_BYTES, l->err, l->errn);
-    if (rc != 0 && strstr(l->err, "No such file")) /* say who names it */
-        snprintf(l->err, l->errn, "%s: board.mainboard: %s: no such file", l->board_path, l->mb_path);
-    l->path = l->board_path;
+    int rc = inifile_load(r, l->mb_path, BOARD_MAX_BYTES, l->ini.err, l->ini.errn);
+    if (rc != 0 && strstr(l->ini.err, "No such file")) /* say who names it */
+        snprintf(l->ini.err, l->ini.errn, "%s: board.mainboard: %s: no such file", l->board_path, l->mb_path);
+    l->ini.path = l->board_path;
     return rc;
 }
 
@@ -363,9 +339,7 @@ int board_load(board_spec_t *spec, const char *path, char *err, size_t errn)
         snprintf(err, errn, "%s: out of memory", path);
         return -1;
     }
-    l->path = path;
-    l->err = err;
-    l->errn = errn;
+    inisec_init(&l->ini, path, err, errn, fixed, N(fixed));
     keytab_defaults(keys, N(keys), &l->work);
     l->board_path = path;
     const inifile_t r = { on_section, on_key, l, "want key = value or [section]" };

@@ -118,7 +118,7 @@ static void test_eoc_per_sequence_and_irq(void **state)
     assert_true(irq18);
     rd(DR, 128);
     assert_false(irq18);
-    assert_int_equal(adc.conversions, 2);
+    assert_int_equal(adc.seq.conversions, 2);
 }
 
 static void test_overrun(void **state)
