@@ -30,8 +30,7 @@
  * controller's last transfer is not seen (requests continue as with DDS =
  * 1); the ADC clock's phase against HCLK (times round up to a core cycle);
  * channel 16 is the temperature sensor (F40x; the F411's sensor on channel
- * 18 is read as VBAT there); an injected result left-aligned as a regular
- * one (RM0090 13.4 figure 49 draws it one bit lower, SEXT in bit 15).
+ * 18 is read as VBAT there).
  * The conversion engine is stm32_adcseq.c's; this file is the F4's register
  * map and figures for it (stm32_adcseq_family_t), its start bits, triggers,
  * analog inputs and the common registers. */
@@ -119,7 +118,7 @@ static const stm32_adcseq_family_t f4_family = {
     .sr_w0 = 0x3Fu,                    /* AWD, EOC, JEOC, JSTRT, STRT, OVR */
     .smpr1_mask = 0x07FFFFFFu,         /* SMP10-18 (13.13.4) */
     .late_regular_at_inj_end = false,  /* a regular start due during the injected group keeps its instant */
-    .inj_left_drop = 0,
+    .inj_left_drop = 1,                /* RM0090 13.4 figures 49/50: an injected result's SEXT at bit 15, data one bit lower */
     .res_shift = CR1_RES_SHIFT, .res_mask = 3u,
     .res_bits = { 12, 10, 8, 6 },      /* CR1 RES */
     .conv_half = { 24, 20, 16, 12 },   /* 13.5: tCONV = sampling + 12/10/8/6 ADCCLK cycles, x2 */

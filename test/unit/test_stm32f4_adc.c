@@ -169,6 +169,10 @@ static void test_injected(void **state)
     assert_int_equal(rd(JDR1, 132), 1229); /* channel 2: 0.99 V */
     assert_int_equal(rd(JDR1 + 4, 132), 2867); /* channel 6: 2.31 V */
     assert_false(rd(SR, 132) & EOC);
+    /* left-aligned (ALIGN, bit 11): an injected result sits one bit below a
+     * regular one, SEXT in bit 15 (RM0090 13.4 figure 49) */
+    wr(CR2, ADON | (1u << 11) | JSWSTART, 200);
+    assert_int_equal(rd(JDR1, 340), 1229u << 3);
 }
 
 static void test_unmodeled(void **state)
