@@ -51,7 +51,7 @@ enum { ROBOT_START_CENTRE = 0, ROBOT_START_BACK_TO_WALL = 1 };
 
 #define ROBOT_MAX_PARTS 16   /* sensors a robot file may list */
 #define ROBOT_NAME_MAX 16    /* bytes of a component's name, with the NUL */
-#define ROBOT_SPEC_MAX 32    /* doubles of a sensor kind's specification */
+#define ROBOT_SPEC_MAX 64    /* doubles of a sensor kind's specification */
 
 struct sensor_kind_s;
 /* A sensor from the robot file: its kind (sensors/sensor.h), name, pose on

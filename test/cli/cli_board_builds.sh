@@ -36,9 +36,13 @@ jv() { python3 -c 'import json,sys; d=json.loads(open(sys.argv[1]).read().splitl
 # lists the figures): the Pimoroni sheets' no-load current (0.08 A; the files' no_load_a is fitted to
 # BIAS_FF: 0.0212 A for ORION's drive, 0.0140 for OSMIUM's) and the 11:1 sheet's no-load speed (1950 rpm;
 # 1607, Ke fitted to ORION's KM); OSMIUM's front sum between side walls at the SS90E trigger
-# (TURN_THRESHOLD_SS90E 82 + 2 x 5, against ORION's 110 + 2 x 5 for the same parts in the same pose)
-declare -A FAIL=([ukmarsbot-basic-12]="sheet_no_load_current" [ukmarsbot-advanced-12]="ir_front_sum_turn_walls sheet_no_load_current"
-  [ukmarsbot-basic-36]="sheet_no_load_current sheet_no_load_speed" [ukmarsbot-basic-11]="sheet_no_load_current sheet_no_load_speed")
+# (TURN_THRESHOLD_SS90E 82 + 2 x 5, against ORION's 110 + 2 x 5 for the same parts in the same pose) and in
+# the open (82 against ORION's 110); the basic board's facing over backed (5.91 against a real one's 8.5:
+# sim/world/sensors/README.md)
+declare -A FAIL=([ukmarsbot-basic-12]="ir_front_facing_over_backed sheet_no_load_current"
+  [ukmarsbot-advanced-12]="ir_front_sum_turn_open ir_front_sum_turn_walls sheet_no_load_current"
+  [ukmarsbot-basic-36]="ir_front_facing_over_backed sheet_no_load_current sheet_no_load_speed"
+  [ukmarsbot-basic-11]="ir_front_facing_over_backed sheet_no_load_current sheet_no_load_speed")
 for r in ukmarsbot-basic-12 ukmarsbot-basic-11 ukmarsbot-basic-36 ukmarsbot-advanced-12; do
   want_rc 0 "$r: --print-robot" "$MMSIM" --print-robot --robot robots/$r.ini
   want_rc $([ -n "${FAIL[$r]}" ] && echo 1 || echo 0) "$r: --validate" "$MMSIM" --validate --json --robot robots/$r.ini

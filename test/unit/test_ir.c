@@ -269,7 +269,7 @@ static void test_skirt(void **state)
     sk.noise_counts = 0, sk.skirt_rel = 0.04, sk.skirt_deg = 45;
     ir_t irs, ir0 = quiet();
     ir_init(&irs, &sk, cfg.world.wall_reflectivity, 1, 0);
-    assert_int_equal(irs.nrays, ir0.nrays + 4 * 8);
+    assert_int_equal(irs.nrays, ir0.nrays + (int)sk.skirt_rings * 8);
     double y = 1.5 * cfg.world.cell_m, z = 0.036, h = cfg.world.wall_height_m, rho = irs.reflectivity;
     for (double d = 0.02; d <= 0.2001; d += 0.02) {
         double p[3] = { east_face() - d, y, z };
@@ -308,6 +308,103 @@ static void test_shield(void **state)
     assert_true(n < f);
 }
 
+/* (9) The detector's directional characteristic from its datasheet: one
+ * ray straight on, the spot seen at beta = atan(|offset| / d), its
+ * sensitivity interpolated in the table (0 past its last angle), in place
+ * of the Gaussian; one point only leaves the Gaussian. */
+static void test_detector_table(void **state)
+{
+    (void)state;
+    static ir_spec_t t, t1; /* the sensors keep them by pointer */
+    ir_spec_default(&t);
+    t.noise_counts = 0, t.rings = 0, t.det_offset_m = -0.0056;
+    const double deg[3] = { 0, 40, 50 }, rel[3] = { 1, 0.5, 0.3 };
+    for (int i = 0; i < 3; i++) t.det_deg[i] = deg[i], t.det_rel[i] = rel[i];
+    t1 = t;
+    t.det_deg_n = t.det_rel_n = 3;
+    t1.det_deg_n = t1.det_rel_n = 1; /* one point: the Gaussian */
+    ir_t a, g;
+    ir_init(&a, &t, 1, 1, 0);
+    ir_init(&g, &t1, 1, 1, 0);
+    double d = 0.0056, r = sqrt(d * d + t.det_offset_m * t.det_offset_m); /* beta = 45 deg */
+    double want = (d / r) * 0.4 / (r * r), gauss = (d / r) * exp(-log(2) * (45.0 / 12) * (45.0 / 12)) / (r * r);
+    assert_true(fabs(ir_received_plane(&a, d, 0, 1, 0) - want) < 1e-9 * want);
+    assert_true(fabs(ir_received_plane(&g, d, 0, 1, 0) - gauss) < 1e-9 * want);
+    assert_true(ir_received_plane(&a, 0.0056 * tan(30 * M_PI / 180), 0, 1, 0) == 0); /* beta 60 deg: past the table */
+}
+
+/* (10) An emitter lying on its board: the board takes its skirt's lower
+ * half (skirt_below 0), not its beam; that takes light from the near field,
+ * where the lower skirt's spots sit on the detector's axis below, far more
+ * than from the far field. */
+static void test_skirt_below(void **state)
+{
+    (void)state;
+    static ir_spec_t full, half;
+    ir_spec_default(&full);
+    full.noise_counts = 0, full.skirt_rel = 0.04;
+    half = full;
+    half.skirt_below = 0;
+    ir_t f, h;
+    ir_init(&f, &full, 0.85, 1, 0);
+    ir_init(&h, &half, 0.85, 1, 0);
+    int cut = 0;
+    for (int i = 0; i < f.nrays; i++) {
+        int skirt = acos(f.off[i][0]) * 180 / M_PI > full.cone_deg + 1e-9, below = f.off[i][2] < 0;
+        if (skirt && below) assert_true(h.weight[i] == 0 && f.weight[i] > 0), cut++;
+        else assert_true(h.weight[i] > 0 && f.weight[i] > 0);
+    }
+    assert_true(cut > 0);
+    double z = 0.036, top = 0.05 - z;
+    double nf = ir_received_band(&f, 0.024, 0, 0.85, 0, -z, top) / ir_received_band(&f, 0.072, 0, 0.85, 0, -z, top);
+    double nh = ir_received_band(&h, 0.024, 0, 0.85, 0, -z, top) / ir_received_band(&h, 0.072, 0, 0.85, 0, -z, top);
+    assert_true(nh < 0.9 * nf);
+}
+
+/* (11) A reading flows one way: the world casts the sensor's rays
+ * (world_cast) and the model turns the hits into light (ir_received_hits)
+ * and counts (ir_counts), with no world: the same as ir_received and
+ * ir_read. */
+static void test_hits(void **state)
+{
+    (void)state;
+    world_t *w = arena(1);
+    ir_t a = quiet(), b = quiet();
+    sim_pose_t at = { { east_face() - 0.05, 1.5 * cfg.world.cell_m, 0.036 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+    world_hit_t hit[IR_MAX_RAYS];
+    world_cast(w, &at, a.nrays, (const double (*)[3])a.off, a.spec->max_m, hit);
+    double r = ir_received_hits(&a, &at, hit);
+    assert_true(r > 0 && r == ir_received(&a, w, at.pos_m, 0));
+    assert_int_equal(ir_counts(&a, r), ir_read(&b, w, at.pos_m, 0, 1));
+    assert_int_equal(ir_counts(&a, 0), ir_read(&b, w, at.pos_m, 0, 0));
+    world_destroy(w);
+}
+
+/* (12) A diagonal sensor's return from a wall ahead (mazerunner-core
+ * documents/sensors.md): centred in cell (1,1) facing north, ORION's left
+ * diagonal (22 mm left, 28 mm ahead, 45 deg) aims at the post face by the
+ * corner; a wall ahead meets its beam first and lifts its reading. */
+static void test_wall_ahead(void **state)
+{
+    (void)state;
+    ir_t ir = quiet();
+    double r[2];
+    for (int ahead = 0; ahead < 2; ahead++) {
+        truemaze_t m;
+        truemaze_init(&m, 4, 4);
+        for (uint16_t c = 0; c < 16; c++)
+            for (uint8_t d = 0; d < 4; d++) truemaze_set_wall(&m, (truemaze_cell_t)c, d, 0);
+        for (int y = 0; y < 4; y++) truemaze_set_wall(&m, truemaze_cell(&m, 1, (uint8_t)y), TRUEMAZE_WEST, 1);
+        if (ahead) truemaze_set_wall(&m, truemaze_cell(&m, 1, 1), TRUEMAZE_NORTH, 1);
+        world_t *w = world_create(&model, &m, 3.5 * cfg.world.cell_m, 3.5 * cfg.world.cell_m, 0);
+        assert_non_null(w);
+        double p[3] = { 1.5 * cfg.world.cell_m - 0.022, 1.5 * cfg.world.cell_m + 0.028, 0.036 };
+        r[ahead] = ir_received(&ir, w, p, 0.75 * M_PI);
+        world_destroy(w);
+    }
+    assert_true(r[0] > 0 && r[1] > 1.1 * r[0]);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -321,6 +418,10 @@ int main(void)
         cmocka_unit_test(test_graze),
         cmocka_unit_test(test_skirt),
         cmocka_unit_test(test_shield),
+        cmocka_unit_test(test_detector_table),
+        cmocka_unit_test(test_skirt_below),
+        cmocka_unit_test(test_hits),
+        cmocka_unit_test(test_wall_ahead),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

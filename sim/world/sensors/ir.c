@@ -24,7 +24,18 @@ void ir_spec_default(ir_spec_t *s)
      * skirt carries about twice the beam's power. */
     s->skirt_rel = 0; /* off unless a robot file gives it: its SFH4550 value is 0.04 */
     s->skirt_deg = 45.0;
-    s->skirt_rings = 4; /* ours: 4 x rays_per_ring rays, 9.4 deg apart */
+    /* ours: 8 x rays_per_ring rays, 4.7 deg apart: ORION's front sums with
+     * the skirt move 1.5 % from 6 to 8 rings or from 8 to 16 rays a ring,
+     * 4-5 % from 4 rings to 8 */
+    s->skirt_rings = 8;
+    /* an emitter held clear of its board sends all its skirt out; one lying
+     * on the board (UKMARSBOT's wall sensor boards: "the emitters are
+     * placed above the board and the detectors are below", UKB
+     * hardware/wall-sensors/wall-sensor-basic/readme.md) sends only its
+     * upper half: the skirt leaves through the package's body, and the
+     * board under the body takes what leaves it downwards. The beam leaves
+     * through the lens at the board's edge and is kept whole. */
+    s->skirt_below = 1;
     /* SFH309FA datasheet (docs/datasheets/sfh309-phototransistor.pdf):
      * half angle +-12 deg (the BPW85's is +-25 deg, BPW85 datasheet p. 1) */
     s->det_half_angle_deg = 12.0;
@@ -57,6 +68,7 @@ void ir_spec_default(ir_spec_t *s)
      * the default prescaler 128, so sigma = 0.585 counts */
     s->noise_counts = 0.585;
     s->adc_bits = 10; /* ATmega328P ADC: 10 bits, 0..1023 */
+    s->det_deg_n = s->det_rel_n = 0; /* none: the Gaussian of det_half_angle_deg */
 }
 
 /* Relative intensity at th_deg off the axis of a Gaussian profile with
@@ -65,6 +77,21 @@ static double profile(double th_deg, double half_deg)
 {
     double r = th_deg / half_deg;
     return exp(-0.69314718055994531 * r * r) /* ln 2 */;
+}
+
+/* The detector's relative sensitivity at th_deg off its axis: its
+ * datasheet's directional characteristic when the spec gives one, else a
+ * Gaussian of its half angle. */
+static double detector_profile(const ir_spec_t *s, double th_deg)
+{
+    int n = s->det_deg_n;
+    if (n < 2 || s->det_rel_n != n) return profile(th_deg, s->det_half_angle_deg);
+    for (int i = 1; i < n; i++)
+        if (th_deg <= s->det_deg[i]) {
+            double f = (th_deg - s->det_deg[i - 1]) / (s->det_deg[i] - s->det_deg[i - 1]);
+            return s->det_rel[i - 1] + f * (s->det_rel[i] - s->det_rel[i - 1]);
+        }
+    return 0;
 }
 
 /* The skirt's knee: where skirt_rel is read (SFH4550 p.5). */
@@ -115,11 +142,14 @@ void ir_init(ir_t *ir, const ir_spec_t *s, double reflectivity, uint64_t seed, u
     double s0 = s->cone_deg + step / 2, sstep = sk && s->skirt_deg > s0 ? (s->skirt_deg - s0) / sk : 0;
     for (int k = 1; sstep > 0 && k <= sk; k++) {
         double th = s0 + (k - 0.5) * sstep, solid = 2 * M_PI * sin(th * M_PI / 180.0) * sstep * M_PI / 180.0 / per;
-        for (int j = 0; j < per; j++) add_ray(ir, th, 2 * M_PI * (j + 0.5 * ((rings + k) & 1)) / per, solid);
+        for (int j = 0; j < per; j++) {
+            add_ray(ir, th, 2 * M_PI * (j + 0.5 * ((rings + k) & 1)) / per, solid);
+            if (ir->off[ir->nrays - 1][2] < 0) ir->weight[ir->nrays - 1] *= s->skirt_below; /* the board under it */
+        }
     }
     double k0 = 0; /* a matt plane straight on in the far field: the detector sees ray i at th_i */
     for (int i = 0; i < ir->nrays; i++)
-        k0 += ir->weight[i] * profile(acos(ir->off[i][0]) * 180.0 / M_PI, s->det_half_angle_deg) * pow(ir->off[i][0], 3);
+        k0 += ir->weight[i] * detector_profile(s, acos(ir->off[i][0]) * 180.0 / M_PI) * pow(ir->off[i][0], 3);
     for (int i = 0; i < ir->nrays; i++) ir->weight[i] /= k0;
     rng_init(&ir->rng, seed, RNG_STREAM_IR + index);
 }
@@ -168,7 +198,7 @@ static double ray_return(const ir_t *ir, const double e[3], const double u[3], d
     double cos_a = dot3(m, q), f = rho;
     if (gloss > 0 && cos_a > 0) f += gloss * (ir->gloss_exp + 2) / 2 * pow(cos_a, ir->gloss_exp);
     double rr = r < ir->spec->near_m ? ir->spec->near_m : r;
-    return shade * f * cos_o * profile(beta_deg, ir->spec->det_half_angle_deg) / (rr * rr);
+    return shade * f * cos_o * detector_profile(ir->spec, beta_deg) / (rr * rr);
 }
 
 /* The detector's place: det_offset_m along up from the emitter at pos. */
@@ -267,6 +297,9 @@ int ir_read(ir_t *ir, world_t *w, const double pos_m[3], double dir_rad, int emi
 
 /* ---- the sensor kind ---- */
 
+/* A robot file's section is parsed into robot_part_t.spec: it must fit. */
+typedef char ir_part_spec_fits[sizeof(ir_part_spec_t) <= sizeof(((robot_part_t *)0)->spec) ? 1 : -1];
+
 #define I(name, field, def, min, max, per, whole, unit, src) \
     { NULL, #name, offsetof(ir_part_spec_t, field), def, min, max, unit, src, NULL, whole, per, 0, KEYTAB_DOUBLE, 0, NULL }
 static const keytab_t keys[] = {
@@ -283,10 +316,13 @@ static const keytab_t keys[] = {
     I(half_angle_deg, model.half_angle_deg, 3, 0.5, 60, 0, 0, "deg", "SFH4550 datasheet: +-3 deg half angle"),
     I(skirt_rel, model.skirt_rel, 0, 0, 1, 0, 0, "1", "the emitter's skirt at 10 deg off the axis, of the axis intensity (SFH4550 datasheet p.5: 0.04; 0: none)"),
     I(skirt_deg, model.skirt_deg, 45, 10, 90, 0, 0, "deg", "SFH4550 datasheet p.5: the skirt ends by 45 deg"),
-    I(skirt_rings, model.skirt_rings, 4, 0, IR_MAX_SKIRT_RINGS, 0, 1, "1", "ours: rings of rays in the skirt"),
+    I(skirt_below, model.skirt_below, 1, 0, 1, 0, 0, "1", "the share of the skirt below the emitter's axis that leaves (0: the emitter lies on its board, which takes it)"),
+    I(skirt_rings, model.skirt_rings, 8, 0, IR_MAX_SKIRT_RINGS, 0, 1, "1", "ours: rings of rays in the skirt (8: converged within 1.5 %)"),
     I(shield_setback_mm, model.shield_setback_m, 0, 0, 50, 1000, 0, "mm", "the board's edge ahead of the detector's centre (0: no shield)"),
     I(shield_height_mm, model.shield_height_m, 1.5, 0, 50, 1000, 0, "mm", "the board's underside above the detector's centre: a 3 mm detector under the board"),
     I(det_half_angle_deg, model.det_half_angle_deg, 12, 0.5, 90, 0, 0, "deg", "SFH309FA datasheet: +-12 deg half angle"),
+    { NULL, "det_deg", offsetof(ir_part_spec_t, model.det_deg), 0, 0, 90, "deg", "the detector's directional characteristic: angles off its axis, increasing from 0 (its datasheet; one value: none, the Gaussian of det_half_angle_deg)", NULL, 0, 0, IR_MAX_DET_POINTS, KEYTAB_DOUBLE, offsetof(ir_part_spec_t, model.det_deg_n), NULL },
+    { NULL, "det_rel", offsetof(ir_part_spec_t, model.det_rel), 1, 0, 1, "1", "the detector's relative sensitivity at each det_deg (its datasheet's directional characteristic)", NULL, 0, 0, IR_MAX_DET_POINTS, KEYTAB_DOUBLE, offsetof(ir_part_spec_t, model.det_rel_n), NULL },
     I(cone_deg, model.cone_deg, 6, 0, 60, 0, 0, "deg", "ours: the outermost ring at two emitter half angles"),
     I(rings, model.rings, 2, 0, IR_MAX_RINGS, 0, 1, "1", "ours: rings of rays about the axis"),
     I(rays_per_ring, model.rays_per_ring, 8, 1, IR_MAX_PER_RING, 0, 1, "1", "ours: 1 + 2 x 8 = 17 rays"),
@@ -341,6 +377,15 @@ int ir_sample(void *state, const robot_part_t *p, const sensor_ctx_t *x)
 static int part_check(const robot_part_t *p, char *reason, size_t len)
 {
     const ir_spec_t *m = &((const ir_part_spec_t *)p->spec)->model;
+    if (m->det_deg_n != m->det_rel_n) {
+        snprintf(reason, len, "det_rel: %d values for %d det_deg angles", m->det_rel_n, m->det_deg_n);
+        return -1;
+    }
+    for (int i = 0; i < m->det_deg_n; i++)
+        if (i == 0 ? m->det_deg[0] != 0 : m->det_deg[i] <= m->det_deg[i - 1]) {
+            snprintf(reason, len, "det_deg: %g deg: the angles start at 0 and increase", m->det_deg[i]);
+            return -1;
+        }
     if (m->near_m >= m->max_m) {
         snprintf(reason, len, "near_mm: %g mm is not below max_mm %g mm", m->near_m * 1000, m->max_m * 1000);
         return -1;

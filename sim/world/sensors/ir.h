@@ -16,9 +16,11 @@
  *
  * (a Lambertian paint of reflectivity rho with a Phong gloss lobe of
  * reflectance gloss straight on and exponent m: the world's wall finish;
- * the detector's Gaussian profile D with the datasheet's half angle). The
- * weights w_i are the emitter's Gaussian profile times the solid angle each
- * ray stands for. Close to a wall the lit spot leaves the detector's cone
+ * the detector's profile D: a Gaussian of the datasheet's half angle, or
+ * the datasheet's directional characteristic when given). The weights w_i
+ * are the emitter's profile (its Gaussian beam and its skirt, the skirt's
+ * lower half taken by a board under the emitter when skirt_below is 0)
+ * times the solid angle each ray stands for. Close to a wall the lit spot leaves the detector's cone
  * (beta grows as det_offset / d): the reading peaks and falls off; the
  * gloss lobe leaves it too, and with any tilt of the wall (alpha grows as
  * twice the tilt). The sum is normalised by k0 = sum w_i D(th_i) cos^3(th_i),
@@ -55,6 +57,7 @@
 #define IR_MAX_RINGS 4
 #define IR_MAX_SKIRT_RINGS 8
 #define IR_MAX_PER_RING 16
+#define IR_MAX_DET_POINTS 14
 #define IR_MAX_RAYS (1 + (IR_MAX_RINGS + IR_MAX_SKIRT_RINGS) * IR_MAX_PER_RING)
 
 /* The model's numbers (plain data; ir_spec_default gives UKMARSBOT's). */
@@ -67,7 +70,16 @@ typedef struct {
     double skirt_rel;          /* relative intensity at 10 deg, 0..1 */
     double skirt_deg;          /* where it ends, deg */
     double skirt_rings;        /* rings of rays in it, 0..IR_MAX_SKIRT_RINGS */
-    double det_half_angle_deg; /* detector: half-sensitivity angle, deg */
+    double skirt_below;        /* the share of its rays below the axis that leave, 0..1 (0: a board under the emitter takes them) */
+    double det_half_angle_deg; /* detector: half-sensitivity angle, deg (its Gaussian profile) */
+    /* The detector's directional characteristic from its datasheet, when
+     * given (2 or more points): relative sensitivity det_rel[i] at
+     * det_deg[i] off its axis, increasing angles from 0, linear between
+     * them, 0 past the last; it replaces the Gaussian. */
+    double det_deg[IR_MAX_DET_POINTS];
+    int det_deg_n;
+    double det_rel[IR_MAX_DET_POINTS];
+    int det_rel_n;
     double cone_deg;           /* the outermost ring's angle off the axis, deg */
     double rings;              /* rings of rays about the centre ray, 0..IR_MAX_RINGS */
     double rays_per_ring;      /* 1..IR_MAX_PER_RING */
