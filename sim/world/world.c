@@ -532,6 +532,21 @@ static void drive_wheel(world_t *w, int s, const motor_drive_t *d)
     w->wheels->couple(w, s);
 }
 
+/* The chassis' body_drag_n_s_m, for one ODE step: a force against the
+ * axle midpoint's horizontal velocity, applied there. A spin in place
+ * leaves that point still, so it loads a run and not a spin (the robot
+ * file's key says what it stands for). */
+static void drag_chassis(world_t *w)
+{
+    double c = w->model->chassis.body_drag_n_s_m;
+    if (c <= 0) return;
+    double r = 0.5 * (w->model->wheel_r_m[0] + w->model->wheel_r_m[1]);
+    double y = w->model->chassis.axle_y_m - w->com[1], z = r - w->com[2];
+    dVector3 v;
+    dBodyGetRelPointVel(w->chassis, -w->com[0], y, z, v);
+    dBodyAddForceAtRelPos(w->chassis, -c * v[0], -c * v[1], 0, -w->com[0], y, z);
+}
+
 /* A contact episode over: counted once for each kind it had. */
 static void end_episode(world_t *w)
 {
@@ -598,6 +613,7 @@ void world_step(world_t *w, const motor_drive_t drive[2])
         drive_wheel(w, WORLD_LEFT, &drive[WORLD_LEFT]);
         drive_wheel(w, WORLD_RIGHT, &drive[WORLD_RIGHT]);
         brake_wheels(w);
+        drag_chassis(w);
         /* before the collision pass, which may not move a geom (world_loose_place) */
         if (!w->clear_now) w->clear_now = clear_of_walls(w, WORLD_TOUCH_SLACK_M, 0);
         if (w->loose.n) box_floor(w);
