@@ -17,7 +17,7 @@ S=${MMSIM:-build/mmsim}
 #   and the current at 0.66 kg*mm within 5 %).
 FAIL_paper=""
 # ukmarsbot (ORION): the 11:1 sheet's no-load 1950 rpm (1727: Ke was fitted to ORION's KM by
-#   tools/mmfit) and 0.08 A (0.0206: fitted to BIAS_FF, the nylon skids taking part of it).
+#   tools/mmfit) and 0.08 A (0.0205: fitted to BIAS_FF, the nylon skids taking part of it).
 #   ROT_KM/FWD_KM is fitted (body_drag_n_s_m), not graded.
 FAIL_ukmarsbot="sheet_no_load_speed sheet_no_load_current"
 
