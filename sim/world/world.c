@@ -533,18 +533,20 @@ static void drive_wheel(world_t *w, int s, const motor_drive_t *d)
 }
 
 /* The chassis' body_drag_n_s_m, for one ODE step: a force against the
- * axle midpoint's horizontal velocity, applied there. A spin in place
- * leaves that point still, so it loads a run and not a spin (the robot
- * file's key says what it stands for). */
+ * velocity of the axle's middle, applied on the floor under it, where the
+ * tyres' traction meets it (higher up the two make a couple that pitches
+ * a robot balanced over its axle onto a skid: the hinge form's straight
+ * run then veered 0.2-0.4 m in 4). A spin in place leaves that point
+ * still, so it loads a run and not a spin (the robot file's key says what
+ * it stands for). */
 static void drag_chassis(world_t *w)
 {
     double c = w->model->chassis.body_drag_n_s_m;
     if (c <= 0) return;
-    double r = 0.5 * (w->model->wheel_r_m[0] + w->model->wheel_r_m[1]);
-    double y = w->model->chassis.axle_y_m - w->com[1], z = r - w->com[2];
+    double x = -w->com[0], y = w->model->chassis.axle_y_m - w->com[1], z = -w->com[2]; /* from the centre of mass */
     dVector3 v;
-    dBodyGetRelPointVel(w->chassis, -w->com[0], y, z, v);
-    dBodyAddForceAtRelPos(w->chassis, -c * v[0], -c * v[1], 0, -w->com[0], y, z);
+    dBodyGetRelPointVel(w->chassis, x, y, z, v);
+    dBodyAddForceAtRelPos(w->chassis, -c * v[0], -c * v[1], 0, x, y, z);
 }
 
 /* A contact episode over: counted once for each kind it had. */
