@@ -9,9 +9,9 @@
  *   mkprofile ROBOT.ini OUT.h
  *
  * The feed-forward's motor figures (mm_s_per_cmd, cmd_friction,
- * cmd_per_mm_s2) must agree with what the robot's motor keys, or its
- * [measured.*] characterisation, give for a command step of cmd_max_v /
- * cmd_max (check_motor).
+ * cmd_per_mm_s2, cmd_per_arc_mm_s2) must agree with what the robot's motor
+ * and chassis keys, or its [measured.*] characterisation, give for a
+ * command step of cmd_max_v / cmd_max (check_motor).
  *
  * Exit codes: 0 written, 2 bad input (one line: FILE:LINE: reason),
  * 3 the output could not be written (nothing half written is left). */
@@ -63,12 +63,25 @@ static const struct {
     { "measured", "fwd_tm_s", "" },
 };
 
+/* the keys the yaw's feed-forward check reads besides mot_keys (arc_figure),
+ * as mot_keys; these may be negative */
+enum { A_BODY_W, A_BODY_L, A_YAW_J, A_COM_Y, A_AXLE_Y, A_CASTER_Y, A_CASTER2_Y, A_TRACK, A_ROT_KM, A_ROT_TM, A_N };
+static const struct {
+    const char *section, *key, *def;
+} arc_keys[A_N] = {
+    { "chassis", "body_w_mm", NULL },   { "chassis", "body_l_mm", NULL },    { "chassis", "body_yaw_inertia_kgm2", "0" },
+    { "chassis", "body_com_y_mm", "0" }, { "chassis", "axle_y_mm", NULL },   { "chassis", "caster_y_mm", NULL },
+    { "chassis", "caster2_y_mm", "0" }, { "chassis", "wheel_track_mm", NULL }, { "measured", "rot_km_deg_s_v", "" },
+    { "measured", "rot_tm_s", "" },
+};
+
 typedef struct {
     const char *path;
     char val[2][FW_MAX][VAL_MAX]; /* [0] [firmware], [1] [firmware.avr]; "" none */
     int line[2];                  /* of the sections, 0: none */
     char phys[N(phys_keys)][VAL_MAX], phys_right[VAL_MAX], phys_gear[VAL_MAX];
     char mot[M_N][VAL_MAX], measured[VAL_MAX]; /* mot_keys' values ("" none); the [measured.*] section's name */
+    char arc[A_N][VAL_MAX];                     /* arc_keys' values ("" none) */
 } prof_t;
 
 static int on_section(void *user, const char *section, int line, char *why, size_t len)
@@ -98,6 +111,11 @@ static int on_key(void *user, const char *section, const char *key, const char *
     for (size_t i = 0; i < M_N; i++)
         if (key_is(section, key, mot_keys[i].section, mot_keys[i].key)) {
             snprintf(p->mot[i], VAL_MAX, "%s", val);
+            if (kind_is(section, "measured")) snprintf(p->measured, VAL_MAX, "%s", section);
+        }
+    for (size_t i = 0; i < A_N; i++)
+        if (key_is(section, key, arc_keys[i].section, arc_keys[i].key)) {
+            snprintf(p->arc[i], VAL_MAX, "%s", val);
             if (kind_is(section, "measured")) snprintf(p->measured, VAL_MAX, "%s", section);
         }
     if (fw_section(section)) {
@@ -206,7 +224,10 @@ static int value(const prof_t *p, size_t i, int avr, char *out, size_t n, char *
  * less the no-load current's drop, the H-bridge's driver_r_ohm in series;
  * each wheel pushes half the robot's mass and its own spin). 0, or 2 with
  * the reason in err. */
-static int motor_figures(const prof_t *p, double step_v, double want[3], char how[3][200], char *err, size_t errlen)
+static int arc_figure(const prof_t *p, const double v[M_N], double step_v, double r, double kt_r, double *want, char *how,
+                      char *err, size_t errlen);
+
+static int motor_figures(const prof_t *p, double step_v, double want[4], char how[4][200], char *err, size_t errlen)
 {
     double v[M_N], d_left, d_right;
     for (size_t i = 0; i < M_N; i++) {
@@ -249,6 +270,50 @@ static int motor_figures(const prof_t *p, double step_v, double want[3], char ho
     else
         snprintf(how[2], sizeof how[2], "half the %.4g kg robot and the wheel's spin %.4g kg through [motor.left]'s %.4g N*m/A, %.4g ohm",
                  mass_kg, spin_kg, n_eta_kt, r_circuit);
+    /* the wheel's spin in the arc's figure too: kg per (m/s^2) at the rim */
+    want[3] = spin_kg;
+    return arc_figure(p, v, step_v, r, n_eta_kt / r_circuit, &want[3], how[3], err, errlen);
+}
+
+/* The yaw's feed-forward, command steps per mm/s^2 of each wheel's arc in a
+ * spin (firmware/motion.c: a_arc x cmd_per_arc_mm_s2): a [measured.*]
+ * section's rot_tm_s / (rot_km_deg_s_v as wheel arc on half the track);
+ * else the chassis' yaw inertia about the axle's middle as the physics
+ * builds it (sim/world/world.c chassis_mass: the body's own,
+ * body_yaw_inertia_kgm2 or the box's, at its centre of mass, the skids
+ * and the wheels as points) over 2 b^2, plus the wheel's spin (*want on
+ * entry), through the motor as cmd_per_mm_s2. kt_r: N*m/A over ohm at the
+ * wheel. 0, or 2 with the reason in err. */
+static int arc_figure(const prof_t *p, const double v[M_N], double step_v, double r, double kt_r, double *want, char *how,
+                      char *err, size_t errlen)
+{
+    double a[A_N];
+    for (size_t i = 0; i < A_N; i++) {
+        const char *t = *p->arc[i] ? p->arc[i] : arc_keys[i].def;
+        a[i] = NAN;
+        if (t && !*t) continue; /* [measured.*] optional */
+        if (t && real(t, &a[i])) continue;
+        snprintf(err, errlen, "%s: firmware.cmd_per_arc_mm_s2 is checked against [%s] %s: %s", p->path, arc_keys[i].section,
+                 arc_keys[i].key, t ? "not a number" : "missing");
+        return 2;
+    }
+    double b = a[A_TRACK] / 2000, spin_kg = *want; /* the half track, m */
+    if (!isnan(a[A_ROT_KM]) && a[A_ROT_KM] > 0 && !isnan(a[A_ROT_TM])) {
+        *want = a[A_ROT_TM] / (a[A_ROT_KM] * M_PI / 180 * b * 1000) / step_v;
+        snprintf(how, 200, "[%.40s] rot_tm_s %g s / rot_km_deg_s_v %g as wheel arc on a %g mm half track", p->measured,
+                 a[A_ROT_TM], a[A_ROT_KM], b * 1000);
+        return 0;
+    }
+    double mb = v[M_BODY] / 1000, w = a[A_BODY_W] / 1000, l = a[A_BODY_L] / 1000, ay = a[A_AXLE_Y] / 1000;
+    double j = a[A_YAW_J] > 0 ? a[A_YAW_J] : mb * (w * w + l * l) / 12, dy = a[A_COM_Y] / 1000 - ay;
+    j += mb * dy * dy + 2 * v[M_WHEEL] / 1000 * b * b; /* kg*m^2 about the axle's middle */
+    for (int k = 0; k < v[M_CASTERS] && k < 2; k++) {
+        double cy = a[k ? A_CASTER2_Y : A_CASTER_Y] / 1000 - ay;
+        j += v[M_CASTER] / 1000 * cy * cy;
+    }
+    *want = (j / (2 * b * b) + spin_kg) * 0.001 * r / kt_r / step_v;
+    snprintf(how, 200, "the chassis' %.4g kg*m^2 about the axle over 2 x (%g mm)^2 and the wheel's spin %.4g kg through [motor.left]",
+             j, b * 1000, spin_kg);
     return 0;
 }
 
@@ -295,8 +360,8 @@ static int within(const prof_t *p, const char *key, double want, double tol_abs,
  * the command step cmd_max_v / cmd_max: 0, or 2 with err */
 static int check_motor(const prof_t *p, char *err, size_t errlen)
 {
-    double full_v, cmd_max, want[3];
-    char how[3][200];
+    double full_v, cmd_max, want[4];
+    char how[4][200];
     if (!num(p->val[0][fw_key_find("cmd_max_v") - fw_keys], &full_v) || !num(p->val[0][fw_key_find("cmd_max") - fw_keys], &cmd_max)
         || full_v <= 0 || cmd_max <= 0) {
         snprintf(err, errlen, "%s:%d: firmware.cmd_max_v, cmd_max: missing or not above 0 (the command step they make "
@@ -308,7 +373,8 @@ static int check_motor(const prof_t *p, char *err, size_t errlen)
     if (within(p, "mm_s_per_cmd", want[0], 0, how[0], err, errlen)) return 2;
     /* the friction within half a command step too: the files write it in whole steps */
     if (within(p, "cmd_friction", want[1], 0.5, how[1], err, errlen)) return 2;
-    return within(p, "cmd_per_mm_s2", want[2], 0, how[2], err, errlen);
+    if (within(p, "cmd_per_mm_s2", want[2], 0, how[2], err, errlen)) return 2;
+    return within(p, "cmd_per_arc_mm_s2", want[3], 0, how[3], err, errlen);
 }
 
 static void upper(const char *s, char *out, size_t n)

@@ -384,7 +384,7 @@ static int pimoroni_predictions(const simcfg_t *c, operating_t nl, operating_t s
     if (eleven)
         bench_add(v, &n, "sheet_no_load_speed", 1950, nl.rpm, "rpm", 10, VALIDATE_NEAR,
                   "pimoroni-gearmotor-11-1.pdf: no load 1950 rpm +-10 % at 6 V (not used by the fit: Ke came from ORION's "
-                  "FWD_KM and ROT_KM, 27 % slower per volt)");
+                  "FWD_KM and ROT_KM, slower per volt)");
     bench_add(v, &n, "sheet_no_load_current", 0.08, nl.current_a, "A", 10, VALIDATE_NEAR,
               eleven ? "pimoroni-gearmotor-11-1.pdf: no load 0.08 A at 6 V (not used by the fit: no_load_a came from ORION's "
                        "BIAS_FF 0.34 V)"

@@ -48,23 +48,29 @@ static double km_slope(const simcfg_t *c, int rot, bench_step_t *high)
 #define RATIO_SOURCE                                                                                                    \
     MEASURED " ROT_KM / FWD_KM (deg/s per mm/s): not fitted (no_load_rpm cancels out; the half track is the "         \
              "firmware's MOUSE_RADIUS)"
+#define RATIO_FITTED                                                                                                    \
+    MEASURED " ROT_KM / FWD_KM (deg/s per mm/s): body_drag_n_s_m, a load on translation alone, is fitted to it "      \
+             "(docs/robots/ukmarsbot-sources.md section 7)"
 
 /* The robot's [measured] step responses at the config's step_s (the step a
  * contest runs). tools/mmfit fitted the robot's mass, yaw inertia and motor
- * to ORION's forward KM and TM, rotation KM and TM and BIAS_FF, its
- * no_load_rpm splitting the gap between forward and rotation KM
+ * to ORION's forward KM and TM, rotation KM and TM and BIAS_FF
  * (docs/robots/ukmarsbot-sources.md section 8b): all four are fitted
- * figures. Their ratio is not: it is graded. */
+ * figures. Their ratio is graded unless the robot carries a
+ * body_drag_n_s_m, which is fitted to it: then it is a fitted figure too. */
 static int motion_checks(const simcfg_t *c, validate_check_t *v, int n)
 {
     const robot_measured_t *m = &c->robot.measured;
+    int drag = c->robot.body_drag_n_s_m > 0;
     double fkm = 0, rkm = 0;
     bench_step_t hi;
     if (m->fwd_km_mm_s_v > 0 || m->fwd_tm_s > 0) {
         fkm = km_slope(c, 0, &hi);
         if (m->fwd_km_mm_s_v > 0)
             bench_fit(v, &n, "forward_km", m->fwd_km_mm_s_v, fkm, "mm/s/V",
-                      MEASURED " FWD_KM (slope of steady speed at 1.5 and 3 V; no_load_rpm is fitted to it and ROT_KM)");
+                      drag ? MEASURED " FWD_KM (slope of steady speed at 1.5 and 3 V; no_load_rpm is fitted to it and ROT_KM,"
+                                      " body_drag_n_s_m to their ratio)"
+                           : MEASURED " FWD_KM (slope of steady speed at 1.5 and 3 V; no_load_rpm is fitted to it and ROT_KM)");
         if (m->fwd_tm_s > 0)
             bench_fit(v, &n, "forward_tm", m->fwd_tm_s, hi.tm_s, "s",
                       MEASURED " FWD_TM (a 3 V step from rest; the mass is fitted to it)");
@@ -73,14 +79,19 @@ static int motion_checks(const simcfg_t *c, validate_check_t *v, int n)
         rkm = km_slope(c, 1, &hi);
         if (m->rot_km_deg_s_v > 0)
             bench_fit(v, &n, "rotation_km", m->rot_km_deg_s_v, rkm, "deg/s/V",
-                      MEASURED " ROT_KM (motors at -V/+V, slope at 1 and 2 V; no_load_rpm is fitted to it and FWD_KM)");
+                      drag ? MEASURED " ROT_KM (motors at -V/+V, slope at 1 and 2 V; no_load_rpm is fitted to it and FWD_KM,"
+                                      " body_drag_n_s_m to their ratio)"
+                           : MEASURED " ROT_KM (motors at -V/+V, slope at 1 and 2 V; no_load_rpm is fitted to it and FWD_KM)");
         if (m->rot_tm_s > 0)
             bench_fit(v, &n, "rotation_tm", m->rot_tm_s, hi.tm_s, "s",
                       MEASURED " ROT_TM (a 2 V step from rest; the yaw inertia is fitted to it)");
     }
     if (m->fwd_km_mm_s_v <= 0 || m->rot_km_deg_s_v <= 0 || fkm <= 0) return n;
-    bench_add(v, &n, "rotation_per_forward_km", m->rot_km_deg_s_v / m->fwd_km_mm_s_v, rkm / fkm, "deg/mm", 10,
-              VALIDATE_NEAR, RATIO_SOURCE);
+    if (drag)
+        bench_fit(v, &n, "rotation_per_forward_km", m->rot_km_deg_s_v / m->fwd_km_mm_s_v, rkm / fkm, "deg/mm", RATIO_FITTED);
+    else
+        bench_add(v, &n, "rotation_per_forward_km", m->rot_km_deg_s_v / m->fwd_km_mm_s_v, rkm / fkm, "deg/mm", 10,
+                  VALIDATE_NEAR, RATIO_SOURCE);
     if (c->sim.step_s > FINE_STEP_S) {
         static simcfg_t fine; /* large */
         fine = *c;

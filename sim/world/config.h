@@ -104,6 +104,7 @@ typedef struct {
     int start;              /* ROBOT_START_*: where the robot stands in the start cell */
     double body_com_y_m;    /* the body's centre of mass ahead of its centre (the robot file's) */
     double body_yaw_inertia_kgm2; /* the body's about its vertical axis; 0 = a uniform box's */
+    double body_drag_n_s_m; /* N per m/s against the axle midpoint's horizontal velocity; 0 = none */
     double wheel_left_d_m, wheel_right_d_m; /* the robot file's (the model derives each wheel's radius) */
     char chassis_name[ROBOT_NAME_MAX];
     /* [motor.left] [encoder.left], [motor.right] [encoder.right] */

@@ -88,6 +88,7 @@ static void chassis(sim_chassis_t *ch, const simcfg_robot_t *r)
     ch->caster_y_m[1] = r->caster2_y_m;
     ch->skid_mu = r->skid_mu;
     ch->tyre_slip_m_s = r->tyre_slip_m_s;
+    ch->body_drag_n_s_m = r->body_drag_n_s_m;
 }
 
 void sim_model_build(sim_model_t *m, const simcfg_t *c, uint64_t seed)

@@ -38,6 +38,7 @@ typedef struct {
     double caster_y_m[2];         /* each skid's place along the body (the second's only with casters 2) */
     double skid_mu;               /* Coulomb friction, skid on floor */
     double tyre_slip_m_s;         /* contact slip speed above which a tyre's sliding friction applies */
+    double body_drag_n_s_m;       /* N per m/s against the axle midpoint's horizontal velocity (a translation's load) */
 } sim_chassis_t;
 
 typedef struct sim_model_s {

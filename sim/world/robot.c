@@ -52,6 +52,9 @@ static const keytab_t chassis_keys[] = {
       "centre: in the start cell's centre; back_to_wall: its rear against the cell's back wall (UKMARSBOT)", starts, 0, 0, 0, KEYTAB_INT, 0, NULL },
     { NULL, "body_com_y_mm", offsetof(simcfg_robot_t, body_com_y_m), 0, -100, 100, "mm",
       "the body's centre of mass ahead of its centre (0 = at the box's centre)", NULL, 0, 1000, 0, KEYTAB_DOUBLE, 0, NULL },
+    { NULL, "body_drag_n_s_m", offsetof(simcfg_robot_t, body_drag_n_s_m), 0, 0, 10, "N*s/m",
+      "a load against the robot's translation (the axle midpoint's horizontal velocity), none in a spin in place; 0 = none",
+      NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL },
     { NULL, "body_yaw_inertia_kgm2", offsetof(simcfg_robot_t, body_yaw_inertia_kgm2), 0, 0, 0.1, "kg*m^2",
       "the body's own about its vertical axis through its centre; 0 = a uniform box's", NULL, 0, 0, 0, KEYTAB_DOUBLE, 0, NULL },
 };

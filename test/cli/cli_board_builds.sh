@@ -34,11 +34,11 @@ jv() { python3 -c 'import json,sys; d=json.loads(open(sys.argv[1]).read().splitl
 
 # ---- the robot files: each loads; --validate fails exactly the predictions listed (test/cli/cli_validate.sh
 # lists the figures): the Pimoroni sheets' no-load current (0.08 A; the files' no_load_a is fitted to
-# BIAS_FF: 0.0212 A for ORION's drive, 0.0140 for OSMIUM's) and the 11:1 sheet's no-load speed (1950 rpm;
-# 1607, Ke fitted to ORION's KM); OSMIUM's front sum between side walls at the SS90E trigger
-# (TURN_THRESHOLD_SS90E 82 + 2 x 5, against ORION's 110 + 2 x 5 for the same parts in the same pose) and in
-# the open (82 against ORION's 110); the basic board's facing over backed (5.91 against a real one's 8.5:
-# sim/world/sensors/README.md)
+# BIAS_FF: 0.0205 A for ORION's drive (basic-11: 0.0212), 0.0140 for OSMIUM's) and the 11:1 sheet's no-load speed
+# (1950 rpm; 1727, Ke fitted to ORION's KM; basic-11 1607, the fit without body_drag_n_s_m); OSMIUM's front sum between
+# side walls at the SS90E trigger (TURN_THRESHOLD_SS90E 82 + 2 x 5, against ORION's 110 + 2 x 5 for the same parts in
+# the same pose) and in the open (82 against ORION's 110); the basic board's facing over backed (5.91 against a real
+# one's 8.5: sim/world/sensors/README.md)
 declare -A FAIL=([ukmarsbot-basic-12]="ir_front_facing_over_backed sheet_no_load_current"
   [ukmarsbot-advanced-12]="ir_front_sum_turn_open ir_front_sum_turn_walls sheet_no_load_current"
   [ukmarsbot-basic-36]="ir_front_facing_over_backed sheet_no_load_current sheet_no_load_speed"

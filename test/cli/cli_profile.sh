@@ -9,7 +9,8 @@
 # alike, FILE:LINE), a missing key (mkprofile, FILE:LINE of [firmware]), a
 # value of the wrong kind, a shared figure with neither a key nor the
 # physics to take it from, a feed-forward figure (mm_s_per_cmd,
-# cmd_friction, cmd_per_mm_s2) that its motor keys do not give; an output that cannot be written: exit 3, no file.
+# cmd_friction, cmd_per_mm_s2, cmd_per_arc_mm_s2) that its motor and
+# chassis keys (or its [measured.*] figures) do not give; an output that cannot be written: exit 3, no file.
 set -u
 B=${BUILD:-build}
 MMSIM=${MMSIM:-$B/mmsim}
@@ -46,7 +47,8 @@ done
 grep -q '^#define RC_TRACK_MM 96.0f$' "$T/paper.h" && grep -q '^#define RC_COUNTS_PER_REV 358.32f$' "$T/paper.h" \
   && grep -q '^#define RC_TOF_FRONT_Y_MM 55.0f$' "$T/paper.h" && ok "paper: track, counts per turn, front ToF from the physics keys" \
   || bad "paper: $(grep -E 'RC_(TRACK_MM|COUNTS_PER_REV|TOF_FRONT_Y_MM) ' "$T/paper.h")"
-sed 's/^wheel_track_mm = 96$/wheel_track_mm = 98/' robots/paper.ini >"$T/track.ini"
+# (the yaw's feed-forward follows the track: mkprofile checks cmd_per_arc_mm_s2 against it)
+sed -e 's/^wheel_track_mm = 96$/wheel_track_mm = 98/' -e 's/^cmd_per_arc_mm_s2 = 0.0791$/cmd_per_arc_mm_s2 = 0.0777/' robots/paper.ini >"$T/track.ini"
 want_rc 0 "paper, track 98 mm" "$MKPROFILE" "$T/track.ini" "$T/track.h"
 grep -q '^#define RC_TRACK_MM 98.0f$' "$T/track.h" && ok "wheel_track_mm 98 -> RC_TRACK_MM 98.0f" || bad "track: $(grep RC_TRACK_MM "$T/track.h")"
 grep -q '^#define RC_MM_PER_COUNT_LEFT (500.0f / 1918.0f)$' "$T/ukmarsbot.h" && ok "ukmarsbot: calibrated mm per count" \
@@ -79,6 +81,10 @@ drift "paper: command full scale 6.1 V" paper mm_s_per_cmd 's/^cmd_max_v = 6$/cm
 drift "kerise: driver 0 ohm" kerise-v5 cmd_friction 's/^driver_r_ohm = 0.305$/driver_r_ohm = 0/'
 drift "ukmarsbot: ORION's forward Km 490" ukmarsbot mm_s_per_cmd 's/^fwd_km_mm_s_v = 475$/fwd_km_mm_s_v = 490/'
 drift "ukmarsbot: ORION's forward time constant 0.2 s" ukmarsbot cmd_per_mm_s2 's/^fwd_tm_s = 0.190$/fwd_tm_s = 0.200/'
+# the yaw's feed-forward: the measured spin where a [measured.*] section has it, else the chassis' yaw inertia
+drift "ukmarsbot: ORION's rotation time constant 0.25 s" ukmarsbot cmd_per_arc_mm_s2 's/^rot_tm_s = 0.210$/rot_tm_s = 0.250/'
+drift "paper: caster 25 mm behind the axle" paper cmd_per_arc_mm_s2 's/^caster_y_mm = -55$/caster_y_mm = -25/'
+drift "basic-12: the body's yaw inertia doubled" ukmarsbot-basic-12 cmd_per_arc_mm_s2 's/^body_yaw_inertia_kgm2 = 2.213e-4$/body_yaw_inertia_kgm2 = 4.426e-4/'
 sed 's/^model = datasheet$/model = paper/' robots/paper.ini >"$T/model.ini"
 want_rc 2 "mkprofile: the motor model paper cannot check the figures" "$MKPROFILE" "$T/model.ini" "$T/x.h"
 grep -q "are checked against a \[motor.left\] of model datasheet" "$T/err" && ok "mkprofile: $(cat "$T/err")" || bad "model: $(cat "$T/err")"
