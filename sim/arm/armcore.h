@@ -105,6 +105,8 @@ void armcore_flash_changed(armcore_t *c, uint32_t addr, uint32_t bytes);
  * its next event is asked again at the core's next check. armcore_touch_all: every model's. */
 void armcore_touch(armcore_t *c, uint32_t addr);
 void armcore_touch_all(armcore_t *c);
+/* reported false: every model's next event asked after any access or event, as without reports_links (tests: the reference the SoC's reports are checked against). */
+void armcore_set_links(armcore_t *c, bool reported);
 /* A crash: 1 with the faulting PC and the cause, else 0. */
 int armcore_crashed(const armcore_t *c, uint32_t *pc, const char **cause);
 /* A core register (UC_ARM_REG_*); memory as the firmware sees it (flash, SRAM): 0, or -1 outside. */
