@@ -77,6 +77,11 @@ struct armcore {
     uint8_t *flash, *sram;
     mmio_region_t reg[ARMCORE_REGIONS_MAX + 1];
     int nreg;
+    /* each model's next event as last asked (see advance_due); asked again when dirty */
+    uint64_t nev[ARMCORE_REGIONS_MAX + 1];
+    uint64_t dirty[(ARMCORE_REGIONS_MAX + 64) / 64]; /* a bit per model */
+    bool all_dirty, links;
+    mmio_region_t *last_reg;             /* the region the last access found */
     cortexm_t cm;
     const mmio_clocks_t *clocks;
     uint32_t hclk;
@@ -142,13 +147,17 @@ static uint8_t *host(armcore_t *c, uint32_t addr, uint32_t n)
 /* Unicorn 2.0.1 completes a store into a read-only mapping after the hook
  * that handled it: the FLASH controller's result is put back before the
  * next access, block or return (and translations of those bytes dropped). */
-static void flash_fix(armcore_t *c)
+static void flash_fix_now(armcore_t *c)
 {
-    if (!c->fix_n) return;
     memcpy(c->flash + c->fix_off, c->fix, c->fix_n);
     uc_ctl_remove_cache(c->uc, c->fix_off, (uint64_t)c->fix_off + c->fix_n);
     uc_ctl_remove_cache(c->uc, c->mcu->flash_base + c->fix_off, (uint64_t)c->mcu->flash_base + c->fix_off + c->fix_n);
     c->fix_n = 0;
+}
+
+static inline void flash_fix(armcore_t *c)
+{
+    if (c->fix_n) flash_fix_now(c);
 }
 
 static uint32_t rd32(const uint8_t *p) { return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24; }
@@ -284,17 +293,29 @@ static void unmodeled(armcore_t *c, uint32_t addr, const mmio_region_t *r, bool 
     else c->unm[i].reads++;
 }
 
+/* The region at addr: the last one found (a polling loop reads one peripheral), else a binary search. */
 static mmio_region_t *region_at(armcore_t *c, uint32_t addr)
 {
+    mmio_region_t *r = c->last_reg;
+    if (r && addr - r->base < r->size) return r;
     int lo = 0, hi = c->nreg - 1;
     while (lo <= hi) {
         int mid = (lo + hi) / 2;
-        mmio_region_t *r = &c->reg[mid];
+        r = &c->reg[mid];
         if (addr < r->base) hi = mid - 1;
         else if (addr - r->base >= r->size) lo = mid + 1;
-        else return r;
+        else return c->last_reg = r;
     }
     return NULL;
+}
+
+/* Model r accessed or advanced: its next event asked again at the next check; every model's when the SoC
+ * does not report the models' effects on each other. */
+static inline void touched(armcore_t *c, const mmio_region_t *r)
+{
+    unsigned i = (unsigned)(r - c->reg);
+    if (c->links) c->dirty[i / 64] |= 1ull << (i % 64);
+    else c->all_dirty = true;
 }
 
 /* One access to a peripheral at cycle c->now: MMIO_BUS_FAULT, or OK (an unmodeled register listed, read as 0). */
@@ -304,6 +325,7 @@ static mmio_status_t periph(armcore_t *c, uint32_t addr, unsigned size, bool wri
     mmio_status_t s = MMIO_UNMODELED;
     c->cm.attention = true; /* a model may have changed its next event or a line */
     if (r) {
+        touched(c, r);
         if (r->ops->advance) r->ops->advance(r->self, c->now);
         s = write ? (r->ops->write ? r->ops->write(r->self, addr - r->base, size, *v) : MMIO_UNMODELED)
                   : (r->ops->read ? r->ops->read(r->self, addr - r->base, size, v) : MMIO_UNMODELED);
@@ -439,17 +461,50 @@ static bool dma_write(void *ctx, uint32_t addr, unsigned size, uint32_t v)
 }
 
 /* ---- events and exceptions to take ---- */
-/* Every model whose event is due brought to the current cycle; the next event found. */
+/* Model i asked its next event again, and brought to the current cycle if it is due. */
+static void ask(armcore_t *c, int i, bool *all)
+{
+    mmio_region_t *r = &c->reg[i];
+    uint64_t e = MMIO_NEVER;
+    c->dirty[i / 64] &= ~(1ull << (i % 64));
+    if (r->ops->next_event) e = r->ops->next_event(r->self);
+    if (e <= c->cyc && r->ops->advance) {
+        r->ops->advance(r->self, c->cyc), e = r->ops->next_event(r->self);
+        if (!c->links) *all = c->all_dirty = true; /* its effects on the others unknown: ask them all, now and at the next check */
+    }
+    c->nev[i] = e;
+}
+
+/* The first dirty model after i (c->nreg if none). */
+static int next_dirty(const armcore_t *c, int i)
+{
+    for (int w = (i + 1) / 64; w * 64 < c->nreg; w++) {
+        uint64_t m = c->dirty[w] & (~0ull << ((i + 1) % 64 * (w == (i + 1) / 64)));
+        if (m) return w * 64 + __builtin_ctzll(m);
+    }
+    return c->nreg;
+}
+
+/* Every model whose event is due brought to the current cycle; the next event found. The models are
+ * taken in address order and each one's next event asked once, as if every one were asked at every
+ * check: one a later model's event changes is seen at the next check. A model's next event changes only
+ * when it is accessed, advanced, or changed by another (the SoC's armcore_touch) or by the host between
+ * runs, so the others' are kept from the last time they were asked (nev): when none is due, only the
+ * dirty ones are asked. */
 static void advance_due(armcore_t *c)
 {
-    uint64_t next = MMIO_NEVER;
-    c->now = c->cyc, c->nat_start = c->cyc;
-    for (int i = 0; i < c->nreg; i++) {
-        mmio_region_t *r = &c->reg[i];
-        if (!r->ops->next_event) continue;
-        uint64_t e = r->ops->next_event(r->self);
-        if (e <= c->cyc && r->ops->advance) r->ops->advance(r->self, c->cyc), e = r->ops->next_event(r->self);
-        if (e < next) next = e;
+    bool all = c->all_dirty, every = all || c->cyc >= c->ev_next, rescan = every;
+    uint64_t next = c->ev_next;
+    c->now = c->cyc, c->nat_start = c->cyc, c->all_dirty = false;
+    for (int i = every ? 0 : next_dirty(c, -1); i < c->nreg; i = every || c->all_dirty ? i + 1 : next_dirty(c, i)) {
+        if (!all && !c->all_dirty && !(c->dirty[i / 64] >> (i % 64) & 1u) && c->nev[i] > c->cyc) continue;
+        rescan |= c->nev[i] == c->ev_next; /* the earliest one may have moved later: look at them all */
+        ask(c, i, &all);
+        next = c->nev[i] < next ? c->nev[i] : next;
+    }
+    if (rescan || all) {
+        next = MMIO_NEVER;
+        for (int i = 0; i < c->nreg; i++) next = c->nev[i] < next ? c->nev[i] : next;
     }
     c->ev_next = next;
 }
@@ -739,7 +794,7 @@ static bool on_bad_mem(uc_engine *uc, uc_mem_type type, uint64_t addr, int size,
         mmio_status_t s = c->flash_write(c->flash_ctx, off, n, (uint32_t)value, c->now);
         if (s == MMIO_UNMODELED) unmodeled(c, a, NULL, true);
         if (s != MMIO_BUS_FAULT) {
-            c->cm.attention = true; /* the controller's next event (BSY's end) moved */
+            c->cm.attention = true, c->all_dirty = true; /* the controller's next event (BSY's end) moved */
             memcpy(c->fix, c->flash + off, n), c->fix_off = off, c->fix_n = n;
             return true;
         }
@@ -1116,7 +1171,7 @@ static void core_reset(armcore_t *c)
     set_reg(c, UC_ARM_REG_MSP, rd32(c->flash) & ~3u);
     set_reg(c, UC_ARM_REG_LR, 0xFFFFFFFFu);
     c->pc = rd32(c->flash + 4) & ~1u;
-    c->sleeping = false, c->resume_mid = NO_ADDR, c->cm.attention = true;
+    c->sleeping = false, c->resume_mid = NO_ADDR, c->cm.attention = true, c->all_dirty = true;
 }
 
 static void run_once(armcore_t *c)
@@ -1143,6 +1198,7 @@ static void run_once(armcore_t *c)
 static int run(armcore_t *c)
 {
     if (c->halted) c->halted = false, c->brk_skip = c->pc;
+    c->all_dirty = true; /* the host may have changed a model since the last run (a byte queued, an encoder's edges) */
     while (!c->crashed && c->cyc < c->target) {
         bool slept = c->sleeping;
         if (c->sleeping) sleep_step(c);
@@ -1206,6 +1262,7 @@ armcore_t *armcore_new(const armcore_cfg_t *cfg, char *err, size_t errn)
     if (!c || !c->flash || !c->sram || !c->rec_sram) return snprintf(err, errn, "mmsim: out of memory"), armcore_free(c), NULL;
     memcpy(c->flash, cfg->image->flash, m->flash_bytes);
     c->mcu = m, c->clocks = cfg->clocks, c->verbose = cfg->verbose, c->no_idle_skip = cfg->no_idle_skip;
+    c->links = cfg->reports_links, c->all_dirty = true;
     c->flash_write = cfg->flash_write, c->flash_ctx = cfg->flash_ctx;
     c->hclk = cfg->clocks && cfg->clocks->hclk ? cfg->clocks->hclk : cfg->hclk_hz;
     c->target_ps = NO_TIME, c->resume_mid = NO_ADDR, c->never_head = NO_ADDR, c->rec_head = NO_ADDR;
@@ -1246,6 +1303,13 @@ void armcore_flash_changed(armcore_t *c, uint32_t addr, uint32_t bytes)
     uc_ctl_remove_cache(c->uc, addr, (uint64_t)addr + bytes);
     if (addr >= c->mcu->flash_base) uc_ctl_remove_cache(c->uc, addr - c->mcu->flash_base, (uint64_t)addr - c->mcu->flash_base + bytes);
 }
+void armcore_touch(armcore_t *c, uint32_t addr)
+{
+    const mmio_region_t *r = region_at(c, addr);
+    if (r) touched(c, r);
+}
+void armcore_touch_all(armcore_t *c) { c->all_dirty = true; }
+void armcore_set_links(armcore_t *c, bool reported) { c->links = reported, c->all_dirty = true; }
 int armcore_crashed(const armcore_t *c, uint32_t *pc, const char **cause)
 {
     if (!c->crashed) return 0;

@@ -56,6 +56,12 @@ typedef struct {
      * such a store is a bus fault. */
     mmio_status_t (*flash_write)(void *ctx, uint32_t off, unsigned size, uint32_t value, uint64_t now);
     void *flash_ctx;
+    /* The SoC tells the core (armcore_touch) whenever a model changes
+     * another's state other than through the bus (a DMA request, a timer's
+     * trigger, a reset through RCC): the core then keeps each model's next
+     * event and asks again only the models accessed, advanced or touched.
+     * false: after any access or event it asks every model. */
+    bool reports_links;
 } armcore_cfg_t;
 
 typedef struct {
@@ -95,6 +101,12 @@ cortexm_t *armcore_cortexm(armcore_t *c);
 /* The flash bytes (the FLASH model programs them; armcore_flash_changed after). */
 uint8_t *armcore_flash(armcore_t *c);
 void armcore_flash_changed(armcore_t *c, uint32_t addr, uint32_t bytes);
+/* The model placed at addr (an address in its region) changed other than through its own access or event:
+ * its next event is asked again at the core's next check. armcore_touch_all: every model's. */
+void armcore_touch(armcore_t *c, uint32_t addr);
+void armcore_touch_all(armcore_t *c);
+/* reported false: every model's next event asked after any access or event, as without reports_links (tests: the reference the SoC's reports are checked against). */
+void armcore_set_links(armcore_t *c, bool reported);
 /* A crash: 1 with the faulting PC and the cause, else 0. */
 int armcore_crashed(const armcore_t *c, uint32_t *pc, const char **cause);
 /* A core register (UC_ARM_REG_*); memory as the firmware sees it (flash, SRAM): 0, or -1 outside. */

@@ -21,6 +21,19 @@
 #define EN_USART3 (1u << 18) /* APB1 USART3EN */
 
 /* ---- the wiring: lines into the NVIC, the DMA's bus, the reset ---- */
+static const uint32_t tim_base[4] = { STM32F1_TIM1_BASE, STM32F1_TIM2_BASE, STM32F1_TIM3_BASE, STM32F1_TIM4_BASE };
+
+/* The model at base changed through another's doing: the core asks its next event again (armcore_cfg_t.reports_links). */
+static void touch(stm32f1_soc_t *s, uint32_t base)
+{
+    if (s->core) armcore_touch(s->core, base);
+}
+
+static void touch_all(stm32f1_soc_t *s)
+{
+    if (s->core) armcore_touch_all(s->core);
+}
+
 static void soc_irq(void *ctx, unsigned irq, bool level)
 {
     stm32f1_soc_t *s = ctx;
@@ -28,6 +41,14 @@ static void soc_irq(void *ctx, unsigned irq, bool level)
     if (level && !s->irq_level[irq]) s->irq_count[irq]++;
     s->irq_level[irq] = level;
     if (s->core) cortexm_set_irq(armcore_cortexm(s->core), irq, level);
+}
+
+/* A peripheral's DMA request: the DMA's next event moves. */
+static void soc_dma_request(void *ctx, unsigned channel, bool level)
+{
+    stm32f1_soc_t *s = ctx;
+    stm32_dma_request(&s->dma, channel, level);
+    touch(s, STM32_DMA1_BASE);
 }
 
 static bool soc_bus_read(void *ctx, uint32_t addr, unsigned size, uint32_t *v)
@@ -52,6 +73,7 @@ static void soc_wdg_reset(void *ctx)
     cortexm_t *cm = armcore_cortexm(s->core);
     cm->reset_request = true, cm->attention = true;
     s->resets++;
+    touch_all(s);
 }
 
 void stm32f1_soc_reset_pin(stm32f1_soc_t *s)
@@ -69,6 +91,8 @@ void stm32f1_soc_reset_pin(stm32f1_soc_t *s)
 static void soc_trigger(void *ctx, unsigned source, int rising, uint64_t now)
 {
     stm32f1_soc_t *s = ctx;
+    touch(s, STM32_ADC1_BASE), touch(s, STM32_ADC2_BASE);
+    for (unsigned i = 0; i < 4; i++) touch(s, tim_base[i]);
     for (unsigned g = 0; g < 2 && rising; g++)
         for (unsigned code = 0; code < 8; code++)
             if (stm32f1_adc_extsel[g][code] == source)
@@ -89,7 +113,11 @@ static void trigger_wants(stm32f1_soc_t *s)
             if (src[g] != STM32F1_ADC_NOT_TIM && src[g] / 8u >= 1 && src[g] / 8u <= 4) m[src[g] / 8u - 1u] |= 1u << (src[g] % 8u);
     }
     stm32_tim_links_wants(&s->links, m);
-    for (unsigned i = 0; i < 4; i++) stm32_tim_trigger_want(&s->tim[i], m[i]);
+    for (unsigned i = 0; i < 4; i++) {
+        uint32_t was = s->tim[i].trig_want;
+        stm32_tim_trigger_want(&s->tim[i], m[i]);
+        if (s->tim[i].trig_want != was) touch(s, tim_base[i]);
+    }
 }
 
 static mmio_status_t soc_tim_write(void *self, uint32_t off, unsigned size, uint32_t v)
@@ -111,7 +139,26 @@ static mmio_status_t soc_adc_write(void *self, uint32_t off, unsigned size, uint
     return st;
 }
 
-static void soc_wdg_started(void *ctx) { stm32f1_rcc_lsi_force(&((stm32f1_soc_t *)ctx)->rcc); }
+static void soc_wdg_started(void *ctx)
+{
+    stm32f1_rcc_lsi_force(&((stm32f1_soc_t *)ctx)->rcc);
+    touch(ctx, STM32F1_RCC_BASE);
+}
+
+/* RCC's accesses and events switch clocks every model counts with and reset models (APBxRSTR). */
+static mmio_status_t soc_rcc_write(void *self, uint32_t off, unsigned size, uint32_t v)
+{
+    stm32f1_soc_t *s = (stm32f1_soc_t *)(void *)((char *)self - offsetof(stm32f1_soc_t, rcc));
+    mmio_status_t st = stm32f1_rcc_ops.write(self, off, size, v);
+    touch_all(s);
+    return st;
+}
+
+static void soc_rcc_advance(void *self, uint64_t now)
+{
+    stm32f1_rcc_ops.advance(self, now);
+    touch_all((stm32f1_soc_t *)(void *)((char *)self - offsetof(stm32f1_soc_t, rcc)));
+}
 
 static mmio_status_t soc_flash_write(void *ctx, uint32_t off, unsigned size, uint32_t value, uint64_t now)
 {
@@ -137,7 +184,7 @@ static void place_gated(stm32f1_soc_t *s, uint32_t base, uint32_t size, stm32f1_
 static void init_models(stm32f1_soc_t *s, const stm32f1_soc_cfg_t *cfg)
 {
     mmio_irq_t irq = { soc_irq, s };
-    mmio_dma_req_t dma = { stm32_dma_request, &s->dma };
+    mmio_dma_req_t dma = { soc_dma_request, s };
     stm32f1_rcc_init(&s->rcc, cfg->hse_hz, irq);
     const mmio_clocks_t *clk = stm32f1_rcc_clocks(&s->rcc);
     stm32f1_afio_init(&s->afio);
@@ -159,6 +206,8 @@ static void init_models(stm32f1_soc_t *s, const stm32f1_soc_cfg_t *cfg)
     stm32_adc_share_irq(&s->adc[0], &s->adc[1]);
     s->adc_ops = stm32_adc_ops;
     s->adc_ops.write = soc_adc_write;
+    s->rcc_ops = stm32f1_rcc_ops;
+    s->rcc_ops.write = soc_rcc_write, s->rcc_ops.advance = soc_rcc_advance;
     trigger_wants(s);
     stm32_dma_init(&s->dma, (mmio_bus_t){ soc_bus_read, soc_bus_write, s }, irq);
     for (unsigned u = 0; u < 3; u++) stm32_usart_init(&s->usart[u], u + 1, clk, irq, dma, cfg->sink[u], cfg->sink_ctx[u]);
@@ -168,7 +217,7 @@ static void init_models(stm32f1_soc_t *s, const stm32f1_soc_cfg_t *cfg)
 static void place_models(stm32f1_soc_t *s)
 {
     const uint32_t sz = STM32F1_PERIPH_SIZE;
-    place(s, STM32F1_RCC_BASE, sz, &stm32f1_rcc_ops, &s->rcc);
+    place(s, STM32F1_RCC_BASE, sz, &s->rcc_ops, &s->rcc);
     place(s, STM32F1_FLASHIF_BASE, sz, &stm32f1_flash_ops, &s->flash);
     place(s, STM32F1_EXTI_BASE, sz, &stm32f1_exti_ops, &s->exti);
     place(s, STM32F1_IWDG_BASE, sz, &stm32f1_iwdg_ops, &s->iwdg);
@@ -224,7 +273,7 @@ stm32f1_soc_t *stm32f1_soc_new(const stm32f1_soc_cfg_t *cfg, char *err, size_t e
     img.flash = mem;
     armcore_cfg_t cc = { .image = &img, .regions = s->region, .nregions = s->nregions, .clocks = stm32f1_rcc_clocks(&s->rcc),
                          .hclk_hz = STM32F1_HSI_HZ, .verbose = cfg->verbose, .no_idle_skip = cfg->no_idle_skip,
-                         .flash_write = soc_flash_write, .flash_ctx = s };
+                         .flash_write = soc_flash_write, .flash_ctx = s, .reports_links = true };
     s->core = armcore_new(&cc, err, errn);
     free(mem);
     if (!s->core) return free(s), NULL;

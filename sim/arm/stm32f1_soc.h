@@ -70,6 +70,7 @@ typedef struct stm32f1_soc {
     stm32f1_iwdg_t iwdg;
     stm32_adc_t adc[2];
     mmio_ops_t adc_ops;           /* the ADC's, its CR2 telling the timers the (J)EXTSEL sources taken */
+    mmio_ops_t rcc_ops;           /* RCC's, its accesses and events telling the core every model may have changed (clocks, resets) */
     stm32_dma_t dma;
     stm32_usart_t usart[3];
     stm32_spi_t spi[2];

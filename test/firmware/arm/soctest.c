@@ -119,8 +119,7 @@ static void usart_dma_step(void)
     DMA1_CH2(0x0C) = sizeof msg - 1;
     USART3(0x00) &= ~(1u << 6);                  /* TC cleared (RM0008 27.3.13) */
     DMA1_CH2(0x08) = (1u << 7) | (1u << 4) | 1u; /* MINC, DIR from memory, EN */
-    while (!(DMA1_ISR & (1u << 5))) {}           /* TCIF2 */
-    while (!(USART3(0x00) & (1u << 6))) {}       /* TC: the last frame sent */
+    while (!(USART3(0x00) & (1u << 6))) {}       /* TC: the last frame sent, the DMA feeding DR on its own (the DMA not polled) */
     mb.v[5] = DMA1_ISR;
 }
 
