@@ -196,18 +196,18 @@ assert a['console'] == b['console'] and a['board']['interrupts'] == b['board']['
 }
 level LevelInt
 js "$T/ours" "
-want = 'FLAGS low 1002 on 1541 off 0 after 1546\r\nINT0 0 0 0\r\nINT0 2525 12 4754\r\nINT0 5000 25 1850\r\nINT0 7497 37 10537\r\nINT0 10000 50 35325\r\nINT0 12492 62 5994\r\n'
+want = 'FLAGS low 1001 on 1587 off 0 after 1591\r\nINT0 3 0 9302\r\nINT0 2511 12 45977\r\nINT0 5000 25 64059\r\nINT0 7515 37 25684\r\nINT0 10000 50 33715\r\nINT0 12491 62 5003\r\n'
 assert j['console'] == want, (j['console'], want)
-assert j['board']['interrupts'].get('INT0') == 14400, j['board']['interrupts']
+assert j['board']['interrupts'].get('INT0') == 14441, j['board']['interrupts']
 print(want.split(chr(13))[0])
 " >"$T/l.txt" 2>&1 && ok "level-mode INT0/INT1 as recorded ($(cat "$T/l.txt"))" || bad "level mode: $(tail -3 "$T/l.txt")"
 
 # a sleeping firmware with INT0 low in level mode wakes at the cycles simavr's own check gives
 level SleepLevel
 js "$T/ours" "
-want = 'WAKES 720 491 6066\r\nWAKES 1589 1136 44109\r\nWAKES 2101 1414 22237\r\nWAKES 2585 1664 46522\r\nWAKES 3069 1915 19967\r\nWAKES 3554 2165 46649\r\nWAKES 4039 2416 4946'
+want = 'WAKES 716 479 2707\r\nWAKES 1589 1130 9443\r\nWAKES 2091 1397 43120\r\nWAKES 2580 1652 64360\r\nWAKES 3068 1906 64693\r\nWAKES 3557 2160 48068\r\nWAKES 4044 2414 20118\r\n'
 assert j['console'] == want, (j['console'], want)
-assert j['board']['interrupts'] == {'INT1': 2417, 'TIMER0_OVF': 1710, 'USART_UDRE': 149}, j['board']['interrupts']
+assert j['board']['interrupts'] == {'INT1': 2419, 'TIMER0_OVF': 1713, 'USART_UDRE': 151}, j['board']['interrupts']
 print(want.split(chr(13))[-2].strip())
 " >"$T/l.txt" 2>&1 && ok "sleeping with level-mode INT0 as recorded ($(cat "$T/l.txt"))" || bad "sleep, level mode: $(tail -3 "$T/l.txt")"
 
